@@ -1,0 +1,60 @@
+#include "cli.hpp"
+
+#include <stdexcept>
+
+namespace capsubot::app {
+
+void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
+  o.A_option = cmd.add_option("--A", o.A,
+                              "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units "
+                              "of (m1+m2) omega^2 L (required unless --sin/--cos are given)");
+  cmd.add_option("--c", o.c, "mean force c of F (same unit); a directed orbit needs c > 0")
+      ->required();
+  if (with_phase) {
+    o.phi0_option = cmd.add_option(
+        "--phi0", o.phi0,
+        "motor phase phi0 [rad] at the impact: F(phi) = A sin(phi + phi0) + c with phi = 0 at "
+        "the impact (required for the harmonic force; default 0 for a Fourier force)");
+  }
+  o.fourier_option =
+      cmd.add_option("--sin", o.sin_coefficients,
+                     "Fourier force instead of A: sine coefficients b_1,...,b_K of "
+                     "F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)), comma separated")
+          ->delimiter(',')
+          ->excludes(o.A_option);
+  cmd.add_option("--cos", o.cos_coefficients,
+                 "cosine coefficients a_1,...,a_K of the Fourier force (as many as --sin; "
+                 "default all 0)")
+      ->delimiter(',')
+      ->needs(o.fourier_option);
+}
+
+Forcing ForcingOptions::Build(bool need_phase) const {
+  const bool has_phase = phi0_option != nullptr && phi0_option->count() > 0;
+  if (fourier_option->count() > 0) {
+    std::vector<double> a = cos_coefficients;
+    if (a.empty()) a.assign(sin_coefficients.size(), 0.0);
+    return Forcing::Fourier(c, a, sin_coefficients, has_phase ? phi0 : 0.0);
+  }
+  if (A_option->count() == 0) {
+    throw std::invalid_argument("option --A is missing: give the amplitude A (or --sin/--cos)");
+  }
+  if (need_phase && !has_phase) {
+    throw std::invalid_argument("option --phi0 is missing: give the impact phase phi0 [rad]");
+  }
+  return Forcing::Harmonic(A, c, has_phase ? phi0 : 0.0);
+}
+
+void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {
+  cmd.add_option("--T0", p.T0, "friction bound T0 = mu g/(omega^2 L), dimensionless, > 0")
+      ->capture_default_str();
+  cmd.add_option("--e", p.e, "coefficient of restitution, 0 <= e <= 1")->capture_default_str();
+  if (with_margin) {
+    cmd.add_option("--margin", p.margin,
+                   "clearance d required between inner body and walls (fraction of L), "
+                   "0 <= d < 0.5")
+        ->capture_default_str();
+  }
+}
+
+}  // namespace capsubot::app

@@ -1,0 +1,44 @@
+#pragma once
+// Pieces shared by the subcommands: the command record, the force and model options.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "capsubot/forcing.hpp"
+#include "capsubot/params.hpp"
+
+namespace capsubot::app {
+
+/// A subcommand: its parser and what to run once the command line is parsed. `run` returns
+/// the exit status; it throws std::invalid_argument or IoError for bad input (exit status 2).
+struct Command {
+  CLI::App* parser = nullptr;
+  std::function<int()> run;
+};
+
+/// The force: the paper's A sin(phi + phi0) + c, or a Fourier series c + sum (a_k cos + b_k sin).
+struct ForcingOptions {
+  double A = std::numeric_limits<double>::quiet_NaN();
+  double c = std::numeric_limits<double>::quiet_NaN();
+  double phi0 = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> cos_coefficients, sin_coefficients;
+  CLI::Option* A_option = nullptr;
+  CLI::Option* phi0_option = nullptr;
+  CLI::Option* fourier_option = nullptr;
+
+  /// The force the options describe; throws std::invalid_argument naming what is missing.
+  /// With `need_phase` false, phi0 may be absent (it is then 0: a command that solves for it).
+  Forcing Build(bool need_phase = true) const;
+};
+
+/// Adds --A, --c, --phi0, --cos, --sin to `cmd`.
+void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
+
+/// Adds --T0, --e and (with `with_margin`) --margin to `cmd`.
+void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
+
+}  // namespace capsubot::app

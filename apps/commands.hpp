@@ -1,0 +1,10 @@
+#pragma once
+// The subcommands of `capsubot`, one file each.
+
+#include "cli.hpp"
+
+namespace capsubot::app {
+
+Command AddSolveCommand(CLI::App& app);
+
+}  // namespace capsubot::app

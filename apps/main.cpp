@@ -1,0 +1,67 @@
+// capsubot: the command-line program. Parses, runs one subcommand, maps errors to exit codes:
+// 0 done, 2 bad input (one line on stderr naming the parameter, its value and the rule),
+// 1 unexpected failure.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "capsubot/io.hpp"
+#include "commands.hpp"
+
+namespace {
+
+std::string OneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace capsubot::app;
+  CLI::App app{
+      "capsubot: one-impact periodic gaits of a vibro-impact capsule robot (A. P. Ivanov, "
+      "Vibroimpact Mobile Robot, 2021). All quantities are dimensionless: phases in rad, "
+      "positions in units of the shell length L, velocities in omega*L, forces in "
+      "(m1+m2)*omega^2*L.",
+      "capsubot"};
+  app.require_subcommand(1, 1);
+  app.failure_message(CLI::FailureMessage::simple);
+  const std::vector<Command> commands = {AddSolveCommand(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const auto subs = app.get_subcommands();
+    const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
+    fmt::print(stderr, "{}: error: {} (see {} --help)\n", who, OneLine(e.what()), who);
+    return 2;
+  }
+  for (const Command& command : commands) {
+    if (!command.parser->parsed()) continue;
+    const std::string who = "capsubot " + command.parser->get_name();
+    try {
+      return command.run();
+    } catch (const std::invalid_argument& e) {
+      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
+      return 2;
+    } catch (const capsubot::IoError& e) {
+      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
+      return 2;
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "{}: internal error: {}\n", who, OneLine(e.what()));
+      return 1;
+    }
+  }
+  return 2;
+}

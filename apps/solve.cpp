@@ -1,0 +1,82 @@
+// capsubot solve: the one-impact orbit for a given force, with every validity condition.
+
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "capsubot/io.hpp"
+#include "capsubot/validity.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct SolveOptions {
+  ForcingOptions forcing;
+  Params params;
+  bool json = false;
+  std::string trajectory;
+  int samples = 1001;
+};
+
+void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
+  AtomicFile file(path, "--trajectory");
+  auto& out = file.stream();
+  out << "phi,x,dx,v\n";
+  for (int i = 0; i < samples; ++i) {
+    const double phi = kTau * i / (samples - 1);
+    // phi = 0 is just after the impact, phi = tau just before the next one.
+    out << FormatNumber(phi) << ',' << FormatNumber(o.x(phi)) << ',' << FormatNumber(o.dx(phi))
+        << ',' << FormatNumber(o.v(phi)) << '\n';
+  }
+  file.Commit();
+}
+
+int Run(const SolveOptions& opt) {
+  opt.params.Validate();
+  const Forcing forcing = opt.forcing.Build();
+  if (opt.samples < 2) {
+    throw std::invalid_argument(
+        fmt::format("--samples = {} is invalid: expected at least 2", opt.samples));
+  }
+  const Solution s = Solve(forcing, opt.params);
+  if (!opt.trajectory.empty()) {
+    if (s.orbit.ok()) {
+      WriteTrajectory(s.orbit, opt.trajectory, opt.samples);
+    } else {
+      fmt::print(stderr, "capsubot solve: note: --trajectory not written: no orbit ({})\n",
+                 StatusName(s.orbit.status));
+    }
+  }
+  if (opt.json) {
+    fmt::print("{}\n", SolutionJson(s).dump());
+  } else {
+    fmt::print("{}", SolutionTable(s, opt.params));
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command AddSolveCommand(CLI::App& app) {
+  auto opt = std::make_shared<SolveOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "solve",
+      "The one-impact periodic orbit (MODEL.md section 4) for a given force: stop phase phi1, "
+      "mass ratio alpha, impact velocity u, step I and mean velocity, with every validity "
+      "condition of section 5. Exit status 0 whenever the computation ran, valid orbit or not.");
+  AddForcingOptions(*cmd, opt->forcing);
+  AddParamsOptions(*cmd, opt->params);
+  cmd->add_flag("--json", opt->json,
+                "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
+                "v_mean, x_min, x_max, valid, violations; null where a quantity does not exist)");
+  cmd->add_option("--trajectory", opt->trajectory,
+                  "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "
+                  "the impact)");
+  cmd->add_option("--samples", opt->samples, "number of rows of --trajectory")
+      ->capture_default_str();
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app

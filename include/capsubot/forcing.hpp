@@ -1,0 +1,78 @@
+#pragma once
+// The motor force F(phi) and its integrals Pi, Phi (MODEL.md sections 2 and 6).
+//
+// Every force is a truncated Fourier series in the phase s of the motor,
+//     G(s) = c + sum_{k=1..K} (a_k cos(k s) + b_k sin(k s)),
+// seen from the impact: F(phi) = G(phi + phi0), so that phi = 0 is the impact instant.
+// The paper's family F = A sin(phi + phi0) + c is the series with K = 1, a_1 = 0, b_1 = A.
+// One value type serves both families: the orbit, simulator and optimiser never ask which.
+
+#include <array>
+#include <vector>
+
+namespace capsubot {
+
+inline constexpr double kTau = 6.283185307179586476925286766559;  ///< the period 2*pi
+inline constexpr int kMaxHarmonics = 16;  ///< largest K a Forcing holds (no allocation)
+
+/// Phases found in an interval, in increasing order (a fixed-size list: no allocation).
+struct PhaseList {
+  std::array<double, 2 * kMaxHarmonics + 2> phi{};  ///< the phases, phi[0..n)
+  int n = 0;                                        ///< how many were found
+};
+
+/// Smallest and largest value of F on an interval.
+struct Range {
+  double min = 0.0;
+  double max = 0.0;
+};
+
+class Forcing {
+ public:
+  /// The zero force (a placeholder for results that were not computed).
+  Forcing() = default;
+
+  /// F = A sin(phi + phi0) + c: the paper's family (MODEL.md section 6).
+  static Forcing Harmonic(double A, double c, double phi0);
+  /// F = c + sum_k (a[k-1] cos(k (phi+phi0)) + b[k-1] sin(k (phi+phi0))); a and b have the
+  /// same length K <= kMaxHarmonics. Throws std::invalid_argument naming the bad coefficient.
+  static Forcing Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
+                         double phi0);
+
+  /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)).
+  Forcing WithPhase(double phi0) const;
+
+  double phi0() const { return phi0_; }      ///< motor phase at the impact
+  double mean() const { return c_; }         ///< c, the mean force: Pi(tau) = c*tau
+  int harmonics() const { return K_; }       ///< K
+  double a(int k) const { return a_[k - 1]; }  ///< base cosine coefficient a_k, k = 1..K
+  double b(int k) const { return b_[k - 1]; }  ///< base sine coefficient b_k, k = 1..K
+  /// True for the paper's family A sin(phi + phi0) + c (K <= 1 and a_1 = 0).
+  bool harmonic() const { return K_ == 0 || (K_ == 1 && a_[0] == 0.0); }
+  /// A of the paper's family: the amplitude of the first harmonic.
+  double amplitude() const;
+
+  double F(double phi) const;    ///< force at phase phi (phi = 0 is the impact)
+  double dF(double phi) const;   ///< dF/dphi
+  double Pi(double phi) const;   ///< integral_0^phi F
+  double Phi(double phi) const;  ///< integral_0^phi Pi
+
+  /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
+  /// hi - lo <= tau. Exact (closed form for K = 1, companion matrix otherwise).
+  PhaseList Crossings(double level, double lo, double hi) const;
+  /// Exact min and max of F on [lo, hi] (hi - lo <= tau), from the zeros of dF.
+  Range Bounds(double lo, double hi) const;
+  /// max |F| over a whole period.
+  double MaxAbs() const;
+
+ private:
+  void Rotate();  // fill the coefficients seen from the impact phase
+
+  double c_ = 0.0;
+  double phi0_ = 0.0;
+  int K_ = 0;
+  std::array<double, kMaxHarmonics> a_{}, b_{};    // base series, motor phase s
+  std::array<double, kMaxHarmonics> ra_{}, rb_{};  // F(phi) = c + sum ra cos k phi + rb sin k phi
+};
+
+}  // namespace capsubot

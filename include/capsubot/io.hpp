@@ -1,0 +1,39 @@
+#pragma once
+// Output files that other tools can read: atomic writes and round-trip number formatting.
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace capsubot {
+
+/// An output or input file that cannot be used (the message names the file and the reason).
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Writes to `path` atomically: the text goes to a temporary file beside it, which Commit()
+/// renames to `path`; destroyed without Commit() (an exception, a kill), it leaves no file
+/// under `path`. `what` names the file in messages ("--trajectory", ...).
+class AtomicFile {
+ public:
+  AtomicFile(std::string path, std::string what);  ///< throws IoError if it cannot be created
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ofstream& stream() { return out_; }
+  const std::string& temp_path() const { return temp_; }
+  void Commit();  ///< flush, check for write errors, rename; throws IoError
+
+ private:
+  std::string path_, what_, temp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+/// A double with 17 significant digits (round-trips exactly); "" for NaN (a CSV empty cell).
+std::string FormatNumber(double value);
+
+}  // namespace capsubot

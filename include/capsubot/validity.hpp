@@ -1,0 +1,58 @@
+#pragma once
+// When a constructed orbit is real: the conditions of MODEL.md section 5, each by name,
+// with the exact extrema of the inner body's position.
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "capsubot/orbit.hpp"
+
+namespace capsubot {
+
+enum class Condition {
+  kPositiveMeanForce,   ///< 1. Pi(tau) > 0, so u > 0
+  kMassRatio,           ///< 1. 0 < alpha < 1
+  kForceBelowFriction,  ///< max |F| <= T0: the motor alone cannot move the capsule (A + c <= T0)
+  kStick,               ///< 2. the capsule stays at rest on [phi1, tau]: |F| <= T0 there
+  kLeftWall,            ///< 3. x >= 0 on [0, tau]
+  kRightWall,           ///< 4. x <= 1 on (0, tau): no early second impact
+  kSeparation,          ///< 5. the inner body leaves the wall after the impact
+  kClearance,           ///< 6. d <= x_min and x_max <= 1 - d (checked only when d > 0)
+  kCount,
+};
+
+/// Stable identifier of a condition ("left_wall", ...), used in JSON and CSV output.
+const char* ConditionName(Condition condition);
+
+struct Validity {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  bool checked = false;      ///< false: not computed
+  unsigned violations = 0;   ///< bit (1 << Condition) set for each violated condition
+  double x_min = kNaN;       ///< exact minimum of x over the period (NaN without orbit)
+  double phi_x_min = kNaN;   ///< where it is reached
+  double x_max = kNaN;       ///< highest interior local maximum of x (NaN if there is none)
+  double phi_x_max = kNaN;   ///< where it is reached
+  double rest_force = kNaN;  ///< max |F| on [phi1, tau], the rest phase
+  double max_force = kNaN;   ///< max |F| over the period
+
+  bool valid() const { return checked && violations == 0; }
+  bool violated(Condition c) const { return (violations >> static_cast<unsigned>(c)) & 1U; }
+  /// Names of the violated conditions, in the order of the enum.
+  std::vector<std::string> ViolationNames() const;
+};
+
+/// Checks every condition of MODEL.md section 5 with clearance `margin` (0 <= margin < 0.5).
+Validity CheckValidity(const Orbit& orbit, double margin);
+
+/// An orbit together with its validity: what `capsubot solve` computes.
+struct Solution {
+  Orbit orbit;
+  Validity validity;
+};
+
+/// ComputeOrbit + CheckValidity (params validated; throws std::invalid_argument if bad).
+Solution Solve(const Forcing& forcing, const Params& params);
+
+}  // namespace capsubot

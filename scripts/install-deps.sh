@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs capsubot's build and test dependencies from Debian 12 packages (idempotent).
+# Quiet when everything is present; needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(build-essential cmake pkg-config libeigen3-dev libnlopt-cxx-dev libgsl-dev libfmt-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev)
+# Optional extras: `scripts/install-deps.sh --figures` adds gnuplot for the figure script.
+if [[ "${1:-}" == "--figures" ]]; then packages+=(gnuplot-nox); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+if [[ $(id -u) -ne 0 ]]; then
+  if command -v sudo >/dev/null 2>&1; then
+    exec sudo "$0" "$@"
+  fi
+  echo "install-deps: missing Debian packages: ${missing[*]}" >&2
+  echo "install-deps: run this script as root (apt-get needs it), or install them yourself" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

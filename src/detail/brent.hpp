@@ -1,0 +1,39 @@
+#pragma once
+// Bracketed root finding with GSL's Brent solver, allocation-free on the hot path.
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include <memory>
+
+namespace capsubot::detail {
+
+inline constexpr double kRootAbsTol = 1e-14;  ///< absolute tolerance in phase
+inline constexpr int kRootMaxIter = 200;
+
+/// One GSL Brent solver per thread, made on first use (GSL's error handler switched off).
+gsl_root_fsolver* ThreadBrentSolver();
+
+/// Root of f in [lo, hi] where f(lo) and f(hi) have opposite signs (or one is zero).
+/// Returns the bracket's midpoint if GSL stops early (it cannot when the signs differ).
+template <class Fn>
+double Brent(const Fn& f, double lo, double hi) {
+  const double flo = f(lo), fhi = f(hi);
+  if (flo == 0.0) return lo;
+  if (fhi == 0.0) return hi;
+  gsl_function fn;
+  fn.function = [](double x, void* p) { return (*static_cast<const Fn*>(p))(x); };
+  fn.params = const_cast<Fn*>(&f);
+  gsl_root_fsolver* s = ThreadBrentSolver();
+  if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) return 0.5 * (lo + hi);
+  double root = 0.5 * (lo + hi);
+  for (int it = 0; it < kRootMaxIter; ++it) {
+    if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+    root = gsl_root_fsolver_root(s);
+    const double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
+    if (gsl_root_test_interval(a, b, kRootAbsTol, 0.0) == GSL_SUCCESS) break;
+  }
+  return root;
+}
+
+}  // namespace capsubot::detail

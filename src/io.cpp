@@ -1,0 +1,47 @@
+#include "capsubot/io.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace capsubot {
+
+AtomicFile::AtomicFile(std::string path, std::string what)
+    : path_(std::move(path)), what_(std::move(what)) {
+  temp_ = fmt::format("{}.tmp.{}", path_, static_cast<long>(::getpid()));
+  out_.open(temp_, std::ios::out | std::ios::trunc);
+  if (!out_) {
+    throw IoError(fmt::format("{} {} cannot be written: {}", what_, path_, std::strerror(errno)));
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    out_.close();
+    std::remove(temp_.c_str());
+  }
+}
+
+void AtomicFile::Commit() {
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok || std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int err = errno;
+    std::remove(temp_.c_str());
+    committed_ = true;
+    throw IoError(fmt::format("{} {} cannot be written: {}", what_, path_, std::strerror(err)));
+  }
+  committed_ = true;
+}
+
+std::string FormatNumber(double value) {
+  if (std::isnan(value)) return "";
+  return fmt::format("{:.17g}", value);
+}
+
+}  // namespace capsubot
