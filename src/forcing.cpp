@@ -149,6 +149,7 @@ Range Forcing::Bounds(double lo, double hi) const {
 }
 
 double Forcing::MaxAbs() const {
+  if (K_ <= 1) return std::abs(c_) + amplitude();  // c + R sin(...) spans [c - R, c + R]
   const Range r = Bounds(0.0, kTau);
   return std::max(std::abs(r.min), std::abs(r.max));
 }

@@ -73,6 +73,8 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
   o.v_plus = o.Pi_tau / (1.0 - alpha);
   o.I = (o.Pi_tau * phi1 - T0 * phi1 * phi1 / 2.0 - Phi1) / (1.0 - alpha);
   o.v_mean = o.I / tau;
+  o.x1 = 1.0 - e * o.u * phi1 + T0 * phi1 * phi1 / (2.0 * (1.0 - alpha)) +
+         Phi1 / (alpha * (1.0 - alpha));
   o.status = OrbitStatus::kOk;
   return o;
 }
@@ -84,7 +86,7 @@ double Orbit::x(double phi) const {
     return 1.0 - e * u * phi + T0 * phi * phi / (2.0 * (1.0 - alpha)) +
            f.Phi(phi) / (alpha * (1.0 - alpha));
   }
-  return x(phi1) + (phi - phi1) * (v_plus - e * u) + (f.Phi(phi) - f.Phi(phi1)) / alpha;
+  return x1 + (phi - phi1) * (v_plus - e * u) + (f.Phi(phi) - f.Phi(phi1)) / alpha;
 }
 
 double Orbit::dx(double phi) const {

@@ -14,14 +14,16 @@ void Set(Validity& v, Condition c, bool violated) {
 
 // Exact extrema of x. x' is continuous on [0, tau] and monotone between the phases where x''
 // changes sign: the crossings of F = -alpha*T0 on [0, phi1] (slide) and of F = 0 on
-// [phi1, tau] (rest). Each monotone piece holds at most one zero of x', found by Brent.
+// [phi1, tau] (rest). Each monotone piece holds at most one zero of x', found by a bracketed
+// Newton iteration (x'' is known in closed form).
 void PositionExtrema(const Orbit& o, Validity& v) {
   v.x_min = 1.0;  // x(0) = x(tau) = 1
   v.phi_x_min = 0.0;
   auto visit = [&](double lo, double hi) {
     const double dlo = o.dx(lo), dhi = o.dx(hi);
     if (!(dlo * dhi < 0.0)) return;
-    const double r = detail::Brent([&](double p) { return o.dx(p); }, lo, hi);
+    const double r = detail::SafeNewton([&](double p) { return o.dx(p); },
+                                        [&](double p) { return o.ddx(p); }, lo, hi);
     const double xr = o.x(r);
     if (dlo < 0.0) {  // x' from - to +: local minimum
       if (xr < v.x_min) {

@@ -37,6 +37,7 @@ struct Orbit {
   double alpha = kNaN;    ///< mass ratio m2/(m1+m2) = psi0/(psi0 - psi1)
   double u = kNaN;        ///< relative velocity just before the impact
   double v_plus = kNaN;   ///< capsule velocity just after the impact
+  double x1 = kNaN;       ///< x(phi1), where the capsule stops
   double I = kNaN;        ///< displacement per period, integral_0^phi1 v (units of L)
   double v_mean = kNaN;   ///< mean capsule velocity I/tau (units of omega*L)
 

@@ -4,7 +4,9 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include <cmath>
 #include <memory>
+#include <utility>
 
 namespace capsubot::detail {
 
@@ -34,6 +36,41 @@ double Brent(const Fn& f, double lo, double hi) {
     if (gsl_root_test_interval(a, b, kRootAbsTol, 0.0) == GSL_SUCCESS) break;
   }
   return root;
+}
+
+}  // namespace capsubot::detail
+
+namespace capsubot::detail {
+
+/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f' as well: Newton steps
+/// kept inside a shrinking bracket, bisection whenever a step would leave it or converge too
+/// slowly (Numerical Recipes' rtsafe). Quadratic near the root: the hot path's root finder.
+template <class Fn, class Dfn>
+double SafeNewton(const Fn& f, const Dfn& df, double lo, double hi) {
+  double flo = f(lo);
+  if (flo == 0.0) return lo;
+  if (f(hi) == 0.0) return hi;
+  if (flo > 0.0) std::swap(lo, hi);  // now f(lo) < 0 < f(hi), lo may exceed hi
+  double x = 0.5 * (lo + hi), dx_old = std::abs(hi - lo), dx = dx_old;
+  double fx = f(x), dfx = df(x);
+  for (int it = 0; it < kRootMaxIter; ++it) {
+    const bool newton_leaves = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
+    if (newton_leaves || std::abs(2.0 * fx) > std::abs(dx_old * dfx)) {
+      dx_old = dx;
+      dx = 0.5 * (hi - lo);
+      x = lo + dx;
+    } else {
+      dx_old = dx;
+      dx = fx / dfx;
+      x -= dx;
+    }
+    if (std::abs(dx) < kRootAbsTol) return x;
+    fx = f(x);
+    dfx = df(x);
+    if (fx == 0.0) return x;
+    (fx < 0.0 ? lo : hi) = x;
+  }
+  return x;
 }
 
 }  // namespace capsubot::detail

@@ -1,0 +1,202 @@
+// Forcing: F, Pi, Phi of both families against GSL quadrature; exact crossings and bounds
+// against dense scans; input errors.
+
+#include "capsubot/forcing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+using testing::Quadrature;
+
+constexpr double kQuadratureTol = 1e-11;  // QAGS asked for 1e-13 relative; values are O(1..10)
+constexpr double kRootTol = 1e-10;        // |F - level| at a returned crossing
+constexpr int kScan = 200000;             // dense scan used as the independent reference
+
+struct Case {
+  const char* name;
+  Forcing forcing;
+};
+
+class ForcingFamilies : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ForcingFamilies, PiIsTheIntegralOfF) {
+  const Forcing& f = GetParam().forcing;
+  for (double phi : {0.3, 1.7, 3.9, kTau, 8.0}) {
+    EXPECT_TRUE(Near(f.Pi(phi), Quadrature([&](double s) { return f.F(s); }, 0.0, phi),
+                     kQuadratureTol))
+        << "phi = " << phi;
+  }
+}
+
+TEST_P(ForcingFamilies, PhiIsTheIntegralOfPi) {
+  const Forcing& f = GetParam().forcing;
+  for (double phi : {0.3, 1.7, 3.9, kTau, 8.0}) {
+    EXPECT_TRUE(Near(f.Phi(phi), Quadrature([&](double s) { return f.Pi(s); }, 0.0, phi),
+                     kQuadratureTol))
+        << "phi = " << phi;
+  }
+}
+
+TEST_P(ForcingFamilies, MeanForceGivesPiOverOnePeriod) {
+  const Forcing& f = GetParam().forcing;
+  EXPECT_TRUE(Near(f.Pi(kTau), f.mean() * kTau, 1e-13));
+}
+
+TEST_P(ForcingFamilies, DerivativeMatchesCentralDifference) {
+  const Forcing& f = GetParam().forcing;
+  constexpr double h = 1e-5;  // central difference error ~ h^2 |F'''| ~ 1e-9
+  for (double phi : {0.1, 2.2, 5.0}) {
+    EXPECT_TRUE(Near(f.dF(phi), (f.F(phi + h) - f.F(phi - h)) / (2 * h), 1e-8));
+  }
+}
+
+TEST_P(ForcingFamilies, CrossingsAreExactlyTheSignChangesOfADenseScan) {
+  const Forcing& f = GetParam().forcing;
+  const Range r = f.Bounds(0.0, kTau);
+  for (double level : {r.min + 0.3 * (r.max - r.min), r.min + 0.77 * (r.max - r.min), f.mean()}) {
+    for (auto [lo, hi] : {std::pair{0.0, kTau}, std::pair{1.0, 4.0}, std::pair{-2.0, 3.5}}) {
+      const PhaseList x = f.Crossings(level, lo, hi);
+      int sign_changes = 0;
+      double prev = f.F(lo) - level;
+      for (int i = 1; i <= kScan; ++i) {
+        const double cur = f.F(lo + (hi - lo) * i / kScan) - level;
+        if ((prev < 0) != (cur < 0)) ++sign_changes;
+        prev = cur;
+      }
+      EXPECT_EQ(x.n, sign_changes) << "level " << level << " on [" << lo << ", " << hi << "]";
+      for (int i = 0; i < x.n; ++i) {
+        EXPECT_TRUE(Near(f.F(x.phi[i]), level, kRootTol));
+        EXPECT_GE(x.phi[i], lo);
+        EXPECT_LE(x.phi[i], hi);
+        if (i > 0) {
+          EXPECT_LT(x.phi[i - 1], x.phi[i]);
+        }
+      }
+    }
+  }
+}
+
+TEST_P(ForcingFamilies, BoundsMatchADenseScan) {
+  const Forcing& f = GetParam().forcing;
+  for (auto [lo, hi] : {std::pair{0.0, kTau}, std::pair{0.5, 2.0}, std::pair{2.5, 6.0}}) {
+    double mn = f.F(lo), mx = mn;
+    for (int i = 1; i <= kScan; ++i) {
+      const double v = f.F(lo + (hi - lo) * i / kScan);
+      mn = std::min(mn, v);
+      mx = std::max(mx, v);
+    }
+    const Range r = f.Bounds(lo, hi);
+    // The exact extremum is never worse than a sample, and a sample comes within
+    // max|F''| * (step/2)^2 / 2 of it (about 1e-9 here).
+    EXPECT_LE(r.min, mn + 1e-15);
+    EXPECT_GE(r.max, mx - 1e-15);
+    EXPECT_TRUE(Near(r.min, mn, 1e-8));
+    EXPECT_TRUE(Near(r.max, mx, 1e-8));
+  }
+  const Range whole = f.Bounds(0.0, kTau);
+  EXPECT_TRUE(Near(f.MaxAbs(), std::max(-whole.min, whole.max), 1e-12));
+}
+
+TEST_P(ForcingFamilies, WithPhaseShiftsTheMotorPhase) {
+  const Forcing& f = GetParam().forcing;
+  const Forcing g = f.WithPhase(f.phi0() + 0.8);
+  for (double phi : {0.0, 1.0, 4.0}) EXPECT_TRUE(Near(g.F(phi), f.F(phi + 0.8), 1e-13));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Families, ForcingFamilies,
+    ::testing::Values(Case{"paper_example", Forcing::Harmonic(0.5, 0.5, -2.9449)},
+                      Case{"harmonic_small", Forcing::Harmonic(0.05, 0.02, 1.0)},
+                      Case{"fourier_k3", Forcing::Fourier(0.02, {0.01, 0.0, 0.005},
+                                                          {0.04, 0.01, 0.0}, 0.3)},
+                      Case{"fourier_k5", Forcing::Fourier(0.1, {0.2, -0.1, 0.05, 0.0, 0.02},
+                                                          {0.3, 0.1, 0.0, -0.04, 0.01}, -1.2)}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Forcing, HarmonicIsTheOneTermFourierSeries) {
+  const Forcing h = Forcing::Harmonic(0.7, 0.2, 0.4);
+  const Forcing s = Forcing::Fourier(0.2, {0.0}, {0.7}, 0.4);
+  for (double phi : {0.0, 1.3, 5.5}) {
+    EXPECT_DOUBLE_EQ(h.F(phi), s.F(phi));
+    EXPECT_TRUE(Near(h.F(phi), 0.7 * std::sin(phi + 0.4) + 0.2, 1e-15));
+  }
+  EXPECT_TRUE(h.harmonic());
+  EXPECT_DOUBLE_EQ(h.amplitude(), 0.7);
+  EXPECT_FALSE(Forcing::Fourier(0.2, {0.1}, {0.7}, 0.0).harmonic());
+}
+
+TEST(Forcing, TangentLevelIsOneCrossing) {
+  const Forcing f = Forcing::Harmonic(1.0, 0.0, 0.0);  // max 1 at phi = pi/2
+  const PhaseList x = f.Crossings(1.0, 0.0, kTau);
+  ASSERT_EQ(x.n, 1);
+  EXPECT_TRUE(Near(x.phi[0], M_PI / 2, 1e-12));
+}
+
+TEST(Forcing, ConstantForceHasNoCrossings) {
+  const Forcing f = Forcing::Fourier(0.3, {}, {}, 0.0);
+  EXPECT_EQ(f.Crossings(0.0, 0.0, kTau).n, 0);
+  EXPECT_DOUBLE_EQ(f.MaxAbs(), 0.3);
+}
+
+TEST(Forcing, RejectsNegativeAmplitudeNamingIt) {
+  try {
+    Forcing::Harmonic(-1.0, 0.5, 0.0);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "A = -1 is invalid: expected A >= 0");
+  }
+}
+
+TEST(Forcing, RejectsNonFiniteNumbersNamingThem) {
+  const double nan = std::nan("");
+  EXPECT_THROW(
+      {
+        try {
+          Forcing::Harmonic(0.5, nan, 0.0);
+        } catch (const std::invalid_argument& e) {
+          EXPECT_STREQ(e.what(), "c = nan is invalid: expected a finite number");
+          throw;
+        }
+      },
+      std::invalid_argument);
+  try {
+    Forcing::Fourier(0.1, {0.0, INFINITY}, {0.0, 0.0}, 0.0);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "a_2 = inf is invalid: expected a finite number");
+  }
+  try {
+    Forcing::Harmonic(0.5, 0.5, nan);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "phi0 = nan is invalid: expected a finite number");
+  }
+}
+
+TEST(Forcing, RejectsMismatchedOrTooManyCoefficients) {
+  try {
+    Forcing::Fourier(0.1, {0.0}, {0.0, 0.0}, 0.0);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "Fourier coefficients: 1 cosine and 2 sine terms given: expected as many of each");
+  }
+  const std::vector<double> many(kMaxHarmonics + 1, 0.0);
+  try {
+    Forcing::Fourier(0.1, many, many, 0.0);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "harmonics K = 17 is invalid: expected K <= 16");
+  }
+}
+
+}  // namespace
+}  // namespace capsubot

@@ -1,0 +1,65 @@
+#pragma once
+// Shared test helpers: comparisons that print both sides, quadrature, running the CLI.
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace capsubot::testing {
+
+/// |actual - expected| <= tol, printing both values and the difference on failure.
+inline ::testing::AssertionResult Near(double actual, double expected, double tol) {
+  const double diff = std::abs(actual - expected);
+  if (diff <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "actual " << actual << " vs expected " << expected
+                                       << ": difference " << diff << " > tolerance " << tol;
+}
+
+/// Relative version: |actual - expected| <= tol * max(1, |expected|).
+inline ::testing::AssertionResult RelNear(double actual, double expected, double tol) {
+  return Near(actual, expected, tol * std::max(1.0, std::abs(expected)));
+}
+
+/// integral_a^b f by GSL's adaptive QAGS (independent of every closed form under test).
+inline double Quadrature(const std::function<double(double)>& f, double a, double b) {
+  gsl_set_error_handler_off();
+  std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> ws(
+      gsl_integration_workspace_alloc(1000), &gsl_integration_workspace_free);
+  gsl_function fn;
+  fn.function = [](double x, void* p) {
+    return (*static_cast<const std::function<double(double)>*>(p))(x);
+  };
+  fn.params = const_cast<std::function<double(double)>*>(&f);
+  double result = 0.0, error = 0.0;
+  gsl_integration_qags(&fn, a, b, 1e-14, 1e-13, 1000, ws.get(), &result, &error);
+  return result;
+}
+
+/// Output and exit status of a shell command.
+struct CommandResult {
+  int status = -1;
+  std::string out;
+};
+
+/// Runs `capsubot <args>` (the built program), capturing stdout (and stderr with "2>&1").
+inline CommandResult RunCli(const std::string& args) {
+  CommandResult r;
+  const std::string command = std::string(CAPSUBOT_CLI) + " " + args;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.out.append(buffer.data(), n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+}  // namespace capsubot::testing
