@@ -1,0 +1,202 @@
+// P1 of MODEL.md section 7: the impact phase maximising I over valid orbits.
+//
+// The valid set in phi0 is a union of arcs of the circle and the optimum often sits on an
+// arc edge (the orbit grazes a wall). So: scan the circle, bisect every validity flip between
+// neighbouring scan points down to phase_tol (keeping the valid side), maximise I by Brent's
+// method (GSL) around every local maximum of the scan inside an arc, and return the best.
+
+#include "capsubot/optimize_phase.hpp"
+
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "detail/nlopt_constraints.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr double kPi = kTau / 2.0;
+constexpr int kMinScanPoints = 16;
+constexpr int kMaxBrentIterations = 100;
+
+struct GslMinimizerFree {
+  void operator()(gsl_min_fminimizer* m) const { gsl_min_fminimizer_free(m); }
+};
+
+class PhaseSearch {
+ public:
+  PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup)
+      : forcing_(forcing), setup_(setup) {}
+
+  detail::Evaluation At(double phi0) {
+    ++evaluations_;
+    return detail::Evaluate(forcing_.WithPhase(phi0), setup_);
+  }
+
+  // Edge of the valid set between `valid_phase` (valid) and `invalid_phase` by bisection.
+  detail::Evaluation Edge(double valid_phase, detail::Evaluation valid_ev, double invalid_phase,
+                          double tol) {
+    while (std::abs(invalid_phase - valid_phase) > tol) {
+      const double mid = 0.5 * (valid_phase + invalid_phase);
+      if (mid == valid_phase || mid == invalid_phase) break;
+      detail::Evaluation ev = At(mid);
+      if (ev.valid) {
+        valid_phase = mid;
+        valid_ev = std::move(ev);
+      } else {
+        invalid_phase = mid;
+      }
+    }
+    return valid_ev;
+  }
+
+  // Maximises I on [lo, hi] around `mid` (I(mid) >= I at both ends) with GSL's Brent
+  // minimiser on -I; returns the polished point, or nothing better than `best` if it fails.
+  bool Polish(double lo, double mid, double hi, double tol, detail::Evaluation& best) {
+    if (!minimizer_) {
+      gsl_set_error_handler_off();
+      minimizer_.reset(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
+      if (!minimizer_) return false;
+    }
+    auto minus_I = [](double phi0, void* self) {
+      auto* s = static_cast<PhaseSearch*>(self);
+      const detail::Evaluation ev = s->At(phi0);
+      // Where no orbit exists, -I is undefined: a large value keeps Brent away from it.
+      return ev.solution.orbit.ok() ? -ev.I : 1e300;
+    };
+    gsl_function fn{minus_I, this};
+    const double f_lo = minus_I(lo, this), f_mid = minus_I(mid, this), f_hi = minus_I(hi, this);
+    if (!(f_mid < f_lo && f_mid < f_hi)) return false;  // a plateau or an edge maximum
+    gsl_min_fminimizer* m = minimizer_.get();
+    if (gsl_min_fminimizer_set_with_values(m, &fn, mid, f_mid, lo, f_lo, hi, f_hi) != GSL_SUCCESS)
+      return false;
+    for (int it = 0; it < kMaxBrentIterations; ++it) {
+      if (gsl_min_fminimizer_iterate(m) != GSL_SUCCESS) break;
+      const double a = gsl_min_fminimizer_x_lower(m), b = gsl_min_fminimizer_x_upper(m);
+      if (gsl_min_test_interval(a, b, tol, 0.0) == GSL_SUCCESS) break;
+    }
+    detail::Evaluation ev = At(gsl_min_fminimizer_x_minimum(m));
+    if (ev.valid && ev.I > best.I) {
+      best = std::move(ev);
+      return true;
+    }
+    return false;
+  }
+
+  int evaluations() const { return evaluations_; }
+
+ private:
+  Forcing forcing_;
+  detail::ConstraintSetup setup_;
+  int evaluations_ = 0;
+  std::unique_ptr<gsl_min_fminimizer, GslMinimizerFree> minimizer_;
+};
+
+void RequireFiniteAtLeast(const char* name, double value, double least, const char* rule) {
+  if (!(std::isfinite(value) && value >= least)) {
+    throw std::invalid_argument(fmt::format("{} = {} is invalid: expected {}", name, value, rule));
+  }
+}
+
+}  // namespace
+
+void PhaseOptions::Validate() const {
+  if (scan_points < kMinScanPoints) {
+    throw std::invalid_argument(fmt::format(
+        "scan_points = {} is invalid: expected at least {}", scan_points, kMinScanPoints));
+  }
+  if (!(std::isfinite(phase_tol) && phase_tol > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("phase_tol = {} is invalid: expected a finite phase_tol > 0", phase_tol));
+  }
+  if (!(std::isfinite(rho_max) && rho_max > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
+  }
+  RequireFiniteAtLeast("active_tol", active_tol, 0.0, "a finite active_tol >= 0");
+}
+
+OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
+                             const PhaseOptions& options) {
+  params.Validate();
+  options.Validate();
+  detail::ConstraintSetup setup{params, params.T0, options.stable, options.rho_max};
+  PhaseSearch search(forcing, setup);
+  const int n = options.scan_points;
+  const double h = kTau / n;
+  std::vector<double> phase(n);
+  std::vector<detail::Evaluation> scan(n);
+  int best = 0, valid_count = 0;
+  for (int i = 0; i < n; ++i) {
+    phase[i] = -kPi + h * i;
+    scan[i] = search.At(phase[i]);
+    if (scan[i].valid) ++valid_count;
+    if (detail::Better(scan[i], scan[best])) best = i;
+  }
+  OptimizeResult result;
+  result.algorithm = fmt::format("scan{}+bisection+brent", n);
+  detail::Evaluation winner = scan[best];
+  if (valid_count > 0) {
+    auto next = [n](int i) { return (i + 1) % n; };
+    auto prev = [n](int i) { return (i + n - 1) % n; };
+    // The phase of scan point j seen from scan point i as a neighbour (unwrapped by one turn).
+    auto beside = [&](int i, int j) {
+      const double d = phase[j] - phase[i];
+      return d > kPi ? phase[j] - kTau : d < -kPi ? phase[j] + kTau : phase[j];
+    };
+    // Arc edges: bisect every validity flip between neighbours, keep the valid side.
+    std::vector<double> lo_edge(n), hi_edge(n);  // extent of the valid arc around point i
+    for (int i = 0; i < n; ++i) {
+      lo_edge[i] = beside(i, prev(i));
+      hi_edge[i] = beside(i, next(i));
+    }
+    for (int i = 0; i < n; ++i) {
+      const int j = next(i);
+      if (scan[i].valid == scan[j].valid) continue;
+      const int v = scan[i].valid ? i : j, w = scan[i].valid ? j : i;
+      detail::Evaluation edge =
+          search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol);
+      const double edge_phase = edge.solution.orbit.forcing.phi0();
+      (v == i ? hi_edge[v] : lo_edge[v]) = edge_phase;
+      if (detail::Better(edge, winner)) winner = std::move(edge);
+    }
+    // Polish around every local maximum of I among the valid scan points.
+    for (int i = 0; i < n; ++i) {
+      if (!scan[i].valid) continue;
+      const int a = prev(i), b = next(i);
+      if ((scan[a].valid && scan[a].I > scan[i].I) || (scan[b].valid && scan[b].I > scan[i].I))
+        continue;
+      search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);
+    }
+  }
+  // Report phi0 in [-pi, pi).
+  const double phi0 = winner.solution.orbit.forcing.phi0();
+  const double wrapped = phi0 - kTau * std::floor((phi0 + kPi) / kTau);
+  if (wrapped != phi0) winner = search.At(wrapped);
+  result.evaluations = search.evaluations();
+  result.solution = winner.solution;
+  result.spectral_radius = winner.rho;
+  if (winner.valid) {
+    result.status = OptimizeStatus::kOk;
+    result.active_constraints =
+        detail::ActiveConstraints(winner, setup, options.active_tol, /*with_force_bound=*/false);
+    result.message = fmt::format(
+        "best {}orbit over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
+        options.stable ? "valid stable " : "valid ", winner.I, wrapped, valid_count, n);
+  } else {
+    result.status = OptimizeStatus::kNoValidOrbit;
+    result.message = fmt::format(
+        "no phase phi0 gives a valid {}orbit ({} phases scanned); nearest to valid: phi0 = "
+        "{:.10g}, which violates {}",
+        options.stable ? "stable " : "", n, wrapped, detail::DescribeViolations(winner, setup));
+  }
+  return result;
+}
+
+}  // namespace capsubot
