@@ -1,12 +1,53 @@
-// P2 of MODEL.md section 7 (work in progress: options and names first).
+// P2 of MODEL.md section 7: A, c, phi0 of F = A sin(phi + phi0) + c maximising I.
+//
+// Variables, scaled to order 1: y = (A/bound, c/bound, phi0). Constraints (NLopt inequality
+// constraints g <= 0, nlopt_constraints.hpp): left wall / clearance, right wall / clearance,
+// 0 < alpha < 1, stick, separation, the linear force bound (A + c - bound)/T0 and, if asked,
+// stability. Where no orbit exists the orbit constraints are a large positive constant.
+//
+// Global stage: "multistart" scans a grid over (A + c, c/(A + c)) with a coarse phase scan at
+// each cell, and polishes locally from the best valid cells; or an NLopt global algorithm,
+// polished locally from its best point. Finally the phase is polished by P1 at the best
+// (A, c), so that the returned orbit is valid through Solve, not just within NLopt's
+// constraint tolerance.
 
 #include "capsubot/optimize_forcing.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include "capsubot/optimize_phase.hpp"
+#include "detail/nlopt_problem.hpp"
+#include "detail/nlopt_status.hpp"
+
 namespace capsubot {
+namespace {
+
+constexpr double kPi = kTau / 2.0;
+// Smallest mean force (fraction of the bound): c > 0 is needed for a directed orbit.
+constexpr double kMinMeanFraction = 1e-9;
+// Smallest total force A + c (fraction of the bound) of the multistart grid, which is
+// geometric in A + c: the orbit's size scales with the force (MODEL.md section 6), so valid
+// gaits at a large T0 need a force far below the bound.
+constexpr double kMinGridForce = 1e-3;
+// Phases per grid cell in the multistart scan.
+constexpr int kCellPhases = 72;
+// Phase scan of the final P1 polish.
+constexpr int kFinalPhaseScan = 720;
+
+void Require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+struct Start {
+  std::vector<double> y;
+  double I;
+};
+
+}  // namespace
 
 std::vector<std::string> GlobalAlgorithmNames() {
   return {kMultistart, "GN_ISRES", "GN_ORIG_DIRECT", "GN_ORIG_DIRECT_L", "GN_AGS"};
@@ -16,15 +57,163 @@ std::vector<std::string> LocalAlgorithmNames() {
   return {"LN_COBYLA", "LD_SLSQP", "LD_MMA", "LD_CCSAQ"};
 }
 
-void ForcingDesignOptions::Validate() const {}
+void ForcingDesignOptions::Validate() const {
+  Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
+          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
+                      force_bound));
+  if (global_algorithm != kMultistart) {
+    detail::AlgorithmFromName(global_algorithm, GlobalAlgorithmNames(), "global_algorithm");
+  }
+  detail::AlgorithmFromName(local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  Require(grid >= 2, fmt::format("grid = {} is invalid: expected grid >= 2", grid));
+  Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
+  Require(std::isfinite(rel_tol) && rel_tol > 0.0,
+          fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
+  Require(local_evaluations >= 10,
+          fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
+  Require(global_evaluations >= 10, fmt::format("global_evaluations = {} is invalid: expected "
+                                                "at least 10",
+                                                global_evaluations));
+  Require(std::isfinite(rho_max) && rho_max > 0.0,
+          fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
+  Require(std::isfinite(active_tol) && active_tol >= 0.0,
+          fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
+}
 
 OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions& options) {
   params.Validate();
   options.Validate();
-  OptimizeResult r;
-  r.status = OptimizeStatus::kFailure;
-  r.message = "P2 is not implemented yet";
-  return r;
+  const double bound = std::isnan(options.force_bound) ? params.T0 : options.force_bound;
+  Require(bound <= params.T0,
+          fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
+                      "above the friction bound moves the capsule without impacts, MODEL.md "
+                      "section 6)",
+                      bound, params.T0));
+  const nlopt::algorithm local = detail::AlgorithmFromName(
+      options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  const bool multistart = options.global_algorithm == kMultistart;
+
+  detail::Problem problem;
+  problem.n = 3;
+  problem.lower = {0.0, kMinMeanFraction, -2.0 * kPi};
+  problem.upper = {1.0, 1.0, 2.0 * kPi};
+  problem.build = [bound](const double* y) {
+    return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, y[2]);
+  };
+  problem.setup = {params, bound, options.stable, options.rho_max};
+  problem.constraints = {detail::kLeftWallIndex, detail::kRightWallIndex,
+                         detail::kAlphaLowIndex, detail::kAlphaHighIndex,
+                         detail::kStickIndex,    detail::kForceBoundIndex,
+                         detail::kSeparationIndex};
+  if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
+  problem.objective_scale = params.T0;
+  const double bound_over_T0 = bound / params.T0;
+  problem.force_bound = [bound_over_T0](const double* y) {
+    return (y[0] + y[1] - 1.0) * bound_over_T0;
+  };
+
+  detail::Tracker tracker;
+  std::vector<Start> starts;
+  OptimizeStatus best_status = OptimizeStatus::kOk;
+  std::string nlopt_message;
+  std::string algorithm;
+
+  if (multistart) {
+    // Grid over total force s = (A + c)/bound (geometric) and r = c/(A + c) (midpoints), with
+    // a coarse phase scan per cell; the best phase of each cell is a candidate start.
+    const int g = options.grid;
+    std::vector<Start> cells;
+    for (int i = 0; i < g; ++i) {
+      const double s = kMinGridForce * std::pow(1.0 / kMinGridForce, double(i) / (g - 1));
+      for (int k = 0; k < g; ++k) {
+        const double r = (k + 0.5) / g;
+        Start cell{{}, -HUGE_VAL};
+        for (int q = 0; q < kCellPhases; ++q) {
+          const double y[3] = {s * (1.0 - r), s * r, -kPi + kTau * q / kCellPhases};
+          const detail::Evaluation ev = detail::EvaluateAt(problem, y, tracker);
+          if (ev.valid && ev.I > cell.I) cell = {{y[0], y[1], y[2]}, ev.I};
+        }
+        if (!cell.y.empty()) cells.push_back(cell);
+      }
+    }
+    std::sort(cells.begin(), cells.end(), [](const Start& a, const Start& b) { return a.I > b.I; });
+    if (cells.size() > static_cast<std::size_t>(options.starts)) cells.resize(options.starts);
+    starts = cells;
+    if (starts.empty() && !tracker.best_y.empty()) starts.push_back({tracker.best_y, 0.0});
+    algorithm = fmt::format("multistart(grid {}x{}x{}, {} starts)+{}", g, g, kCellPhases,
+                            starts.size(), options.local_algorithm);
+  } else {
+    const nlopt::algorithm global = detail::AlgorithmFromName(
+        options.global_algorithm, GlobalAlgorithmNames(), "global_algorithm");
+    nlopt::srand(options.seed);
+    const detail::RunResult run =
+        detail::RunNlopt(global, problem, {0.25, 0.25, 0.0}, {}, options.rel_tol,
+                         options.global_evaluations, tracker);
+    if (!tracker.best_y.empty()) starts.push_back({tracker.best_y, tracker.best.I});
+    if (!run.y.empty() && run.y != tracker.best_y) starts.push_back({run.y, 0.0});
+    if (run.status != OptimizeStatus::kOk && run.status != OptimizeStatus::kMaxEvaluations &&
+        run.status != OptimizeStatus::kMaxTime) {
+      nlopt_message = run.message;
+    }
+    algorithm = options.global_algorithm + "+" + options.local_algorithm;
+  }
+
+  // Local constrained polish from every start; the status is that of the run that produced
+  // the best point.
+  for (const Start& start : starts) {
+    const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
+    const std::vector<double> step = {0.25 * std::max(start.y[0], 1e-3),
+                                      0.25 * std::max(start.y[1], 1e-3), 0.1};
+    const detail::RunResult run = detail::RunNlopt(local, problem, start.y, step, options.rel_tol,
+                                                   options.local_evaluations, tracker);
+    if (tracker.best.valid && tracker.best.I > before) {
+      best_status = run.status;
+      nlopt_message = run.message;
+    }
+  }
+
+  // Final phase polish (P1) at the best (A, c): a point valid through Solve itself.
+  detail::Evaluation best = tracker.best;
+  if (!tracker.best_y.empty()) {
+    const double A = std::max(tracker.best_y[0], 0.0) * bound, c = tracker.best_y[1] * bound;
+    PhaseOptions phase;
+    phase.scan_points = kFinalPhaseScan;
+    phase.stable = options.stable;
+    phase.rho_max = options.rho_max;
+    const OptimizeResult p1 = OptimizePhase(Forcing::Harmonic(A, c, 0.0), params, phase);
+    tracker.evaluations += p1.evaluations;
+    if (p1.found() && (!best.valid || p1.solution.orbit.I > best.I)) {
+      const double y[3] = {tracker.best_y[0], tracker.best_y[1], p1.solution.orbit.forcing.phi0()};
+      best = detail::EvaluateAt(problem, y, tracker);
+    }
+  }
+
+  OptimizeResult result;
+  result.algorithm = algorithm;
+  result.evaluations = tracker.evaluations;
+  result.solution = best.solution;
+  result.spectral_radius = best.rho;
+  if (best.valid) {
+    result.status = best_status;
+    result.active_constraints =
+        detail::ActiveConstraints(best, problem.setup, options.active_tol, true);
+    std::string active;
+    for (const auto& a : result.active_constraints) active += (active.empty() ? "" : ", ") + a;
+    result.message = fmt::format(
+        "fastest valid {}gait with A + c <= {:g}: I = {:.10g} (A = {:.6g}, c = {:.6g}, phi0 = "
+        "{:.6g}); active constraints: {}{}{}",
+        options.stable ? "stable " : "", bound, best.I, best.solution.orbit.forcing.amplitude(),
+        best.solution.orbit.forcing.mean(), best.solution.orbit.forcing.phi0(),
+        active.empty() ? "none" : active, nlopt_message.empty() ? "" : "; ", nlopt_message);
+  } else {
+    result.status = OptimizeStatus::kNoValidOrbit;
+    result.message = fmt::format(
+        "no valid {}gait found with A + c <= {:g}{}{}; nearest to valid violates {}",
+        options.stable ? "stable " : "", bound, nlopt_message.empty() ? "" : " (",
+        nlopt_message.empty() ? "" : nlopt_message + ")",
+        detail::DescribeViolations(best, problem.setup));
+  }
+  return result;
 }
 
 }  // namespace capsubot

@@ -1,18 +1,215 @@
-// P3 of MODEL.md section 7 (work in progress).
+// P3 of MODEL.md section 7: a K-harmonic force F(phi) = c + sum_k (a_k cos k phi + b_k sin k phi)
+// (phi = 0 at the impact) with mean c > 0 and max |F| <= bound, maximising I.
+//
+// Variables, scaled by the bound: y = (c, a_1..a_K, b_1..b_K) / bound; the impact phase is
+// free because the coefficients are (a rotation of the series is a change of coefficients).
+// Constraints as in P2 (nlopt_constraints.hpp) with the exact max |F| <= bound. The search
+// starts from the P2 optimum at the same bound (the K = 1 member of the family), so the gain
+// over P2 is never negative; further starts are random perturbations of the best point so
+// far. Finally the phase of the best shape is polished by P1, so that the returned orbit is
+// valid through Solve.
 
 #include "capsubot/optimize_fourier.hpp"
 
-namespace capsubot {
+#include <fmt/format.h>
 
-void FourierOptions::Validate() const {}
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize_phase.hpp"
+#include "detail/nlopt_problem.hpp"
+#include "detail/nlopt_status.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr double kMinMeanFraction = 1e-9;  // c > 0 (fraction of the bound)
+// |a_k|, |b_k| <= (1/pi) integral |F| |cos k phi| <= (4/pi) max |F|: bounds on the scaled
+// coefficients that cut off nothing feasible.
+constexpr double kCoefficientBound = 4.0 / 3.14159265358979323846;
+// Standard deviation of the random perturbations of the multistart (fraction of the bound).
+constexpr double kPerturbation = 0.05;
+constexpr int kFinalPhaseScan = 720;
+
+void Require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+// The series seen from the impact: coefficients of cos k phi, sin k phi of F(phi) = G(phi + phi0).
+Forcing ImpactFrame(const Forcing& f) {
+  const int K = f.harmonics();
+  std::vector<double> a(K), b(K);
+  for (int k = 1; k <= K; ++k) {
+    const double ck = std::cos(k * f.phi0()), sk = std::sin(k * f.phi0());
+    a[k - 1] = f.a(k) * ck + f.b(k) * sk;
+    b[k - 1] = f.b(k) * ck - f.a(k) * sk;
+  }
+  return Forcing::Fourier(f.mean(), a, b, 0.0);
+}
+
+}  // namespace
+
+void FourierOptions::Validate() const {
+  Require(harmonics >= 1 && harmonics <= kMaxHarmonics,
+          fmt::format("harmonics K = {} is invalid: expected 1 <= K <= {}", harmonics,
+                      kMaxHarmonics));
+  Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
+          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
+                      force_bound));
+  if (global_algorithm != kMultistart) {
+    detail::AlgorithmFromName(global_algorithm, GlobalAlgorithmNames(), "global_algorithm");
+  }
+  detail::AlgorithmFromName(local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
+  Require(std::isfinite(rel_tol) && rel_tol > 0.0,
+          fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
+  Require(local_evaluations >= 10,
+          fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
+  Require(global_evaluations >= 10, fmt::format("global_evaluations = {} is invalid: expected "
+                                                "at least 10",
+                                                global_evaluations));
+  Require(std::isfinite(rho_max) && rho_max > 0.0,
+          fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
+  Require(std::isfinite(active_tol) && active_tol >= 0.0,
+          fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
+}
 
 OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& options) {
   params.Validate();
   options.Validate();
-  OptimizeResult r;
-  r.status = OptimizeStatus::kFailure;
-  r.message = "P3 is not implemented yet";
-  return r;
+  const double bound = std::isnan(options.force_bound) ? params.T0 : options.force_bound;
+  Require(bound <= params.T0,
+          fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
+                      "above the friction bound moves the capsule without impacts, MODEL.md "
+                      "section 6)",
+                      bound, params.T0));
+  const nlopt::algorithm local = detail::AlgorithmFromName(
+      options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  const int K = options.harmonics;
+
+  // The P2 optimum at the same bound: the baseline and the first start.
+  ForcingDesignOptions p2;
+  p2.force_bound = bound;
+  p2.local_algorithm = options.local_algorithm;
+  p2.stable = options.stable;
+  p2.rho_max = options.rho_max;
+  p2.seed = options.seed;
+  const OptimizeResult harmonic = OptimizeForcing(params, p2);
+
+  detail::Problem problem;
+  problem.n = 2 * K + 1;
+  problem.lower.assign(problem.n, -kCoefficientBound);
+  problem.upper.assign(problem.n, kCoefficientBound);
+  problem.lower[0] = kMinMeanFraction;
+  problem.upper[0] = 1.0;
+  problem.build = [bound, K](const double* y) {
+    std::vector<double> a(y + 1, y + 1 + K), b(y + 1 + K, y + 1 + 2 * K);
+    for (double& v : a) v *= bound;
+    for (double& v : b) v *= bound;
+    return Forcing::Fourier(y[0] * bound, a, b, 0.0);
+  };
+  problem.setup = {params, bound, options.stable, options.rho_max};
+  problem.constraints = {detail::kLeftWallIndex, detail::kRightWallIndex,
+                         detail::kAlphaLowIndex, detail::kAlphaHighIndex,
+                         detail::kStickIndex,    detail::kForceBoundIndex,
+                         detail::kSeparationIndex};
+  if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
+  problem.objective_scale = params.T0;
+
+  detail::Tracker tracker;
+  tracker.evaluations = harmonic.evaluations;
+  std::vector<double> seed_y(problem.n, 0.0);
+  {
+    const Forcing& f = harmonic.solution.orbit.forcing;
+    const double A = f.amplitude(), phi0 = f.phi0();
+    seed_y[0] = std::max(f.mean() / bound, kMinMeanFraction);
+    seed_y[1] = A * std::sin(phi0) / bound;      // a_1
+    seed_y[1 + K] = A * std::cos(phi0) / bound;  // b_1
+    detail::EvaluateAt(problem, seed_y.data(), tracker);
+  }
+
+  OptimizeStatus best_status = harmonic.found() ? OptimizeStatus::kOk : harmonic.status;
+  std::string nlopt_message;
+  std::string algorithm;
+  std::mt19937 rng(options.seed);
+  std::normal_distribution<double> normal(0.0, kPerturbation);
+  const std::vector<double> step(problem.n, kPerturbation);
+
+  auto polish = [&](const std::vector<double>& y0) {
+    const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
+    const detail::RunResult run = detail::RunNlopt(local, problem, y0, step, options.rel_tol,
+                                                   options.local_evaluations, tracker);
+    if (tracker.best.valid && tracker.best.I > before) {
+      best_status = run.status;
+      nlopt_message = run.message;
+    }
+  };
+
+  if (options.global_algorithm == kMultistart) {
+    polish(seed_y);
+    for (int s = 1; s < options.starts; ++s) {
+      std::vector<double> y0 = tracker.best_y;
+      for (int j = 1; j < problem.n; ++j) y0[j] += normal(rng);
+      polish(y0);
+    }
+    algorithm = fmt::format("P2+multistart({} starts)+{}", options.starts, options.local_algorithm);
+  } else {
+    const nlopt::algorithm global = detail::AlgorithmFromName(
+        options.global_algorithm, GlobalAlgorithmNames(), "global_algorithm");
+    nlopt::srand(options.seed);
+    const detail::RunResult run = detail::RunNlopt(global, problem, seed_y, {}, options.rel_tol,
+                                                   options.global_evaluations, tracker);
+    if (!run.message.empty()) nlopt_message = run.message;
+    polish(tracker.best_y);
+    algorithm = "P2+" + options.global_algorithm + "+" + options.local_algorithm;
+  }
+
+  // Final phase polish (P1) of the best shape, then the series seen from the impact.
+  detail::Evaluation best = tracker.best;
+  if (!tracker.best_y.empty()) {
+    PhaseOptions phase;
+    phase.scan_points = kFinalPhaseScan;
+    phase.stable = options.stable;
+    phase.rho_max = options.rho_max;
+    const OptimizeResult p1 = OptimizePhase(problem.build(tracker.best_y.data()), params, phase);
+    tracker.evaluations += p1.evaluations;
+    if (p1.found() && (!best.valid || p1.solution.orbit.I > best.I)) {
+      const detail::Evaluation turned =
+          detail::Evaluate(ImpactFrame(p1.solution.orbit.forcing), problem.setup);
+      ++tracker.evaluations;
+      best = turned.valid ? turned : detail::Evaluate(p1.solution.orbit.forcing, problem.setup);
+    }
+  }
+
+  OptimizeResult result;
+  result.algorithm = algorithm;
+  result.evaluations = tracker.evaluations;
+  result.solution = best.solution;
+  result.spectral_radius = best.rho;
+  result.baseline_I = harmonic.found() ? harmonic.solution.orbit.I : OptimizeResult::kNaN;
+  if (best.valid) {
+    result.status = best_status;
+    result.active_constraints =
+        detail::ActiveConstraints(best, problem.setup, options.active_tol, true);
+    result.message = fmt::format(
+        "fastest valid {}gait with {} harmonics and max |F| <= {:g}: I = {:.10g}{}{}",
+        options.stable ? "stable " : "", K, bound, best.I,
+        std::isnan(result.baseline_I)
+            ? std::string(" (P2 found no valid gait)")
+            : fmt::format(", {:+.4g}% over the harmonic optimum I = {:.10g}",
+                          100.0 * (best.I / result.baseline_I - 1.0), result.baseline_I),
+        nlopt_message.empty() ? "" : "; " + nlopt_message);
+  } else {
+    result.status = OptimizeStatus::kNoValidOrbit;
+    result.message = fmt::format("no valid {}gait found with {} harmonics and max |F| <= {:g}; "
+                                 "nearest to valid violates {}",
+                                 options.stable ? "stable " : "", K, bound,
+                                 detail::DescribeViolations(best, problem.setup));
+  }
+  return result;
 }
 
 }  // namespace capsubot

@@ -24,6 +24,14 @@ namespace {
 constexpr double kPi = kTau / 2.0;
 constexpr int kMinScanPoints = 16;
 constexpr int kMaxBrentIterations = 100;
+// A point whose constraint violation is at most this is invalid by round-off only (e.g. the
+// stick test max |F| <= T0 when A + c = T0 exactly): it does not end a valid arc, yet it is
+// never returned, since the result must be valid through Solve.
+constexpr double kRoundoffViolation = 1e-12;
+// Steps tried around a polished optimum that is invalid by round-off only.
+constexpr int kNudges = 8;
+
+bool InArc(const detail::Evaluation& ev) { return ev.valid || ev.violation <= kRoundoffViolation; }
 
 struct GslMinimizerFree {
   void operator()(gsl_min_fminimizer* m) const { gsl_min_fminimizer_free(m); }
@@ -39,18 +47,20 @@ class PhaseSearch {
     return detail::Evaluate(forcing_.WithPhase(phi0), setup_);
   }
 
-  // Edge of the valid set between `valid_phase` (valid) and `invalid_phase` by bisection.
-  detail::Evaluation Edge(double valid_phase, detail::Evaluation valid_ev, double invalid_phase,
+  // Edge of the valid arc between `in_phase` (in the arc) and `out_phase` by bisection;
+  // returns the valid point nearest to the edge (or the arc-side point if none was valid).
+  detail::Evaluation Edge(double in_phase, detail::Evaluation in_ev, double out_phase,
                           double tol) {
-    while (std::abs(invalid_phase - valid_phase) > tol) {
-      const double mid = 0.5 * (valid_phase + invalid_phase);
-      if (mid == valid_phase || mid == invalid_phase) break;
+    detail::Evaluation valid_ev = in_ev;
+    while (std::abs(out_phase - in_phase) > tol) {
+      const double mid = 0.5 * (in_phase + out_phase);
+      if (mid == in_phase || mid == out_phase) break;
       detail::Evaluation ev = At(mid);
-      if (ev.valid) {
-        valid_phase = mid;
-        valid_ev = std::move(ev);
+      if (InArc(ev)) {
+        in_phase = mid;
+        if (ev.valid || !valid_ev.valid) valid_ev = std::move(ev);
       } else {
-        invalid_phase = mid;
+        out_phase = mid;
       }
     }
     return valid_ev;
@@ -81,7 +91,11 @@ class PhaseSearch {
       const double a = gsl_min_fminimizer_x_lower(m), b = gsl_min_fminimizer_x_upper(m);
       if (gsl_min_test_interval(a, b, tol, 0.0) == GSL_SUCCESS) break;
     }
-    detail::Evaluation ev = At(gsl_min_fminimizer_x_minimum(m));
+    const double x = gsl_min_fminimizer_x_minimum(m);
+    detail::Evaluation ev = At(x);
+    for (int k = 1; k <= kNudges && !ev.valid && InArc(ev); ++k) {
+      ev = At(x + (k % 2 == 0 ? 1.0 : -1.0) * ((k + 1) / 2) * tol);
+    }
     if (ev.valid && ev.I > best.I) {
       best = std::move(ev);
       return true;
@@ -132,11 +146,13 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   const double h = kTau / n;
   std::vector<double> phase(n);
   std::vector<detail::Evaluation> scan(n);
+  std::vector<char> arc(n);  // inside a valid arc (valid, or invalid by round-off only)
   int best = 0, valid_count = 0;
   for (int i = 0; i < n; ++i) {
     phase[i] = -kPi + h * i;
     scan[i] = search.At(phase[i]);
     if (scan[i].valid) ++valid_count;
+    arc[i] = InArc(scan[i]);
     if (detail::Better(scan[i], scan[best])) best = i;
   }
   OptimizeResult result;
@@ -158,8 +174,8 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     for (int i = 0; i < n; ++i) {
       const int j = next(i);
-      if (scan[i].valid == scan[j].valid) continue;
-      const int v = scan[i].valid ? i : j, w = scan[i].valid ? j : i;
+      if (arc[i] == arc[j]) continue;
+      const int v = arc[i] ? i : j, w = arc[i] ? j : i;
       detail::Evaluation edge =
           search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol);
       const double edge_phase = edge.solution.orbit.forcing.phi0();
@@ -168,10 +184,9 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     // Polish around every local maximum of I among the valid scan points.
     for (int i = 0; i < n; ++i) {
-      if (!scan[i].valid) continue;
+      if (!arc[i]) continue;
       const int a = prev(i), b = next(i);
-      if ((scan[a].valid && scan[a].I > scan[i].I) || (scan[b].valid && scan[b].I > scan[i].I))
-        continue;
+      if ((arc[a] && scan[a].I > scan[i].I) || (arc[b] && scan[b].I > scan[i].I)) continue;
       search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);
     }
   }
