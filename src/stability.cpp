@@ -47,7 +47,8 @@ Stability ComputeStability(const Orbit& orbit) {
   s.jacobian = ImpactMapJacobian(orbit.forcing, orbit.T0, orbit.e, orbit.alpha, orbit.u,
                                  orbit.phi1, kTau);
   // Eigenvalues of a 2x2 matrix from its trace and determinant.
-  const double tr = s.jacobian.trace(), det = s.jacobian.determinant();
+  const Eigen::Matrix2d& J = s.jacobian;
+  const double tr = J(0, 0) + J(1, 1), det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
   const double half = 0.5 * tr, disc = half * half - det;
   using C = std::complex<double>;
   if (disc >= 0.0) {

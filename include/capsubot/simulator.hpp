@@ -1,0 +1,132 @@
+#pragma once
+// Exact event-driven simulation of the full non-smooth dynamics (MODEL.md sections 3 and 10):
+// the independent ground truth for the analytic orbit. It uses only the force (F, Pi, Phi,
+// Crossings, Bounds) and the parameters, never the analytic orbit code.
+//
+// Inside each mode the motion is in closed form; events are located by exact bracketing on
+// pieces where the event function is monotone, convex or concave (cut at the crossings of F
+// with known levels), then Brent's method to ~1e-14 in phase. See README, section
+// "Simulation, stability and the orbits of a given robot", for why no event is missed.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "capsubot/forcing.hpp"
+#include "capsubot/params.hpp"
+
+namespace capsubot {
+
+/// The modes of MODEL.md section 3, plus the inner body resting on a wall (after chattering,
+/// or an e = 0 impact while pressed against the wall): then u = 0 and it moves with the capsule.
+enum class SimMode {
+  kRest,           ///< capsule at rest (v = 0), inner body free
+  kSlideForward,   ///< v > 0, inner body free
+  kSlideBackward,  ///< v < 0, inner body free
+  kOnRightWall,    ///< inner body resting on the right wall (x = 1, u = 0); capsule rests or slides
+  kOnLeftWall,     ///< inner body resting on the left wall (x = 0, u = 0); capsule rests or slides
+};
+
+enum class EventKind {
+  kImpactRight,  ///< x = 1 with u > 0: u -> -e u, v -> v + alpha (1+e) u
+  kImpactLeft,   ///< x = 0 with u < 0: same law
+  kStop,         ///< v reaches 0 while sliding (then rest, or reversal if |F| > T0)
+  kBreakaway,    ///< at rest, |F| reaches T0: the capsule starts to slide
+  kStick,        ///< the inner body comes to rest on a wall (end of a chattering sequence)
+  kRelease,      ///< the inner body leaves the wall it rested on (contact force changes sign)
+};
+
+/// Stable identifiers used in CSV and JSON ("impact_right", "stop", ...).
+const char* EventKindName(EventKind kind);
+const char* SimModeName(SimMode mode);
+
+/// The full state at a phase. y is the capsule position (units of L).
+struct SimState {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double phi = kNaN;  ///< phase since the start of the simulation
+  double x = kNaN;    ///< relative position of the inner body (walls at 0 and 1)
+  double u = kNaN;    ///< relative velocity x'
+  double v = kNaN;    ///< capsule velocity
+  double y = kNaN;    ///< capsule position
+  SimMode mode = SimMode::kRest;
+};
+
+/// One event: the state right after it, and u, v right before it (they differ at impacts).
+struct SimEvent {
+  EventKind kind = EventKind::kStop;
+  SimState after;     ///< state right after the event (its phase is the event's phase)
+  double u_before = SimState::kNaN;  ///< relative velocity right before (the impact velocity)
+  double v_before = SimState::kNaN;  ///< capsule velocity right before
+};
+
+/// Receives events and trajectory samples (optional; the hot path passes none).
+class SimObserver {
+ public:
+  virtual ~SimObserver() = default;
+  virtual void OnEvent(const SimEvent& event) { (void)event; }
+  /// Called at phases k * sample_step (k = 0, 1, ...) up to the end, in order.
+  virtual void OnSample(const SimState& state) { (void)state; }
+};
+
+struct SimOptions {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double alpha = kNaN;   ///< mass ratio m2/(m1+m2); 0 < alpha < 1
+  double x0 = kNaN;      ///< initial relative position; 0 <= x0 <= 1
+  double u0 = kNaN;      ///< initial relative velocity (finite)
+  double v0 = kNaN;      ///< initial capsule velocity (finite)
+  double y0 = 0.0;       ///< initial capsule position (finite)
+  double periods = 1.0;  ///< simulate phi in [0, periods * tau]; 0 < periods <= 1e8
+  /// Stop right after this many right-wall impacts (0: no limit). An impact at phi = 0 counts.
+  std::int64_t max_impacts_right = 0;
+  /// An impact slower than this (|u| before it), with the relative acceleration pushing the
+  /// inner body into the wall, ends in the body resting on the wall (chattering cut-off). > 0.
+  double chatter_velocity = 1e-6;
+  /// Work bound: at most this many events per simulated period (then status kEventLimit). >= 10.
+  std::int64_t max_events_per_period = 100000;
+  /// Phase step of OnSample calls (0: no samples); >= 0.
+  double sample_step = 0.0;
+
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule.
+  void Validate() const;
+};
+
+enum class SimStatus {
+  kNotRun,        ///< not computed
+  kOk,            ///< reached the end phase
+  kImpactLimit,   ///< stopped right after max_impacts_right right-wall impacts
+  kEventLimit,    ///< the work bound was hit (message says where); the state is where it stopped
+};
+
+/// Stable identifier of a status ("ok", "impact_limit", "event_limit").
+const char* SimStatusName(SimStatus status);
+
+struct SimResult {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  SimStatus status = SimStatus::kNotRun;
+  std::string message;      ///< empty unless status is kEventLimit
+  SimState final_state;     ///< state at the end (after any event at the end phase)
+  std::int64_t impacts_right = 0;
+  std::int64_t impacts_left = 0;
+  std::int64_t stops = 0;
+  std::int64_t breakaways = 0;
+  std::int64_t sticks = 0;      ///< chattering sequences ended with the body resting on a wall
+  std::int64_t releases = 0;    ///< departures from a wall after resting on it
+  std::int64_t events = 0;      ///< all events
+  double displacement = kNaN;   ///< y(end) - y(0)
+  double v_mean = kNaN;         ///< displacement / (phase simulated)
+};
+
+/// Simulates the model of MODEL.md section 3 from the initial state of `options`, with the
+/// force F(phi) = forcing.F(phi), phi = 0 at the start. Validates params and options
+/// (std::invalid_argument); expected outcomes are statuses, never exceptions. An event within
+/// kEndSlack of the end phase is processed before stopping, so a run of whole periods from a
+/// post-impact state of a periodic orbit ends right after the closing impact.
+SimResult Simulate(const Forcing& forcing, const Params& params, const SimOptions& options,
+                   SimObserver* observer = nullptr);
+
+inline constexpr double kEndSlack = 1e-10;  ///< phase tolerance of the end (see Simulate)
+
+}  // namespace capsubot
