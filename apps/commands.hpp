@@ -6,5 +6,6 @@
 namespace capsubot::app {
 
 Command AddSolveCommand(CLI::App& app);
+Command AddSweepCommand(CLI::App& app);
 
 }  // namespace capsubot::app

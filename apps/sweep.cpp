@@ -1,0 +1,159 @@
+// capsubot sweep: the orbit, its validity (and stability, or the best phase) over a 1-D or 2-D
+// grid of parameters, to a CSV file (library: capsubot/sweep.hpp).
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "capsubot/sweep.hpp"
+#include "commands.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct SweepCliOptions {
+  std::vector<std::string> grids;
+  ForcingOptions forcing;
+  SweepOptions sweep;
+  std::string optimize;
+};
+
+std::string Duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0) return "--:--";
+  const long s = std::lround(seconds);
+  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+                   : fmt::format("{:02}:{:02}", s / 60, s % 60);
+}
+
+// A one-line progress bar on stderr, redrawn at most 10 times a second.
+class ProgressBar {
+ public:
+  void operator()(const SweepProgress& p) {
+    const bool last = p.points_done >= p.points_total;
+    if (!last && p.seconds - drawn_ < 0.1) return;
+    drawn_ = p.seconds;
+    const double fraction =
+        p.points_total > 0 ? static_cast<double>(p.points_done) / p.points_total : 1.0;
+    const double rate = p.seconds > 0.0 ? (p.points_done - p.points_resumed) / p.seconds : 0.0;
+    const double left = rate > 0.0 ? (p.points_total - p.points_done) / rate : NAN;
+    constexpr int kWidth = 30;
+    const int full = static_cast<int>(fraction * kWidth);
+    fmt::print(stderr, "\r[{}{}] {:5.1f}%  {}/{} points  {:.3g} points/s  {} elapsed  {} left ",
+               std::string(full, '#'), std::string(kWidth - full, '.'), 100.0 * fraction,
+               p.points_done, p.points_total, rate, Duration(p.seconds), Duration(left));
+    if (last) fmt::print(stderr, "\n");
+    std::fflush(stderr);
+  }
+
+ private:
+  double drawn_ = -1.0;
+};
+
+int Run(SweepCliOptions& opt) {
+  SweepOptions& s = opt.sweep;
+  s.grid.axes.clear();
+  for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
+  s.grid.Validate();
+  if (!opt.optimize.empty()) {
+    if (opt.optimize != "phi0") {
+      throw std::invalid_argument(fmt::format(
+          "--optimize {} is invalid: expected phi0 (the impact phase, problem P1)", opt.optimize));
+    }
+    s.optimize_phi0 = true;
+  }
+  const Grid& g = s.grid;
+  // A gridded A or c needs no option: the grid gives its value at every point.
+  if (g.Has(SweepParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
+  const bool phase_given_elsewhere =
+      g.Has(SweepParameter::kphi0) || g.Has(SweepParameter::kalpha) || s.optimize_phi0;
+  if (std::isnan(opt.forcing.c)) {
+    throw std::invalid_argument("option --c is missing: give the mean force c (or --grid c=...)");
+  }
+  if (g.Has(SweepParameter::kA) && opt.forcing.fourier_option->count() == 0 &&
+      opt.forcing.A_option->count() == 0) {
+    s.forcing = Forcing::Harmonic(0.0, opt.forcing.c,
+                                  opt.forcing.phi0_option->count() > 0 ? opt.forcing.phi0 : 0.0);
+    if (!phase_given_elsewhere && opt.forcing.phi0_option->count() == 0) {
+      throw std::invalid_argument("option --phi0 is missing: give the impact phase phi0 [rad] "
+                                  "(or --grid phi0=..., --grid alpha=..., --optimize phi0)");
+    }
+  } else {
+    s.forcing = opt.forcing.Build(!phase_given_elsewhere);
+  }
+  if (s.optimize_phi0 || g.Has(SweepParameter::kalpha)) {
+    if (opt.forcing.phi0_option->count() > 0) {
+      throw std::invalid_argument(fmt::format(
+          "--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
+          opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
+    }
+  }
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  ProgressBar bar;
+  SweepProgressCallback progress;
+  if (tty) progress = [&bar](const SweepProgress& p) { bar(p); };
+  const SweepSummary summary = RunSweep(s, progress);
+  if (tty) {
+    fmt::print(stderr, "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",
+               summary.points, summary.rows, s.output, summary.seconds, summary.threads,
+               summary.points_resumed > 0
+                   ? fmt::format(" ({} points resumed from the checkpoint)", summary.points_resumed)
+                   : std::string());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command AddSweepCommand(CLI::App& app) {
+  auto opt = std::make_shared<SweepCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "The orbit and its validity (MODEL.md sections 4-5) at every point of a 1-D or 2-D grid "
+      "of parameters, to a CSV file: columns <grid parameters>, phi1, alpha, u, v_plus, I, "
+      "v_mean, x_min, x_max, valid, violations (empty cell: the quantity does not exist). "
+      "Runs on all cores; the file is byte-identical for any --threads, written to "
+      "<output>.partial and renamed at the end; --resume continues a killed sweep.");
+  cmd->add_option("--grid", opt->grids,
+                  "a grid name=lo:hi:n: n >= 1 equally spaced values from lo to hi inclusive "
+                  "(n = 1: lo), name among A, c, phi0, T0, e, margin, alpha (lo, hi may be "
+                  "pi or -pi). Give 1 or 2 grids; with 2 the first varies slowest. alpha "
+                  "(robot mode) finds every orbit of the robot with that mass ratio: one row "
+                  "per orbit, with columns orbits, orbit, phi0")
+      ->required()
+      ->take_all()
+      ->allow_extra_args(false);
+  AddForcingOptions(*cmd, opt->forcing);
+  cmd->get_option("--c")->required(false)->description(
+      "mean force c of F (same unit as A), required unless c has a --grid; a directed orbit "
+      "needs c > 0");
+  AddParamsOptions(*cmd, opt->sweep.params);
+  cmd->add_option("--output,-o", opt->sweep.output, "the CSV file to write (required)")
+      ->required();
+  cmd->add_flag("--stability", opt->sweep.stability,
+                "add the columns spectral_radius (of the impact map, MODEL.md section 8) and "
+                "stable (1 when < 1)");
+  cmd->add_option("--optimize", opt->optimize,
+                  "phi0: at every point, the impact phase phi0 maximising I over valid orbits "
+                  "(problem P1); adds the columns phi0 (the optimum) and status");
+  cmd->add_flag("--stable-only", opt->sweep.phase.stable,
+                "with --optimize phi0: maximise over valid and stable orbits only");
+  cmd->add_option("--scan-points", opt->sweep.phase.scan_points,
+                  "with --optimize phi0: points of the optimiser's initial scan of phi0")
+      ->capture_default_str();
+  cmd->add_flag("--resume", opt->sweep.resume,
+                "continue an interrupted sweep from <output>.checkpoint (same options "
+                "required); without it a sweep always starts again");
+  cmd->add_option("--threads", opt->sweep.threads,
+                  "worker threads (default 0: all cores, std::thread::hardware_concurrency)")
+      ->capture_default_str();
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app
