@@ -6,6 +6,8 @@
 namespace capsubot::app {
 
 Command AddSolveCommand(CLI::App& app);
+Command AddSimulateCommand(CLI::App& app);
+Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 
 }  // namespace capsubot::app

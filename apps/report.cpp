@@ -84,4 +84,31 @@ std::string SolutionTable(const Solution& s, const Params& p) {
   return t;
 }
 
+void AddStabilityJson(nlohmann::json& j, const Stability& st) {
+  if (!st.computed) {
+    j["multipliers"] = nullptr;
+    j["spectral_radius"] = nullptr;
+    j["stable"] = false;
+    return;
+  }
+  nlohmann::json m = nlohmann::json::array();
+  for (const auto& z : st.multipliers) m.push_back({{"re", z.real()}, {"im", z.imag()}});
+  j["multipliers"] = m;
+  j["spectral_radius"] = st.spectral_radius;
+  j["stable"] = st.stable;
+}
+
+std::string StabilityTable(const Stability& st) {
+  if (!st.computed) return "  stability        not computed (no orbit)\n";
+  std::string t;
+  for (int i = 0; i < 2; ++i) {
+    const auto& z = st.multipliers[i];
+    t += fmt::format("  multiplier {}     {} {} {}i\n", i + 1, Num(z.real()),
+                     z.imag() < 0 ? '-' : '+', Num(std::abs(z.imag())));
+  }
+  t += fmt::format("  spectral radius  {}   ({}: MODEL.md section 8)\n", Num(st.spectral_radius),
+                   st.stable ? "stable, < 1" : "unstable, >= 1");
+  return t;
+}
+
 }  // namespace capsubot::app

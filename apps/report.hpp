@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 
 namespace capsubot::app {
@@ -18,5 +19,12 @@ std::string ForceFormula(const Forcing& forcing);
 
 /// A readable multi-line summary of a solved orbit.
 std::string SolutionTable(const Solution& solution, const Params& params);
+
+/// Adds the stability of MODEL.md section 8 to a JSON object: "multipliers" (array of
+/// {"re", "im"}), "spectral_radius" and "stable" (null, null, false when not computed).
+void AddStabilityJson(nlohmann::json& j, const Stability& stability);
+
+/// Readable lines on the stability (multipliers, spectral radius, verdict).
+std::string StabilityTable(const Stability& stability);
 
 }  // namespace capsubot::app

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "capsubot/io.hpp"
+#include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
 #include "report.hpp"
@@ -16,6 +17,7 @@ struct SolveOptions {
   ForcingOptions forcing;
   Params params;
   bool json = false;
+  bool stability = false;
   std::string trajectory;
   int samples = 1001;
 };
@@ -50,9 +52,12 @@ int Run(const SolveOptions& opt) {
     }
   }
   if (opt.json) {
-    fmt::print("{}\n", SolutionJson(s).dump());
+    nlohmann::json j = SolutionJson(s);
+    if (opt.stability) AddStabilityJson(j, ComputeStability(s.orbit));
+    fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", SolutionTable(s, opt.params));
+    if (opt.stability) fmt::print("{}", StabilityTable(ComputeStability(s.orbit)));
   }
   return 0;
 }
@@ -71,6 +76,10 @@ Command AddSolveCommand(CLI::App& app) {
   cmd->add_flag("--json", opt->json,
                 "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
                 "v_mean, x_min, x_max, valid, violations; null where a quantity does not exist)");
+  cmd->add_flag("--stability", opt->stability,
+                "also compute the stability of the orbit (MODEL.md section 8): adds the keys "
+                "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "
+                "spectral_radius and stable (spectral_radius < 1) to --json");
   cmd->add_option("--trajectory", opt->trajectory,
                   "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "
                   "the impact)");

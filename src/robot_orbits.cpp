@@ -42,6 +42,13 @@ struct PsiFunction {
     const Orbit o = ComputeOrbit(forcing->WithPhase(phi0), *params);
     return (1.0 - a) * o.psi0 + a * o.psi1;
   }
+  // dPsi/dphi0 from the envelope identity above.
+  double Derivative(double phi0) const {
+    const Orbit o = ComputeOrbit(forcing->WithPhase(phi0), *params);
+    const Forcing& f = o.forcing;
+    const double F0 = f.F(0.0);
+    return (1.0 - a) * kTau * (F0 - f.mean()) + a * (f.Pi(o.phi1) - o.phi1 * F0);
+  }
 };
 
 }  // namespace
@@ -66,7 +73,12 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
   const double noise = 1e-12 * kTau * kTau * (S + forcing.mean() + params.T0);
   const double accept = L * kMinWidth + noise;
 
-  std::vector<double> roots;
+  struct Root {
+    double phi0;
+    bool crossing;  // a sign change (else a double root: |Psi| at the noise level)
+    double residual;
+  };
+  std::vector<Root> roots;
   struct Interval {
     double lo, hi, plo, phi;
   };
@@ -87,9 +99,15 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     const double alo = std::abs(iv.plo), ahi = std::abs(iv.phi);
     if (smooth ? alo + ahi > bound : std::min(alo, ahi) > bound) continue;  // no root here
     if (w <= kMinWidth) {
-      double r = alo <= ahi ? iv.lo : iv.hi;
-      if ((iv.plo < 0.0) != (iv.phi < 0.0)) r = detail::Brent(psi, iv.lo, iv.hi);
-      if (std::abs(psi(r)) <= accept) roots.push_back(r);
+      const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
+      // Not detail::Brent: Psi itself runs the thread's GSL Brent solver (phi1), which a nested
+      // use would reset. Newton inside the bracket (bisection fallback) needs no solver state.
+      const double r =
+          crossing ? detail::SafeNewton(psi, [&psi](double p) { return psi.Derivative(p); },
+                                        iv.lo, iv.hi)
+                   : alo <= ahi ? iv.lo : iv.hi;
+      const double residual = std::abs(psi(r));
+      if (residual <= accept) roots.push_back({r, crossing, residual});
       continue;
     }
     const double mid = 0.5 * (iv.lo + iv.hi), pmid = psi(mid);
@@ -97,11 +115,23 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     stack.push_back({mid, iv.hi, pmid, iv.phi});
     stack.push_back({iv.lo, mid, iv.plo, pmid});
   }
-  std::sort(roots.begin(), roots.end());
-  double last = -10.0;
-  for (double r : roots) {
-    if (r - last < kSameRoot) continue;
-    last = r;
+  // Candidates within kSameRoot are one root: keep the sign change (the neighbouring
+  // intervals of a simple root may pass the |Psi| test too), else the smallest |Psi|.
+  std::sort(roots.begin(), roots.end(),
+            [](const Root& x, const Root& y) { return x.phi0 < y.phi0; });
+  std::vector<double> unique;
+  for (std::size_t i = 0; i < roots.size();) {
+    std::size_t j = i, pick = i;
+    for (; j < roots.size() && roots[j].phi0 - roots[i].phi0 < kSameRoot; ++j) {
+      const Root &a = roots[j], &b = roots[pick];
+      if ((a.crossing && !b.crossing) || (a.crossing == b.crossing && a.residual < b.residual)) {
+        pick = j;
+      }
+    }
+    unique.push_back(roots[pick].phi0);
+    i = j;
+  }
+  for (double r : unique) {
     const double phi0 = r >= kPi ? r - kTau : r;  // [-pi, pi)
     if (!found.empty() && std::abs(phi0 - found.front().orbit.forcing.phi0()) < kSameRoot) {
       continue;  // pi and -pi are the same phase

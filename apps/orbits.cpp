@@ -1,0 +1,81 @@
+// capsubot orbits: every one-impact orbit of a robot whose mass ratio is fixed (MODEL.md
+// section 8), with validity, mean velocity and stability.
+
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "capsubot/robot_orbits.hpp"
+#include "capsubot/stability.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct OrbitsOptions {
+  ForcingOptions forcing;
+  Params params;
+  double alpha = std::numeric_limits<double>::quiet_NaN();
+  bool json = false;
+};
+
+int Run(const OrbitsOptions& opt) {
+  opt.params.Validate();
+  const Forcing forcing = opt.forcing.Build(false);
+  const std::vector<Solution> found = FindRobotOrbits(forcing, opt.params, opt.alpha);
+  if (opt.json) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const Solution& s : found) {
+      nlohmann::json j = SolutionJson(s);
+      AddStabilityJson(j, ComputeStability(s.orbit));
+      all.push_back(j);
+    }
+    fmt::print("{}\n", all.dump());
+    return 0;
+  }
+  std::string t = fmt::format("one-impact orbits of the robot with alpha = {:.10g}\n", opt.alpha);
+  t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
+                   ForceFormula(forcing.WithPhase(0.0)));
+  t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", opt.params.T0, opt.params.e,
+                   opt.params.margin);
+  t += fmt::format("  {} orbit(s)\n", found.size());
+  if (!found.empty()) {
+    t += fmt::format("  {:>14}  {:>10}  {:>14}  {:>15}  {:>8}  {}\n", "phi0", "phi1", "v_mean",
+                     "spectral_radius", "stable", "valid");
+  }
+  for (const Solution& s : found) {
+    const Stability st = ComputeStability(s.orbit);
+    std::string valid = "yes";
+    if (!s.validity.valid()) {
+      valid = "no:";
+      for (const auto& n : s.validity.ViolationNames()) valid += " " + n;
+    }
+    t += fmt::format("  {:>14.10f}  {:>10.6f}  {:>14.8g}  {:>15.6g}  {:>8}  {}\n",
+                     s.orbit.forcing.phi0(), s.orbit.phi1, s.orbit.v_mean, st.spectral_radius,
+                     st.stable ? "yes" : "no", valid);
+  }
+  fmt::print("{}", t);
+  return 0;
+}
+
+}  // namespace
+
+Command AddOrbitsCommand(CLI::App& app) {
+  auto opt = std::make_shared<OrbitsOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "orbits",
+      "Every one-impact orbit of a given robot (mass ratio alpha fixed, MODEL.md section 8): "
+      "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, none missed, each with "
+      "its validity, mean velocity and stability.");
+  AddForcingOptions(*cmd, opt->forcing, false);
+  AddParamsOptions(*cmd, opt->params);
+  cmd->add_option("--alpha", opt->alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
+      ->required();
+  cmd->add_flag("--json", opt->json,
+                "print a JSON array with one object per orbit, sorted by phi0, with the keys of "
+                "`solve --stability --json`");
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app

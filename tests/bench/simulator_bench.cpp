@@ -1,0 +1,81 @@
+// Simulated periods per second of a one-impact orbit (issue 3: at least 200,000 on one core,
+// Release) and the cost of the analytic stability (wanted: about 2 microseconds or less).
+
+#include <benchmark/benchmark.h>
+
+#include "capsubot/simulator.hpp"
+#include "capsubot/stability.hpp"
+#include "capsubot/validity.hpp"
+
+namespace {
+
+using capsubot::Forcing;
+using capsubot::Params;
+
+// A valid, stable orbit (spectral radius about 0.16; found by scanning phi0 with
+// `capsubot solve --stability`): A = 0.05, c = 0.02, T0 = 0.1, e = 0.5, phi0 = -2.842.
+struct StableOrbit {
+  Params params;
+  capsubot::Orbit orbit;
+  StableOrbit() {
+    params.T0 = 0.1;
+    params.e = 0.5;
+    orbit = capsubot::ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.842), params);
+  }
+};
+
+void SimulateOrbit(benchmark::State& state, double periods) {
+  const StableOrbit s;
+  capsubot::SimOptions opt;
+  opt.alpha = s.orbit.alpha;
+  opt.x0 = 1.0;
+  opt.u0 = -s.params.e * s.orbit.u;
+  opt.v0 = s.orbit.v_plus;
+  opt.periods = periods;
+  double sum = 0.0;
+  for (auto _ : state) {
+    const capsubot::SimResult r = capsubot::Simulate(s.orbit.forcing, s.params, opt);
+    sum += r.displacement;
+  }
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * periods));  // periods
+}
+
+// items_per_second = simulated periods per second.
+void BM_SimulateOrbitOnePeriod(benchmark::State& state) { SimulateOrbit(state, 1.0); }
+BENCHMARK(BM_SimulateOrbitOnePeriod);
+
+void BM_SimulateOrbit1000Periods(benchmark::State& state) { SimulateOrbit(state, 1000.0); }
+BENCHMARK(BM_SimulateOrbit1000Periods);
+
+// A two-harmonic Fourier force (crossings through the companion matrix): a slower path.
+void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {
+  Params params;
+  params.T0 = 0.1;
+  params.e = 0.5;
+  const auto orbit = capsubot::ComputeOrbit(
+      Forcing::Fourier(0.02, {0.0, 0.005}, {0.05, 0.0}, -2.842), params);
+  capsubot::SimOptions opt;
+  opt.alpha = orbit.alpha;
+  opt.x0 = 1.0;
+  opt.u0 = -params.e * orbit.u;
+  opt.v0 = orbit.v_plus;
+  opt.periods = 100.0;
+  double sum = 0.0;
+  for (auto _ : state) sum += capsubot::Simulate(orbit.forcing, params, opt).displacement;
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * 100));
+}
+BENCHMARK(BM_SimulateFourierOrbit100Periods);
+
+// The analytic stability of one orbit (what an optimiser or a sweep pays per point).
+void BM_ComputeStability(benchmark::State& state) {
+  const StableOrbit s;
+  double sum = 0.0;
+  for (auto _ : state) sum += capsubot::ComputeStability(s.orbit).spectral_radius;
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ComputeStability);
+
+}  // namespace
