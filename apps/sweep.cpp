@@ -150,6 +150,10 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_flag("--resume", opt->sweep.resume,
                 "continue an interrupted sweep from <output>.checkpoint (same options "
                 "required); without it a sweep always starts again");
+  cmd->add_option("--checkpoint-seconds", opt->sweep.checkpoint_seconds,
+                  "minimum time [s] between two checkpoints (each one fsyncs the partial file); "
+                  "0: after every block of rows")
+      ->capture_default_str();
   cmd->add_option("--threads", opt->sweep.threads,
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency)")
       ->capture_default_str();

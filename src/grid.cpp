@@ -58,8 +58,10 @@ const char* SweepParameterName(SweepParameter parameter) {
 double GridAxis::Value(std::int64_t i) const {
   if (n <= 1 || i <= 0) return lo;
   if (i >= n - 1) return hi;
-  const double t = static_cast<double>(i) / static_cast<double>(n - 1);
-  return lo + (hi - lo) * t;
+  // Weighted mean of the ends: symmetric in lo and hi, and round decimals stay round
+  // (0.05:0.95:19 gives 0.1, not 0.09999999999999999).
+  const double m = static_cast<double>(n - 1);
+  return (lo * (m - static_cast<double>(i)) + hi * static_cast<double>(i)) / m;
 }
 
 std::string GridAxis::ToString() const {

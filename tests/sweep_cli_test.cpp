@@ -1,0 +1,194 @@
+// `capsubot sweep` as a user runs it: a sweep killed mid-way (SIGKILL or SIGINT, the real
+// process) leaves no CSV under the final name and `--resume` completes it to the same bytes
+// as an uninterrupted run; bad command lines exit with status 2 and a message naming the
+// option, its value and the rule.
+
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+const std::string kCli = CAPSUBOT_CLI;
+
+class TempDir {
+ public:
+  TempDir() {
+    char pattern[] = "/tmp/capsubot_sweep_cli_test_XXXXXX";
+    path_ = ::mkdtemp(pattern);
+  }
+  ~TempDir() { std::system(("rm -rf '" + path_ + "'").c_str()); }
+  std::string File(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool Exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
+
+struct Outcome {
+  int status = -1;     // exit status
+  std::string output;  // stdout and stderr
+};
+
+Outcome RunCli(const std::string& args, const std::string& log) {
+  const int raw = std::system((kCli + " " + args + " > '" + log + "' 2>&1").c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(log)};
+}
+
+// Complete grid points recorded in a checkpoint file (0 if absent or unreadable).
+long CheckpointPoints(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, key;
+  long points = 0;
+  std::getline(in, line);
+  in >> key >> points;
+  return key == "points" ? points : 0;
+}
+
+// A sweep slow enough to be caught mid-way: P1 at each of 960 points (about 1 s).
+// Checkpoints every 50 ms (each one fsyncs: every block would be slow on a real disk).
+std::vector<std::string> SlowSweep(const std::string& output, int threads) {
+  return {kCli,          "sweep",         "--grid", "A=0.05:0.95:24", "--grid",
+          "c=0.01:0.5:40", "--optimize",   "phi0",   "--stability",    "--T0",
+          "1",           "--threads",     std::to_string(threads),    "--checkpoint-seconds",
+          "0.05",           "-o",            output};
+}
+
+pid_t Spawn(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+std::string Join(const std::vector<std::string>& args) {
+  std::string s;
+  for (std::size_t i = 1; i < args.size(); ++i) s += "'" + args[i] + "' ";
+  return s;
+}
+
+class SweepCliKilled : public ::testing::TestWithParam<int> {};
+
+TEST_P(SweepCliKilled, ResumesToTheBytesOfAnUninterruptedRun) {
+  const int signal = GetParam();
+  TempDir dir;
+  const std::string reference = dir.File("reference.csv"), killed = dir.File("killed.csv");
+  ASSERT_EQ(RunCli(Join(SlowSweep(reference, 2)), dir.File("ref.log")).status, 0);
+
+  const pid_t pid = Spawn(SlowSweep(killed, 1));
+  ASSERT_GT(pid, 0);
+  // Wait until some rows are checkpointed, then kill the process mid-way.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  long done = 0;
+  while ((done = CheckpointPoints(killed + ".checkpoint")) == 0 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_EQ(::kill(pid, signal), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep ended before it could be killed";
+  EXPECT_EQ(WTERMSIG(status), signal);
+  EXPECT_GT(done, 0);
+  EXPECT_FALSE(Exists(killed)) << "a killed sweep left a CSV under its final name";
+  EXPECT_TRUE(Exists(killed + ".partial"));
+  const long checkpointed = CheckpointPoints(killed + ".checkpoint");
+  EXPECT_GT(checkpointed, 0);
+  EXPECT_LT(checkpointed, 960);
+
+  std::vector<std::string> resume = SlowSweep(killed, 2);
+  resume.emplace_back("--resume");
+  const Outcome r = RunCli(Join(resume), dir.File("resume.log"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed file differs";
+  EXPECT_FALSE(Exists(killed + ".partial"));
+  EXPECT_FALSE(Exists(killed + ".checkpoint"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, SweepCliKilled, ::testing::Values(SIGKILL, SIGINT),
+                         [](const auto& info) {
+                           return info.param == SIGKILL ? std::string("SIGKILL")
+                                                        : std::string("SIGINT");
+                         });
+
+TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
+  TempDir dir;
+  const Outcome r = RunCli("sweep --grid phi0=-pi:pi:5 --A 0.5 --c 0.5 -o " + dir.File("a.csv"),
+                           dir.File("log"));
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output, "");
+  const std::string csv = ReadFile(dir.File("a.csv"));
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
+}
+
+struct BadCommand {
+  const char* args;
+  const char* message;  // expected substring of the one-line error
+};
+
+class SweepCliRejects : public ::testing::TestWithParam<BadCommand> {};
+
+TEST_P(SweepCliRejects, WithStatus2AndAMessage) {
+  TempDir dir;
+  const Outcome r = RunCli(std::string("sweep ") + GetParam().args + " -o " + dir.File("x.csv"),
+                           dir.File("log"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+  EXPECT_FALSE(Exists(dir.File("x.csv")));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadCommands, SweepCliRejects,
+    ::testing::Values(
+        BadCommand{"--grid q=0:1:3 --A 0.5 --c 0.5 --phi0 1",
+                   "capsubot sweep: error: --grid q=0:1:3 is invalid: unknown parameter 'q'"},
+        BadCommand{"--grid phi0=0:1:0 --A 0.5 --c 0.5",
+                   "--grid phi0=0:1:0 is invalid: n = 0: expected n >= 1 points"},
+        BadCommand{"--grid phi0=0:1:3 --grid phi0=1:2:3 --A 0.5 --c 0.5",
+                   "parameter phi0 already has a grid"},
+        BadCommand{"--grid alpha=0.1:0.5:3 --grid phi0=0:1:3 --A 0.5 --c 0.5",
+                   "--grid alpha together with --grid phi0 is invalid"},
+        BadCommand{"--grid phi0=nan:1:3 --A 0.5 --c 0.5", "expected finite bounds"},
+        BadCommand{"--grid c=0:1:3 --A 0.5", "option --phi0 is missing"},
+        BadCommand{"--grid phi0=0:1:3 --A 0.5", "option --c is missing"},
+        BadCommand{"--grid A=0:1:3 --c 0.5 --optimize phi1",
+                   "--optimize phi1 is invalid: expected phi0"},
+        BadCommand{"--grid A=0:1:3 --c 0.5 --phi0 1 --optimize phi0",
+                   "--phi0 = 1 is invalid with --optimize phi0"},
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --threads -2",
+                   "--threads = -2 is invalid: expected 1 <= threads"},
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --T0 0",
+                   "friction bound T0 = 0 is invalid"}));
+
+}  // namespace
