@@ -176,12 +176,14 @@ class Simulation {
   void Rebase(double s);
   SimState StateAt(double s) const;
   void Emit(EventKind kind, double u_before, double v_before);
-  void EmitSamplesBefore(double s_end, bool inclusive);
+  void EmitSamplesBefore(double s_end, bool final);
   // Instantaneous transitions at the origin: impacts with inward velocity, choice of the
   // capsule mode when v = 0, sticking to and leaving a wall. `hint` is the slide direction
   // of a break-away (0 if none).
   void Settle(double hint);
   void Impact(double dir);
+  // Sets the capsule mode at the origin from v (and F when v = 0) without other transitions.
+  void UpdateMode(double hint);
   double RestOrSlide(double hint) const;
   bool FreeAccelIntoWall(double dir, double sgn) const;
   bool Fail(const char* what);
@@ -204,12 +206,20 @@ class Simulation {
 
 SimState Simulation::StateAt(double s) const {
   SimState st;
+  st.mode = sg_.mode;
+  if (s == 0.0) {  // the stored state (exact; also right after an event, before settling)
+    st.phi = Phase();
+    st.x = sg_.x0;
+    st.u = sg_.u0;
+    st.v = sg_.v0;
+    st.y = sg_.y0;
+    return st;
+  }
   st.phi = Phase() + s;
   st.x = sg_.X(s);
   st.u = sg_.U(s);
   st.v = sg_.V(s);
   st.y = sg_.Y(s);
-  st.mode = sg_.mode;
   return st;
 }
 
@@ -247,14 +257,16 @@ void Simulation::Emit(EventKind kind, double u_before, double v_before) {
   }
 }
 
-void Simulation::EmitSamplesBefore(double s_end, bool inclusive) {
+// Samples at phases k * sample_step in [origin, origin + s_end) of the current segment; with
+// `final`, every remaining sample up to the end phase (rounding of k * step allowed).
+void Simulation::EmitSamplesBefore(double s_end, bool final) {
   if (observer_ == nullptr || !(opt_.sample_step > 0.0)) return;
-  const double origin = Phase(), end = opt_.periods * kTau;
+  const double origin = Phase(), end = opt_.periods * kTau, slack = 1e-12 * (1.0 + end);
   for (;;) {
     const double p = static_cast<double>(next_sample_) * opt_.sample_step;
-    if (p > end * (1.0 + 1e-15)) return;
+    if (p > end + slack) return;
     const double s = p - origin;
-    if (inclusive ? s > s_end : s >= s_end) return;
+    if (!final && s >= s_end) return;
     observer_->OnSample(StateAt(std::max(s, 0.0)));
     ++next_sample_;
   }
@@ -312,7 +324,17 @@ void Simulation::Impact(double dir) {
     sg_.v0 = v + sg_.alpha * (1.0 + params_.e) * u;
   }
   if (sg_.u0 == 0.0) sg_.u0 = 0.0;  // no -0
+  UpdateMode(0.0);
   Emit(dir > 0.0 ? EventKind::kImpactRight : EventKind::kImpactLeft, u, v);
+}
+
+void Simulation::UpdateMode(double hint) {
+  const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : sg_.OnWall() ? 0.0 : RestOrSlide(hint);
+  SetCoefficients(sg_, sgn);
+  if (sg_.OnWall()) return;
+  sg_.mode = sgn > 0.0 ? SimMode::kSlideForward
+             : sgn < 0.0 ? SimMode::kSlideBackward
+                         : SimMode::kRest;
 }
 
 void Simulation::Settle(double hint) {
@@ -328,11 +350,8 @@ void Simulation::Settle(double hint) {
         hint = 0.0;
         continue;
       }
-      const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : RestOrSlide(hint);
-      SetCoefficients(sg_, sgn);
-      sg_.mode = sgn > 0.0 ? SimMode::kSlideForward
-                 : sgn < 0.0 ? SimMode::kSlideBackward
-                             : SimMode::kRest;
+      UpdateMode(hint);
+      const double sgn = sg_.sgn;
       if (sg_.u0 == 0.0 && (sg_.x0 >= 1.0 || sg_.x0 <= 0.0)) {
         const double dir = sg_.x0 >= 1.0 ? 1.0 : -1.0;
         if (FreeAccelIntoWall(dir, sgn)) {
@@ -347,8 +366,9 @@ void Simulation::Settle(double hint) {
     const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : 0.0;
     SetCoefficients(sg_, sgn);
     if (FreeAccelIntoWall(dir, sgn)) return;  // the contact force keeps its sign
-    sg_.mode = SimMode::kRest;  // free; the loop chooses the capsule mode
+    sg_.mode = SimMode::kRest;  // free
     sg_.u0 = 0.0;
+    UpdateMode(0.0);
     Emit(EventKind::kRelease, 0.0, sg_.v0);
   }
 }
@@ -368,7 +388,7 @@ SimResult Simulation::Run() {
   sg_.v0 = opt_.v0;
   sg_.y0 = opt_.y0;
   const std::int64_t max_events =
-      opt_.max_events_per_period * static_cast<std::int64_t>(std::ceil(opt_.periods)) + 1000;
+      opt_.max_events_per_period * static_cast<std::int64_t>(std::ceil(opt_.periods));
   int stalled = 0;
   res_.status = SimStatus::kOk;
   Settle(0.0);
@@ -377,7 +397,7 @@ SimResult Simulation::Run() {
       res_.status = SimStatus::kImpactLimit;
       break;
     }
-    if (res_.events > max_events && Fail("work bound max_events_per_period reached")) break;
+    if (res_.events >= max_events && Fail("work bound max_events_per_period reached")) break;
     const double rem = Remaining();
     if (rem <= 0.0) break;
     const double W = std::min(kTau, rem + kEndSlack);
@@ -429,10 +449,12 @@ SimResult Simulation::Run() {
     switch (kind) {
       case EventKind::kStop:
         sg_.v0 = 0.0;
+        UpdateMode(0.0);
         Emit(EventKind::kStop, u_before, v_before);
         Settle(0.0);
         break;
       case EventKind::kBreakaway:
+        UpdateMode(hint);
         Emit(EventKind::kBreakaway, u_before, v_before);
         Settle(hint);
         break;
@@ -445,6 +467,7 @@ SimResult Simulation::Run() {
       case EventKind::kRelease:
         sg_.mode = SimMode::kRest;
         sg_.u0 = 0.0;
+        UpdateMode(0.0);
         Emit(EventKind::kRelease, u_before, v_before);
         Settle(0.0);
         break;
@@ -452,7 +475,7 @@ SimResult Simulation::Run() {
         break;
     }
   }
-  EmitSamplesBefore(std::max(0.0, opt_.periods * kTau - Phase()), true);
+  EmitSamplesBefore(0.0, true);
   res_.final_state = StateAt(0.0);
   res_.displacement = res_.final_state.y - opt_.y0;
   res_.v_mean = res_.final_state.phi > 0.0 ? res_.displacement / res_.final_state.phi
