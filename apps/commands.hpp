@@ -9,5 +9,6 @@ Command AddSolveCommand(CLI::App& app);
 Command AddSimulateCommand(CLI::App& app);
 Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
+Command AddOptimizeCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {AddSolveCommand(app), AddSimulateCommand(app),
-                                         AddOrbitsCommand(app), AddSweepCommand(app)};
+                                         AddOrbitsCommand(app), AddSweepCommand(app),
+                                         AddOptimizeCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

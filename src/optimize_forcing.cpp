@@ -188,11 +188,22 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     }
   }
 
+  // Report phi0 in [-pi, pi) (the local polish may wander past -pi); the wrapped point is
+  // re-evaluated, and kept only if it is still valid (a wrap changes the last bits).
+  const double phi0 = best.solution.orbit.forcing.phi0();
+  if (best.valid && !(phi0 >= -kPi && phi0 < kPi)) {
+    const double y[3] = {best.solution.orbit.forcing.amplitude() / bound,
+                         best.solution.orbit.forcing.mean() / bound,
+                         phi0 - kTau * std::floor((phi0 + kPi) / kTau)};
+    detail::Evaluation wrapped = detail::EvaluateAt(problem, y, tracker);
+    if (wrapped.valid) best = std::move(wrapped);
+  }
+
   OptimizeResult result;
   result.algorithm = algorithm;
   result.evaluations = tracker.evaluations;
   result.solution = best.solution;
-  result.spectral_radius = best.rho;
+  result.spectral_radius = detail::SpectralRadius(best);
   if (best.valid) {
     result.status = best_status;
     result.active_constraints =

@@ -188,7 +188,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   result.algorithm = algorithm;
   result.evaluations = tracker.evaluations;
   result.solution = best.solution;
-  result.spectral_radius = best.rho;
+  result.spectral_radius = detail::SpectralRadius(best);
   result.baseline_I = harmonic.found() ? harmonic.solution.orbit.I : OptimizeResult::kNaN;
   if (best.valid) {
     result.status = best_status;

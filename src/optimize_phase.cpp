@@ -196,7 +196,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   if (wrapped != phi0) winner = search.At(wrapped);
   result.evaluations = search.evaluations();
   result.solution = winner.solution;
-  result.spectral_radius = winner.rho;
+  result.spectral_radius = detail::SpectralRadius(winner);
   if (winner.valid) {
     result.status = OptimizeStatus::kOk;
     result.active_constraints =

@@ -47,7 +47,9 @@ struct OptimizeResult {
   /// The optimum (force with its phi0, orbit, validity). With status kNoValidOrbit: the
   /// point nearest to validity (smallest constraint violation), whose validity says why.
   Solution solution;
-  double spectral_radius = kNaN;  ///< of the returned orbit, when stability was computed
+  /// Spectral radius of the impact map at the returned orbit (MODEL.md section 8), computed
+  /// whenever the orbit exists (< 1: stable); NaN without orbit.
+  double spectral_radius = kNaN;
   /// Constraints whose slack at the optimum is within the options' active_tol (names from
   /// capsubot::constraint_names), in a fixed order.
   std::vector<std::string> active_constraints;

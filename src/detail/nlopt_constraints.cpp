@@ -59,6 +59,12 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup) {
   return ev;
 }
 
+double SpectralRadius(const Evaluation& ev) {
+  if (!std::isnan(ev.rho) || !ev.solution.orbit.ok()) return ev.rho;
+  const Stability st = ComputeStability(ev.solution.orbit);
+  return st.computed ? st.spectral_radius : ev.rho;
+}
+
 bool Better(const Evaluation& a, const Evaluation& b) {
   if (a.valid != b.valid) return a.valid;
   if (a.valid) return a.I > b.I;

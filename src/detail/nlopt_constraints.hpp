@@ -58,6 +58,10 @@ struct Evaluation {
 /// without orbit; params must be valid.
 Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup);
 
+/// The spectral radius of the evaluated orbit (MODEL.md section 8): ev.rho if it was
+/// computed, else computed now; NaN without orbit.
+double SpectralRadius(const Evaluation& ev);
+
 /// True if a is the better candidate: valid beats invalid, then larger I among valid ones,
 /// smaller violation among invalid ones.
 bool Better(const Evaluation& a, const Evaluation& b);

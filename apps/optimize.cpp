@@ -1,0 +1,369 @@
+// capsubot optimize: the fastest gait (MODEL.md section 7). Without --problem it runs the main
+// job: the paper's problem P1 at c = A = T0/2, then P2 at the same T0 with and without the
+// stability requirement, a readable summary and results/optimum.json.
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "capsubot/io.hpp"
+#include "capsubot/optimize.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+
+namespace capsubot::app {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kForceCsvRows = 1001;
+
+struct OptimizeCliOptions {
+  std::string problem;  // "", phase, forcing, fourier
+  double A = kNaN;
+  double c = kNaN;
+  Params params;
+  double bound = kNaN;
+  int harmonics = 3;
+  std::string global_algorithm = kMultistart;
+  std::string local_algorithm = "LN_COBYLA";
+  int starts = 0;  // 0: the problem's default
+  double rho_max = kNaN;  // NaN: no stability requirement
+  CLI::Option* stable_option = nullptr;
+  bool json = false;
+  std::string output = "results/optimum.json";
+  CLI::Option* output_option = nullptr;
+  std::string force_csv;
+};
+
+std::string Num(double v, int digits = 6) {
+  return std::isnan(v) ? "-" : fmt::format("{:.{}g}", v, digits);
+}
+
+std::string Join(const std::vector<std::string>& items, const char* none = "none") {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s.empty() ? none : s;
+}
+
+// The JSON object of one optimisation result (keys of issue 4, item 5).
+nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
+  const Orbit& o = r.solution.orbit;
+  const Validity& v = r.solution.validity;
+  const Forcing& f = o.forcing;
+  nlohmann::json j;
+  j["problem"] = problem;
+  j["status"] = OptimizeStatusName(r.status);
+  j["message"] = r.message;
+  j["valid"] = r.found();
+  j["I"] = o.I;  // NaN is written as null: a quantity that does not exist
+  j["v_mean"] = o.v_mean;
+  j["A"] = f.harmonic() ? nlohmann::json(f.amplitude()) : nlohmann::json();
+  j["c"] = f.mean();
+  j["phi0"] = f.phi0();
+  j["phi1"] = o.phi1;
+  j["alpha"] = o.alpha;
+  j["u"] = o.u;
+  j["v_plus"] = o.v_plus;
+  j["x_min"] = v.x_min;
+  j["x_max"] = v.x_max;
+  j["violations"] = v.ViolationNames();
+  j["active_constraints"] = r.active_constraints;
+  j["evaluations"] = r.evaluations;
+  j["algorithm"] = r.algorithm;
+  if (!std::isnan(r.spectral_radius)) {
+    j["spectral_radius"] = r.spectral_radius;
+    j["stable"] = r.spectral_radius < 1.0;
+  }
+  if (!f.harmonic()) {
+    std::vector<double> a, b;
+    for (int k = 1; k <= f.harmonics(); ++k) {
+      a.push_back(f.a(k));
+      b.push_back(f.b(k));
+    }
+    j["coefficients"] = {{"c", f.mean()}, {"cos", a}, {"sin", b}};
+  }
+  return j;
+}
+
+void WriteJson(const nlohmann::json& j, const std::string& path) {
+  AtomicFile file(path, "--output");
+  file.stream() << j.dump(2) << '\n';
+  file.Commit();
+}
+
+void WriteForceCsv(const Forcing& f, const std::string& path) {
+  AtomicFile file(path, "--force-csv");
+  auto& out = file.stream();
+  out << "phi,F\n";  // phi = 0 is the impact
+  for (int i = 0; i < kForceCsvRows; ++i) {
+    const double phi = kTau * i / (kForceCsvRows - 1);
+    out << FormatNumber(phi) << ',' << FormatNumber(f.F(phi)) << '\n';
+  }
+  file.Commit();
+}
+
+// A gait in plain terms, indented.
+std::string GaitText(const OptimizeResult& r, double T0) {
+  const Orbit& o = r.solution.orbit;
+  const Validity& v = r.solution.validity;
+  std::string t;
+  t += fmt::format("    force            {}\n", ForceFormula(o.forcing));
+  t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {}\n", Num(o.alpha, 5));
+  t += fmt::format("    speed            I = {} shell lengths per period = {} T0; mean velocity "
+                   "{} omega L\n",
+                   Num(o.I, 6), Num(o.I / T0, 5), Num(o.v_mean, 5));
+  t += fmt::format("    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
+                   "until phi1 = {} rad\n",
+                   Num(o.u, 5), Num(o.v_plus, 5), Num(o.phi1, 5));
+  t += fmt::format("    inner body       x from {} to {} (walls at 0 and 1)\n", Num(v.x_min, 4),
+                   std::isnan(v.x_max) ? "1 (at the impact)" : Num(v.x_max, 6));
+  t += fmt::format("    binding          {}\n", Join(r.active_constraints));
+  if (!std::isnan(r.spectral_radius)) {
+    const double rho = r.spectral_radius;
+    // The stability constraint often binds: rho = 1 up to the optimiser's tolerance.
+    const bool boundary = std::abs(rho - 1.0) <= 1e-6;
+    t += fmt::format("    stability        spectral radius {} -> {}\n", Num(rho, 4),
+                     boundary ? "on the stability boundary: the limit of the stable gaits "
+                                "(use --stable 0.95 for a margin)"
+                     : rho < 1.0 ? "stable: a real robot settles on this gait"
+                                 : "unstable: a real robot would drift away from this gait");
+  }
+  t += fmt::format("    solver           {} ({} evaluations, status {})\n", r.algorithm,
+                   r.evaluations, OptimizeStatusName(r.status));
+  return t;
+}
+
+ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
+  ForcingDesignOptions d;
+  d.force_bound = opt.bound;
+  d.global_algorithm = opt.global_algorithm;
+  d.local_algorithm = opt.local_algorithm;
+  if (opt.starts > 0) d.starts = opt.starts;
+  d.stable = stable;
+  if (stable) d.rho_max = opt.rho_max;
+  return d;
+}
+
+int RunMainJob(const OptimizeCliOptions& opt) {
+  const Params& p = opt.params;
+  const double rho_max = std::isnan(opt.rho_max) ? 1.0 : opt.rho_max;
+  OptimizeCliOptions stable_opt = opt;
+  stable_opt.rho_max = rho_max;
+  // 1. The paper's problem: c = A = T0/2, best phase.
+  const OptimizeResult paper =
+      OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), p, PhaseOptions{});
+  // 2. The fastest valid gait and 3. the fastest stable one, A + c <= bound.
+  const OptimizeResult fastest = OptimizeForcing(p, DesignOptions(opt, false));
+  const OptimizeResult stable = OptimizeForcing(p, DesignOptions(stable_opt, true));
+  const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
+
+  nlohmann::json j;
+  j["T0"] = p.T0;
+  j["e"] = p.e;
+  j["margin"] = p.margin;
+  j["force_bound"] = bound;
+  j["rho_max"] = rho_max;
+  j["paper_phase"] = ResultJson(paper, "phase");
+  j["paper_phase"]["note"] = "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0";
+  j["fastest"] = ResultJson(fastest, "forcing");
+  j["fastest"]["note"] = "P2: A, c, phi0 free with A + c <= force_bound";
+  j["fastest_stable"] = ResultJson(stable, "forcing");
+  j["fastest_stable"]["note"] = "P2 restricted to spectral radius <= rho_max";
+  WriteJson(j, opt.output);
+  if (!opt.force_csv.empty()) WriteForceCsv(fastest.solution.orbit.forcing, opt.force_csv);
+  if (opt.json) {
+    fmt::print("{}\n", j.dump());
+    return 0;
+  }
+
+  std::string t;
+  t += fmt::format(
+      "capsubot optimize: the fastest one-impact gait of the capsule robot (MODEL.md section 7)\n"
+      "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
+      "margin {:g}\n"
+      "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
+      "omega L\n"
+      "(T0 = 1, e = 1 are the paper's values; change them with --T0, --e, --margin)\n\n",
+      p.T0, p.e, p.margin);
+  t += fmt::format(
+      "1. The paper's problem (P1): force F = A sin(phi + phi0) + c with c = A = T0/2 = {:g},\n"
+      "   best impact phase phi0 over the whole circle.\n",
+      p.T0 / 2.0);
+  if (paper.found()) {
+    t += "   Result: a valid gait exists.\n" + GaitText(paper, p.T0);
+  } else {
+    const Validity& v = paper.solution.validity;
+    t += fmt::format(
+        "   Result: NO valid gait (status {}). For every phi0 the constructed orbit breaks a\n"
+        "   condition of MODEL.md section 5. Nearest to valid: phi0 = {}, I = {}, violating\n"
+        "   {}.\n",
+        OptimizeStatusName(paper.status), Num(paper.solution.orbit.forcing.phi0(), 6),
+        Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
+    if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
+      // Only the left wall fails. Scaling A, c, T0 by k scales 1 - x by k and leaves the
+      // other conditions unchanged (MODEL.md section 6): the gait fits once k (1 - x_min) <= 1.
+      t += fmt::format(
+          "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
+          "   too strong for this shell. Orbit sizes scale with T0 (MODEL.md section 6): this\n"
+          "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
+          "   weaker, differently shaped force is needed:\n",
+          Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);
+    }
+  }
+  t += fmt::format(
+      "\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
+  t += fastest.found() ? GaitText(fastest, p.T0)
+                       : fmt::format("   Result: none found ({})\n", fastest.message);
+  t += fmt::format(
+      "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, MODEL.md section 8):\n",
+      rho_max);
+  t += stable.found() ? GaitText(stable, p.T0)
+                      : fmt::format("   Result: none found ({})\n", stable.message);
+  if (fastest.found() && stable.found()) {
+    t += fmt::format(
+        "\nIn short: the fastest valid gait moves {} L per period with inner mass ratio {};\n"
+        "the fastest stable one, the gait a real robot can settle on, moves {} L per period\n"
+        "({} of the former) with inner mass ratio {}.\n",
+        Num(fastest.solution.orbit.I, 5), Num(fastest.solution.orbit.alpha, 4),
+        Num(stable.solution.orbit.I, 5),
+        fmt::format("{:.1f}%", 100.0 * stable.solution.orbit.I / fastest.solution.orbit.I),
+        Num(stable.solution.orbit.alpha, 4));
+  }
+  t += fmt::format("\nwritten: {}\n", opt.output);
+  fmt::print("{}", t);
+  return 0;
+}
+
+int RunProblem(const OptimizeCliOptions& opt) {
+  const Params& p = opt.params;
+  const bool stable = !std::isnan(opt.rho_max);
+  OptimizeResult r;
+  if (opt.problem == "phase") {
+    if (std::isnan(opt.A) || std::isnan(opt.c)) {
+      throw std::invalid_argument(
+          "--problem phase needs the force shape: give --A and --c (F = A sin(phi + phi0) + c)");
+    }
+    PhaseOptions po;
+    po.stable = stable;
+    if (stable) po.rho_max = opt.rho_max;
+    r = OptimizePhase(Forcing::Harmonic(opt.A, opt.c, 0.0), p, po);
+  } else if (opt.problem == "forcing") {
+    r = OptimizeForcing(p, DesignOptions(opt, stable));
+  } else {  // fourier (CLI11 checks the name)
+    FourierOptions fo;
+    fo.harmonics = opt.harmonics;
+    fo.force_bound = opt.bound;
+    fo.global_algorithm = opt.global_algorithm;
+    fo.local_algorithm = opt.local_algorithm;
+    if (opt.starts > 0) fo.starts = opt.starts;
+    fo.stable = stable;
+    if (stable) fo.rho_max = opt.rho_max;
+    r = OptimizeFourier(p, fo);
+  }
+  nlohmann::json j = ResultJson(r, opt.problem.c_str());
+  j["T0"] = p.T0;
+  j["e"] = p.e;
+  j["margin"] = p.margin;
+  if (opt.problem == "fourier") {
+    j["baseline_I"] = r.baseline_I;
+    j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
+  }
+  if (!opt.force_csv.empty()) WriteForceCsv(r.solution.orbit.forcing, opt.force_csv);
+  if (opt.output_option->count() > 0) WriteJson(j, opt.output);
+  if (opt.json) {
+    fmt::print("{}\n", j.dump());
+    return 0;
+  }
+  std::string t;
+  t += fmt::format("capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margin = {:g}{}\n",
+                   opt.problem, p.T0, p.e, p.margin,
+                   stable ? fmt::format(", spectral radius <= {:g}", opt.rho_max) : "");
+  t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
+  t += GaitText(r, p.T0);
+  if (opt.problem == "fourier") {
+    t += fmt::format("    gain over P2     {} (harmonic optimum I = {})\n",
+                     r.found() ? fmt::format("{:+.4g}%", 100.0 * (r.solution.orbit.I / r.baseline_I - 1.0))
+                               : std::string("-"),
+                     Num(r.baseline_I, 8));
+  }
+  fmt::print("{}", t);
+  return 0;
+}
+
+int Run(const OptimizeCliOptions& opt) {
+  opt.params.Validate();
+  if (opt.stable_option->count() > 0 && !(std::isfinite(opt.rho_max) && opt.rho_max > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--stable = {} is invalid: expected a spectral radius bound rho_max > 0",
+                    opt.rho_max));
+  }
+  return opt.problem.empty() ? RunMainJob(opt) : RunProblem(opt);
+}
+
+}  // namespace
+
+Command AddOptimizeCommand(CLI::App& app) {
+  auto opt = std::make_shared<OptimizeCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "optimize",
+      "The fastest gait (MODEL.md section 7). Without --problem: the main job, run from the "
+      "repository root: the paper's problem (best phase at c = A = T0/2), then the fastest "
+      "valid and the fastest stable gait with A + c <= T0; prints a summary and writes "
+      "--output. With --problem: one problem. Exit status 0 whenever the computation ran, "
+      "valid gait found or not.");
+  cmd->add_option("--problem", opt->problem,
+                  "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
+                  "A + c <= --bound) or fourier (P3: best K-harmonic force with max |F| <= "
+                  "--bound); default: the main job")
+      ->check(CLI::IsMember({"phase", "forcing", "fourier"}));
+  cmd->add_option("--A", opt->A,
+                  "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
+                  "of (m1+m2) omega^2 L");
+  cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
+  AddParamsOptions(*cmd, opt->params);
+  cmd->add_option("--bound", opt->bound,
+                  "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
+                  "same unit as A (default: T0)");
+  cmd->add_option("--harmonics", opt->harmonics, "number K of harmonics of the Fourier force")
+      ->capture_default_str();
+  cmd->add_option("--global-algorithm", opt->global_algorithm,
+                  "global stage of forcing/fourier: multistart (scan + local polishes) or an "
+                  "NLopt algorithm: GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS")
+      ->capture_default_str();
+  cmd->add_option("--local-algorithm", opt->local_algorithm,
+                  "local constrained polish, NLopt name: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ "
+                  "(LD_*: gradients by central differences)")
+      ->capture_default_str();
+  cmd->add_option("--starts", opt->starts,
+                  "number of local polishes of the multistart (default: 6 for forcing, 8 for "
+                  "fourier)");
+  opt->stable_option =
+      cmd->add_option("--stable", opt->rho_max,
+                      "require a stable orbit: spectral radius of the impact map (MODEL.md "
+                      "section 8) <= rho_max; the value is optional (--stable alone means "
+                      "rho_max = 1). The main job always reports both")
+          ->expected(0, 1)
+          ->default_str("1");
+  cmd->add_flag("--json", opt->json,
+                "print one JSON object: status, I, v_mean, A, c, phi0, phi1, alpha, u, v_plus, "
+                "x_min, x_max, active_constraints, evaluations, algorithm (+ coefficients for "
+                "fourier, spectral_radius when the orbit exists; null where a quantity does not "
+                "exist); the main job prints the object it writes to --output");
+  opt->output_option = cmd->add_option(
+      "--output", opt->output,
+      "JSON file written atomically: always by the main job (a path relative to the working "
+      "directory), by --problem only when given");
+  opt->output_option->capture_default_str();
+  cmd->add_option("--force-csv", opt->force_csv,
+                  "write the optimal force F(phi) over one period (phi = 0 at the impact, "
+                  "columns phi,F) to this CSV file (main job: the fastest valid gait's force)");
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app

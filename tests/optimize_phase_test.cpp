@@ -1,0 +1,173 @@
+// P1 (OptimizePhase): the best impact phase for a given force shape, MODEL.md section 7.
+// References come from an independent dense scan of phi0 through Solve (the `solve` code path).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "capsubot/optimize_phase.hpp"
+#include "capsubot/stability.hpp"
+#include "capsubot/validity.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr double kPi = kTau / 2.0;
+// The dense reference scan: 10 times the optimiser's default scan, so arcs and maxima it
+// resolves are found by the optimiser's own scan plus bisection and polish.
+constexpr int kDenseScan = 7200;
+// The optimiser returns a point at least as good as the best valid scan point; both are
+// computed by the same formulas, so only round-off separates equal values.
+constexpr double kSameValueTol = 1e-12;
+
+struct ScanBest {
+  double I = -HUGE_VAL;
+  double phi0 = NAN;
+  int valid = 0;
+};
+
+ScanBest DenseScan(const Forcing& shape, const Params& params, bool stable = false,
+                   double rho_max = 1.0) {
+  ScanBest best;
+  for (int i = 0; i < kDenseScan; ++i) {
+    const double phi0 = -kPi + kTau * i / kDenseScan;
+    const Solution s = Solve(shape.WithPhase(phi0), params);
+    if (!s.validity.valid()) continue;
+    if (stable && !(ComputeStability(s.orbit).spectral_radius <= rho_max)) continue;
+    ++best.valid;
+    if (s.orbit.I > best.I) {
+      best.I = s.orbit.I;
+      best.phi0 = phi0;
+    }
+  }
+  return best;
+}
+
+struct PhaseCase {
+  double A_ratio, c_ratio, T0, e, margin;  // A = A_ratio T0, c = c_ratio T0
+};
+
+class PhaseOptimum : public ::testing::TestWithParam<PhaseCase> {};
+
+TEST_P(PhaseOptimum, IsAtLeastTheBestValidPointOfADenseScan) {
+  const PhaseCase k = GetParam();
+  const Params params{k.T0, k.e, k.margin};
+  const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
+  const ScanBest scan = DenseScan(shape, params);
+  ASSERT_GT(scan.valid, 0) << "test case without valid orbits";
+  const OptimizeResult r = OptimizePhase(shape, params);
+  ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  EXPECT_GE(r.solution.orbit.I, scan.I - kSameValueTol * std::abs(scan.I))
+      << "scan best at phi0 = " << scan.phi0 << ", optimiser at "
+      << r.solution.orbit.forcing.phi0();
+}
+
+TEST_P(PhaseOptimum, IsValidWhenRecheckedThroughSolve) {
+  const PhaseCase k = GetParam();
+  const Params params{k.T0, k.e, k.margin};
+  const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
+  const OptimizeResult r = OptimizePhase(shape, params);
+  ASSERT_TRUE(r.found()) << r.message;
+  const double phi0 = r.solution.orbit.forcing.phi0();
+  EXPECT_GE(phi0, -kPi);
+  EXPECT_LT(phi0, kPi);
+  // Rebuild the force from the numbers alone and solve it as `capsubot solve` does.
+  const Solution again = Solve(Forcing::Harmonic(shape.amplitude(), shape.mean(), phi0), params);
+  EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
+  EXPECT_EQ(again.orbit.I, r.solution.orbit.I);
+  EXPECT_GE(again.validity.x_min, k.margin);
+}
+
+// Cases: the paper's shape c = A = T0/2 at a T0 where it fits, other ratios, e < 1, a margin.
+INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOptimum,
+                         ::testing::Values(PhaseCase{0.5, 0.5, 0.02, 1.0, 0.0},
+                                           PhaseCase{0.5, 0.5, 0.1, 1.0, 0.0},
+                                           PhaseCase{0.3, 0.1, 1.0, 1.0, 0.0},
+                                           PhaseCase{0.6, 0.3, 0.05, 1.0, 0.1},
+                                           PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0},
+                                           PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0}));
+
+TEST(OptimizePhase, PaperExampleAtT0OneHasNoValidOrbitAndSaysWhy) {
+  // MODEL.md section 6: c = A = T0/2 violates the left-wall condition at T0 = 1.
+  const Params params{1.0, 1.0, 0.0};
+  const OptimizeResult r = OptimizePhase(Forcing::Harmonic(0.5, 0.5, 0.0), params);
+  EXPECT_EQ(r.status, OptimizeStatus::kNoValidOrbit);
+  EXPECT_STREQ(OptimizeStatusName(r.status), "no_valid_orbit");
+  EXPECT_FALSE(r.found());
+  EXPECT_TRUE(r.solution.validity.violated(Condition::kLeftWall));
+  EXPECT_LT(r.solution.validity.x_min, 0.0);
+  EXPECT_NE(r.message.find("left_wall"), std::string::npos) << r.message;
+  EXPECT_EQ(DenseScan(Forcing::Harmonic(0.5, 0.5, 0.0), params).valid, 0);
+}
+
+TEST(OptimizePhase, EdgeOptimumReportsTheGrazedWallAsActive) {
+  // At T0 = 0.1 the optimum of c = A = T0/2 grazes the left wall (x_min = 0 within the
+  // bisection tolerance); the dense scan's best point lies next to an invalid one.
+  const Params params{0.1, 1.0, 0.0};
+  const OptimizeResult r = OptimizePhase(Forcing::Harmonic(0.05, 0.05, 0.0), params);
+  ASSERT_TRUE(r.found()) << r.message;
+  EXPECT_NEAR(r.solution.validity.x_min, 0.0, 1e-9);
+  EXPECT_NE(std::find(r.active_constraints.begin(), r.active_constraints.end(), "left_wall"),
+            r.active_constraints.end());
+}
+
+TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
+  // At T0 = 0.3 this shape has stable and unstable valid phases (a scan finds both).
+  const Params params{0.3, 1.0, 0.0};
+  const Forcing shape = Forcing::Harmonic(0.09, 0.03, 0.0);
+  PhaseOptions options;
+  options.stable = true;
+  options.rho_max = 1.0;
+  const ScanBest scan = DenseScan(shape, params, true, 1.0);
+  const OptimizeResult r = OptimizePhase(shape, params, options);
+  ASSERT_GT(scan.valid, 0) << "test case without stable valid orbits";
+  ASSERT_TRUE(r.found()) << r.message;
+  EXPECT_LE(r.spectral_radius, 1.0);
+  EXPECT_LE(ComputeStability(r.solution.orbit).spectral_radius, 1.0);
+  EXPECT_GE(r.solution.orbit.I, scan.I - kSameValueTol * std::abs(scan.I));
+  const OptimizeResult any = OptimizePhase(shape, params);
+  EXPECT_LE(r.solution.orbit.I, any.solution.orbit.I);
+}
+
+TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
+  const Forcing shape = Forcing::Harmonic(0.3, 0.1, 0.0);
+  PhaseOptions few;
+  few.scan_points = 3;
+  try {
+    OptimizePhase(shape, Params{}, few);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "scan_points = 3 is invalid: expected at least 16");
+  }
+  PhaseOptions rho;
+  rho.rho_max = 0.0;
+  try {
+    OptimizePhase(shape, Params{}, rho);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "rho_max = 0 is invalid: expected a finite rho_max > 0");
+  }
+  Params wide;
+  wide.margin = 0.5;
+  try {
+    OptimizePhase(shape, wide);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");
+  }
+}
+
+TEST(OptimizeStatusName, NamesEveryStatus) {
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kNotRun), "not_run");
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kOk), "ok");
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kMaxEvaluations), "max_evaluations");
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kRoundoffLimited), "roundoff_limited");
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kForcedStop), "forced_stop");
+  EXPECT_STREQ(OptimizeStatusName(OptimizeStatus::kFailure), "failure");
+}
+
+}  // namespace
+}  // namespace capsubot
