@@ -24,7 +24,7 @@ constexpr long kMaxEvaluations = 4000000;  // work bound (never reached in pract
 // alpha(phi0) = a  <=>  Psi(phi0) := (1-a) psi0(phi0) + a psi1(phi0) = 0 (then psi0 psi1 < 0
 // follows for 0 < a < 1 unless both vanish). Psi has no poles, unlike alpha(phi0). Where
 // phi1(phi0) is smooth, its derivative follows from the envelope identity d psi1/d phi1 = g(phi1) = 0:
-//   dPsi/dphi0 = (1-a) tau (F(0) - c) + a (Pi(phi1) - phi1 F(0)),
+//   dPsi/dphi0 = (1-a) tau (F(0) - c) - a (Pi(phi1) - phi1 F(0)),
 // and with S = sum_k |(a_k, b_k)| (so |F - c| <= S, |F(s) - F(0)| <= 2S)
 //   |dPsi/dphi0| <= L = tau S (1 + a).
 // A root in [lo, hi] (width w) therefore needs |Psi(lo)| + |Psi(hi)| <= L w: an interval where
@@ -47,7 +47,7 @@ struct PsiFunction {
     const Orbit o = ComputeOrbit(forcing->WithPhase(phi0), *params);
     const Forcing& f = o.forcing;
     const double F0 = f.F(0.0);
-    return (1.0 - a) * kTau * (F0 - f.mean()) + a * (f.Pi(o.phi1) - o.phi1 * F0);
+    return (1.0 - a) * kTau * (F0 - f.mean()) - a * (f.Pi(o.phi1) - o.phi1 * F0);
   }
 };
 
