@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# Regenerates the paper's figures into results/ (CSV from `capsubot sweep`, PNG from gnuplot):
+#   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
+#   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
+#   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
+# Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
+# The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
+# writes the CSVs, says how to get gnuplot and exits with status 1.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cli=${CAPSUBOT:-build/capsubot}
+out=results
+gp=scripts/figures
+if [[ ! -x "$cli" ]]; then
+  echo "figures: $cli not found: build it first with scripts/build.sh (or set CAPSUBOT)" >&2
+  exit 1
+fi
+mkdir -p "$out"
+say() { echo "figures: $*" >&2; }
+
+# --- the data (every number of results/REPRODUCTION.md comes from these commands) ----------
+say "Fig. 2: phi1(phi0), c = A = T0/2"
+"$cli" sweep --grid phi0=-pi:pi:721 --A 0.5 --c 0.5 --T0 1 -o "$out/fig2_phi1_vs_phi0.csv"
+
+say "Fig. 3: I(phi0), the paper's example c = A = T0/2 and a case with valid orbits"
+"$cli" sweep --grid phi0=-pi:pi:1441 --A 0.5 --c 0.5 --T0 1 --stability \
+  -o "$out/fig3_paper_example.csv"
+"$cli" sweep --grid phi0=-pi:pi:1441 --A 0.2 --c 0.03 --T0 1 --stability \
+  -o "$out/fig3_valid_case.csv"
+# P1 (best valid orbit) for both forces: a 2-point grid over A pairs each A with its c.
+"$cli" sweep --grid A=0.5:0.5:1 --c 0.5 --T0 1 --optimize phi0 --stability \
+  -o "$out/fig3_p1_paper_example.csv"
+"$cli" sweep --grid A=0.2:0.2:1 --c 0.03 --T0 1 --optimize phi0 --stability \
+  -o "$out/fig3_p1_valid_case.csv"
+
+say "map: fastest valid gait and fastest valid and stable gait over (A/T0, c/T0), T0 = 0.1"
+T0=0.1 n=50 lo=0.01 hi=0.99
+A_grid="A=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'BEGIN{print t*v}'):$n"
+c_grid="c=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'BEGIN{print t*v}'):$n"
+"$cli" sweep --grid "$A_grid" --grid "$c_grid" --T0 $T0 --optimize phi0 --stability \
+  -o "$out/map_valid.csv"
+"$cli" sweep --grid "$A_grid" --grid "$c_grid" --T0 $T0 --optimize phi0 --stable-only \
+  --stability -o "$out/map_stable.csv"
+
+# --- marks read off the CSVs ----------------------------------------------------------------
+# The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
+# changes sign, interpolated linearly (NaN when h keeps its sign).
+heuristic() {  # prints "phi0 I"
+  awk -F, 'NR > 1 && $2 != "" { h = $1 + $2 / 2 + atan2(0, -1) / 2
+             if (NR > 2 && ph * h <= 0 && ph != h) { t = ph / (ph - h)
+               printf "%.10g %.10g\n", p0 + t * ($1 - p0), pI + t * ($6 - pI); found = 1; exit }
+             ph = h; p0 = $1; pI = $6 }
+           END { if (!found) print "NaN NaN" }' "$1"
+}
+max_I() {  # prints "phi0 I" of the largest I
+  awk -F, 'NR > 1 && $6 != "" && (!n++ || $6 > m) { m = $6; p = $1 } END { print p, m }' "$1"
+}
+p1() {  # prints "phi0 I" of the optimiser's answer if it is a valid orbit
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i }
+           NR == 2 { if ($col["status"] == "ok" && $col["valid"] == 1) print $col["phi0"], $col["I"]
+                     else print "NaN NaN" }' "$1"
+}
+
+if ! command -v gnuplot > /dev/null 2>&1; then
+  say "gnuplot is not installed: the CSVs are in $out/, the PNGs were not made."
+  say "install it with: scripts/install-deps.sh --figures   (Debian package gnuplot-nox)"
+  exit 1
+fi
+term=png
+if gnuplot -e "set terminal pngcairo" > /dev/null 2>&1; then term=pngcairo; fi
+
+read -r h0 h1 < <(awk -F, 'NR > 1 { h = $1 + $2 / 2 + atan2(0, -1) / 2
+   if (NR > 2 && ph * h <= 0 && ph != h) { t = ph / (ph - h)
+     printf "%.10g %.10g\n", p0 + t * ($1 - p0), q1 + t * ($2 - q1); exit }
+   ph = h; p0 = $1; q1 = $2 }' "$out/fig2_phi1_vs_phi0.csv")
+gnuplot -e "term='$term'; data='$out/fig2_phi1_vs_phi0.csv'; out='$out/fig2_phi1_vs_phi0.png'; h_phi0=$h0; h_phi1=$h1" \
+  "$gp/fig2.gp"
+
+read -r hx1 hy1 < <(heuristic "$out/fig3_paper_example.csv")
+read -r mx1 my1 < <(max_I "$out/fig3_paper_example.csv")
+read -r px1 py1 < <(p1 "$out/fig3_p1_paper_example.csv")
+read -r hx2 hy2 < <(heuristic "$out/fig3_valid_case.csv")
+read -r mx2 my2 < <(max_I "$out/fig3_valid_case.csv")
+read -r px2 py2 < <(p1 "$out/fig3_p1_valid_case.csv")
+gnuplot -e "term='$term'; out='$out/fig3_I_vs_phi0.png';
+  data_1='$out/fig3_paper_example.csv'; title_1=\"paper's example: c = A = T_0/2, T_0 = 1\";
+  h_phi0_1=$hx1; h_I_1=$hy1; max_phi0_1=$mx1; max_I_1=$my1; p1_phi0_1=$px1; p1_I_1=$py1;
+  data_2='$out/fig3_valid_case.csv'; title_2=\"a case with valid orbits: A = 0.2 T_0, c = 0.03 T_0, T_0 = 1\";
+  h_phi0_2=$hx2; h_I_2=$hy2; max_phi0_2=$mx2; max_I_2=$my2; p1_phi0_2=$px2; p1_I_2=$py2" \
+  "$gp/fig3.gp"
+
+gnuplot -e "term='$term'; out='$out/map_best_velocity.png'; valid_data='$out/map_valid.csv';
+  stable_data='$out/map_stable.csv'; T0=$T0; n=$n; lo=$lo; hi=$hi" "$gp/map.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* | tr '\n' ' ')"
