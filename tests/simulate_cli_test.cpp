@@ -1,0 +1,186 @@
+// The command line of issue 3: `capsubot simulate`, `capsubot orbits`, `solve --stability`.
+// Reference numbers come from `capsubot solve --json` (the analytic orbit), which the
+// simulation must reproduce.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "capsubot/io.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+using testing::RunCli;
+
+// Simulation and analytic orbit agree to rounding (see simulator_test); JSON keeps 17 digits.
+constexpr double kTol = 1e-9;
+
+// A valid, stable orbit (spectral radius 0.16; found by scanning phi0 with `solve`).
+const std::string kOrbit = "--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5";
+
+nlohmann::json Json(const std::string& args) {
+  const auto r = RunCli(args);
+  EXPECT_EQ(r.status, 0) << args << "\n" << r.out;
+  return nlohmann::json::parse(r.out);
+}
+
+std::string Num(double value) { return FormatNumber(value); }
+
+std::vector<std::string> Lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string TempPath(const std::string& name) {
+  return ::testing::TempDir() + "capsubot_simulate_cli_" + name;
+}
+
+TEST(SimulateCli, FromOrbitConfirmsTheAnalyticOrbitOverTenPeriods) {
+  const auto orbit = Json("solve " + kOrbit + " --json");
+  const auto sim = Json("simulate " + kOrbit + " --from-orbit --periods 10 --json");
+  EXPECT_EQ(sim["status"], "ok");
+  EXPECT_EQ(sim["impacts_right"], 10);
+  EXPECT_EQ(sim["impacts_left"], 0);
+  EXPECT_EQ(sim["stops"], 10);
+  EXPECT_EQ(sim["breakaways"], 0);
+  EXPECT_TRUE(Near(sim["alpha"].get<double>(), orbit["alpha"].get<double>(), 0.0));
+  EXPECT_TRUE(Near(sim["x"].get<double>(), 1.0, kTol));
+  EXPECT_TRUE(Near(sim["u"].get<double>(), -0.5 * orbit["u"].get<double>(), kTol));
+  EXPECT_TRUE(Near(sim["v"].get<double>(), orbit["v_plus"].get<double>(), kTol));
+  EXPECT_TRUE(Near(sim["displacement"].get<double>(), 10.0 * orbit["I"].get<double>(), kTol));
+  EXPECT_TRUE(Near(sim["y"].get<double>(), 10.0 * orbit["I"].get<double>(), kTol));
+  EXPECT_TRUE(Near(sim["v_mean"].get<double>(), orbit["v_mean"].get<double>(), kTol));
+  EXPECT_EQ(sim["orbit"]["valid"], true);
+}
+
+TEST(SimulateCli, ExplicitStateEqualsFromOrbit) {
+  const auto orbit = Json("solve " + kOrbit + " --json");
+  const std::string state = " --alpha " + Num(orbit["alpha"].get<double>()) + " --x0 1 --u0 " +
+                            Num(-0.5 * orbit["u"].get<double>()) + " --v0 " +
+                            Num(orbit["v_plus"].get<double>());
+  const auto sim = Json("simulate " + kOrbit + state + " --periods 3 --json");
+  EXPECT_EQ(sim["impacts_right"], 3);
+  EXPECT_TRUE(Near(sim["displacement"].get<double>(), 3.0 * orbit["I"].get<double>(), kTol));
+}
+
+TEST(SimulateCli, FourierForceFromOrbit) {
+  const std::string force = "--c 0.02 --sin 0.05,0 --cos 0,0.005 --phi0 -2.842 --T0 0.1 --e 0.5";
+  const auto orbit = Json("solve " + force + " --json");
+  ASSERT_EQ(orbit["valid"], true);
+  const auto sim = Json("simulate " + force + " --from-orbit --periods 2 --json");
+  EXPECT_EQ(sim["impacts_right"], 2);
+  EXPECT_EQ(sim["stops"], 2);
+  EXPECT_TRUE(Near(sim["displacement"].get<double>(), 2.0 * orbit["I"].get<double>(), kTol));
+}
+
+TEST(SimulateCli, WritesEveryEventAndTheTrajectoryGrid) {
+  const std::string events = TempPath("events.csv"), trajectory = TempPath("trajectory.csv");
+  const auto r = RunCli("simulate " + kOrbit + " --from-orbit --periods 4 --events " + events +
+                        " --trajectory " + trajectory + " --samples-per-period 25");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto ev = Lines(events);
+  ASSERT_EQ(ev.size(), 1U + 8U);  // header + (stop, impact) per period
+  EXPECT_EQ(ev[0], "phase,kind,x,u,v,y,u_before,v_before,mode");
+  EXPECT_NE(ev[1].find(",stop,"), std::string::npos);
+  EXPECT_NE(ev[2].find(",impact_right,1,"), std::string::npos);
+  const auto tr = Lines(trajectory);
+  ASSERT_EQ(tr.size(), 1U + 4U * 25U + 1U);  // header + samples at 0, tau/25, ..., 4 tau
+  EXPECT_EQ(tr[0], "phi,x,u,v,y,mode");
+  EXPECT_EQ(tr[1].substr(0, 4), "0,1,");  // phi = 0, x = 1 (right after the impact)
+  std::remove(events.c_str());
+  std::remove(trajectory.c_str());
+}
+
+TEST(SimulateCli, TableNamesTheEventCounts) {
+  const auto r = RunCli("simulate " + kOrbit + " --from-orbit --periods 2");
+  ASSERT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("2 right impacts, 0 left impacts, 2 stops, 0 break-aways"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
+  struct Bad {
+    std::string args, message;
+  };
+  const std::vector<Bad> cases = {
+      {"simulate " + kOrbit + " --x0 1 --u0 0 --v0 0",
+       "option --alpha is missing: give the mass ratio (or --from-orbit)"},
+      {"simulate " + kOrbit + " --alpha 0.3 --x0 1",
+       "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)"},
+      {"simulate " + kOrbit + " --from-orbit --alpha 0.3",
+       "--from-orbit takes the state and alpha from the analytic orbit"},
+      {"simulate --A 0.05 --c 0 --phi0 0 --from-orbit",
+       "--from-orbit: no one-impact orbit exists for this force, T0 and e "
+       "(non_positive_mean_force)"},
+      {"simulate " + kOrbit + " --from-orbit --periods 0",
+       "periods = 0 is invalid: expected 0 < periods <= 1e8"},
+      {"simulate " + kOrbit + " --alpha 1.2 --x0 1 --u0 0 --v0 0",
+       "mass ratio alpha = 1.2 is invalid: expected 0 < alpha < 1"},
+      {"simulate " + kOrbit + " --alpha 0.3 --x0 2 --u0 0 --v0 0",
+       "initial position x0 = 2 is invalid: expected 0 <= x0 <= 1"},
+      {"simulate " + kOrbit + " --from-orbit --trajectory /tmp/x.csv --samples-per-period 0",
+       "--samples-per-period = 0 is invalid: expected at least 1"},
+      {"simulate " + kOrbit + " --from-orbit --events /nonexistent-dir/e.csv",
+       "--events /nonexistent-dir/e.csv cannot be written"},
+      {"simulate --A 0.05 --c 0.02 --phi0 0 --e 1.5 --from-orbit",
+       "restitution e = 1.5 is invalid: expected 0 <= e <= 1"},
+      {"orbits --A 0.05 --c 0.02 --T0 0.1 --alpha 0", "mass ratio alpha = 0 is invalid"},
+  };
+  for (const Bad& b : cases) {
+    const auto r = RunCli(b.args + " 2>&1");
+    EXPECT_EQ(r.status, 2) << b.args;
+    EXPECT_NE(r.out.find(b.message), std::string::npos) << b.args << "\n" << r.out;
+  }
+}
+
+TEST(SolveCli, StabilityAddsMultipliersSpectralRadiusAndVerdict) {
+  const auto j = Json("solve " + kOrbit + " --stability --json");
+  ASSERT_TRUE(j["multipliers"].is_array());
+  ASSERT_EQ(j["multipliers"].size(), 2U);
+  EXPECT_TRUE(j["multipliers"][0].contains("re"));
+  EXPECT_TRUE(j["multipliers"][0].contains("im"));
+  const double re = j["multipliers"][0]["re"], im = j["multipliers"][0]["im"];
+  EXPECT_TRUE(Near(j["spectral_radius"].get<double>(), std::hypot(re, im), 1e-15));
+  EXPECT_EQ(j["stable"], true);
+  // Without the flag the keys are absent; without an orbit they are null / false.
+  EXPECT_FALSE(Json("solve " + kOrbit + " --json").contains("spectral_radius"));
+  const auto none = Json("solve --A 0.05 --c 0 --phi0 0 --stability --json");
+  EXPECT_TRUE(none["spectral_radius"].is_null());
+  EXPECT_EQ(none["stable"], false);
+  const auto table = RunCli("solve " + kOrbit + " --stability");
+  EXPECT_NE(table.out.find("spectral radius"), std::string::npos) << table.out;
+}
+
+TEST(OrbitsCli, ListsEveryOrbitOfTheRobotWithTheKeysOfSolveStability) {
+  // The robot of the orbit above: its own phi0 must be among the orbits found.
+  const auto orbit = Json("solve " + kOrbit + " --stability --json");
+  const auto all = Json("orbits --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --alpha " +
+                        Num(orbit["alpha"].get<double>()) + " --json");
+  ASSERT_TRUE(all.is_array());
+  ASSERT_GE(all.size(), 1U);
+  int matches = 0;
+  for (const auto& o : all) {
+    for (const auto& [key, value] : orbit.items()) {
+      EXPECT_TRUE(o.contains(key)) << key;
+    }
+    EXPECT_TRUE(Near(o["alpha"].get<double>(), orbit["alpha"].get<double>(), 1e-12));
+    matches += std::abs(o["phi0"].get<double>() - orbit["phi0"].get<double>()) < 1e-9;
+  }
+  EXPECT_EQ(matches, 1);
+  const auto table = RunCli("orbits --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --alpha 0.28");
+  EXPECT_NE(table.out.find("2 orbit(s)"), std::string::npos) << table.out;
+}
+
+}  // namespace
+}  // namespace capsubot
