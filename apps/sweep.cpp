@@ -32,6 +32,12 @@ std::string Duration(double seconds) {
                    : fmt::format("{:02}:{:02}", s / 60, s % 60);
 }
 
+std::string Rate(double rate) {
+  if (rate >= 1e6) return fmt::format("{:.2f}M", rate / 1e6);
+  if (rate >= 1e3) return fmt::format("{:.1f}k", rate / 1e3);
+  return fmt::format("{:.3g}", rate);
+}
+
 // A one-line progress bar on stderr, redrawn at most 10 times a second.
 class ProgressBar {
  public:
@@ -45,9 +51,9 @@ class ProgressBar {
     const double left = rate > 0.0 ? (p.points_total - p.points_done) / rate : NAN;
     constexpr int kWidth = 30;
     const int full = static_cast<int>(fraction * kWidth);
-    fmt::print(stderr, "\r[{}{}] {:5.1f}%  {}/{} points  {:.3g} points/s  {} elapsed  {} left ",
+    fmt::print(stderr, "\r[{}{}] {:5.1f}%  {}/{} points  {} points/s  {} elapsed  {} left ",
                std::string(full, '#'), std::string(kWidth - full, '.'), 100.0 * fraction,
-               p.points_done, p.points_total, rate, Duration(p.seconds), Duration(left));
+               p.points_done, p.points_total, Rate(rate), Duration(p.seconds), Duration(left));
     if (last) fmt::print(stderr, "\n");
     std::fflush(stderr);
   }
@@ -133,6 +139,13 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->get_option("--c")->required(false)->description(
       "mean force c of F (same unit as A), required unless c has a --grid; a directed orbit "
       "needs c > 0");
+  cmd->get_option("--A")->description(
+      "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units of (m1+m2) omega^2 L "
+      "(required unless A has a --grid or --sin/--cos are given)");
+  cmd->get_option("--phi0")->description(
+      "motor phase phi0 [rad] at the impact (phi = 0): F(phi) = A sin(phi + phi0) + c; "
+      "required unless phi0 has a --grid, is optimised (--optimize phi0) or solved for "
+      "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt->sweep.params);
   cmd->add_option("--output,-o", opt->sweep.output, "the CSV file to write (required)")
       ->required();

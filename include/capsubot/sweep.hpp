@@ -18,7 +18,8 @@
 //   alpha grid (robot mode): <grid parameters>, orbits, orbit, phi0, phi1, ..., violations
 //                 [, spectral_radius, stable]: one row per one-impact orbit of the robot
 //                 (orbit = 1..orbits, in increasing phi0); a point with no orbit gets one
-//                 row with orbits = 0 and every other cell empty.
+//                 row with orbits = 0 and every other cell empty. The header then holds
+//                 alpha twice: the robot's (grid) value first, then the orbit's computed one.
 // Numbers have 17 significant digits (they round-trip); a quantity that does not exist is an
 // empty cell; valid and stable are 0/1; violations are condition names joined by ';'.
 
