@@ -33,6 +33,7 @@ struct OptimizeCliOptions {
   std::string global_algorithm = kMultistart;
   std::string local_algorithm = "LN_COBYLA";
   int starts = 0;  // 0: the problem's default
+  int global_evaluations = ForcingDesignOptions{}.global_evaluations;
   double rho_max = kNaN;  // NaN: no stability requirement
   CLI::Option* stable_option = nullptr;
   bool json = false;
@@ -145,6 +146,7 @@ ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
   d.global_algorithm = opt.global_algorithm;
   d.local_algorithm = opt.local_algorithm;
   if (opt.starts > 0) d.starts = opt.starts;
+  d.global_evaluations = opt.global_evaluations;
   d.stable = stable;
   if (stable) d.rho_max = opt.rho_max;
   return d;
@@ -262,6 +264,7 @@ int RunProblem(const OptimizeCliOptions& opt) {
     fo.global_algorithm = opt.global_algorithm;
     fo.local_algorithm = opt.local_algorithm;
     if (opt.starts > 0) fo.starts = opt.starts;
+    fo.global_evaluations = opt.global_evaluations;
     fo.stable = stable;
     if (stable) fo.rho_max = opt.rho_max;
     r = OptimizeFourier(p, fo);
@@ -340,8 +343,11 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "local constrained polish, NLopt name: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ "
                   "(LD_*: gradients by central differences)")
       ->capture_default_str();
+  cmd->add_option("--global-evaluations", opt->global_evaluations,
+                  "evaluation budget of an NLopt global algorithm (not used by multistart)")
+      ->capture_default_str();
   cmd->add_option("--starts", opt->starts,
-                  "number of local polishes of the multistart (default: 6 for forcing, 8 for "
+                  "number of local polishes of the multistart (default: 6 for forcing, 20 for "
                   "fourier)");
   opt->stable_option =
       cmd->add_option("--stable", opt->rho_max,

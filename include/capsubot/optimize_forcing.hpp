@@ -35,7 +35,7 @@ struct ForcingDesignOptions {
   /// Evaluation budget of each local polish; >= 10.
   int local_evaluations = 20000;
   /// Evaluation budget of an NLopt global stage; >= 10.
-  int global_evaluations = 20000;
+  int global_evaluations = 5000;
   /// Seed of the random numbers of the global stage.
   unsigned seed = 1;
   /// Require a stable orbit: spectral radius (MODEL.md section 8) <= rho_max.

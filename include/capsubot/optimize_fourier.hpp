@@ -21,13 +21,13 @@ struct FourierOptions {
   /// points found so far) or an NLopt global algorithm name (see GlobalAlgorithmNames()).
   std::string global_algorithm = "multistart";
   /// Local polishes; >= 1.
-  int starts = 8;
+  int starts = 20;
   /// Relative tolerance of the local polish; > 0.
   double rel_tol = 1e-9;
   /// Evaluation budget of each local polish; >= 10.
   int local_evaluations = 20000;
   /// Evaluation budget of an NLopt global stage; >= 10.
-  int global_evaluations = 20000;
+  int global_evaluations = 5000;
   /// Seed of the random perturbations.
   unsigned seed = 1;
   /// Require a stable orbit: spectral radius <= rho_max.
