@@ -2,11 +2,11 @@
 // (one line naming the parameter, its value and the rule; exit status 2; no file left).
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "capsubot/validity.hpp"
@@ -46,8 +46,9 @@ TEST(SolveCli, MissingOrbitIsNullAndStillExitsZero) {
 }
 
 TEST(SolveCli, FourierForceIsAccepted) {
-  const auto r = RunCli("solve --c 0.02 --cos 0.01,0,0.005 --sin 0.04,0.01,0 --phi0 -2.6 "
-                        "--T0 0.1 --e 0.7 --json");
+  const auto r = RunCli(
+      "solve --c 0.02 --cos 0.01,0,0.005 --sin 0.04,0.01,0 --phi0 -2.6 "
+      "--T0 0.1 --e 0.7 --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["A"].is_null());
@@ -65,8 +66,10 @@ TEST(SolveCli, TableIsReadable) {
 TEST(SolveCli, TrajectoryCsvCoversOnePeriod) {
   const auto path = std::filesystem::temp_directory_path() / "capsubot_solve_traj.csv";
   std::filesystem::remove(path);
-  const auto r = RunCli("solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5 --samples 11 "
-                        "--trajectory " + path.string());
+  const auto r = RunCli(
+      "solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5 --samples 11 "
+      "--trajectory " +
+      path.string());
   ASSERT_EQ(r.status, 0) << r.out;
   std::ifstream in(path);
   std::string line;
@@ -104,8 +107,7 @@ class SolveCliBadInput : public ::testing::TestWithParam<BadInput> {};
 TEST_P(SolveCliBadInput, OneLineNamingParameterValueAndRuleExitTwoNoFile) {
   const auto path = std::filesystem::temp_directory_path() / "capsubot_bad_input.csv";
   std::filesystem::remove(path);
-  const auto r =
-      RunCli(std::string(GetParam().args) + " --trajectory " + path.string() + " 2>&1");
+  const auto r = RunCli(std::string(GetParam().args) + " --trajectory " + path.string() + " 2>&1");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, std::string(GetParam().message) + "\n");
   EXPECT_FALSE(std::filesystem::exists(path));
