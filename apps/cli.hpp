@@ -2,7 +2,6 @@
 // Pieces shared by the subcommands: the command record, the force and model options.
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <limits>
 #include <string>

@@ -22,6 +22,16 @@ std::string OneLine(std::string text) {
   return text;
 }
 
+// CLI11 says "Could not convert: --A = abc"; say which rule the value broke.
+std::string ParseErrorMessage(const CLI::ParseError& e) {
+  const std::string text = OneLine(e.what());
+  const std::string prefix = "Could not convert: ";
+  if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr && text.rfind(prefix, 0) == 0) {
+    return text.substr(prefix.size()) + " is invalid: expected a number";
+  }
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,7 +56,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const auto subs = app.get_subcommands();
     const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
-    fmt::print(stderr, "{}: error: {} (see {} --help)\n", who, OneLine(e.what()), who);
+    if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr) {
+      fmt::print(stderr, "{}: error: {}\n", who, ParseErrorMessage(e));
+    } else {
+      fmt::print(stderr, "{}: error: {} (see {} --help)\n", who, ParseErrorMessage(e), who);
+    }
     return 2;
   }
   for (const Command& command : commands) {

@@ -2,7 +2,6 @@
 // How an orbit is shown: one JSON object (for tools) or a table (for people).
 
 #include <nlohmann/json.hpp>
-
 #include <string>
 
 #include "capsubot/stability.hpp"

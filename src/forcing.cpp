@@ -38,8 +38,8 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
         a.size(), b.size()));
   }
   if (a.size() > static_cast<std::size_t>(kMaxHarmonics)) {
-    throw std::invalid_argument(fmt::format("harmonics K = {} is invalid: expected K <= {}",
-                                            a.size(), kMaxHarmonics));
+    throw std::invalid_argument(
+        fmt::format("harmonics K = {} is invalid: expected K <= {}", a.size(), kMaxHarmonics));
   }
   Forcing f;
   f.c_ = c;

@@ -35,10 +35,14 @@ double StopPhase(const Forcing& f, double T0, double Pi_tau) {
 
 const char* StatusName(OrbitStatus status) {
   switch (status) {
-    case OrbitStatus::kNotRun: return "not_run";
-    case OrbitStatus::kOk: return "ok";
-    case OrbitStatus::kNonPositiveMeanForce: return "non_positive_mean_force";
-    case OrbitStatus::kNoMassRatio: return "no_mass_ratio";
+    case OrbitStatus::kNotRun:
+      return "not_run";
+    case OrbitStatus::kOk:
+      return "ok";
+    case OrbitStatus::kNonPositiveMeanForce:
+      return "non_positive_mean_force";
+    case OrbitStatus::kNoMassRatio:
+      return "no_mass_ratio";
   }
   return "unknown";
 }

@@ -54,15 +54,24 @@ void PositionExtrema(const Orbit& o, Validity& v) {
 
 const char* ConditionName(Condition condition) {
   switch (condition) {
-    case Condition::kPositiveMeanForce: return "positive_mean_force";
-    case Condition::kMassRatio: return "mass_ratio";
-    case Condition::kForceBelowFriction: return "force_below_friction";
-    case Condition::kStick: return "stick";
-    case Condition::kLeftWall: return "left_wall";
-    case Condition::kRightWall: return "right_wall";
-    case Condition::kSeparation: return "separation";
-    case Condition::kClearance: return "clearance";
-    case Condition::kCount: break;
+    case Condition::kPositiveMeanForce:
+      return "positive_mean_force";
+    case Condition::kMassRatio:
+      return "mass_ratio";
+    case Condition::kForceBelowFriction:
+      return "force_below_friction";
+    case Condition::kStick:
+      return "stick";
+    case Condition::kLeftWall:
+      return "left_wall";
+    case Condition::kRightWall:
+      return "right_wall";
+    case Condition::kSeparation:
+      return "separation";
+    case Condition::kClearance:
+      return "clearance";
+    case Condition::kCount:
+      break;
   }
   return "unknown";
 }

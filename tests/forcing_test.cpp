@@ -30,8 +30,8 @@ class ForcingFamilies : public ::testing::TestWithParam<Case> {};
 TEST_P(ForcingFamilies, PiIsTheIntegralOfF) {
   const Forcing& f = GetParam().forcing;
   for (double phi : {0.3, 1.7, 3.9, kTau, 8.0}) {
-    EXPECT_TRUE(Near(f.Pi(phi), Quadrature([&](double s) { return f.F(s); }, 0.0, phi),
-                     kQuadratureTol))
+    EXPECT_TRUE(
+        Near(f.Pi(phi), Quadrature([&](double s) { return f.F(s); }, 0.0, phi), kQuadratureTol))
         << "phi = " << phi;
   }
 }
@@ -39,8 +39,8 @@ TEST_P(ForcingFamilies, PiIsTheIntegralOfF) {
 TEST_P(ForcingFamilies, PhiIsTheIntegralOfPi) {
   const Forcing& f = GetParam().forcing;
   for (double phi : {0.3, 1.7, 3.9, kTau, 8.0}) {
-    EXPECT_TRUE(Near(f.Phi(phi), Quadrature([&](double s) { return f.Pi(s); }, 0.0, phi),
-                     kQuadratureTol))
+    EXPECT_TRUE(
+        Near(f.Phi(phi), Quadrature([&](double s) { return f.Pi(s); }, 0.0, phi), kQuadratureTol))
         << "phi = " << phi;
   }
 }
@@ -115,8 +115,8 @@ INSTANTIATE_TEST_SUITE_P(
     Families, ForcingFamilies,
     ::testing::Values(Case{"paper_example", Forcing::Harmonic(0.5, 0.5, -2.9449)},
                       Case{"harmonic_small", Forcing::Harmonic(0.05, 0.02, 1.0)},
-                      Case{"fourier_k3", Forcing::Fourier(0.02, {0.01, 0.0, 0.005},
-                                                          {0.04, 0.01, 0.0}, 0.3)},
+                      Case{"fourier_k3",
+                           Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.3)},
                       Case{"fourier_k5", Forcing::Fourier(0.1, {0.2, -0.1, 0.05, 0.0, 0.02},
                                                           {0.3, 0.1, 0.0, -0.04, 0.01}, -1.2)}),
     [](const auto& info) { return std::string(info.param.name); });

@@ -42,9 +42,9 @@ class Forcing {
   /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)).
   Forcing WithPhase(double phi0) const;
 
-  double phi0() const { return phi0_; }      ///< motor phase at the impact
-  double mean() const { return c_; }         ///< c, the mean force: Pi(tau) = c*tau
-  int harmonics() const { return K_; }       ///< K
+  double phi0() const { return phi0_; }        ///< motor phase at the impact
+  double mean() const { return c_; }           ///< c, the mean force: Pi(tau) = c*tau
+  int harmonics() const { return K_; }         ///< K
   double a(int k) const { return a_[k - 1]; }  ///< base cosine coefficient a_k, k = 1..K
   double b(int k) const { return b_[k - 1]; }  ///< base sine coefficient b_k, k = 1..K
   /// True for the paper's family A sin(phi + phi0) + c (K <= 1 and a_1 = 0).

@@ -24,7 +24,7 @@ const char* StatusName(OrbitStatus status);
 struct Orbit {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  Forcing forcing;  ///< F(phi), phi = 0 at the impact
+  Forcing forcing;   ///< F(phi), phi = 0 at the impact
   double T0 = kNaN;  ///< friction bound
   double e = kNaN;   ///< restitution
   OrbitStatus status = OrbitStatus::kNotRun;

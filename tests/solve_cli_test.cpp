@@ -1,0 +1,160 @@
+// `capsubot solve` end to end: JSON keys, trajectory file, help, and every bad-input path
+// (one line naming the parameter, its value and the rule; exit status 2; no file left).
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "capsubot/validity.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::RunCli;
+
+const std::string kExample = "solve --A 0.5 --c 0.5 --phi0 -2.944899971002";
+
+TEST(SolveCli, JsonHoldsEveryKeyAndMatchesTheLibrary) {
+  const auto r = RunCli(kExample + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"A", "c", "phi0", "T0", "e", "phi1", "alpha", "u", "v_plus", "I",
+                          "v_mean", "x_min", "x_max", "valid", "violations"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  const Solution s = Solve(Forcing::Harmonic(0.5, 0.5, -2.944899971002), Params{});
+  EXPECT_DOUBLE_EQ(j["phi1"].get<double>(), s.orbit.phi1);  // JSON doubles round-trip
+  EXPECT_DOUBLE_EQ(j["alpha"].get<double>(), s.orbit.alpha);
+  EXPECT_DOUBLE_EQ(j["I"].get<double>(), s.orbit.I);
+  EXPECT_FALSE(j["valid"].get<bool>());
+  EXPECT_EQ(j["violations"], nlohmann::json::array({"left_wall"}));
+  EXPECT_TRUE(j["x_max"].is_null());  // no interior maximum: the quantity does not exist
+}
+
+TEST(SolveCli, MissingOrbitIsNullAndStillExitsZero) {
+  const auto r = RunCli("solve --A 0.2 --c 0.03 --phi0 0 --json");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["alpha"].is_null());
+  EXPECT_TRUE(j["I"].is_null());
+  EXPECT_EQ(j["violations"], nlohmann::json::array({"mass_ratio"}));
+}
+
+TEST(SolveCli, FourierForceIsAccepted) {
+  const auto r = RunCli(
+      "solve --c 0.02 --cos 0.01,0,0.005 --sin 0.04,0.01,0 --phi0 -2.6 "
+      "--T0 0.1 --e 0.7 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["A"].is_null());
+  EXPECT_EQ(j["sin"], nlohmann::json::array({0.04, 0.01, 0.0}));
+  EXPECT_TRUE(j["alpha"].is_number());
+}
+
+TEST(SolveCli, TableIsReadable) {
+  const auto r = RunCli(kExample);
+  ASSERT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("phi1   = 2.748207288"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("violated left_wall"), std::string::npos) << r.out;
+}
+
+TEST(SolveCli, TrajectoryCsvCoversOnePeriod) {
+  const auto path = std::filesystem::temp_directory_path() / "capsubot_solve_traj.csv";
+  std::filesystem::remove(path);
+  const auto r = RunCli(
+      "solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5 --samples 11 "
+      "--trajectory " +
+      path.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "phi,x,dx,v");
+  int rows = 0;
+  std::string last;
+  while (std::getline(in, line)) {
+    ++rows;
+    last = line;
+  }
+  EXPECT_EQ(rows, 11);
+  EXPECT_EQ(last.substr(0, last.find(',')), "6.2831853071795862");  // tau, 17 digits
+  std::filesystem::remove(path);
+}
+
+TEST(SolveCli, HelpExplainsEveryOption) {
+  const auto r = RunCli("solve --help");
+  ASSERT_EQ(r.status, 0);
+  for (const char* opt : {"--A", "--c", "--phi0", "--sin", "--cos", "--T0", "--e", "--margin",
+                          "--json", "--trajectory", "--samples"}) {
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  }
+  EXPECT_NE(r.out.find("--T0 FLOAT=1"), std::string::npos);  // defaults are shown
+}
+
+struct BadInput {
+  const char* args;
+  const char* message;
+  friend void PrintTo(const BadInput& b, std::ostream* os) { *os << b.args; }
+};
+
+class SolveCliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SolveCliBadInput, OneLineNamingParameterValueAndRuleExitTwoNoFile) {
+  const auto path = std::filesystem::temp_directory_path() / "capsubot_bad_input.csv";
+  std::filesystem::remove(path);
+  const auto r = RunCli(std::string(GetParam().args) + " --trajectory " + path.string() + " 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, std::string(GetParam().message) + "\n");
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, SolveCliBadInput,
+    ::testing::Values(
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --e 1.3",
+                 "capsubot solve: error: restitution e = 1.3 is invalid: expected 0 <= e <= 1"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --e nan",
+                 "capsubot solve: error: restitution e = nan is invalid: expected 0 <= e <= 1"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --T0 0",
+                 "capsubot solve: error: friction bound T0 = 0 is invalid: expected a finite "
+                 "T0 > 0"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --T0 inf",
+                 "capsubot solve: error: friction bound T0 = inf is invalid: expected a finite "
+                 "T0 > 0"},
+        BadInput{"solve --A -0.5 --c 0.5 --phi0 1",
+                 "capsubot solve: error: A = -0.5 is invalid: expected A >= 0"},
+        BadInput{"solve --A 0.5 --c nan --phi0 1",
+                 "capsubot solve: error: c = nan is invalid: expected a finite number"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 inf",
+                 "capsubot solve: error: phi0 = inf is invalid: expected a finite number"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --margin 0.5",
+                 "capsubot solve: error: margin d = 0.5 is invalid: expected 0 <= d < 0.5"},
+        BadInput{"solve --A abc --c 0.5 --phi0 1",
+                 "capsubot solve: error: --A = abc is invalid: expected a number"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --frobnicate",
+                 "capsubot solve: error: The following argument was not expected: --frobnicate "
+                 "(see capsubot solve --help)"},
+        BadInput{"solve --A 0.5 --c 0.5",
+                 "capsubot solve: error: option --phi0 is missing: give the impact phase phi0 "
+                 "[rad]"},
+        BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --samples 1",
+                 "capsubot solve: error: --samples = 1 is invalid: expected at least 2"},
+        BadInput{"solve --c 0.5 --sin 0.1,0.2 --cos 0.1",
+                 "capsubot solve: error: Fourier coefficients: 1 cosine and 2 sine terms given: "
+                 "expected as many of each"}));
+
+TEST(SolveCli, UnwritableTrajectoryIsAnError) {
+  const auto r = RunCli(kExample + " --trajectory /nonexistent-dir/t.csv 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot solve: error: --trajectory /nonexistent-dir/t.csv cannot be written: No "
+            "such file or directory\n");
+}
+
+}  // namespace
+}  // namespace capsubot
