@@ -1,0 +1,102 @@
+// The optimisers of MODEL.md section 7. Targets (issue 4), Release, one core:
+//   P1 (OptimizePhase) in at most 50 ms;
+//   P2 (OptimizeForcing) to a relative accuracy of 1e-6 in at most 2 s.
+// The P2 benchmarks report `rel_error`: |I - I_ref| / I_ref against a reference optimum
+// computed once with much more effort (24x24 grid, 24 starts, tolerance 1e-14, best of
+// LN_COBYLA and LD_SLSQP).
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "capsubot/optimize.hpp"
+
+namespace {
+
+using capsubot::Forcing;
+using capsubot::Params;
+
+Params Model(double T0) {
+  Params p;
+  p.T0 = T0;
+  return p;
+}
+
+// P1 for the paper's shape c = A = T0/2: at T0 = 0.1 a valid arc whose optimum grazes the
+// left wall; at T0 = 1 (the paper's) no valid orbit at all (the whole circle is scanned).
+void BM_OptimizePhase(benchmark::State& state) {
+  const double T0 = state.range(0) / 1000.0;
+  const Params params = Model(T0);
+  const Forcing shape = Forcing::Harmonic(T0 / 2, T0 / 2, 0.0);
+  int evaluations = 0;
+  for (auto _ : state) {
+    const auto r = capsubot::OptimizePhase(shape, params);
+    evaluations = r.evaluations;
+    benchmark::DoNotOptimize(r.solution.orbit.I);
+  }
+  state.counters["evaluations"] = evaluations;
+}
+BENCHMARK(BM_OptimizePhase)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+double ReferenceI(double T0, bool stable) {
+  static std::map<std::pair<double, bool>, double> cache;
+  const auto key = std::make_pair(T0, stable);
+  if (cache.count(key) == 0) {
+    double best = -HUGE_VAL;
+    for (const char* local : {"LN_COBYLA", "LD_SLSQP"}) {
+      capsubot::ForcingDesignOptions o;
+      o.grid = 24;
+      o.starts = 24;
+      o.rel_tol = 1e-14;
+      o.local_evaluations = 100000;
+      o.local_algorithm = local;
+      o.stable = stable;
+      const auto r = capsubot::OptimizeForcing(Model(T0), o);
+      if (r.found()) best = std::max(best, r.solution.orbit.I);
+    }
+    cache[key] = best;
+  }
+  return cache[key];
+}
+
+// P2 with the default options (multistart + LN_COBYLA), T0 = range(0)/1000, stable = range(1).
+void BM_OptimizeForcing(benchmark::State& state) {
+  const double T0 = state.range(0) / 1000.0;
+  const bool stable = state.range(1) != 0;
+  capsubot::ForcingDesignOptions o;
+  o.stable = stable;
+  const double reference = ReferenceI(T0, stable);
+  double I = 0.0;
+  int evaluations = 0;
+  for (auto _ : state) {
+    const auto r = capsubot::OptimizeForcing(Model(T0), o);
+    I = r.solution.orbit.I;
+    evaluations = r.evaluations;
+  }
+  state.counters["I"] = I;
+  state.counters["rel_error"] = std::abs(I - reference) / reference;
+  state.counters["evaluations"] = evaluations;
+}
+BENCHMARK(BM_OptimizeForcing)
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Args({100, 0})
+    ->Unit(benchmark::kMillisecond);
+
+// P3 with K = 3 harmonics at T0 = 1 (default options: P2, then 20 local polishes).
+void BM_OptimizeFourier(benchmark::State& state) {
+  capsubot::FourierOptions o;
+  o.harmonics = static_cast<int>(state.range(0));
+  double gain = 0.0;
+  for (auto _ : state) {
+    const auto r = capsubot::OptimizeFourier(Model(1.0), o);
+    gain = r.solution.orbit.I / r.baseline_I - 1.0;
+  }
+  state.counters["gain"] = gain;
+}
+BENCHMARK(BM_OptimizeFourier)->Arg(3)->Unit(benchmark::kMillisecond);
+
+}  // namespace
