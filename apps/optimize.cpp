@@ -109,22 +109,38 @@ void WriteForceCsv(const Forcing& f, const std::string& path) {
   file.Commit();
 }
 
+// What an active constraint means for the gait.
+const char* BindingInPlainTerms(const std::string& name) {
+  namespace n = constraint_names;
+  if (name == n::kLeftWall) return "the inner body just reaches the left wall (x_min = margin)";
+  if (name == n::kRightWall) return "it just grazes the right wall before the impact";
+  if (name == n::kStick) return "the force reaches the friction bound while the capsule rests";
+  if (name == n::kForceBound) return "the force uses its whole bound";
+  if (name == n::kStability) return "the gait sits on the stability limit";
+  if (name == n::kMassRatioLow || name == n::kMassRatioHigh) return "alpha at its limit";
+  return "";
+}
+
 // A gait in plain terms, indented.
-std::string GaitText(const OptimizeResult& r, double T0) {
+std::string GaitText(const OptimizeResult& r) {
   const Orbit& o = r.solution.orbit;
   const Validity& v = r.solution.validity;
   std::string t;
   t += fmt::format("    force            {}\n", ForceFormula(o.forcing));
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {}\n", Num(o.alpha, 5));
-  t += fmt::format("    speed            I = {} shell lengths per period = {} T0; mean velocity "
-                   "{} omega L\n",
-                   Num(o.I, 6), Num(o.I / T0, 5), Num(o.v_mean, 5));
+  t += fmt::format("    speed            I = {} shell lengths per period (mean velocity {} "
+                   "omega L)\n",
+                   Num(o.I, 6), Num(o.v_mean, 5));
   t += fmt::format("    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
                    "until phi1 = {} rad\n",
                    Num(o.u, 5), Num(o.v_plus, 5), Num(o.phi1, 5));
   t += fmt::format("    inner body       x from {} to {} (walls at 0 and 1)\n", Num(v.x_min, 4),
                    std::isnan(v.x_max) ? "1 (at the impact)" : Num(v.x_max, 6));
   t += fmt::format("    binding          {}\n", Join(r.active_constraints));
+  for (const auto& name : r.active_constraints) {
+    const char* plain = BindingInPlainTerms(name);
+    if (*plain != '\0') t += fmt::format("                     - {}\n", plain);
+  }
   if (!std::isnan(r.spectral_radius)) {
     const double rho = r.spectral_radius;
     // The stability constraint often binds: rho = 1 up to the optimiser's tolerance.
@@ -198,7 +214,7 @@ int RunMainJob(const OptimizeCliOptions& opt) {
       "   best impact phase phi0 over the whole circle.\n",
       p.T0 / 2.0);
   if (paper.found()) {
-    t += "   Result: a valid gait exists.\n" + GaitText(paper, p.T0);
+    t += "   Result: a valid gait exists.\n" + GaitText(paper);
   } else {
     const Validity& v = paper.solution.validity;
     t += fmt::format(
@@ -220,12 +236,12 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   }
   t += fmt::format(
       "\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
-  t += fastest.found() ? GaitText(fastest, p.T0)
+  t += fastest.found() ? GaitText(fastest)
                        : fmt::format("   Result: none found ({})\n", fastest.message);
   t += fmt::format(
       "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, MODEL.md section 8):\n",
       rho_max);
-  t += stable.found() ? GaitText(stable, p.T0)
+  t += stable.found() ? GaitText(stable)
                       : fmt::format("   Result: none found ({})\n", stable.message);
   if (fastest.found() && stable.found()) {
     t += fmt::format(
@@ -288,7 +304,7 @@ int RunProblem(const OptimizeCliOptions& opt) {
                    opt.problem, p.T0, p.e, p.margin,
                    stable ? fmt::format(", spectral radius <= {:g}", opt.rho_max) : "");
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r, p.T0);
+  t += GaitText(r);
   if (opt.problem == "fourier") {
     t += fmt::format("    gain over P2     {} (harmonic optimum I = {})\n",
                      r.found() ? fmt::format("{:+.4g}%", 100.0 * (r.solution.orbit.I / r.baseline_I - 1.0))
