@@ -43,10 +43,9 @@ class CsvObserver : public SimObserver {
     if (events_ == nullptr) return;
     const SimState& s = e.after;
     events_->stream() << FormatNumber(s.phi) << ',' << EventKindName(e.kind) << ','
-                      << FormatNumber(s.x) << ',' << FormatNumber(s.u) << ','
-                      << FormatNumber(s.v) << ',' << FormatNumber(s.y) << ','
-                      << FormatNumber(e.u_before) << ',' << FormatNumber(e.v_before) << ','
-                      << SimModeName(s.mode) << '\n';
+                      << FormatNumber(s.x) << ',' << FormatNumber(s.u) << ',' << FormatNumber(s.v)
+                      << ',' << FormatNumber(s.y) << ',' << FormatNumber(e.u_before) << ','
+                      << FormatNumber(e.v_before) << ',' << SimModeName(s.mode) << '\n';
   }
   void OnSample(const SimState& s) override {
     if (trajectory_ == nullptr) return;
@@ -63,8 +62,8 @@ class CsvObserver : public SimObserver {
 int Run(SimulateOptions& opt) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
-  const bool has_state = opt.x0_option->count() + opt.u0_option->count() +
-                         opt.v0_option->count() > 0;
+  const bool has_state =
+      opt.x0_option->count() + opt.u0_option->count() + opt.v0_option->count() > 0;
   SimOptions sim = opt.sim;
   std::optional<Solution> orbit;
   if (opt.from_orbit) {
@@ -76,13 +75,14 @@ int Run(SimulateOptions& opt) {
     orbit = Solve(forcing, opt.params);
     const Orbit& o = orbit->orbit;
     if (!o.ok()) {
-      throw std::invalid_argument(fmt::format(
-          "--from-orbit: no one-impact orbit exists for this force, T0 and e ({})",
-          StatusName(o.status)));
+      throw std::invalid_argument(
+          fmt::format("--from-orbit: no one-impact orbit exists for this force, T0 and e ({})",
+                      StatusName(o.status)));
     }
     if (!orbit->validity.valid()) {
       std::string names;
-      for (const auto& n : orbit->validity.ViolationNames()) names += (names.empty() ? "" : ", ") + n;
+      for (const auto& n : orbit->validity.ViolationNames())
+        names += (names.empty() ? "" : ", ") + n;
       fmt::print(stderr, "capsubot simulate: note: the analytic orbit is not valid ({})\n", names);
     }
     // Right after the impact (MODEL.md section 4): x = 1, x' = -e u, v = v+.
@@ -92,10 +92,10 @@ int Run(SimulateOptions& opt) {
     sim.v0 = o.v_plus;
   } else {
     if (opt.alpha_option->count() == 0) {
-      throw std::invalid_argument("option --alpha is missing: give the mass ratio (or --from-orbit)");
+      throw std::invalid_argument(
+          "option --alpha is missing: give the mass ratio (or --from-orbit)");
     }
-    if (opt.x0_option->count() == 0 || opt.u0_option->count() == 0 ||
-        opt.v0_option->count() == 0) {
+    if (opt.x0_option->count() == 0 || opt.u0_option->count() == 0 || opt.v0_option->count() == 0) {
       throw std::invalid_argument(
           "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)");
     }
@@ -188,10 +188,10 @@ Command AddSimulateCommand(CLI::App& app) {
   opt->x0_option = cmd->add_option("--x0", opt->sim.x0,
                                    "initial position of the inner body, 0 <= x0 <= 1 (walls at "
                                    "0 and 1, units of L)");
-  opt->u0_option = cmd->add_option("--u0", opt->sim.u0,
-                                   "initial relative velocity dx/dphi (units of omega L)");
-  opt->v0_option = cmd->add_option("--v0", opt->sim.v0,
-                                   "initial capsule velocity (units of omega L)");
+  opt->u0_option =
+      cmd->add_option("--u0", opt->sim.u0, "initial relative velocity dx/dphi (units of omega L)");
+  opt->v0_option =
+      cmd->add_option("--v0", opt->sim.v0, "initial capsule velocity (units of omega L)");
   cmd->add_option("--y0", opt->sim.y0, "initial capsule position (units of L)")
       ->capture_default_str();
   cmd->add_flag("--from-orbit", opt->from_orbit,

@@ -13,9 +13,9 @@ namespace capsubot {
 namespace {
 
 constexpr double kPi = 0.5 * kTau;
-constexpr int kInitialGrid = 512;     // first partition of the circle
-constexpr double kMinWidth = 1e-10;   // phase resolution of the exclusion refinement
-constexpr double kSameRoot = 1e-8;    // two candidates closer than this are one root
+constexpr int kInitialGrid = 512;          // first partition of the circle
+constexpr double kMinWidth = 1e-10;        // phase resolution of the exclusion refinement
+constexpr double kSameRoot = 1e-8;         // two candidates closer than this are one root
 constexpr long kMaxEvaluations = 4000000;  // work bound (never reached in practice)
 
 // Why no root is missed.
@@ -23,7 +23,8 @@ constexpr long kMaxEvaluations = 4000000;  // work bound (never reached in pract
 // psi is linear in alpha (MODEL.md section 4): psi(alpha) = (1-alpha) psi(0) + alpha psi(1), so
 // alpha(phi0) = a  <=>  Psi(phi0) := (1-a) psi0(phi0) + a psi1(phi0) = 0 (then psi0 psi1 < 0
 // follows for 0 < a < 1 unless both vanish). Psi has no poles, unlike alpha(phi0). Where
-// phi1(phi0) is smooth, its derivative follows from the envelope identity d psi1/d phi1 = g(phi1) = 0:
+// phi1(phi0) is smooth, its derivative follows from the envelope identity d psi1/d phi1 = g(phi1) =
+// 0:
 //   dPsi/dphi0 = (1-a) tau (F(0) - c) - a (Pi(phi1) - phi1 F(0)),
 // and with S = sum_k |(a_k, b_k)| (so |F - c| <= S, |F(s) - F(0)| <= 2S)
 //   |dPsi/dphi0| <= L = tau S (1 + a).
@@ -53,8 +54,7 @@ struct PsiFunction {
 
 }  // namespace
 
-std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params,
-                                      double alpha) {
+std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha) {
   params.Validate();
   if (!(alpha > 0.0 && alpha < 1.0)) {
     throw std::invalid_argument(
@@ -102,10 +102,11 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
       const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
       // Not detail::Brent: Psi itself runs the thread's GSL Brent solver (phi1), which a nested
       // use would reset. Newton inside the bracket (bisection fallback) needs no solver state.
-      const double r =
-          crossing ? detail::SafeNewton(psi, [&psi](double p) { return psi.Derivative(p); },
-                                        iv.lo, iv.hi)
-                   : alo <= ahi ? iv.lo : iv.hi;
+      const double r = crossing
+                           ? detail::SafeNewton(
+                                 psi, [&psi](double p) { return psi.Derivative(p); }, iv.lo, iv.hi)
+                       : alo <= ahi ? iv.lo
+                                    : iv.hi;
       const double residual = std::abs(psi(r));
       if (residual <= accept) roots.push_back({r, crossing, residual});
       continue;

@@ -240,12 +240,24 @@ void Simulation::Rebase(double s) {
 void Simulation::Emit(EventKind kind, double u_before, double v_before) {
   ++res_.events;
   switch (kind) {
-    case EventKind::kImpactRight: ++res_.impacts_right; break;
-    case EventKind::kImpactLeft: ++res_.impacts_left; break;
-    case EventKind::kStop: ++res_.stops; break;
-    case EventKind::kBreakaway: ++res_.breakaways; break;
-    case EventKind::kStick: ++res_.sticks; break;
-    case EventKind::kRelease: ++res_.releases; break;
+    case EventKind::kImpactRight:
+      ++res_.impacts_right;
+      break;
+    case EventKind::kImpactLeft:
+      ++res_.impacts_left;
+      break;
+    case EventKind::kStop:
+      ++res_.stops;
+      break;
+    case EventKind::kBreakaway:
+      ++res_.breakaways;
+      break;
+    case EventKind::kStick:
+      ++res_.sticks;
+      break;
+    case EventKind::kRelease:
+      ++res_.releases;
+      break;
   }
   if (observer_ != nullptr) {
     SimEvent ev;
@@ -329,10 +341,13 @@ void Simulation::Impact(double dir) {
 }
 
 void Simulation::UpdateMode(double hint) {
-  const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : sg_.OnWall() ? 0.0 : RestOrSlide(hint);
+  const double sgn = sg_.v0 > 0.0   ? 1.0
+                     : sg_.v0 < 0.0 ? -1.0
+                     : sg_.OnWall() ? 0.0
+                                    : RestOrSlide(hint);
   SetCoefficients(sg_, sgn);
   if (sg_.OnWall()) return;
-  sg_.mode = sgn > 0.0 ? SimMode::kSlideForward
+  sg_.mode = sgn > 0.0   ? SimMode::kSlideForward
              : sgn < 0.0 ? SimMode::kSlideBackward
                          : SimMode::kRest;
 }
@@ -366,7 +381,7 @@ void Simulation::Settle(double hint) {
     const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : 0.0;
     SetCoefficients(sg_, sgn);
     if (FreeAccelIntoWall(dir, sgn)) return;  // the contact force keeps its sign
-    sg_.mode = SimMode::kRest;  // free
+    sg_.mode = SimMode::kRest;                // free
     sg_.u0 = 0.0;
     UpdateMode(0.0);
     Emit(EventKind::kRelease, 0.0, sg_.v0);
@@ -478,8 +493,8 @@ SimResult Simulation::Run() {
   EmitSamplesBefore(0.0, true);
   res_.final_state = StateAt(0.0);
   res_.displacement = res_.final_state.y - opt_.y0;
-  res_.v_mean = res_.final_state.phi > 0.0 ? res_.displacement / res_.final_state.phi
-                                           : SimResult::kNaN;
+  res_.v_mean =
+      res_.final_state.phi > 0.0 ? res_.displacement / res_.final_state.phi : SimResult::kNaN;
   return res_;
 }
 
@@ -487,33 +502,48 @@ SimResult Simulation::Run() {
 
 const char* EventKindName(EventKind kind) {
   switch (kind) {
-    case EventKind::kImpactRight: return "impact_right";
-    case EventKind::kImpactLeft: return "impact_left";
-    case EventKind::kStop: return "stop";
-    case EventKind::kBreakaway: return "breakaway";
-    case EventKind::kStick: return "stick";
-    case EventKind::kRelease: return "release";
+    case EventKind::kImpactRight:
+      return "impact_right";
+    case EventKind::kImpactLeft:
+      return "impact_left";
+    case EventKind::kStop:
+      return "stop";
+    case EventKind::kBreakaway:
+      return "breakaway";
+    case EventKind::kStick:
+      return "stick";
+    case EventKind::kRelease:
+      return "release";
   }
   return "unknown";
 }
 
 const char* SimModeName(SimMode mode) {
   switch (mode) {
-    case SimMode::kRest: return "rest";
-    case SimMode::kSlideForward: return "slide_forward";
-    case SimMode::kSlideBackward: return "slide_backward";
-    case SimMode::kOnRightWall: return "on_right_wall";
-    case SimMode::kOnLeftWall: return "on_left_wall";
+    case SimMode::kRest:
+      return "rest";
+    case SimMode::kSlideForward:
+      return "slide_forward";
+    case SimMode::kSlideBackward:
+      return "slide_backward";
+    case SimMode::kOnRightWall:
+      return "on_right_wall";
+    case SimMode::kOnLeftWall:
+      return "on_left_wall";
   }
   return "unknown";
 }
 
 const char* SimStatusName(SimStatus status) {
   switch (status) {
-    case SimStatus::kNotRun: return "not_run";
-    case SimStatus::kOk: return "ok";
-    case SimStatus::kImpactLimit: return "impact_limit";
-    case SimStatus::kEventLimit: return "event_limit";
+    case SimStatus::kNotRun:
+      return "not_run";
+    case SimStatus::kOk:
+      return "ok";
+    case SimStatus::kImpactLimit:
+      return "impact_limit";
+    case SimStatus::kEventLimit:
+      return "event_limit";
   }
   return "unknown";
 }
@@ -532,8 +562,8 @@ void SimOptions::Validate() const {
   Require(chatter_velocity > 0.0 && std::isfinite(chatter_velocity), "chatter_velocity",
           chatter_velocity, "a finite number > 0");
   if (max_events_per_period < 10) {
-    throw std::invalid_argument(fmt::format(
-        "max_events_per_period = {} is invalid: expected >= 10", max_events_per_period));
+    throw std::invalid_argument(fmt::format("max_events_per_period = {} is invalid: expected >= 10",
+                                            max_events_per_period));
   }
   Require(sample_step >= 0.0 && std::isfinite(sample_step), "sample_step", sample_step,
           "a finite number >= 0 (0: no samples)");

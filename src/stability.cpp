@@ -7,7 +7,8 @@ namespace capsubot {
 
 // Impact map of MODEL.md section 8, differentiated implicitly. Let phi be measured from the
 // impact at motor phase theta, so F(phi) = G(theta + phi), and write
-//   Pi_theta(phi) = P(theta + phi) - P(theta),  Phi_theta(phi) = Q(theta + phi) - Q(theta) - phi P(theta)
+//   Pi_theta(phi)  = P(theta + phi) - P(theta),
+//   Phi_theta(phi) = Q(theta + phi) - Q(theta) - phi P(theta)
 // with P' = G, Q' = P. Then  d Pi_theta(phi)/d theta = F(phi) - F(0)  and
 // d Phi_theta(phi)/d theta = Pi(phi) - phi F(0).
 //
@@ -23,8 +24,8 @@ namespace capsubot {
 //   h_theta = (Pi(phi2) - phi2 F(0))/alpha + (Pi(phi1) - phi1 F(0))/(1-alpha),
 //   h_u = -e phi2 + (phi2 - phi1) alpha (1+e),
 // and the map is theta' = theta + phi2, u' = x'(phi2).
-Eigen::Matrix2d ImpactMapJacobian(const Forcing& motor, double T0, double e, double alpha,
-                                  double u, double phi1, double phi2) {
+Eigen::Matrix2d ImpactMapJacobian(const Forcing& motor, double T0, double e, double alpha, double u,
+                                  double phi1, double phi2) {
   (void)T0;  // T0 enters only through phi1 (the envelope argument above)
   const double F0 = motor.F(0.0), F2 = motor.F(phi2);
   const double Pi1 = motor.Pi(phi1), Pi2 = motor.Pi(phi2);
@@ -44,8 +45,8 @@ Eigen::Matrix2d ImpactMapJacobian(const Forcing& motor, double T0, double e, dou
 Stability ComputeStability(const Orbit& orbit) {
   Stability s;
   if (!orbit.ok()) return s;
-  s.jacobian = ImpactMapJacobian(orbit.forcing, orbit.T0, orbit.e, orbit.alpha, orbit.u,
-                                 orbit.phi1, kTau);
+  s.jacobian =
+      ImpactMapJacobian(orbit.forcing, orbit.T0, orbit.e, orbit.alpha, orbit.u, orbit.phi1, kTau);
   // Eigenvalues of a 2x2 matrix from its trace and determinant.
   const Eigen::Matrix2d& J = s.jacobian;
   const double tr = J(0, 0) + J(1, 1), det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);

@@ -142,11 +142,9 @@ INSTANTIATE_TEST_SUITE_P(
              Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5, 0.17},
         // Just below the maximum of alpha(phi0) (about 0.1995): two roots close together.
         Case{"fourier3_alpha0p199_near_fold",
-             Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5,
-             0.199},
+             Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5, 0.199},
         Case{"fourier3_alpha0p05",
-             Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5,
-             0.05}),
+             Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5, 0.05}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 TEST(RobotOrbitsInput, BadMassRatioIsRejectedWithItsRule) {

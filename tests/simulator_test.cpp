@@ -406,7 +406,8 @@ TEST(SimOptions, BadInputsAreRejectedWithTheirRule) {
   EXPECT_EQ(message(o), "max_events_per_period = 5 is invalid: expected >= 10");
   o = ok;
   o.sample_step = -1.0;
-  EXPECT_EQ(message(o), "sample_step = -1 is invalid: expected a finite number >= 0 (0: no samples)");
+  EXPECT_EQ(message(o),
+            "sample_step = -1 is invalid: expected a finite number >= 0 (0: no samples)");
   o = ok;
   o.y0 = NAN;
   EXPECT_EQ(message(o), "initial capsule position y0 = nan is invalid: expected a finite number");

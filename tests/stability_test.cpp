@@ -122,8 +122,8 @@ TEST_P(OrbitStability, ImpactMapJacobianHoldsAwayFromTheFixedPoint) {
   const double theta = k.phi0 + 1e-3, u = o.u * (1.0 + 1e-3);
   const MapResult m = SimulatedMap(o.forcing, P(k), o.alpha, theta, u);
   ASSERT_EQ(m.other_events, 0) << "the perturbed state keeps the one-impact structure";
-  const Eigen::Matrix2d J = ImpactMapJacobian(o.forcing.WithPhase(theta), k.T0, k.e, o.alpha, u,
-                                              m.phi1, m.advance);
+  const Eigen::Matrix2d J =
+      ImpactMapJacobian(o.forcing.WithPhase(theta), k.T0, k.e, o.alpha, u, m.phi1, m.advance);
   const Eigen::Matrix2d fd = FiniteDifferenceJacobian(o.forcing, P(k), o.alpha, theta, u);
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {

@@ -12,7 +12,8 @@
 namespace capsubot {
 
 /// Every one-impact orbit of a robot with fixed mass ratio alpha: all roots phi0 in [-pi, pi) of
-/// alpha(phi0) = alpha (MODEL.md section 8), each solved and checked (the forcing's own phi0 is ignored).
+/// alpha(phi0) = alpha (MODEL.md section 8), each solved and checked (the forcing's own phi0 is
+/// ignored).
 std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha);
 
 }  // namespace capsubot

@@ -55,7 +55,7 @@ struct SimState {
 /// One event: the state right after it, and u, v right before it (they differ at impacts).
 struct SimEvent {
   EventKind kind = EventKind::kStop;
-  SimState after;     ///< state right after the event (its phase is the event's phase)
+  SimState after;  ///< state right after the event (its phase is the event's phase)
   double u_before = SimState::kNaN;  ///< relative velocity right before (the impact velocity)
   double v_before = SimState::kNaN;  ///< capsule velocity right before
 };
@@ -93,10 +93,10 @@ struct SimOptions {
 };
 
 enum class SimStatus {
-  kNotRun,        ///< not computed
-  kOk,            ///< reached the end phase
-  kImpactLimit,   ///< stopped right after max_impacts_right right-wall impacts
-  kEventLimit,    ///< the work bound was hit (message says where); the state is where it stopped
+  kNotRun,       ///< not computed
+  kOk,           ///< reached the end phase
+  kImpactLimit,  ///< stopped right after max_impacts_right right-wall impacts
+  kEventLimit,   ///< the work bound was hit (message says where); the state is where it stopped
 };
 
 /// Stable identifier of a status ("ok", "impact_limit", "event_limit").
@@ -106,17 +106,17 @@ struct SimResult {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   SimStatus status = SimStatus::kNotRun;
-  std::string message;      ///< empty unless status is kEventLimit
-  SimState final_state;     ///< state at the end (after any event at the end phase)
+  std::string message;   ///< empty unless status is kEventLimit
+  SimState final_state;  ///< state at the end (after any event at the end phase)
   std::int64_t impacts_right = 0;
   std::int64_t impacts_left = 0;
   std::int64_t stops = 0;
   std::int64_t breakaways = 0;
-  std::int64_t sticks = 0;      ///< chattering sequences ended with the body resting on a wall
-  std::int64_t releases = 0;    ///< departures from a wall after resting on it
-  std::int64_t events = 0;      ///< all events
-  double displacement = kNaN;   ///< y(end) - y(0)
-  double v_mean = kNaN;         ///< displacement / (phase simulated)
+  std::int64_t sticks = 0;     ///< chattering sequences ended with the body resting on a wall
+  std::int64_t releases = 0;   ///< departures from a wall after resting on it
+  std::int64_t events = 0;     ///< all events
+  double displacement = kNaN;  ///< y(end) - y(0)
+  double v_mean = kNaN;        ///< displacement / (phase simulated)
 };
 
 /// Simulates the model of MODEL.md section 3 from the initial state of `options`, with the

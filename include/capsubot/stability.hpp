@@ -8,7 +8,6 @@
 // event equations, g(phi1) = 0 (stop) and x(phi2) = 1 (next impact): no simulation.
 
 #include <Eigen/Core>
-
 #include <array>
 #include <complex>
 #include <limits>
@@ -40,7 +39,7 @@ Stability ComputeStability(const Orbit& orbit);
 /// relative velocity before it; `phi1` and `phi2` are the stop phase and the phase of the
 /// next right-wall impact, measured from this impact (found by the caller, e.g. by the
 /// simulator). Assumes the structure impact -> slide -> stop at phi1 -> rest -> impact at phi2.
-Eigen::Matrix2d ImpactMapJacobian(const Forcing& motor, double T0, double e, double alpha,
-                                  double u, double phi1, double phi2);
+Eigen::Matrix2d ImpactMapJacobian(const Forcing& motor, double T0, double e, double alpha, double u,
+                                  double phi1, double phi2);
 
 }  // namespace capsubot

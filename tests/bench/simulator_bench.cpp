@@ -53,8 +53,8 @@ void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {
   Params params;
   params.T0 = 0.1;
   params.e = 0.5;
-  const auto orbit = capsubot::ComputeOrbit(
-      Forcing::Fourier(0.02, {0.0, 0.005}, {0.05, 0.0}, -2.842), params);
+  const auto orbit =
+      capsubot::ComputeOrbit(Forcing::Fourier(0.02, {0.0, 0.005}, {0.05, 0.0}, -2.842), params);
   capsubot::SimOptions opt;
   opt.alpha = orbit.alpha;
   opt.x0 = 1.0;
