@@ -70,7 +70,9 @@ class PhaseSearch {
   // minimiser on -I; returns the polished point, or nothing better than `best` if it fails.
   bool Polish(double lo, double mid, double hi, double tol, detail::Evaluation& best) {
     if (!minimizer_) {
-      gsl_set_error_handler_off();
+      // Once per process (thread-safe static initialisation): GSL must report, not abort.
+      static const bool handler_off = (gsl_set_error_handler_off(), true);
+      (void)handler_off;
       minimizer_.reset(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
       if (!minimizer_) return false;
     }
