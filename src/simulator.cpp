@@ -79,19 +79,23 @@ void SetCoefficients(Segment& sg, double sgn) {
 // it: the first zero of f(s) = dir (x(s) - level) from below, dir = +1 right wall, -1 left.
 // x'' = kx (F + b) keeps its sign between consecutive crossings of F = -b (`cuts`), so on each
 // piece f is convex or concave and has at most two zeros:
-//   - f(l) < 0 <= f(r): exactly one crossing, found by Brent;
+//   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
-//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else Brent on f'
-//     gives it exactly, and if f(max) >= 0 (including a grazing touch) Brent on [l, max]
+//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else the root of f'
+//     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
 //     gives the first crossing;
 //   - piece starting on the wall (f(0) = 0, leaving it): concave cannot come back; convex
-//     comes back only after its minimum (Brent on f'), then as above.
+//     comes back only after its minimum (root of f'), then as above.
+// Root finder: detail::SafeNewton (Newton with the closed-form derivative, kept inside the
+// bracket, bisection fallback), to ~1e-14 in phase. It holds no solver state, so the simulator
+// may run inside another root finder (GSL's thread-local Brent solver could not be nested).
 // Returns +inf when there is no zero in (0, limit].
 double FirstReach(const Segment& sg, double level, double dir, const PhaseList& cuts,
                   double limit) {
   const auto f = [&](double s) { return dir * (sg.X(s) - level); };
   const auto df = [&](double s) { return dir * sg.U(s); };
+  const auto ddf = [&](double s) { return dir * sg.kx * (sg.f.F(s) + sg.b); };
   double l = 0.0, fl = f(0.0);
   const bool start_on_wall = fl >= 0.0;
   int next_cut = 0;
@@ -104,12 +108,12 @@ double FirstReach(const Segment& sg, double level, double dir, const PhaseList& 
       if (curvature > 0.0 && fr >= 0.0) {
         // Convex, leaving the wall: it returns after its minimum.
         double lo = 0.0;
-        if (df(0.0) < 0.0 && df(r) > 0.0) lo = detail::Brent(df, 0.0, r);
-        if (f(lo) < 0.0) return detail::Brent(f, lo, r);
+        if (df(0.0) < 0.0 && df(r) > 0.0) lo = detail::SafeNewton(df, ddf, 0.0, r);
+        if (f(lo) < 0.0) return detail::SafeNewton(f, df, lo, r);
         return l;  // pressed into the wall (the caller settles this case first)
       }
     } else if (fl < 0.0 && fr >= 0.0) {
-      return detail::Brent(f, l, r);
+      return detail::SafeNewton(f, df, l, r);
     } else if (fl < 0.0 && curvature < 0.0) {
       const double dl = df(l), dr = df(r);
       if (dl > 0.0 && dr < 0.0) {
@@ -117,8 +121,8 @@ double FirstReach(const Segment& sg, double level, double dir, const PhaseList& 
         const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
         const double bound = fl + dl * (st - l);
         if (bound >= 0.0) {
-          const double smax = detail::Brent(df, l, r);
-          if (f(smax) >= 0.0) return detail::Brent(f, l, smax);
+          const double smax = detail::SafeNewton(df, ddf, l, r);
+          if (f(smax) >= 0.0) return detail::SafeNewton(f, df, l, smax);
         }
       }
     }
@@ -133,13 +137,14 @@ double FirstReach(const Segment& sg, double level, double dir, const PhaseList& 
 // piece whose end has sgn v <= 0 brackets the unique stop.
 double FirstStop(const Segment& sg, double limit) {
   const auto v = [&](double s) { return sg.V(s); };
+  const auto dv = [&](double s) { return -(sg.sgn * sg.T0 + sg.f.F(s)) / (1.0 - sg.alpha); };
   const PhaseList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
   double l = 0.0;
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    if (sg.sgn * v(r) <= 0.0) return detail::Brent(v, l, r);
+    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewton(v, dv, l, r);
     l = r;
   }
   return kInf;

@@ -133,7 +133,7 @@ TEST_P(OrbitStability, ImpactMapJacobianHoldsAwayFromTheFixedPoint) {
   }
 }
 
-// Simulate from the post-impact state with u perturbed by 1e-6 (relative) and follow the
+// Simulate from the post-impact state with u and v perturbed by 1e-6 (relative) and follow the
 // right-wall impacts: a stable orbit returns (deviation shrinks below 1e-9), an unstable one
 // departs (deviation above 1e-3, or the one-impact structure breaks).
 TEST_P(OrbitStability, PerturbedOrbitReturnsIfStableAndDepartsIfUnstable) {
@@ -162,8 +162,8 @@ TEST_P(OrbitStability, PerturbedOrbitReturnsIfStableAndDepartsIfUnstable) {
   SimOptions opt;
   opt.alpha = o.alpha;
   opt.x0 = 1.0;
-  opt.u0 = -o.e * o.u * (1.0 + 1e-6);
-  opt.v0 = o.v_plus;
+  opt.u0 = -o.e * o.u * (1.0 + 1e-6);  // (no perturbation when e = 0: u0 = 0)
+  opt.v0 = o.v_plus * (1.0 + 1e-6);
   opt.periods = 80.0;
   const SimResult r = Simulate(o.forcing, P(k), opt, &log);
   if (k.stable) {
