@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <random>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -117,6 +119,18 @@ TEST(SweepNumbers, AreByteIdenticalToFormatNumber) {
     detail::RowBuffer buffer;
     detail::AppendNumber(buffer, x);
     EXPECT_EQ(std::string(buffer.data(), buffer.size()), FormatNumber(x)) << x;
+  }
+  // Random doubles over the whole exponent range, subnormals and integers included.
+  std::mt19937_64 rng(20211);
+  for (int i = 0; i < 100000; ++i) {
+    std::uint64_t bits = rng();
+    double x = 0.0;
+    std::memcpy(&x, &bits, sizeof x);
+    if (i % 3 == 0) x = std::ldexp(static_cast<double>(bits >> 11), -52) * 1e3;  // ordinary
+    if (i % 7 == 0) x = std::round(x);
+    detail::RowBuffer buffer;
+    detail::AppendNumber(buffer, x);
+    ASSERT_EQ(std::string(buffer.data(), buffer.size()), FormatNumber(x)) << i;
   }
 }
 

@@ -1,7 +1,6 @@
 #include "detail/sweep_rows.hpp"
 
-#include <fmt/compile.h>
-
+#include <charconv>
 #include <cmath>
 #include <iterator>
 
@@ -28,7 +27,12 @@ std::string Hex(double value) { return fmt::format("{:a}", value); }
 
 void AppendNumber(RowBuffer& out, double value) {
   if (std::isnan(value)) return;
-  fmt::format_to(fmt::appender(out), FMT_COMPILE("{:.17g}"), value);
+  // std::to_chars with a precision formats exactly as printf("%.17g") (and so as fmt's
+  // "{:.17g}" in FormatNumber), about twice as fast as fmt 9 here (measured).
+  char text[32];
+  const std::to_chars_result r =
+      std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
+  out.append(text, r.ptr);
 }
 
 std::string SweepHeaderLine(const SweepOptions& options) {
