@@ -4,7 +4,9 @@
 
 #include "capsubot/sweep.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -322,6 +324,27 @@ TEST(Sweep, UnwritableOutputIsAnIoErrorNamingTheFile) {
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(Sweep, RefusesAnOutputAnotherSweepIsWriting) {
+  TempDir dir;
+  const SweepOptions o = PaperPhaseSweep(dir.File("busy.csv"), 5);
+  // Hold the lock a running sweep would hold on the partial file.
+  const int fd = ::open((o.output + ".partial").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  try {
+    RunSweep(o);
+    ADD_FAILURE() << "expected IoError";
+  } catch (const IoError& e) {
+    EXPECT_EQ(std::string(e.what()), "--output " + o.output +
+                                         ": another capsubot sweep is writing " + o.output +
+                                         ".partial");
+  }
+  ::close(fd);
+  EXPECT_FALSE(Exists(o.output));
+  RunSweep(o);  // once the lock is gone the sweep runs
+  EXPECT_TRUE(Exists(o.output));
 }
 
 template <class Fn>
