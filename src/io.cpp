@@ -1,6 +1,7 @@
 #include "capsubot/io.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,7 +13,11 @@ namespace capsubot {
 
 AtomicFile::AtomicFile(std::string path, std::string what)
     : path_(std::move(path)), what_(std::move(what)) {
-  temp_ = fmt::format("{}.tmp.{}", path_, static_cast<long>(::getpid()));
+  struct stat st {};
+  direct_ = path_ == "-" || (::stat(path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode));
+  temp_ = !direct_       ? fmt::format("{}.tmp.{}", path_, static_cast<long>(::getpid()))
+          : path_ == "-" ? std::string("/dev/stdout")
+                         : path_;
   out_.open(temp_, std::ios::out | std::ios::trunc);
   if (!out_) {
     throw IoError(fmt::format("{} {} cannot be written: {}", what_, path_, std::strerror(errno)));
@@ -20,7 +25,7 @@ AtomicFile::AtomicFile(std::string path, std::string what)
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) {
+  if (!committed_ && !direct_) {
     out_.close();
     std::remove(temp_.c_str());
   }
@@ -30,9 +35,9 @@ void AtomicFile::Commit() {
   out_.flush();
   const bool ok = static_cast<bool>(out_);
   out_.close();
-  if (!ok || std::rename(temp_.c_str(), path_.c_str()) != 0) {
+  if (!ok || (!direct_ && std::rename(temp_.c_str(), path_.c_str()) != 0)) {
     const int err = errno;
-    std::remove(temp_.c_str());
+    if (!direct_) std::remove(temp_.c_str());
     committed_ = true;
     throw IoError(fmt::format("{} {} cannot be written: {}", what_, path_, std::strerror(err)));
   }

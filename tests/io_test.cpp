@@ -60,6 +60,17 @@ TEST(AtomicFile, UnwritableDirectoryNamesTheFileAndReason) {
   }
 }
 
+TEST(AtomicFile, SpecialFilesAreWrittenInPlace) {
+  // /dev/null is not a regular file: no temporary beside it, no rename over it.
+  AtomicFile f("/dev/null", "--events");
+  EXPECT_EQ(f.temp_path(), "/dev/null");
+  f.stream() << "x\n";
+  f.Commit();
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  AtomicFile out("-", "--events");  // standard output
+  EXPECT_EQ(out.temp_path(), "/dev/stdout");
+}
+
 TEST(FormatNumber, RoundTripsEveryDouble) {
   for (double x : {0.1, 1.0 / 3.0, -2.944899971002, 6.283185307179586, 1e-300, 123456789.0}) {
     EXPECT_EQ(std::strtod(FormatNumber(x).c_str(), nullptr), x) << FormatNumber(x);

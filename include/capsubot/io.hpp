@@ -15,7 +15,8 @@ class IoError : public std::runtime_error {
 
 /// Writes to `path` atomically: the text goes to a temporary file beside it, which Commit()
 /// renames to `path`; destroyed without Commit() (an exception, a kill), it leaves no file
-/// under `path`. `what` names the file in messages ("--trajectory", ...).
+/// under `path`. `what` names the file in messages ("--trajectory", ...). A path that is not
+/// a regular file (/dev/stdout, a pipe) is written directly, and "-" means standard output.
 class AtomicFile {
  public:
   AtomicFile(std::string path, std::string what);  ///< throws IoError if it cannot be created
@@ -24,6 +25,7 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ofstream& stream() { return out_; }
+  /// The file being written before Commit() (the path itself when written directly).
   const std::string& temp_path() const { return temp_; }
   void Commit();  ///< flush, check for write errors, rename; throws IoError
 
@@ -31,6 +33,7 @@ class AtomicFile {
   std::string path_, what_, temp_;
   std::ofstream out_;
   bool committed_ = false;
+  bool direct_ = false;  // not a regular file: no temporary, no rename
 };
 
 /// A double with 17 significant digits (round-trips exactly); "" for NaN (a CSV empty cell).

@@ -13,8 +13,20 @@ namespace capsubot::detail {
 inline constexpr double kRootAbsTol = 1e-14;  ///< absolute tolerance in phase
 inline constexpr int kRootMaxIter = 200;
 
-/// One GSL Brent solver per thread, made on first use (GSL's error handler switched off).
-gsl_root_fsolver* ThreadBrentSolver();
+/// A GSL Brent solver on loan for one root search. Each thread keeps one solver per nesting
+/// depth, made on first use (so a search may run inside another search's function, and the
+/// hot path allocates nothing); GSL's error handler is switched off before the first one.
+class BrentLease {
+ public:
+  BrentLease();
+  ~BrentLease();
+  BrentLease(const BrentLease&) = delete;
+  BrentLease& operator=(const BrentLease&) = delete;
+  gsl_root_fsolver* get() const { return solver_; }
+
+ private:
+  gsl_root_fsolver* solver_;
+};
 
 /// Root of f in [lo, hi] where f(lo) and f(hi) have opposite signs (or one is zero).
 /// Returns the bracket's midpoint if GSL stops early (it cannot when the signs differ).
@@ -26,7 +38,8 @@ double Brent(const Fn& f, double lo, double hi) {
   gsl_function fn;
   fn.function = [](double x, void* p) { return (*static_cast<const Fn*>(p))(x); };
   fn.params = const_cast<Fn*>(&f);
-  gsl_root_fsolver* s = ThreadBrentSolver();
+  const BrentLease lease;
+  gsl_root_fsolver* s = lease.get();
   if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) return 0.5 * (lo + hi);
   double root = 0.5 * (lo + hi);
   for (int it = 0; it < kRootMaxIter; ++it) {
