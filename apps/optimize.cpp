@@ -34,6 +34,7 @@ struct OptimizeCliOptions {
   std::string local_algorithm = "LN_COBYLA";
   int starts = 0;  // 0: the problem's default
   int global_evaluations = ForcingDesignOptions{}.global_evaluations;
+  int hops = ForcingDesignOptions{}.hops;
   double rho_max = kNaN;  // NaN: no stability requirement
   CLI::Option* stable_option = nullptr;
   bool json = false;
@@ -163,6 +164,7 @@ ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
   d.local_algorithm = opt.local_algorithm;
   if (opt.starts > 0) d.starts = opt.starts;
   d.global_evaluations = opt.global_evaluations;
+  d.hops = opt.hops;
   d.stable = stable;
   if (stable) d.rho_max = opt.rho_max;
   return d;
@@ -362,8 +364,12 @@ Command AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--global-evaluations", opt->global_evaluations,
                   "evaluation budget of an NLopt global algorithm (not used by multistart)")
       ->capture_default_str();
+  cmd->add_option("--hops", opt->hops,
+                  "forcing: basin-hopping restarts from random perturbations of the best point "
+                  "after the starts")
+      ->capture_default_str();
   cmd->add_option("--starts", opt->starts,
-                  "number of local polishes of the multistart (default: 6 for forcing, 20 for "
+                  "number of local polishes of the multistart (default: 10 for forcing, 20 for "
                   "fourier)");
   opt->stable_option =
       cmd->add_option("--stable", opt->rho_max,

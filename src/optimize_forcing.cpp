@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include "capsubot/optimize_phase.hpp"
@@ -35,6 +36,8 @@ constexpr double kMinMeanFraction = 1e-9;
 constexpr double kMinGridForce = 1e-3;
 // Phases per grid cell in the multistart scan.
 constexpr int kCellPhases = 72;
+// Size of the random hops: relative change of A and c, change of phi0 [rad] (one sigma).
+constexpr double kHopSize = 0.2;
 // Phase scan of the final P1 polish.
 constexpr int kFinalPhaseScan = 720;
 
@@ -67,6 +70,7 @@ void ForcingDesignOptions::Validate() const {
   detail::AlgorithmFromName(local_algorithm, LocalAlgorithmNames(), "local_algorithm");
   Require(grid >= 2, fmt::format("grid = {} is invalid: expected grid >= 2", grid));
   Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
+  Require(hops >= 0, fmt::format("hops = {} is invalid: expected hops >= 0", hops));
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
   Require(local_evaluations >= 10,
@@ -97,8 +101,11 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
   problem.n = 3;
   problem.lower = {0.0, kMinMeanFraction, -2.0 * kPi};
   problem.upper = {1.0, 1.0, 2.0 * kPi};
+  // phi0 is reduced into [-pi, pi) here, so the point NLopt sees and the orbit reported are
+  // the same numbers (a wrap afterwards could flip a grazing orbit's validity in the last bit).
   problem.build = [bound](const double* y) {
-    return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, y[2]);
+    const double phi0 = y[2] - kTau * std::floor((y[2] + kPi) / kTau);
+    return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, phi0);
   };
   problem.setup = {params, bound, options.stable, options.rho_max};
   problem.constraints = {detail::kLeftWallIndex, detail::kRightWallIndex,
@@ -160,17 +167,30 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
 
   // Local constrained polish from every start; the status is that of the run that produced
   // the best point.
-  for (const Start& start : starts) {
+  auto polish = [&](const std::vector<double>& y0) {
     const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
-    const std::vector<double> step = {0.25 * std::max(start.y[0], 1e-3),
-                                      0.25 * std::max(start.y[1], 1e-3), 0.1};
-    const detail::RunResult run = detail::RunNlopt(local, problem, start.y, step, options.rel_tol,
+    const std::vector<double> step = {0.25 * std::max(y0[0], 1e-3), 0.25 * std::max(y0[1], 1e-3),
+                                      0.1};
+    const detail::RunResult run = detail::RunNlopt(local, problem, y0, step, options.rel_tol,
                                                    options.local_evaluations, tracker);
     if (tracker.best.valid && tracker.best.I > before) {
       best_status = run.status;
       nlopt_message = run.message;
     }
+  };
+  for (const Start& start : starts) polish(start.y);
+  // Basin hopping: where the constraints are kinked (a margin, e < 1) the local polish stalls
+  // on ridges; restarts from random perturbations of the best point so far move along them.
+  std::mt19937 rng(options.seed);
+  std::normal_distribution<double> normal(0.0, kHopSize);
+  for (int h = 0; h < options.hops && !tracker.best_y.empty(); ++h) {
+    std::vector<double> y0 = tracker.best_y;
+    y0[0] *= std::exp(normal(rng));
+    y0[1] *= std::exp(normal(rng));
+    y0[2] += normal(rng);
+    polish(y0);
   }
+  if (options.hops > 0) algorithm += fmt::format(", {} hops", options.hops);
 
   // Final phase polish (P1) at the best (A, c): a point valid through Solve itself.
   detail::Evaluation best = tracker.best;
@@ -186,17 +206,6 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
       const double y[3] = {tracker.best_y[0], tracker.best_y[1], p1.solution.orbit.forcing.phi0()};
       best = detail::EvaluateAt(problem, y, tracker);
     }
-  }
-
-  // Report phi0 in [-pi, pi) (the local polish may wander past -pi); the wrapped point is
-  // re-evaluated, and kept only if it is still valid (a wrap changes the last bits).
-  const double phi0 = best.solution.orbit.forcing.phi0();
-  if (best.valid && !(phi0 >= -kPi && phi0 < kPi)) {
-    const double y[3] = {best.solution.orbit.forcing.amplitude() / bound,
-                         best.solution.orbit.forcing.mean() / bound,
-                         phi0 - kTau * std::floor((phi0 + kPi) / kTau)};
-    detail::Evaluation wrapped = detail::EvaluateAt(problem, y, tracker);
-    if (wrapped.valid) best = std::move(wrapped);
   }
 
   OptimizeResult result;

@@ -27,16 +27,19 @@ struct ForcingDesignOptions {
   /// (gradients by central differences).
   std::string local_algorithm = "LN_COBYLA";
   /// Grid points per axis of the scan over (A/bound, c/bound) that seeds the multistart; >= 2.
-  int grid = 12;
+  int grid = 16;
   /// Local polishes, from the best distinct valid scan points; >= 1.
-  int starts = 6;
+  int starts = 10;
+  /// Basin-hopping restarts after the starts: local polishes from random perturbations of
+  /// the best point so far (A and c by about 20 %, phi0 by about 0.2 rad); >= 0.
+  int hops = 20;
   /// Relative tolerance of the local polish on the variables and on I; > 0.
   double rel_tol = 1e-10;
   /// Evaluation budget of each local polish; >= 10.
   int local_evaluations = 20000;
   /// Evaluation budget of an NLopt global stage; >= 10.
   int global_evaluations = 5000;
-  /// Seed of the random numbers of the global stage.
+  /// Seed of the random numbers (hops, NLopt's stochastic global algorithms).
   unsigned seed = 1;
   /// Require a stable orbit: spectral radius (MODEL.md section 8) <= rho_max.
   bool stable = false;
