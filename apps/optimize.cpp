@@ -2,6 +2,8 @@
 // job: the paper's problem P1 at c = A = T0/2, then P2 at the same T0 with and without the
 // stability requirement, a readable summary and results/optimum.json.
 
+#include "capsubot/optimize.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -13,7 +15,6 @@
 #include <vector>
 
 #include "capsubot/io.hpp"
-#include "capsubot/optimize.hpp"
 #include "commands.hpp"
 #include "report.hpp"
 
@@ -129,12 +130,14 @@ std::string GaitText(const OptimizeResult& r) {
   std::string t;
   t += fmt::format("    force            {}\n", ForceFormula(o.forcing));
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {}\n", Num(o.alpha, 5));
-  t += fmt::format("    speed            I = {} shell lengths per period (mean velocity {} "
-                   "omega L)\n",
-                   Num(o.I, 6), Num(o.v_mean, 5));
-  t += fmt::format("    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
-                   "until phi1 = {} rad\n",
-                   Num(o.u, 5), Num(o.v_plus, 5), Num(o.phi1, 5));
+  t += fmt::format(
+      "    speed            I = {} shell lengths per period (mean velocity {} "
+      "omega L)\n",
+      Num(o.I, 6), Num(o.v_mean, 5));
+  t += fmt::format(
+      "    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
+      "until phi1 = {} rad\n",
+      Num(o.u, 5), Num(o.v_plus, 5), Num(o.phi1, 5));
   t += fmt::format("    inner body       x from {} to {} (walls at 0 and 1)\n", Num(v.x_min, 4),
                    std::isnan(v.x_max) ? "1 (at the impact)" : Num(v.x_max, 6));
   t += fmt::format("    binding          {}\n", Join(r.active_constraints));
@@ -147,8 +150,8 @@ std::string GaitText(const OptimizeResult& r) {
     // The stability constraint often binds: rho = 1 up to the optimiser's tolerance.
     const bool boundary = std::abs(rho - 1.0) <= 1e-6;
     t += fmt::format("    stability        spectral radius {} -> {}\n", Num(rho, 4),
-                     boundary ? "on the stability boundary: the limit of the stable gaits "
-                                "(use --stable 0.95 for a margin)"
+                     boundary    ? "on the stability boundary: the limit of the stable gaits "
+                                   "(use --stable 0.95 for a margin)"
                      : rho < 1.0 ? "stable: a real robot settles on this gait"
                                  : "unstable: a real robot would drift away from this gait");
   }
@@ -236,8 +239,7 @@ int RunMainJob(const OptimizeCliOptions& opt) {
           Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);
     }
   }
-  t += fmt::format(
-      "\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
+  t += fmt::format("\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
   t += fastest.found() ? GaitText(fastest)
                        : fmt::format("   Result: none found ({})\n", fastest.message);
   t += fmt::format(
@@ -308,10 +310,11 @@ int RunProblem(const OptimizeCliOptions& opt) {
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
   t += GaitText(r);
   if (opt.problem == "fourier") {
-    t += fmt::format("    gain over P2     {} (harmonic optimum I = {})\n",
-                     r.found() ? fmt::format("{:+.4g}%", 100.0 * (r.solution.orbit.I / r.baseline_I - 1.0))
-                               : std::string("-"),
-                     Num(r.baseline_I, 8));
+    t += fmt::format(
+        "    gain over P2     {} (harmonic optimum I = {})\n",
+        r.found() ? fmt::format("{:+.4g}%", 100.0 * (r.solution.orbit.I / r.baseline_I - 1.0))
+                  : std::string("-"),
+        Num(r.baseline_I, 8));
   }
   fmt::print("{}", t);
   return 0;
@@ -320,9 +323,8 @@ int RunProblem(const OptimizeCliOptions& opt) {
 int Run(const OptimizeCliOptions& opt) {
   opt.params.Validate();
   if (opt.stable_option->count() > 0 && !(std::isfinite(opt.rho_max) && opt.rho_max > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--stable = {} is invalid: expected a spectral radius bound rho_max > 0",
-                    opt.rho_max));
+    throw std::invalid_argument(fmt::format(
+        "--stable = {} is invalid: expected a spectral radius bound rho_max > 0", opt.rho_max));
   }
   return opt.problem.empty() ? RunMainJob(opt) : RunProblem(opt);
 }

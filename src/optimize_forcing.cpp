@@ -73,8 +73,9 @@ void ForcingDesignOptions::Validate() const {
   Require(hops >= 0, fmt::format("hops = {} is invalid: expected hops >= 0", hops));
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
-  Require(local_evaluations >= 10,
-          fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
+  Require(
+      local_evaluations >= 10,
+      fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
   Require(global_evaluations >= 10, fmt::format("global_evaluations = {} is invalid: expected "
                                                 "at least 10",
                                                 global_evaluations));
@@ -93,8 +94,8 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
                       "above the friction bound moves the capsule without impacts, MODEL.md "
                       "section 6)",
                       bound, params.T0));
-  const nlopt::algorithm local = detail::AlgorithmFromName(
-      options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  const nlopt::algorithm local =
+      detail::AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
   const bool multistart = options.global_algorithm == kMultistart;
 
   detail::Problem problem;
@@ -108,9 +109,8 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, phi0);
   };
   problem.setup = {params, bound, options.stable, options.rho_max};
-  problem.constraints = {detail::kLeftWallIndex, detail::kRightWallIndex,
-                         detail::kAlphaLowIndex, detail::kAlphaHighIndex,
-                         detail::kStickIndex,    detail::kForceBoundIndex,
+  problem.constraints = {detail::kLeftWallIndex,  detail::kRightWallIndex, detail::kAlphaLowIndex,
+                         detail::kAlphaHighIndex, detail::kStickIndex,     detail::kForceBoundIndex,
                          detail::kSeparationIndex};
   if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
   problem.objective_scale = params.T0;
@@ -227,11 +227,11 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
         active.empty() ? "none" : active, nlopt_message.empty() ? "" : "; ", nlopt_message);
   } else {
     result.status = OptimizeStatus::kNoValidOrbit;
-    result.message = fmt::format(
-        "no valid {}gait found with A + c <= {:g}{}{}; nearest to valid violates {}",
-        options.stable ? "stable " : "", bound, nlopt_message.empty() ? "" : " (",
-        nlopt_message.empty() ? "" : nlopt_message + ")",
-        detail::DescribeViolations(best, problem.setup));
+    result.message =
+        fmt::format("no valid {}gait found with A + c <= {:g}{}{}; nearest to valid violates {}",
+                    options.stable ? "stable " : "", bound, nlopt_message.empty() ? "" : " (",
+                    nlopt_message.empty() ? "" : nlopt_message + ")",
+                    detail::DescribeViolations(best, problem.setup));
   }
   return result;
 }

@@ -53,9 +53,9 @@ Forcing ImpactFrame(const Forcing& f) {
 }  // namespace
 
 void FourierOptions::Validate() const {
-  Require(harmonics >= 1 && harmonics <= kMaxHarmonics,
-          fmt::format("harmonics K = {} is invalid: expected 1 <= K <= {}", harmonics,
-                      kMaxHarmonics));
+  Require(
+      harmonics >= 1 && harmonics <= kMaxHarmonics,
+      fmt::format("harmonics K = {} is invalid: expected 1 <= K <= {}", harmonics, kMaxHarmonics));
   Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
           fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
                       force_bound));
@@ -66,8 +66,9 @@ void FourierOptions::Validate() const {
   Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
-  Require(local_evaluations >= 10,
-          fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
+  Require(
+      local_evaluations >= 10,
+      fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
   Require(global_evaluations >= 10, fmt::format("global_evaluations = {} is invalid: expected "
                                                 "at least 10",
                                                 global_evaluations));
@@ -86,8 +87,8 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
                       "above the friction bound moves the capsule without impacts, MODEL.md "
                       "section 6)",
                       bound, params.T0));
-  const nlopt::algorithm local = detail::AlgorithmFromName(
-      options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  const nlopt::algorithm local =
+      detail::AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
   const int K = options.harmonics;
 
   // The P2 optimum at the same bound: the baseline and the first start.
@@ -112,9 +113,8 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     return Forcing::Fourier(y[0] * bound, a, b, 0.0);
   };
   problem.setup = {params, bound, options.stable, options.rho_max};
-  problem.constraints = {detail::kLeftWallIndex, detail::kRightWallIndex,
-                         detail::kAlphaLowIndex, detail::kAlphaHighIndex,
-                         detail::kStickIndex,    detail::kForceBoundIndex,
+  problem.constraints = {detail::kLeftWallIndex,  detail::kRightWallIndex, detail::kAlphaLowIndex,
+                         detail::kAlphaHighIndex, detail::kStickIndex,     detail::kForceBoundIndex,
                          detail::kSeparationIndex};
   if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
   problem.objective_scale = params.T0;
@@ -204,10 +204,10 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
         nlopt_message.empty() ? "" : "; " + nlopt_message);
   } else {
     result.status = OptimizeStatus::kNoValidOrbit;
-    result.message = fmt::format("no valid {}gait found with {} harmonics and max |F| <= {:g}; "
-                                 "nearest to valid violates {}",
-                                 options.stable ? "stable " : "", K, bound,
-                                 detail::DescribeViolations(best, problem.setup));
+    result.message = fmt::format(
+        "no valid {}gait found with {} harmonics and max |F| <= {:g}; "
+        "nearest to valid violates {}",
+        options.stable ? "stable " : "", K, bound, detail::DescribeViolations(best, problem.setup));
   }
   return result;
 }

@@ -49,8 +49,7 @@ class PhaseSearch {
 
   // Edge of the valid arc between `in_phase` (in the arc) and `out_phase` by bisection;
   // returns the valid point nearest to the edge (or the arc-side point if none was valid).
-  detail::Evaluation Edge(double in_phase, detail::Evaluation in_ev, double out_phase,
-                          double tol) {
+  detail::Evaluation Edge(double in_phase, detail::Evaluation in_ev, double out_phase, double tol) {
     detail::Evaluation valid_ev = in_ev;
     while (std::abs(out_phase - in_phase) > tol) {
       const double mid = 0.5 * (in_phase + out_phase);
@@ -124,8 +123,8 @@ void RequireFiniteAtLeast(const char* name, double value, double least, const ch
 
 void PhaseOptions::Validate() const {
   if (scan_points < kMinScanPoints) {
-    throw std::invalid_argument(fmt::format(
-        "scan_points = {} is invalid: expected at least {}", scan_points, kMinScanPoints));
+    throw std::invalid_argument(fmt::format("scan_points = {} is invalid: expected at least {}",
+                                            scan_points, kMinScanPoints));
   }
   if (!(std::isfinite(phase_tol) && phase_tol > 0.0)) {
     throw std::invalid_argument(
@@ -178,8 +177,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
       const int j = next(i);
       if (arc[i] == arc[j]) continue;
       const int v = arc[i] ? i : j, w = arc[i] ? j : i;
-      detail::Evaluation edge =
-          search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol);
+      detail::Evaluation edge = search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol);
       const double edge_phase = edge.solution.orbit.forcing.phi0();
       (v == i ? hi_edge[v] : lo_edge[v]) = edge_phase;
       if (detail::Better(edge, winner)) winner = std::move(edge);

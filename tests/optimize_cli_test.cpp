@@ -53,9 +53,9 @@ TEST(OptimizeCli, ForcingJsonHasEveryDocumentedKey) {
   const auto r = RunCli("optimize --problem forcing --T0 0.1 --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"status", "I", "v_mean", "A", "c", "phi0", "phi1", "alpha", "u",
-                          "v_plus", "x_min", "x_max", "active_constraints", "evaluations",
-                          "algorithm", "spectral_radius"}) {
+  for (const char* key :
+       {"status", "I", "v_mean", "A", "c", "phi0", "phi1", "alpha", "u", "v_plus", "x_min", "x_max",
+        "active_constraints", "evaluations", "algorithm", "spectral_radius"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["status"], "ok");

@@ -2,6 +2,8 @@
 // References: random valid samples and re-checks through Solve (the `solve` code path), the
 // scaling law of MODEL.md section 6, and the event-driven simulator.
 
+#include "capsubot/optimize_forcing.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/optimize_forcing.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
@@ -42,8 +43,8 @@ struct DesignCase {
 };
 
 std::ostream& operator<<(std::ostream& os, const DesignCase& k) {
-  return os << "T0=" << k.T0 << " e=" << k.e << " margin=" << k.margin
-            << " bound=" << k.bound_ratio << "*T0 stable=" << k.stable;
+  return os << "T0=" << k.T0 << " e=" << k.e << " margin=" << k.margin << " bound=" << k.bound_ratio
+            << "*T0 stable=" << k.stable;
 }
 
 ForcingDesignOptions OptionsFor(const DesignCase& k) {
@@ -186,8 +187,8 @@ TEST_P(LocalAlgorithm, AgreesWithTheDefaultOnTheOptimum) {
   const OptimizeResult reference = OptimizeForcing(params);
   ASSERT_TRUE(r.found()) << r.message;
   EXPECT_NE(r.algorithm.find(GetParam()), std::string::npos) << r.algorithm;
-  EXPECT_TRUE(testing::RelNear(r.solution.orbit.I, reference.solution.orbit.I,
-                               kAlgorithmAgreementTol));
+  EXPECT_TRUE(
+      testing::RelNear(r.solution.orbit.I, reference.solution.orbit.I, kAlgorithmAgreementTol));
 }
 
 INSTANTIATE_TEST_SUITE_P(Names, LocalAlgorithm, ::testing::ValuesIn(LocalAlgorithmNames()));

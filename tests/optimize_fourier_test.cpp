@@ -1,6 +1,8 @@
 // P3 (OptimizeFourier): the fastest K-harmonic force, MODEL.md section 7. References: the P2
 // optimum (the K = 1 member of the family), Solve on the rebuilt force, the simulator.
 
+#include "capsubot/optimize_fourier.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <vector>
 
 #include "capsubot/optimize_forcing.hpp"
-#include "capsubot/optimize_fourier.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
 #include "test_utils.hpp"

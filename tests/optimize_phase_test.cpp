@@ -1,13 +1,14 @@
 // P1 (OptimizePhase): the best impact phase for a given force shape, MODEL.md section 7.
 // References come from an independent dense scan of phi0 through Solve (the `solve` code path).
 
+#include "capsubot/optimize_phase.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "capsubot/optimize_phase.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 #include "test_utils.hpp"
@@ -82,13 +83,11 @@ TEST_P(PhaseOptimum, IsValidWhenRecheckedThroughSolve) {
 }
 
 // Cases: the paper's shape c = A = T0/2 at a T0 where it fits, other ratios, e < 1, a margin.
-INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOptimum,
-                         ::testing::Values(PhaseCase{0.5, 0.5, 0.02, 1.0, 0.0},
-                                           PhaseCase{0.5, 0.5, 0.1, 1.0, 0.0},
-                                           PhaseCase{0.3, 0.1, 1.0, 1.0, 0.0},
-                                           PhaseCase{0.6, 0.3, 0.05, 1.0, 0.1},
-                                           PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0},
-                                           PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0}));
+INSTANTIATE_TEST_SUITE_P(
+    Shapes, PhaseOptimum,
+    ::testing::Values(PhaseCase{0.5, 0.5, 0.02, 1.0, 0.0}, PhaseCase{0.5, 0.5, 0.1, 1.0, 0.0},
+                      PhaseCase{0.3, 0.1, 1.0, 1.0, 0.0}, PhaseCase{0.6, 0.3, 0.05, 1.0, 0.1},
+                      PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0}, PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0}));
 
 TEST(OptimizePhase, PaperExampleAtT0OneHasNoValidOrbitAndSaysWhy) {
   // MODEL.md section 6: c = A = T0/2 violates the left-wall condition at T0 = 1.

@@ -13,15 +13,24 @@ namespace capsubot::detail {
 const char* ConstraintName(int index) {
   namespace n = constraint_names;
   switch (index) {
-    case kLeftWallIndex: return n::kLeftWall;
-    case kRightWallIndex: return n::kRightWall;
-    case kAlphaLowIndex: return n::kMassRatioLow;
-    case kAlphaHighIndex: return n::kMassRatioHigh;
-    case kStickIndex: return n::kStick;
-    case kForceBoundIndex: return n::kForceBound;
-    case kSeparationIndex: return n::kSeparation;
-    case kStabilityIndex: return n::kStability;
-    default: return "unknown";
+    case kLeftWallIndex:
+      return n::kLeftWall;
+    case kRightWallIndex:
+      return n::kRightWall;
+    case kAlphaLowIndex:
+      return n::kMassRatioLow;
+    case kAlphaHighIndex:
+      return n::kMassRatioHigh;
+    case kStickIndex:
+      return n::kStick;
+    case kForceBoundIndex:
+      return n::kForceBound;
+    case kSeparationIndex:
+      return n::kSeparation;
+    case kStabilityIndex:
+      return n::kStability;
+    default:
+      return "unknown";
   }
 }
 
@@ -52,8 +61,8 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup) {
   }
   ev.violation = 0.0;
   for (double g : ev.g) ev.violation += std::max(g, 0.0);
-  ev.valid = v.valid() && ev.g[kForceBoundIndex] <= 0.0 &&
-             (!setup.stable || ev.g[kStabilityIndex] <= 0.0);
+  ev.valid =
+      v.valid() && ev.g[kForceBoundIndex] <= 0.0 && (!setup.stable || ev.g[kStabilityIndex] <= 0.0);
   // CheckValidity and the g_i agree on the orbit conditions; a valid orbit has no violation.
   if (ev.valid) ev.violation = 0.0;
   return ev;
@@ -100,8 +109,8 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
         add(fmt::format("right_wall (x_max = {:.6g} > 1)", v.x_max));
         break;
       case Condition::kClearance:
-        add(fmt::format("clearance (x_min = {:.6g}, x_max = {:.6g}, margin {:g})", v.x_min,
-                        v.x_max, setup.params.margin));
+        add(fmt::format("clearance (x_min = {:.6g}, x_max = {:.6g}, margin {:g})", v.x_min, v.x_max,
+                        setup.params.margin));
         break;
       case Condition::kStick:
         add(fmt::format("stick (max |F| at rest = {:.6g} > T0 = {:g})", v.rest_force,

@@ -18,14 +18,14 @@
 namespace capsubot::detail {
 
 enum ConstraintIndex {
-  kLeftWallIndex,      ///< margin - x_min                       (units of L)
-  kRightWallIndex,     ///< x_max - (1 - margin); -1 without an interior maximum
-  kAlphaLowIndex,      ///< -alpha
-  kAlphaHighIndex,     ///< alpha - 1
-  kStickIndex,         ///< (max |F| on [phi1, tau] - T0) / T0
-  kForceBoundIndex,    ///< (max |F| - force_bound) / T0
-  kSeparationIndex,    ///< -e u for e > 0; x''(0+) for e = 0
-  kStabilityIndex,     ///< spectral radius - rho_max (0 when stability is not required)
+  kLeftWallIndex,    ///< margin - x_min                       (units of L)
+  kRightWallIndex,   ///< x_max - (1 - margin); -1 without an interior maximum
+  kAlphaLowIndex,    ///< -alpha
+  kAlphaHighIndex,   ///< alpha - 1
+  kStickIndex,       ///< (max |F| on [phi1, tau] - T0) / T0
+  kForceBoundIndex,  ///< (max |F| - force_bound) / T0
+  kSeparationIndex,  ///< -e u for e > 0; x''(0+) for e = 0
+  kStabilityIndex,   ///< spectral radius - rho_max (0 when stability is not required)
   kConstraintCount,
 };
 
@@ -37,9 +37,9 @@ const char* ConstraintName(int index);
 
 /// What the constraints are measured against.
 struct ConstraintSetup {
-  Params params;          ///< T0, e, margin
-  double force_bound;     ///< bound on max |F|
-  bool stable = false;    ///< require spectral radius <= rho_max
+  Params params;        ///< T0, e, margin
+  double force_bound;   ///< bound on max |F|
+  bool stable = false;  ///< require spectral radius <= rho_max
   double rho_max = 1.0;
 };
 
@@ -48,7 +48,7 @@ struct Evaluation {
   Solution solution;
   double rho = std::numeric_limits<double>::quiet_NaN();  ///< spectral radius (if computed)
   std::array<double, kConstraintCount> g{};               ///< constraint values, <= 0 holds
-  bool valid = false;       ///< every condition of section 5 holds (and stability if asked)
+  bool valid = false;  ///< every condition of section 5 holds (and stability if asked)
   double violation = std::numeric_limits<double>::infinity();  ///< sum of max(g_i, 0)
   /// I if the orbit exists, else -infinity (so any orbit is better than none).
   double I = -std::numeric_limits<double>::infinity();

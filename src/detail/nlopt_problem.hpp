@@ -3,9 +3,8 @@
 // of nlopt_constraints.hpp, evaluated once per point (a cache serves the objective and the
 // constraint call at the same x), gradients by central differences for LD_* algorithms.
 
-#include <nlopt.hpp>
-
 #include <functional>
+#include <nlopt.hpp>
 #include <string>
 #include <vector>
 
@@ -16,12 +15,12 @@ namespace capsubot::detail {
 
 /// The problem in scaled variables y (each of order 1).
 struct Problem {
-  int n = 0;                                       ///< number of variables
-  std::vector<double> lower, upper;                ///< bounds on y
-  std::function<Forcing(const double* y)> build;   ///< the force at y
-  ConstraintSetup setup;                           ///< T0, e, margin, force bound, stability
-  std::vector<int> constraints;                    ///< ConstraintIndex values given to NLopt
-  double objective_scale = 1.0;                    ///< NLopt maximises I / objective_scale
+  int n = 0;                                      ///< number of variables
+  std::vector<double> lower, upper;               ///< bounds on y
+  std::function<Forcing(const double* y)> build;  ///< the force at y
+  ConstraintSetup setup;                          ///< T0, e, margin, force bound, stability
+  std::vector<int> constraints;                   ///< ConstraintIndex values given to NLopt
+  double objective_scale = 1.0;                   ///< NLopt maximises I / objective_scale
   /// If set, replaces g[kForceBoundIndex] (e.g. the linear (A + c - bound)/T0 of P2).
   std::function<double(const double* y)> force_bound;
 };
@@ -37,8 +36,8 @@ struct Tracker {
 /// Outcome of one NLopt run.
 struct RunResult {
   OptimizeStatus status = OptimizeStatus::kNotRun;
-  std::string message;     ///< set when NLopt threw
-  std::vector<double> y;   ///< NLopt's final point
+  std::string message;    ///< set when NLopt threw
+  std::vector<double> y;  ///< NLopt's final point
 };
 
 /// Evaluates the problem at y (counted in the tracker, offered to it).

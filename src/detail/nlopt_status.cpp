@@ -13,15 +13,24 @@ OptimizeStatus StatusFromNlopt(nlopt::result result) {
     case nlopt::SUCCESS:
     case nlopt::STOPVAL_REACHED:
     case nlopt::FTOL_REACHED:
-    case nlopt::XTOL_REACHED: return OptimizeStatus::kOk;
-    case nlopt::MAXEVAL_REACHED: return OptimizeStatus::kMaxEvaluations;
-    case nlopt::MAXTIME_REACHED: return OptimizeStatus::kMaxTime;
-    case nlopt::ROUNDOFF_LIMITED: return OptimizeStatus::kRoundoffLimited;
-    case nlopt::FORCED_STOP: return OptimizeStatus::kForcedStop;
-    case nlopt::INVALID_ARGS: return OptimizeStatus::kInvalidArguments;
-    case nlopt::OUT_OF_MEMORY: return OptimizeStatus::kOutOfMemory;
-    case nlopt::FAILURE: return OptimizeStatus::kFailure;
-    default: return OptimizeStatus::kFailure;
+    case nlopt::XTOL_REACHED:
+      return OptimizeStatus::kOk;
+    case nlopt::MAXEVAL_REACHED:
+      return OptimizeStatus::kMaxEvaluations;
+    case nlopt::MAXTIME_REACHED:
+      return OptimizeStatus::kMaxTime;
+    case nlopt::ROUNDOFF_LIMITED:
+      return OptimizeStatus::kRoundoffLimited;
+    case nlopt::FORCED_STOP:
+      return OptimizeStatus::kForcedStop;
+    case nlopt::INVALID_ARGS:
+      return OptimizeStatus::kInvalidArguments;
+    case nlopt::OUT_OF_MEMORY:
+      return OptimizeStatus::kOutOfMemory;
+    case nlopt::FAILURE:
+      return OptimizeStatus::kFailure;
+    default:
+      return OptimizeStatus::kFailure;
   }
 }
 
@@ -59,7 +68,8 @@ nlopt::algorithm AlgorithmFromName(const std::string& name, const std::vector<st
               : ""));
   }
   const int a = nlopt_algorithm_from_string(name.c_str());
-  if (a < 0) throw std::invalid_argument(fmt::format("{} = \"{}\" is not an NLopt name", option, name));
+  if (a < 0)
+    throw std::invalid_argument(fmt::format("{} = \"{}\" is not an NLopt name", option, name));
   return static_cast<nlopt::algorithm>(a);
 }
 

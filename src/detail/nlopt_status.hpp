@@ -4,7 +4,6 @@
 // std::runtime_error) mapped to an OptimizeStatus; algorithm names checked against our lists.
 
 #include <nlopt.hpp>
-
 #include <string>
 #include <vector>
 

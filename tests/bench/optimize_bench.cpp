@@ -45,8 +45,8 @@ BENCHMARK(BM_OptimizePhase)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 double ReferenceI(const Params& params, bool stable) {
   static std::map<std::pair<std::pair<double, double>, std::pair<double, bool>>, double> cache;
-  const auto key = std::make_pair(std::make_pair(params.T0, params.e),
-                                  std::make_pair(params.margin, stable));
+  const auto key =
+      std::make_pair(std::make_pair(params.T0, params.e), std::make_pair(params.margin, stable));
   if (cache.count(key) == 0) {
     double best = -HUGE_VAL;
     for (const char* local : {"LN_COBYLA", "LD_SLSQP"}) {
