@@ -11,6 +11,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -28,6 +29,8 @@ constexpr int kMaxBrentIterations = 100;
 // stick test max |F| <= T0 when A + c = T0 exactly): it does not end a valid arc, yet it is
 // never returned, since the result must be valid through Solve.
 constexpr double kRoundoffViolation = 1e-12;
+// Local minima of the constraint violation searched for arcs narrower than the scan.
+constexpr int kMaxHiddenArcs = 16;
 // Steps tried around a polished optimum that is invalid by round-off only.
 constexpr int kNudges = 8;
 
@@ -65,43 +68,78 @@ class PhaseSearch {
     return valid_ev;
   }
 
-  // Maximises I on [lo, hi] around `mid` (I(mid) >= I at both ends) with GSL's Brent
-  // minimiser on -I; returns the polished point, or nothing better than `best` if it fails.
-  bool Polish(double lo, double mid, double hi, double tol, detail::Evaluation& best) {
+  // Minimum of f on [lo, hi] by GSL's Brent minimiser, started at `mid` where f is below both
+  // ends; NaN if that does not hold or GSL fails.
+  double BrentMinimum(double (*f)(double, void*), double lo, double mid, double hi, double tol) {
     if (!minimizer_) {
       // Once per process (thread-safe static initialisation): GSL must report, not abort.
       static const bool handler_off = (gsl_set_error_handler_off(), true);
       (void)handler_off;
       minimizer_.reset(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
-      if (!minimizer_) return false;
+      if (!minimizer_) return NAN;
     }
-    auto minus_I = [](double phi0, void* self) {
-      auto* s = static_cast<PhaseSearch*>(self);
-      const detail::Evaluation ev = s->At(phi0);
-      // Where no orbit exists, -I is undefined: a large value keeps Brent away from it.
-      return ev.solution.orbit.ok() ? -ev.I : 1e300;
-    };
-    gsl_function fn{minus_I, this};
-    const double f_lo = minus_I(lo, this), f_mid = minus_I(mid, this), f_hi = minus_I(hi, this);
-    if (!(f_mid < f_lo && f_mid < f_hi)) return false;  // a plateau or an edge maximum
+    gsl_function fn{f, this};
+    const double f_lo = f(lo, this), f_mid = f(mid, this), f_hi = f(hi, this);
+    if (!(f_mid < f_lo && f_mid < f_hi)) return NAN;  // a plateau or a minimum at an end
     gsl_min_fminimizer* m = minimizer_.get();
     if (gsl_min_fminimizer_set_with_values(m, &fn, mid, f_mid, lo, f_lo, hi, f_hi) != GSL_SUCCESS)
-      return false;
+      return NAN;
     for (int it = 0; it < kMaxBrentIterations; ++it) {
       if (gsl_min_fminimizer_iterate(m) != GSL_SUCCESS) break;
       const double a = gsl_min_fminimizer_x_lower(m), b = gsl_min_fminimizer_x_upper(m);
       if (gsl_min_test_interval(a, b, tol, 0.0) == GSL_SUCCESS) break;
     }
-    const double x = gsl_min_fminimizer_x_minimum(m);
+    return gsl_min_fminimizer_x_minimum(m);
+  }
+
+  // The point at x, or a valid one within a few tol of it if x is invalid by round-off only.
+  detail::Evaluation ValidNear(double x, double tol) {
     detail::Evaluation ev = At(x);
     for (int k = 1; k <= kNudges && !ev.valid && InArc(ev); ++k) {
       ev = At(x + (k % 2 == 0 ? 1.0 : -1.0) * ((k + 1) / 2) * tol);
     }
+    return ev;
+  }
+
+  // Maximises I on [lo, hi] around `mid` (I(mid) above I at both ends); replaces `best` if
+  // the polished point is valid and better.
+  bool Polish(double lo, double mid, double hi, double tol, detail::Evaluation& best) {
+    auto minus_I = [](double phi0, void* self) {
+      const detail::Evaluation ev = static_cast<PhaseSearch*>(self)->At(phi0);
+      // Where no orbit exists, -I is undefined: a large value keeps Brent away from it.
+      return ev.solution.orbit.ok() ? -ev.I : 1e300;
+    };
+    const double x = BrentMinimum(minus_I, lo, mid, hi, tol);
+    if (std::isnan(x)) return false;
+    detail::Evaluation ev = ValidNear(x, tol);
     if (ev.valid && ev.I > best.I) {
       best = std::move(ev);
       return true;
     }
     return false;
+  }
+
+  // Looks for a valid arc narrower than the scan between lo and hi, around `mid` where the
+  // constraint violation has a local minimum: minimises the violation (Brent); if that
+  // reaches a valid point, bisects the arc's two edges. Offers every valid point to `best`.
+  void HiddenArc(double lo, double mid, double hi, double tol, detail::Evaluation& best) {
+    auto violation = [](double phi0, void* self) {
+      return static_cast<PhaseSearch*>(self)->At(phi0).violation;
+    };
+    const double x = BrentMinimum(violation, lo, mid, hi, tol);
+    if (std::isnan(x)) return;
+    detail::Evaluation inside = ValidNear(x, tol);
+    if (!InArc(inside)) {
+      // No arc (or one narrower than the tolerance): still the point nearest to validity.
+      if (detail::Better(inside, best)) best = std::move(inside);
+      return;
+    }
+    const double in = inside.solution.orbit.forcing.phi0();
+    for (double out : {lo, hi}) {
+      detail::Evaluation edge = Edge(in, inside, out, tol);
+      if (detail::Better(edge, best)) best = std::move(edge);
+    }
+    if (detail::Better(inside, best)) best = std::move(inside);
   }
 
   int evaluations() const { return evaluations_; }
@@ -159,14 +197,34 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   OptimizeResult result;
   result.algorithm = fmt::format("scan{}+bisection+brent", n);
   detail::Evaluation winner = scan[best];
+  auto next = [n](int i) { return (i + 1) % n; };
+  auto prev = [n](int i) { return (i + n - 1) % n; };
+  // The phase of scan point j seen from scan point i as a neighbour (unwrapped by one turn).
+  auto beside = [&](int i, int j) {
+    const double d = phase[j] - phase[i];
+    return d > kPi ? phase[j] - kTau : d < -kPi ? phase[j] + kTau : phase[j];
+  };
+  // Arcs narrower than the scan: among invalid points between invalid neighbours, the local
+  // minima of the violation with an orbit are candidates; the smallest few are searched.
+  {
+    std::vector<int> dips;
+    for (int i = 0; i < n; ++i) {
+      const int a = prev(i), b = next(i);
+      if (arc[i] || arc[a] || arc[b] || !scan[i].solution.orbit.ok()) continue;
+      if (scan[i].violation < scan[a].violation && scan[i].violation < scan[b].violation) {
+        dips.push_back(i);
+      }
+    }
+    const auto by_violation = [&](int i, int j) { return scan[i].violation < scan[j].violation; };
+    if (dips.size() > static_cast<std::size_t>(kMaxHiddenArcs)) {
+      std::partial_sort(dips.begin(), dips.begin() + kMaxHiddenArcs, dips.end(), by_violation);
+      dips.resize(kMaxHiddenArcs);
+    }
+    for (int i : dips) {
+      search.HiddenArc(beside(i, prev(i)), phase[i], beside(i, next(i)), options.phase_tol, winner);
+    }
+  }
   if (valid_count > 0) {
-    auto next = [n](int i) { return (i + 1) % n; };
-    auto prev = [n](int i) { return (i + n - 1) % n; };
-    // The phase of scan point j seen from scan point i as a neighbour (unwrapped by one turn).
-    auto beside = [&](int i, int j) {
-      const double d = phase[j] - phase[i];
-      return d > kPi ? phase[j] - kTau : d < -kPi ? phase[j] + kTau : phase[j];
-    };
     // Arc edges: bisect every validity flip between neighbours, keep the valid side.
     std::vector<double> lo_edge(n), hi_edge(n);  // extent of the valid arc around point i
     for (int i = 0; i < n; ++i) {

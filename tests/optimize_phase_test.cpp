@@ -113,6 +113,22 @@ TEST(OptimizePhase, EdgeOptimumReportsTheGrazedWallAsActive) {
             r.active_constraints.end());
 }
 
+TEST(OptimizePhase, FindsAValidArcNarrowerThanItsScanSpacing) {
+  // c = A = T0/2 at T0 = 0.108: the only valid arc is about 0.12 rad wide (dense scan), far
+  // narrower than the 0.39 rad spacing of a 16-point scan, which sees no valid point; the
+  // search from the local minima of the violation finds it.
+  const Params params{0.108, 1.0, 0.0};
+  const Forcing shape = Forcing::Harmonic(0.054, 0.054, 0.0);
+  const ScanBest scan = DenseScan(shape, params);
+  ASSERT_GT(scan.valid, 0);
+  ASSERT_LT(scan.valid, kDenseScan / 40);  // narrower than tau/40 = 0.157 rad
+  PhaseOptions coarse;
+  coarse.scan_points = 16;
+  const OptimizeResult r = OptimizePhase(shape, params, coarse);
+  ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  EXPECT_GE(r.solution.orbit.I, scan.I - kSameValueTol * std::abs(scan.I));
+}
+
 TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
   // At T0 = 0.3 this shape has stable and unstable valid phases (a scan finds both).
   const Params params{0.3, 1.0, 0.0};
