@@ -122,7 +122,8 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
   detail::Tracker tracker;
   std::vector<Start> starts;
   OptimizeStatus best_status = OptimizeStatus::kOk;
-  std::string nlopt_message;
+  std::string nlopt_message;   // from the local run that produced the best point
+  std::string global_message;  // from an NLopt global stage that threw
   std::string algorithm;
 
   if (multistart) {
@@ -158,10 +159,7 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
                          options.global_evaluations, tracker);
     if (!tracker.best_y.empty()) starts.push_back({tracker.best_y, tracker.best.I});
     if (!run.y.empty() && run.y != tracker.best_y) starts.push_back({run.y, 0.0});
-    if (run.status != OptimizeStatus::kOk && run.status != OptimizeStatus::kMaxEvaluations &&
-        run.status != OptimizeStatus::kMaxTime) {
-      nlopt_message = run.message;
-    }
+    if (!run.message.empty()) global_message = "global stage: " + run.message;
     algorithm = options.global_algorithm + "+" + options.local_algorithm;
   }
 
@@ -208,6 +206,9 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     }
   }
 
+  if (!global_message.empty()) {
+    nlopt_message += (nlopt_message.empty() ? "" : "; ") + global_message;
+  }
   OptimizeResult result;
   result.algorithm = algorithm;
   result.evaluations = tracker.evaluations;

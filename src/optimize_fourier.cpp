@@ -132,7 +132,8 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   }
 
   OptimizeStatus best_status = harmonic.found() ? OptimizeStatus::kOk : harmonic.status;
-  std::string nlopt_message;
+  std::string nlopt_message;   // from the local run that produced the best point
+  std::string global_message;  // from an NLopt global stage that threw
   std::string algorithm;
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, kPerturbation);
@@ -162,7 +163,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     nlopt::srand(options.seed);
     const detail::RunResult run = detail::RunNlopt(global, problem, seed_y, {}, options.rel_tol,
                                                    options.global_evaluations, tracker);
-    if (!run.message.empty()) nlopt_message = run.message;
+    if (!run.message.empty()) global_message = "global stage: " + run.message;
     polish(tracker.best_y);
     algorithm = "P2+" + options.global_algorithm + "+" + options.local_algorithm;
   }
@@ -184,6 +185,9 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     }
   }
 
+  if (!global_message.empty()) {
+    nlopt_message += (nlopt_message.empty() ? "" : "; ") + global_message;
+  }
   OptimizeResult result;
   result.algorithm = algorithm;
   result.evaluations = tracker.evaluations;

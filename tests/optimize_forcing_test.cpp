@@ -206,6 +206,7 @@ TEST_P(GlobalAlgorithm, ReturnsAValidGaitNoBetterThanTheMultistartOptimum) {
   const OptimizeResult reference = OptimizeForcing(params);
   ASSERT_TRUE(r.found()) << r.message;
   EXPECT_NE(r.algorithm.find(GetParam()), std::string::npos) << r.algorithm;
+  EXPECT_EQ(r.message.find("global stage"), std::string::npos) << "NLopt threw: " << r.message;
   EXPECT_LE(r.solution.orbit.I, reference.solution.orbit.I * (1.0 + kAlgorithmAgreementTol));
   EXPECT_TRUE(Solve(r.solution.orbit.forcing, params).validity.valid());
 }

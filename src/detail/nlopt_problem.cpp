@@ -72,12 +72,22 @@ double Objective(unsigned n, const double* y, double* grad, void* data) {
   return ctx->last_f;
 }
 
-void Constraints(unsigned m, double* result, unsigned n, const double* y, double* grad,
-                 void* data) {
-  auto* ctx = static_cast<Context*>(data);
+// One scalar constraint: GN_AGS accepts only scalar constraints (no mconstraint), and the
+// cache makes m scalar calls at the same point cost one evaluation.
+struct ConstraintRef {
+  Context* ctx;
+  unsigned index;
+};
+
+double Constraint(unsigned n, const double* y, double* grad, void* data) {
+  const auto* ref = static_cast<const ConstraintRef*>(data);
+  Context* ctx = ref->ctx;
   ctx->Update(y, grad != nullptr);
-  std::copy(ctx->last_g.begin(), ctx->last_g.begin() + m, result);
-  if (grad != nullptr) std::copy(ctx->grad_g.begin(), ctx->grad_g.begin() + m * n, grad);
+  if (grad != nullptr) {
+    std::copy(ctx->grad_g.begin() + ref->index * n, ctx->grad_g.begin() + (ref->index + 1) * n,
+              grad);
+  }
+  return ctx->last_g[ref->index];
 }
 
 }  // namespace
@@ -117,8 +127,9 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
     opt.set_lower_bounds(problem.lower);
     opt.set_upper_bounds(problem.upper);
     opt.set_max_objective(Objective, &ctx);
-    const std::vector<double> tol(problem.constraints.size(), kConstraintTol);
-    opt.add_inequality_mconstraint(Constraints, &ctx, tol);
+    std::vector<ConstraintRef> refs;
+    for (unsigned i = 0; i < problem.constraints.size(); ++i) refs.push_back({&ctx, i});
+    for (ConstraintRef& ref : refs) opt.add_inequality_constraint(Constraint, &ref, kConstraintTol);
     opt.set_xtol_rel(rel_tol);
     opt.set_ftol_rel(rel_tol);
     opt.set_maxeval(max_evaluations);
