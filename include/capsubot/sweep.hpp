@@ -14,7 +14,8 @@
 //   plain:        <grid parameters>, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid,
 //                 violations [, spectral_radius, stable]
 //   optimize_phi0: <grid parameters>, phi0, phi1, ..., violations [, spectral_radius, stable],
-//                 status        (phi0 is the optimal impact phase; status the optimiser's)
+//                 status        (phi0 is the optimal impact phase; status the optimiser's:
+//                 with no_valid_orbit the row is its point nearest to validity)
 //   alpha grid (robot mode): <grid parameters>, orbits, orbit, phi0, phi1, ..., violations
 //                 [, spectral_radius, stable]: one row per one-impact orbit of the robot
 //                 (orbit = 1..orbits, in increasing phi0); a point with no orbit gets one
