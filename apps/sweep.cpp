@@ -147,7 +147,7 @@ Command AddSweepCommand(CLI::App& app) {
       "required unless phi0 has a --grid, is optimised (--optimize phi0) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt->sweep.params);
-  cmd->add_option("--output,-o", opt->sweep.output, "the CSV file to write (required)")
+  cmd->add_option("--output,-o", opt->sweep.output, "the CSV file to write (required); - writes to standard output (no --resume then)")
       ->required();
   cmd->add_flag("--stability", opt->sweep.stability,
                 "add the columns spectral_radius (of the impact map, MODEL.md section 8) and "

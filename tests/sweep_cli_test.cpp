@@ -152,6 +152,19 @@ TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
 }
 
+TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
+  TempDir dir;
+  const std::string args = "sweep --grid phi0=-pi:pi:7 --grid c=0.1:0.5:3 --A 0.5";
+  ASSERT_EQ(RunCli(args + " -o " + dir.File("a.csv"), dir.File("log1")).status, 0);
+  const int raw = std::system((kCli + " " + args + " -o - > " + dir.File("b.csv")).c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0);
+  EXPECT_EQ(ReadFile(dir.File("b.csv")), ReadFile(dir.File("a.csv")));
+  EXPECT_FALSE(Exists("-.partial"));
+  const Outcome r = RunCli(args + " -o - --resume", dir.File("log2"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--resume with --output - is invalid"), std::string::npos) << r.output;
+}
+
 struct BadCommand {
   const char* args;
   const char* message;  // expected substring of the one-line error

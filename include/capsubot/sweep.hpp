@@ -50,7 +50,8 @@ struct SweepOptions {
   bool optimize_phi0 = false;
   /// Options of that optimisation (OptimizePhase); `phase.stable` maximises over stable orbits.
   PhaseOptions phase;
-  /// The CSV file to write (required).
+  /// The CSV file to write (required); "-" (standard output) or a path that is not a regular
+  /// file (/dev/stdout, a pipe) is written in place, without checkpoint or resume.
   std::string output;
   /// Continue from `<output>.checkpoint` if it exists and belongs to this same sweep.
   bool resume = false;

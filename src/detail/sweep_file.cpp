@@ -61,6 +61,21 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
       checkpoint_(CheckpointPath(output)),
       description_(description),
       checkpoint_seconds_(checkpoint_seconds) {
+  struct stat out {};
+  direct_ = output_ == "-" || (::stat(output_.c_str(), &out) == 0 && !S_ISREG(out.st_mode));
+  if (direct_) {
+    if (resume) {
+      throw std::invalid_argument(fmt::format(
+          "--resume with --output {} is invalid: expected a regular file to resume (standard "
+          "output, pipes and devices are written in place, without checkpoint)",
+          output_));
+    }
+    fd_ = output_ == "-" ? ::dup(STDOUT_FILENO)
+                         : ::open(output_.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) Fail("open", output_);
+    Append(header.data(), header.size(), 0);
+    return;
+  }
   fd_ = ::open(partial_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) Fail("create", partial_);
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -125,6 +140,7 @@ void SweepFile::Append(const char* data, std::size_t size, std::int64_t points) 
   }
   bytes_ += static_cast<std::int64_t>(size);
   points_ += points;
+  if (direct_) return;
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_checkpoint_).count() >= checkpoint_seconds_) {
     Checkpoint();
@@ -132,6 +148,7 @@ void SweepFile::Append(const char* data, std::size_t size, std::int64_t points) 
 }
 
 void SweepFile::Checkpoint() {
+  if (direct_) return;
   // Data first: the checkpoint never claims bytes that are not on disk.
   if (::fsync(fd_) != 0) Fail("sync", partial_);
   const std::string text =
@@ -150,6 +167,11 @@ void SweepFile::Checkpoint() {
 }
 
 void SweepFile::Commit() {
+  if (direct_) {
+    ::close(fd_);
+    fd_ = -1;
+    return;
+  }
   if (::fsync(fd_) != 0) Fail("sync", partial_);
   // Checkpoint first: killed in between, a partial file without checkpoint starts over.
   std::remove(checkpoint_.c_str());

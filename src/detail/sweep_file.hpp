@@ -1,7 +1,8 @@
 #pragma once
 // The file a sweep is written to: `<output>.partial`, locked while in use, with a checkpoint
 // `<output>.checkpoint` recording how many grid points (and bytes) are complete, renamed to
-// `<output>` when the sweep is done.
+// `<output>` when the sweep is done. An output that is "-" (stdout) or not a regular file
+// (/dev/stdout, a pipe) is written in place, without partial file or checkpoint (as AtomicFile).
 
 #include <chrono>
 #include <cstddef>
@@ -15,7 +16,8 @@ class SweepFile {
   /// Opens (and locks) the partial file. With `resume` and a checkpoint whose description is
   /// `description`, continues after its last complete point; otherwise starts a new file with
   /// `header`. Throws std::invalid_argument for a checkpoint of another sweep, IoError for a
-  /// file that cannot be used (including one locked by another running sweep).
+  /// file that cannot be used (including one locked by another running sweep). `resume` with
+  /// an output written in place is a std::invalid_argument.
   SweepFile(const std::string& output, const std::string& description, const std::string& header,
             bool resume, double checkpoint_seconds);
   ~SweepFile();  ///< closes the partial file, which stays for a later resume
@@ -40,6 +42,7 @@ class SweepFile {
 
   std::string output_, partial_, checkpoint_, description_;
   int fd_ = -1;
+  bool direct_ = false;  // written in place: no partial file, no checkpoint
   std::int64_t points_ = 0;  // complete points written
   std::int64_t bytes_ = 0;   // bytes written
   double checkpoint_seconds_ = 0.5;
