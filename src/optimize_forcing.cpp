@@ -38,6 +38,9 @@ constexpr double kMinGridForce = 1e-3;
 constexpr int kCellPhases = 72;
 // Size of the random hops: relative change of A and c, change of phi0 [rad] (one sigma).
 constexpr double kHopSize = 0.2;
+// Phase scan of P1 inside the phase-exact polish, and its initial step (fraction of s, r).
+constexpr int kNestedPhaseScan = 180;
+constexpr double kNestedStep = 0.05;
 // Phase scan of the final P1 polish.
 constexpr int kFinalPhaseScan = 720;
 
@@ -49,6 +52,31 @@ struct Start {
   std::vector<double> y;
   double I;
 };
+
+// The phase-exact polish: J(s, r) = the P1 optimum (best valid phase) of the force with
+// A + c = s bound and c/(A + c) = r, maximised by LN_SBPLX over the box (0, 1]^2. Validity is
+// enforced exactly inside P1 (arc edges bisected), the force bound by the box: no penalty.
+// It moves along the thin kinked ridges that stall the 3-D constrained polish when a margin
+// or e < 1 makes the clearance condition jump.
+struct NestedContext {
+  const detail::Problem* problem;
+  detail::Tracker* tracker;
+  PhaseOptions phase;
+  double bound;
+};
+
+double PhaseExactObjective(unsigned, const double* sr, double*, void* data) {
+  auto* ctx = static_cast<NestedContext*>(data);
+  const double A = sr[0] * (1.0 - sr[1]) * ctx->bound, c = sr[0] * sr[1] * ctx->bound;
+  if (!(c > 0.0)) return 0.0;
+  const OptimizeResult p1 =
+      OptimizePhase(Forcing::Harmonic(A, c, 0.0), ctx->problem->setup.params, ctx->phase);
+  ctx->tracker->evaluations += p1.evaluations;
+  if (!p1.found()) return 0.0;  // no valid phase: below every valid gait (I > 0)
+  const double y[3] = {A / ctx->bound, c / ctx->bound, p1.solution.orbit.forcing.phi0()};
+  const detail::Evaluation ev = detail::EvaluateAt(*ctx->problem, y, *ctx->tracker);
+  return ev.valid ? ev.I / ctx->problem->objective_scale : 0.0;
+}
 
 }  // namespace
 
@@ -71,6 +99,9 @@ void ForcingDesignOptions::Validate() const {
   Require(grid >= 2, fmt::format("grid = {} is invalid: expected grid >= 2", grid));
   Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
   Require(hops >= 0, fmt::format("hops = {} is invalid: expected hops >= 0", hops));
+  Require(phase_exact_evaluations >= 0,
+          fmt::format("phase_exact_evaluations = {} is invalid: expected >= 0",
+                      phase_exact_evaluations));
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
   Require(
@@ -189,6 +220,38 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     polish(y0);
   }
   if (options.hops > 0) algorithm += fmt::format(", {} hops", options.hops);
+
+  if (options.phase_exact_evaluations > 0 && tracker.best.valid) {
+    const Forcing& f = tracker.best.solution.orbit.forcing;
+    const double total = (f.amplitude() + f.mean()) / bound;
+    std::vector<double> sr = {std::min(total, 1.0), f.mean() / (f.amplitude() + f.mean())};
+    NestedContext ctx{&problem, &tracker, PhaseOptions{}, bound};
+    ctx.phase.scan_points = kNestedPhaseScan;
+    ctx.phase.stable = options.stable;
+    ctx.phase.rho_max = options.rho_max;
+    const double before = tracker.best.I;
+    OptimizeStatus status = OptimizeStatus::kOk;
+    std::string message;
+    try {
+      nlopt::opt opt(nlopt::LN_SBPLX, 2);
+      opt.set_lower_bounds({kMinMeanFraction, kMinMeanFraction});
+      opt.set_upper_bounds({1.0, 1.0});
+      opt.set_max_objective(PhaseExactObjective, &ctx);
+      opt.set_xtol_rel(options.rel_tol);
+      opt.set_ftol_rel(options.rel_tol);
+      opt.set_maxeval(options.phase_exact_evaluations);
+      opt.set_initial_step({kNestedStep * sr[0], kNestedStep * std::min(sr[1], 1.0 - sr[1])});
+      double value = 0.0;
+      status = detail::StatusFromNlopt(opt.optimize(sr, value));
+    } catch (...) {
+      status = detail::StatusFromCurrentException(message);
+    }
+    if (tracker.best.I > before) {
+      best_status = status;
+      nlopt_message = message;
+    }
+    algorithm += fmt::format(", phase-exact LN_SBPLX");
+  }
 
   // Final phase polish (P1) at the best (A, c): a point valid through Solve itself.
   detail::Evaluation best = tracker.best;

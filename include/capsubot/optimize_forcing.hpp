@@ -33,6 +33,9 @@ struct ForcingDesignOptions {
   /// Basin-hopping restarts after the starts: local polishes from random perturbations of
   /// the best point so far (A and c by about 20 %, phi0 by about 0.2 rad); >= 0.
   int hops = 20;
+  /// Evaluations (P1 runs) of the final phase-exact polish: LN_SBPLX over (A + c, c/(A + c))
+  /// of the best valid phase (P1) at each point; 0 switches it off; >= 0.
+  int phase_exact_evaluations = 600;
   /// Relative tolerance of the local polish on the variables and on I; > 0.
   double rel_tol = 1e-10;
   /// Evaluation budget of each local polish; >= 10.
