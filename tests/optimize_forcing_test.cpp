@@ -117,7 +117,9 @@ INSTANTIATE_TEST_SUITE_P(Designs, ForcingOptimum,
                          ::testing::Values(DesignCase{1.0, 1.0, 0.0, 1.0, false},
                                            DesignCase{1.0, 1.0, 0.0, 1.0, true},
                                            DesignCase{0.1, 1.0, 0.0, 1.0, false},
-                                           DesignCase{0.3, 0.6, 0.05, 0.8, false}));
+                                           DesignCase{0.3, 0.6, 0.05, 0.8, false},
+                                           // Rugged: the clearance condition jumps.
+                                           DesignCase{1.0, 0.2, 0.1, 1.0, false}));
 
 TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   // MODEL.md section 6: A, c, T0 -> k A, k c, k T0 keeps phi1, alpha and the right-wall,
