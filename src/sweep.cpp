@@ -81,7 +81,11 @@ void SweepOptions::Validate() const {
 
 std::vector<std::string> SweepColumns(const SweepOptions& o) {
   std::vector<std::string> columns;
-  for (const GridAxis& axis : o.grid.axes) columns.emplace_back(SweepParameterName(axis.parameter));
+  for (const GridAxis& axis : o.grid.axes) {
+    // In robot mode the computed alpha has its own column: the grid's is the robot's.
+    const bool robot = axis.parameter == SweepParameter::kalpha;
+    columns.emplace_back(robot ? "robot_alpha" : SweepParameterName(axis.parameter));
+  }
   if (o.grid.Has(SweepParameter::kalpha)) {
     columns.emplace_back("orbits");
     columns.emplace_back("orbit");

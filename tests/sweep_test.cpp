@@ -111,7 +111,7 @@ TEST(SweepColumns, FollowTheDocumentedLayout) {
   o.stability = false;
   o.grid.axes = {ParseGridAxis("alpha=0.1:0.9:2")};
   EXPECT_EQ(detail::SweepHeaderLine(o),
-            "alpha,orbits,orbit,phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,"
+            "robot_alpha,orbits,orbit,phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,"
             "violations\n");
 }
 
