@@ -25,9 +25,9 @@ namespace {
 constexpr double kPi = kTau / 2.0;
 constexpr int kMinScanPoints = 16;
 constexpr int kMaxBrentIterations = 100;
-// A point whose constraint violation is at most this is invalid by round-off only (e.g. the
-// stick test max |F| <= T0 when A + c = T0 exactly): it does not end a valid arc, yet it is
-// never returned, since the result must be valid through Solve.
+// A point whose constraint violation is at most this is invalid by round-off only (e.g. an
+// orbit grazing a wall in the last bit): it does not end a valid arc, yet it is never
+// returned, since the result must be valid through Solve.
 constexpr double kRoundoffViolation = 1e-12;
 // Local minima of the constraint violation searched for arcs narrower than the scan.
 constexpr int kMaxHiddenArcs = 16;

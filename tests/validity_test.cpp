@@ -124,6 +124,20 @@ TEST(Validity, MotorStrongerThanFrictionIsReported) {
   EXPECT_TRUE(Near(s.validity.max_force, 1.2, 1e-15));
 }
 
+TEST(Validity, ForceExactlyAtTheFrictionBoundHolds) {
+  // A + c = T0 (the boundary of the paper's A + c < T0): max |F| = T0 touches the bound, it
+  // does not exceed it, at every impact phase (the extremum is evaluated with rounding).
+  // c = T0 - A is how the optimiser puts a force on its bound.
+  const Params params = MakeParams(0.1, 1.0);
+  for (double A = 0.005; A < 0.1; A += 0.005) {
+    for (double phi0 = -3.1; phi0 < 3.2; phi0 += 0.1) {
+      const Solution s = Solve(Forcing::Harmonic(A, params.T0 - A, phi0), params);
+      EXPECT_FALSE(s.validity.violated(Condition::kForceBelowFriction)) << "A = " << A;
+      EXPECT_FALSE(s.validity.violated(Condition::kStick)) << "A = " << A << " phi0 " << phi0;
+    }
+  }
+}
+
 TEST(Validity, CapsuleThatCannotStickIsReported) {
   // F reaches 1.35 > T0 = 1 in the rest phase (the maximum of F lies after phi1 here).
   const Solution s = Solve(Forcing::Harmonic(1.3, 0.05, -3.1), Params{});
