@@ -1,6 +1,8 @@
 // capsubot sweep: the orbit, its validity (and stability, or the best phase) over a 1-D or 2-D
 // grid of parameters, to a CSV file (library: capsubot/sweep.hpp).
 
+#include "capsubot/sweep.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -12,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/sweep.hpp"
 #include "commands.hpp"
 
 namespace capsubot::app {
@@ -87,17 +88,18 @@ int Run(SweepCliOptions& opt) {
     s.forcing = Forcing::Harmonic(0.0, opt.forcing.c,
                                   opt.forcing.phi0_option->count() > 0 ? opt.forcing.phi0 : 0.0);
     if (!phase_given_elsewhere && opt.forcing.phi0_option->count() == 0) {
-      throw std::invalid_argument("option --phi0 is missing: give the impact phase phi0 [rad] "
-                                  "(or --grid phi0=..., --grid alpha=..., --optimize phi0)");
+      throw std::invalid_argument(
+          "option --phi0 is missing: give the impact phase phi0 [rad] "
+          "(or --grid phi0=..., --grid alpha=..., --optimize phi0)");
     }
   } else {
     s.forcing = opt.forcing.Build(!phase_given_elsewhere);
   }
   if (s.optimize_phi0 || g.Has(SweepParameter::kalpha)) {
     if (opt.forcing.phi0_option->count() > 0) {
-      throw std::invalid_argument(fmt::format(
-          "--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
-          opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
+      throw std::invalid_argument(
+          fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
+                      opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
     }
   }
   const bool tty = ::isatty(STDERR_FILENO) != 0;
@@ -106,7 +108,8 @@ int Run(SweepCliOptions& opt) {
   if (tty) progress = [&bar](const SweepProgress& p) { bar(p); };
   const SweepSummary summary = RunSweep(s, progress);
   if (tty) {
-    fmt::print(stderr, "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",
+    fmt::print(stderr,
+               "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",
                summary.points, summary.rows, s.output, summary.seconds, summary.threads,
                summary.points_resumed > 0
                    ? fmt::format(" ({} points resumed from the checkpoint)", summary.points_resumed)
@@ -147,7 +150,9 @@ Command AddSweepCommand(CLI::App& app) {
       "required unless phi0 has a --grid, is optimised (--optimize phi0) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt->sweep.params);
-  cmd->add_option("--output,-o", opt->sweep.output, "the CSV file to write (required); - writes to standard output (no --resume then)")
+  cmd->add_option(
+         "--output,-o", opt->sweep.output,
+         "the CSV file to write (required); - writes to standard output (no --resume then)")
       ->required();
   cmd->add_flag("--stability", opt->sweep.stability,
                 "add the columns spectral_radius (of the impact map, MODEL.md section 8) and "

@@ -13,7 +13,7 @@ namespace capsubot {
 namespace {
 
 constexpr SweepParameter kAllParameters[] = {
-    SweepParameter::kA,  SweepParameter::kc,      SweepParameter::kphi0, SweepParameter::kT0,
+    SweepParameter::kA, SweepParameter::kc,      SweepParameter::kphi0, SweepParameter::kT0,
     SweepParameter::ke, SweepParameter::kmargin, SweepParameter::kalpha};
 constexpr std::int64_t kMaxPoints = std::int64_t{1} << 53;  // indices stay exact in a double
 
@@ -44,13 +44,20 @@ void CheckAxis(const GridAxis& axis, const std::string& spec);
 
 const char* SweepParameterName(SweepParameter parameter) {
   switch (parameter) {
-    case SweepParameter::kA: return "A";
-    case SweepParameter::kc: return "c";
-    case SweepParameter::kphi0: return "phi0";
-    case SweepParameter::kT0: return "T0";
-    case SweepParameter::ke: return "e";
-    case SweepParameter::kmargin: return "margin";
-    case SweepParameter::kalpha: return "alpha";
+    case SweepParameter::kA:
+      return "A";
+    case SweepParameter::kc:
+      return "c";
+    case SweepParameter::kphi0:
+      return "phi0";
+    case SweepParameter::kT0:
+      return "T0";
+    case SweepParameter::ke:
+      return "e";
+    case SweepParameter::kmargin:
+      return "margin";
+    case SweepParameter::kalpha:
+      return "alpha";
   }
   return "unknown";
 }
@@ -156,11 +163,10 @@ void Grid::Validate() const {
   for (const GridAxis& axis : axes) axis.Validate();
   if (axes.size() == 2) {
     if (axes[0].parameter == axes[1].parameter) {
-      throw std::invalid_argument(
-          fmt::format("--grid {} is invalid: parameter {} already has a grid (--grid {}): "
-                      "expected two different parameters",
-                      axes[1].ToString(), SweepParameterName(axes[1].parameter),
-                      axes[0].ToString()));
+      throw std::invalid_argument(fmt::format(
+          "--grid {} is invalid: parameter {} already has a grid (--grid {}): "
+          "expected two different parameters",
+          axes[1].ToString(), SweepParameterName(axes[1].parameter), axes[0].ToString()));
     }
     if (Has(SweepParameter::kalpha) && Has(SweepParameter::kphi0)) {
       throw std::invalid_argument(

@@ -26,9 +26,9 @@ constexpr int kOptimizeBlockPoints = 2;
 // Points per block: big enough to amortise the hand-over, small enough to balance threads.
 std::int64_t BlockPoints(const SweepOptions& o, std::int64_t todo, int threads) {
   if (o.block_points > 0) return o.block_points;
-  const std::int64_t base = o.optimize_phi0                          ? kOptimizeBlockPoints
+  const std::int64_t base = o.optimize_phi0                      ? kOptimizeBlockPoints
                             : o.grid.Has(SweepParameter::kalpha) ? kRobotBlockPoints
-                                                                     : kSolveBlockPoints;
+                                                                 : kSolveBlockPoints;
   const std::int64_t balanced = todo / (8 * static_cast<std::int64_t>(threads));
   return std::max<std::int64_t>(1, std::min(base, balanced));
 }
@@ -47,17 +47,17 @@ void SweepOptions::Validate() const {
     throw std::invalid_argument("--output is missing: expected the path of the CSV file to write");
   }
   if (threads < 0 || threads > kMaxThreads) {
-    throw std::invalid_argument(fmt::format(
-        "--threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
-        kMaxThreads));
+    throw std::invalid_argument(
+        fmt::format("--threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)",
+                    threads, kMaxThreads));
   }
   if (block_points < 0) {
-    throw std::invalid_argument(fmt::format(
-        "block_points = {} is invalid: expected >= 1 (0: automatic)", block_points));
+    throw std::invalid_argument(
+        fmt::format("block_points = {} is invalid: expected >= 1 (0: automatic)", block_points));
   }
   if (!(checkpoint_seconds >= 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
+    throw std::invalid_argument(
+        fmt::format("checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
   }
   if (grid.Has(SweepParameter::kA) && !forcing.harmonic()) {
     throw std::invalid_argument(
@@ -91,8 +91,8 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
     columns.emplace_back("orbit");
   }
   if (o.grid.Has(SweepParameter::kalpha) || o.optimize_phi0) columns.emplace_back("phi0");
-  for (const char* name : {"phi1", "alpha", "u", "v_plus", "I", "v_mean", "x_min", "x_max",
-                           "valid", "violations"}) {
+  for (const char* name :
+       {"phi1", "alpha", "u", "v_plus", "I", "v_mean", "x_min", "x_max", "valid", "violations"}) {
     columns.emplace_back(name);
   }
   if (o.stability) {
@@ -130,8 +130,11 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
     bool ready = false;
   };
   const std::int64_t window = static_cast<std::int64_t>(kBlocksInFlightPerThread) * threads;
-  std::vector<Slot> slots(static_cast<std::size_t>(std::min(window, std::max<std::int64_t>(blocks, 1))));
-  const auto slot_of = [&](std::int64_t k) -> Slot& { return slots[static_cast<std::size_t>(k % static_cast<std::int64_t>(slots.size()))]; };
+  std::vector<Slot> slots(
+      static_cast<std::size_t>(std::min(window, std::max<std::int64_t>(blocks, 1))));
+  const auto slot_of = [&](std::int64_t k) -> Slot& {
+    return slots[static_cast<std::size_t>(k % static_cast<std::int64_t>(slots.size()))];
+  };
   std::mutex mutex;
   std::condition_variable work_cv, ready_cv;
   std::int64_t next_claim = 0, next_write = 0;
@@ -178,7 +181,8 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   };
 
   std::vector<std::thread> pool;
-  const int workers = static_cast<int>(std::min<std::int64_t>(threads, std::max<std::int64_t>(blocks, 1)));
+  const int workers =
+      static_cast<int>(std::min<std::int64_t>(threads, std::max<std::int64_t>(blocks, 1)));
   pool.reserve(static_cast<std::size_t>(workers));
   for (int i = 0; i < workers; ++i) pool.emplace_back(worker);
 

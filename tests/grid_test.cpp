@@ -86,23 +86,23 @@ TEST_P(GridRejects, WithAMessageNamingTheOptionValueAndRule) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadSpecs, GridRejects,
-    ::testing::Values(
-        BadSpec{"x=0:1:3", "unknown parameter 'x': expected one of A, c, phi0, T0, e, margin"},
-        BadSpec{"phi0", "expected name=lo:hi:n"},
-        BadSpec{"phi0=0:1", "three fields separated by ':'"},
-        BadSpec{"phi0=0:1:2:3", "three fields separated by ':'"},
-        BadSpec{"phi0=a:1:3", "lo = 'a' is not a number"},
-        BadSpec{"phi0=0::3", "hi = '' is not a number"},
-        BadSpec{"phi0=0:1:2.5", "n = '2.5' is not an integer"},
-        BadSpec{"phi0=0:1:0", "n = 0: expected n >= 1"},
-        BadSpec{"phi0=0:1:-4", "n = -4: expected n >= 1"},
-        BadSpec{"phi0=nan:1:3", "expected finite bounds"},
-        BadSpec{"c=0:inf:3", "expected finite bounds"},
-        BadSpec{"A=-0.1:1:3", "expected amplitudes A >= 0"},
-        BadSpec{"T0=0:1:3", "expected friction bounds T0 > 0"},
-        BadSpec{"e=0:1.5:3", "expected restitutions 0 <= e <= 1"},
-        BadSpec{"margin=0:0.5:3", "expected margins 0 <= margin < 0.5"},
-        BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"}));
+    ::testing::Values(BadSpec{"x=0:1:3",
+                              "unknown parameter 'x': expected one of A, c, phi0, T0, e, margin"},
+                      BadSpec{"phi0", "expected name=lo:hi:n"},
+                      BadSpec{"phi0=0:1", "three fields separated by ':'"},
+                      BadSpec{"phi0=0:1:2:3", "three fields separated by ':'"},
+                      BadSpec{"phi0=a:1:3", "lo = 'a' is not a number"},
+                      BadSpec{"phi0=0::3", "hi = '' is not a number"},
+                      BadSpec{"phi0=0:1:2.5", "n = '2.5' is not an integer"},
+                      BadSpec{"phi0=0:1:0", "n = 0: expected n >= 1"},
+                      BadSpec{"phi0=0:1:-4", "n = -4: expected n >= 1"},
+                      BadSpec{"phi0=nan:1:3", "expected finite bounds"},
+                      BadSpec{"c=0:inf:3", "expected finite bounds"},
+                      BadSpec{"A=-0.1:1:3", "expected amplitudes A >= 0"},
+                      BadSpec{"T0=0:1:3", "expected friction bounds T0 > 0"},
+                      BadSpec{"e=0:1.5:3", "expected restitutions 0 <= e <= 1"},
+                      BadSpec{"margin=0:0.5:3", "expected margins 0 <= margin < 0.5"},
+                      BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"}));
 
 TEST(GridRejects, TheSpecItselfIsQuotedInTheMessage) {
   EXPECT_EQ(Message([] { ParseGridAxis("phi0=0:1:0"); }),
@@ -137,8 +137,7 @@ TEST(GridRejects, NoneOrThreeAxes) {
 TEST(GridRejects, MoreThanTwoToThe53Points) {
   Grid g;
   g.axes = {ParseGridAxis("c=0:1:100000000"), ParseGridAxis("A=0:1:100000000")};
-  EXPECT_NE(Message([&] { g.Validate(); }).find("expected at most 2^53 points"),
-            std::string::npos);
+  EXPECT_NE(Message([&] { g.Validate(); }).find("expected at most 2^53 points"), std::string::npos);
 }
 
 }  // namespace

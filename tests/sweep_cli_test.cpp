@@ -3,8 +3,8 @@
 // as an uninterrupted run; bad command lines exit with status 2 and a message naming the
 // option, its value and the rule.
 
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -70,10 +70,23 @@ long CheckpointPoints(const std::string& path) {
 // A sweep slow enough to be caught mid-way: P1 at each of 960 points (about 1 s).
 // Checkpoints every 50 ms (each one fsyncs: every block would be slow on a real disk).
 std::vector<std::string> SlowSweep(const std::string& output, int threads) {
-  return {kCli,          "sweep",         "--grid", "A=0.05:0.95:24", "--grid",
-          "c=0.01:0.5:40", "--optimize",   "phi0",   "--stability",    "--T0",
-          "1",           "--threads",     std::to_string(threads),    "--checkpoint-seconds",
-          "0.05",           "-o",            output};
+  return {kCli,
+          "sweep",
+          "--grid",
+          "A=0.05:0.95:24",
+          "--grid",
+          "c=0.01:0.5:40",
+          "--optimize",
+          "phi0",
+          "--stability",
+          "--T0",
+          "1",
+          "--threads",
+          std::to_string(threads),
+          "--checkpoint-seconds",
+          "0.05",
+          "-o",
+          output};
 }
 
 pid_t Spawn(const std::vector<std::string>& args) {
@@ -142,8 +155,8 @@ INSTANTIATE_TEST_SUITE_P(Signals, SweepCliKilled, ::testing::Values(SIGKILL, SIG
 
 TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
   TempDir dir;
-  const Outcome r = RunCli("sweep --grid phi0=-pi:pi:5 --A 0.5 --c 0.5 -o " + dir.File("a.csv"),
-                           dir.File("log"));
+  const Outcome r =
+      RunCli("sweep --grid phi0=-pi:pi:5 --A 0.5 --c 0.5 -o " + dir.File("a.csv"), dir.File("log"));
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.output, "");
   const std::string csv = ReadFile(dir.File("a.csv"));
@@ -174,8 +187,8 @@ class SweepCliRejects : public ::testing::TestWithParam<BadCommand> {};
 
 TEST_P(SweepCliRejects, WithStatus2AndAMessage) {
   TempDir dir;
-  const Outcome r = RunCli(std::string("sweep ") + GetParam().args + " -o " + dir.File("x.csv"),
-                           dir.File("log"));
+  const Outcome r =
+      RunCli(std::string("sweep ") + GetParam().args + " -o " + dir.File("x.csv"), dir.File("log"));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
   EXPECT_FALSE(Exists(dir.File("x.csv")));

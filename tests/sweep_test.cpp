@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <random>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -116,8 +116,8 @@ TEST(SweepColumns, FollowTheDocumentedLayout) {
 }
 
 TEST(SweepNumbers, AreByteIdenticalToFormatNumber) {
-  for (double x : {0.0, -0.0, 1.0, -2.944899971002, 1e-300, 6.02214076e23, 0.1, 1.0 / 3.0,
-                   5e-324, 1.7976931348623157e308, -std::nan("")}) {
+  for (double x : {0.0, -0.0, 1.0, -2.944899971002, 1e-300, 6.02214076e23, 0.1, 1.0 / 3.0, 5e-324,
+                   1.7976931348623157e308, -std::nan("")}) {
     detail::RowBuffer buffer;
     detail::AppendNumber(buffer, x);
     EXPECT_EQ(std::string(buffer.data(), buffer.size()), FormatNumber(x)) << x;
@@ -337,9 +337,9 @@ TEST(Sweep, RefusesAnOutputAnotherSweepIsWriting) {
     RunSweep(o);
     ADD_FAILURE() << "expected IoError";
   } catch (const IoError& e) {
-    EXPECT_EQ(std::string(e.what()), "--output " + o.output +
-                                         ": another capsubot sweep is writing " + o.output +
-                                         ".partial");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "--output " + o.output + ": another capsubot sweep is writing " + o.output + ".partial");
   }
   ::close(fd);
   EXPECT_FALSE(Exists(o.output));
@@ -360,14 +360,16 @@ std::string InvalidArgumentMessage(const Fn& f) {
 TEST(SweepOptions, RejectsBadCombinationsWithAMessage) {
   SweepOptions o = PaperPhaseSweep("x.csv", 5);
   o.optimize_phi0 = true;
-  EXPECT_NE(InvalidArgumentMessage([&] { o.Validate(); })
-                .find("--optimize phi0 with --grid phi0 is invalid"),
+  EXPECT_NE(InvalidArgumentMessage([&] {
+              o.Validate();
+            }).find("--optimize phi0 with --grid phi0 is invalid"),
             std::string::npos);
   o = PaperPhaseSweep("x.csv", 5);
   o.grid.axes = {ParseGridAxis("A=0:1:3")};
   o.forcing = Forcing::Fourier(0.2, {0.1, 0.0}, {0.3, 0.1}, 0.0);
-  EXPECT_NE(InvalidArgumentMessage([&] { o.Validate(); })
-                .find("--grid A is invalid with a Fourier force"),
+  EXPECT_NE(InvalidArgumentMessage([&] {
+              o.Validate();
+            }).find("--grid A is invalid with a Fourier force"),
             std::string::npos);
   o = PaperPhaseSweep("x.csv", 5);
   o.threads = -1;
@@ -379,8 +381,9 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessage) {
   o = PaperPhaseSweep("x.csv", 5);
   o.grid.axes = {ParseGridAxis("alpha=0.2:0.5:3")};
   o.optimize_phi0 = true;
-  EXPECT_NE(InvalidArgumentMessage([&] { o.Validate(); })
-                .find("--optimize phi0 with --grid alpha is invalid"),
+  EXPECT_NE(InvalidArgumentMessage([&] {
+              o.Validate();
+            }).find("--optimize phi0 with --grid alpha is invalid"),
             std::string::npos);
 }
 

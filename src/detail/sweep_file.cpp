@@ -50,8 +50,8 @@ CheckpointRecord ReadCheckpoint(const std::string& path) {
 }  // namespace
 
 void SweepFile::Fail(const std::string& what, const std::string& path) const {
-  throw IoError(fmt::format("--output {}: cannot {} {}: {}", output_, what, path,
-                            std::strerror(errno)));
+  throw IoError(
+      fmt::format("--output {}: cannot {} {}: {}", output_, what, path, std::strerror(errno)));
 }
 
 SweepFile::SweepFile(const std::string& output, const std::string& description,
@@ -70,8 +70,7 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
           "output, pipes and devices are written in place, without checkpoint)",
           output_));
     }
-    fd_ = output_ == "-" ? ::dup(STDOUT_FILENO)
-                         : ::open(output_.c_str(), O_WRONLY | O_CLOEXEC);
+    fd_ = output_ == "-" ? ::dup(STDOUT_FILENO) : ::open(output_.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd_ < 0) Fail("open", output_);
     Append(header.data(), header.size(), 0);
     return;
@@ -83,8 +82,8 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     ::close(fd_);
     fd_ = -1;
     if (err == EWOULDBLOCK) {
-      throw IoError(fmt::format("--output {}: another capsubot sweep is writing {}", output_,
-                                partial_));
+      throw IoError(
+          fmt::format("--output {}: another capsubot sweep is writing {}", output_, partial_));
     }
     errno = err;
     Fail("lock", partial_);

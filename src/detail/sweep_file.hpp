@@ -42,7 +42,7 @@ class SweepFile {
 
   std::string output_, partial_, checkpoint_, description_;
   int fd_ = -1;
-  bool direct_ = false;  // written in place: no partial file, no checkpoint
+  bool direct_ = false;      // written in place: no partial file, no checkpoint
   std::int64_t points_ = 0;  // complete points written
   std::int64_t bytes_ = 0;   // bytes written
   double checkpoint_seconds_ = 0.5;

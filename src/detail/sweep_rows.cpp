@@ -16,9 +16,7 @@ constexpr int kFormatVersion = 1;
 
 bool RobotMode(const SweepOptions& o) { return o.grid.Has(SweepParameter::kalpha); }
 
-void Append(RowBuffer& out, const char* text) {
-  out.append(fmt::string_view(text));
-}
+void Append(RowBuffer& out, const char* text) { out.append(fmt::string_view(text)); }
 
 // Exact text of a double for the description (hexadecimal: no rounding at all).
 std::string Hex(double value) { return fmt::format("{:a}", value); }
@@ -52,7 +50,8 @@ std::string SweepDescription(const SweepOptions& o) {
   }
   const Forcing& f = o.forcing;
   d += fmt::format(" c={} phi0={} K={}", Hex(f.mean()), Hex(f.phi0()), f.harmonics());
-  for (int k = 1; k <= f.harmonics(); ++k) d += fmt::format(" a{}={} b{}={}", k, Hex(f.a(k)), k, Hex(f.b(k)));
+  for (int k = 1; k <= f.harmonics(); ++k)
+    d += fmt::format(" a{}={} b{}={}", k, Hex(f.a(k)), k, Hex(f.b(k)));
   d += fmt::format(" T0={} e={} margin={} stability={} optimize_phi0={}", Hex(o.params.T0),
                    Hex(o.params.e), Hex(o.params.margin), o.stability, o.optimize_phi0);
   if (o.optimize_phi0) {
@@ -87,16 +86,28 @@ void SweepRowWriter::SetPoint(std::int64_t point) {
   for (std::size_t i = 0; i < g.axes.size(); ++i) {
     const double value = g.Value(point, i);
     switch (g.axes[i].parameter) {
-      case SweepParameter::kA: b_[0] = value; break;
-      case SweepParameter::kc: c_ = value; break;
+      case SweepParameter::kA:
+        b_[0] = value;
+        break;
+      case SweepParameter::kc:
+        c_ = value;
+        break;
       case SweepParameter::kphi0:
         phi0 = value;
         phase_changed = true;
         break;
-      case SweepParameter::kT0: params_.T0 = value; break;
-      case SweepParameter::ke: params_.e = value; break;
-      case SweepParameter::kmargin: params_.margin = value; break;
-      case SweepParameter::kalpha: alpha_ = value; break;
+      case SweepParameter::kT0:
+        params_.T0 = value;
+        break;
+      case SweepParameter::ke:
+        params_.e = value;
+        break;
+      case SweepParameter::kmargin:
+        params_.margin = value;
+        break;
+      case SweepParameter::kalpha:
+        alpha_ = value;
+        break;
     }
   }
   if (rebuild_force_) {
