@@ -56,37 +56,13 @@ void FourierOptions::Validate() const {
   Require(
       harmonics >= 1 && harmonics <= kMaxHarmonics,
       fmt::format("harmonics K = {} is invalid: expected 1 <= K <= {}", harmonics, kMaxHarmonics));
-  Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
-          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
-                      force_bound));
-  if (global_algorithm != kMultistart) {
-    detail::AlgorithmFromName(global_algorithm, GlobalAlgorithmNames(), "global_algorithm");
-  }
-  detail::AlgorithmFromName(local_algorithm, LocalAlgorithmNames(), "local_algorithm");
-  Require(starts >= 1, fmt::format("starts = {} is invalid: expected starts >= 1", starts));
-  Require(std::isfinite(rel_tol) && rel_tol > 0.0,
-          fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
-  Require(
-      local_evaluations >= 10,
-      fmt::format("local_evaluations = {} is invalid: expected at least 10", local_evaluations));
-  Require(global_evaluations >= 10, fmt::format("global_evaluations = {} is invalid: expected "
-                                                "at least 10",
-                                                global_evaluations));
-  Require(std::isfinite(rho_max) && rho_max > 0.0,
-          fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
-  Require(std::isfinite(active_tol) && active_tol >= 0.0,
-          fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
+  SearchOptions::Validate();
 }
 
 OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& options) {
   params.Validate();
   options.Validate();
-  const double bound = std::isnan(options.force_bound) ? params.T0 : options.force_bound;
-  Require(bound <= params.T0,
-          fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
-                      "above the friction bound moves the capsule without impacts, MODEL.md "
-                      "section 6)",
-                      bound, params.T0));
+  const double bound = options.BoundFor(params);
   const nlopt::algorithm local =
       detail::AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
   const int K = options.harmonics;
