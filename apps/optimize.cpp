@@ -54,28 +54,14 @@ std::string Join(const std::vector<std::string>& items, const char* none = "none
   return s.empty() ? none : s;
 }
 
-// The JSON object of one optimisation result (keys of issue 4, item 5).
+// The JSON object of one optimisation result (keys of issue 4, item 5): the optimum's orbit
+// as `solve --json` shows it, with the optimiser's status in place of the orbit's.
 nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
-  const Orbit& o = r.solution.orbit;
-  const Validity& v = r.solution.validity;
-  const Forcing& f = o.forcing;
-  nlohmann::json j;
+  const Forcing& f = r.solution.orbit.forcing;
+  nlohmann::json j = SolutionJson(r.solution);
   j["problem"] = problem;
   j["status"] = OptimizeStatusName(r.status);
   j["message"] = r.message;
-  j["valid"] = r.found();
-  j["I"] = o.I;  // NaN is written as null: a quantity that does not exist
-  j["v_mean"] = o.v_mean;
-  j["A"] = f.harmonic() ? nlohmann::json(f.amplitude()) : nlohmann::json();
-  j["c"] = f.mean();
-  j["phi0"] = f.phi0();
-  j["phi1"] = o.phi1;
-  j["alpha"] = o.alpha;
-  j["u"] = o.u;
-  j["v_plus"] = o.v_plus;
-  j["x_min"] = v.x_min;
-  j["x_max"] = v.x_max;
-  j["violations"] = v.ViolationNames();
   j["active_constraints"] = r.active_constraints;
   j["evaluations"] = r.evaluations;
   j["algorithm"] = r.algorithm;
@@ -84,12 +70,7 @@ nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
     j["stable"] = r.spectral_radius < 1.0;
   }
   if (!f.harmonic()) {
-    std::vector<double> a, b;
-    for (int k = 1; k <= f.harmonics(); ++k) {
-      a.push_back(f.a(k));
-      b.push_back(f.b(k));
-    }
-    j["coefficients"] = {{"c", f.mean()}, {"cos", a}, {"sin", b}};
+    j["coefficients"] = {{"c", f.mean()}, {"cos", j["cos"]}, {"sin", j["sin"]}};
   }
   return j;
 }

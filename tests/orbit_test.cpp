@@ -20,13 +20,6 @@ using testing::RelNear;
 constexpr double kClosedFormTol = 1e-11;  // identities of the closed form, O(1..10) values
 constexpr double kRootTol = 1e-12;        // phi1 from Brent to 1e-14 in phase
 
-Params MakeParams(double T0, double e) {
-  Params p;
-  p.T0 = T0;
-  p.e = e;
-  return p;
-}
-
 struct Case {
   const char* name;
   Forcing forcing;
@@ -36,12 +29,12 @@ struct Case {
 
 // Orbits that exist (status ok), valid or not: harmonic and Fourier, e = 1, 0.5, 0.
 const Case kCases[] = {
-    {"paper_example", Forcing::Harmonic(0.5, 0.5, -2.944899971002), MakeParams(1.0, 1.0)},
-    {"small_T0_e05", Forcing::Harmonic(0.05, 0.02, -2.5), MakeParams(0.1, 0.5)},
-    {"plastic_e0", Forcing::Harmonic(0.08, 0.01, -2.4), MakeParams(0.1, 0.0)},
-    {"right_wall_case", Forcing::Harmonic(0.2, 0.03, -3.1), MakeParams(1.0, 0.5)},
+    {"paper_example", Forcing::Harmonic(0.5, 0.5, -2.944899971002), Params{1.0, 1.0}},
+    {"small_T0_e05", Forcing::Harmonic(0.05, 0.02, -2.5), Params{0.1, 0.5}},
+    {"plastic_e0", Forcing::Harmonic(0.08, 0.01, -2.4), Params{0.1, 0.0}},
+    {"right_wall_case", Forcing::Harmonic(0.2, 0.03, -3.1), Params{1.0, 0.5}},
     {"fourier_k3", Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, -2.6),
-     MakeParams(0.1, 0.7)},
+     Params{0.1, 0.7}},
 };
 
 class OrbitCases : public ::testing::TestWithParam<Case> {

@@ -16,14 +16,6 @@ using testing::Near;
 
 constexpr int kSamples = 400000;  // dense sampling: the independent reference for extrema
 
-Params MakeParams(double T0, double e, double margin = 0.0) {
-  Params p;
-  p.T0 = T0;
-  p.e = e;
-  p.margin = margin;
-  return p;
-}
-
 struct Sampled {
   double min = 1.0, max_interior = -INFINITY;
   double max_step = 0.0;  // largest |x'| * step: bounds the sampling error of the minimum
@@ -54,13 +46,13 @@ struct Case {
 // Existing orbits with and without interior maxima, both families (parameters from scans of
 // `capsubot solve` over phi0).
 const Case kCases[] = {
-    {"valid_no_max", Forcing::Harmonic(0.05, 0.02, -2.5), MakeParams(0.1, 0.5)},
-    {"right_wall", Forcing::Harmonic(0.2, 0.03, -3.1), MakeParams(1.0, 0.5)},
-    {"right_and_left", Forcing::Harmonic(4.0, 0.6, -3.1), MakeParams(20.0, 0.5)},
-    {"plastic_e0", Forcing::Harmonic(0.08, 0.01, -2.4), MakeParams(0.1, 0.0)},
-    {"paper_example", Forcing::Harmonic(0.5, 0.5, -2.944899971002), MakeParams(1.0, 1.0)},
+    {"valid_no_max", Forcing::Harmonic(0.05, 0.02, -2.5), Params{0.1, 0.5}},
+    {"right_wall", Forcing::Harmonic(0.2, 0.03, -3.1), Params{1.0, 0.5}},
+    {"right_and_left", Forcing::Harmonic(4.0, 0.6, -3.1), Params{20.0, 0.5}},
+    {"plastic_e0", Forcing::Harmonic(0.08, 0.01, -2.4), Params{0.1, 0.0}},
+    {"paper_example", Forcing::Harmonic(0.5, 0.5, -2.944899971002), Params{1.0, 1.0}},
     {"fourier_k3", Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, -2.6),
-     MakeParams(0.1, 0.7)},
+     Params{0.1, 0.7}},
 };
 
 class ValidityCases : public ::testing::TestWithParam<Case> {};
@@ -98,7 +90,7 @@ INSTANTIATE_TEST_SUITE_P(Orbits, ValidityCases, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Validity, ValidOrbitHasNoViolation) {
-  const Solution s = Solve(Forcing::Harmonic(0.05, 0.02, -2.5), MakeParams(0.1, 0.5));
+  const Solution s = Solve(Forcing::Harmonic(0.05, 0.02, -2.5), Params{0.1, 0.5});
   EXPECT_TRUE(s.validity.valid());
   EXPECT_TRUE(s.validity.ViolationNames().empty());
 }
@@ -112,7 +104,7 @@ TEST(Validity, PaperExampleBreaksOnlyTheLeftWall) {
 
 TEST(Validity, EarlyRightWallContactIsReported) {
   // The condition the paper omits: x rises above 1 before the period ends.
-  const Solution s = Solve(Forcing::Harmonic(0.2, 0.03, -3.1), MakeParams(1.0, 0.5));
+  const Solution s = Solve(Forcing::Harmonic(0.2, 0.03, -3.1), Params{1.0, 0.5});
   EXPECT_EQ(s.validity.ViolationNames(), std::vector<std::string>{"right_wall"});
   EXPECT_GT(s.validity.x_max, 1.0);
 }
@@ -128,7 +120,7 @@ TEST(Validity, ForceExactlyAtTheFrictionBoundHolds) {
   // A + c = T0 (the boundary of the paper's A + c < T0): max |F| = T0 touches the bound, it
   // does not exceed it, at every impact phase (the extremum is evaluated with rounding).
   // c = T0 - A is how the optimiser puts a force on its bound.
-  const Params params = MakeParams(0.1, 1.0);
+  const Params params = Params{0.1, 1.0};
   for (double A = 0.005; A < 0.1; A += 0.005) {
     for (double phi0 = -3.1; phi0 < 3.2; phi0 += 0.1) {
       const Solution s = Solve(Forcing::Harmonic(A, params.T0 - A, phi0), params);
@@ -160,13 +152,13 @@ TEST(Validity, MissingMassRatioIsReported) {
 
 TEST(Validity, PlasticImpactNeedsTheInnerBodyToMoveAway) {
   // e = 0: x'(0+) = 0, so x''(0+) = (F(0) + alpha T0)/(alpha (1 - alpha)) must be negative.
-  const Solution ok = Solve(Forcing::Harmonic(0.08, 0.01, -2.4), MakeParams(0.1, 0.0));
+  const Solution ok = Solve(Forcing::Harmonic(0.08, 0.01, -2.4), Params{0.1, 0.0});
   ASSERT_TRUE(ok.orbit.ok());
   EXPECT_LT(ok.orbit.ddx(0.0), 0.0);
   EXPECT_FALSE(ok.validity.violated(Condition::kSeparation));
   // Pushed into the wall at the impact (F(0) > 0 here): found by scanning phi0 for e = 0.
   for (double phi0 = -3.1; phi0 < 3.2; phi0 += 0.05) {
-    const Solution s = Solve(Forcing::Harmonic(0.08, 0.01, phi0), MakeParams(0.1, 0.0));
+    const Solution s = Solve(Forcing::Harmonic(0.08, 0.01, phi0), Params{0.1, 0.0});
     if (!s.orbit.ok()) continue;
     EXPECT_EQ(s.validity.violated(Condition::kSeparation), !(s.orbit.ddx(0.0) < 0.0))
         << "phi0 = " << phi0;
@@ -175,8 +167,8 @@ TEST(Validity, PlasticImpactNeedsTheInnerBodyToMoveAway) {
 
 TEST(Validity, ClearanceMarginIsCheckedOnlyWhenRequired) {
   const Forcing f = Forcing::Harmonic(0.05, 0.02, -2.5);  // x_min = 0.166 (valid_no_max)
-  EXPECT_FALSE(Solve(f, MakeParams(0.1, 0.5, 0.1)).validity.violated(Condition::kClearance));
-  const Solution s = Solve(f, MakeParams(0.1, 0.5, 0.2));
+  EXPECT_FALSE(Solve(f, Params{0.1, 0.5, 0.1}).validity.violated(Condition::kClearance));
+  const Solution s = Solve(f, Params{0.1, 0.5, 0.2});
   EXPECT_EQ(s.validity.ViolationNames(), std::vector<std::string>{"clearance"});
 }
 

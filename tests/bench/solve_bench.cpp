@@ -10,52 +10,35 @@ namespace {
 using capsubot::Forcing;
 using capsubot::Params;
 
-// A valid orbit with two interior extrema of x (found with `capsubot solve`): the common case.
-void BM_SolveHarmonicValid(benchmark::State& state) {
-  const Forcing base = Forcing::Harmonic(0.05, 0.02, 0.0);
-  Params params;
-  params.T0 = 0.1;
-  params.e = 0.5;
-  double phi0 = -3.0, sum = 0.0;
+// Solves `base` at impact phases walking over [lo, hi] in steps of `step`, one per iteration.
+void SolveOverPhases(benchmark::State& state, const Forcing& base, const Params& params, double lo,
+                     double hi, double step) {
+  double phi0 = lo, sum = 0.0;
   for (auto _ : state) {
     const auto s = capsubot::Solve(base.WithPhase(phi0), params);
-    sum += s.validity.x_min;
-    phi0 = phi0 > -2.0 ? -3.0 : phi0 + 1e-4;  // walk over a range of valid phases
+    sum += s.orbit.phi1 + s.validity.x_min;
+    phi0 = phi0 > hi ? lo : phi0 + step;
   }
   benchmark::DoNotOptimize(sum);
   state.SetItemsProcessed(state.iterations());
+}
+
+// Valid orbits, most with interior extrema of x (found with `capsubot solve`): the common case.
+void BM_SolveHarmonicValid(benchmark::State& state) {
+  SolveOverPhases(state, Forcing::Harmonic(0.05, 0.02, 0.0), Params{0.1, 0.5}, -3.0, -2.0, 1e-4);
 }
 BENCHMARK(BM_SolveHarmonicValid);
 
 // The paper's worked example (c = A = T0/2), over the whole circle of phases.
 void BM_SolvePaperExampleWholeCircle(benchmark::State& state) {
-  const Forcing base = Forcing::Harmonic(0.5, 0.5, 0.0);
-  const Params params;
-  double phi0 = -3.14159, sum = 0.0;
-  for (auto _ : state) {
-    const auto s = capsubot::Solve(base.WithPhase(phi0), params);
-    sum += s.orbit.phi1;
-    phi0 = phi0 > 3.14159 ? -3.14159 : phi0 + 1e-3;
-  }
-  benchmark::DoNotOptimize(sum);
-  state.SetItemsProcessed(state.iterations());
+  SolveOverPhases(state, Forcing::Harmonic(0.5, 0.5, 0.0), Params{}, -3.14159, 3.14159, 1e-3);
 }
 BENCHMARK(BM_SolvePaperExampleWholeCircle);
 
 // A three-harmonic Fourier force (companion-matrix crossings).
 void BM_SolveFourier3(benchmark::State& state) {
-  const Forcing base = Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0);
-  Params params;
-  params.T0 = 0.1;
-  params.e = 0.5;
-  double phi0 = -3.14159, sum = 0.0;
-  for (auto _ : state) {
-    const auto s = capsubot::Solve(base.WithPhase(phi0), params);
-    sum += s.orbit.phi1;
-    phi0 = phi0 > 3.14159 ? -3.14159 : phi0 + 1e-3;
-  }
-  benchmark::DoNotOptimize(sum);
-  state.SetItemsProcessed(state.iterations());
+  SolveOverPhases(state, Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0),
+                  Params{0.1, 0.5}, -3.14159, 3.14159, 1e-3);
 }
 BENCHMARK(BM_SolveFourier3);
 
