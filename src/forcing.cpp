@@ -46,8 +46,8 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
   f.phi0_ = phi0;
   f.K_ = static_cast<int>(a.size());
   for (int k = 0; k < f.K_; ++k) {
-    RequireFinite(fmt::format("a_{}", k + 1).c_str(), a[k]);
-    RequireFinite(fmt::format("b_{}", k + 1).c_str(), b[k]);
+    if (!std::isfinite(a[k])) RequireFinite(fmt::format("a_{}", k + 1).c_str(), a[k]);
+    if (!std::isfinite(b[k])) RequireFinite(fmt::format("b_{}", k + 1).c_str(), b[k]);
     f.a_[k] = a[k];
     f.b_[k] = b[k];
   }

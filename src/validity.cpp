@@ -8,12 +8,6 @@
 namespace capsubot {
 namespace {
 
-// |F| <= T0 holds when |F| touches T0 up to the rounding of the extremum's evaluation (a few
-// ulps): A + c = T0 exactly is the paper's boundary case and must not flip on the last bit.
-constexpr double kForceBoundRelTol = 1e-12;
-
-bool WithinFriction(double force, double T0) { return force <= T0 * (1.0 + kForceBoundRelTol); }
-
 void Set(Validity& v, Condition c, bool violated) {
   if (violated) v.violations |= 1U << static_cast<unsigned>(c);
 }
@@ -94,14 +88,14 @@ Validity CheckValidity(const Orbit& o, double margin) {
   Validity v;
   v.checked = true;
   v.max_force = o.forcing.MaxAbs();
-  Set(v, Condition::kForceBelowFriction, !WithinFriction(v.max_force, o.T0));
+  Set(v, Condition::kForceBelowFriction, !WithinForceBound(v.max_force, o.T0));
   if (o.status == OrbitStatus::kNonPositiveMeanForce) {
     Set(v, Condition::kPositiveMeanForce, true);
     return v;
   }
   const Range rest = o.forcing.Bounds(o.phi1, kTau);
   v.rest_force = std::max(std::abs(rest.min), std::abs(rest.max));
-  Set(v, Condition::kStick, !WithinFriction(v.rest_force, o.T0));
+  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, o.T0));
   if (!o.ok()) {
     Set(v, Condition::kMassRatio, true);
     return v;

@@ -10,16 +10,13 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "test_utils.hpp"
+
 namespace capsubot {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path TempPath(const char* name) {
-  const fs::path p = fs::temp_directory_path() / name;
-  fs::remove(p);
-  return p;
-}
+using testing::TempPath;
 
 TEST(AtomicFile, CommitPublishesTheWholeFile) {
   const fs::path p = TempPath("capsubot_io_commit.csv");

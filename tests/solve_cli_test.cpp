@@ -64,8 +64,7 @@ TEST(SolveCli, TableIsReadable) {
 }
 
 TEST(SolveCli, TrajectoryCsvCoversOnePeriod) {
-  const auto path = std::filesystem::temp_directory_path() / "capsubot_solve_traj.csv";
-  std::filesystem::remove(path);
+  const auto path = testing::TempPath("capsubot_solve_traj.csv");
   const auto r = RunCli(
       "solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5 --samples 11 "
       "--trajectory " +
@@ -105,8 +104,7 @@ struct BadInput {
 class SolveCliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(SolveCliBadInput, OneLineNamingParameterValueAndRuleExitTwoNoFile) {
-  const auto path = std::filesystem::temp_directory_path() / "capsubot_bad_input.csv";
-  std::filesystem::remove(path);
+  const auto path = testing::TempPath("capsubot_bad_input.csv");
   const auto r = RunCli(std::string(GetParam().args) + " --trajectory " + path.string() + " 2>&1");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, std::string(GetParam().message) + "\n");

@@ -4,10 +4,12 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -40,6 +42,15 @@ inline double Quadrature(const std::function<double(double)>& f, double a, doubl
   double result = 0.0, error = 0.0;
   gsl_integration_qags(&fn, a, b, 1e-14, 1e-13, 1000, ws.get(), &result, &error);
   return result;
+}
+
+/// A path in the temporary directory unique to this process (test binaries of several build
+/// trees may run at once), removed first if it exists.
+inline std::filesystem::path TempPath(const std::string& name) {
+  const auto p = std::filesystem::temp_directory_path() /
+                 (std::to_string(static_cast<long>(::getpid())) + "_" + name);
+  std::filesystem::remove(p);
+  return p;
 }
 
 /// Output and exit status of a shell command.

@@ -43,6 +43,15 @@ struct Validity {
   std::vector<std::string> ViolationNames() const;
 };
 
+/// Relative rounding allowance of a force bound: a force whose extremum touches the bound
+/// (A + c = T0, the paper's boundary) is within it, whatever the last bit of its evaluation.
+inline constexpr double kForceBoundRelTol = 1e-12;
+
+/// force <= bound up to kForceBoundRelTol: the one test of every |F| <= bound condition.
+inline bool WithinForceBound(double force, double bound) {
+  return force <= bound * (1.0 + kForceBoundRelTol);
+}
+
 /// Checks every condition of MODEL.md section 5 with clearance `margin` (0 <= margin < 0.5).
 Validity CheckValidity(const Orbit& orbit, double margin);
 
