@@ -1,8 +1,36 @@
 #include "cli.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace capsubot::app {
+
+namespace {
+
+// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element must be a whole number ("1,,2" is a typo).
+std::vector<double> ParseCoefficients(const char* option, const std::string& text) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string element = text.substr(start, end - start);
+    char* stop = nullptr;
+    const double value = std::strtod(element.c_str(), &stop);
+    if (element.empty() || stop != element.c_str() + element.size()) {
+      throw std::invalid_argument(
+          fmt::format("{} = {} is invalid: expected comma-separated numbers (element {} is '{}')",
+                      option, text, values.size() + 1, element));
+    }
+    values.push_back(value);
+    if (end == text.size()) return values;
+    start = end + 1;
+  }
+}
+
+}  // namespace
 
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
   o.A_option = cmd.add_option("--A", o.A,
@@ -17,24 +45,25 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
         "the impact (required for the harmonic force; default 0 for a Fourier force)");
   }
   o.fourier_option =
-      cmd.add_option("--sin", o.sin_coefficients,
+      cmd.add_option("--sin", o.sin_text,
                      "Fourier force instead of A: sine coefficients b_1,...,b_K of "
                      "F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)), comma separated")
-          ->delimiter(',')
+          ->type_name("b1,b2,...")
           ->excludes(o.A_option);
-  cmd.add_option("--cos", o.cos_coefficients,
+  cmd.add_option("--cos", o.cos_text,
                  "cosine coefficients a_1,...,a_K of the Fourier force (as many as --sin; "
                  "default all 0)")
-      ->delimiter(',')
+      ->type_name("a1,a2,...")
       ->needs(o.fourier_option);
 }
 
 Forcing ForcingOptions::Build(bool need_phase) const {
   const bool has_phase = phi0_option != nullptr && phi0_option->count() > 0;
   if (fourier_option->count() > 0) {
-    std::vector<double> a = cos_coefficients;
-    if (a.empty()) a.assign(sin_coefficients.size(), 0.0);
-    return Forcing::Fourier(c, a, sin_coefficients, has_phase ? phi0 : 0.0);
+    const std::vector<double> b = ParseCoefficients("--sin", sin_text);
+    const std::vector<double> a = cos_text.empty() ? std::vector<double>(b.size(), 0.0)
+                                                   : ParseCoefficients("--cos", cos_text);
+    return Forcing::Fourier(c, a, b, has_phase ? phi0 : 0.0);
   }
   if (A_option->count() == 0) {
     throw std::invalid_argument("option --A is missing: give the amplitude A (or --sin/--cos)");

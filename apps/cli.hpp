@@ -24,7 +24,7 @@ struct ForcingOptions {
   double A = std::numeric_limits<double>::quiet_NaN();
   double c = std::numeric_limits<double>::quiet_NaN();
   double phi0 = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> cos_coefficients, sin_coefficients;
+  std::string cos_text, sin_text;  ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
   CLI::Option* A_option = nullptr;
   CLI::Option* phi0_option = nullptr;
   CLI::Option* fourier_option = nullptr;

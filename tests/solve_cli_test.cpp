@@ -142,6 +142,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "[rad]"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --samples 1",
                  "capsubot solve: error: --samples = 1 is invalid: expected at least 2"},
+        BadInput{"solve --c 0.5 --sin 1,,2",
+                 "capsubot solve: error: --sin = 1,,2 is invalid: expected comma-separated "
+                 "numbers (element 2 is '')"},
+        BadInput{"solve --c 0.5 --sin 0.1,0.2 --cos 0.1,x",
+                 "capsubot solve: error: --cos = 0.1,x is invalid: expected comma-separated "
+                 "numbers (element 2 is 'x')"},
         BadInput{"solve --c 0.5 --sin 0.1,0.2 --cos 0.1",
                  "capsubot solve: error: Fourier coefficients: 1 cosine and 2 sine terms given: "
                  "expected as many of each"}));
