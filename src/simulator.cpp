@@ -44,6 +44,7 @@ struct Segment {
   double alpha = 0.0, T0 = 0.0;
   double x0 = 0.0, u0 = 0.0, v0 = 0.0, y0 = 0.0;
   double sgn = 0.0, kx = 0.0, b = 0.0;
+  double tol = 0.0;  // |F - level| below this is "on the level" (kLevelTol * force scale)
 
   bool OnWall() const { return mode == SimMode::kOnRightWall || mode == SimMode::kOnLeftWall; }
   bool Sliding() const { return sgn != 0.0; }
@@ -86,10 +87,10 @@ void SetCoefficients(Segment& sg, double sgn) {
 //     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
 //     gives the first crossing;
 //   - piece starting on the wall (f(0) = 0, leaving it): concave cannot come back; convex
-//     comes back only after its minimum (root of f'), then as above.
+//     comes back only after its minimum (root of f'), then as above; a piece with F + b = 0
+//     within rounding (sg.tol) is neither: the body stays where it is.
 // Root finder: detail::SafeNewton (Newton with the closed-form derivative, kept inside the
-// bracket, bisection fallback), to ~1e-14 in phase. It holds no solver state, so the simulator
-// may run inside another root finder (GSL's thread-local Brent solver could not be nested).
+// bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver state.
 // Returns +inf when there is no zero in (0, limit].
 double FirstReach(const Segment& sg, double level, double dir, const PhaseList& cuts,
                   double limit) {
@@ -105,7 +106,7 @@ double FirstReach(const Segment& sg, double level, double dir, const PhaseList& 
     const double fr = f(r);
     const double curvature = dir * (sg.f.F(0.5 * (l + r)) + sg.b);  // sign of f'' on (l, r)
     if (l == 0.0 && start_on_wall) {
-      if (curvature > 0.0 && fr >= 0.0) {
+      if (curvature > sg.tol && fr >= 0.0) {
         // Convex, leaving the wall: it returns after its minimum.
         double lo = 0.0;
         if (df(0.0) < 0.0 && df(r) > 0.0) lo = detail::SafeNewton(df, ddf, 0.0, r);
@@ -150,15 +151,52 @@ double FirstStop(const Segment& sg, double limit) {
   return kInf;
 }
 
+// The first crossing of `level` after l + kMinCut, with `cuts` = the crossings in [0, tau)
+// repeated with period tau (F is tau-periodic); l + tau if there is none.
+double NextCut(const PhaseList& cuts, double l) {
+  for (int m = 0; m < 2; ++m) {
+    for (int i = 0; i < cuts.n; ++i) {
+      const double c = cuts.phi[i] + m * kTau;
+      if (c > l + kMinCut) return c;
+    }
+  }
+  return l + kTau;
+}
+
+// Sign of F - level on the open piece (l, r) between consecutive crossings of the level:
+// +1 or -1, or 0 when |F - level| <= tol in its middle (a touch, or a piece too short to
+// matter: F stays on the level within rounding). Deciding on the piece, never from dF at a
+// crossing, makes a tangential touch (dF = rounding noise of either sign) no crossing.
+double PieceSign(const Forcing& f, double level, double tol, double l, double r) {
+  const double g = f.F(0.5 * (l + r)) - level;
+  return g > tol ? 1.0 : g < -tol ? -1.0 : 0.0;
+}
+
+// Sign of F - level right after s = 0: on the first piece after 0 (first_only), or on the
+// first piece within a period where F leaves the level by more than tol (0: none).
+double SignAfterOrigin(const Forcing& f, double level, double tol, bool first_only) {
+  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+  double l = 0.0;
+  while (l < kTau) {
+    const double r = NextCut(cuts, l);
+    const double sign = PieceSign(f, level, tol, l, r);
+    if (sign != 0.0 || first_only) return sign;
+    l = r;
+  }
+  return 0.0;
+}
+
 // First s in [0, limit] where F crosses `level` in direction `dir` (+1 upwards, -1 downwards):
-// exact crossings from Forcing::Crossings; a tangential touch does not count.
-double FirstCrossing(const Forcing& f, double level, double dir, double limit) {
-  const PhaseList cuts = f.Crossings(level, 0.0, limit);
-  for (int i = 0; i < cuts.n; ++i) {
-    const double s = cuts.phi[i];
-    double slope = f.dF(s);
-    if (std::abs(slope) == 0.0) continue;
-    if (dir * slope > 0.0) return s;
+// the start of the first piece between exact crossings (Forcing::Crossings) on which
+// dir (F - level) > tol. A tangential touch (no sign change across it) does not count; s = 0
+// when F leaves the level that way right from the start.
+double FirstCrossing(const Forcing& f, double level, double dir, double tol, double limit) {
+  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+  double l = 0.0;
+  while (l <= limit) {
+    const double r = NextCut(cuts, l);
+    if (dir * PieceSign(f, level, tol, l, r) > 0.0) return l;
+    l = r;
   }
   return kInf;
 }
@@ -291,24 +329,28 @@ void Simulation::EmitSamplesBefore(double s_end, bool final) {
 
 // The free relative acceleration x'' = kx (F + b) at the origin, for capsule mode sgn, points
 // into the wall dir (+1 right, -1 left); for a body resting on the wall this is the sign of
-// the contact force (MODEL.md section 3 with u' = 0). On the level within rounding, the slope
-// of F decides (the level is being crossed).
+// the contact force (MODEL.md section 3 with u' = 0). It is the sign of F + b on the first
+// piece (between crossings of F with -b) after the origin where it is not zero within
+// rounding: a contact force that only touches zero, or is zero for an instant, keeps the body
+// on the wall (the same pieces decide a release in Run, so the two never disagree).
 bool Simulation::FreeAccelIntoWall(double dir, double sgn) const {
-  const double level = sg_.f.F(0.0) + sgn * sg_.alpha * sg_.T0;
-  if (std::abs(level) > kLevelTol * force_scale_) return dir * level > 0.0;
-  return dir * sg_.f.dF(0.0) > 0.0;
+  const double level = -sgn * sg_.alpha * sg_.T0, tol = kLevelTol * force_scale_;
+  const double g = sg_.f.F(0.0) - level;
+  if (std::abs(g) > 1e3 * tol) return dir * g > 0.0;  // far from the level: no crossing near
+  return dir * SignAfterOrigin(sg_.f, level, tol, false) > 0.0;
 }
 
 // Capsule at v = 0 (MODEL.md section 3): rest while |F| <= T0; it slides forward once
-// -F > T0, backward once F > T0. Returns the friction sign of the mode (0 = rest).
+// -F > T0, backward once F > T0. Returns the friction sign of the mode (0 = rest). On the
+// level within rounding, the sign of F -+ T0 on the piece right after the origin decides: a
+// force that only touches +-T0 is no break-away.
 double Simulation::RestOrSlide(double hint) const {
   if (hint != 0.0) return hint;
   const double F = sg_.f.F(0.0), T0 = sg_.T0, tol = kLevelTol * force_scale_;
   if (F > T0 + tol) return -1.0;
   if (F < -T0 - tol) return 1.0;
-  const double dF = sg_.f.dF(0.0);
-  if (F > T0 - tol && dF > 0.0) return -1.0;
-  if (F < -T0 + tol && dF < 0.0) return 1.0;
+  if (F > T0 - tol && SignAfterOrigin(sg_.f, T0, tol, true) > 0.0) return -1.0;
+  if (F < -T0 + tol && SignAfterOrigin(sg_.f, -T0, tol, true) < 0.0) return 1.0;
   return 0.0;
 }
 
@@ -409,6 +451,8 @@ SimResult Simulation::Run() {
   sg_.y0 = opt_.y0;
   const std::int64_t max_events =
       opt_.max_events_per_period * static_cast<std::int64_t>(std::ceil(opt_.periods));
+  const double tol = kLevelTol * force_scale_;
+  sg_.tol = tol;
   int stalled = 0;
   res_.status = SimStatus::kOk;
   Settle(0.0);
@@ -426,7 +470,7 @@ SimResult Simulation::Run() {
     if (sg_.OnWall()) {
       const double dir = sg_.mode == SimMode::kOnRightWall ? 1.0 : -1.0;
       if (sg_.Sliding()) best = sg_.v0 / (sg_.sgn * sg_.T0);
-      const double s = FirstCrossing(sg_.f, -sg_.b, -dir, std::min(W, best));
+      const double s = FirstCrossing(sg_.f, -sg_.b, -dir, tol, std::min(W, best));
       if (s <= best) {
         best = s;
         kind = EventKind::kRelease;
@@ -435,8 +479,8 @@ SimResult Simulation::Run() {
       if (sg_.Sliding()) {
         best = FirstStop(sg_, W);
       } else {
-        const double back = FirstCrossing(sg_.f, sg_.T0, 1.0, W);
-        const double fwd = FirstCrossing(sg_.f, -sg_.T0, -1.0, std::min(W, back));
+        const double back = FirstCrossing(sg_.f, sg_.T0, 1.0, tol, W);
+        const double fwd = FirstCrossing(sg_.f, -sg_.T0, -1.0, tol, std::min(W, back));
         best = std::min(back, fwd);
         hint = fwd <= back ? 1.0 : -1.0;
         kind = EventKind::kBreakaway;

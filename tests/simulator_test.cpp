@@ -418,6 +418,115 @@ TEST(Simulator, DenseSamplesOfRandomRunsRespectWallsModesAndFriction) {
   EXPECT_EQ(runs, 120);
 }
 
+// A force that only TOUCHES the friction bound (A + c = T0, the paper's boundary, where the
+// P2/P3 optima sit) never moves the resting capsule: at the touch dF is rounding noise of
+// either sign, which must not be taken for a break-away (before the fix: a fake break-away,
+// an immediate stop, again and again until the stall guard gave up with event_limit).
+struct TouchCase {
+  std::string name;
+  bool fourier;
+  double T0;  // force scale: A = 0.7 T0, c = 0.3 T0 (second harmonic for Fourier)
+};
+
+class ForceTouchingFriction : public ::testing::TestWithParam<TouchCase> {};
+
+// Few events: at T0 = 0.01 the body stays between the walls (no event at all); at T0 = 1 it
+// hits the walls and chatters (e = 0.5), 50-65 events in 1.5 periods (counted with the fixed
+// simulator); a stall is stopped only after 1000 events without progress.
+constexpr std::int64_t kFewEvents = 200;
+
+TEST_P(ForceTouchingFriction, RestingCapsuleDoesNotBreakAwayAndTheRunEndsOk) {
+  const TouchCase& k = GetParam();
+  constexpr int kPhases = 48;  // impact phases over the circle: the touch at every position
+  for (int i = 0; i < kPhases; ++i) {
+    const double phi0 = -M_PI + kTau * i / kPhases;
+    const Forcing f = k.fourier
+                          ? Forcing::Fourier(0.3 * k.T0, {0.0, 0.1 * k.T0}, {0.7 * k.T0, 0.0}, phi0)
+                          : Forcing::Harmonic(0.7 * k.T0, 0.3 * k.T0, phi0);
+    Params p;
+    // The Fourier force's maximum is not a round number: T0 is its exact max |F|.
+    p.T0 = k.fourier ? f.MaxAbs() : k.T0;
+    p.e = 0.5;
+    SimOptions opt;
+    opt.alpha = 0.5;
+    opt.x0 = 0.5;
+    opt.u0 = 0.0;
+    opt.v0 = 0.0;
+    opt.periods = 1.5;
+    const SimResult r = Simulate(f, p, opt);
+    SCOPED_TRACE("phi0 = " + std::to_string(phi0));
+    EXPECT_EQ(r.status, SimStatus::kOk) << r.message;
+    EXPECT_EQ(r.breakaways, 0);  // |F| <= T0 everywhere: no real break-away exists
+    EXPECT_LT(r.events, kFewEvents);
+    if (k.T0 < 0.1) {
+      EXPECT_EQ(r.events, 0);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Simulator, ForceTouchingFriction,
+                         ::testing::Values(TouchCase{"harmonic_T0_0p01", false, 0.01},
+                                           TouchCase{"harmonic_T0_1", false, 1.0},
+                                           TouchCase{"fourier_T0_0p01", true, 0.01},
+                                           TouchCase{"fourier_T0_1", true, 1.0}),
+                         [](const ::testing::TestParamInfo<TouchCase>& info) {
+                           return info.param.name;
+                         });
+
+// A body resting on a wall whose contact force only touches zero (c = A: F = A (sin + 1) >= 0
+// pushes into the right wall; the mirror force into the left one) stays on the wall: a touch
+// is no release (before the fix: a fake release, then zero-velocity impacts at the same phase
+// until the stall guard gave up with event_limit).
+TEST(Simulator, ContactForceTouchingZeroKeepsTheBodyOnTheWall) {
+  constexpr int kPhases = 32;
+  for (const double scale : {0.01, 0.5}) {
+    for (const double dir : {1.0, -1.0}) {
+      for (int i = 0; i < kPhases; ++i) {
+        const double phi0 = -M_PI + kTau * i / kPhases;
+        // dir = -1: -scale (sin(phi + phi0) + 1), pushing into the left wall.
+        const Forcing f = Forcing::Harmonic(scale, dir * scale, dir > 0.0 ? phi0 : phi0 + M_PI);
+        Params p;
+        p.T0 = 2.0 * scale;  // the capsule rests: |F| <= 2 scale
+        p.e = 0.5;
+        SimOptions opt;
+        opt.alpha = 0.5;
+        opt.x0 = dir > 0.0 ? 1.0 : 0.0;
+        opt.u0 = 0.0;
+        opt.v0 = 0.0;
+        opt.periods = 2.0;
+        const SimResult r = Simulate(f, p, opt);
+        SCOPED_TRACE("scale " + std::to_string(scale) + " dir " + std::to_string(dir) + " phi0 " +
+                     std::to_string(phi0));
+        EXPECT_EQ(r.status, SimStatus::kOk) << r.message;
+        EXPECT_EQ(r.sticks, 1);  // at the start, pushed into the wall
+        EXPECT_EQ(r.releases, 0);
+        EXPECT_EQ(r.events, 1);
+        EXPECT_EQ(r.final_state.mode, dir > 0.0 ? SimMode::kOnRightWall : SimMode::kOnLeftWall);
+      }
+    }
+  }
+}
+
+// The same touch reached from inside: the body comes to the right wall (A = c = 0.5, T0 = 1,
+// the reviewer's case), chatters (e = 1: by the cut-off), rests on the wall, and the contact
+// force F = 0.5 (sin + 1) touches zero at phase 3 pi / 2 without changing sign.
+TEST(Simulator, BodyComingToRestOnTheWallStaysThroughATouchOfTheContactForce) {
+  const Forcing f = Forcing::Harmonic(0.5, 0.5, 0.0);
+  Params p;
+  SimOptions opt;
+  opt.alpha = 0.5;
+  opt.x0 = 0.5;
+  opt.u0 = 0.0;
+  opt.v0 = 0.0;
+  opt.periods = 3.0;
+  const SimResult r = Simulate(f, p, opt);
+  EXPECT_EQ(r.status, SimStatus::kOk) << r.message;
+  EXPECT_EQ(r.releases, 0);
+  EXPECT_EQ(r.sticks, 1);
+  EXPECT_LT(r.events, 200);  // the chattering run-in, not the work bound
+  EXPECT_EQ(r.final_state.mode, SimMode::kOnRightWall);
+}
+
 TEST(SimOptions, BadInputsAreRejectedWithTheirRule) {
   const auto message = [](SimOptions o) {
     try {
