@@ -449,8 +449,11 @@ SimResult Simulation::Run() {
   sg_.u0 = opt_.u0;
   sg_.v0 = opt_.v0;
   sg_.y0 = opt_.y0;
-  const std::int64_t max_events =
-      opt_.max_events_per_period * static_cast<std::int64_t>(std::ceil(opt_.periods));
+  // The work bound, saturated: the product of two valid options may exceed int64.
+  const double events_bound =
+      static_cast<double>(opt_.max_events_per_period) * std::ceil(opt_.periods);
+  const std::int64_t max_events = events_bound >= 9.2e18 ? std::numeric_limits<std::int64_t>::max()
+                                                         : static_cast<std::int64_t>(events_bound);
   const double tol = kLevelTol * force_scale_;
   sg_.tol = tol;
   int stalled = 0;

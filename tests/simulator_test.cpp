@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -525,6 +526,32 @@ TEST(Simulator, BodyComingToRestOnTheWallStaysThroughATouchOfTheContactForce) {
   EXPECT_EQ(r.sticks, 1);
   EXPECT_LT(r.events, 200);  // the chattering run-in, not the work bound
   EXPECT_EQ(r.final_state.mode, SimMode::kOnRightWall);
+}
+
+// max_events_per_period * ceil(periods) is beyond int64 for valid options: the bound
+// saturates (before the fix the product overflowed, here wrapping to 0: an immediate
+// event_limit at phase 0).
+TEST(Simulator, HugeWorkBoundSaturatesInsteadOfOverflowing) {
+  const Forcing f = Forcing::Harmonic(0.05, 0.02, 0.0);
+  Params p;
+  p.T0 = 0.1;
+  SimOptions opt;
+  opt.alpha = 0.3;
+  opt.x0 = 0.5;
+  opt.u0 = 0.3;  // reaches the right wall within a period
+  opt.v0 = 0.0;
+  opt.max_impacts_right = 1;
+  for (const double periods : {4.0, 1e8}) {
+    for (const std::int64_t per_period : {std::int64_t{1} << 62, std::int64_t{1000000000000000},
+                                          std::numeric_limits<std::int64_t>::max()}) {
+      opt.periods = periods;
+      opt.max_events_per_period = per_period;
+      const SimResult r = Simulate(f, p, opt);
+      EXPECT_EQ(r.status, SimStatus::kImpactLimit)
+          << "periods " << periods << " per period " << per_period << ": " << r.message;
+      EXPECT_EQ(r.impacts_right, 1);
+    }
+  }
 }
 
 TEST(SimOptions, BadInputsAreRejectedWithTheirRule) {

@@ -84,6 +84,7 @@ struct SimOptions {
   /// inner body into the wall, ends in the body resting on the wall (chattering cut-off). > 0.
   double chatter_velocity = 1e-6;
   /// Work bound: at most this many events per simulated period (then status kEventLimit). >= 10.
+  /// The total, this times ceil(periods), saturates at the largest std::int64_t (no overflow).
   std::int64_t max_events_per_period = 100000;
   /// Phase step of OnSample calls (0: no samples); >= 0.
   double sample_step = 0.0;
