@@ -50,26 +50,29 @@ Forcing Force(const Case& k, double phi0) {
                    : Forcing::Harmonic(k.A, k.c, phi0);
 }
 
+Params CaseParams(const Case& k) {
+  Params p;
+  p.T0 = k.T0;
+  p.e = k.e;
+  return p;
+}
+
+// The orbits of a kScan-phase scan whose violations are exactly `want_violations`.
+std::vector<Solution> ScanOrbits(const Case& k, unsigned want_violations) {
+  std::vector<Solution> out;
+  for (int i = 0; i < kScan; ++i) {
+    const Solution s = Solve(Force(k, -M_PI + kTau * i / kScan), CaseParams(k));
+    if (s.orbit.ok() && s.validity.violations == want_violations) out.push_back(s);
+  }
+  return out;
+}
+
 class ValidOrbitGrid : public ::testing::TestWithParam<Case> {
  protected:
   std::vector<Solution> Scan(unsigned want_violations) const {
-    const Case& k = GetParam();
-    Params p;
-    p.T0 = k.T0;
-    p.e = k.e;
-    std::vector<Solution> out;
-    for (int i = 0; i < kScan; ++i) {
-      const Solution s = Solve(Force(k, -M_PI + kTau * i / kScan), p);
-      if (s.orbit.ok() && s.validity.violations == want_violations) out.push_back(s);
-    }
-    return out;
+    return ScanOrbits(GetParam(), want_violations);
   }
-  Params P() const {
-    Params p;
-    p.T0 = GetParam().T0;
-    p.e = GetParam().e;
-    return p;
-  }
+  Params P() const { return CaseParams(GetParam()); }
 };
 
 TEST_P(ValidOrbitGrid, ReturnsToPostImpactStateAfterOnePeriodWithOneImpactAndOneStop) {
@@ -105,25 +108,6 @@ TEST_P(ValidOrbitGrid, SimulatedMeanVelocityEqualsAnalytic) {
   }
 }
 
-TEST_P(ValidOrbitGrid, OrbitInvalidByLeftWallHitsTheLeftWall) {
-  for (const Solution& s : Scan(1U << static_cast<unsigned>(Condition::kLeftWall))) {
-    SCOPED_TRACE("phi0 = " + std::to_string(s.orbit.forcing.phi0()));
-    const SimResult r = Simulate(s.orbit.forcing, P(), PostImpact(s.orbit, 1.0));
-    EXPECT_GE(r.impacts_left, 1);
-  }
-}
-
-TEST_P(ValidOrbitGrid, OrbitInvalidByRightWallHitsTheRightWallEarly) {
-  for (const Solution& s : Scan(1U << static_cast<unsigned>(Condition::kRightWall))) {
-    SCOPED_TRACE("phi0 = " + std::to_string(s.orbit.forcing.phi0()));
-    SimOptions opt = PostImpact(s.orbit, 1.0);
-    opt.max_impacts_right = 1;
-    const SimResult r = Simulate(s.orbit.forcing, P(), opt);
-    EXPECT_EQ(r.status, SimStatus::kImpactLimit);
-    EXPECT_LT(r.final_state.phi, kTau - 1e-6);
-  }
-}
-
 // Parameter sets chosen with a scan of `capsubot solve` over phi0 (tests/simulator_test.cpp
 // scan, 64 phases): each holds valid orbits; T0 from 0.01 to 0.3, e from 0 to 1.
 INSTANTIATE_TEST_SUITE_P(
@@ -137,6 +121,59 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"fourier_T0_0p1_e_0p5", true, 0.05, 0.02, 0.1, 0.5, 10},
                       Case{"fourier_T0_0p02_e_0p2", true, 0.01, 0.004, 0.02, 0.2, 5}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// Orbits that the validity check rejects for one wall condition alone must show that wall in
+// simulation. Each parameter set holds at least min_left orbits invalid by the left-wall
+// condition alone and min_right by the right-wall condition alone (counted with a 64-phase
+// scan of `capsubot solve`; about half the count found), so no instantiation checks nothing.
+struct WallCase {
+  Case k;
+  int min_left, min_right;
+};
+
+class WallViolationGrid : public ::testing::TestWithParam<WallCase> {};
+
+TEST_P(WallViolationGrid, OrbitInvalidByLeftWallHitsTheLeftWall) {
+  const Case& k = GetParam().k;
+  const std::vector<Solution> left =
+      ScanOrbits(k, 1U << static_cast<unsigned>(Condition::kLeftWall));
+  ASSERT_GE(static_cast<int>(left.size()), GetParam().min_left);
+  for (const Solution& s : left) {
+    SCOPED_TRACE("phi0 = " + std::to_string(s.orbit.forcing.phi0()));
+    const SimResult r = Simulate(s.orbit.forcing, CaseParams(k), PostImpact(s.orbit, 1.0));
+    EXPECT_GE(r.impacts_left, 1);
+  }
+}
+
+TEST_P(WallViolationGrid, OrbitInvalidByRightWallHitsTheRightWallEarly) {
+  const Case& k = GetParam().k;
+  const std::vector<Solution> right =
+      ScanOrbits(k, 1U << static_cast<unsigned>(Condition::kRightWall));
+  ASSERT_GE(static_cast<int>(right.size()), GetParam().min_right);
+  for (const Solution& s : right) {
+    SCOPED_TRACE("phi0 = " + std::to_string(s.orbit.forcing.phi0()));
+    SimOptions opt = PostImpact(s.orbit, 1.0);
+    opt.max_impacts_right = 1;
+    const SimResult r = Simulate(s.orbit.forcing, CaseParams(k), opt);
+    EXPECT_EQ(r.status, SimStatus::kImpactLimit);
+    EXPECT_LT(r.final_state.phi, kTau - 1e-6);
+  }
+}
+
+// Found counts (left, right): (2, 13), (1, 16), (6, 13), (8, 15), (15, 7), (1, 7), (3, 7),
+// (5, 14), (1, 6).
+INSTANTIATE_TEST_SUITE_P(
+    Simulator, WallViolationGrid,
+    ::testing::Values(WallCase{{"harmonic_T0_0p1_e_0p2", false, 0.05, 0.01, 0.1, 0.2, 0}, 1, 6},
+                      WallCase{{"harmonic_T0_0p1_e_0p5", false, 0.07, 0.01, 0.1, 0.5, 0}, 1, 8},
+                      WallCase{{"harmonic_T0_0p3_e_0p5", false, 0.15, 0.03, 0.3, 0.5, 0}, 3, 6},
+                      WallCase{{"harmonic_T0_0p3_e_0p2", false, 0.21, 0.03, 0.3, 0.2, 0}, 4, 7},
+                      WallCase{{"harmonic_T0_0p3_e_1", false, 0.21, 0.06, 0.3, 1.0, 0}, 7, 3},
+                      WallCase{{"harmonic_T0_0p02_e_0p2", false, 0.014, 0.004, 0.02, 0.2, 0}, 1, 3},
+                      WallCase{{"fourier_T0_0p1_e_0p5", true, 0.07, 0.02, 0.1, 0.5, 0}, 1, 3},
+                      WallCase{{"fourier_T0_0p3_e_0p8", true, 0.15, 0.03, 0.3, 0.8, 0}, 2, 7},
+                      WallCase{{"fourier_T0_0p02_e_0p2", true, 0.014, 0.004, 0.02, 0.2, 0}, 1, 3}),
+    [](const ::testing::TestParamInfo<WallCase>& info) { return info.param.k.name; });
 
 // A free rest phase x = x0 + u0 s + Phi(s)/alpha (MODEL.md section 3) whose maximum lies
 // 1e-10 below or above the right wall: the grazing contact must be seen exactly when it
