@@ -62,6 +62,15 @@ Forcing Forcing::WithPhase(double phi0) const {
   return f;
 }
 
+Forcing Forcing::InImpactFrame() const {
+  Forcing f = *this;
+  f.a_ = ra_;
+  f.b_ = rb_;
+  f.phi0_ = 0.0;
+  f.Rotate();
+  return f;
+}
+
 void Forcing::Rotate() {
   // a cos k(phi+phi0) + b sin k(phi+phi0) = (a cos k phi0 + b sin k phi0) cos k phi
   //                                        + (b cos k phi0 - a sin k phi0) sin k phi.

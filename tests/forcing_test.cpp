@@ -111,6 +111,28 @@ TEST_P(ForcingFamilies, WithPhaseShiftsTheMotorPhase) {
   for (double phi : {0.0, 1.0, 4.0}) EXPECT_TRUE(Near(g.F(phi), f.F(phi + 0.8), 1e-13));
 }
 
+TEST_P(ForcingFamilies, InImpactFrameIsTheSameForceWithTheImpactAtPhaseZero) {
+  const Forcing& f = GetParam().forcing;
+  const Forcing g = f.InImpactFrame();
+  EXPECT_EQ(g.phi0(), 0.0);
+  EXPECT_EQ(g.mean(), f.mean());
+  ASSERT_EQ(g.harmonics(), f.harmonics());
+  // The same numbers, not only the same function: MaxAbs decides a force bound in its last bit.
+  for (double phi : {0.0, 1.0, 2.5, 4.0, 6.0}) {
+    EXPECT_EQ(g.F(phi), f.F(phi));
+    EXPECT_EQ(g.Pi(phi), f.Pi(phi));
+    EXPECT_EQ(g.Phi(phi), f.Phi(phi));
+  }
+  EXPECT_EQ(g.MaxAbs(), f.MaxAbs());
+  // Its base coefficients are the rotated ones: a_k cos k phi0 + b_k sin k phi0 and
+  // b_k cos k phi0 - a_k sin k phi0 (angle addition), so F(phi) = G(phi) with phi0 = 0.
+  for (int k = 1; k <= f.harmonics(); ++k) {
+    const double ck = std::cos(k * f.phi0()), sk = std::sin(k * f.phi0());
+    EXPECT_TRUE(Near(g.a(k), f.a(k) * ck + f.b(k) * sk, 1e-15));
+    EXPECT_TRUE(Near(g.b(k), f.b(k) * ck - f.a(k) * sk, 1e-15));
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Families, ForcingFamilies,
     ::testing::Values(Case{"paper_example", Forcing::Harmonic(0.5, 0.5, -2.9449)},

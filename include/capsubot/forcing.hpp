@@ -41,6 +41,9 @@ class Forcing {
 
   /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)).
   Forcing WithPhase(double phi0) const;
+  /// The same force F(phi) as a series in the phase seen from the impact: phi0 = 0, base
+  /// coefficients = the rotated ones, so F, Pi, MaxAbs, ... give the same numbers (cheap: O(K)).
+  Forcing InImpactFrame() const;
 
   double phi0() const { return phi0_; }        ///< motor phase at the impact
   double mean() const { return c_; }           ///< c, the mean force: Pi(tau) = c*tau
