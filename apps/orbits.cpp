@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <memory>
 
 #include "capsubot/robot_orbits.hpp"
@@ -17,21 +18,30 @@ struct OrbitsOptions {
   ForcingOptions forcing;
   Params params;
   double alpha = std::numeric_limits<double>::quiet_NaN();
+  std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations;
   bool json = false;
 };
+
+// Said when the search hit its work bound: the list is then not known to be complete.
+constexpr const char* kIncompleteNote =
+    "the search stopped at its work bound (--max-evaluations): orbits may be missing";
 
 int Run(const OrbitsOptions& opt) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build(false);
-  const std::vector<Solution> found = FindRobotOrbits(forcing, opt.params, opt.alpha);
+  bool complete = true;
+  const std::vector<Solution> found =
+      FindRobotOrbits(forcing, opt.params, opt.alpha, &complete, opt.max_evaluations);
   if (opt.json) {
     nlohmann::json all = nlohmann::json::array();
     for (const Solution& s : found) {
       nlohmann::json j = SolutionJson(s);
       AddStabilityJson(j, ComputeStability(s.orbit));
+      j["complete"] = complete;
       all.push_back(j);
     }
     fmt::print("{}\n", all.dump());
+    if (!complete) fmt::print(stderr, "capsubot orbits: note: {}\n", kIncompleteNote);
     return 0;
   }
   std::string t = fmt::format("one-impact orbits of the robot with alpha = {:.10g}\n", opt.alpha);
@@ -40,6 +50,7 @@ int Run(const OrbitsOptions& opt) {
   t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", opt.params.T0, opt.params.e,
                    opt.params.margin);
   t += fmt::format("  {} orbit(s)\n", found.size());
+  if (!complete) t += fmt::format("  note: {}\n", kIncompleteNote);
   if (!found.empty()) {
     t += fmt::format("  {:>14}  {:>10}  {:>14}  {:>15}  {:>8}  {}\n", "phi0", "phi1", "v_mean",
                      "spectral_radius", "stable", "valid");
@@ -72,9 +83,15 @@ Command AddOrbitsCommand(CLI::App& app) {
   AddParamsOptions(*cmd, opt->params);
   cmd->add_option("--alpha", opt->alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
+  cmd->add_option("--max-evaluations", opt->max_evaluations,
+                  "work bound of the search: evaluations of the orbit equation while refining "
+                  "the circle, >= 1 (default 4000000, far above what the tested forces need); "
+                  "when it is hit, orbits may be missing: a note says so")
+      ->capture_default_str();
   cmd->add_flag("--json", opt->json,
                 "print a JSON array with one object per orbit, sorted by phi0, with the keys of "
-                "`solve --stability --json`");
+                "`solve --stability --json` and complete (false: the search hit its work bound "
+                "and orbits may be missing; a note on stderr then says so)");
   return {cmd, [opt] { return Run(*opt); }};
 }
 

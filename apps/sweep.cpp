@@ -134,7 +134,9 @@ Command AddSweepCommand(CLI::App& app) {
                   "(n = 1: lo), name among A, c, phi0, T0, e, margin, alpha (lo, hi may be "
                   "pi or -pi). Give 1 or 2 grids; with 2 the first varies slowest. alpha "
                   "(robot mode) finds every orbit of the robot with that mass ratio: one row "
-                  "per orbit, with columns orbits, orbit, phi0")
+                  "per orbit, with columns orbits, orbit, phi0 (if that search ever hits its "
+                  "work bound, the sweep stops with an error rather than write rows that may "
+                  "miss orbits)")
       ->required()
       ->take_all()
       ->allow_extra_args(false);

@@ -13,10 +13,9 @@ namespace capsubot {
 namespace {
 
 constexpr double kPi = 0.5 * kTau;
-constexpr int kInitialGrid = 512;          // first partition of the circle
-constexpr double kMinWidth = 1e-10;        // phase resolution of the exclusion refinement
-constexpr double kSameRoot = 1e-8;         // two candidates closer than this are one root
-constexpr long kMaxEvaluations = 4000000;  // work bound (never reached in practice)
+constexpr int kInitialGrid = 512;    // first partition of the circle
+constexpr double kMinWidth = 1e-10;  // phase resolution of the exclusion refinement
+constexpr double kSameRoot = 1e-8;   // two candidates closer than this are one root
 
 // Why no root is missed.
 //
@@ -30,11 +29,11 @@ constexpr long kMaxEvaluations = 4000000;  // work bound (never reached in pract
 //   |dPsi/dphi0| <= L = tau S (1 + a).
 // A root in [lo, hi] (width w) therefore needs |Psi(lo)| + |Psi(hi)| <= L w: an interval where
 // this fails is excluded rigorously; the others are halved down to kMinWidth, where a sign
-// change is located by Brent and a non-crossing (double) root is accepted when |Psi| is at the
-// level L*kMinWidth. phi1 is smooth for every phi0 when max|F| < T0 (g strictly decreasing).
-// Otherwise the first root of g can jump where g touches zero, and Psi jumps with it: then
-// only the one-sided test min(|Psi(lo)|, |Psi(hi)|) > L w is used (valid with one jump in the
-// interval), and a "sign change" at a jump is rejected because Psi is not small there.
+// change is located by Newton (bisection safeguard) and a non-crossing (double) root is accepted
+// when |Psi| is at the level L*kMinWidth. phi1 is smooth for every phi0 when max|F| < T0 (g
+// strictly decreasing). Otherwise the first root of g can jump where g touches zero, and Psi jumps
+// with it: then only the one-sided test min(|Psi(lo)|, |Psi(hi)|) > L w is used (valid with one
+// jump in the interval), and a "sign change" at a jump is rejected because Psi is not small there.
 struct PsiFunction {
   const Forcing* forcing;
   const Params* params;
@@ -54,12 +53,18 @@ struct PsiFunction {
 
 }  // namespace
 
-std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha) {
+std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
+                                      bool* complete, std::int64_t max_evaluations) {
   params.Validate();
   if (!(alpha > 0.0 && alpha < 1.0)) {
     throw std::invalid_argument(
         fmt::format("mass ratio alpha = {} is invalid: expected 0 < alpha < 1", alpha));
   }
+  if (max_evaluations < 1) {
+    throw std::invalid_argument(
+        fmt::format("max_evaluations = {} is invalid: expected >= 1", max_evaluations));
+  }
+  if (complete != nullptr) *complete = true;
   std::vector<Solution> found;
   double S = 0.0;
   for (int k = 1; k <= forcing.harmonics(); ++k) S += std::hypot(forcing.a(k), forcing.b(k));
@@ -91,8 +96,8 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     stack.push_back({lo, hi, prev, next});
     prev = next;
   }
-  long evaluations = kInitialGrid + 1;
-  while (!stack.empty() && evaluations < kMaxEvaluations) {
+  std::int64_t evaluations = kInitialGrid + 1;
+  while (!stack.empty() && evaluations < max_evaluations) {
     const Interval iv = stack.back();
     stack.pop_back();
     const double w = iv.hi - iv.lo, bound = L * w + 2.0 * noise;
@@ -100,8 +105,9 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     if (smooth ? alo + ahi > bound : std::min(alo, ahi) > bound) continue;  // no root here
     if (w <= kMinWidth) {
       const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
-      // Not detail::Brent: Psi itself runs the thread's GSL Brent solver (phi1), which a nested
-      // use would reset. Newton inside the bracket (bisection fallback) needs no solver state.
+      // Newton with the envelope derivative inside the bracket (bisection fallback). Psi runs
+      // detail::Brent for phi1; nesting another Brent here would be safe too (one GSL solver
+      // per nesting depth, detail::BrentLease), Newton just converges quadratically.
       const double r = crossing
                            ? detail::SafeNewton(
                                  psi, [&psi](double p) { return psi.Derivative(p); }, iv.lo, iv.hi)
@@ -116,6 +122,8 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     stack.push_back({mid, iv.hi, pmid, iv.phi});
     stack.push_back({iv.lo, mid, iv.plo, pmid});
   }
+  // Undecided intervals left: the work bound stopped the search, roots there are missing.
+  if (complete != nullptr) *complete = stack.empty();
   // Candidates within kSameRoot are one root: keep the sign change (the neighbouring
   // intervals of a simple root may pass the |Psi| test too), else the smallest |Psi|.
   std::sort(roots.begin(), roots.end(),

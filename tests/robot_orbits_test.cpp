@@ -164,10 +164,37 @@ TEST(RobotOrbitsInput, BadMassRatioIsRejectedWithItsRule) {
   }
 }
 
+// The work bound: a search stopped by it says so (the list may miss orbits), a full search
+// says it is complete. The Fourier force with roots close together near the fold needs a few
+// thousand refinement steps beyond the 513 points of the first grid; 600 cannot decide it.
+TEST(RobotOrbitsInput, SearchStoppedByTheWorkBoundIsReportedIncomplete) {
+  const Forcing f = Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0);
+  Params p;
+  p.T0 = 0.1;
+  p.e = 0.5;
+  bool complete = false;
+  const std::vector<Solution> all = FindRobotOrbits(f, p, 0.199, &complete);
+  EXPECT_TRUE(complete);
+  EXPECT_GE(all.size(), 2U);
+  complete = true;
+  const std::vector<Solution> cut = FindRobotOrbits(f, p, 0.199, &complete, 600);
+  EXPECT_FALSE(complete);
+  EXPECT_LE(cut.size(), all.size());
+  try {
+    FindRobotOrbits(f, p, 0.199, &complete, 0);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "max_evaluations = 0 is invalid: expected >= 1");
+  }
+}
+
 TEST(RobotOrbitsInput, NoOrbitWithoutPositiveMeanForce) {
   Params p;
   EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3).empty());
   EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, -0.1, 0.0), p, 0.3).empty());
+  bool complete = false;  // nothing to search: complete
+  EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3, &complete).empty());
+  EXPECT_TRUE(complete);
 }
 
 }  // namespace

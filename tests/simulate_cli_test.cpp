@@ -182,5 +182,31 @@ TEST(OrbitsCli, ListsEveryOrbitOfTheRobotWithTheKeysOfSolveStability) {
   EXPECT_NE(table.out.find("2 orbit(s)"), std::string::npos) << table.out;
 }
 
+// A search stopped by its work bound says so: a note line in the table, complete = false in
+// every JSON object and a note on stderr; a full search has complete = true. The Fourier
+// force near the fold of alpha(phi0) needs between 3500 and 4500 evaluations (measured):
+// with 3500 both orbits are found but the search is not finished, with 600 none is found.
+TEST(OrbitsCli, SearchStoppedByTheWorkBoundSaysOrbitsMayBeMissing) {
+  const std::string force = "--c 0.02 --sin 0.04,0.01,0 --cos 0.01,0,0.005 --T0 0.1 --e 0.5";
+  const auto full = Json("orbits " + force + " --alpha 0.199 --json");
+  ASSERT_GE(full.size(), 2U);
+  for (const auto& o : full) EXPECT_EQ(o["complete"], true);
+  const auto table = RunCli("orbits " + force + " --alpha 0.199 --max-evaluations 600");
+  EXPECT_EQ(table.status, 0);
+  EXPECT_NE(table.out.find("note: the search stopped at its work bound"), std::string::npos)
+      << table.out;
+  const auto cut = Json("orbits " + force + " --alpha 0.199 --max-evaluations 3500 --json");
+  ASSERT_GE(cut.size(), 1U);
+  for (const auto& o : cut) EXPECT_EQ(o["complete"], false);
+  const auto note = RunCli("orbits " + force + " --alpha 0.199 --max-evaluations 600 --json 2>&1");
+  EXPECT_EQ(note.status, 0);
+  EXPECT_NE(note.out.find("capsubot orbits: note: the search stopped"), std::string::npos)
+      << note.out;
+  const auto bad = RunCli("orbits " + force + " --alpha 0.199 --max-evaluations 0 2>&1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("max_evaluations = 0 is invalid: expected >= 1"), std::string::npos)
+      << bad.out;
+}
+
 }  // namespace
 }  // namespace capsubot

@@ -5,15 +5,24 @@
 // alpha(phi0) = alpha over the circle, where alpha(phi0) is the mass ratio that closes the
 // orbit of section 4 for the force with impact phase phi0.
 
+#include <cstdint>
 #include <vector>
 
 #include "capsubot/validity.hpp"
 
 namespace capsubot {
 
+/// Default work bound of FindRobotOrbits: evaluations of the orbit equation while refining
+/// the circle (the search needs far fewer for every force tested; see README).
+inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
+
 /// Every one-impact orbit of a robot with fixed mass ratio alpha: all roots phi0 in [-pi, pi) of
 /// alpha(phi0) = alpha (MODEL.md section 8), each solved and checked (the forcing's own phi0 is
-/// ignored).
-std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha);
+/// ignored). If the work bound max_evaluations (>= 1) stops the search before every part of
+/// the circle is decided, the list may miss orbits: *complete (if given) is set to false then,
+/// true otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations.
+std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
+                                      bool* complete = nullptr,
+                                      std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations);
 
 }  // namespace capsubot

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 
 #include "capsubot/optimize_phase.hpp"
 #include "capsubot/robot_orbits.hpp"
@@ -156,7 +157,14 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
     }
   };
   if (RobotMode(options_)) {
-    const std::vector<Solution> orbits = FindRobotOrbits(forcing_, params_, alpha_);
+    bool complete = true;
+    const std::vector<Solution> orbits = FindRobotOrbits(forcing_, params_, alpha_, &complete);
+    if (!complete) {  // never write a row set that may miss orbits
+      throw std::runtime_error(fmt::format(
+          "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "
+          "orbits may be missing",
+          point, alpha_));
+    }
     if (orbits.empty()) {
       append_axes();
       // orbits = 0, then empty cells: orbit, phi0, 8 numbers, valid, violations [, 2]
