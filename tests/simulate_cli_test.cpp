@@ -109,6 +109,22 @@ TEST(SimulateCli, TableNamesTheEventCounts) {
       << r.out;
 }
 
+// The review's reproductions: a resting capsule under a force touching T0 (A + c = T0) and a
+// body resting on the wall while F = 0.5 (sin + 1) touches 0 at 3 pi / 2. Before the
+// simulator decided touches on the piece after them, both ended with status event_limit.
+TEST(SimulateCli, ForceTouchingALevelEndsOk) {
+  const auto rest = Json(
+      "simulate --A 0.007 --c 0.003 --T0 0.01 --phi0 1 --alpha 0.5 --x0 0.5 --u0 0 --v0 0 "
+      "--periods 0.5 --json");
+  EXPECT_EQ(rest["status"], "ok") << rest["message"];
+  EXPECT_EQ(rest["events"], 0);
+  const auto wall =
+      Json("simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 --v0 0 --json");
+  EXPECT_EQ(wall["status"], "ok") << wall["message"];
+  EXPECT_EQ(wall["releases"], 0);
+  EXPECT_EQ(wall["mode"], "on_right_wall");
+}
+
 TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
   struct Bad {
     std::string args, message;
