@@ -23,13 +23,15 @@
 #include "capsubot/optimize_phase.hpp"
 #include "detail/nlopt_problem.hpp"
 #include "detail/nlopt_status.hpp"
+#include "detail/optimize_common.hpp"
 
 namespace capsubot {
 namespace {
 
-constexpr double kPi = kTau / 2.0;
-// Smallest mean force (fraction of the bound): c > 0 is needed for a directed orbit.
-constexpr double kMinMeanFraction = 1e-9;
+using detail::kMinMeanFraction;
+using detail::kPi;
+using detail::Require;
+
 // Smallest total force A + c (fraction of the bound) of the multistart grid, which is
 // geometric in A + c: the orbit's size scales with the force (MODEL.md section 6), so valid
 // gaits at a large T0 need a force far below the bound.
@@ -41,13 +43,6 @@ constexpr double kHopSize = 0.2;
 // Phase scan of P1 inside the phase-exact polish, and its initial step (fraction of s, r).
 constexpr int kNestedPhaseScan = 180;
 constexpr double kNestedStep = 0.05;
-// Phase scan of the final P1 polish.
-constexpr int kFinalPhaseScan = 720;
-
-void Require(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument(message);
-}
-
 struct Start {
   std::vector<double> y;
   double I;
@@ -90,38 +85,25 @@ void ForcingDesignOptions::Validate() const {
 }
 
 OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions& options) {
-  params.Validate();
   options.Validate();
-  const double bound = options.BoundFor(params);
-  const nlopt::algorithm local =
-      detail::AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  detail::Search search = detail::SetUpSearch(params, options);
+  const double bound = search.bound;
+  const nlopt::algorithm local = search.local;
+  detail::Problem& problem = search.problem;
   const bool multistart = options.global_algorithm == kMultistart;
-
-  detail::Problem problem;
   problem.n = 3;
   problem.lower = {0.0, kMinMeanFraction, -2.0 * kPi};
   problem.upper = {1.0, 1.0, 2.0 * kPi};
   // phi0 is reduced into [-pi, pi) here, so the point NLopt sees and the orbit reported are
   // the same numbers (a wrap afterwards could flip a grazing orbit's validity in the last bit).
   problem.build = [bound](const double* y) {
-    const double phi0 = y[2] - kTau * std::floor((y[2] + kPi) / kTau);
-    return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, phi0);
+    return Forcing::Harmonic(std::max(y[0], 0.0) * bound, y[1] * bound, detail::ReducePhase(y[2]));
   };
-  problem.setup = {params, bound, options.stable, options.rho_max};
-  problem.constraints = {detail::kLeftWallIndex,  detail::kRightWallIndex, detail::kAlphaLowIndex,
-                         detail::kAlphaHighIndex, detail::kStickIndex,     detail::kForceBoundIndex,
-                         detail::kSeparationIndex};
-  if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
-  problem.objective_scale = params.T0;
-  const double bound_over_T0 = bound / params.T0;
-  problem.force_bound = [bound_over_T0](const double* y) {
-    return (y[0] + y[1] - 1.0) * bound_over_T0;
-  };
+  problem.force_total = [bound](const double* y) { return (std::max(y[0], 0.0) + y[1]) * bound; };
 
   detail::Tracker tracker;
   std::vector<Start> starts;
-  OptimizeStatus best_status = OptimizeStatus::kOk;
-  std::string nlopt_message;   // from the local run that produced the best point
+  detail::BestRun best_run;    // the run that produced the best point
   std::string global_message;  // from an NLopt global stage that threw
   std::string algorithm;
 
@@ -165,15 +147,10 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
   // Local constrained polish from every start; the status is that of the run that produced
   // the best point.
   auto polish = [&](const std::vector<double>& y0) {
-    const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
     const std::vector<double> step = {0.25 * std::max(y0[0], 1e-3), 0.25 * std::max(y0[1], 1e-3),
                                       0.1};
-    const detail::RunResult run = detail::RunNlopt(local, problem, y0, step, options.rel_tol,
-                                                   options.local_evaluations, tracker);
-    if (tracker.best.valid && tracker.best.I > before) {
-      best_status = run.status;
-      nlopt_message = run.message;
-    }
+    detail::PolishLocally(local, problem, y0, step, options.rel_tol, options.local_evaluations,
+                          tracker, best_run);
   };
   for (const Start& start : starts) polish(start.y);
   // Basin hopping: where the constraints are kinked (a margin, e < 1) the local polish stalls
@@ -214,41 +191,24 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     } catch (...) {
       status = detail::StatusFromCurrentException(message);
     }
-    if (tracker.best.I > before) {
-      best_status = status;
-      nlopt_message = message;
-    }
+    if (tracker.best.I > before) best_run = {status, message};
     algorithm += fmt::format(", phase-exact LN_SBPLX");
   }
 
   // Final phase polish (P1) at the best (A, c): a point valid through Solve itself.
-  detail::Evaluation best = tracker.best;
-  if (!tracker.best_y.empty()) {
-    const double A = std::max(tracker.best_y[0], 0.0) * bound, c = tracker.best_y[1] * bound;
-    PhaseOptions phase;
-    phase.scan_points = kFinalPhaseScan;
-    phase.stable = options.stable;
-    phase.rho_max = options.rho_max;
-    const OptimizeResult p1 = OptimizePhase(Forcing::Harmonic(A, c, 0.0), params, phase);
-    tracker.evaluations += p1.evaluations;
-    if (p1.found() && (!best.valid || p1.solution.orbit.I > best.I)) {
-      const double y[3] = {tracker.best_y[0], tracker.best_y[1], p1.solution.orbit.forcing.phi0()};
-      best = detail::EvaluateAt(problem, y, tracker);
-    }
-  }
+  const std::vector<double> at = tracker.best_y;
+  const detail::Evaluation best = detail::PolishPhase(
+      problem,
+      [&](const Forcing& f) {
+        const double y[3] = {at[0], at[1], f.phi0()};
+        return detail::EvaluateAt(problem, y, tracker);
+      },
+      tracker);
 
-  if (!global_message.empty()) {
-    nlopt_message += (nlopt_message.empty() ? "" : "; ") + global_message;
-  }
-  OptimizeResult result;
-  result.algorithm = algorithm;
-  result.evaluations = tracker.evaluations;
-  result.solution = best.solution;
-  result.spectral_radius = detail::SpectralRadius(best);
+  std::string nlopt_message;
+  OptimizeResult result = detail::ResultAt(best, problem, tracker, best_run, global_message,
+                                           algorithm, options.active_tol, nlopt_message);
   if (best.valid) {
-    result.status = best_status;
-    result.active_constraints =
-        detail::ActiveConstraints(best, problem.setup, options.active_tol, true);
     std::string active;
     for (const auto& a : result.active_constraints) active += (active.empty() ? "" : ", ") + a;
     result.message = fmt::format(
@@ -258,7 +218,6 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
         best.solution.orbit.forcing.mean(), best.solution.orbit.forcing.phi0(),
         active.empty() ? "none" : active, nlopt_message.empty() ? "" : "; ", nlopt_message);
   } else {
-    result.status = OptimizeStatus::kNoValidOrbit;
     result.message =
         fmt::format("no valid {}gait found with A + c <= {:g}{}{}; nearest to valid violates {}",
                     options.stable ? "stable " : "", bound, nlopt_message.empty() ? "" : " (",

@@ -22,33 +22,19 @@
 #include "capsubot/optimize_phase.hpp"
 #include "detail/nlopt_problem.hpp"
 #include "detail/nlopt_status.hpp"
+#include "detail/optimize_common.hpp"
 
 namespace capsubot {
 namespace {
 
-constexpr double kMinMeanFraction = 1e-9;  // c > 0 (fraction of the bound)
+using detail::kMinMeanFraction;
+using detail::Require;
+
 // |a_k|, |b_k| <= (1/pi) integral |F| |cos k phi| <= (4/pi) max |F|: bounds on the scaled
 // coefficients that cut off nothing feasible.
-constexpr double kCoefficientBound = 4.0 / 3.14159265358979323846;
+constexpr double kCoefficientBound = 4.0 / detail::kPi;
 // Standard deviation of the random perturbations of the multistart (fraction of the bound).
 constexpr double kPerturbation = 0.05;
-constexpr int kFinalPhaseScan = 720;
-
-void Require(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument(message);
-}
-
-// The series seen from the impact: coefficients of cos k phi, sin k phi of F(phi) = G(phi + phi0).
-Forcing ImpactFrame(const Forcing& f) {
-  const int K = f.harmonics();
-  std::vector<double> a(K), b(K);
-  for (int k = 1; k <= K; ++k) {
-    const double ck = std::cos(k * f.phi0()), sk = std::sin(k * f.phi0());
-    a[k - 1] = f.a(k) * ck + f.b(k) * sk;
-    b[k - 1] = f.b(k) * ck - f.a(k) * sk;
-  }
-  return Forcing::Fourier(f.mean(), a, b, 0.0);
-}
 
 }  // namespace
 
@@ -60,11 +46,11 @@ void FourierOptions::Validate() const {
 }
 
 OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& options) {
-  params.Validate();
   options.Validate();
-  const double bound = options.BoundFor(params);
-  const nlopt::algorithm local =
-      detail::AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  detail::Search search = detail::SetUpSearch(params, options);
+  const double bound = search.bound;
+  const nlopt::algorithm local = search.local;
+  detail::Problem& problem = search.problem;
   const int K = options.harmonics;
 
   // The P2 optimum at the same bound: the baseline and the first start.
@@ -76,7 +62,6 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   p2.seed = options.seed;
   const OptimizeResult harmonic = OptimizeForcing(params, p2);
 
-  detail::Problem problem;
   problem.n = 2 * K + 1;
   problem.lower.assign(problem.n, -kCoefficientBound);
   problem.upper.assign(problem.n, kCoefficientBound);
@@ -88,13 +73,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     for (double& v : b) v *= bound;
     return Forcing::Fourier(y[0] * bound, a, b, 0.0);
   };
-  problem.setup = {params, bound, options.stable, options.rho_max};
-  problem.constraints = {detail::kLeftWallIndex,  detail::kRightWallIndex, detail::kAlphaLowIndex,
-                         detail::kAlphaHighIndex, detail::kStickIndex,     detail::kForceBoundIndex,
-                         detail::kSeparationIndex};
-  if (options.stable) problem.constraints.push_back(detail::kStabilityIndex);
-  problem.objective_scale = params.T0;
-
+  problem.n = 2 * K + 1;
   detail::Tracker tracker;
   tracker.evaluations = harmonic.evaluations;
   std::vector<double> seed_y(problem.n, 0.0);
@@ -107,8 +86,8 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     detail::EvaluateAt(problem, seed_y.data(), tracker);
   }
 
-  OptimizeStatus best_status = harmonic.found() ? OptimizeStatus::kOk : harmonic.status;
-  std::string nlopt_message;   // from the local run that produced the best point
+  detail::BestRun best_run;  // the run that produced the best point
+  if (!harmonic.found()) best_run.status = harmonic.status;
   std::string global_message;  // from an NLopt global stage that threw
   std::string algorithm;
   std::mt19937 rng(options.seed);
@@ -116,13 +95,8 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   const std::vector<double> step(problem.n, kPerturbation);
 
   auto polish = [&](const std::vector<double>& y0) {
-    const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
-    const detail::RunResult run = detail::RunNlopt(local, problem, y0, step, options.rel_tol,
-                                                   options.local_evaluations, tracker);
-    if (tracker.best.valid && tracker.best.I > before) {
-      best_status = run.status;
-      nlopt_message = run.message;
-    }
+    detail::PolishLocally(local, problem, y0, step, options.rel_tol, options.local_evaluations,
+                          tracker, best_run);
   };
 
   if (options.global_algorithm == kMultistart) {
@@ -144,36 +118,20 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
     algorithm = "P2+" + options.global_algorithm + "+" + options.local_algorithm;
   }
 
-  // Final phase polish (P1) of the best shape, then the series seen from the impact.
-  detail::Evaluation best = tracker.best;
-  if (!tracker.best_y.empty()) {
-    PhaseOptions phase;
-    phase.scan_points = kFinalPhaseScan;
-    phase.stable = options.stable;
-    phase.rho_max = options.rho_max;
-    const OptimizeResult p1 = OptimizePhase(problem.build(tracker.best_y.data()), params, phase);
-    tracker.evaluations += p1.evaluations;
-    if (p1.found() && (!best.valid || p1.solution.orbit.I > best.I)) {
-      const detail::Evaluation turned =
-          detail::Evaluate(ImpactFrame(p1.solution.orbit.forcing), problem.setup);
-      ++tracker.evaluations;
-      best = turned.valid ? turned : detail::Evaluate(p1.solution.orbit.forcing, problem.setup);
-    }
-  }
+  // Final phase polish (P1) of the best shape; its optimum as the series seen from the impact.
+  const detail::Evaluation best = detail::PolishPhase(
+      problem,
+      [&](const Forcing& f) {
+        ++tracker.evaluations;
+        return detail::Evaluate(f.InImpactFrame(), problem.setup);
+      },
+      tracker);
 
-  if (!global_message.empty()) {
-    nlopt_message += (nlopt_message.empty() ? "" : "; ") + global_message;
-  }
-  OptimizeResult result;
-  result.algorithm = algorithm;
-  result.evaluations = tracker.evaluations;
-  result.solution = best.solution;
-  result.spectral_radius = detail::SpectralRadius(best);
+  std::string nlopt_message;
+  OptimizeResult result = detail::ResultAt(best, problem, tracker, best_run, global_message,
+                                           algorithm, options.active_tol, nlopt_message);
   result.baseline_I = harmonic.found() ? harmonic.solution.orbit.I : OptimizeResult::kNaN;
   if (best.valid) {
-    result.status = best_status;
-    result.active_constraints =
-        detail::ActiveConstraints(best, problem.setup, options.active_tol, true);
     result.message = fmt::format(
         "fastest valid {}gait with {} harmonics and max |F| <= {:g}: I = {:.10g}{}{}",
         options.stable ? "stable " : "", K, bound, best.I,
@@ -183,7 +141,6 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
                           100.0 * (best.I / result.baseline_I - 1.0), result.baseline_I),
         nlopt_message.empty() ? "" : "; " + nlopt_message);
   } else {
-    result.status = OptimizeStatus::kNoValidOrbit;
     result.message = fmt::format(
         "no valid {}gait found with {} harmonics and max |F| <= {:g}; "
         "nearest to valid violates {}",

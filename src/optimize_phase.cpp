@@ -18,11 +18,14 @@
 #include <vector>
 
 #include "detail/nlopt_constraints.hpp"
+#include "detail/optimize_common.hpp"
 
 namespace capsubot {
 namespace {
 
-constexpr double kPi = kTau / 2.0;
+using detail::kPi;
+using detail::Require;
+
 constexpr int kMinScanPoints = 16;
 constexpr int kMaxBrentIterations = 100;
 // A point whose constraint violation is at most this is invalid by round-off only (e.g. an
@@ -45,22 +48,30 @@ class PhaseSearch {
   PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup)
       : forcing_(forcing), setup_(setup) {}
 
+  // The orbit at phi0, reduced into [-pi, pi) first: the search works on unwrapped phases
+  // (arcs across -pi), and the evaluated numbers are then exactly the reported ones.
   detail::Evaluation At(double phi0) {
     ++evaluations_;
-    return detail::Evaluate(forcing_.WithPhase(phi0), setup_);
+    return detail::Evaluate(forcing_.WithPhase(detail::ReducePhase(phi0)), setup_);
   }
 
   // Edge of the valid arc between `in_phase` (in the arc) and `out_phase` by bisection;
-  // returns the valid point nearest to the edge (or the arc-side point if none was valid).
-  detail::Evaluation Edge(double in_phase, detail::Evaluation in_ev, double out_phase, double tol) {
+  // returns the valid point nearest to the edge (or the arc-side point if none was valid), and
+  // its unwrapped phase in `edge_phase`.
+  detail::Evaluation Edge(double in_phase, detail::Evaluation in_ev, double out_phase, double tol,
+                          double& edge_phase) {
     detail::Evaluation valid_ev = in_ev;
+    edge_phase = in_phase;
     while (std::abs(out_phase - in_phase) > tol) {
       const double mid = 0.5 * (in_phase + out_phase);
       if (mid == in_phase || mid == out_phase) break;
       detail::Evaluation ev = At(mid);
       if (InArc(ev)) {
         in_phase = mid;
-        if (ev.valid || !valid_ev.valid) valid_ev = std::move(ev);
+        if (ev.valid || !valid_ev.valid) {
+          valid_ev = std::move(ev);
+          edge_phase = mid;
+        }
       } else {
         out_phase = mid;
       }
@@ -92,11 +103,14 @@ class PhaseSearch {
     return gsl_min_fminimizer_x_minimum(m);
   }
 
-  // The point at x, or a valid one within a few tol of it if x is invalid by round-off only.
-  detail::Evaluation ValidNear(double x, double tol) {
+  // The point at x, or a valid one within a few tol of it if x is invalid by round-off only;
+  // its unwrapped phase in `at`.
+  detail::Evaluation ValidNear(double x, double tol, double& at) {
+    at = x;
     detail::Evaluation ev = At(x);
     for (int k = 1; k <= kNudges && !ev.valid && InArc(ev); ++k) {
-      ev = At(x + (k % 2 == 0 ? 1.0 : -1.0) * ((k + 1) / 2) * tol);
+      at = x + (k % 2 == 0 ? 1.0 : -1.0) * ((k + 1) / 2) * tol;
+      ev = At(at);
     }
     return ev;
   }
@@ -111,7 +125,8 @@ class PhaseSearch {
     };
     const double x = BrentMinimum(minus_I, lo, mid, hi, tol);
     if (std::isnan(x)) return false;
-    detail::Evaluation ev = ValidNear(x, tol);
+    double at = x;
+    detail::Evaluation ev = ValidNear(x, tol, at);
     if (ev.valid && ev.I > best.I) {
       best = std::move(ev);
       return true;
@@ -128,15 +143,16 @@ class PhaseSearch {
     };
     const double x = BrentMinimum(violation, lo, mid, hi, tol);
     if (std::isnan(x)) return;
-    detail::Evaluation inside = ValidNear(x, tol);
+    double in = x;
+    detail::Evaluation inside = ValidNear(x, tol, in);
     if (!InArc(inside)) {
       // No arc (or one narrower than the tolerance): still the point nearest to validity.
       if (detail::Better(inside, best)) best = std::move(inside);
       return;
     }
-    const double in = inside.solution.orbit.forcing.phi0();
     for (double out : {lo, hi}) {
-      detail::Evaluation edge = Edge(in, inside, out, tol);
+      double edge_phase = in;
+      detail::Evaluation edge = Edge(in, inside, out, tol, edge_phase);
       if (detail::Better(edge, best)) best = std::move(edge);
     }
     if (detail::Better(inside, best)) best = std::move(inside);
@@ -150,12 +166,6 @@ class PhaseSearch {
   int evaluations_ = 0;
   std::unique_ptr<gsl_min_fminimizer, GslMinimizerFree> minimizer_;
 };
-
-void RequireFiniteAtLeast(const char* name, double value, double least, const char* rule) {
-  if (!(std::isfinite(value) && value >= least)) {
-    throw std::invalid_argument(fmt::format("{} = {} is invalid: expected {}", name, value, rule));
-  }
-}
 
 }  // namespace
 
@@ -172,14 +182,16 @@ void PhaseOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
   }
-  RequireFiniteAtLeast("active_tol", active_tol, 0.0, "a finite active_tol >= 0");
+  Require(std::isfinite(active_tol) && active_tol >= 0.0,
+          fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
 }
 
 OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
                              const PhaseOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ConstraintSetup setup{params, params.T0, options.stable, options.rho_max};
+  // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
+  const detail::ConstraintSetup setup{params, HUGE_VAL, options.stable, options.rho_max};
   PhaseSearch search(forcing, setup);
   const int n = options.scan_points;
   const double h = kTau / n;
@@ -235,8 +247,9 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
       const int j = next(i);
       if (arc[i] == arc[j]) continue;
       const int v = arc[i] ? i : j, w = arc[i] ? j : i;
-      detail::Evaluation edge = search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol);
-      const double edge_phase = edge.solution.orbit.forcing.phi0();
+      double edge_phase = phase[v];
+      detail::Evaluation edge =
+          search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol, edge_phase);
       (v == i ? hi_edge[v] : lo_edge[v]) = edge_phase;
       if (detail::Better(edge, winner)) winner = std::move(edge);
     }
@@ -248,26 +261,23 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
       search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);
     }
   }
-  // Report phi0 in [-pi, pi).
+  // Every point was evaluated at its phase reduced into [-pi, pi): report it as it is.
   const double phi0 = winner.solution.orbit.forcing.phi0();
-  const double wrapped = phi0 - kTau * std::floor((phi0 + kPi) / kTau);
-  if (wrapped != phi0) winner = search.At(wrapped);
   result.evaluations = search.evaluations();
   result.solution = winner.solution;
   result.spectral_radius = detail::SpectralRadius(winner);
   if (winner.valid) {
     result.status = OptimizeStatus::kOk;
-    result.active_constraints =
-        detail::ActiveConstraints(winner, setup, options.active_tol, /*with_force_bound=*/false);
+    result.active_constraints = detail::ActiveConstraints(winner, setup, options.active_tol);
     result.message = fmt::format(
         "best {}orbit over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
-        options.stable ? "valid stable " : "valid ", winner.I, wrapped, valid_count, n);
+        options.stable ? "valid stable " : "valid ", winner.I, phi0, valid_count, n);
   } else {
     result.status = OptimizeStatus::kNoValidOrbit;
     result.message = fmt::format(
         "no phase phi0 gives a valid {}orbit ({} phases scanned); nearest to valid: phi0 = "
         "{:.10g}, which violates {}",
-        options.stable ? "stable " : "", n, wrapped, detail::DescribeViolations(winner, setup));
+        options.stable ? "stable " : "", n, phi0, detail::DescribeViolations(winner, setup));
   }
   return result;
 }

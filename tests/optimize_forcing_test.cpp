@@ -17,6 +17,7 @@
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 #include "detail/nlopt_status.hpp"
+#include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -166,12 +167,7 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   const OptimizeResult r = OptimizeForcing(params, options);
   ASSERT_TRUE(r.found()) << r.message;
   const Orbit& o = r.solution.orbit;
-  SimOptions sim;
-  sim.alpha = o.alpha;
-  sim.x0 = 1.0;
-  sim.u0 = -o.e * o.u;
-  sim.v0 = o.v_plus;
-  const SimResult s = Simulate(o.forcing, params, sim);
+  const SimResult s = testing::SimulateOnePeriodFromImpact(o, params);
   ASSERT_EQ(s.status, SimStatus::kOk) << s.message;
   EXPECT_EQ(s.impacts_right, 1);
   EXPECT_EQ(s.impacts_left, 0);

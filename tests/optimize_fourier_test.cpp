@@ -13,6 +13,7 @@
 #include "capsubot/optimize_forcing.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
+#include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -41,6 +42,22 @@ TEST(OptimizeFourier, NeverLosesToTheHarmonicOptimumAndRecordsIt) {
   EXPECT_EQ(r.solution.orbit.forcing.harmonics(), 3);
 }
 
+TEST(OptimizeFourier, KeepsTheHarmonicOptimumWhenTheForceBoundBinds) {
+  // T0 = 0.3, bound 0.8 T0: the P2 optimum uses its whole bound, A + c = 0.24. Rebuilt as a
+  // series (a_1 = A sin phi0, b_1 = A cos phi0), its max |F| exceeds 0.24 by one ulp; that is
+  // the bound up to rounding, so P3 starts from a valid point and its gain is never negative.
+  const Params params{0.3, 1.0, 0.0};
+  FourierOptions o;
+  o.harmonics = 3;
+  o.starts = 2;
+  o.force_bound = 0.24;
+  const OptimizeResult r = OptimizeFourier(params, o);
+  ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  EXPECT_GE(r.solution.orbit.I, r.baseline_I * (1.0 - kSameValueTol));
+  EXPECT_TRUE(Solve(r.solution.orbit.forcing, params).validity.valid());
+  EXPECT_TRUE(WithinForceBound(r.solution.validity.max_force, o.force_bound));
+}
+
 TEST(OptimizeFourier, OptimumSatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   const Params params{0.3, 0.8, 0.02};
   FourierOptions o = Quick(2);
@@ -67,12 +84,7 @@ TEST(OptimizeFourier, OptimumIsAPeriodicOrbitOfTheSimulator) {
   const OptimizeResult r = OptimizeFourier(params, Quick(3));
   ASSERT_TRUE(r.found()) << r.message;
   const Orbit& o = r.solution.orbit;
-  SimOptions sim;
-  sim.alpha = o.alpha;
-  sim.x0 = 1.0;
-  sim.u0 = -o.e * o.u;
-  sim.v0 = o.v_plus;
-  const SimResult s = Simulate(o.forcing, params, sim);
+  const SimResult s = testing::SimulateOnePeriodFromImpact(o, params);
   ASSERT_EQ(s.status, SimStatus::kOk) << s.message;
   EXPECT_EQ(s.impacts_right, 1);
   EXPECT_TRUE(testing::RelNear(s.displacement, o.I, kSimulatorTol));

@@ -23,6 +23,9 @@ constexpr int kDenseScan = 7200;
 // The optimiser returns a point at least as good as the best valid scan point; both are
 // computed by the same formulas, so only round-off separates equal values.
 constexpr double kSameValueTol = 1e-12;
+// Two bisections of the same arc edge to phase_tol = 1e-12 rad in differently rounded
+// coordinates: I, whose slope in phi0 is O(1), agrees far below this.
+constexpr double kBisectedEdgeTol = 1e-9;
 
 struct ScanBest {
   double I = -HUGE_VAL;
@@ -89,6 +92,37 @@ INSTANTIATE_TEST_SUITE_P(
                       PhaseCase{0.3, 0.1, 1.0, 1.0, 0.0}, PhaseCase{0.6, 0.3, 0.05, 1.0, 0.1},
                       PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0}, PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0}));
 
+// The force touching the friction bound, A + c = T0 (the paper's boundary, and a diagonal of
+// `capsubot sweep --optimize phi0`): max |F| equals T0 up to the last bit of its evaluation,
+// which validity accepts (kForceBoundRelTol), so P1 must find the valid phases `solve` finds.
+struct DiagonalCase {
+  double A, c, T0;  // A + c = T0 in exact arithmetic
+};
+
+class PhaseOnFrictionBoundDiagonal : public ::testing::TestWithParam<DiagonalCase> {};
+
+TEST_P(PhaseOnFrictionBoundDiagonal, FindsTheValidPhasesSolveFinds) {
+  const DiagonalCase k = GetParam();
+  const Params params{k.T0, 1.0, 0.0};
+  const Forcing shape = Forcing::Harmonic(k.A, k.c, 0.0);
+  const ScanBest scan = DenseScan(shape, params);
+  ASSERT_GT(scan.valid, 0) << "test case without valid orbits";
+  const OptimizeResult r = OptimizePhase(shape, params);
+  ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  EXPECT_GE(r.solution.orbit.I, scan.I - kSameValueTol * std::abs(scan.I));
+  const Solution again =
+      Solve(Forcing::Harmonic(k.A, k.c, r.solution.orbit.forcing.phi0()), params);
+  EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
+}
+
+// 0.006 + 0.003 is 0.009 plus one ulp in floating point (the review's example); the others
+// are diagonal points of a sweep over (A, c) at T0 = 0.1 and 0.05.
+INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOnFrictionBoundDiagonal,
+                         ::testing::Values(DiagonalCase{0.006, 0.003, 0.009},
+                                           DiagonalCase{0.07, 0.03, 0.1},
+                                           DiagonalCase{0.05, 0.05, 0.1},
+                                           DiagonalCase{0.03, 0.02, 0.05}));
+
 TEST(OptimizePhase, PaperExampleAtT0OneHasNoValidOrbitAndSaysWhy) {
   // MODEL.md section 6: c = A = T0/2 violates the left-wall condition at T0 = 1.
   const Params params{1.0, 1.0, 0.0};
@@ -111,6 +145,33 @@ TEST(OptimizePhase, EdgeOptimumReportsTheGrazedWallAsActive) {
   EXPECT_NEAR(r.solution.validity.x_min, 0.0, 1e-9);
   EXPECT_NE(std::find(r.active_constraints.begin(), r.active_constraints.end(), "left_wall"),
             r.active_constraints.end());
+}
+
+TEST(OptimizePhase, EdgeOptimumAcrossMinusPiIsReportedExactlyAsEvaluated) {
+  // The edge optimum of c = A = T0/2 at T0 = 0.1 (left wall grazed), with the shape turned so
+  // that the edge lies just outside [-pi, pi) as the scan sees it (the bisection from scan
+  // point 0 or 719 crosses -pi or pi): the optimum is the same, and its reported phi0 in
+  // [-pi, pi) is where it was evaluated, so Solve at that phase gives the very same orbit.
+  const Params params{0.1, 1.0, 0.0};
+  const OptimizeResult upright = OptimizePhase(Forcing::Harmonic(0.05, 0.05, 0.0), params);
+  ASSERT_TRUE(upright.found()) << upright.message;
+  const double star = upright.solution.orbit.forcing.phi0();
+  const double h = kTau / PhaseOptions{}.scan_points;
+  for (double edge : {-kPi - 0.3 * h, -kPi + 0.3 * h, kPi - 0.3 * h}) {
+    // A sin(s + d) + c: the optimum moves from phi0 = star to phi0 = star - d = edge.
+    const double d = star - edge;
+    const Forcing shape = Forcing::Fourier(0.05, {0.05 * std::sin(d)}, {0.05 * std::cos(d)}, 0.0);
+    const OptimizeResult r = OptimizePhase(shape, params);
+    ASSERT_EQ(r.status, OptimizeStatus::kOk) << "edge " << edge << ": " << r.message;
+    EXPECT_TRUE(testing::RelNear(r.solution.orbit.I, upright.solution.orbit.I, kBisectedEdgeTol));
+    const double phi0 = r.solution.orbit.forcing.phi0();
+    EXPECT_GE(phi0, -kPi);
+    EXPECT_LT(phi0, kPi);
+    const Solution again = Solve(shape.WithPhase(phi0), params);
+    EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
+    EXPECT_EQ(again.orbit.I, r.solution.orbit.I);
+    EXPECT_EQ(again.validity.x_min, r.solution.validity.x_min);
+  }
 }
 
 TEST(OptimizePhase, FindsAValidArcNarrowerThanItsScanSpacing) {

@@ -34,7 +34,7 @@ const char* ConstraintName(int index) {
   }
 }
 
-Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup) {
+Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double force) {
   Evaluation ev;
   const Params& p = setup.params;
   Solution& s = ev.solution;
@@ -43,7 +43,8 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup) {
   const Orbit& o = s.orbit;
   const Validity& v = s.validity;
   ev.g.fill(kNoOrbitConstraint);
-  ev.g[kForceBoundIndex] = (v.max_force - setup.force_bound) / p.T0;
+  ev.force = std::isnan(force) ? v.max_force : force;
+  ev.g[kForceBoundIndex] = (ev.force - setup.force_bound) / p.T0;
   if (!std::isnan(v.rest_force)) ev.g[kStickIndex] = (v.rest_force - p.T0) / p.T0;
   ev.g[kStabilityIndex] = setup.stable ? kNoOrbitConstraint : 0.0;
   if (o.ok()) {
@@ -61,8 +62,8 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup) {
   }
   ev.violation = 0.0;
   for (double g : ev.g) ev.violation += std::max(g, 0.0);
-  ev.valid =
-      v.valid() && ev.g[kForceBoundIndex] <= 0.0 && (!setup.stable || ev.g[kStabilityIndex] <= 0.0);
+  ev.valid = v.valid() && WithinForceBound(ev.force, setup.force_bound) &&
+             (!setup.stable || ev.g[kStabilityIndex] <= 0.0);
   // CheckValidity and the g_i agree on the orbit conditions; a valid orbit has no violation.
   if (ev.valid) ev.violation = 0.0;
   return ev;
@@ -82,11 +83,11 @@ bool Better(const Evaluation& a, const Evaluation& b) {
 }
 
 std::vector<std::string> ActiveConstraints(const Evaluation& ev, const ConstraintSetup& setup,
-                                           double tol, bool with_force_bound) {
+                                           double tol) {
   std::vector<std::string> names;
   if (!ev.solution.orbit.ok()) return names;
   for (int i = 0; i < kConstraintCount; ++i) {
-    if (i == kForceBoundIndex && !with_force_bound) continue;
+    if (i == kForceBoundIndex && !std::isfinite(setup.force_bound)) continue;
     if (i == kStabilityIndex && !setup.stable) continue;
     if (std::abs(ev.g[i]) <= tol) names.emplace_back(ConstraintName(i));
   }
@@ -127,8 +128,9 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
         add(ConditionName(c));
     }
   }
-  if (ev.g[kForceBoundIndex] > 0.0 && !v.violated(Condition::kForceBelowFriction)) {
-    add(fmt::format("force_bound (max |F| = {:.6g} > {:g})", v.max_force, setup.force_bound));
+  if (!WithinForceBound(ev.force, setup.force_bound) &&
+      !v.violated(Condition::kForceBelowFriction)) {
+    add(fmt::format("force_bound (max |F| = {:.6g} > {:g})", ev.force, setup.force_bound));
   }
   if (setup.stable && v.valid() && !(ev.g[kStabilityIndex] <= 0.0)) {
     add(fmt::format("stability (spectral radius = {:.6g} > {:g})", ev.rho, setup.rho_max));

@@ -23,7 +23,7 @@ enum ConstraintIndex {
   kAlphaLowIndex,    ///< -alpha
   kAlphaHighIndex,   ///< alpha - 1
   kStickIndex,       ///< (max |F| on [phi1, tau] - T0) / T0
-  kForceBoundIndex,  ///< (max |F| - force_bound) / T0
+  kForceBoundIndex,  ///< (max |F| - force_bound) / T0; holds up to rounding (WithinForceBound)
   kSeparationIndex,  ///< -e u for e > 0; x''(0+) for e = 0
   kStabilityIndex,   ///< spectral radius - rho_max (0 when stability is not required)
   kConstraintCount,
@@ -37,8 +37,10 @@ const char* ConstraintName(int index);
 
 /// What the constraints are measured against.
 struct ConstraintSetup {
-  Params params;        ///< T0, e, margin
-  double force_bound;   ///< bound on max |F|
+  Params params;  ///< T0, e, margin
+  /// Bound on max |F| (P2, P3), held up to rounding (WithinForceBound); infinity for none
+  /// (P1: the force is given, and validity's force_below_friction already bounds it by T0).
+  double force_bound = std::numeric_limits<double>::infinity();
   bool stable = false;  ///< require spectral radius <= rho_max
   double rho_max = 1.0;
 };
@@ -50,13 +52,17 @@ struct Evaluation {
   std::array<double, kConstraintCount> g{};               ///< constraint values, <= 0 holds
   bool valid = false;  ///< every condition of section 5 holds (and stability if asked)
   double violation = std::numeric_limits<double>::infinity();  ///< sum of max(g_i, 0)
+  /// The force held against the bound: max |F|, or the problem's own measure (P2: A + c).
+  double force = std::numeric_limits<double>::quiet_NaN();
   /// I if the orbit exists, else -infinity (so any orbit is better than none).
   double I = -std::numeric_limits<double>::infinity();
 };
 
-/// Solves the orbit of `forcing` and evaluates every constraint. Never throws for a force
-/// without orbit; params must be valid.
-Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup);
+/// Solves the orbit of `forcing` and evaluates every constraint. `force`, unless NaN, replaces
+/// max |F| in the force bound (P2: the linear A + c). Never throws for a force without orbit;
+/// params must be valid.
+Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup,
+                    double force = std::numeric_limits<double>::quiet_NaN());
 
 /// The spectral radius of the evaluated orbit (MODEL.md section 8): ev.rho if it was
 /// computed, else computed now; NaN without orbit.
@@ -66,10 +72,10 @@ double SpectralRadius(const Evaluation& ev);
 /// smaller violation among invalid ones.
 bool Better(const Evaluation& a, const Evaluation& b);
 
-/// Names of the constraints with -tol <= g_i <= tol (and g_i defined), in index order;
-/// `with_force_bound` false leaves out the force bound (P1: the force is given).
+/// Names of the constraints with -tol <= g_i <= tol (and g_i defined), in index order; the
+/// force bound only when setup.force_bound is finite.
 std::vector<std::string> ActiveConstraints(const Evaluation& ev, const ConstraintSetup& setup,
-                                           double tol, bool with_force_bound);
+                                           double tol);
 
 /// Why an evaluated point is not valid: "left_wall (x_min = -0.31)", ... (empty if valid).
 std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setup);

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "capsubot/optimize_phase.hpp"
 #include "detail/nlopt_status.hpp"
+#include "detail/optimize_common.hpp"
 
 namespace capsubot::detail {
 namespace {
@@ -31,7 +34,7 @@ struct Context {
     f = ev.solution.orbit.ok() ? ev.I / p.objective_scale : 0.0;
     for (std::size_t i = 0; i < p.constraints.size(); ++i) {
       const int c = p.constraints[i];
-      g[i] = (c == kForceBoundIndex && p.force_bound) ? p.force_bound(y) : ev.g[c];
+      g[i] = ev.g[c];
     }
   }
 
@@ -99,18 +102,26 @@ void Tracker::Offer(const Evaluation& ev, const double* y, int n) {
   }
 }
 
+Search SetUpSearch(const Params& params, const SearchOptions& options) {
+  params.Validate();
+  Search search;
+  search.bound = options.BoundFor(params);
+  search.local =
+      AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
+  Problem& problem = search.problem;
+  problem.setup = {params, search.bound, options.stable, options.rho_max};
+  problem.constraints = {kLeftWallIndex, kRightWallIndex,  kAlphaLowIndex,  kAlphaHighIndex,
+                         kStickIndex,    kForceBoundIndex, kSeparationIndex};
+  if (options.stable) problem.constraints.push_back(kStabilityIndex);
+  problem.objective_scale = params.T0;
+  return search;
+}
+
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker) {
   ++tracker.evaluations;
-  Evaluation ev = Evaluate(problem.build(y), problem.setup);
-  if (problem.force_bound) {
-    // The linear bound replaces max |F| <= bound: validity must respect it too.
-    const double g = problem.force_bound(y);
-    ev.g[kForceBoundIndex] = g;
-    if (g > 0.0) {
-      ev.valid = false;
-      ev.violation += g;
-    }
-  }
+  const double force =
+      problem.force_total ? problem.force_total(y) : std::numeric_limits<double>::quiet_NaN();
+  Evaluation ev = Evaluate(problem.build(y), problem.setup, force);
   tracker.Offer(ev, y, problem.n);
   return ev;
 }
@@ -141,6 +152,51 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
     run.status = StatusFromCurrentException(run.message);
   }
   return run;
+}
+
+void PolishLocally(nlopt::algorithm algorithm, const Problem& problem,
+                   const std::vector<double>& y0, const std::vector<double>& step, double rel_tol,
+                   int max_evaluations, Tracker& tracker, BestRun& best_run) {
+  const double before = tracker.best.valid ? tracker.best.I : -HUGE_VAL;
+  const RunResult run = RunNlopt(algorithm, problem, y0, step, rel_tol, max_evaluations, tracker);
+  if (tracker.best.valid && tracker.best.I > before) best_run = {run.status, run.message};
+}
+
+Evaluation PolishPhase(const Problem& problem,
+                       const std::function<Evaluation(const Forcing&)>& evaluate,
+                       Tracker& tracker) {
+  Evaluation best = tracker.best;
+  if (tracker.best_y.empty()) return best;
+  PhaseOptions phase;
+  phase.scan_points = kFinalPhaseScan;
+  phase.stable = problem.setup.stable;
+  phase.rho_max = problem.setup.rho_max;
+  const OptimizeResult p1 =
+      OptimizePhase(problem.build(tracker.best_y.data()), problem.setup.params, phase);
+  tracker.evaluations += p1.evaluations;
+  if (!p1.found() || (best.valid && !(p1.solution.orbit.I > best.I))) return best;
+  Evaluation candidate = evaluate(p1.solution.orbit.forcing);
+  if (candidate.valid && (!best.valid || candidate.I > best.I)) best = std::move(candidate);
+  return best;
+}
+
+OptimizeResult ResultAt(const Evaluation& best, const Problem& problem, const Tracker& tracker,
+                        const BestRun& best_run, const std::string& global_message,
+                        std::string algorithm, double active_tol, std::string& note) {
+  note = best_run.message;
+  if (!global_message.empty()) note += (note.empty() ? "" : "; ") + global_message;
+  OptimizeResult result;
+  result.algorithm = std::move(algorithm);
+  result.evaluations = tracker.evaluations;
+  result.solution = best.solution;
+  result.spectral_radius = SpectralRadius(best);
+  if (best.valid) {
+    result.status = best_run.status;
+    result.active_constraints = ActiveConstraints(best, problem.setup, active_tol);
+  } else {
+    result.status = OptimizeStatus::kNoValidOrbit;
+  }
+  return result;
 }
 
 }  // namespace capsubot::detail
