@@ -26,14 +26,18 @@ constexpr int kForceCsvRows = 1001;
 
 struct OptimizeCliOptions {
   std::string problem;  // "", phase, forcing, fourier
-  double A = kNaN;
+  double A = kNaN;      // NaN: not given
   double c = kNaN;
+  CLI::Option* A_option = nullptr;
+  CLI::Option* c_option = nullptr;
   Params params;
-  double bound = kNaN;
+  double bound = kNaN;  // NaN: T0
+  CLI::Option* bound_option = nullptr;
   int harmonics = 3;
   std::string global_algorithm = kMultistart;
   std::string local_algorithm = "LN_COBYLA";
-  int starts = 0;  // 0: the problem's default
+  int starts = 0;  // used only when given: else the problem's default
+  CLI::Option* starts_option = nullptr;
   int global_evaluations = ForcingDesignOptions{}.global_evaluations;
   int hops = ForcingDesignOptions{}.hops;
   double rho_max = kNaN;  // NaN: no stability requirement
@@ -146,7 +150,7 @@ ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
   d.force_bound = opt.bound;
   d.global_algorithm = opt.global_algorithm;
   d.local_algorithm = opt.local_algorithm;
-  if (opt.starts > 0) d.starts = opt.starts;
+  if (opt.starts_option->count() > 0) d.starts = opt.starts;
   d.global_evaluations = opt.global_evaluations;
   d.hops = opt.hops;
   d.stable = stable;
@@ -264,7 +268,7 @@ int RunProblem(const OptimizeCliOptions& opt) {
     fo.force_bound = opt.bound;
     fo.global_algorithm = opt.global_algorithm;
     fo.local_algorithm = opt.local_algorithm;
-    if (opt.starts > 0) fo.starts = opt.starts;
+    if (opt.starts_option->count() > 0) fo.starts = opt.starts;
     fo.global_evaluations = opt.global_evaluations;
     fo.stable = stable;
     if (stable) fo.rho_max = opt.rho_max;
@@ -301,7 +305,23 @@ int RunProblem(const OptimizeCliOptions& opt) {
   return 0;
 }
 
+// A value given on the command line must be admissible itself: NaN (the library's "use T0"
+// for the bound, the CLI's "not given" for A and c) or a count below 1 is not a default.
+void RequireGiven(const CLI::Option* option, bool ok, const std::string& value, const char* rule) {
+  if (option->count() > 0 && !ok) {
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected {}", option->get_name(), value, rule));
+  }
+}
+
 int Run(const OptimizeCliOptions& opt) {
+  RequireGiven(opt.A_option, std::isfinite(opt.A) && opt.A >= 0.0, fmt::format("{}", opt.A),
+               "a finite amplitude A >= 0");
+  RequireGiven(opt.c_option, std::isfinite(opt.c), fmt::format("{}", opt.c),
+               "a finite mean force c");
+  RequireGiven(opt.bound_option, std::isfinite(opt.bound) && opt.bound > 0.0,
+               fmt::format("{}", opt.bound), "a finite bound > 0 (at most T0)");
+  RequireGiven(opt.starts_option, opt.starts >= 1, fmt::format("{}", opt.starts), "starts >= 1");
   opt.params.Validate();
   if (opt.stable_option->count() > 0 && !(std::isfinite(opt.rho_max) && opt.rho_max > 0.0)) {
     throw std::invalid_argument(fmt::format(
@@ -326,14 +346,17 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "A + c <= --bound) or fourier (P3: best K-harmonic force with max |F| <= "
                   "--bound); default: the main job")
       ->check(CLI::IsMember({"phase", "forcing", "fourier"}));
-  cmd->add_option("--A", opt->A,
-                  "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
-                  "of (m1+m2) omega^2 L");
-  cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
+  opt->A_option =
+      cmd->add_option("--A", opt->A,
+                      "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
+                      "of (m1+m2) omega^2 L");
+  opt->c_option =
+      cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
   AddParamsOptions(*cmd, opt->params);
-  cmd->add_option("--bound", opt->bound,
-                  "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
-                  "same unit as A (default: T0)");
+  opt->bound_option =
+      cmd->add_option("--bound", opt->bound,
+                      "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
+                      "same unit as A (default: T0)");
   cmd->add_option("--harmonics", opt->harmonics, "number K of harmonics of the Fourier force")
       ->capture_default_str();
   cmd->add_option("--global-algorithm", opt->global_algorithm,
@@ -351,9 +374,9 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "forcing: basin-hopping restarts from random perturbations of the best point "
                   "after the starts")
       ->capture_default_str();
-  cmd->add_option("--starts", opt->starts,
-                  "number of local polishes of the multistart (default: 10 for forcing, 20 for "
-                  "fourier)");
+  opt->starts_option = cmd->add_option("--starts", opt->starts,
+                                       "number of local polishes of the multistart, >= 1 "
+                                       "(default: 10 for forcing, 20 for fourier)");
   opt->stable_option =
       cmd->add_option("--stable", opt->rho_max,
                       "require a stable orbit: spectral radius of the impact map (MODEL.md "

@@ -93,6 +93,32 @@ TEST(OptimizeCli, StableAloneMeansSpectralRadiusAtMostOne) {
   EXPECT_EQ(nlohmann::json::parse(stable.out)["status"], "no_valid_orbit");
 }
 
+TEST(OptimizeCli, GivenNumbersOutsideTheirRangeAreRejectedNotTakenAsDefaults) {
+  // NaN is the library's "use T0" for the bound and 0 was the CLI's "use the default" for
+  // --starts: a value given on the command line must be a real, admissible one.
+  struct Case {
+    const char* args;
+    const char* message;
+  };
+  for (const Case& c :
+       {Case{"--problem forcing --bound nan",
+             "--bound = nan is invalid: expected a finite bound > 0 (at most T0)"},
+        Case{"--problem fourier --bound inf",
+             "--bound = inf is invalid: expected a finite bound > 0 (at most T0)"},
+        Case{"--bound nan", "--bound = nan is invalid: expected a finite bound > 0 (at most T0)"},
+        Case{"--problem forcing --starts 0", "--starts = 0 is invalid: expected starts >= 1"},
+        Case{"--problem fourier --starts -2", "--starts = -2 is invalid: expected starts >= 1"},
+        Case{"--starts 0", "--starts = 0 is invalid: expected starts >= 1"},
+        Case{"--problem phase --A nan --c 0.1",
+             "--A = nan is invalid: expected a finite amplitude A >= 0"},
+        Case{"--problem phase --A 0.3 --c nan",
+             "--c = nan is invalid: expected a finite mean force c"}}) {
+    const auto r = RunCli(std::string("optimize ") + c.args + " 2>&1");
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
+  }
+}
+
 TEST(OptimizeCli, BadInputExitsTwoWithOneLineNamingTheRule) {
   struct Case {
     const char* args;
