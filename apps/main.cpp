@@ -1,6 +1,6 @@
 // capsubot: the command-line program. Parses, runs one subcommand, maps errors to exit codes:
 // 0 done, 2 bad input (one line on stderr naming the parameter, its value and the rule),
-// 1 unexpected failure.
+// 1 a computation that could not be completed (one line saying why) or an unexpected failure.
 
 #include <fmt/format.h>
 
@@ -74,6 +74,9 @@ int main(int argc, char** argv) {
     } catch (const capsubot::IoError& e) {
       fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
       return 2;
+    } catch (const std::runtime_error& e) {  // a computation that could not be completed
+      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
+      return 1;
     } catch (const std::exception& e) {
       fmt::print(stderr, "{}: internal error: {}\n", who, OneLine(e.what()));
       return 1;
