@@ -83,57 +83,49 @@ void Forcing::Rotate() {
 
 double Forcing::amplitude() const { return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]); }
 
-// The sums below run cos(k phi), sin(k phi) by the angle-addition recurrence: one sincos.
+namespace {
 
-double Forcing::F(double phi) const {
+// sum_{k=1..K} term(k, cos k phi, sin k phi), with cos k phi and sin k phi from one sincos by
+// the angle-addition recurrence.
+template <class Term>
+double SumHarmonics(int K, double phi, const Term& term) {
   const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, f = c_;
-  for (int k = 0; k < K_; ++k) {
-    f += ra_[k] * ck + rb_[k] * sk;
+  double ck = c1, sk = s1, sum = 0.0;
+  for (int k = 1; k <= K; ++k) {
+    sum += term(k, ck, sk);
     const double next = ck * c1 - sk * s1;
     sk = sk * c1 + ck * s1;
     ck = next;
   }
-  return f;
+  return sum;
+}
+
+}  // namespace
+
+double Forcing::F(double phi) const {
+  return c_ + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+           return ra_[k - 1] * ck + rb_[k - 1] * sk;
+         });
 }
 
 double Forcing::dF(double phi) const {
-  const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, f = 0.0;
-  for (int k = 0; k < K_; ++k) {
-    f += (k + 1) * (rb_[k] * ck - ra_[k] * sk);
-    const double next = ck * c1 - sk * s1;
-    sk = sk * c1 + ck * s1;
-    ck = next;
-  }
-  return f;
+  return SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+    return k * (rb_[k - 1] * ck - ra_[k - 1] * sk);
+  });
 }
 
 double Forcing::Pi(double phi) const {
   // Pi = c phi + sum_k (ra_k sin k phi + rb_k (1 - cos k phi)) / k
-  const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, p = c_ * phi;
-  for (int k = 0; k < K_; ++k) {
-    p += (ra_[k] * sk + rb_[k] * (1.0 - ck)) / (k + 1);
-    const double next = ck * c1 - sk * s1;
-    sk = sk * c1 + ck * s1;
-    ck = next;
-  }
-  return p;
+  return c_ * phi + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+           return (ra_[k - 1] * sk + rb_[k - 1] * (1.0 - ck)) / k;
+         });
 }
 
 double Forcing::Phi(double phi) const {
   // Phi = c phi^2/2 + sum_k (ra_k (1 - cos k phi) / k^2 + rb_k (phi/k - sin k phi / k^2))
-  const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, p = 0.5 * c_ * phi * phi;
-  for (int k = 0; k < K_; ++k) {
-    const double kk = k + 1.0;
-    p += (ra_[k] * (1.0 - ck) + rb_[k] * (kk * phi - sk)) / (kk * kk);
-    const double next = ck * c1 - sk * s1;
-    sk = sk * c1 + ck * s1;
-    ck = next;
-  }
-  return p;
+  return 0.5 * c_ * phi * phi + SumHarmonics(K_, phi, [this, phi](int k, double ck, double sk) {
+           return (ra_[k - 1] * (1.0 - ck) + rb_[k - 1] * (k * phi - sk)) / (double(k) * k);
+         });
 }
 
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {

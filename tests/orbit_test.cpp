@@ -20,12 +20,7 @@ using testing::RelNear;
 constexpr double kClosedFormTol = 1e-11;  // identities of the closed form, O(1..10) values
 constexpr double kRootTol = 1e-12;        // phi1 from Brent to 1e-14 in phase
 
-struct Case {
-  const char* name;
-  Forcing forcing;
-  Params params;
-  friend void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-};
+using Case = testing::NamedCase;
 
 // Orbits that exist (status ok), valid or not: harmonic and Fourier, e = 1, 0.5, 0.
 const Case kCases[] = {

@@ -18,6 +18,8 @@
 namespace capsubot {
 namespace {
 
+using testing::StartAt;
+
 using testing::Near;
 using testing::RelNear;
 
@@ -28,12 +30,7 @@ constexpr double kPeriodTol = 1e-9;
 constexpr int kScan = 64;
 
 SimOptions PostImpact(const Orbit& o, double periods) {
-  SimOptions opt;
-  opt.alpha = o.alpha;
-  opt.x0 = 1.0;
-  opt.u0 = -o.e * o.u;
-  opt.v0 = o.v_plus;
-  opt.periods = periods;
+  SimOptions opt = StartAt(o.alpha, 1.0, -o.e * o.u, o.v_plus, periods);
   return opt;
 }
 
@@ -229,12 +226,7 @@ TEST(Simulator, ChatteringEndsRestingOnTheWallAndReleases) {
   Params p;
   p.T0 = 0.1;
   p.e = 0.5;
-  SimOptions opt;
-  opt.alpha = 0.3;
-  opt.x0 = 0.999;
-  opt.u0 = 0.001;
-  opt.v0 = 0.0;
-  opt.periods = 1.0;
+  SimOptions opt = StartAt(0.3, 0.999, 0.001, 0.0, 1.0);
   struct Log : SimObserver {
     std::vector<SimEvent> events;
     void OnEvent(const SimEvent& e) override { events.push_back(e); }
@@ -284,12 +276,7 @@ TEST(Simulator, WorkBoundStopsWithAStatusInsteadOfHanging) {
   const Forcing f = Forcing::Harmonic(0.05, 0.02, 0.0);
   Params p;
   p.T0 = 0.1;
-  SimOptions opt;
-  opt.alpha = 0.3;
-  opt.x0 = 0.5;
-  opt.u0 = 50.0;
-  opt.v0 = 0.0;
-  opt.periods = 1.0;
+  SimOptions opt = StartAt(0.3, 0.5, 50.0, 0.0, 1.0);
   opt.max_events_per_period = 10;
   const SimResult r = Simulate(f, p, opt);
   EXPECT_EQ(r.status, SimStatus::kEventLimit);
@@ -358,12 +345,7 @@ TEST(Simulator, StrongForceBreaksAwayAndSlidesBothWays) {
   const Forcing f = Forcing::Harmonic(0.15, 0.0, 0.0);  // |F| up to 0.15 > T0 = 0.1
   Params p;
   p.T0 = 0.1;
-  SimOptions opt;
-  opt.alpha = 0.9;
-  opt.x0 = 0.5;
-  opt.u0 = -0.15 / 0.9;
-  opt.v0 = 0.0;
-  opt.periods = 2.0;
+  SimOptions opt = StartAt(0.9, 0.5, -0.15 / 0.9, 0.0, 2.0);
   struct Log : SimObserver {
     bool forward = false, backward = false;
     double worst_level = 0.0;  // |F| - T0 at the break-aways: zero
@@ -439,12 +421,8 @@ TEST(Simulator, DenseSamplesOfRandomRunsRespectWallsModesAndFriction) {
     Params p;
     p.T0 = 0.1;
     p.e = i % 3 == 0 ? 1.0 : 0.5;
-    SimOptions opt;
-    opt.alpha = uniform(0.05, 0.95);
-    opt.x0 = uniform(0.0, 1.0);
-    opt.u0 = uniform(-0.3, 0.3);
-    opt.v0 = uniform(-0.1, 0.1);
-    opt.periods = 3.0;
+    SimOptions opt = StartAt(uniform(0.05, 0.95), uniform(0.0, 1.0), uniform(-0.3, 0.3),
+                             uniform(-0.1, 0.1), 3.0);
     opt.sample_step = kTau / 400;
     Checker check;
     check.f = &f;
@@ -485,12 +463,7 @@ TEST_P(ForceTouchingFriction, RestingCapsuleDoesNotBreakAwayAndTheRunEndsOk) {
     // The Fourier force's maximum is not a round number: T0 is its exact max |F|.
     p.T0 = k.fourier ? f.MaxAbs() : k.T0;
     p.e = 0.5;
-    SimOptions opt;
-    opt.alpha = 0.5;
-    opt.x0 = 0.5;
-    opt.u0 = 0.0;
-    opt.v0 = 0.0;
-    opt.periods = 1.5;
+    SimOptions opt = StartAt(0.5, 0.5, 0.0, 0.0, 1.5);
     const SimResult r = Simulate(f, p, opt);
     SCOPED_TRACE("phi0 = " + std::to_string(phi0));
     EXPECT_EQ(r.status, SimStatus::kOk) << r.message;
@@ -526,12 +499,7 @@ TEST(Simulator, ContactForceTouchingZeroKeepsTheBodyOnTheWall) {
         Params p;
         p.T0 = 2.0 * scale;  // the capsule rests: |F| <= 2 scale
         p.e = 0.5;
-        SimOptions opt;
-        opt.alpha = 0.5;
-        opt.x0 = dir > 0.0 ? 1.0 : 0.0;
-        opt.u0 = 0.0;
-        opt.v0 = 0.0;
-        opt.periods = 2.0;
+        SimOptions opt = StartAt(0.5, dir > 0.0 ? 1.0 : 0.0, 0.0, 0.0, 2.0);
         const SimResult r = Simulate(f, p, opt);
         SCOPED_TRACE("scale " + std::to_string(scale) + " dir " + std::to_string(dir) + " phi0 " +
                      std::to_string(phi0));
@@ -551,12 +519,7 @@ TEST(Simulator, ContactForceTouchingZeroKeepsTheBodyOnTheWall) {
 TEST(Simulator, BodyComingToRestOnTheWallStaysThroughATouchOfTheContactForce) {
   const Forcing f = Forcing::Harmonic(0.5, 0.5, 0.0);
   Params p;
-  SimOptions opt;
-  opt.alpha = 0.5;
-  opt.x0 = 0.5;
-  opt.u0 = 0.0;
-  opt.v0 = 0.0;
-  opt.periods = 3.0;
+  SimOptions opt = StartAt(0.5, 0.5, 0.0, 0.0, 3.0);
   const SimResult r = Simulate(f, p, opt);
   EXPECT_EQ(r.status, SimStatus::kOk) << r.message;
   EXPECT_EQ(r.releases, 0);

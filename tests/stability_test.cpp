@@ -16,6 +16,8 @@
 namespace capsubot {
 namespace {
 
+using testing::StartAt;
+
 using testing::Near;
 
 // Central differences with step h have truncation error ~h^2 |J'''| and rounding error
@@ -50,12 +52,7 @@ MapResult SimulatedMap(const Forcing& motor, const Params& p, double alpha, doub
       }
     }
   } log;
-  SimOptions opt;
-  opt.alpha = alpha;
-  opt.x0 = 1.0;
-  opt.u0 = u;
-  opt.v0 = 0.0;
-  opt.periods = 3.0;
+  SimOptions opt = StartAt(alpha, 1.0, u, 0.0, 3.0);
   opt.max_impacts_right = 2;  // the impact at phi = 0 and the next one
   Simulate(motor.WithPhase(theta), p, opt, &log);
   return log.m;

@@ -14,6 +14,9 @@
 #include <memory>
 #include <string>
 
+#include "capsubot/params.hpp"
+#include "capsubot/simulator.hpp"
+
 namespace capsubot::testing {
 
 /// |actual - expected| <= tol, printing both values and the difference on failure.
@@ -43,6 +46,25 @@ inline double Quadrature(const std::function<double(double)>& f, double a, doubl
   gsl_integration_qags(&fn, a, b, 1e-14, 1e-13, 1000, ws.get(), &result, &error);
   return result;
 }
+
+/// Simulator options: mass ratio alpha, start state (x0, u0, v0), `periods` periods.
+inline SimOptions StartAt(double alpha, double x0, double u0, double v0, double periods) {
+  SimOptions opt;
+  opt.alpha = alpha;
+  opt.x0 = x0;
+  opt.u0 = u0;
+  opt.v0 = v0;
+  opt.periods = periods;
+  return opt;
+}
+
+/// A force and model under a name (the name is what GoogleTest prints for the parameter).
+struct NamedCase {
+  const char* name;
+  Forcing forcing;
+  Params params;
+  friend void PrintTo(const NamedCase& c, std::ostream* os) { *os << c.name; }
+};
 
 /// A path in the temporary directory unique to this process (test binaries of several build
 /// trees may run at once), removed first if it exists.

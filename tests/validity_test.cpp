@@ -36,12 +36,7 @@ Sampled Sample(const Orbit& o) {
   return s;
 }
 
-struct Case {
-  const char* name;
-  Forcing forcing;
-  Params params;
-  friend void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-};
+using Case = testing::NamedCase;
 
 // Existing orbits with and without interior maxima, both families (parameters from scans of
 // `capsubot solve` over phi0).
