@@ -29,12 +29,7 @@ struct Case {
   double T0, e, alpha;
 };
 
-Params P(const Case& k) {
-  Params p;
-  p.T0 = k.T0;
-  p.e = k.e;
-  return p;
-}
+Params P(const Case& k) { return Params{k.T0, k.e}; }
 
 class RobotOrbits : public ::testing::TestWithParam<Case> {};
 

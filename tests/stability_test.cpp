@@ -85,12 +85,7 @@ Forcing Force(const Case& k) {
                    : Forcing::Harmonic(k.A, k.c, k.phi0);
 }
 
-Params P(const Case& k) {
-  Params p;
-  p.T0 = k.T0;
-  p.e = k.e;
-  return p;
-}
+Params P(const Case& k) { return Params{k.T0, k.e}; }
 
 class OrbitStability : public ::testing::TestWithParam<Case> {};
 
