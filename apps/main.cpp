@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "capsubot/io.hpp"
+#include "capsubot/version.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
       "positions in units of the shell length L, velocities in omega*L, forces in "
       "(m1+m2)*omega^2*L.",
       "capsubot"};
+  app.set_version_flag("--version", capsubot::Version(), "Print the version and exit");
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {AddSolveCommand(app), AddSimulateCommand(app),
@@ -52,6 +54,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     const auto subs = app.get_subcommands();

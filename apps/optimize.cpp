@@ -1,4 +1,4 @@
-// capsubot optimize: the fastest gait (MODEL.md section 7). Without --problem it runs the main
+// capsubot optimize: the fastest gait (docs/model.md section 7). Without --problem it runs the main
 // job: the paper's problem P1 at c = A = T0/2, then P2 at the same T0 with and without the
 // stability requirement, a readable summary and results/optimum.json.
 
@@ -192,7 +192,7 @@ int RunMainJob(const OptimizeCliOptions& opt) {
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (MODEL.md section 7)\n"
+      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section 7)\n"
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
       "margin {:g}\n"
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
@@ -209,16 +209,16 @@ int RunMainJob(const OptimizeCliOptions& opt) {
     const Validity& v = paper.solution.validity;
     t += fmt::format(
         "   Result: NO valid gait (status {}). For every phi0 the constructed orbit breaks a\n"
-        "   condition of MODEL.md section 5. Nearest to valid: phi0 = {}, I = {}, violating\n"
+        "   condition of docs/model.md section 5. Nearest to valid: phi0 = {}, I = {}, violating\n"
         "   {}.\n",
         OptimizeStatusName(paper.status), Num(paper.solution.orbit.forcing.phi0(), 6),
         Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
     if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
       // Only the left wall fails. Scaling A, c, T0 by k scales 1 - x by k and leaves the
-      // other conditions unchanged (MODEL.md section 6): the gait fits once k (1 - x_min) <= 1.
+      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min) <= 1.
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
-          "   too strong for this shell. Orbit sizes scale with T0 (MODEL.md section 6): this\n"
+          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): this\n"
           "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
           Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);
@@ -228,7 +228,7 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   t += fastest.found() ? GaitText(fastest)
                        : fmt::format("   Result: none found ({})\n", fastest.message);
   t += fmt::format(
-      "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, MODEL.md section 8):\n",
+      "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, docs/model.md section 8):\n",
       rho_max);
   t += stable.found() ? GaitText(stable)
                       : fmt::format("   Result: none found ({})\n", stable.message);
@@ -336,7 +336,7 @@ Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "optimize",
-      "The fastest gait (MODEL.md section 7). Without --problem: the main job, run from the "
+      "The fastest gait (docs/model.md section 7). Without --problem: the main job, run from the "
       "repository root: the paper's problem (best phase at c = A = T0/2), then the fastest "
       "valid and the fastest stable gait with A + c <= T0; prints a summary and writes "
       "--output. With --problem: one problem. Exit status 0 whenever the computation ran, "
@@ -379,7 +379,7 @@ Command AddOptimizeCommand(CLI::App& app) {
                                        "(default: 10 for forcing, 20 for fourier)");
   opt->stable_option =
       cmd->add_option("--stable", opt->rho_max,
-                      "require a stable orbit: spectral radius of the impact map (MODEL.md "
+                      "require a stable orbit: spectral radius of the impact map (docs/model.md "
                       "section 8) <= rho_max; the value is optional (--stable alone means "
                       "rho_max = 1). The main job always reports both")
           ->expected(0, 1)

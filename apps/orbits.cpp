@@ -1,4 +1,4 @@
-// capsubot orbits: every one-impact orbit of a robot whose mass ratio is fixed (MODEL.md
+// capsubot orbits: every one-impact orbit of a robot whose mass ratio is fixed (docs/model.md
 // section 8), with validity, mean velocity and stability.
 
 #include <fmt/format.h>
@@ -76,7 +76,7 @@ Command AddOrbitsCommand(CLI::App& app) {
   auto opt = std::make_shared<OrbitsOptions>();
   CLI::App* cmd = app.add_subcommand(
       "orbits",
-      "Every one-impact orbit of a given robot (mass ratio alpha fixed, MODEL.md section 8): "
+      "Every one-impact orbit of a given robot (mass ratio alpha fixed, docs/model.md section 8): "
       "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, none missed, each with "
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);

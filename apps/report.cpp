@@ -75,7 +75,7 @@ std::string SolutionTable(const Solution& s, const Params& p) {
   t += fmt::format("  inner body       x_min  = {}, x_max = {}   (walls at 0 and 1)\n",
                    Num(v.x_min), Num(v.x_max));
   if (v.valid()) {
-    t += "  valid            yes: every condition of MODEL.md section 5 holds\n";
+    t += "  valid            yes: every condition of docs/model.md section 5 holds\n";
   } else {
     std::string names;
     for (const auto& n : v.ViolationNames()) names += (names.empty() ? "" : ", ") + n;
@@ -106,7 +106,7 @@ std::string StabilityTable(const Stability& st) {
     t += fmt::format("  multiplier {}     {} {} {}i\n", i + 1, Num(z.real()),
                      z.imag() < 0 ? '-' : '+', Num(std::abs(z.imag())));
   }
-  t += fmt::format("  spectral radius  {}   ({}: MODEL.md section 8)\n", Num(st.spectral_radius),
+  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n", Num(st.spectral_radius),
                    st.stable ? "stable, < 1" : "unstable, >= 1");
   return t;
 }

@@ -19,7 +19,7 @@ std::string ForceFormula(const Forcing& forcing);
 /// A readable multi-line summary of a solved orbit.
 std::string SolutionTable(const Solution& solution, const Params& params);
 
-/// Adds the stability of MODEL.md section 8 to a JSON object: "multipliers" (array of
+/// Adds the stability of docs/model.md section 8 to a JSON object: "multipliers" (array of
 /// {"re", "im"}), "spectral_radius" and "stable" (null, null, false when not computed).
 void AddStabilityJson(nlohmann::json& j, const Stability& stability);
 

@@ -1,4 +1,4 @@
-// capsubot simulate: the exact event-driven simulation (MODEL.md sections 3 and 10), from a
+// capsubot simulate: the exact event-driven simulation (docs/model.md sections 3 and 10), from a
 // given state or from right after the impact of the analytic orbit (--from-orbit).
 
 #include <fmt/format.h>
@@ -85,7 +85,7 @@ int Run(SimulateOptions& opt) {
         names += (names.empty() ? "" : ", ") + n;
       fmt::print(stderr, "capsubot simulate: note: the analytic orbit is not valid ({})\n", names);
     }
-    // Right after the impact (MODEL.md section 4): x = 1, x' = -e u, v = v+.
+    // Right after the impact (docs/model.md section 4): x = 1, x' = -e u, v = v+.
     sim.alpha = o.alpha;
     sim.x0 = 1.0;
     sim.u0 = -o.e * o.u;
@@ -176,7 +176,7 @@ Command AddSimulateCommand(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "simulate",
-      "Exact event-driven simulation of the full non-smooth dynamics (MODEL.md sections 3 and "
+      "Exact event-driven simulation of the full non-smooth dynamics (docs/model.md sections 3 and "
       "10): rest, forward and backward slide; impacts on both walls, stops and break-aways "
       "located to ~1e-13 in phase. Independent of the analytic orbit: use it to confirm an "
       "orbit of `solve`. The force is F(phi) = A sin(phi + phi0) + c with phi = 0 at the start.");

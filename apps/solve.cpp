@@ -68,7 +68,7 @@ Command AddSolveCommand(CLI::App& app) {
   auto opt = std::make_shared<SolveOptions>();
   CLI::App* cmd = app.add_subcommand(
       "solve",
-      "The one-impact periodic orbit (MODEL.md section 4) for a given force: stop phase phi1, "
+      "The one-impact periodic orbit (docs/model.md section 4) for a given force: stop phase phi1, "
       "mass ratio alpha, impact velocity u, step I and mean velocity, with every validity "
       "condition of section 5. Exit status 0 whenever the computation ran, valid orbit or not.");
   AddForcingOptions(*cmd, opt->forcing);
@@ -77,7 +77,7 @@ Command AddSolveCommand(CLI::App& app) {
                 "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
                 "v_mean, x_min, x_max, valid, violations; null where a quantity does not exist)");
   cmd->add_flag("--stability", opt->stability,
-                "also compute the stability of the orbit (MODEL.md section 8): adds the keys "
+                "also compute the stability of the orbit (docs/model.md section 8): adds the keys "
                 "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "
                 "spectral_radius and stable (spectral_radius < 1) to --json");
   cmd->add_option("--trajectory", opt->trajectory,

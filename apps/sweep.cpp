@@ -124,7 +124,7 @@ Command AddSweepCommand(CLI::App& app) {
   auto opt = std::make_shared<SweepCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "The orbit and its validity (MODEL.md sections 4-5) at every point of a 1-D or 2-D grid "
+      "The orbit and its validity (docs/model.md sections 4-5) at every point of a 1-D or 2-D grid "
       "of parameters, to a CSV file: columns <grid parameters>, phi1, alpha, u, v_plus, I, "
       "v_mean, x_min, x_max, valid, violations (empty cell: the quantity does not exist). "
       "Runs on all cores; the file is byte-identical for any --threads, written to "
@@ -157,7 +157,7 @@ Command AddSweepCommand(CLI::App& app) {
          "the CSV file to write (required); - writes to standard output (no --resume then)")
       ->required();
   cmd->add_flag("--stability", opt->sweep.stability,
-                "add the columns spectral_radius (of the impact map, MODEL.md section 8) and "
+                "add the columns spectral_radius (of the impact map, docs/model.md section 8) and "
                 "stable (1 when < 1)");
   cmd->add_option("--optimize", opt->optimize,
                   "phi0: at every point, the impact phase phi0 maximising I over valid orbits "

@@ -1,5 +1,5 @@
 #pragma once
-// The motor force F(phi) and its integrals Pi, Phi (MODEL.md sections 2 and 6).
+// The motor force F(phi) and its integrals Pi, Phi (docs/model.md sections 2 and 6).
 //
 // Every force is a truncated Fourier series in the phase s of the motor,
 //     G(s) = c + sum_{k=1..K} (a_k cos(k s) + b_k sin(k s)),
@@ -32,7 +32,7 @@ class Forcing {
   /// The zero force (a placeholder for results that were not computed).
   Forcing() = default;
 
-  /// F = A sin(phi + phi0) + c: the paper's family (MODEL.md section 6).
+  /// F = A sin(phi + phi0) + c: the paper's family (docs/model.md section 6).
   static Forcing Harmonic(double A, double c, double phi0);
   /// F = c + sum_k (a[k-1] cos(k (phi+phi0)) + b[k-1] sin(k (phi+phi0))); a and b have the
   /// same length K <= kMaxHarmonics. Throws std::invalid_argument naming the bad coefficient.

@@ -9,7 +9,7 @@
 
 namespace capsubot {
 
-/// A parameter a grid can vary (MODEL.md sections 2 and 6 for the symbols).
+/// A parameter a grid can vary (docs/model.md sections 2 and 6 for the symbols).
 enum class SweepParameter {
   kA,       ///< amplitude A of F = A sin(phi + phi0) + c
   kc,       ///< mean force c
@@ -17,7 +17,7 @@ enum class SweepParameter {
   kT0,      ///< friction bound T0
   ke,       ///< restitution e
   kmargin,  ///< clearance d
-  kalpha,   ///< mass ratio of a given robot: phi0 is then solved for (MODEL.md section 8)
+  kalpha,   ///< mass ratio of a given robot: phi0 is then solved for (docs/model.md section 8)
 };
 
 /// The parameter's name as written in `--grid` and in CSV headers ("A", "phi0", ...).

@@ -1,5 +1,5 @@
 #pragma once
-// The optimisation problems of MODEL.md section 7 (P1 phase, P2 harmonic force, P3 Fourier
+// The optimisation problems of docs/model.md section 7 (P1 phase, P2 harmonic force, P3 Fourier
 // force), each in its own header; this one includes them all.
 
 #include "capsubot/optimize_forcing.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// P2 of MODEL.md section 7: the harmonic force A sin(phi + phi0) + c (amplitude, mean and
+// P2 of docs/model.md section 7: the harmonic force A sin(phi + phi0) + c (amplitude, mean and
 // impact phase) that maximises the step I under the validity conditions, given to NLopt as
 // inequality constraints.
 

@@ -1,5 +1,5 @@
 #pragma once
-// P3 of MODEL.md section 7: a force given by K harmonics, F = c + sum_k (a_k cos k phi +
+// P3 of docs/model.md section 7: a force given by K harmonics, F = c + sum_k (a_k cos k phi +
 // b_k sin k phi) seen from the impact, with mean c > 0 and max |F| <= bound, maximising I.
 
 #include "capsubot/optimize_result.hpp"

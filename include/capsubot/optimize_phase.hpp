@@ -1,5 +1,5 @@
 #pragma once
-// P1 of MODEL.md section 7: the impact phase phi0 that maximises the step I for a given force
+// P1 of docs/model.md section 7: the impact phase phi0 that maximises the step I for a given force
 // shape, over valid orbits (and, optionally, stable ones).
 
 #include "capsubot/forcing.hpp"
@@ -14,7 +14,7 @@ struct PhaseOptions {
   int scan_points = 720;
   /// Absolute tolerance [rad] on phi0 for the arc edges (bisection) and the polish inside arcs.
   double phase_tol = 1e-12;
-  /// Require a stable orbit: spectral radius of the impact map (MODEL.md section 8) <= rho_max.
+  /// Require a stable orbit: spectral radius of the impact map (docs/model.md section 8) <= rho_max.
   bool stable = false;
   /// Largest admissible spectral radius when `stable`; 0 < rho_max (1: marginal stability).
   double rho_max = 1.0;

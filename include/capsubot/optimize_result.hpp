@@ -1,5 +1,5 @@
 #pragma once
-// What every optimisation problem of MODEL.md section 7 returns: a status, the optimum as a
+// What every optimisation problem of docs/model.md section 7 returns: a status, the optimum as a
 // solved orbit, the constraints active there and the cost.
 
 #include <limits>
@@ -27,7 +27,7 @@ enum class OptimizeStatus {
 /// Stable identifier of a status ("ok", "no_valid_orbit", "max_evaluations", ...).
 const char* OptimizeStatusName(OptimizeStatus status);
 
-/// Names of the constraints reported in OptimizeResult::active_constraints (MODEL.md s. 5, 7).
+/// Names of the constraints reported in OptimizeResult::active_constraints (docs/model.md s. 5, 7).
 namespace constraint_names {
 inline constexpr const char* kLeftWall = "left_wall";        ///< x_min >= margin
 inline constexpr const char* kRightWall = "right_wall";      ///< x_max <= 1 - margin
@@ -47,7 +47,7 @@ struct OptimizeResult {
   /// The optimum (force with its phi0, orbit, validity). With status kNoValidOrbit: the
   /// point nearest to validity (smallest constraint violation), whose validity says why.
   Solution solution;
-  /// Spectral radius of the impact map at the returned orbit (MODEL.md section 8), computed
+  /// Spectral radius of the impact map at the returned orbit (docs/model.md section 8), computed
   /// whenever the orbit exists (< 1: stable); NaN without orbit.
   double spectral_radius = kNaN;
   /// Constraints whose slack at the optimum is within the options' active_tol (names from

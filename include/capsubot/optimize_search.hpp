@@ -1,5 +1,5 @@
 #pragma once
-// What the NLopt problems P2 and P3 of MODEL.md section 7 share: the force bound, the global
+// What the NLopt problems P2 and P3 of docs/model.md section 7 share: the force bound, the global
 // and local stages and their budgets, the stability requirement.
 
 #include <limits>
@@ -39,7 +39,7 @@ struct SearchOptions {
   int global_evaluations = 5000;
   /// Seed of the random numbers (restarts, NLopt's stochastic global algorithms).
   unsigned seed = 1;
-  /// Require a stable orbit: spectral radius (MODEL.md section 8) <= rho_max.
+  /// Require a stable orbit: spectral radius (docs/model.md section 8) <= rho_max.
   bool stable = false;
   /// Largest admissible spectral radius when `stable`; > 0.
   double rho_max = 1.0;

@@ -1,5 +1,5 @@
 #pragma once
-// The one-impact periodic orbit of the paper (MODEL.md section 4).
+// The one-impact periodic orbit of the paper (docs/model.md section 4).
 //
 // Per period tau = 2*pi: the inner body hits the right wall at phi = 0 with relative velocity
 // u > 0, the capsule slides forward and stops at phi1, then rests until the next impact.

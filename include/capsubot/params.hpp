@@ -1,5 +1,5 @@
 #pragma once
-// The dimensionless parameters of the model besides the force (MODEL.md section 2).
+// The dimensionless parameters of the model besides the force (docs/model.md section 2).
 
 namespace capsubot {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The one-impact orbits of a given robot (MODEL.md section 8, "analysis of a GIVEN robot").
+// The one-impact orbits of a given robot (docs/model.md section 8, "analysis of a GIVEN robot").
 //
 // With the mass ratio alpha fixed, the one-impact orbits are the roots phi0 of
 // alpha(phi0) = alpha over the circle, where alpha(phi0) is the mass ratio that closes the
@@ -17,7 +17,7 @@ namespace capsubot {
 inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
 
 /// Every one-impact orbit of a robot with fixed mass ratio alpha: all roots phi0 in [-pi, pi) of
-/// alpha(phi0) = alpha (MODEL.md section 8), each solved and checked (the forcing's own phi0 is
+/// alpha(phi0) = alpha (docs/model.md section 8), each solved and checked (the forcing's own phi0 is
 /// ignored). If the work bound max_evaluations (>= 1) stops the search before every part of
 /// the circle is decided, the list may miss orbits: *complete (if given) is set to false then,
 /// true otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations.

@@ -1,5 +1,5 @@
 #pragma once
-// Exact event-driven simulation of the full non-smooth dynamics (MODEL.md sections 3 and 10):
+// Exact event-driven simulation of the full non-smooth dynamics (docs/model.md sections 3 and 10):
 // the independent ground truth for the analytic orbit. It uses only the force (F, Pi, Phi,
 // Crossings, Bounds) and the parameters, never the analytic orbit code.
 //
@@ -17,7 +17,7 @@
 
 namespace capsubot {
 
-/// The modes of MODEL.md section 3, plus the inner body resting on a wall (after chattering,
+/// The modes of docs/model.md section 3, plus the inner body resting on a wall (after chattering,
 /// or an e = 0 impact while pressed against the wall): then u = 0 and it moves with the capsule.
 enum class SimMode {
   kRest,           ///< capsule at rest (v = 0), inner body free
@@ -120,7 +120,7 @@ struct SimResult {
   double v_mean = kNaN;        ///< displacement / (phase simulated)
 };
 
-/// Simulates the model of MODEL.md section 3 from the initial state of `options`, with the
+/// Simulates the model of docs/model.md section 3 from the initial state of `options`, with the
 /// force F(phi) = forcing.F(phi), phi = 0 at the start. Validates params and options
 /// (std::invalid_argument); expected outcomes are statuses, never exceptions. An event within
 /// kEndSlack of the end phase is processed before stopping, so a run of whole periods from a

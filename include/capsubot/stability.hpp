@@ -1,5 +1,5 @@
 #pragma once
-// Stability of the one-impact orbit through its impact map (MODEL.md section 8).
+// Stability of the one-impact orbit through its impact map (docs/model.md section 8).
 //
 // The state just before a right-wall impact is (theta, u): the motor phase at the impact and
 // the relative velocity. One period of the orbit structure impact -> slide -> stop -> rest ->
@@ -31,7 +31,7 @@ struct Stability {
 };
 
 /// Stability of the orbit (needs orbit.ok(), else `computed` stays false; never throws).
-/// Allocation-free and closed form: a few evaluations of F, Pi and Phi (MODEL.md section 8).
+/// Allocation-free and closed form: a few evaluations of F, Pi and Phi (docs/model.md section 8).
 Stability ComputeStability(const Orbit& orbit);
 
 /// The impact map's Jacobian at a general pre-impact state, for checks away from the fixed

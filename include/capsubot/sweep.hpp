@@ -1,5 +1,5 @@
 #pragma once
-// Parameter sweeps to CSV: the orbit (MODEL.md section 4) and its validity (section 5), and
+// Parameter sweeps to CSV: the orbit (docs/model.md section 4) and its validity (section 5), and
 // optionally its stability (section 8) or the best impact phase (problem P1, section 7), at
 // every point of a 1-D or 2-D grid (grid.hpp).
 //
@@ -44,7 +44,7 @@ struct SweepOptions {
   Forcing forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
   /// T0, e, margin at every point, except the gridded ones.
   Params params;
-  /// Add the columns spectral_radius and stable (MODEL.md section 8).
+  /// Add the columns spectral_radius and stable (docs/model.md section 8).
   bool stability = false;
   /// Maximise I over phi0 at every point (problem P1): adds the columns phi0 and status.
   bool optimize_phi0 = false;

@@ -1,5 +1,5 @@
 #pragma once
-// When a constructed orbit is real: the conditions of MODEL.md section 5, each by name,
+// When a constructed orbit is real: the conditions of docs/model.md section 5, each by name,
 // with the exact extrema of the inner body's position.
 
 #include <limits>
@@ -52,7 +52,7 @@ inline bool WithinForceBound(double force, double bound) {
   return force <= bound * (1.0 + kForceBoundRelTol);
 }
 
-/// Checks every condition of MODEL.md section 5 with clearance `margin` (0 <= margin < 0.5).
+/// Checks every condition of docs/model.md section 5 with clearance `margin` (0 <= margin < 0.5).
 Validity CheckValidity(const Orbit& orbit, double margin);
 
 /// An orbit together with its validity: what `capsubot solve` computes.

@@ -1,4 +1,4 @@
-// The optimisers of MODEL.md section 7. Targets (issue 4), Release, one core:
+// The optimisers of docs/model.md section 7. Targets (issue 4), Release, one core:
 //   P1 (OptimizePhase) in at most 50 ms;
 //   P2 (OptimizeForcing) to a relative accuracy of 1e-6 in at most 2 s.
 // The P2 benchmarks report `rel_error`: |I - I_ref| / I_ref against a reference optimum

@@ -1,0 +1,158 @@
+#include "capsubot/forcing.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "numerics/trig_roots.hpp"
+
+namespace capsubot {
+namespace {
+
+void RequireFinite(const char* name, double value) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected a finite number", name, value));
+  }
+}
+
+}  // namespace
+
+Forcing Forcing::Harmonic(double A, double c, double phi0) {
+  RequireFinite("A", A);
+  if (A < 0.0) {
+    throw std::invalid_argument(fmt::format("A = {} is invalid: expected A >= 0", A));
+  }
+  return Fourier(c, {0.0}, {A}, phi0);
+}
+
+Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
+                         double phi0) {
+  RequireFinite("c", c);
+  RequireFinite("phi0", phi0);
+  if (a.size() != b.size()) {
+    throw std::invalid_argument(fmt::format(
+        "Fourier coefficients: {} cosine and {} sine terms given: expected as many of each",
+        a.size(), b.size()));
+  }
+  if (a.size() > static_cast<std::size_t>(kMaxHarmonics)) {
+    throw std::invalid_argument(
+        fmt::format("harmonics K = {} is invalid: expected K <= {}", a.size(), kMaxHarmonics));
+  }
+  Forcing f;
+  f.c_ = c;
+  f.phi0_ = phi0;
+  f.K_ = static_cast<int>(a.size());
+  for (int k = 0; k < f.K_; ++k) {
+    if (!std::isfinite(a[k])) RequireFinite(fmt::format("a_{}", k + 1).c_str(), a[k]);
+    if (!std::isfinite(b[k])) RequireFinite(fmt::format("b_{}", k + 1).c_str(), b[k]);
+    f.a_[k] = a[k];
+    f.b_[k] = b[k];
+  }
+  f.Rotate();
+  return f;
+}
+
+Forcing Forcing::WithPhase(double phi0) const {
+  Forcing f = *this;
+  f.phi0_ = phi0;
+  f.Rotate();
+  return f;
+}
+
+Forcing Forcing::InImpactFrame() const {
+  Forcing f = *this;
+  f.a_ = ra_;
+  f.b_ = rb_;
+  f.phi0_ = 0.0;
+  f.Rotate();
+  return f;
+}
+
+void Forcing::Rotate() {
+  // a cos k(phi+phi0) + b sin k(phi+phi0) = (a cos k phi0 + b sin k phi0) cos k phi
+  //                                        + (b cos k phi0 - a sin k phi0) sin k phi.
+  for (int k = 1; k <= K_; ++k) {
+    const double ck = std::cos(k * phi0_), sk = std::sin(k * phi0_);
+    ra_[k - 1] = a_[k - 1] * ck + b_[k - 1] * sk;
+    rb_[k - 1] = b_[k - 1] * ck - a_[k - 1] * sk;
+  }
+}
+
+double Forcing::amplitude() const { return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]); }
+
+namespace {
+
+// sum_{k=1..K} term(k, cos k phi, sin k phi), with cos k phi and sin k phi from one sincos by
+// the angle-addition recurrence.
+template <class Term>
+double SumHarmonics(int K, double phi, const Term& term) {
+  const double c1 = std::cos(phi), s1 = std::sin(phi);
+  double ck = c1, sk = s1, sum = 0.0;
+  for (int k = 1; k <= K; ++k) {
+    sum += term(k, ck, sk);
+    const double next = ck * c1 - sk * s1;
+    sk = sk * c1 + ck * s1;
+    ck = next;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double Forcing::F(double phi) const {
+  return c_ + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+           return ra_[k - 1] * ck + rb_[k - 1] * sk;
+         });
+}
+
+double Forcing::dF(double phi) const {
+  return SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+    return k * (rb_[k - 1] * ck - ra_[k - 1] * sk);
+  });
+}
+
+double Forcing::Pi(double phi) const {
+  // Pi = c phi + sum_k (ra_k sin k phi + rb_k (1 - cos k phi)) / k
+  return c_ * phi + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+           return (ra_[k - 1] * sk + rb_[k - 1] * (1.0 - ck)) / k;
+         });
+}
+
+double Forcing::Phi(double phi) const {
+  // Phi = c phi^2/2 + sum_k (ra_k (1 - cos k phi) / k^2 + rb_k (phi/k - sin k phi / k^2))
+  return 0.5 * c_ * phi * phi + SumHarmonics(K_, phi, [this, phi](int k, double ck, double sk) {
+           return (ra_[k - 1] * (1.0 - ck) + rb_[k - 1] * (k * phi - sk)) / (double(k) * k);
+         });
+}
+
+PhaseList Forcing::Crossings(double level, double lo, double hi) const {
+  return detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi);
+}
+
+Range Forcing::Bounds(double lo, double hi) const {
+  std::array<double, kMaxHarmonics> da{}, db{};  // dF = sum k rb_k cos k phi - k ra_k sin k phi
+  for (int k = 0; k < K_; ++k) {
+    da[k] = (k + 1) * rb_[k];
+    db[k] = -(k + 1) * ra_[k];
+  }
+  const PhaseList critical = detail::TrigRoots(0.0, da.data(), db.data(), K_, lo, hi);
+  Range r{F(lo), F(lo)};
+  auto include = [&r](double f) {
+    r.min = std::min(r.min, f);
+    r.max = std::max(r.max, f);
+  };
+  include(F(hi));
+  for (int i = 0; i < critical.n; ++i) include(F(critical.phi[i]));
+  return r;
+}
+
+double Forcing::MaxAbs() const {
+  if (K_ <= 1) return std::abs(c_) + amplitude();  // c + R sin(...) spans [c - R, c + R]
+  const Range r = Bounds(0.0, kTau);
+  return std::max(std::abs(r.min), std::abs(r.max));
+}
+
+}  // namespace capsubot

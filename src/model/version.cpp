@@ -1,0 +1,7 @@
+#include "capsubot/version.hpp"
+
+namespace capsubot {
+
+const char* Version() { return CAPSUBOT_VERSION; }
+
+}  // namespace capsubot

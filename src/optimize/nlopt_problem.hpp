@@ -1,0 +1,96 @@
+#pragma once
+// One constrained NLopt run on a force family (P2, P3): the objective I and the constraints
+// of nlopt_constraints.hpp, evaluated once per point (a cache serves the objective and the
+// constraint call at the same x), gradients by central differences for LD_* algorithms.
+
+#include <functional>
+#include <nlopt.hpp>
+#include <string>
+#include <vector>
+
+#include "capsubot/optimize_result.hpp"
+#include "capsubot/optimize_search.hpp"
+#include "optimize/nlopt_constraints.hpp"
+
+namespace capsubot::detail {
+
+/// The problem in scaled variables y (each of order 1).
+struct Problem {
+  int n = 0;                                      ///< number of variables
+  std::vector<double> lower, upper;               ///< bounds on y
+  std::function<Forcing(const double* y)> build;  ///< the force at y
+  ConstraintSetup setup;                          ///< T0, e, margin, force bound, stability
+  std::vector<int> constraints;                   ///< ConstraintIndex values given to NLopt
+  double objective_scale = 1.0;                   ///< NLopt maximises I / objective_scale
+  /// If set, replaces max |F| in the force bound by this measure of the force at y, in force
+  /// units (P2: the linear A + c); held up to rounding (WithinForceBound), as max |F| is.
+  std::function<double(const double* y)> force_total;
+};
+
+/// The best point seen over every run (valid beats invalid, then larger I), and the cost.
+struct Tracker {
+  Evaluation best;
+  std::vector<double> best_y;
+  int evaluations = 0;
+  void Offer(const Evaluation& ev, const double* y, int n);
+};
+
+/// The run that produced the best point so far: its status and NLopt's message (if it threw),
+/// which the result reports.
+struct BestRun {
+  OptimizeStatus status = OptimizeStatus::kOk;
+  std::string message;
+};
+
+/// Outcome of one NLopt run.
+struct RunResult {
+  OptimizeStatus status = OptimizeStatus::kNotRun;
+  std::string message;    ///< set when NLopt threw
+  std::vector<double> y;  ///< NLopt's final point
+};
+
+/// What P2 and P3 share, for validated options: the bound in force, the local algorithm, and a
+/// problem with the setup, every condition of section 5 and the force bound as NLopt
+/// constraints (stability too if asked) and I/T0 as objective. The caller adds the variables,
+/// their bounds and `build`. Throws std::invalid_argument for bad params or a bound above T0.
+struct Search {
+  double bound = 0.0;
+  nlopt::algorithm local = nlopt::LN_COBYLA;
+  Problem problem;
+};
+Search SetUpSearch(const Params& params, const SearchOptions& options);
+
+/// Evaluates the problem at y (counted in the tracker, offered to it).
+Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker);
+
+/// Runs `algorithm` from y0 (clamped into the bounds) with relative tolerance rel_tol on y
+/// and on I, at most max_evaluations evaluations; initial_step may be empty (NLopt default).
+/// Every NLopt result and exception is mapped to the returned status; never throws for them.
+RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vector<double> y0,
+                   const std::vector<double>& initial_step, double rel_tol, int max_evaluations,
+                   Tracker& tracker);
+
+/// A local polish: RunNlopt(algorithm) from y0 with initial step `step`; when it improves the
+/// tracker's best valid point, its status and message go into `best_run`.
+void PolishLocally(nlopt::algorithm algorithm, const Problem& problem,
+                   const std::vector<double>& y0, const std::vector<double>& step, double rel_tol,
+                   int max_evaluations, Tracker& tracker, BestRun& best_run);
+
+/// The last step of P2 and P3: P1 (kFinalPhaseScan phases, with the stability requirement of
+/// the problem) over the impact phase of the shape at the tracker's best point; `evaluate`
+/// turns P1's optimum into a point of the problem, evaluated in its setup and counted in the
+/// tracker. Returns the tracker's best point, replaced by that one only if it is valid and
+/// better: a valid optimum is never lost to a re-evaluation that differs from P1's in the last
+/// bit. Without a best point (no evaluation yet), returns the empty tracker.best.
+Evaluation PolishPhase(const Problem& problem,
+                       const std::function<Evaluation(const Forcing&)>& evaluate, Tracker& tracker);
+
+/// The result of P2 or P3 at its best point: solution, spectral radius, evaluations and
+/// algorithm; if the point is valid, status best_run.status and the active constraints (slack
+/// within active_tol), else kNoValidOrbit. `note` (NLopt's messages) gets best_run.message
+/// and global_message joined by "; ". The caller writes the result's message.
+OptimizeResult ResultAt(const Evaluation& best, const Problem& problem, const Tracker& tracker,
+                        const BestRun& best_run, const std::string& global_message,
+                        std::string algorithm, double active_tol, std::string& note);
+
+}  // namespace capsubot::detail

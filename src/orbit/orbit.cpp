@@ -1,0 +1,116 @@
+#include "capsubot/orbit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/brent.hpp"
+
+namespace capsubot {
+namespace {
+
+// Phase reduced into [0, tau]; exact multiples of tau other than 0 map to tau (pre-impact).
+double Wrap(double phi) {
+  if (phi >= 0.0 && phi <= kTau) return phi;
+  double p = std::fmod(phi, kTau);
+  if (p < 0.0) p += kTau;
+  return p == 0.0 ? kTau : p;
+}
+
+// phi1: the first root in (0, tau) of g = Pi(tau) - T0 phi - Pi(phi) (docs/model.md section 4).
+// g' = -T0 - F, so g is monotone between the crossings of F = -T0: walk those pieces and
+// bracket the first sign change (g(0) = Pi(tau) > 0 and g(tau) = -T0 tau < 0).
+double StopPhase(const Forcing& f, double T0, double Pi_tau) {
+  const auto g = [&](double phi) { return Pi_tau - T0 * phi - f.Pi(phi); };
+  const PhaseList cuts = f.Crossings(-T0, 0.0, kTau);
+  double lo = 0.0;
+  for (int i = 0; i <= cuts.n; ++i) {
+    const double hi = i < cuts.n ? cuts.phi[i] : kTau;
+    if (hi > lo && g(hi) <= 0.0) return detail::Brent(g, lo, hi);
+    lo = std::max(lo, hi);
+  }
+  return kTau;  // unreachable: g(tau) < 0
+}
+
+}  // namespace
+
+const char* StatusName(OrbitStatus status) {
+  switch (status) {
+    case OrbitStatus::kNotRun:
+      return "not_run";
+    case OrbitStatus::kOk:
+      return "ok";
+    case OrbitStatus::kNonPositiveMeanForce:
+      return "non_positive_mean_force";
+    case OrbitStatus::kNoMassRatio:
+      return "no_mass_ratio";
+  }
+  return "unknown";
+}
+
+Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
+  params.Validate();
+  Orbit o;
+  o.forcing = forcing;
+  o.T0 = params.T0;
+  o.e = params.e;
+  const double T0 = o.T0, e = o.e, tau = kTau;
+  o.Pi_tau = forcing.mean() * tau;
+  o.Phi_tau = forcing.Phi(tau);
+  if (!(o.Pi_tau > 0.0)) {
+    o.status = OrbitStatus::kNonPositiveMeanForce;
+    return o;
+  }
+  o.phi1 = StopPhase(forcing, T0, o.Pi_tau);
+  const double phi1 = o.phi1, Phi1 = forcing.Phi(phi1);
+  // psi(alpha) = e tau Pi(tau)/(1+e) - (1-alpha) Phi(tau)
+  //              - alpha (T0 phi1^2/2 + (tau - phi1) Pi(tau) + Phi(phi1))
+  const double head = e * tau * o.Pi_tau / (1.0 + e);
+  o.psi0 = head - o.Phi_tau;
+  o.psi1 = head - T0 * phi1 * phi1 / 2.0 - (tau - phi1) * o.Pi_tau - Phi1;
+  if (!(o.psi0 * o.psi1 < 0.0)) {
+    o.status = OrbitStatus::kNoMassRatio;
+    return o;
+  }
+  const double alpha = o.psi0 / (o.psi0 - o.psi1);
+  o.alpha = alpha;
+  o.u = o.Pi_tau / (alpha * (1.0 - alpha) * (1.0 + e));
+  o.v_plus = o.Pi_tau / (1.0 - alpha);
+  o.I = (o.Pi_tau * phi1 - T0 * phi1 * phi1 / 2.0 - Phi1) / (1.0 - alpha);
+  o.v_mean = o.I / tau;
+  o.x1 = 1.0 - e * o.u * phi1 + T0 * phi1 * phi1 / (2.0 * (1.0 - alpha)) +
+         Phi1 / (alpha * (1.0 - alpha));
+  o.status = OrbitStatus::kOk;
+  return o;
+}
+
+double Orbit::x(double phi) const {
+  phi = Wrap(phi);
+  const Forcing& f = forcing;
+  if (phi <= phi1) {
+    return 1.0 - e * u * phi + T0 * phi * phi / (2.0 * (1.0 - alpha)) +
+           f.Phi(phi) / (alpha * (1.0 - alpha));
+  }
+  return x1 + (phi - phi1) * (v_plus - e * u) + (f.Phi(phi) - f.Phi(phi1)) / alpha;
+}
+
+double Orbit::dx(double phi) const {
+  phi = Wrap(phi);
+  if (phi <= phi1) {
+    return -e * u + T0 * phi / (1.0 - alpha) + forcing.Pi(phi) / (alpha * (1.0 - alpha));
+  }
+  return v_plus - e * u + forcing.Pi(phi) / alpha;
+}
+
+double Orbit::ddx(double phi) const {
+  phi = Wrap(phi);
+  if (phi < phi1) return (forcing.F(phi) + alpha * T0) / (alpha * (1.0 - alpha));
+  return forcing.F(phi) / alpha;
+}
+
+double Orbit::v(double phi) const {
+  phi = Wrap(phi);
+  if (phi >= phi1) return 0.0;
+  return (Pi_tau - T0 * phi - forcing.Pi(phi)) / (1.0 - alpha);
+}
+
+}  // namespace capsubot

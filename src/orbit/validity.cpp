@@ -1,0 +1,121 @@
+#include "capsubot/validity.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/brent.hpp"
+
+namespace capsubot {
+namespace {
+
+void Set(Validity& v, Condition c, bool violated) {
+  if (violated) v.violations |= 1U << static_cast<unsigned>(c);
+}
+
+// Exact extrema of x. x' is continuous on [0, tau] and monotone between the phases where x''
+// changes sign: the crossings of F = -alpha*T0 on [0, phi1] (slide) and of F = 0 on
+// [phi1, tau] (rest). Each monotone piece holds at most one zero of x', found by a bracketed
+// Newton iteration (x'' is known in closed form).
+void PositionExtrema(const Orbit& o, Validity& v) {
+  v.x_min = 1.0;  // x(0) = x(tau) = 1
+  v.phi_x_min = 0.0;
+  auto visit = [&](double lo, double hi) {
+    const double dlo = o.dx(lo), dhi = o.dx(hi);
+    if (!(dlo * dhi < 0.0)) return;
+    const double r = detail::SafeNewton([&](double p) { return o.dx(p); },
+                                        [&](double p) { return o.ddx(p); }, lo, hi);
+    const double xr = o.x(r);
+    if (dlo < 0.0) {  // x' from - to +: local minimum
+      if (xr < v.x_min) {
+        v.x_min = xr;
+        v.phi_x_min = r;
+      }
+    } else if (!(xr <= v.x_max)) {  // local maximum (x_max starts as NaN)
+      v.x_max = xr;
+      v.phi_x_max = r;
+    }
+  };
+  auto walk = [&](double level, double lo, double hi) {
+    const PhaseList cuts = o.forcing.Crossings(level, lo, hi);
+    double a = lo;
+    for (int i = 0; i < cuts.n; ++i) {
+      if (cuts.phi[i] > a && cuts.phi[i] < hi) {
+        visit(a, cuts.phi[i]);
+        a = cuts.phi[i];
+      }
+    }
+    visit(a, hi);
+  };
+  walk(-o.alpha * o.T0, 0.0, o.phi1);
+  walk(0.0, o.phi1, kTau);
+}
+
+}  // namespace
+
+const char* ConditionName(Condition condition) {
+  switch (condition) {
+    case Condition::kPositiveMeanForce:
+      return "positive_mean_force";
+    case Condition::kMassRatio:
+      return "mass_ratio";
+    case Condition::kForceBelowFriction:
+      return "force_below_friction";
+    case Condition::kStick:
+      return "stick";
+    case Condition::kLeftWall:
+      return "left_wall";
+    case Condition::kRightWall:
+      return "right_wall";
+    case Condition::kSeparation:
+      return "separation";
+    case Condition::kClearance:
+      return "clearance";
+    case Condition::kCount:
+      break;
+  }
+  return "unknown";
+}
+
+std::vector<std::string> Validity::ViolationNames() const {
+  std::vector<std::string> names;
+  for (int i = 0; i < static_cast<int>(Condition::kCount); ++i) {
+    if (violated(static_cast<Condition>(i))) names.emplace_back(ConditionName(Condition(i)));
+  }
+  return names;
+}
+
+Validity CheckValidity(const Orbit& o, double margin) {
+  Validity v;
+  v.checked = true;
+  v.max_force = o.forcing.MaxAbs();
+  Set(v, Condition::kForceBelowFriction, !WithinForceBound(v.max_force, o.T0));
+  if (o.status == OrbitStatus::kNonPositiveMeanForce) {
+    Set(v, Condition::kPositiveMeanForce, true);
+    return v;
+  }
+  const Range rest = o.forcing.Bounds(o.phi1, kTau);
+  v.rest_force = std::max(std::abs(rest.min), std::abs(rest.max));
+  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, o.T0));
+  if (!o.ok()) {
+    Set(v, Condition::kMassRatio, true);
+    return v;
+  }
+  PositionExtrema(o, v);
+  Set(v, Condition::kLeftWall, !(v.x_min >= 0.0));
+  Set(v, Condition::kRightWall, v.x_max > 1.0);
+  // After the impact x' = -e u < 0; for e = 0 the inner body must accelerate away: x''(0+) < 0.
+  Set(v, Condition::kSeparation, !(o.e * o.u > 0.0 || (o.e == 0.0 && o.ddx(0.0) < 0.0)));
+  if (margin > 0.0) {
+    Set(v, Condition::kClearance, !(v.x_min >= margin) || v.x_max > 1.0 - margin);
+  }
+  return v;
+}
+
+Solution Solve(const Forcing& forcing, const Params& params) {
+  Solution s;
+  s.orbit = ComputeOrbit(forcing, params);  // validates params
+  s.validity = CheckValidity(s.orbit, params.margin);
+  return s;
+}
+
+}  // namespace capsubot
