@@ -13,7 +13,7 @@
 namespace capsubot {
 
 /// Default work bound of FindRobotOrbits: evaluations of the orbit equation while refining
-/// the circle (the search needs far fewer for every force tested; see README).
+/// the circle (the search needs far fewer for every force tested; see docs/orbit.md).
 inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
 
 /// Every one-impact orbit of a robot with fixed mass ratio alpha: all roots phi0 in [-pi, pi) of

@@ -5,8 +5,8 @@
 //
 // Inside each mode the motion is in closed form; events are located by exact bracketing on
 // pieces where the event function is monotone, convex or concave (cut at the crossings of F
-// with known levels), then a bracketed Newton iteration to ~1e-14 in phase. See README, section
-// "Simulation, stability and the orbits of a given robot", for why no event is missed.
+// with known levels), then a bracketed Newton iteration to ~1e-14 in phase. docs/simulate.md
+// explains why no event is missed.
 
 #include <cstdint>
 #include <limits>

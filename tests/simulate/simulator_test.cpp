@@ -105,7 +105,7 @@ TEST_P(ValidOrbitGrid, SimulatedMeanVelocityEqualsAnalytic) {
   }
 }
 
-// Parameter sets chosen with a scan of `capsubot solve` over phi0 (tests/simulator_test.cpp
+// Parameter sets chosen with a scan of `capsubot solve` over phi0 (with this file's
 // scan, 64 phases): each holds valid orbits; T0 from 0.01 to 0.3, e from 0 to 1.
 INSTANTIATE_TEST_SUITE_P(
     Simulator, ValidOrbitGrid,
