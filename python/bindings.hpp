@@ -44,13 +44,16 @@ inline constexpr const char* kUnits =
     "at the impact on the right wall); positions in L (walls at x = 0 and x = 1); velocities "
     "in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = m2/(m1+m2).";
 
-/// The docstring lines of the force and model arguments shared by several functions.
+/// The docstring lines of the force arguments shared by several functions.
 inline constexpr const char* kForcingArgsDoc =
     "    A       amplitude A >= 0 of F = A sin(phi + phi0) + c [force]; omit it for a\n"
     "            Fourier force\n"
     "    c       mean force [force]; a directed orbit needs c > 0\n"
     "    cos, sin  Fourier force F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)):\n"
-    "            sequences a_1..a_K and b_1..b_K [force], K <= 16; cos defaults to zeros\n"
+    "            sequences a_1..a_K and b_1..b_K [force], K <= 16; cos defaults to zeros\n";
+
+/// The docstring lines of the model arguments T0 and e.
+inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
 

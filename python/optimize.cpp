@@ -137,9 +137,9 @@ constexpr const char* kOptimizeDoc =
     "    problem 'phase' (P1: the best impact phase phi0 for the force shape A, c), 'forcing'\n"
     "            (P2: the best A, c, phi0 with A + c <= bound) or 'fourier' (P3: the best\n"
     "            K-harmonic force with max |F| <= bound)\n"
-    "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n"
-    "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
-    "    e       coefficient of restitution, 0 <= e <= 1\n"
+    "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n";
+
+constexpr const char* kOptimizeOptionsDoc =
     "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
     "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
     "            [force]; None: T0\n"
@@ -164,7 +164,7 @@ constexpr const char* kOptimizeDoc =
 }  // namespace
 
 void BindOptimize(py::module_& m) {
-  const std::string doc = std::string(kOptimizeDoc) + kUnits;
+  const std::string doc = std::string(kOptimizeDoc) + kModelArgsDoc + kOptimizeOptionsDoc + kUnits;
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem"),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
         py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,

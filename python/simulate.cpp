@@ -191,7 +191,9 @@ constexpr const char* kSimulateDoc =
     "Arguments (keyword only, named as the options of `capsubot simulate`):\n";
 
 constexpr const char* kSimulateArgsDoc =
-    "    phi0    motor phase at the start [rad]; required with A, default 0 with sin/cos\n"
+    "    phi0    motor phase at the start [rad]; required with A, default 0 with sin/cos\n";
+
+constexpr const char* kSimulateStateDoc =
     "    alpha   mass ratio m2/(m1+m2), 0 < alpha < 1 (required unless from_orbit)\n"
     "    x0, u0, v0  initial position of the inner body [L] (0 <= x0 <= 1), relative velocity\n"
     "            dx/dphi and capsule velocity [omega L] (required unless from_orbit)\n"
@@ -221,7 +223,8 @@ constexpr const char* kSimulateArgsDoc =
 
 void BindSimulate(py::module_& m) {
   const SimOptions defaults;
-  const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc + kUnits;
+  const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc +
+                          kModelArgsDoc + kSimulateStateDoc + kUnits;
   m.def("simulate", &Simulate, doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),

@@ -41,7 +41,7 @@ constexpr const char* kTrajectoryDoc =
     "The state along one period of the one-impact orbit, as `capsubot solve --trajectory`: "
     "samples equally spaced phases from phi = 0 (just after the impact) to phi = tau (just "
     "before the next one).\n\n"
-    "Arguments (keyword only): as solve, and\n";
+    "Arguments (keyword only, named as the options of `capsubot solve`):\n";
 
 constexpr const char* kTrajectoryReturnsDoc =
     "    samples number of phases, >= 2\n\n"
@@ -102,14 +102,14 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
 }  // namespace
 
 void BindSolve(py::module_& m) {
-  const std::string solve_doc =
-      std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc + kSolveReturnsDoc + kUnits;
+  const std::string solve_doc = std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc +
+                                kModelArgsDoc + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("stability") = false);
-  const std::string trajectory_doc =
-      std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc + kTrajectoryReturnsDoc + kUnits;
+  const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
+                                     kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
   m.def("trajectory", &Trajectory, trajectory_doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
         py::arg("c"), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
         py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,

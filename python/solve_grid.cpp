@@ -309,9 +309,9 @@ constexpr const char* kSolveGridDoc =
     "rules, e.g. phi0 of shape (n,) with c of shape (m, 1) gives an (m, n) grid):\n"
     "    A       amplitude A >= 0 of F = A sin(phi + phi0) + c [force]\n"
     "    c       mean force [force]\n"
-    "    phi0    motor phase at the impact [rad]\n"
-    "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
-    "    e       coefficient of restitution, 0 <= e <= 1\n"
+    "    phi0    motor phase at the impact [rad]\n";
+
+constexpr const char* kSolveGridOptionsDoc =
     "    margin  clearance d between inner body and walls [L], 0 <= d < 0.5\n"
     "    stability  also spectral_radius and stable (docs/model.md section 8)\n"
     "    threads number of threads, 1..1024; None: all cores\n\n"
@@ -332,7 +332,8 @@ void BindSolveGrid(py::module_& m) {
     conditions[static_cast<std::size_t>(i)] = ConditionName(static_cast<Condition>(i));
   }
   m.attr("CONDITIONS") = conditions;
-  const std::string doc = std::string(kSolveGridDoc) + kUnits;
+  const std::string doc =
+      std::string(kSolveGridDoc) + kModelArgsDoc + kSolveGridOptionsDoc + kUnits;
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = 1.0, py::arg("e") = 1.0, py::arg("margin") = 0.0,
         py::arg("stability") = false, py::arg("threads") = py::none());

@@ -1,6 +1,7 @@
 """optimize: the command line's object for each problem, and P1 checked by a dense scan."""
 
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -54,3 +55,13 @@ def test_forcing_and_fourier_equal_the_command_line():
                                        "sin": fourier["sin"]}
     # P3 starts from the P2 optimum: never below it.
     assert fourier["gain"] >= 0.0 and fourier["I"] >= fourier["baseline_I"]
+
+
+def test_calls_from_several_threads_give_the_serial_results():
+    # optimize and simulate release the GIL: concurrent calls must not share state.
+    shapes = [dict(A=0.2, c=0.03), dict(A=0.2, c=0.03, stable=True), dict(A=0.1, c=0.02),
+              dict(A=0.3, c=0.05)]
+    serial = [capsubot.optimize(problem="phase", **s) for s in shapes]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(lambda s: capsubot.optimize(problem="phase", **s), shapes))
+    assert parallel == serial and len(parallel) == 4

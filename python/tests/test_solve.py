@@ -74,9 +74,9 @@ def test_margin_is_checked_as_clearance():
     assert d["valid"] is False and d["violations"] == ["clearance"]
 
 
-def test_trajectory_equals_the_command_lines_csv():
+def test_trajectory_equals_the_command_lines_csv(tmp_path):
     samples = 17
-    path = f"/tmp/capsubot_python_trajectory_{id(samples)}.csv"
+    path = tmp_path / "trajectory.csv"
     status, _, err = run_cli("solve", *cli_args(VALID), "--trajectory", path, "--samples", samples)
     assert status == 0, err
     with open(path, encoding="utf-8") as f:
