@@ -11,11 +11,13 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include "bindings.hpp"
@@ -114,7 +116,9 @@ class Cursor {
     }
   }
   double operator[](int k) const {
-    return *reinterpret_cast<const double*>(layout_.data[k] + offset_[k]);
+    double value;  // memcpy: a NumPy array need not be aligned
+    std::memcpy(&value, layout_.data[k] + offset_[k], sizeof value);
+    return value;
   }
   void Next() {
     for (std::size_t d = index_.size(); d-- > 0;) {
@@ -248,7 +252,11 @@ void RunBlocks(GridSolver& solver, std::int64_t size, int threads) {
   };
   std::vector<std::thread> pool;
   const auto helpers = std::min<std::int64_t>(threads, blocks) - 1;
-  for (std::int64_t i = 0; i < helpers; ++i) pool.emplace_back(work, false);
+  try {
+    for (std::int64_t i = 0; i < helpers; ++i) pool.emplace_back(work, false);
+  } catch (const std::system_error&) {
+    // The system refused a thread: the ones started (and this one) do all the blocks.
+  }
   work(true);
   for (std::thread& t : pool) t.join();
 }
