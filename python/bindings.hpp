@@ -1,0 +1,71 @@
+#pragma once
+// The Python module's pieces: one Bind function per library concept (each in its own file,
+// called by module.cpp), and the conversions they share (convert.cpp). The module is thin:
+// it converts Python arguments to the library's inputs, calls the library and converts the
+// results to the dicts that the command line's --json prints (same keys, null -> None).
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+#include <vector>
+
+#include "capsubot/forcing.hpp"
+#include "capsubot/stability.hpp"
+#include "capsubot/validity.hpp"
+
+namespace capsubot::python {
+
+namespace py = pybind11;
+
+// The functions of the module, one file per concept (solve.cpp, solve_grid.cpp, ...).
+void BindSolve(py::module_& m);      // solve, trajectory
+void BindSolveGrid(py::module_& m);  // solve_grid
+void BindSimulate(py::module_& m);   // simulate
+void BindOptimize(py::module_& m);   // optimize
+void BindOrbits(py::module_& m);     // orbits
+
+/// The force arguments every function takes, named as the command-line options: the paper's
+/// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
+/// k(phi+phi0)) given by `cos` and `sin`.
+struct ForcingArgs {
+  std::optional<double> A;
+  double c = 0.0;
+  std::optional<double> phi0;
+  std::optional<std::vector<double>> cos, sin;
+
+  /// The force; throws std::invalid_argument naming what is missing or contradictory. With
+  /// `need_phase` false, phi0 may be absent (0: a function that solves for it).
+  Forcing Build(bool need_phase = true) const;
+};
+
+/// The units every docstring refers to (docs/model.md section 2).
+inline constexpr const char* kUnits =
+    "Units (dimensionless, docs/model.md section 2): phases in rad (period tau = 2 pi, phi = 0 "
+    "at the impact on the right wall); positions in L (walls at x = 0 and x = 1); velocities "
+    "in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = m2/(m1+m2).";
+
+/// The docstring lines of the force arguments shared by several functions.
+inline constexpr const char* kForcingArgsDoc =
+    "    A       amplitude A >= 0 of F = A sin(phi + phi0) + c [force]; omit it for a\n"
+    "            Fourier force\n"
+    "    c       mean force [force]; a directed orbit needs c > 0\n"
+    "    cos, sin  Fourier force F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)):\n"
+    "            sequences a_1..a_K and b_1..b_K [force], K <= 16; cos defaults to zeros\n";
+
+/// The docstring lines of the model arguments T0 and e.
+inline constexpr const char* kModelArgsDoc =
+    "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
+    "    e       coefficient of restitution, 0 <= e <= 1\n";
+
+/// A number as the command line's JSON writes it: None for NaN or infinity (JSON null).
+py::object Number(double value);
+
+/// The dict of `capsubot solve --json`: A, c, phi0 (cos, sin for a Fourier force), T0, e,
+/// status, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid, violations.
+py::dict SolutionDict(const Solution& solution);
+
+/// Adds the keys of `solve --stability --json`: multipliers (list of {"re", "im"}),
+/// spectral_radius and stable (None, None, False when not computed).
+void AddStability(py::dict& d, const Stability& stability);
+
+}  // namespace capsubot::python

@@ -1,0 +1,75 @@
+// orbits: every one-impact orbit of a robot whose mass ratio is fixed (docs/model.md section 8),
+// as `capsubot orbits --json`.
+
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "capsubot/robot_orbits.hpp"
+
+namespace capsubot::python {
+namespace {
+
+py::list Orbits(double alpha, std::optional<double> A, double c,
+                std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+                double T0, double e, double margin, std::int64_t max_evaluations) {
+  const Params params{T0, e, margin};
+  params.Validate();
+  const Forcing forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
+  bool complete = true;
+  std::vector<Solution> found;
+  {
+    py::gil_scoped_release release;
+    found = FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations);
+  }
+  py::list all;
+  for (const Solution& s : found) {
+    py::dict d = SolutionDict(s);
+    AddStability(d, ComputeStability(s.orbit));
+    d["complete"] = complete;
+    all.append(d);
+  }
+  if (!complete) {
+    // Said as a warning, as the command line says it on stderr.
+    if (PyErr_WarnEx(PyExc_RuntimeWarning,
+                     "the search stopped at its work bound (max_evaluations): orbits may be "
+                     "missing",
+                     1) != 0) {
+      throw py::error_already_set();
+    }
+  }
+  return all;
+}
+
+constexpr const char* kOrbitsDoc =
+    "Every one-impact orbit of a given robot (mass ratio alpha fixed, docs/model.md section 8): "
+    "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, each with its validity and "
+    "stability: the array `capsubot orbits --json` prints.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot orbits`):\n"
+    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
+
+constexpr const char* kOrbitsArgsDoc =
+    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
+    "    max_evaluations  work bound of the search (evaluations of the orbit equation), >= 1\n\n"
+    "Returns a list of dicts sorted by phi0, each with the keys of solve(..., stability=True) "
+    "and complete (False: the search hit its work bound and orbits may be missing; a "
+    "RuntimeWarning then says so). phi0 is solved for: it is not an argument (a Fourier "
+    "force's coefficients are those of phi0 = 0).\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule). Runs without the GIL.\n\n";
+
+}  // namespace
+
+void BindOrbits(py::module_& m) {
+  const std::string doc =
+      std::string(kOrbitsDoc) + kForcingArgsDoc + kModelArgsDoc + kOrbitsArgsDoc + kUnits;
+  m.def("orbits", &Orbits, doc.c_str(), py::kw_only(), py::arg("alpha"), py::arg("A") = py::none(),
+        py::arg("c"), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
+        py::arg("max_evaluations") = kRobotOrbitsMaxEvaluations);
+}
+
+}  // namespace capsubot::python

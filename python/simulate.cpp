@@ -1,0 +1,240 @@
+// simulate: the exact event-driven simulation (docs/model.md sections 3 and 10), as
+// `capsubot simulate --json`, with the events and a sampled trajectory as NumPy arrays.
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "capsubot/simulator.hpp"
+
+namespace capsubot::python {
+namespace {
+
+// States in columns (the trajectory, or the states right after the events).
+struct StateColumns {
+  std::vector<double> phi, x, u, v, y;
+  std::vector<SimMode> mode;
+
+  void Add(const SimState& s) {
+    phi.push_back(s.phi);
+    x.push_back(s.x);
+    u.push_back(s.u);
+    v.push_back(s.v);
+    y.push_back(s.y);
+    mode.push_back(s.mode);
+  }
+};
+
+// Collects what the command line writes to --events and --trajectory.
+class TableObserver : public SimObserver {
+ public:
+  TableObserver(bool events, bool samples) : events_(events), samples_(samples) {}
+  void OnEvent(const SimEvent& e) override {
+    if (!events_) return;
+    kind.push_back(e.kind);
+    after.Add(e.after);
+    u_before.push_back(e.u_before);
+    v_before.push_back(e.v_before);
+  }
+  void OnSample(const SimState& s) override {
+    if (samples_) samples.Add(s);
+  }
+
+  std::vector<EventKind> kind;
+  StateColumns after;
+  std::vector<double> u_before, v_before;
+  StateColumns samples;
+
+ private:
+  bool events_, samples_;
+};
+
+py::array_t<double> Column(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+// An array of names ("impact_right", ...) for enum values: the distinct names indexed by codes.
+template <typename Enum>
+py::array NameColumn(const std::vector<Enum>& values, const char* (*name)(Enum)) {
+  std::vector<Enum> distinct;
+  py::array_t<std::int64_t> codes(static_cast<py::ssize_t>(values.size()));
+  std::int64_t* code = codes.mutable_data();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto it = std::find(distinct.begin(), distinct.end(), values[i]);
+    code[i] = it - distinct.begin();
+    if (it == distinct.end()) distinct.push_back(values[i]);
+  }
+  py::list names;
+  for (Enum value : distinct) names.append(name(value));
+  const py::module_ np = py::module_::import("numpy");
+  return np.attr("asarray")(names, py::arg("dtype") = "str")[codes];
+}
+
+py::dict StateDict(const StateColumns& s, const char* phase_key) {
+  py::dict d;
+  d[phase_key] = Column(s.phi);
+  d["x"] = Column(s.x);
+  d["u"] = Column(s.u);
+  d["v"] = Column(s.v);
+  d["y"] = Column(s.y);
+  d["mode"] = NameColumn(s.mode, &SimModeName);
+  return d;
+}
+
+// The --events table: phase, kind, x, u, v, y, u_before, v_before, mode.
+py::dict EventTable(const TableObserver& o) {
+  py::dict d = StateDict(o.after, "phase");
+  d["kind"] = NameColumn(o.kind, &EventKindName);
+  d["u_before"] = Column(o.u_before);
+  d["v_before"] = Column(o.v_before);
+  return d;
+}
+
+py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
+                  std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+                  double T0, double e, std::optional<double> alpha, std::optional<double> x0,
+                  std::optional<double> u0, std::optional<double> v0, double y0, bool from_orbit,
+                  double periods, double chatter_velocity, std::int64_t max_events_per_period,
+                  bool events, bool trajectory, long samples_per_period) {
+  const Params params{T0, e, 0.0};
+  params.Validate();
+  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  SimOptions sim;
+  sim.y0 = y0;
+  sim.periods = periods;
+  sim.chatter_velocity = chatter_velocity;
+  sim.max_events_per_period = max_events_per_period;
+  std::optional<Solution> orbit;
+  if (from_orbit) {
+    if (alpha || x0 || u0 || v0) {
+      throw std::invalid_argument(
+          "from_orbit takes the state and alpha from the analytic orbit: do not give alpha, "
+          "x0, u0 or v0 with it");
+    }
+    orbit = capsubot::Solve(forcing, params);
+    const Orbit& o = orbit->orbit;
+    if (!o.ok()) {
+      throw std::invalid_argument(
+          fmt::format("from_orbit: no one-impact orbit exists for this force, T0 and e ({})",
+                      StatusName(o.status)));
+    }
+    // Right after the impact (docs/model.md section 4): x = 1, x' = -e u, v = v+.
+    sim.alpha = o.alpha;
+    sim.x0 = 1.0;
+    sim.u0 = -o.e * o.u;
+    sim.v0 = o.v_plus;
+  } else {
+    if (!alpha) {
+      throw std::invalid_argument("alpha is missing: give the mass ratio (or from_orbit=True)");
+    }
+    if (!x0 || !u0 || !v0) {
+      throw std::invalid_argument(
+          "the initial state is missing: give all of x0, u0, v0 (or from_orbit=True)");
+    }
+    sim.alpha = *alpha;
+    sim.x0 = *x0;
+    sim.u0 = *u0;
+    sim.v0 = *v0;
+  }
+  if (samples_per_period < 1) {
+    throw std::invalid_argument(
+        fmt::format("samples_per_period = {} is invalid: expected at least 1", samples_per_period));
+  }
+  if (trajectory) sim.sample_step = kTau / static_cast<double>(samples_per_period);
+  sim.Validate();
+
+  TableObserver observer(events, trajectory);
+  SimResult r;
+  {
+    py::gil_scoped_release release;
+    r = capsubot::Simulate(forcing, params, sim, events || trajectory ? &observer : nullptr);
+  }
+  const SimState& f = r.final_state;
+  py::dict d;
+  d["status"] = SimStatusName(r.status);
+  d["message"] = r.message;
+  d["alpha"] = Number(sim.alpha);
+  d["phi"] = Number(f.phi);
+  d["x"] = Number(f.x);
+  d["u"] = Number(f.u);
+  d["v"] = Number(f.v);
+  d["y"] = Number(f.y);
+  d["mode"] = SimModeName(f.mode);
+  d["displacement"] = Number(r.displacement);
+  d["v_mean"] = Number(r.v_mean);
+  d["impacts_right"] = r.impacts_right;
+  d["impacts_left"] = r.impacts_left;
+  d["stops"] = r.stops;
+  d["breakaways"] = r.breakaways;
+  d["sticks"] = r.sticks;
+  d["releases"] = r.releases;
+  d["events"] = r.events;
+  if (orbit) d["orbit"] = SolutionDict(*orbit);
+  if (events) d["event_table"] = EventTable(observer);
+  if (trajectory) d["trajectory"] = StateDict(observer.samples, "phi");
+  return d;
+}
+
+constexpr const char* kSimulateDoc =
+    "Exact event-driven simulation of the full non-smooth dynamics (docs/model.md sections 3 "
+    "and 10), independent of the analytic orbit: the object `capsubot simulate --json` "
+    "prints. The force is F(phi) = A sin(phi + phi0) + c (or a Fourier force) with phi = 0 "
+    "at the start.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot simulate`):\n";
+
+constexpr const char* kSimulateArgsDoc =
+    "    phi0    motor phase at the start [rad]; required with A, default 0 with sin/cos\n";
+
+constexpr const char* kSimulateStateDoc =
+    "    alpha   mass ratio m2/(m1+m2), 0 < alpha < 1 (required unless from_orbit)\n"
+    "    x0, u0, v0  initial position of the inner body [L] (0 <= x0 <= 1), relative velocity\n"
+    "            dx/dphi and capsule velocity [omega L] (required unless from_orbit)\n"
+    "    y0      initial capsule position [L]\n"
+    "    from_orbit  start right after the impact of the analytic one-impact orbit for these\n"
+    "            A, c, phi0, T0, e (x = 1, u = -e u, v = v_plus) with its alpha\n"
+    "    periods length in forcing periods (2 pi each), 0 < periods <= 1e8\n"
+    "    chatter_velocity  an impact slower than this [omega L], with the inner body pushed\n"
+    "            into the wall, ends a chattering sequence: the body then rests on the wall\n"
+    "    max_events_per_period  work bound: the run stops (status 'event_limit') after this\n"
+    "            many events per period, >= 10\n"
+    "    events  also return every event (key 'event_table')\n"
+    "    trajectory  also return the state sampled on a grid of phases (key 'trajectory')\n"
+    "    samples_per_period  samples per forcing period of the trajectory, >= 1\n\n"
+    "Returns a dict: status ('ok', 'impact_limit', 'event_limit'), message, alpha, the final "
+    "state phi (rad), x (L), u, v (omega L), y (L), mode, displacement (y(end) - y0, L), "
+    "v_mean (omega L), the counts impacts_right, impacts_left, stops, breakaways, sticks, "
+    "releases, events; with from_orbit, orbit (the dict of solve). With events: "
+    "'event_table', a dict of NumPy arrays phase, kind, x, u, v, y (state right after the "
+    "event), u_before, v_before, mode (the columns of --events). With trajectory: "
+    "'trajectory', a dict of arrays phi, x, u, v, y, mode. The tables are kept in memory: "
+    "mind long runs.\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule).\n\n";
+
+}  // namespace
+
+void BindSimulate(py::module_& m) {
+  const SimOptions defaults;
+  const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc +
+                          kModelArgsDoc + kSimulateStateDoc + kUnits;
+  m.def("simulate", &Simulate, doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
+        py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
+        py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
+        py::arg("y0") = defaults.y0, py::arg("from_orbit") = false,
+        py::arg("periods") = defaults.periods,
+        py::arg("chatter_velocity") = defaults.chatter_velocity,
+        py::arg("max_events_per_period") = defaults.max_events_per_period,
+        py::arg("events") = false, py::arg("trajectory") = false,
+        py::arg("samples_per_period") = 100);
+}
+
+}  // namespace capsubot::python

@@ -1,0 +1,119 @@
+// solve and trajectory: the one-impact orbit (docs/model.md section 4) with its validity
+// (section 5) and stability (section 8), as `capsubot solve --json` and `--trajectory`.
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "bindings.hpp"
+
+namespace capsubot::python {
+namespace {
+
+constexpr const char* kSolveDoc =
+    "The one-impact periodic orbit (docs/model.md section 4) for the force F(phi) = A sin(phi + "
+    "phi0) + c (or a Fourier force), with every validity condition of section 5: the object "
+    "`capsubot solve --json` prints.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot solve`):\n";
+
+constexpr const char* kPhaseDoc =
+    "    phi0    motor phase at the impact [rad]: F(phi) = A sin(phi + phi0) + c with phi = 0\n"
+    "            at the impact; required with A, default 0 with sin/cos\n";
+
+constexpr const char* kSolveReturnsDoc =
+    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
+    "    stability  also the stability of the orbit (docs/model.md section 8)\n\n"
+    "Returns a dict: A, c, phi0 (and cos, sin for a Fourier force, A is then None), T0, e, "
+    "status ('ok', 'non_positive_mean_force', 'no_mass_ratio'), phi1 (stop phase, rad), alpha "
+    "(mass ratio m2/(m1+m2) that closes the orbit), u (impact velocity, omega L), v_plus "
+    "(capsule velocity after the impact, omega L), I (step per period, L), v_mean (mean "
+    "velocity I/tau, omega L), x_min, x_max (extrema of the inner body's position, L), valid "
+    "(bool), violations (names of the violated conditions); None where a quantity does not "
+    "exist. With stability: multipliers (list of {'re', 'im'}: eigenvalues of the impact "
+    "map's Jacobian), spectral_radius and stable (spectral_radius < 1).\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule).\n\n";
+
+constexpr const char* kTrajectoryDoc =
+    "The state along one period of the one-impact orbit, as `capsubot solve --trajectory`: "
+    "samples equally spaced phases from phi = 0 (just after the impact) to phi = tau (just "
+    "before the next one).\n\n"
+    "Arguments (keyword only, named as the options of `capsubot solve`):\n";
+
+constexpr const char* kTrajectoryReturnsDoc =
+    "    samples number of phases, >= 2\n\n"
+    "Returns a dict of NumPy arrays of length samples: phi (rad), x (relative position of "
+    "the inner body, L), dx (relative velocity dx/dphi, omega L), v (capsule velocity, omega "
+    "L).\n\n"
+    "Raises ValueError for bad input, or when no one-impact orbit exists for this force, T0 "
+    "and e (then the message names the orbit's status).\n\n";
+
+py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
+               std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+               double T0, double e, double margin, bool stability) {
+  const Params params{T0, e, margin};
+  params.Validate();
+  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  const Solution s = capsubot::Solve(forcing, params);
+  py::dict d = SolutionDict(s);
+  if (stability) AddStability(d, ComputeStability(s.orbit));
+  return d;
+}
+
+py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi0,
+                    std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+                    double T0, double e, long samples) {
+  const Params params{T0, e, 0.0};
+  params.Validate();
+  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  if (samples < 2) {
+    throw std::invalid_argument(
+        fmt::format("samples = {} is invalid: expected at least 2", samples));
+  }
+  const Orbit o = ComputeOrbit(forcing, params);
+  if (!o.ok()) {
+    throw std::invalid_argument(
+        fmt::format("no one-impact orbit exists for this force, T0 and e ({}): no trajectory",
+                    StatusName(o.status)));
+  }
+  py::array_t<double> phi(samples), x(samples), dx(samples), v(samples);
+  double* phi_out = phi.mutable_data();
+  double* x_out = x.mutable_data();
+  double* dx_out = dx.mutable_data();
+  double* v_out = v.mutable_data();
+  for (long i = 0; i < samples; ++i) {
+    // phi = 0 is just after the impact, phi = tau just before the next one.
+    phi_out[i] = kTau * static_cast<double>(i) / static_cast<double>(samples - 1);
+    x_out[i] = o.x(phi_out[i]);
+    dx_out[i] = o.dx(phi_out[i]);
+    v_out[i] = o.v(phi_out[i]);
+  }
+  py::dict d;
+  d["phi"] = phi;
+  d["x"] = x;
+  d["dx"] = dx;
+  d["v"] = v;
+  return d;
+}
+
+}  // namespace
+
+void BindSolve(py::module_& m) {
+  const std::string solve_doc = std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc +
+                                kModelArgsDoc + kSolveReturnsDoc + kUnits;
+  m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
+        py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
+        py::arg("stability") = false);
+  const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
+                                     kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
+  m.def("trajectory", &Trajectory, trajectory_doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
+        py::arg("c"), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
+        py::arg("samples") = 1001);
+}
+
+}  // namespace capsubot::python

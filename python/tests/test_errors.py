@@ -1,0 +1,129 @@
+"""Bad input: ValueError (or TypeError for a wrong type) with the library's message naming the
+parameter, its value and the rule; nothing crashes the interpreter."""
+
+import math
+
+import pytest
+
+import capsubot
+
+HARMONIC = dict(A=0.05, c=0.02, phi0=-2.842, T0=0.1, e=0.5)
+
+
+def message(fn, **kwargs):
+    with pytest.raises(ValueError) as err:
+        fn(**kwargs)
+    return str(err.value)
+
+
+@pytest.mark.parametrize("fn", [capsubot.solve, capsubot.trajectory])
+def test_model_parameters_name_the_rule(fn):
+    assert message(fn, **{**HARMONIC, "e": 1.3}) == (
+        "restitution e = 1.3 is invalid: expected 0 <= e <= 1")
+    assert message(fn, **{**HARMONIC, "T0": -1.0}) == (
+        "friction bound T0 = -1 is invalid: expected a finite T0 > 0")
+    assert message(fn, **{**HARMONIC, "A": -0.5}) == "A = -0.5 is invalid: expected A >= 0"
+    assert message(fn, **{**HARMONIC, "A": math.nan}) == (
+        "A = nan is invalid: expected a finite number")
+    assert message(fn, **{**HARMONIC, "c": math.inf}) == (
+        "c = inf is invalid: expected a finite number")
+    assert message(fn, **{**HARMONIC, "phi0": math.nan}) == (
+        "phi0 = nan is invalid: expected a finite number")
+
+
+def test_margin_names_the_rule():
+    assert message(capsubot.solve, **HARMONIC, margin=0.5) == (
+        "margin d = 0.5 is invalid: expected 0 <= d < 0.5")
+
+
+def test_force_arguments_that_are_missing_or_contradict():
+    assert message(capsubot.solve, c=0.02, phi0=0.0) == (
+        "A is missing: give the amplitude A (or sin/cos)")
+    assert message(capsubot.solve, A=0.05, c=0.02) == (
+        "phi0 is missing: give the impact phase phi0 [rad]")
+    assert message(capsubot.solve, A=0.05, c=0.02, phi0=0.0, sin=[0.1]).startswith(
+        "A and sin are exclusive")
+    assert message(capsubot.solve, c=0.02, phi0=0.0, cos=[0.1]).startswith("cos needs sin")
+    assert message(capsubot.solve, c=0.02, phi0=0.0, cos=[0.1], sin=[0.1, 0.2]) == (
+        "Fourier coefficients: 1 cosine and 2 sine terms given: expected as many of each")
+    assert message(capsubot.solve, c=0.02, sin=[0.1] * 17) == (
+        "harmonics K = 17 is invalid: expected K <= 16")
+    assert message(capsubot.solve, c=0.02, sin=[0.1, math.nan]) == (
+        "b_2 = nan is invalid: expected a finite number")
+
+
+def test_wrong_types_raise_type_error():
+    with pytest.raises(TypeError):
+        capsubot.solve(A="big", c=0.02, phi0=0.0)
+    with pytest.raises(TypeError):
+        capsubot.solve(A=0.05, c=0.02, phi0=0.0, sin="abc")
+    with pytest.raises(TypeError):
+        capsubot.solve(0.05, 0.02, 0.0)  # keyword arguments only
+    with pytest.raises(TypeError):
+        capsubot.solve(A=0.05, phi0=0.0)  # c is required
+
+
+def test_trajectory_needs_samples_and_an_orbit():
+    assert message(capsubot.trajectory, **HARMONIC, samples=1) == (
+        "samples = 1 is invalid: expected at least 2")
+    assert message(capsubot.trajectory, A=0.05, c=-0.02, phi0=0.0) == (
+        "no one-impact orbit exists for this force, T0 and e (non_positive_mean_force): no "
+        "trajectory")
+
+
+def test_simulate_messages():
+    sim = capsubot.simulate
+    assert message(sim, **HARMONIC, from_orbit=True, alpha=0.3).startswith(
+        "from_orbit takes the state and alpha from the analytic orbit")
+    assert message(sim, **HARMONIC) == "alpha is missing: give the mass ratio (or from_orbit=True)"
+    assert message(sim, **HARMONIC, alpha=0.3, x0=0.5) == (
+        "the initial state is missing: give all of x0, u0, v0 (or from_orbit=True)")
+    assert message(sim, A=0.05, c=-0.02, phi0=0.0, from_orbit=True) == (
+        "from_orbit: no one-impact orbit exists for this force, T0 and e "
+        "(non_positive_mean_force)")
+    state = dict(alpha=0.3, x0=0.5, u0=0.0, v0=0.0)
+    assert message(sim, **HARMONIC, **state, samples_per_period=0, trajectory=True) == (
+        "samples_per_period = 0 is invalid: expected at least 1")
+    assert message(sim, **HARMONIC, **{**state, "alpha": 1.0}) == (
+        "mass ratio alpha = 1 is invalid: expected 0 < alpha < 1")
+    assert message(sim, **HARMONIC, **{**state, "x0": math.nan}) == (
+        "initial position x0 = nan is invalid: expected 0 <= x0 <= 1")
+    assert message(sim, **HARMONIC, **state, periods=0.0) == (
+        "periods = 0 is invalid: expected 0 < periods <= 1e8")
+    assert message(sim, **HARMONIC, **state, max_events_per_period=5) == (
+        "max_events_per_period = 5 is invalid: expected >= 10")
+
+
+def test_optimize_messages():
+    opt = capsubot.optimize
+    assert message(opt, problem="speed") == (
+        "problem = 'speed' is invalid: expected 'phase', 'forcing' or 'fourier'")
+    assert message(opt, problem="phase", A=0.2) == (
+        "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)")
+    assert message(opt, problem="forcing", bound=math.nan) == (
+        "bound = nan is invalid: expected a finite bound > 0 (at most T0)")
+    assert message(opt, problem="forcing", bound=-1.0) == (
+        "bound = -1 is invalid: expected a finite bound > 0 (at most T0)")
+    assert message(opt, problem="forcing", bound=2.0).startswith(
+        "force_bound = 2 is invalid: expected force_bound <= T0 = 1")
+    assert message(opt, problem="forcing", starts=0) == (
+        "starts = 0 is invalid: expected starts >= 1")
+    assert message(opt, problem="forcing", stable=0.0) == (
+        "stable = 0 is invalid: expected a spectral radius bound rho_max > 0 (or True, "
+        "meaning 1)")
+    assert message(opt, problem="forcing", local_algorithm="LN_NOPE") == (
+        'local_algorithm = "LN_NOPE" is invalid: expected one of LN_COBYLA, LD_SLSQP, LD_MMA, '
+        "LD_CCSAQ")
+    assert message(opt, problem="fourier", harmonics=0) == (
+        "harmonics K = 0 is invalid: expected 1 <= K <= 16")
+    assert message(opt, problem="phase", A=0.2, c=0.03, e=-1.0) == (
+        "restitution e = -1 is invalid: expected 0 <= e <= 1")
+    with pytest.raises(TypeError, match="^stable must be None, True, False or a number"):
+        opt(problem="phase", A=0.2, c=0.03, stable="yes")
+
+
+def test_orbits_messages():
+    assert message(capsubot.orbits, alpha=1.5, A=0.05, c=0.02) == (
+        "mass ratio alpha = 1.5 is invalid: expected 0 < alpha < 1")
+    assert message(capsubot.orbits, alpha=0.3, A=0.05, c=0.02, max_evaluations=0) == (
+        "max_evaluations = 0 is invalid: expected >= 1")

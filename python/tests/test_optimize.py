@@ -1,0 +1,67 @@
+"""optimize: the command line's object for each problem, and P1 checked by a dense scan."""
+
+import math
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+
+import capsubot
+from conftest import cli_json
+
+# A force shape with valid orbits (the second panel of Fig. 3): A = 0.2, c = 0.03, T0 = 1.
+SHAPE = dict(A=0.2, c=0.03)
+SCAN_POINTS = 200001
+
+
+def test_phase_equals_the_command_lines_json():
+    d = capsubot.optimize(problem="phase", **SHAPE)
+    assert d == cli_json("optimize", "--problem", "phase", "--A", 0.2, "--c", 0.03)
+    assert d["status"] == "ok" and d["valid"] is True and d["problem"] == "phase"
+
+
+def test_phase_optimum_is_the_best_valid_point_of_a_dense_scan():
+    d = capsubot.optimize(problem="phase", **SHAPE)
+    phi0 = np.linspace(-math.pi, math.pi, SCAN_POINTS)
+    g = capsubot.solve_grid(**SHAPE, phi0=phi0)
+    valid_I = np.where(g["valid"], g["I"], np.nan)
+    best = np.nanmax(valid_I)
+    assert np.count_nonzero(g["valid"]) > 1000  # the valid arcs are well sampled
+    assert best <= d["I"] + 1e-12
+    # The optimum lies on an arc edge (right_wall is active), within one scan step of a valid
+    # scan point: the scan's best is below it by at most the largest change of I per step.
+    assert d["active_constraints"] == ["right_wall"]
+    step_change = np.nanmax(np.abs(np.diff(valid_I)))
+    assert 0.0 <= d["I"] - best <= step_change, (d["I"] - best, step_change)
+
+
+def test_stable_phase_equals_the_command_line():
+    d = capsubot.optimize(problem="phase", **SHAPE, stable=True)
+    assert d == cli_json("optimize", "--problem", "phase", "--A", 0.2, "--c", 0.03, "--stable")
+    assert d["spectral_radius"] <= 1.0 and d["stable"] is True
+    assert capsubot.optimize(problem="phase", **SHAPE, stable=1.0) == d
+
+
+def test_forcing_and_fourier_equal_the_command_line():
+    budget = dict(T0=0.1, starts=2)
+    forcing = capsubot.optimize(problem="forcing", **budget, hops=2)
+    assert forcing == cli_json("optimize", "--problem", "forcing", "--T0", 0.1, "--starts", 2,
+                               "--hops", 2)
+    assert forcing["status"] == "ok" and forcing["A"] + forcing["c"] <= 0.1 * (1 + 1e-12)
+    fourier = capsubot.optimize(problem="fourier", **budget, harmonics=2)
+    assert fourier == cli_json("optimize", "--problem", "fourier", "--T0", 0.1, "--starts", 2,
+                               "--harmonics", 2)
+    assert fourier["A"] is None and len(fourier["cos"]) == len(fourier["sin"]) == 2
+    assert fourier["coefficients"] == {"c": fourier["c"], "cos": fourier["cos"],
+                                       "sin": fourier["sin"]}
+    # P3 starts from the P2 optimum: never below it.
+    assert fourier["gain"] >= 0.0 and fourier["I"] >= fourier["baseline_I"]
+
+
+def test_calls_from_several_threads_give_the_serial_results():
+    # optimize and simulate release the GIL: concurrent calls must not share state.
+    shapes = [dict(A=0.2, c=0.03), dict(A=0.2, c=0.03, stable=True), dict(A=0.1, c=0.02),
+              dict(A=0.3, c=0.05)]
+    serial = [capsubot.optimize(problem="phase", **s) for s in shapes]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(lambda s: capsubot.optimize(problem="phase", **s), shapes))
+    assert parallel == serial and len(parallel) == 4

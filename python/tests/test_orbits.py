@@ -1,0 +1,41 @@
+"""orbits: every orbit of a given robot, as the command line lists them."""
+
+import warnings
+
+import pytest
+
+import capsubot
+from conftest import cli_json
+
+MOTOR = dict(A=0.05, c=0.02, T0=0.1, e=0.5)
+ALPHA = 0.28
+ALPHA_TOL = 1e-12  # the roots alpha(phi0) = alpha are polished to the last bits
+
+
+def test_equals_the_command_line_and_each_orbit_solves_back():
+    found = capsubot.orbits(alpha=ALPHA, **MOTOR)
+    assert found == cli_json("orbits", "--alpha", ALPHA, "--A", 0.05, "--c", 0.02, "--T0", 0.1,
+                             "--e", 0.5)
+    # Two orbits, the README's: phi0 = -2.8498 (stable) and 2.9506 (unstable).
+    assert [round(o["phi0"], 4) for o in found] == [-2.8498, 2.9506]
+    assert [o["stable"] for o in found] == [True, False]
+    checked = 0
+    for o in found:
+        assert o["complete"] is True and abs(o["alpha"] - ALPHA) <= ALPHA_TOL
+        again = capsubot.solve(**MOTOR, phi0=o["phi0"], stability=True)
+        assert {k: v for k, v in o.items() if k != "complete"} == again
+        checked += 1
+    assert checked == 2
+
+
+def test_an_incomplete_search_warns():
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        capsubot.orbits(alpha=ALPHA, **MOTOR, max_evaluations=1)
+    assert [str(w.message) for w in caught] == [
+        "the search stopped at its work bound (max_evaluations): orbits may be missing"]
+    assert caught[0].category is RuntimeWarning
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(RuntimeWarning):
+            capsubot.orbits(alpha=ALPHA, **MOTOR, max_evaluations=1)
