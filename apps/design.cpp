@@ -106,24 +106,27 @@ std::string MotorFormula(const MotorForce& f) {
   return s + " N, s = omega t + phase";
 }
 
+// Shortest text that reads back as the same double ("0.7", not "0.69999999999999996").
+std::string Shortest(double value) { return fmt::format("{}", value); }
+
 // The `capsubot solve` command that reproduces the gait's orbit (round-trip numbers).
 std::string SolveCommand(const Gait& g) {
   const Orbit& o = g.solution.orbit;
   const Forcing& f = o.forcing;
   std::string force;
   if (f.harmonic()) {
-    force = fmt::format("--A {} --c {}", FormatNumber(f.amplitude()), FormatNumber(f.mean()));
+    force = fmt::format("--A {} --c {}", Shortest(f.amplitude()), Shortest(f.mean()));
   } else {
     std::vector<std::string> a, b;
     for (int k = 1; k <= f.harmonics(); ++k) {
-      a.push_back(FormatNumber(f.a(k)));
-      b.push_back(FormatNumber(f.b(k)));
+      a.push_back(Shortest(f.a(k)));
+      b.push_back(Shortest(f.b(k)));
     }
-    force = fmt::format("--c {} --cos {} --sin {}", FormatNumber(f.mean()), fmt::join(a, ","),
+    force = fmt::format("--c {} --cos {} --sin {}", Shortest(f.mean()), fmt::join(a, ","),
                         fmt::join(b, ","));
   }
   return fmt::format("capsubot solve {} --phi0 {} --T0 {} --e {} --stability", force,
-                     FormatNumber(f.phi0()), FormatNumber(o.T0), FormatNumber(o.e));
+                     Shortest(f.phi0()), Shortest(o.T0), Shortest(o.e));
 }
 
 std::string Table(const DesignInput& in, const DesignResult& r) {

@@ -197,7 +197,14 @@ Value FromText(const Setting& s, const std::string& who, const std::string& text
   return v;
 }
 
+// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1].
 std::string Show(const toml::node& node) {
+  if (const auto* array = node.as_array()) {
+    std::vector<std::string> items;
+    for (const toml::node& element : *array) items.push_back(Show(element));
+    return fmt::format("[{}]", fmt::join(items, ", "));
+  }
+  if (node.is_floating_point()) return fmt::format("{}", **node.as_floating_point());
   std::ostringstream out;
   node.visit([&out](const auto& n) { out << n; });
   return out.str();

@@ -185,7 +185,7 @@ TEST(Design, ExampleRobotBestMassAgreesWithAnIndependentScan) {
   EXPECT_TRUE(RelNear(r.one_impact.speed_mm_s, 1e3 * best_v, kBestM2RelTol));
   // The scan's best is a sample; the refined optimum is at least as fast.
   EXPECT_GE(r.one_impact.speed_mm_s, 1e3 * best_v * (1.0 - 1e-12));
-  // Its limit is stability: the orbit sits on the fold (multiplier modulus 1).
+  // Its limit is stability: a multiplier at -1 (period doubling; `capsubot solve --stability`).
   EXPECT_EQ(r.one_impact.binding, std::vector<std::string>{"stability"});
   EXPECT_LE(r.robots, in.scan_points + 100);
 }
