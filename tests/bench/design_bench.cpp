@@ -3,24 +3,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include "../design/example_robot.hpp"
 #include "capsubot/design.hpp"
 #include "capsubot/orbit_energy.hpp"
 
 namespace {
 
 using capsubot::DesignInput;
-
-DesignInput Example() {
-  DesignInput in;
-  in.m1 = 0.2;
-  in.L = 0.02;
-  in.mu = 0.3;
-  in.e = 0.7;
-  in.force.amplitude = 0.5;
-  in.force.bias = 0.1;
-  in.frequency_min = in.frequency_max = 20.0;
-  return in;
-}
+using capsubot::testing::ExampleRobot;
 
 // OrbitEnergy on valid orbits (the same phases as BM_SolveHarmonicValid), orbit built outside.
 void BM_OrbitEnergy(benchmark::State& state) {
@@ -36,7 +26,7 @@ BENCHMARK(BM_OrbitEnergy);
 
 // One robot: all its one-impact orbits, their stability, the fastest robust one in SI units.
 void BM_EvaluateGait(benchmark::State& state) {
-  const DesignInput in = Example();
+  const DesignInput in = ExampleRobot();
   double sum = 0.0;
   for (auto _ : state) sum += capsubot::EvaluateGait(in, 0.22, 20.0).speed_mm_s;
   benchmark::DoNotOptimize(sum);
@@ -46,14 +36,14 @@ BENCHMARK(BM_EvaluateGait)->Unit(benchmark::kMillisecond);
 
 // `capsubot design --config examples/robot.toml`: the m2 search at a fixed frequency.
 void BM_DesignExample(benchmark::State& state) {
-  const DesignInput in = Example();
+  const DesignInput in = ExampleRobot();
   for (auto _ : state) benchmark::DoNotOptimize(capsubot::Design(in).one_impact.m2_kg);
 }
 BENCHMARK(BM_DesignExample)->Unit(benchmark::kMillisecond);
 
 // The same with --frequency-range 10:40: an m2 search per frequency tried.
 void BM_DesignExampleFrequencyRange(benchmark::State& state) {
-  DesignInput in = Example();
+  DesignInput in = ExampleRobot();
   in.frequency_min = 10.0;
   in.frequency_max = 40.0;
   for (auto _ : state) benchmark::DoNotOptimize(capsubot::Design(in).one_impact.m2_kg);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "capsubot/robot_orbits.hpp"
+#include "design/example_robot.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -30,17 +31,9 @@ constexpr double kBestM2RelTol = 0.01;
 constexpr int kReferenceScan = 2400;
 constexpr double kReferenceLo = 0.05, kReferenceHi = 0.5;
 
-// The example robot of docs/design.md: m1 = 0.2 kg, L = 20 mm, mu = 0.3, e = 0.7, motor
-// 0.5 sin(omega t + phase) + 0.1 N at 20 Hz; margins off (d = d_s = s = 0, rho_max = 1).
+// The example robot of docs/design.md with margins off (d = d_s = s = 0, rho_max = 1).
 DesignInput Example() {
-  DesignInput in;
-  in.m1 = 0.2;
-  in.L = 0.02;
-  in.mu = 0.3;
-  in.e = 0.7;
-  in.force.amplitude = 0.5;
-  in.force.bias = 0.1;
-  in.frequency_min = in.frequency_max = 20.0;
+  DesignInput in = testing::ExampleRobot();
   in.margin = 0.0;
   in.margin_stroke = 0.0;
   in.stick_margin = 0.0;
@@ -115,6 +108,21 @@ TEST(Design, EnergyInUserUnitsBalancesAndCostOfTransportIsAtLeastMu) {
   EXPECT_EQ(ok, 17);
 }
 
+// The model of b equals a's (T0, A, c, alpha: the same numbers up to rounding), so every
+// dimensionless result of its gait does (up to the robot-orbit search's root tolerance).
+void ExpectSameDimensionlessGait(const Gait& a, const Gait& b) {
+  const Orbit &oa = a.solution.orbit, &ob = b.solution.orbit;
+  EXPECT_TRUE(RelNear(ob.T0, oa.T0, kMapRelTol));
+  EXPECT_TRUE(RelNear(ob.forcing.amplitude(), oa.forcing.amplitude(), kMapRelTol));
+  EXPECT_TRUE(RelNear(ob.forcing.mean(), oa.forcing.mean(), kMapRelTol));
+  EXPECT_TRUE(RelNear(b.model.alpha, a.model.alpha, kMapRelTol));
+  EXPECT_TRUE(RelNear(ob.alpha, oa.alpha, kRootRelTol));
+  EXPECT_TRUE(RelNear(ob.forcing.phi0(), oa.forcing.phi0(), kRootRelTol));
+  EXPECT_TRUE(RelNear(ob.I, oa.I, kRootRelTol));
+  EXPECT_TRUE(RelNear(b.stability.spectral_radius, a.stability.spectral_radius, kRootRelTol));
+  EXPECT_TRUE(RelNear(b.energy.motor_work, a.energy.motor_work, kRootRelTol));
+}
+
 // Multiplies the frequency by k and divides L by k^2: T0, A, c keep their values (omega^2 L
 // does), so the dimensionless gait is the same and the speed omega L I/tau is divided by k.
 TEST(Design, FrequencyTimesKAndGapOverKSquaredDivideTheSpeedByK) {
@@ -124,15 +132,7 @@ TEST(Design, FrequencyTimesKAndGapOverKSquaredDivideTheSpeedByK) {
     in.L /= k * k;
     const Gait b = EvaluateGait(in, kStableM2, 20.0 * k);
     ASSERT_TRUE(a.ok() && b.ok());
-    const Orbit &oa = a.solution.orbit, &ob = b.solution.orbit;
-    EXPECT_TRUE(RelNear(ob.T0, oa.T0, kMapRelTol));
-    EXPECT_TRUE(RelNear(ob.forcing.amplitude(), oa.forcing.amplitude(), kMapRelTol));
-    EXPECT_TRUE(RelNear(ob.forcing.mean(), oa.forcing.mean(), kMapRelTol));
-    EXPECT_TRUE(RelNear(ob.alpha, oa.alpha, kRootRelTol));
-    EXPECT_TRUE(RelNear(ob.forcing.phi0(), oa.forcing.phi0(), kRootRelTol));
-    EXPECT_TRUE(RelNear(ob.I, oa.I, kRootRelTol));
-    EXPECT_TRUE(RelNear(b.stability.spectral_radius, a.stability.spectral_radius, kRootRelTol));
-    EXPECT_TRUE(RelNear(b.energy.motor_work, a.energy.motor_work, kRootRelTol));
+    ExpectSameDimensionlessGait(a, b);
     EXPECT_TRUE(RelNear(b.speed_mm_s, a.speed_mm_s / k, kRootRelTol));
     EXPECT_TRUE(RelNear(b.cot, a.cot, kRootRelTol));
   }
@@ -146,16 +146,10 @@ TEST(Design, DoublingBothMassesAndTheMotorForceChangesNothingDimensionless) {
   in.force.bias *= 2.0;
   const Gait b = EvaluateGait(in, 2.0 * kStableM2, 20.0);
   ASSERT_TRUE(a.ok() && b.ok());
-  const Orbit &oa = a.solution.orbit, &ob = b.solution.orbit;
-  EXPECT_TRUE(RelNear(ob.T0, oa.T0, kMapRelTol));
-  EXPECT_TRUE(RelNear(ob.forcing.amplitude(), oa.forcing.amplitude(), kMapRelTol));
-  EXPECT_TRUE(RelNear(ob.forcing.mean(), oa.forcing.mean(), kMapRelTol));
-  EXPECT_TRUE(RelNear(ob.alpha, oa.alpha, kMapRelTol));
-  EXPECT_TRUE(RelNear(ob.forcing.phi0(), oa.forcing.phi0(), kMapRelTol));
-  EXPECT_TRUE(RelNear(ob.I, oa.I, kMapRelTol));
-  EXPECT_TRUE(RelNear(b.speed_mm_s, a.speed_mm_s, kMapRelTol));
-  EXPECT_TRUE(RelNear(b.energy_mj, 2.0 * a.energy_mj, kMapRelTol));  // twice the mass moved
-  EXPECT_TRUE(RelNear(b.cot, a.cot, kMapRelTol));
+  ExpectSameDimensionlessGait(a, b);
+  EXPECT_TRUE(RelNear(b.speed_mm_s, a.speed_mm_s, kRootRelTol));
+  EXPECT_TRUE(RelNear(b.energy_mj, 2.0 * a.energy_mj, kRootRelTol));  // twice the mass moved
+  EXPECT_TRUE(RelNear(b.cot, a.cot, kRootRelTol));
 }
 
 // The example: the best stable one-impact gait against a plain loop over m2 that
