@@ -288,8 +288,10 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
   for (int i = 0; i < kSettingCount; ++i) {
     const Setting& s = kSettings[i];
     o.options[i] = cmd.add_option(std::string("--") + s.name, o.values[i], s.help);
-    if (s.kind == Kind::kRange) o.options[i]->type_name("MIN:MAX");
-    if (s.kind == Kind::kList) o.options[i]->type_name("X1,X2,...");
+    o.options[i]->type_name(s.kind == Kind::kRange     ? "MIN:MAX"
+                            : s.kind == Kind::kList    ? "X1,X2,..."
+                            : s.kind == Kind::kInteger ? "INT"
+                                                       : "NUMBER");
   }
 }
 
