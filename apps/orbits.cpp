@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 #include "commands.hpp"
@@ -36,6 +37,7 @@ int Run(const OrbitsOptions& opt) {
     nlohmann::json all = nlohmann::json::array();
     for (const Solution& s : found) {
       nlohmann::json j = SolutionJson(s);
+      AddEnergyJson(j, OrbitEnergy(s.orbit));
       AddStabilityJson(j, ComputeStability(s.orbit));
       j["complete"] = complete;
       all.push_back(j);

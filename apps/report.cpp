@@ -98,6 +98,22 @@ void AddStabilityJson(nlohmann::json& j, const Stability& st) {
   j["stable"] = st.stable;
 }
 
+void AddEnergyJson(nlohmann::json& j, const Energy& en) {
+  j["energy"] = {{"motor_work", en.motor_work},
+                 {"motor_work_positive", en.motor_work_positive},
+                 {"friction_loss", en.friction_loss},
+                 {"impact_loss", en.impact_loss}};
+}
+
+std::string EnergyTable(const Energy& en) {
+  std::string t;
+  t += fmt::format("  motor work       W = {}, positive part W+ = {}   ((m1+m2) omega^2 L^2)\n",
+                   Num(en.motor_work), Num(en.motor_work_positive));
+  t += fmt::format("  losses           friction = {}, impacts = {}   (per period, same unit)\n",
+                   Num(en.friction_loss), Num(en.impact_loss));
+  return t;
+}
+
 std::string StabilityTable(const Stability& st) {
   if (!st.computed) return "  stability        not computed (no orbit)\n";
   std::string t;
@@ -106,8 +122,8 @@ std::string StabilityTable(const Stability& st) {
     t += fmt::format("  multiplier {}     {} {} {}i\n", i + 1, Num(z.real()),
                      z.imag() < 0 ? '-' : '+', Num(std::abs(z.imag())));
   }
-  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n", Num(st.spectral_radius),
-                   st.stable ? "stable, < 1" : "unstable, >= 1");
+  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n",
+                   Num(st.spectral_radius), st.stable ? "stable, < 1" : "unstable, >= 1");
   return t;
 }
 

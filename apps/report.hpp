@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "capsubot/energy.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 
@@ -22,6 +23,14 @@ std::string SolutionTable(const Solution& solution, const Params& params);
 /// Adds the stability of docs/model.md section 8 to a JSON object: "multipliers" (array of
 /// {"re", "im"}), "spectral_radius" and "stable" (null, null, false when not computed).
 void AddStabilityJson(nlohmann::json& j, const Stability& stability);
+
+/// Adds the energy budget of docs/model.md section 11 to a JSON object: "energy" with the keys
+/// motor_work, motor_work_positive, friction_loss, impact_loss (dimensionless, per period;
+/// null when not computed).
+void AddEnergyJson(nlohmann::json& j, const Energy& energy);
+
+/// Readable lines on the energy budget per period.
+std::string EnergyTable(const Energy& energy);
 
 /// Readable lines on the stability (multipliers, spectral radius, verdict).
 std::string StabilityTable(const Stability& stability);

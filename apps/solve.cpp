@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "capsubot/io.hpp"
+#include "capsubot/orbit_energy.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
@@ -53,10 +54,12 @@ int Run(const SolveOptions& opt) {
   }
   if (opt.json) {
     nlohmann::json j = SolutionJson(s);
+    AddEnergyJson(j, OrbitEnergy(s.orbit));
     if (opt.stability) AddStabilityJson(j, ComputeStability(s.orbit));
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", SolutionTable(s, opt.params));
+    fmt::print("{}", EnergyTable(OrbitEnergy(s.orbit)));
     if (opt.stability) fmt::print("{}", StabilityTable(ComputeStability(s.orbit)));
   }
   return 0;
@@ -75,7 +78,9 @@ Command AddSolveCommand(CLI::App& app) {
   AddParamsOptions(*cmd, opt->params);
   cmd->add_flag("--json", opt->json,
                 "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
-                "v_mean, x_min, x_max, valid, violations; null where a quantity does not exist)");
+                "v_mean, x_min, x_max, valid, violations, and energy {motor_work, "
+                "motor_work_positive, friction_loss, impact_loss} per period in (m1+m2) "
+                "omega^2 L^2; null where a quantity does not exist)");
   cmd->add_flag("--stability", opt->stability,
                 "also compute the stability of the orbit (docs/model.md section 8): adds the keys "
                 "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "

@@ -3,6 +3,7 @@
 #   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
+#   design_m2_*.csv, design_example.json, design_speed_power.png: the example robot's design
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -41,6 +42,13 @@ c_grid="c=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'B
   -o "$out/map_valid.csv"
 "$cli" sweep --grid "$A_grid" --grid "$c_grid" --T0 $T0 --optimize phi0 --stable-only \
   --stability -o "$out/map_stable.csv"
+
+say "design: speed and power of the example robot (examples/robot.toml) against m2"
+"$cli" design --config examples/robot.toml --rho-max inf --sweep m2:0.002:0.5:400 \
+  -o "$out/design_m2_valid.csv"
+"$cli" design --config examples/robot.toml --sweep m2:0.002:0.5:400 -o "$out/design_m2_robust.csv"
+"$cli" design --config examples/robot.toml --json > "$out/design_example.json.tmp"
+mv "$out/design_example.json.tmp" "$out/design_example.json"
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -91,4 +99,10 @@ gnuplot -e "term='$term'; out='$out/fig3_I_vs_phi0.png';
 
 gnuplot -e "term='$term'; out='$out/map_best_velocity.png'; valid_data='$out/map_valid.csv';
   stable_data='$out/map_stable.csv'; T0=$T0; n=$n; lo=$lo; hi=$hi" "$gp/map.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* | tr '\n' ' ')"
+read -r dm2 dspeed dpower < <(python3 -c 'import json, sys
+g = json.load(sys.stdin)["one_impact"]
+print(g["m2_kg"], g["speed_mm_s"], g["power_mw"])' < "$out/design_example.json")
+gnuplot -e "term='$term'; out='$out/design_speed_power.png'; valid_data='$out/design_m2_valid.csv';
+  robust_data='$out/design_m2_robust.csv'; best_m2=$dm2; best_speed=$dspeed; best_power=$dpower" \
+  "$gp/design.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* | tr '\n' ' ')"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "numerics/brent.hpp"
+#include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {
 namespace {
@@ -12,18 +12,15 @@ void Set(Validity& v, Condition c, bool violated) {
   if (violated) v.violations |= 1U << static_cast<unsigned>(c);
 }
 
-// Exact extrema of x. x' is continuous on [0, tau] and monotone between the phases where x''
-// changes sign: the crossings of F = -alpha*T0 on [0, phi1] (slide) and of F = 0 on
-// [phi1, tau] (rest). Each monotone piece holds at most one zero of x', found by a bracketed
-// Newton iteration (x'' is known in closed form).
+// Exact extrema of x: x' is monotone on each piece of detail::ForEachMonotonePiece, so each
+// piece holds at most one zero of x', a minimum where x' rises through it, else a maximum.
 void PositionExtrema(const Orbit& o, Validity& v) {
   v.x_min = 1.0;  // x(0) = x(tau) = 1
   v.phi_x_min = 0.0;
-  auto visit = [&](double lo, double hi) {
+  detail::ForEachMonotonePiece(o, [&](double lo, double hi) {
     const double dlo = o.dx(lo), dhi = o.dx(hi);
     if (!(dlo * dhi < 0.0)) return;
-    const double r = detail::SafeNewton([&](double p) { return o.dx(p); },
-                                        [&](double p) { return o.ddx(p); }, lo, hi);
+    const double r = detail::VelocityZero(o, lo, hi);
     const double xr = o.x(r);
     if (dlo < 0.0) {  // x' from - to +: local minimum
       if (xr < v.x_min) {
@@ -34,20 +31,7 @@ void PositionExtrema(const Orbit& o, Validity& v) {
       v.x_max = xr;
       v.phi_x_max = r;
     }
-  };
-  auto walk = [&](double level, double lo, double hi) {
-    const PhaseList cuts = o.forcing.Crossings(level, lo, hi);
-    double a = lo;
-    for (int i = 0; i < cuts.n; ++i) {
-      if (cuts.phi[i] > a && cuts.phi[i] < hi) {
-        visit(a, cuts.phi[i]);
-        a = cuts.phi[i];
-      }
-    }
-    visit(a, hi);
-  };
-  walk(-o.alpha * o.T0, 0.0, o.phi1);
-  walk(0.0, o.phi1, kTau);
+  });
 }
 
 }  // namespace

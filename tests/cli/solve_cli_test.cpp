@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "capsubot/orbit_energy.hpp"
 #include "capsubot/validity.hpp"
 #include "test_utils.hpp"
 
@@ -36,6 +37,21 @@ TEST(SolveCli, JsonHoldsEveryKeyAndMatchesTheLibrary) {
   EXPECT_TRUE(j["x_max"].is_null());  // no interior maximum: the quantity does not exist
 }
 
+TEST(SolveCli, JsonHoldsTheEnergyBudgetOfTheLibrary) {
+  const auto r = RunCli("solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out).at("energy");
+  const Energy en =
+      OrbitEnergy(ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.5), Params{0.1, 0.5}));
+  EXPECT_DOUBLE_EQ(j.at("motor_work").get<double>(), en.motor_work);
+  EXPECT_DOUBLE_EQ(j.at("motor_work_positive").get<double>(), en.motor_work_positive);
+  EXPECT_DOUBLE_EQ(j.at("friction_loss").get<double>(), en.friction_loss);
+  EXPECT_DOUBLE_EQ(j.at("impact_loss").get<double>(), en.impact_loss);
+  const auto table = RunCli("solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5");
+  EXPECT_NE(table.out.find("motor work"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("friction"), std::string::npos) << table.out;
+}
+
 TEST(SolveCli, MissingOrbitIsNullAndStillExitsZero) {
   const auto r = RunCli("solve --A 0.2 --c 0.03 --phi0 0 --json");
   ASSERT_EQ(r.status, 0);
@@ -43,6 +59,8 @@ TEST(SolveCli, MissingOrbitIsNullAndStillExitsZero) {
   EXPECT_TRUE(j["alpha"].is_null());
   EXPECT_TRUE(j["I"].is_null());
   EXPECT_EQ(j["violations"], nlohmann::json::array({"mass_ratio"}));
+  EXPECT_TRUE(j["energy"]["motor_work"].is_null());
+  EXPECT_TRUE(j["energy"]["impact_loss"].is_null());
 }
 
 TEST(SolveCli, FourierForceIsAccepted) {

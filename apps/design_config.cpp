@@ -1,0 +1,348 @@
+#include "design_config.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <toml++/toml.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "capsubot/io.hpp"
+
+namespace capsubot::app {
+namespace {
+
+enum class Kind { kNumber, kInteger, kList, kRange };
+
+// A parsed value; the field used depends on the setting's kind.
+struct Value {
+  double number = 0.0;        // kNumber, kInteger
+  std::vector<double> list;   // kList
+  double lo = 0.0, hi = 0.0;  // kRange
+};
+
+struct Setting {
+  const char* name;  // the flag without "--" and the key in the config file
+  Kind kind;
+  const char* help;
+  void (*set)(DesignInput&, const Value&);
+};
+
+// Each setting once: its name serves the flag and the file. Several settings write the same
+// field where they are alternatives (frequency or frequency-range, amplitude or Fourier).
+const Setting kSettings[] = {
+    {"m1", Kind::kNumber, "shell mass m1 [kg], > 0",
+     [](DesignInput& in, const Value& v) { in.m1 = v.number; }},
+    {"L", Kind::kNumber, "free gap L of the inner body between the walls [m], > 0",
+     [](DesignInput& in, const Value& v) { in.L = v.number; }},
+    {"mu", Kind::kNumber, "friction coefficient mu of the shell on the floor, > 0",
+     [](DesignInput& in, const Value& v) { in.mu = v.number; }},
+    {"g", Kind::kNumber, "gravity g [m/s^2], > 0 (default 9.81)",
+     [](DesignInput& in, const Value& v) { in.g = v.number; }},
+    {"e", Kind::kNumber, "coefficient of restitution e of the impacts, 0 <= e <= 1",
+     [](DesignInput& in, const Value& v) { in.e = v.number; }},
+    {"force-amplitude", Kind::kNumber,
+     "amplitude A_N [N] of the motor force F_N = A_N sin(omega t + phase) + c_N, >= 0",
+     [](DesignInput& in, const Value& v) {
+       in.force.amplitude = v.number;
+       in.force.cos.clear();
+       in.force.sin.clear();
+     }},
+    {"force-bias", Kind::kNumber, "mean c_N [N] of the motor force, >= 0",
+     [](DesignInput& in, const Value& v) { in.force.bias = v.number; }},
+    {"force-cos", Kind::kList,
+     "Fourier motor force instead of the amplitude: cosine coefficients [N] of "
+     "F_N = c_N + sum_k (a_k cos k s + b_k sin k s), s = omega t + phase (as many as "
+     "force-sin; default 0)",
+     [](DesignInput& in, const Value& v) {
+       in.force.cos = v.list;
+       in.force.amplitude = DesignInput::kNaN;
+     }},
+    {"force-sin", Kind::kList, "Fourier motor force: sine coefficients b_1,...,b_K [N]",
+     [](DesignInput& in, const Value& v) {
+       in.force.sin = v.list;
+       in.force.amplitude = DesignInput::kNaN;
+     }},
+    {"frequency", Kind::kNumber, "motor frequency f [Hz], > 0",
+     [](DesignInput& in, const Value& v) { in.frequency_min = in.frequency_max = v.number; }},
+    {"frequency-range", Kind::kRange,
+     "search the motor frequency too, over FMIN:FMAX [Hz] (instead of frequency)",
+     [](DesignInput& in, const Value& v) {
+       in.frequency_min = v.lo;
+       in.frequency_max = v.hi;
+     }},
+    {"m2-range", Kind::kRange, "inner masses searched, M2MIN:M2MAX [kg] (default 0.01 m1:10 m1)",
+     [](DesignInput& in, const Value& v) {
+       in.m2_min = v.lo;
+       in.m2_max = v.hi;
+     }},
+    {"margin", Kind::kNumber, "clearance d from both walls [units of L], 0 <= d < 0.5 (default 0)",
+     [](DesignInput& in, const Value& v) { in.margin = v.number; }},
+    {"margin-stroke", Kind::kNumber,
+     "clearance d_s from both walls [units of the stroke 1 - x_min], >= 0 (default 0.02)",
+     [](DesignInput& in, const Value& v) { in.margin_stroke = v.number; }},
+    {"stick-margin", Kind::kNumber,
+     "stick margin s: |F| <= (1-s) T0 while the shell rests, 0 <= s < 1 (default 0.02)",
+     [](DesignInput& in, const Value& v) { in.stick_margin = v.number; }},
+    {"rho-max", Kind::kNumber,
+     "largest admissible multiplier modulus of the gait, > 0; inf: no stability requirement "
+     "(default 0.9)",
+     [](DesignInput& in, const Value& v) { in.rho_max = v.number; }},
+    {"scan-points", Kind::kInteger,
+     "log-spaced samples of each searched variable before the refinement, >= 3 (default 64)",
+     [](DesignInput& in, const Value& v) { in.scan_points = static_cast<int>(v.number); }},
+};
+constexpr int kSettingCount = static_cast<int>(sizeof(kSettings) / sizeof(kSettings[0]));
+
+// Settings that must be given (by a flag or the file), and pairs that exclude each other
+// within one source (across sources the flag wins).
+const std::vector<std::vector<const char*>> kRequired = {{"m1"},
+                                                         {"L"},
+                                                         {"mu"},
+                                                         {"e"},
+                                                         {"force-bias"},
+                                                         {"force-amplitude", "force-sin"},
+                                                         {"frequency", "frequency-range"}};
+const std::vector<std::pair<const char*, const char*>> kExclusive = {
+    {"frequency", "frequency-range"},
+    {"force-amplitude", "force-sin"},
+    {"force-amplitude", "force-cos"}};
+
+// "who = text[ where] is invalid: expected rule"; where says which file, if any.
+[[noreturn]] void Bad(const std::string& who, const std::string& text, const char* rule,
+                      const std::string& where = "") {
+  throw std::invalid_argument(
+      fmt::format("{} = {}{} is invalid: expected {}", who, text, where, rule));
+}
+
+// Whole-string number ("0.2", "1e-3", "inf", "nan"): no trailing text.
+bool ToNumber(const std::string& text, double& out) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return false;
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
+const char* Rule(Kind kind) {
+  switch (kind) {
+    case Kind::kNumber:
+      return "a number";
+    case Kind::kInteger:
+      return "an integer";
+    case Kind::kList:
+      return "comma-separated numbers";
+    case Kind::kRange:
+      return "MIN:MAX with MIN < MAX";
+  }
+  return "a value";
+}
+
+// The value of a range once both ends are read: MIN < MAX (an empty or inverted range is an
+// error; NaN too).
+Value Range(const std::string& who, const std::string& text, double lo, double hi,
+            const std::string& where) {
+  if (!(lo < hi)) Bad(who, text, "MIN:MAX with MIN < MAX", where);
+  Value v;
+  v.lo = lo;
+  v.hi = hi;
+  return v;
+}
+
+// A setting's value from its text (a flag, or a string in the file).
+Value FromText(const Setting& s, const std::string& who, const std::string& text,
+               const std::string& where = "") {
+  Value v;
+  switch (s.kind) {
+    case Kind::kNumber:
+      if (!ToNumber(text, v.number)) Bad(who, text, Rule(s.kind), where);
+      return v;
+    case Kind::kInteger: {
+      char* end = nullptr;
+      errno = 0;
+      const long n = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || end != text.c_str() + text.size() || errno != 0 || n < INT32_MIN ||
+          n > INT32_MAX) {
+        Bad(who, text, Rule(s.kind), where);
+      }
+      v.number = static_cast<double>(n);
+      return v;
+    }
+    case Kind::kList: {
+      std::size_t start = 0;
+      while (true) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        double x = 0.0;
+        if (!ToNumber(text.substr(start, end - start), x)) Bad(who, text, Rule(s.kind), where);
+        v.list.push_back(x);
+        if (end == text.size()) return v;
+        start = end + 1;
+      }
+    }
+    case Kind::kRange: {
+      const std::size_t colon = text.find(':');
+      double lo = 0.0, hi = 0.0;
+      if (colon == std::string::npos || !ToNumber(text.substr(0, colon), lo) ||
+          !ToNumber(text.substr(colon + 1), hi)) {
+        Bad(who, text, Rule(s.kind), where);
+      }
+      return Range(who, text, lo, hi, where);
+    }
+  }
+  return v;
+}
+
+// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1].
+std::string Show(const toml::node& node) {
+  if (const auto* array = node.as_array()) {
+    std::vector<std::string> items;
+    for (const toml::node& element : *array) items.push_back(Show(element));
+    return fmt::format("[{}]", fmt::join(items, ", "));
+  }
+  if (node.is_floating_point()) return fmt::format("{}", **node.as_floating_point());
+  std::ostringstream out;
+  node.visit([&out](const auto& n) { out << n; });
+  return out.str();
+}
+
+// A setting's value from the config file: numbers as TOML numbers, lists and ranges as arrays
+// of numbers (a range may also be the flag's text "MIN:MAX").
+Value FromToml(const Setting& s, const std::string& where, const toml::node& node) {
+  const std::string who = s.name;
+  const std::string shown = Show(node);
+  const char* rule = s.kind == Kind::kList    ? "an array of numbers"
+                     : s.kind == Kind::kRange ? "\"MIN:MAX\" or [MIN, MAX] with MIN < MAX"
+                                              : Rule(s.kind);
+  if (s.kind == Kind::kRange && node.is_string())
+    return FromText(s, who, **node.as_string(), where);
+  Value v;
+  if (s.kind == Kind::kNumber || s.kind == Kind::kInteger) {
+    if (!(s.kind == Kind::kNumber ? node.is_number() : node.is_integer()))
+      Bad(who, shown, rule, where);
+    v.number = node.value<double>().value_or(std::nan(""));
+    if (s.kind == Kind::kInteger && std::abs(v.number) > INT32_MAX) Bad(who, shown, rule, where);
+    return v;
+  }
+  const toml::array* array = node.as_array();
+  if (array == nullptr) Bad(who, shown, rule, where);
+  for (const toml::node& element : *array) {
+    if (!element.is_number()) Bad(who, shown, rule, where);
+    v.list.push_back(element.value<double>().value_or(std::nan("")));
+  }
+  if (s.kind == Kind::kList) {
+    if (v.list.empty()) Bad(who, shown, rule, where);
+    return v;
+  }
+  if (v.list.size() != 2) Bad(who, shown, rule, where);
+  return Range(who, shown, v.list[0], v.list[1], where);
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw IoError(fmt::format("config file {} cannot be read: {}", path, std::strerror(errno)));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw IoError(fmt::format("config file {} cannot be read", path));
+  return text.str();
+}
+
+// No two alternatives (kExclusive) from one source: `given` holds the names it set.
+void CheckExclusive(const std::set<std::string>& given, const std::string& source) {
+  for (const auto& [a, b] : kExclusive) {
+    if (given.count(a) > 0 && given.count(b) > 0) {
+      throw std::invalid_argument(
+          fmt::format("settings {} and {} are both given {}: expected one of them", a, b, source));
+    }
+  }
+}
+
+int Find(const std::string& name) {
+  for (int i = 0; i < kSettingCount; ++i) {
+    if (name == kSettings[i].name) return i;
+  }
+  return -1;
+}
+
+std::string Names() {
+  std::vector<std::string> names;
+  for (const Setting& s : kSettings) names.emplace_back(s.name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+}  // namespace
+
+void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
+  cmd.add_option("--config", o.config,
+                 "TOML file with the robot: keys named like these flags without the dashes "
+                 "(m1 = 0.2, force-sin = [0.5], frequency-range = [10, 40]); flags override it")
+      ->type_name("FILE");
+  o.values.assign(kSettingCount, std::string());
+  o.options.assign(kSettingCount, nullptr);
+  for (int i = 0; i < kSettingCount; ++i) {
+    const Setting& s = kSettings[i];
+    o.options[i] = cmd.add_option(std::string("--") + s.name, o.values[i], s.help);
+    o.options[i]->type_name(s.kind == Kind::kRange     ? "MIN:MAX"
+                            : s.kind == Kind::kList    ? "X1,X2,..."
+                            : s.kind == Kind::kInteger ? "INT"
+                                                       : "NUMBER");
+  }
+}
+
+DesignInput BuildDesignInput(const DesignConfigOptions& o) {
+  DesignInput in;
+  std::set<std::string> given;
+  if (!o.config.empty()) {
+    const std::string text = ReadFile(o.config);
+    toml::table table;
+    try {
+      table = toml::parse(text, o.config);
+    } catch (const toml::parse_error& e) {
+      throw std::invalid_argument(fmt::format("config file {} line {} is invalid: {}", o.config,
+                                              e.source().begin.line, e.description()));
+    }
+    std::set<std::string> from_file;
+    for (const auto& [key, node] : table) {
+      const std::string name(key.str());
+      const int i = Find(name);
+      if (i < 0) {
+        throw std::invalid_argument(
+            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", name,
+                        Show(node), o.config, Names()));
+      }
+      const Setting& s = kSettings[i];
+      s.set(in, FromToml(s, " in " + o.config, node));
+      from_file.insert(name);
+    }
+    CheckExclusive(from_file, "in " + o.config);
+    given = from_file;
+  }
+  std::set<std::string> from_flags;
+  for (int i = 0; i < kSettingCount; ++i) {
+    if (o.options[i]->count() == 0) continue;
+    const Setting& s = kSettings[i];
+    s.set(in, FromText(s, std::string("--") + s.name, o.values[i]));
+    from_flags.insert(s.name);
+  }
+  CheckExclusive(from_flags, "as flags");
+  given.insert(from_flags.begin(), from_flags.end());
+  for (const auto& group : kRequired) {
+    bool any = false;
+    for (const char* name : group) any = any || given.count(name) > 0;
+    if (!any) {
+      throw std::invalid_argument(
+          fmt::format("setting {} is missing: give --{} (or {} in the --config file)",
+                      fmt::join(group, " or "), group.front(), group.front()));
+    }
+  }
+  in.Validate();
+  return in;
+}
+
+}  // namespace capsubot::app

@@ -1,0 +1,30 @@
+#pragma once
+// The robot of `capsubot design` from flags and a TOML file: one table of settings whose
+// names are both the flags (--m1) and the keys of the file (m1 = 0.2); a flag overrides the
+// file.
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "capsubot/design.hpp"
+
+namespace capsubot::app {
+
+/// What the command line says about the robot: the config file and each setting's flag.
+struct DesignConfigOptions {
+  std::string config;                 ///< --config FILE (empty: none)
+  std::vector<std::string> values;    ///< text of each setting's flag, by table index
+  std::vector<CLI::Option*> options;  ///< each setting's flag
+};
+
+/// Adds --config and one flag per setting to `cmd`.
+void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& options);
+
+/// The input: defaults, then the config file, then the flags given. Throws
+/// std::invalid_argument (unknown key, wrong type, bad text, a missing or doubly given
+/// setting; the message names the setting, its value and the rule) or IoError (unreadable
+/// file). The input is validated (DesignInput::Validate).
+DesignInput BuildDesignInput(const DesignConfigOptions& options);
+
+}  // namespace capsubot::app

@@ -1,0 +1,185 @@
+#pragma once
+// Designing a real robot in SI units (docs/model.md sections 2, 9, 11 and 12): given the shell,
+// the gap, the floor and the motor, find the inner mass m2 (and the motor frequency, when a
+// range is given) of the fastest robust one-impact gait, with its speed, power and cost of
+// transport.
+//
+// Mapping to the model: omega = 2 pi f, T0 = mu g/(omega^2 L), a motor force F_N [N] becomes
+// F = F_N/((m1+m2) omega^2 L), alpha = m2/(m1+m2). A robot (m2, f) has the one-impact orbits
+// of robot_orbits.hpp (the roots of alpha(phi0) = alpha); its gait is the fastest of them that
+// is valid with the clearance margins and whose largest multiplier is at most rho_max.
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "capsubot/energy.hpp"
+#include "capsubot/forcing.hpp"
+#include "capsubot/params.hpp"
+#include "capsubot/stability.hpp"
+#include "capsubot/validity.hpp"
+
+namespace capsubot {
+
+/// The motor force in newtons, as a function of the motor phase s = omega t + const:
+/// F_N(s) = bias + amplitude sin(s), or with Fourier coefficients
+/// F_N(s) = bias + sum_k (cos[k-1] cos(k s) + sin[k-1] sin(k s)). The phase at the impact is
+/// not an input: each orbit of the robot has its own.
+struct MotorForce {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double amplitude = kNaN;  ///< amplitude [N] of the harmonic force, >= 0 (unused with Fourier)
+  double bias = kNaN;       ///< mean force [N], >= 0 (a one-impact gait needs > 0)
+  std::vector<double> cos;  ///< Fourier cosine coefficients [N]; with `sin`, replaces amplitude
+  std::vector<double> sin;  ///< Fourier sine coefficients [N], as many as `cos` (or cos empty)
+
+  bool fourier() const { return !sin.empty() || !cos.empty(); }
+  /// Throws std::invalid_argument naming the bad field, its value and the rule.
+  void Validate() const;
+};
+
+/// A physical robot and what may be chosen: SI units throughout.
+struct DesignInput {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double m1 = kNaN;  ///< shell mass [kg], > 0
+  double L = kNaN;   ///< free gap of the inner body between the walls [m], > 0
+  double mu = kNaN;  ///< Coulomb friction coefficient of the shell on the floor, > 0
+  double g = 9.81;   ///< gravity [m/s^2], > 0
+  double e = kNaN;   ///< coefficient of restitution of the impacts, 0 <= e <= 1
+  MotorForce force;  ///< the motor force [N]
+  /// Motor frequency range [Hz], 0 < min <= max; min == max fixes the frequency.
+  double frequency_min = kNaN;
+  double frequency_max = kNaN;  ///< see frequency_min
+  /// Inner mass range [kg], 0 < min < max; NaN means the default 0.01 m1 (min), 10 m1 (max).
+  double m2_min = kNaN;
+  double m2_max = kNaN;  ///< see m2_min
+
+  // Robust gaits (docs/model.md section 12): what a gait must keep.
+  double margin = 0.0;          ///< clearance d from both walls [units of L], 0 <= d < 0.5
+  double margin_stroke = 0.02;  ///< clearance d_s [units of the stroke x_max - x_min], >= 0
+  double stick_margin = 0.02;   ///< stick margin s: |F| <= (1-s) T0 at rest, 0 <= s < 1
+  /// Largest admissible modulus of a multiplier (docs/model.md section 8), > 0; infinity means
+  /// no stability requirement.
+  double rho_max = 0.9;
+
+  /// Samples of each variable's scan (log-spaced) before the golden-section refinement, >= 3.
+  int scan_points = 64;
+
+  /// m2_min and m2_max with their defaults applied.
+  double M2Min() const;
+  double M2Max() const;  ///< see M2Min
+  /// Throws std::invalid_argument naming the bad parameter, its value and the rule.
+  void Validate() const;
+};
+
+/// The dimensionless model of one robot (docs/model.md sections 2 and 9).
+struct DesignModel {
+  Forcing forcing;  ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
+  Params params;    ///< T0, e and the clearance margin d
+  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< m2/(m1+m2)
+  double omega = std::numeric_limits<double>::quiet_NaN();  ///< 2 pi f [rad/s]
+};
+
+/// Maps the robot with inner mass m2 [kg] at motor frequency f [Hz] to the model. Validates
+/// nothing (call DesignInput::Validate first).
+DesignModel MapToModel(const DesignInput& input, double m2, double frequency);
+
+/// Why a robot has no gait, or that it has one.
+enum class GaitStatus {
+  kNotRun,            ///< not computed
+  kOk,                ///< a robust one-impact gait exists
+  kMotorSlidesShell,  ///< max |F_N| >= mu (m1+m2) g: the motor alone slides the shell, so no
+                      ///< one-impact gait (the capsule never rests between impacts)
+  kNoOrbit,           ///< the robot has no one-impact orbit (alpha(phi0) = alpha has no root)
+  kNotRobust,         ///< orbits exist, none valid with the margins and stable with rho_max
+};
+
+/// Stable identifier of a status ("ok", "motor_slides_shell", "no_orbit", "not_robust").
+const char* GaitStatusName(GaitStatus status);
+
+/// A gait in the user's units, with the dimensionless orbit it comes from.
+struct Gait {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  GaitStatus status = GaitStatus::kNotRun;
+  double m2_kg = kNaN;         ///< inner mass [kg]
+  double frequency_hz = kNaN;  ///< motor frequency [Hz]
+  // Below: NaN unless status == kOk.
+  double speed_mm_s = kNaN;           ///< mean speed of the shell [mm/s]
+  double displacement_mm = kNaN;      ///< displacement per period L I [mm]
+  double impact_velocity_m_s = kNaN;  ///< relative velocity at the impact omega L u [m/s]
+  double energy_mj = kNaN;            ///< motor work per period [mJ]
+  double power_mw = kNaN;             ///< mean motor power [mW]
+  double power_positive_mw = kNaN;    ///< mean power of a drive that cannot recover energy [mW]
+  double friction_loss_mj = kNaN;     ///< friction loss per period [mJ]
+  double impact_loss_mj = kNaN;       ///< impact loss per period [mJ]
+  double cot = kNaN;                  ///< cost of transport W/((m1+m2) g |displacement|), >= mu
+  double efficiency = kNaN;           ///< mu/COT = friction loss / motor work, in (0, 1]
+  /// The robot's orbits (valid or not, robust or not) found for this m2 and frequency.
+  int orbits = 0;
+  /// False when the orbit search hit its work bound: orbits may be missing.
+  bool complete = true;
+
+  DesignModel model;    ///< the dimensionless robot (T0, A, c, alpha, omega)
+  Solution solution;    ///< the gait's orbit (phi0, phi1, u, I, x_min, ...) and validity
+  Stability stability;  ///< its multipliers
+  Energy energy;        ///< its energy budget, dimensionless (docs/model.md section 11)
+  /// Robustness limits the gait sits on (slack below the search's resolution), in a fixed
+  /// order: left_wall, right_wall, stick, force_bound, stability (constraint_names of
+  /// optimize_result.hpp) and the ends of a searched range: m2_min, m2_max, frequency_min,
+  /// frequency_max. Filled by Design and DesignSweep.
+  std::vector<std::string> binding;
+
+  bool ok() const { return status == GaitStatus::kOk; }
+};
+
+/// The robust gait of the robot with inner mass m2 [kg] at frequency f [Hz]: its fastest
+/// one-impact orbit that is valid with the margins and has spectral radius <= rho_max. The
+/// input must be valid (throws std::invalid_argument otherwise). Deterministic; ~1 ms.
+Gait EvaluateGait(const DesignInput& input, double m2, double frequency);
+
+/// Outcome of a design search.
+enum class DesignStatus {
+  kNotRun,            ///< not computed
+  kOk,                ///< the fastest robust one-impact gait was found
+  kMotorSlidesShell,  ///< the motor slides the shell by itself for every m2 in the range
+  kNoGait,            ///< no robust one-impact gait for any m2 (and frequency) of the ranges
+};
+
+/// Stable identifier of a status ("ok", "motor_slides_shell", "no_gait").
+const char* DesignStatusName(DesignStatus status);
+
+struct DesignResult {
+  DesignStatus status = DesignStatus::kNotRun;
+  std::string message;  ///< one readable sentence: what was found, or why nothing was
+  /// (a) The fastest robust one-impact gait over the ranges (status kOk), else the reason
+  /// of its absence in `status` with the other fields NaN.
+  Gait one_impact;
+  std::int64_t robots = 0;  ///< robots (m2, f) evaluated
+  bool complete = true;     ///< false if an orbit search hit its work bound somewhere
+};
+
+/// Reports the robots evaluated so far (done of total, total an upper bound); must be cheap.
+using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)>;
+
+/// The fastest robust one-impact gait over m2 in [M2Min, M2Max] (and f in the frequency range):
+/// a scan of scan_points log-spaced values of each free variable, then a golden-section
+/// refinement around the best one (to 1e-9 relative, at most 100 steps); with a frequency range
+/// the m2 search runs for each frequency tried. Work is bounded by
+/// (scan_points + 100)^2 robots. Throws std::invalid_argument for invalid input.
+DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});
+
+/// What a design sweep varies.
+enum class DesignSweepVariable { kM2, kFrequency };
+
+/// One design per value of the swept variable: n log-spaced values from lo to hi inclusive
+/// (m2 [kg] or frequency [Hz]); at each, the other variable is the input's (frequency fixed)
+/// or optimised over its range as in Design. Each gait's `binding` lists the limits it sits on.
+/// Throws std::invalid_argument for invalid input or a bad range (0 < lo < hi, 2 <= n <= 100000).
+std::vector<Gait> DesignSweep(const DesignInput& input, DesignSweepVariable variable, double lo,
+                              double hi, int n, const DesignProgress& progress = {});
+
+}  // namespace capsubot

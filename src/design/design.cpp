@@ -1,0 +1,206 @@
+// The design searches: the fastest robust one-impact gait over the inner mass (and the motor
+// frequency), and sweeps of one of them (docs/model.md sections 9 and 12).
+
+#include "capsubot/design.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "numerics/golden.hpp"
+
+namespace capsubot {
+namespace {
+
+// Resolution of the refinement in log(m2) and log(f): 1e-9 relative.
+constexpr double kLogTol = 1e-9;
+constexpr int kMaxSweepPoints = 100000;
+
+// Counts the robots evaluated and reports progress.
+struct Tally {
+  const DesignProgress& progress;
+  std::int64_t total = 0;  // upper bound for progress reports
+  std::int64_t robots = 0;
+  bool complete = true;
+
+  Gait Evaluate(const DesignInput& in, double m2, double frequency) {
+    Gait g = EvaluateGait(in, m2, frequency);
+    ++robots;
+    complete = complete && g.complete;
+    if (progress) progress(robots, total);
+    return g;
+  }
+};
+
+// Why no gait was found over a searched range: not_robust if some robot had orbits, else
+// no_orbit if some robot had a motor that does not slide the shell, else motor_slides_shell.
+GaitStatus Worse(GaitStatus a, GaitStatus b) {
+  const auto rank = [](GaitStatus s) {
+    return s == GaitStatus::kNotRobust          ? 3
+           : s == GaitStatus::kNoOrbit          ? 2
+           : s == GaitStatus::kMotorSlidesShell ? 1
+                                                : 0;
+  };
+  return rank(a) >= rank(b) ? a : b;
+}
+
+// The value at x of a log scale from lo to hi, exact at both ends.
+double FromLog(double x, double lo, double hi) {
+  return x == std::log(lo) ? lo : x == std::log(hi) ? hi : std::exp(x);
+}
+
+// Fastest gait of inner(value) for value in [lo, hi]: log-spaced scan, then golden section
+// (detail::ScanGoldenMaximize). The best gait met is kept (the search's own best point); when
+// it sits at an end of the range, that end's name joins its binding limits.
+template <class Inner>
+Gait Maximise(double lo, double hi, int n, const Inner& inner, const char* lo_name,
+              const char* hi_name) {
+  Gait best;
+  GaitStatus why = GaitStatus::kNotRun;
+  double best_value = std::numeric_limits<double>::quiet_NaN();
+  const auto speed = [&](double x) {
+    const double value = FromLog(x, lo, hi);
+    Gait g = inner(value);
+    if (!g.ok()) {
+      why = Worse(why, g.status);
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    const double v = g.speed_mm_s;
+    if (!best.ok() || v > best.speed_mm_s) {  // the same rule as the search's own best point
+      best = std::move(g);
+      best_value = value;
+    }
+    return v;
+  };
+  detail::ScanGoldenMaximize(speed, std::log(lo), std::log(hi), n, kLogTol);
+  if (!best.ok()) {
+    best.status = why;
+    return best;
+  }
+  if (best_value == lo) best.binding.emplace_back(lo_name);
+  if (best_value == hi) best.binding.emplace_back(hi_name);
+  return best;
+}
+
+// The fastest gait over m2 in the input's range at frequency f.
+Gait BestOverM2(const DesignInput& in, double frequency, Tally& tally) {
+  Gait g = Maximise(
+      in.M2Min(), in.M2Max(), in.scan_points,
+      [&](double m2) { return tally.Evaluate(in, m2, frequency); }, "m2_min", "m2_max");
+  g.frequency_hz = frequency;
+  return g;
+}
+
+// Robots one m2 search evaluates at most.
+std::int64_t SearchBound(const DesignInput& in) { return in.scan_points + detail::kGoldenMaxSteps; }
+
+bool FixedFrequency(const DesignInput& in) { return in.frequency_min == in.frequency_max; }
+
+std::string Describe(const DesignInput& in, const Gait& g) {
+  const std::string where =
+      FixedFrequency(in) ? fmt::format("{:g} Hz", in.frequency_min)
+                         : fmt::format("{:g} to {:g} Hz", in.frequency_min, in.frequency_max);
+  const std::string range =
+      fmt::format("m2 in [{:g}, {:g}] kg at {}", in.M2Min(), in.M2Max(), where);
+  switch (g.status) {
+    case GaitStatus::kOk:
+      return fmt::format(
+          "fastest robust one-impact gait over {}: m2 = {:.6g} kg at {:.6g} Hz, {:.6g} mm/s, "
+          "{:.6g} mW",
+          range, g.m2_kg, g.frequency_hz, g.speed_mm_s, g.power_mw);
+    case GaitStatus::kMotorSlidesShell:
+      return fmt::format(
+          "no one-impact gait over {}: the motor slides the shell by itself everywhere "
+          "(max |F_N| > mu (m1+m2) g), so the shell never rests between impacts",
+          range);
+    case GaitStatus::kNoOrbit:
+      return fmt::format("no one-impact gait over {}: no robot there has a one-impact orbit",
+                         range);
+    default:
+      return fmt::format(
+          "no robust one-impact gait over {}: one-impact orbits exist, but none is valid with "
+          "the margins (d = {:g}, d_s = {:g}, s = {:g}) and has spectral radius <= rho_max = "
+          "{:g}",
+          range, in.margin, in.margin_stroke, in.stick_margin, in.rho_max);
+  }
+}
+
+}  // namespace
+
+const char* DesignStatusName(DesignStatus status) {
+  switch (status) {
+    case DesignStatus::kNotRun:
+      return "not_run";
+    case DesignStatus::kOk:
+      return "ok";
+    case DesignStatus::kMotorSlidesShell:
+      return "motor_slides_shell";
+    case DesignStatus::kNoGait:
+      return "no_gait";
+  }
+  return "unknown";
+}
+
+DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
+  in.Validate();
+  Tally tally{progress};
+  const auto over_m2 = [&](double f) { return BestOverM2(in, f, tally); };
+  DesignResult r;
+  if (FixedFrequency(in)) {
+    tally.total = SearchBound(in);
+    r.one_impact = over_m2(in.frequency_min);
+  } else {
+    tally.total = SearchBound(in) * SearchBound(in);
+    r.one_impact = Maximise(in.frequency_min, in.frequency_max, in.scan_points, over_m2,
+                            "frequency_min", "frequency_max");
+  }
+  r.robots = tally.robots;
+  r.complete = tally.complete;
+  const GaitStatus s = r.one_impact.status;
+  r.status = s == GaitStatus::kOk                 ? DesignStatus::kOk
+             : s == GaitStatus::kMotorSlidesShell ? DesignStatus::kMotorSlidesShell
+                                                  : DesignStatus::kNoGait;
+  r.message = Describe(in, r.one_impact);
+  return r;
+}
+
+std::vector<Gait> DesignSweep(const DesignInput& in, DesignSweepVariable variable, double lo,
+                              double hi, int n, const DesignProgress& progress) {
+  in.Validate();
+  const char* name = variable == DesignSweepVariable::kM2 ? "m2" : "frequency";
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && lo < hi)) {
+    throw std::invalid_argument(fmt::format(
+        "sweep range {} = {}:{} is invalid: expected finite 0 < MIN < MAX", name, lo, hi));
+  }
+  if (n < 2 || n > kMaxSweepPoints) {
+    throw std::invalid_argument(
+        fmt::format("sweep points n = {} is invalid: expected 2 <= n <= {}", n, kMaxSweepPoints));
+  }
+  Tally tally{progress};
+  const bool m2_swept = variable == DesignSweepVariable::kM2;
+  const bool one_robot = m2_swept && FixedFrequency(in);
+  tally.total = n * (one_robot ? 1 : SearchBound(in));
+  std::vector<Gait> rows;
+  rows.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    const double value = i == 0       ? lo
+                         : i == n - 1 ? hi
+                                      : std::exp(std::log(lo) + std::log(hi / lo) * i / (n - 1));
+    Gait g;
+    if (one_robot) {
+      g = tally.Evaluate(in, value, in.frequency_min);
+    } else if (m2_swept) {
+      g = Maximise(
+          in.frequency_min, in.frequency_max, in.scan_points,
+          [&](double f) { return tally.Evaluate(in, value, f); }, "frequency_min", "frequency_max");
+      g.m2_kg = value;
+    } else {
+      g = BestOverM2(in, value, tally);
+    }
+    rows.push_back(std::move(g));
+  }
+  return rows;
+}
+
+}  // namespace capsubot

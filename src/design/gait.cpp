@@ -1,0 +1,107 @@
+// The robust one-impact gait of one physical robot, in the user's units (docs/model.md
+// sections 8, 9, 11 and 12).
+
+#include <algorithm>
+#include <cmath>
+
+#include "capsubot/design.hpp"
+#include "capsubot/optimize_result.hpp"
+#include "capsubot/orbit_energy.hpp"
+#include "capsubot/robot_orbits.hpp"
+
+namespace capsubot {
+namespace {
+
+// A limit binds when its slack is below this (units: x in L, |F| in T0, multiplier modulus).
+// The searches locate the edge of a feasible set to 1e-9 in log(m2) or log(f); slacks vanish
+// there at least like the square root of the distance (a fold), so 1e-4 is well above them.
+constexpr double kBindingTol = 1e-4;
+
+// Fills the physical quantities of an ok gait (docs/model.md sections 9 and 11).
+void ToUserUnits(const DesignInput& in, Gait& gait) {
+  const Orbit& o = gait.solution.orbit;
+  const Energy& en = gait.energy;
+  const double w = gait.model.omega, L = in.L, M = in.m1 + gait.m2_kg;
+  const double energy_unit = M * w * w * L * L;  // (m1+m2) omega^2 L^2 [J]
+  gait.speed_mm_s = 1e3 * w * L * o.v_mean;
+  gait.displacement_mm = 1e3 * L * o.I;
+  gait.impact_velocity_m_s = w * L * o.u;
+  gait.energy_mj = 1e3 * energy_unit * en.motor_work;
+  gait.power_mw = gait.energy_mj * gait.frequency_hz;  // energy per period / period
+  gait.power_positive_mw = 1e3 * energy_unit * en.motor_work_positive * gait.frequency_hz;
+  gait.friction_loss_mj = 1e3 * energy_unit * en.friction_loss;
+  gait.impact_loss_mj = 1e3 * energy_unit * en.impact_loss;
+  // COT = W/((m1+m2) g L I) = mu W/(T0 I); its reciprocal times mu is friction / W.
+  gait.cot = in.mu * en.motor_work / (o.T0 * o.I);
+  gait.efficiency = in.mu / gait.cot;
+}
+
+// The robustness limits of docs/model.md section 12 whose slack at the gait is below
+// kBindingTol, in the order of design.hpp. The clearance is the larger of d and d_s times the
+// stroke 1 - x_min (x reaches 1 at the impact).
+std::vector<std::string> Binding(const DesignInput& in, const Gait& gait) {
+  namespace n = constraint_names;
+  const Validity& v = gait.solution.validity;
+  const double T0 = gait.model.params.T0;
+  const double clearance = std::max(in.margin, in.margin_stroke * (1.0 - v.x_min));
+  std::vector<std::string> names;
+  if (v.x_min - clearance <= kBindingTol) names.emplace_back(n::kLeftWall);
+  if (1.0 - clearance - v.x_max <= kBindingTol) names.emplace_back(n::kRightWall);  // NaN: no
+  if ((1.0 - in.stick_margin) - v.rest_force / T0 <= kBindingTol) names.emplace_back(n::kStick);
+  if (1.0 - v.max_force / T0 <= kBindingTol) names.emplace_back(n::kForceBound);
+  if (in.rho_max - gait.stability.spectral_radius <= kBindingTol) {
+    names.emplace_back(n::kStability);
+  }
+  return names;
+}
+
+}  // namespace
+
+const char* GaitStatusName(GaitStatus status) {
+  switch (status) {
+    case GaitStatus::kNotRun:
+      return "not_run";
+    case GaitStatus::kOk:
+      return "ok";
+    case GaitStatus::kMotorSlidesShell:
+      return "motor_slides_shell";
+    case GaitStatus::kNoOrbit:
+      return "no_orbit";
+    case GaitStatus::kNotRobust:
+      return "not_robust";
+  }
+  return "unknown";
+}
+
+Gait EvaluateGait(const DesignInput& input, double m2, double frequency) {
+  input.Validate();
+  Gait gait;
+  gait.m2_kg = m2;
+  gait.frequency_hz = frequency;
+  gait.model = MapToModel(input, m2, frequency);
+  const DesignModel& m = gait.model;
+  if (!WithinForceBound(m.forcing.MaxAbs(), m.params.T0)) {
+    gait.status = GaitStatus::kMotorSlidesShell;
+    return gait;
+  }
+  const std::vector<Solution> orbits =
+      FindRobotOrbits(m.forcing, m.params, m.alpha, &gait.complete);
+  gait.orbits = static_cast<int>(orbits.size());
+  gait.status = orbits.empty() ? GaitStatus::kNoOrbit : GaitStatus::kNotRobust;
+  for (const Solution& s : orbits) {
+    if (!s.validity.valid()) continue;
+    const Stability st = ComputeStability(s.orbit);
+    if (!(st.computed && st.spectral_radius <= input.rho_max)) continue;
+    if (gait.ok() && !(s.orbit.v_mean > gait.solution.orbit.v_mean)) continue;
+    gait.status = GaitStatus::kOk;
+    gait.solution = s;
+    gait.stability = st;
+  }
+  if (!gait.ok()) return gait;
+  gait.energy = OrbitEnergy(gait.solution.orbit);
+  ToUserUnits(input, gait);
+  gait.binding = Binding(input, gait);
+  return gait;
+}
+
+}  // namespace capsubot

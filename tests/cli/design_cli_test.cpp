@@ -1,0 +1,249 @@
+// `capsubot design` end to end: the TOML file and the flags give the same design, the JSON keys,
+// the sweep CSV (and `solve` reproducing a row), and every bad-input path (one line naming the
+// parameter, its value and the rule; exit status 2; no file left).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::RunCli;
+using testing::TempPath;
+
+// JSON numbers are written with round-trip precision: a number read back is the same double.
+constexpr double kSolveRelTol = 1e-12;  // `solve` from a CSV row: same orbit, same operations
+
+const std::string kFlags =
+    "--m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 --frequency 20";
+const std::string kMarginsOff = " --margin 0 --margin-stroke 0 --stick-margin 0 --rho-max 1";
+
+std::string ExampleConfig() { return std::string(CAPSUBOT_SOURCE_DIR) + "/examples/robot.toml"; }
+
+std::filesystem::path WriteConfig(const std::string& name, const std::string& text) {
+  const auto path = TempPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(DesignCli, ConfigFileAndFlagsGiveTheSameDesign) {
+  const auto from_file = RunCli("design --config " + ExampleConfig() + kMarginsOff + " --json");
+  const auto from_flags = RunCli("design " + kFlags + kMarginsOff + " --json");
+  ASSERT_EQ(from_file.status, 0) << from_file.out;
+  ASSERT_EQ(from_flags.status, 0) << from_flags.out;
+  EXPECT_EQ(nlohmann::json::parse(from_file.out), nlohmann::json::parse(from_flags.out));
+}
+
+TEST(DesignCli, FlagsOverrideTheConfigFile) {
+  const auto r =
+      RunCli("design --config " + ExampleConfig() + " --frequency 25" + kMarginsOff + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["one_impact"]["frequency_hz"].get<double>(), 25.0);
+  // A range given as a flag replaces the file's fixed frequency (the alternatives exclude
+  // each other only within one source). Speed goes as 1/f here: the lowest frequency wins.
+  const auto range = RunCli("design --config " + ExampleConfig() +
+                            " --frequency-range 20:25 --scan-points 8 --m2-range 0.1:0.4" +
+                            kMarginsOff + " --json");
+  ASSERT_EQ(range.status, 0) << range.out;
+  EXPECT_EQ(nlohmann::json::parse(range.out)["one_impact"]["frequency_hz"].get<double>(), 20.0);
+}
+
+TEST(DesignCli, JsonHoldsEveryKeyInTheUsersUnits) {
+  const auto r = RunCli("design --config " + ExampleConfig() + kMarginsOff + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "ok");
+  const auto& g = j.at("one_impact");
+  for (const char* key : {"m2_kg", "frequency_hz", "speed_mm_s", "displacement_mm",
+                          "impact_velocity_m_s", "energy_mj", "power_mw", "power_positive_mw",
+                          "friction_loss_mj", "impact_loss_mj", "cot", "efficiency"}) {
+    EXPECT_TRUE(g.at(key).is_number()) << key;
+  }
+  for (const char* key : {"T0", "A", "c", "alpha", "phi0"}) {
+    EXPECT_TRUE(g.at("dimensionless").at(key).is_number()) << key;
+  }
+  EXPECT_EQ(g["binding"], nlohmann::json::array({"stability"}));
+  // The example of docs/design.md: near 0.21 kg, 1.3 mm/s, 2 mW (the library test checks m2
+  // against an independent scan; here the units).
+  EXPECT_NEAR(g["m2_kg"].get<double>(), 0.2128, 0.001);
+  EXPECT_NEAR(g["speed_mm_s"].get<double>(), 1.31, 0.01);
+  EXPECT_NEAR(g["power_mw"].get<double>(), 2.02, 0.01);
+  EXPECT_GE(g["cot"].get<double>(), 0.3);
+}
+
+TEST(DesignCli, TableShowsTheGaitAndHowToCheckIt) {
+  const auto r = RunCli("design --config " + ExampleConfig());
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* text : {"inner mass", "mean speed", "mean motor power", "cost of transport",
+                           "binding", "capsubot solve"}) {
+    EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+  }
+}
+
+// One CSV row of the sweep, solved again by `capsubot solve` from its dimensionless numbers:
+// the design's orbit is exactly the orbit of the mapped parameters.
+TEST(DesignCli, SweepRowsAreReproducedBySolve) {
+  const auto csv = TempPath("design_sweep.csv");
+  const auto r = RunCli("design --config " + ExampleConfig() + kMarginsOff +
+                        " --sweep m2:0.18:0.3:7 -o " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "status,m2_kg,frequency_hz,speed_mm_s,displacement_mm,impact_velocity_m_s,energy_mj,"
+            "power_mw,power_positive_mw,friction_loss_mj,impact_loss_mj,cot,efficiency,T0,A,c,"
+            "alpha,phi0,I,spectral_radius,x_min,x_max,orbits,binding");
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  ASSERT_EQ(rows.size(), 7U);
+  int ok = 0, blank = 0;
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 24U);
+    EXPECT_FALSE(row[1].empty());  // m2 is always there
+    if (row[0] != "ok") {
+      EXPECT_TRUE(row[3].empty() && row[13].empty());  // no gait: blank cells
+      ++blank;
+      continue;
+    }
+    ++ok;
+    const auto s = RunCli("solve --A " + row[14] + " --c " + row[15] + " --phi0 " + row[17] +
+                          " --T0 " + row[13] + " --e 0.7 --json");
+    ASSERT_EQ(s.status, 0) << s.out;
+    const auto j = nlohmann::json::parse(s.out);
+    EXPECT_TRUE(j["valid"].get<bool>());
+    EXPECT_TRUE(testing::RelNear(j["alpha"].get<double>(), std::stod(row[16]), kSolveRelTol));
+    EXPECT_TRUE(testing::RelNear(j["I"].get<double>(), std::stod(row[18]), kSolveRelTol));
+  }
+  // m2 = 0.18, 0.196, 0.214, 0.233, 0.255, 0.278, 0.3 kg: the stable window of the example
+  // starts at 0.2128 kg and its orbits end between 0.255 and 0.278 kg: 3 rows with a gait.
+  EXPECT_EQ(ok, 3);
+  EXPECT_EQ(blank, 4);
+}
+
+struct BadCase {
+  const char* name;
+  std::string args;
+  std::string message;
+};
+
+std::vector<BadCase> BadCases() {
+  const std::string cfg = " --config " + ExampleConfig();
+  return {
+      {"m1", "--m1 0" + cfg, "shell mass m1 = 0 is invalid: expected a finite m1 > 0 [kg]"},
+      {"L", "--L -0.01" + cfg, "gap L = -0.01 is invalid: expected a finite L > 0 [m]"},
+      {"mu", "--mu 0" + cfg, "friction coefficient mu = 0 is invalid: expected a finite mu > 0"},
+      {"g", "--g -9.81" + cfg, "gravity g = -9.81 is invalid: expected a finite g > 0 [m/s^2]"},
+      {"e", "--e 2" + cfg, "restitution e = 2 is invalid: expected 0 <= e <= 1"},
+      {"nan", "--m1 nan" + cfg, "shell mass m1 = nan is invalid"},
+      {"amplitude", "--force-amplitude -0.5" + cfg,
+       "motor force amplitude = -0.5 is invalid: expected a finite amplitude >= 0 [N]"},
+      {"bias", "--force-bias -1" + cfg,
+       "motor force bias = -1 is invalid: expected a finite bias >= 0 [N]"},
+      {"not_a_number", "--m1 0.2kg" + cfg, "--m1 = 0.2kg is invalid: expected a number"},
+      {"frequency_range_inverted", "--frequency-range 30:20" + cfg,
+       "--frequency-range = 30:20 is invalid: expected MIN:MAX with MIN < MAX"},
+      {"frequency_range_empty", "--frequency-range 20:20" + cfg,
+       "--frequency-range = 20:20 is invalid: expected MIN:MAX with MIN < MAX"},
+      {"m2_range", "--m2-range 0.5:0.1" + cfg,
+       "--m2-range = 0.5:0.1 is invalid: expected MIN:MAX with MIN < MAX"},
+      {"m2_range_negative", "--m2-range -1:0.1" + cfg,
+       "inner mass range m2 = -1:0.1 is invalid: expected 0 < M2MIN < M2MAX [kg]"},
+      {"both_frequencies", kFlags + " --frequency-range 10:30",
+       "settings frequency and frequency-range are both given as flags: expected one of them"},
+      {"missing",
+       "--m1 0.2 --L 0.02 --mu 0.3 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20",
+       "setting e is missing: give --e (or e in the --config file)"},
+      {"rho_max", "--rho-max 0" + cfg, "rho_max = 0 is invalid: expected rho_max > 0"},
+      {"sweep_spec", "--sweep mass:1:2:3 -o x.csv" + cfg,
+       "--sweep = mass:1:2:3 is invalid: expected m2:M2MIN:M2MAX:N [kg] or "
+       "frequency:FMIN:FMAX:N [Hz]"},
+      {"sweep_range", "--sweep m2:0.3:0.1:5 -o x.csv" + cfg,
+       "sweep range m2 = 0.3:0.1 is invalid: expected finite 0 < MIN < MAX"},
+      {"sweep_output", "--sweep m2:0.1:0.3:5" + cfg,
+       "option -o is missing: --sweep writes its CSV to -o FILE"},
+      {"unreadable_config", "--config /nonexistent/robot.toml",
+       "config file /nonexistent/robot.toml cannot be read: No such file or directory"},
+  };
+}
+
+TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
+  int checked = 0;
+  for (const BadCase& c : BadCases()) {
+    const auto r = RunCli("design " + c.args + " 2>&1");
+    EXPECT_EQ(r.status, 2) << c.name << ": " << r.out;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << c.name << ": " << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << c.name << ": " << r.out;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 20);
+}
+
+TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
+  const struct {
+    const char* name;
+    std::string text;
+    std::string message;
+  } cases[] = {
+      {"unknown_key", "m1 = 0.2\nmass = 3\n",
+       "mass = 3 in {} is invalid: unknown key, expected one of m1, L, mu"},
+      {"wrong_type", "m1 = \"0.2\"\n", "m1 = '0.2' in {} is invalid: expected a number"},
+      {"wrong_list", "force-sin = [0.5, \"x\"]\n",
+       "force-sin = [0.5, 'x'] in {} is invalid: expected an array of numbers"},
+      {"inverted_range", "m2-range = [0.5, 0.1]\n",
+       "m2-range = [0.5, 0.1] in {} is invalid: expected MIN:MAX with MIN < MAX"},
+      {"integer", "scan-points = 3.5\n", "scan-points = 3.5 in {} is invalid: expected an integer"},
+      {"syntax", "m1 = \n", "config file {} line 1 is invalid"},
+      {"both_in_file", "frequency = 20\nfrequency-range = [10, 30]\n",
+       "settings frequency and frequency-range are both given in {}: expected one of them"},
+  };
+  int checked = 0;
+  for (const auto& c : cases) {
+    const auto path = WriteConfig(std::string("design_") + c.name + ".toml", c.text);
+    const auto r = RunCli("design --config " + path.string() + " 2>&1");
+    std::string message = c.message;
+    message.replace(message.find("{}"), 2, path.string());
+    EXPECT_EQ(r.status, 2) << c.name << ": " << r.out;
+    EXPECT_NE(r.out.find(message), std::string::npos) << c.name << ": " << r.out;
+    std::filesystem::remove(path);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 7);
+}
+
+TEST(DesignCli, AMotorThatSlidesTheShellIsReportedNotAnError) {
+  const auto r = RunCli("design --config " + ExampleConfig() +
+                        " --force-amplitude 5 --m2-range 0.01:1 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "motor_slides_shell");
+  EXPECT_EQ(j["one_impact"]["status"], "motor_slides_shell");
+  EXPECT_TRUE(j["one_impact"]["speed_mm_s"].is_null());
+}
+
+TEST(DesignCli, AFailedSweepLeavesNoFile) {
+  const auto csv = TempPath("design_failed.csv");
+  const auto r = RunCli("design --config " + ExampleConfig() + " --sweep m2:0.3:0.1:5 -o " +
+                        csv.string() + " 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
+}  // namespace
+}  // namespace capsubot
