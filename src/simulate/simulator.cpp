@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <cmath>
 #include <stdexcept>
 
@@ -70,36 +71,38 @@ struct Segment {
   Wall RestingWall() const { return mode == SimMode::kOnRightWall ? Wall::kRight : Wall::kLeft; }
   bool Sliding() const { return slide != Slide::kNone; }
 
-  double X(double s) const {
+  // The state at s from the force values w = f.Values(s) (one sincos serves them all).
+  double X(double s, const ForceValues& w) const {
     if (OnWall()) return x0;
-    return x0 + u0 * s + kx * (f.Phi(s) + 0.5 * b * s * s);
+    return x0 + u0 * s + kx * (w.Phi + 0.5 * b * s * s);
   }
-  double U(double s) const {
+  double U(double s, const ForceValues& w) const {
     if (OnWall()) return 0.0;
-    return u0 + kx * (f.Pi(s) + b * s);
+    return u0 + kx * (w.Pi + b * s);
   }
-  double V(double s) const {
+  double V(double s, const ForceValues& w) const {
     if (!Sliding()) return 0.0;
     if (OnWall()) return v0 - sgn * T0 * s;
-    return v0 - (sgn * T0 * s + f.Pi(s)) / (1.0 - alpha);
+    return v0 - (sgn * T0 * s + w.Pi) / (1.0 - alpha);
   }
-  // y(s) - y0: the displacement along the segment.
-  double DY(double s) const {
-    if (!Sliding()) return 0.0;
-    if (OnWall()) return v0 * s - 0.5 * sgn * T0 * s * s;
-    return v0 * s - (0.5 * sgn * T0 * s * s + f.Phi(s)) / (1.0 - alpha);
-  }
-  double Y(double s) const {
+  double Y(double s, const ForceValues& w) const {
     if (!Sliding()) return y0;
     if (OnWall()) return y0 + v0 * s - 0.5 * sgn * T0 * s * s;
-    return y0 + v0 * s - (0.5 * sgn * T0 * s * s + f.Phi(s)) / (1.0 - alpha);
+    return y0 + v0 * s - (0.5 * sgn * T0 * s * s + w.Phi) / (1.0 - alpha);
   }
+  // y(s) - y0: the displacement along the segment.
+  double DY(double s, const ForceValues& w) const {
+    if (!Sliding()) return 0.0;
+    if (OnWall()) return v0 * s - 0.5 * sgn * T0 * s * s;
+    return v0 * s - (0.5 * sgn * T0 * s * s + w.Phi) / (1.0 - alpha);
+  }
+  // x'' = kx (F + b) of a free mode.
+  double Accel(const ForceValues& w) const { return kx * (w.F + b); }
   // integral_0^s F u of a free mode: with u = u0 + kx (Pi + b s), integral F Pi = Pi^2/2 and
   // integral s F = s Pi - Phi (integration by parts).
-  double MotorWork(double s) const {
+  double MotorWork(double s, const ForceValues& w) const {
     if (OnWall()) return 0.0;
-    const double P = f.Pi(s);
-    return u0 * P + kx * (0.5 * P * P + b * (s * P - f.Phi(s)));
+    return u0 * w.Pi + kx * (0.5 * w.Pi * w.Pi + b * (s * w.Pi - w.Phi));
   }
 };
 
@@ -111,76 +114,109 @@ void SetCoefficients(Segment& sg, Slide slide) {
   sg.b = sg.sgn * sg.alpha * sg.T0;
 }
 
-// First s in (0, limit] where the inner body reaches `wall`, moving towards it: the first zero
-// of f(s) = dir (x(s) - level) from below, dir = Sign(wall), level = Position(wall).
-// x'' = kx (F + b) keeps its sign between consecutive crossings of F = -b (`cuts`), so on each
-// piece f is convex or concave and has at most two zeros:
+// The first zero in (l, r] of f(s) = dir (x(s) - level) from below, dir = Sign(wall),
+// level = Position(wall): where the inner body reaches `wall` moving towards it, on a piece
+// between consecutive crossings of F = -b, where x'' = kx (F + b) keeps its sign, so f is
+// convex or concave and has at most two zeros. Given f, f' at the ends (fl, dl, fr, dr), the
+// sign of f'' on the piece (`curvature`, from its middle) and whether the piece starts with
+// the body on the wall (from_wall: f(0) = 0, leaving it):
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
 //     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else the root of f'
 //     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
 //     gives the first crossing;
-//   - piece starting on the wall (f(0) = 0, leaving it): concave cannot come back; convex
-//     comes back only after its minimum (root of f'), then as above; a piece with F + b = 0
-//     within rounding (sg.tol) is neither: the body stays where it is.
-// Root finder: detail::SafeNewton (Newton with the closed-form derivative, kept inside the
-// bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver state.
-// Returns +inf when there is no zero in (0, limit].
-double FirstReach(const Segment& sg, Wall wall, const PhaseList& cuts, double limit) {
+//   - from the wall: concave cannot come back; convex comes back only after its minimum (root
+//     of f'), then as above; a piece with F + b = 0 within rounding (sg.tol) is neither: the
+//     body stays where it is.
+// Root finder: detail::SafeNewtonFused (Newton with the closed-form derivative, kept inside
+// the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
+// state. Returns +inf when there is no zero in (l, r].
+double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
+                    double fr, double dr, double curvature, bool from_wall) {
   const double level = Position(wall), dir = Sign(wall);
-  const auto f = [&](double s) { return dir * (sg.X(s) - level); };
-  const auto df = [&](double s) { return dir * sg.U(s); };
-  const auto ddf = [&](double s) { return dir * sg.kx * (sg.f.F(s) + sg.b); };
-  double l = 0.0, fl = f(0.0);
-  const bool start_on_wall = fl >= 0.0;
+  // f = dir (x - level), f' = dir u, f'' = dir x'': value and derivative from one sincos.
+  const auto f = [&](double s) { return dir * (sg.X(s, sg.f.Values(s)) - level); };
+  const auto df = [&](double s) { return dir * sg.U(s, sg.f.Values(s)); };
+  const auto fdf = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(dir * (sg.X(s, w) - level), dir * sg.U(s, w));
+  };
+  const auto dfddf = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(dir * sg.U(s, w), dir * sg.Accel(w));
+  };
+  if (from_wall) {
+    if (curvature > sg.tol && fr >= 0.0) {
+      // Convex, leaving the wall: it returns after its minimum.
+      double lo = 0.0;
+      if (dl < 0.0 && dr > 0.0) lo = detail::SafeNewtonFused(df, dfddf, 0.0, r);
+      if (f(lo) < 0.0) return detail::SafeNewtonFused(f, fdf, lo, r);
+      return l;  // pressed into the wall (the caller settles this case first)
+    }
+  } else if (fl < 0.0 && fr >= 0.0) {
+    return detail::SafeNewtonFused(f, fdf, l, r);
+  } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
+    // Concave with an interior maximum: bound it by the two tangents first.
+    const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
+    const double bound = fl + dl * (st - l);
+    if (bound >= 0.0) {
+      const double smax = detail::SafeNewtonFused(df, dfddf, l, r);
+      if (f(smax) >= 0.0) return detail::SafeNewtonFused(f, fdf, l, smax);
+    }
+  }
+  return kInf;
+}
+
+// The first impact in (0, limit] on either wall: the pieces between the crossings of F = -b
+// (`cuts`) in order, each searched for both walls with ReachOnPiece (the values at its ends
+// serve both); the earliest hit wins (the left wall on a tie). kind is kStop and s = +inf
+// when there is none.
+struct Reach {
+  double s = kInf;
+  EventKind kind = EventKind::kStop;
+};
+
+Reach FirstImpact(const Segment& sg, const PhaseList& cuts, double limit) {
+  ForceValues w = sg.f.Values(0.0);
+  double l = 0.0, xl = sg.X(0.0, w), ul = sg.U(0.0, w);
+  const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
   int next_cut = 0;
   while (l < limit) {
     while (next_cut < cuts.n && cuts.phi[next_cut] <= l + kMinCut) ++next_cut;
     const double r = next_cut < cuts.n ? std::min(cuts.phi[next_cut], limit) : limit;
-    const double fr = f(r);
-    const double curvature = dir * (sg.f.F(0.5 * (l + r)) + sg.b);  // sign of f'' on (l, r)
-    if (l == 0.0 && start_on_wall) {
-      if (curvature > sg.tol && fr >= 0.0) {
-        // Convex, leaving the wall: it returns after its minimum.
-        double lo = 0.0;
-        if (df(0.0) < 0.0 && df(r) > 0.0) lo = detail::SafeNewton(df, ddf, 0.0, r);
-        if (f(lo) < 0.0) return detail::SafeNewton(f, df, lo, r);
-        return l;  // pressed into the wall (the caller settles this case first)
-      }
-    } else if (fl < 0.0 && fr >= 0.0) {
-      return detail::SafeNewton(f, df, l, r);
-    } else if (fl < 0.0 && curvature < 0.0) {
-      const double dl = df(l), dr = df(r);
-      if (dl > 0.0 && dr < 0.0) {
-        // Concave with an interior maximum: bound it by the two tangents first.
-        const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
-        const double bound = fl + dl * (st - l);
-        if (bound >= 0.0) {
-          const double smax = detail::SafeNewton(df, ddf, l, r);
-          if (f(smax) >= 0.0) return detail::SafeNewton(f, df, l, smax);
-        }
-      }
-    }
+    w = sg.f.Values(r);
+    const double xr = sg.X(r, w), ur = sg.U(r, w);
+    const double accel = sg.f.F(0.5 * (l + r)) + sg.b;  // sign of x'' on (l, r)
+    const double right = ReachOnPiece(sg, Wall::kRight, l, r, xl - 1.0, ul, xr - 1.0, ur, accel,
+                                      l == 0.0 && right_from_wall);
+    const double left =
+        ReachOnPiece(sg, Wall::kLeft, l, r, -xl, -ul, -xr, -ur, -accel, l == 0.0 && left_from_wall);
+    if (left <= right && left < kInf) return {left, EventKind::kImpactLeft};
+    if (right < kInf) return {right, EventKind::kImpactRight};
     l = r;
-    fl = fr;
+    xl = xr;
+    ul = ur;
   }
-  return kInf;
+  return {};
 }
 
 // First s in (0, limit] where the sliding capsule stops: v' = -(sgn T0 + F)/(1-alpha) keeps its
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
 // piece whose end has sgn v <= 0 brackets the unique stop.
 double FirstStop(const Segment& sg, double limit) {
-  const auto v = [&](double s) { return sg.V(s); };
-  const auto dv = [&](double s) { return -(sg.sgn * sg.T0 + sg.f.F(s)) / (1.0 - sg.alpha); };
+  const auto v = [&](double s) { return sg.V(s, sg.f.Values(s)); };
+  const auto vdv = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
+  };
   const PhaseList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
   double l = 0.0;
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewton(v, dv, l, r);
+    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewtonFused(v, vdv, l, r);
     l = r;
   }
   return kInf;
@@ -192,8 +228,11 @@ double FirstStop(const Segment& sg, double limit) {
 // (Segment::MotorWork) has the sign of F u, so only the positive ones are summed.
 double PositiveMotorWork(const Segment& sg, double S) {
   if (sg.OnWall() || !(S > 0.0)) return 0.0;
-  const auto u = [&](double s) { return sg.U(s); };
-  const auto du = [&](double s) { return sg.kx * (sg.f.F(s) + sg.b); };
+  const auto u = [&](double s) { return sg.U(s, sg.f.Values(s)); };
+  const auto udu = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(sg.U(s, w), sg.Accel(w));
+  };
   // The sign changes: zeros of F (at most 2K) and of u (at most one per monotone piece).
   std::array<double, 2 * (2 * kMaxHarmonics + 2) + 2> cut{};
   int n = 0;
@@ -206,7 +245,7 @@ double PositiveMotorWork(const Segment& sg, double S) {
     if (!(r > l)) continue;
     const double ur = u(r);
     if ((ul < 0.0 && ur > 0.0) || (ul > 0.0 && ur < 0.0))
-      cut[n++] = detail::SafeNewton(u, du, l, r);
+      cut[n++] = detail::SafeNewtonFused(u, udu, l, r);
     l = r;
     ul = ur;
   }
@@ -214,7 +253,7 @@ double PositiveMotorWork(const Segment& sg, double S) {
   std::sort(cut.begin(), cut.begin() + n);
   double positive = 0.0, w_lo = 0.0;
   for (int i = 0; i < n; ++i) {
-    const double w_hi = sg.MotorWork(cut[i]);
+    const double w_hi = sg.MotorWork(cut[i], sg.f.Values(cut[i]));
     positive += std::max(w_hi - w_lo, 0.0);
     w_lo = w_hi;
   }
@@ -304,11 +343,11 @@ class Simulation {
 
   // The three steps.
   Event LocateEvent(double window) const;
-  void Advance(double s);
+  SimState Advance(double s);
   void ApplyEvent(const Event& event, double u_before, double v_before);
 
-  // Start a new segment at local phase s of the current one with the state there.
-  void Rebase(double s);
+  // Start a new segment at local phase s of the current one with the state `st` there.
+  void Rebase(double s, const SimState& st);
   void AccumulateEnergy(double s);
   void Emit(EventKind kind, double u_before, double v_before);
   void EmitSamplesBefore(double s_end, bool final);
@@ -358,16 +397,16 @@ SimState Simulation::StateAt(double s) const {
     st.y = sg_.y0;
     return st;
   }
+  const ForceValues w = sg_.f.Values(s);
   st.phi = Phase() + s;
-  st.x = sg_.X(s);
-  st.u = sg_.U(s);
-  st.v = sg_.V(s);
-  st.y = sg_.Y(s);
+  st.x = sg_.X(s, w);
+  st.u = sg_.U(s, w);
+  st.v = sg_.V(s, w);
+  st.y = sg_.Y(s, w);
   return st;
 }
 
-void Simulation::Rebase(double s) {
-  const SimState st = StateAt(s);
+void Simulation::Rebase(double s, const SimState& st) {
   r_ += s;
   while (r_ >= kTau) {
     r_ -= kTau;
@@ -384,16 +423,20 @@ void Simulation::Rebase(double s) {
 // Segment::MotorWork (and its positive part), friction T0 |y(s) - y0| (v keeps its sign while
 // the mode lasts: a slide ends at the stop).
 void Simulation::AccumulateEnergy(double s) {
+  const ForceValues w = sg_.f.Values(s);
   Energy& en = res_.energy;
-  en.motor_work += sg_.MotorWork(s);
+  en.motor_work += sg_.MotorWork(s, w);
   en.motor_work_positive += PositiveMotorWork(sg_, s);
-  en.friction_loss += sg_.T0 * std::abs(sg_.DY(s));
+  en.friction_loss += sg_.T0 * std::abs(sg_.DY(s, w));
 }
 
-void Simulation::Advance(double s) {
+// Moves the origin to local phase s; returns the state there (right before an event at s).
+SimState Simulation::Advance(double s) {
   EmitSamplesBefore(s, false);
   if (opt_.energy) AccumulateEnergy(s);
-  Rebase(s);
+  const SimState st = StateAt(s);
+  Rebase(s, st);
+  return st;
 }
 
 void Simulation::Emit(EventKind kind, double u_before, double v_before) {
@@ -581,10 +624,8 @@ Event Simulation::LocateEvent(double window) const {
   }
   const double limit = std::min(window, ev.s);
   const PhaseList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
-  const double right = FirstReach(sg_, Wall::kRight, cuts, limit);
-  if (right <= ev.s) ev = {right, EventKind::kImpactRight};
-  const double left = FirstReach(sg_, Wall::kLeft, cuts, std::min(limit, ev.s));
-  if (left <= ev.s) ev = {left, EventKind::kImpactLeft};
+  const Reach impact = FirstImpact(sg_, cuts, limit);
+  if (impact.s <= ev.s) ev = {impact.s, impact.kind};
   return ev;
 }
 
@@ -677,9 +718,8 @@ SimResult Simulation::Run() {
       if (event.s <= window) {
         stalled = event.s > 0.0 ? 0 : stalled + 1;
         if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
-        const double u_before = sg_.U(event.s), v_before = sg_.V(event.s);
-        Advance(event.s);
-        ApplyEvent(event, u_before, v_before);
+        const SimState before = Advance(event.s);
+        ApplyEvent(event, before.u, before.v);
         continue;
       }
       const double step = std::min(window, rem);  // no event in the window
