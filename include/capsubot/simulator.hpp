@@ -95,7 +95,7 @@ struct SimOptions {
   /// Phase step of OnSample calls (0: no samples); >= 0.
   double sample_step = 0.0;
   /// Accumulate the energy budget (SimTally::energy; docs/model.md section 11). It costs about
-  /// a third more time per period (the positive part needs the sign changes of F u), so the
+  /// half again the time per period (the positive part needs the sign changes of F u), so the
   /// hot path leaves it off; the budget is NaN then.
   bool energy = false;
 
