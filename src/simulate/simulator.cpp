@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <utility>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "numerics/brent.hpp"
 
