@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "capsubot/io.hpp"
+#include "capsubot/scaling.hpp"
 #include "commands.hpp"
 #include "report.hpp"
 
@@ -214,14 +215,13 @@ int RunMainJob(const OptimizeCliOptions& opt) {
         OptimizeStatusName(paper.status), Num(paper.solution.orbit.forcing.phi0(), 6),
         Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
     if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
-      // Only the left wall fails. Scaling A, c, T0 by k scales 1 - x by k and leaves the
-      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min) <= 1.
+      // Only the left wall fails: the same gait scaled down with T0 fits (LargestFittingT0).
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
           "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): this\n"
           "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
-          Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);
+          Num(v.x_min, 4), Num(LargestFittingT0(paper.solution, p.margin), 4), p.T0);
     }
   }
   t += fmt::format("\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "capsubot/io.hpp"
+#include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
@@ -59,6 +60,23 @@ class CsvObserver : public SimObserver {
   AtomicFile* trajectory_;
 };
 
+// The figures of a span of the run (the record, or the transient) as JSON keys of `j`.
+void AddTallyJson(nlohmann::json& j, const SimTally& t) {
+  j["displacement"] = t.displacement;
+  j["v_mean"] = t.v_mean;
+  j["impacts_right"] = t.impacts_right;
+  j["impacts_left"] = t.impacts_left;
+  j["stops"] = t.stops;
+  j["breakaways"] = t.breakaways;
+  j["sticks"] = t.sticks;
+  j["releases"] = t.releases;
+  j["events"] = t.events;
+  j["energy"] = {{"motor_work", t.energy.motor_work},
+                 {"motor_work_positive", t.energy.motor_work_positive},
+                 {"friction_loss", t.energy.friction_loss},
+                 {"impact_loss", t.energy.impact_loss}};
+}
+
 int Run(SimulateOptions& opt) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
@@ -85,11 +103,11 @@ int Run(SimulateOptions& opt) {
         names += (names.empty() ? "" : ", ") + n;
       fmt::print(stderr, "capsubot simulate: note: the analytic orbit is not valid ({})\n", names);
     }
-    // Right after the impact (docs/model.md section 4): x = 1, x' = -e u, v = v+.
-    sim.alpha = o.alpha;
-    sim.x0 = 1.0;
-    sim.u0 = -o.e * o.u;
-    sim.v0 = o.v_plus;
+    const SimOptions start = StartAfterImpact(o);
+    sim.alpha = start.alpha;
+    sim.x0 = start.x0;
+    sim.u0 = start.u0;
+    sim.v0 = start.v0;
   } else {
     if (opt.alpha_option->count() == 0) {
       throw std::invalid_argument(
@@ -105,6 +123,7 @@ int Run(SimulateOptions& opt) {
         "--samples-per-period = {} is invalid: expected at least 1", opt.samples_per_period));
   }
   if (!opt.trajectory.empty()) sim.sample_step = kTau / opt.samples_per_period;
+  sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
 
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
@@ -133,15 +152,13 @@ int Run(SimulateOptions& opt) {
     j["v"] = f.v;
     j["y"] = f.y;
     j["mode"] = SimModeName(f.mode);
-    j["displacement"] = r.displacement;
-    j["v_mean"] = r.v_mean;
-    j["impacts_right"] = r.impacts_right;
-    j["impacts_left"] = r.impacts_left;
-    j["stops"] = r.stops;
-    j["breakaways"] = r.breakaways;
-    j["sticks"] = r.sticks;
-    j["releases"] = r.releases;
-    j["events"] = r.events;
+    AddTallyJson(j, r);
+    if (sim.transient > 0.0) {
+      nlohmann::json t;
+      t["periods"] = sim.transient;
+      AddTallyJson(t, r.transient);
+      j["transient"] = t;
+    }
     if (orbit) j["orbit"] = SolutionJson(*orbit);
     fmt::print("{}\n", j.dump());
     return 0;
@@ -154,6 +171,13 @@ int Run(SimulateOptions& opt) {
                    sim.v0, opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
   t += fmt::format("  status           {}   (phase {:.10g} = {:.6g} periods)\n",
                    SimStatusName(r.status), f.phi, f.phi / kTau);
+  if (sim.transient > 0.0) {
+    t += fmt::format(
+        "  transient        {:g} periods: displacement {:.10g}, mean velocity {:.10g}, {} right "
+        "and {} left impacts (not in the figures below)\n",
+        sim.transient, r.transient.displacement, r.transient.v_mean, r.transient.impacts_right,
+        r.transient.impacts_left);
+  }
   t += fmt::format("  final state      x = {:.10g}, u = {:.10g}, v = {:.10g}, y = {:.10g} ({})\n",
                    f.x, f.u, f.v, f.y, SimModeName(f.mode));
   t += fmt::format("  displacement     {:.10g}   (L)\n", r.displacement);
@@ -166,6 +190,11 @@ int Run(SimulateOptions& opt) {
     t += fmt::format(", {} sticks on a wall (chattering), {} releases", r.sticks, r.releases);
   }
   t += "\n";
+  const Energy& en = r.energy;
+  t += fmt::format(
+      "  energy           motor work {:.10g} (positive part {:.10g}); losses: friction "
+      "{:.10g}, impacts {:.10g}   ((m1+m2) omega^2 L^2)\n",
+      en.motor_work, en.motor_work_positive, en.friction_loss, en.impact_loss);
   fmt::print("{}", t);
   return 0;
 }
@@ -198,12 +227,18 @@ Command AddSimulateCommand(CLI::App& app) {
                 "start right after the impact of the analytic one-impact orbit for these A, c, "
                 "phi0, T0, e (x = 1, u = -e u, v = v_plus) with its mass ratio alpha");
   cmd->add_option("--periods", opt->sim.periods,
-                  "length of the simulation in forcing periods (2 pi each), 0 < N <= 1e8")
+                  "forcing periods (2 pi each) recorded after the transient, 0 < N <= 1e8")
+      ->capture_default_str();
+  cmd->add_option("--transient", opt->sim.transient,
+                  "forcing periods run first and reported apart (JSON \"transient\"): the "
+                  "counts, v_mean and energy are over the --periods after it, 0 <= N <= 1e8")
       ->capture_default_str();
   cmd->add_flag("--json", opt->json,
-                "print one JSON object: status, final state phi, x, u, v, y, mode, "
-                "displacement, v_mean, impacts_right, impacts_left, stops, breakaways, sticks, "
-                "releases, events, alpha (and orbit, the analytic orbit, with --from-orbit)");
+                "print one JSON object: status, final state phi, x, u, v, y, mode, and over the "
+                "recorded periods displacement, v_mean, impacts_right, impacts_left, stops, "
+                "breakaways, sticks, releases, events, energy {motor_work, motor_work_positive, "
+                "friction_loss, impact_loss}; alpha; transient (the same figures over the "
+                "transient, with --transient); orbit (the analytic orbit, with --from-orbit)");
   cmd->add_option("--events", opt->events,
                   "write every event to this CSV file: phase, kind, x, u, v, y (state right "
                   "after the event), u_before, v_before, mode");

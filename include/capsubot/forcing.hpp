@@ -21,6 +21,13 @@ struct PhaseList {
   int n = 0;                                        ///< how many were found
 };
 
+/// F and its integrals at one phase.
+struct ForceValues {
+  double F = 0.0;
+  double Pi = 0.0;
+  double Phi = 0.0;
+};
+
 /// Smallest and largest value of F on an interval.
 struct Range {
   double min = 0.0;
@@ -59,6 +66,9 @@ class Forcing {
   double dF(double phi) const;   ///< dF/dphi
   double Pi(double phi) const;   ///< integral_0^phi F
   double Phi(double phi) const;  ///< integral_0^phi Pi
+  /// F, Pi and Phi at phi together (one sincos for all three; the same numbers, bit for bit,
+  /// as F(phi), Pi(phi), Phi(phi)).
+  ForceValues Values(double phi) const;
 
   /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
   /// hi - lo <= tau. Exact (closed form for K = 1, companion matrix otherwise).

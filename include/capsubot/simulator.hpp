@@ -5,13 +5,14 @@
 //
 // Inside each mode the motion is in closed form; events are located by exact bracketing on
 // pieces where the event function is monotone, convex or concave (cut at the crossings of F
-// with known levels), then a bracketed Newton iteration to ~1e-14 in phase. docs/simulate.md
-// explains why no event is missed.
+// with known levels), then a bracketed Newton iteration to ~1e-14 in phase. See docs/simulate.md
+// for why no event is missed, and for the energy budget (docs/model.md section 11).
 
 #include <cstdint>
 #include <limits>
 #include <string>
 
+#include "capsubot/energy.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/params.hpp"
 
@@ -72,13 +73,18 @@ class SimObserver {
 struct SimOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  double alpha = kNaN;   ///< mass ratio m2/(m1+m2); 0 < alpha < 1
-  double x0 = kNaN;      ///< initial relative position; 0 <= x0 <= 1
-  double u0 = kNaN;      ///< initial relative velocity (finite)
-  double v0 = kNaN;      ///< initial capsule velocity (finite)
-  double y0 = 0.0;       ///< initial capsule position (finite)
-  double periods = 1.0;  ///< simulate phi in [0, periods * tau]; 0 < periods <= 1e8
-  /// Stop right after this many right-wall impacts (0: no limit). An impact at phi = 0 counts.
+  double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
+  double x0 = kNaN;     ///< initial relative position; 0 <= x0 <= 1
+  double u0 = kNaN;     ///< initial relative velocity (finite)
+  double v0 = kNaN;     ///< initial capsule velocity (finite)
+  double y0 = 0.0;      ///< initial capsule position (finite)
+  /// Periods run first and tallied apart (SimResult::transient); 0 <= transient <= 1e8.
+  double transient = 0.0;
+  /// Periods recorded after the transient: phi runs over [0, (transient + periods) tau];
+  /// 0 < periods <= 1e8.
+  double periods = 1.0;
+  /// Stop right after this many right-wall impacts over the whole run, transient included
+  /// (0: no limit). An impact at phi = 0 counts.
   std::int64_t max_impacts_right = 0;
   /// An impact slower than this (|u| before it), with the relative acceleration pushing the
   /// inner body into the wall, ends in the body resting on the wall (chattering cut-off). > 0.
@@ -88,6 +94,10 @@ struct SimOptions {
   std::int64_t max_events_per_period = 100000;
   /// Phase step of OnSample calls (0: no samples); >= 0.
   double sample_step = 0.0;
+  /// Accumulate the energy budget (SimTally::energy; docs/model.md section 11). It costs about
+  /// half again the time per period (the positive part needs the sign changes of F u), so the
+  /// hot path leaves it off; the budget is NaN then.
+  bool energy = false;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
@@ -103,12 +113,10 @@ enum class SimStatus {
 /// Stable identifier of a status ("ok", "impact_limit", "event_limit").
 const char* SimStatusName(SimStatus status);
 
-struct SimResult {
+/// What happened over a span of the run (the record after the transient, or the transient).
+struct SimTally {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  SimStatus status = SimStatus::kNotRun;
-  std::string message;   ///< empty unless status is kEventLimit
-  SimState final_state;  ///< state at the end (after any event at the end phase)
   std::int64_t impacts_right = 0;
   std::int64_t impacts_left = 0;
   std::int64_t stops = 0;
@@ -116,8 +124,25 @@ struct SimResult {
   std::int64_t sticks = 0;     ///< chattering sequences ended with the body resting on a wall
   std::int64_t releases = 0;   ///< departures from a wall after resting on it
   std::int64_t events = 0;     ///< all events
-  double displacement = kNaN;  ///< y(end) - y(0)
-  double v_mean = kNaN;        ///< displacement / (phase simulated)
+  double span = kNaN;          ///< length of the span in phase
+  double displacement = kNaN;  ///< y at its end minus y at its start
+  double v_mean = kNaN;        ///< displacement / span
+  /// Exact energy budget of the span (SimOptions::energy; NaN otherwise). Over any span,
+  /// motor_work = friction_loss + impact_loss + change of the kinetic energy
+  /// ((1-alpha) v^2 + alpha (v+u)^2)/2. A stick (the chattering cut-off) counts as a plastic
+  /// impact: it removes alpha (1-alpha) u^2/2, the loss of the remaining impacts of the sequence.
+  Energy energy;
+};
+
+/// The figures of the record (after the transient) are the SimTally base; the transient's are
+/// apart.
+struct SimResult : SimTally {
+  SimStatus status = SimStatus::kNotRun;
+  std::string message;   ///< empty unless status is kEventLimit
+  SimState final_state;  ///< state at the end (after any event at the end phase)
+  /// The first SimOptions::transient periods (all zero/NaN when there is none). A run stopped
+  /// inside the transient (impact or event limit) has all its figures here and an empty record.
+  SimTally transient;
 };
 
 /// Simulates the model of docs/model.md section 3 from the initial state of `options`, with the

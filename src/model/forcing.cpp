@@ -128,6 +128,22 @@ double Forcing::Phi(double phi) const {
          });
 }
 
+ForceValues Forcing::Values(double phi) const {
+  // The three sums of F, Pi and Phi above, term by term in the same order.
+  const double c1 = std::cos(phi), s1 = std::sin(phi);
+  double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
+  for (int k = 1; k <= K_; ++k) {
+    const double a = ra_[k - 1], b = rb_[k - 1];
+    sF += a * ck + b * sk;
+    sPi += (a * sk + b * (1.0 - ck)) / k;
+    sPhi += (a * (1.0 - ck) + b * (k * phi - sk)) / (double(k) * k);
+    const double next = ck * c1 - sk * s1;
+    sk = sk * c1 + ck * s1;
+    ck = next;
+  }
+  return {c_ + sF, c_ * phi + sPi, 0.5 * c_ * phi * phi + sPhi};
+}
+
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {
   return detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi);
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 #include <utility>
 
 namespace capsubot::detail {
@@ -55,17 +56,19 @@ double Brent(const Fn& f, double lo, double hi) {
 
 namespace capsubot::detail {
 
-/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f' as well: Newton steps
-/// kept inside a shrinking bracket, bisection whenever a step would leave it or converge too
-/// slowly (Numerical Recipes' rtsafe). Quadratic near the root: the hot path's root finder.
-template <class Fn, class Dfn>
-double SafeNewton(const Fn& f, const Dfn& df, double lo, double hi) {
+/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together:
+/// fdf(x) returns {f(x), f'(x)} from one evaluation (when both share their costly part, e.g.
+/// one sincos); f alone is evaluated at the bracket's ends. Newton steps kept inside a
+/// shrinking bracket, bisection whenever a step would leave it or converge too slowly
+/// (Numerical Recipes' rtsafe). Quadratic near the root: the hot path's root finder.
+template <class Fn, class FDfn>
+double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
   double flo = f(lo);
   if (flo == 0.0) return lo;
   if (f(hi) == 0.0) return hi;
   if (flo > 0.0) std::swap(lo, hi);  // now f(lo) < 0 < f(hi), lo may exceed hi
   double x = 0.5 * (lo + hi), dx_old = std::abs(hi - lo), dx = dx_old;
-  double fx = f(x), dfx = df(x);
+  auto [fx, dfx] = fdf(x);
   for (int it = 0; it < kRootMaxIter; ++it) {
     const bool newton_leaves = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
     if (newton_leaves || std::abs(2.0 * fx) > std::abs(dx_old * dfx)) {
@@ -78,12 +81,18 @@ double SafeNewton(const Fn& f, const Dfn& df, double lo, double hi) {
       x -= dx;
     }
     if (std::abs(dx) < kRootAbsTol) return x;
-    fx = f(x);
-    dfx = df(x);
+    std::tie(fx, dfx) = fdf(x);
     if (fx == 0.0) return x;
     (fx < 0.0 ? lo : hi) = x;
   }
   return x;
+}
+
+/// SafeNewtonFused with f and f' given as two functions.
+template <class Fn, class Dfn>
+double SafeNewton(const Fn& f, const Dfn& df, double lo, double hi) {
+  return SafeNewtonFused(
+      f, [&](double x) { return std::pair<double, double>(f(x), df(x)); }, lo, hi);
 }
 
 }  // namespace capsubot::detail

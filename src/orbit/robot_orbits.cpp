@@ -15,12 +15,11 @@ namespace {
 constexpr double kPi = 0.5 * kTau;
 constexpr int kInitialGrid = 512;    // first partition of the circle
 constexpr double kMinWidth = 1e-10;  // phase resolution of the exclusion refinement
-constexpr double kSameRoot = 1e-8;   // two candidates closer than this are one root
 
 // Why no root is missed.
 //
-// psi is linear in alpha (docs/model.md section 4): psi(alpha) = (1-alpha) psi(0) + alpha psi(1), so
-// alpha(phi0) = a  <=>  Psi(phi0) := (1-a) psi0(phi0) + a psi1(phi0) = 0 (then psi0 psi1 < 0
+// psi is linear in alpha (docs/model.md section 4): psi(alpha) = (1-alpha) psi(0) + alpha psi(1),
+// so alpha(phi0) = a  <=>  Psi(phi0) := (1-a) psi0(phi0) + a psi1(phi0) = 0 (then psi0 psi1 < 0
 // follows for 0 < a < 1 unless both vanish). Psi has no poles, unlike alpha(phi0). Where
 // phi1(phi0) is smooth, its derivative follows from the envelope identity d psi1/d phi1 = g(phi1) =
 // 0:
@@ -124,27 +123,37 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
   }
   // Undecided intervals left: the work bound stopped the search, roots there are missing.
   if (complete != nullptr) *complete = stack.empty();
-  // Candidates within kSameRoot are one root: keep the sign change (the neighbouring
-  // intervals of a simple root may pass the |Psi| test too), else the smallest |Psi|.
+  // One orbit per band of candidates. Near a fold Psi is flat, so around a root |Psi| stays
+  // within `accept` over a band accept/|Psi'| wide (sqrt(2 accept/|Psi''|) at a double root):
+  // many 1e-10 intervals there pass the |Psi| test, and rounding may even flip the sign of
+  // Psi more than once. Consecutive candidates lie in one band when |Psi| at their midpoint is
+  // within it (Psi is monotone or convex across a band, so the midpoint is no larger than the
+  // ends); between two orbits it rises above the band. The circle closes: the last band and
+  // the first are one when |Psi| is within the band at the midpoint across pi. Roots closer
+  // than the band (|Psi| between them below the rounding level) are not told apart.
   std::sort(roots.begin(), roots.end(),
             [](const Root& x, const Root& y) { return x.phi0 < y.phi0; });
-  std::vector<double> unique;
-  for (std::size_t i = 0; i < roots.size();) {
-    std::size_t j = i, pick = i;
-    for (; j < roots.size() && roots[j].phi0 - roots[i].phi0 < kSameRoot; ++j) {
-      const Root &a = roots[j], &b = roots[pick];
-      if ((a.crossing && !b.crossing) || (a.crossing == b.crossing && a.residual < b.residual)) {
-        pick = j;
-      }
+  const auto same_band = [&](double lo, double hi) {
+    return std::abs(psi(0.5 * (lo + hi))) <= accept;
+  };
+  // Better representative of a band: a sign change, else the smallest |Psi|.
+  const auto better = [](const Root& a, const Root& b) {
+    return (a.crossing && !b.crossing) || (a.crossing == b.crossing && a.residual < b.residual);
+  };
+  std::vector<Root> bands;
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    if (i > 0 && same_band(roots[i - 1].phi0, roots[i].phi0)) {
+      if (better(roots[i], bands.back())) bands.back() = roots[i];
+    } else {
+      bands.push_back(roots[i]);
     }
-    unique.push_back(roots[pick].phi0);
-    i = j;
   }
-  for (double r : unique) {
-    const double phi0 = r >= kPi ? r - kTau : r;  // [-pi, pi)
-    if (!found.empty() && std::abs(phi0 - found.front().orbit.forcing.phi0()) < kSameRoot) {
-      continue;  // pi and -pi are the same phase
-    }
+  if (bands.size() > 1 && same_band(roots.back().phi0, roots.front().phi0 + kTau)) {
+    if (better(bands.back(), bands.front())) bands.front() = bands.back();
+    bands.pop_back();
+  }
+  for (const Root& band : bands) {
+    const double phi0 = band.phi0 >= kPi ? band.phi0 - kTau : band.phi0;  // [-pi, pi)
     found.push_back(Solve(forcing.WithPhase(phi0), params));
   }
   std::sort(found.begin(), found.end(), [](const Solution& x, const Solution& y) {

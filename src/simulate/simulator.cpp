@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "numerics/brent.hpp"
 
@@ -32,123 +34,230 @@ void Require(bool ok, const char* name, double value, const char* rule) {
   }
 }
 
+// Which wall the inner body meets or rests on, and which way the capsule slides (kNone: at
+// rest). The closed forms below use their signs: +1 right wall / forward slide, -1 left wall /
+// backward slide, 0 rest.
+enum class Wall { kLeft, kRight };
+enum class Slide { kNone, kForward, kBackward };
+
+double Sign(Wall wall) { return wall == Wall::kRight ? 1.0 : -1.0; }
+double Position(Wall wall) { return wall == Wall::kRight ? 1.0 : 0.0; }
+double Sign(Slide slide) {
+  return slide == Slide::kForward ? 1.0 : slide == Slide::kBackward ? -1.0 : 0.0;
+}
+Slide SlideOf(double v) {
+  return v > 0.0 ? Slide::kForward : v < 0.0 ? Slide::kBackward : Slide::kNone;
+}
+EventKind ImpactKind(Wall wall) {
+  return wall == Wall::kRight ? EventKind::kImpactRight : EventKind::kImpactLeft;
+}
+
 // The motion inside one mode in closed form (docs/model.md section 3), in the local phase s
 // measured from the segment's origin; f is the force seen from there: f.F(s) = F(origin + s).
 //   free modes:  x'' = kx (F + b),  kx = 1/alpha (rest) or 1/(alpha (1-alpha)) (slide),
-//                b = sgn alpha T0 (sgn = +1 forward slide, -1 backward, 0 rest);
+//                b = sgn alpha T0 (sgn = Sign(slide));
 //                (1-alpha) v' = -(sgn T0 + F) while sliding.
 //   on a wall:   x, u = 0 fixed; the capsule and the inner body move together: v' = -sgn T0.
 struct Segment {
   Forcing f;
   SimMode mode = SimMode::kRest;
+  Slide slide = Slide::kNone;
   double alpha = 0.0, T0 = 0.0;
   double x0 = 0.0, u0 = 0.0, v0 = 0.0, y0 = 0.0;
-  double sgn = 0.0, kx = 0.0, b = 0.0;
+  double sgn = 0.0, kx = 0.0, b = 0.0;  // Sign(slide) and the x'' coefficients
   double tol = 0.0;  // |F - level| below this is "on the level" (kLevelTol * force scale)
 
   bool OnWall() const { return mode == SimMode::kOnRightWall || mode == SimMode::kOnLeftWall; }
-  bool Sliding() const { return sgn != 0.0; }
+  Wall RestingWall() const { return mode == SimMode::kOnRightWall ? Wall::kRight : Wall::kLeft; }
+  bool Sliding() const { return slide != Slide::kNone; }
 
-  double X(double s) const {
+  // The state at s from the force values w = f.Values(s) (one sincos serves them all).
+  double X(double s, const ForceValues& w) const {
     if (OnWall()) return x0;
-    return x0 + u0 * s + kx * (f.Phi(s) + 0.5 * b * s * s);
+    return x0 + u0 * s + kx * (w.Phi + 0.5 * b * s * s);
   }
-  double U(double s) const {
+  double U(double s, const ForceValues& w) const {
     if (OnWall()) return 0.0;
-    return u0 + kx * (f.Pi(s) + b * s);
+    return u0 + kx * (w.Pi + b * s);
   }
-  double V(double s) const {
+  double V(double s, const ForceValues& w) const {
     if (!Sliding()) return 0.0;
     if (OnWall()) return v0 - sgn * T0 * s;
-    return v0 - (sgn * T0 * s + f.Pi(s)) / (1.0 - alpha);
+    return v0 - (sgn * T0 * s + w.Pi) / (1.0 - alpha);
   }
-  double Y(double s) const {
+  double Y(double s, const ForceValues& w) const {
     if (!Sliding()) return y0;
     if (OnWall()) return y0 + v0 * s - 0.5 * sgn * T0 * s * s;
-    return y0 + v0 * s - (0.5 * sgn * T0 * s * s + f.Phi(s)) / (1.0 - alpha);
+    return y0 + v0 * s - (0.5 * sgn * T0 * s * s + w.Phi) / (1.0 - alpha);
+  }
+  // y(s) - y0: the displacement along the segment.
+  double DY(double s, const ForceValues& w) const {
+    if (!Sliding()) return 0.0;
+    if (OnWall()) return v0 * s - 0.5 * sgn * T0 * s * s;
+    return v0 * s - (0.5 * sgn * T0 * s * s + w.Phi) / (1.0 - alpha);
+  }
+  // x'' = kx (F + b) of a free mode.
+  double Accel(const ForceValues& w) const { return kx * (w.F + b); }
+  // integral_0^s F u of a free mode: with u = u0 + kx (Pi + b s), integral F Pi = Pi^2/2 and
+  // integral s F = s Pi - Phi (integration by parts).
+  double MotorWork(double s, const ForceValues& w) const {
+    if (OnWall()) return 0.0;
+    return u0 * w.Pi + kx * (0.5 * w.Pi * w.Pi + b * (s * w.Pi - w.Phi));
   }
 };
 
-// Friction direction and x'' coefficients of a capsule mode.
-void SetCoefficients(Segment& sg, double sgn) {
-  sg.sgn = sgn;
-  sg.kx = sgn == 0.0 ? 1.0 / sg.alpha : 1.0 / (sg.alpha * (1.0 - sg.alpha));
-  sg.b = sgn * sg.alpha * sg.T0;
+// The capsule mode's friction direction and x'' coefficients.
+void SetCoefficients(Segment& sg, Slide slide) {
+  sg.slide = slide;
+  sg.sgn = Sign(slide);
+  sg.kx = slide == Slide::kNone ? 1.0 / sg.alpha : 1.0 / (sg.alpha * (1.0 - sg.alpha));
+  sg.b = sg.sgn * sg.alpha * sg.T0;
 }
 
-// First s in (0, limit] where the inner body reaches the wall `level` (1 or 0), moving towards
-// it: the first zero of f(s) = dir (x(s) - level) from below, dir = +1 right wall, -1 left.
-// x'' = kx (F + b) keeps its sign between consecutive crossings of F = -b (`cuts`), so on each
-// piece f is convex or concave and has at most two zeros:
+// The first zero in (l, r] of f(s) = dir (x(s) - level) from below, dir = Sign(wall),
+// level = Position(wall): where the inner body reaches `wall` moving towards it, on a piece
+// between consecutive crossings of F = -b, where x'' = kx (F + b) keeps its sign, so f is
+// convex or concave and has at most two zeros. Given f, f' at the ends (fl, dl, fr, dr), the
+// sign of f'' on the piece (`curvature`, from its middle) and whether the piece starts with
+// the body on the wall (from_wall: f(0) = 0, leaving it):
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
 //     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else the root of f'
 //     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
 //     gives the first crossing;
-//   - piece starting on the wall (f(0) = 0, leaving it): concave cannot come back; convex
-//     comes back only after its minimum (root of f'), then as above; a piece with F + b = 0
-//     within rounding (sg.tol) is neither: the body stays where it is.
-// Root finder: detail::SafeNewton (Newton with the closed-form derivative, kept inside the
-// bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver state.
-// Returns +inf when there is no zero in (0, limit].
-double FirstReach(const Segment& sg, double level, double dir, const PhaseList& cuts,
-                  double limit) {
-  const auto f = [&](double s) { return dir * (sg.X(s) - level); };
-  const auto df = [&](double s) { return dir * sg.U(s); };
-  const auto ddf = [&](double s) { return dir * sg.kx * (sg.f.F(s) + sg.b); };
-  double l = 0.0, fl = f(0.0);
-  const bool start_on_wall = fl >= 0.0;
+//   - from the wall: concave cannot come back; convex comes back only after its minimum (root
+//     of f'), then as above; a piece with F + b = 0 within rounding (sg.tol) is neither: the
+//     body stays where it is.
+// Root finder: detail::SafeNewtonFused (Newton with the closed-form derivative, kept inside
+// the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
+// state. Returns +inf when there is no zero in (l, r].
+double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
+                    double fr, double dr, double curvature, bool from_wall) {
+  const double level = Position(wall), dir = Sign(wall);
+  // f = dir (x - level), f' = dir u, f'' = dir x'': value and derivative from one sincos.
+  const auto f = [&](double s) { return dir * (sg.X(s, sg.f.Values(s)) - level); };
+  const auto df = [&](double s) { return dir * sg.U(s, sg.f.Values(s)); };
+  const auto fdf = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(dir * (sg.X(s, w) - level), dir * sg.U(s, w));
+  };
+  const auto dfddf = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(dir * sg.U(s, w), dir * sg.Accel(w));
+  };
+  if (from_wall) {
+    if (curvature > sg.tol && fr >= 0.0) {
+      // Convex, leaving the wall: it returns after its minimum.
+      double lo = 0.0;
+      if (dl < 0.0 && dr > 0.0) lo = detail::SafeNewtonFused(df, dfddf, 0.0, r);
+      if (f(lo) < 0.0) return detail::SafeNewtonFused(f, fdf, lo, r);
+      return l;  // pressed into the wall (the caller settles this case first)
+    }
+  } else if (fl < 0.0 && fr >= 0.0) {
+    return detail::SafeNewtonFused(f, fdf, l, r);
+  } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
+    // Concave with an interior maximum: bound it by the two tangents first.
+    const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
+    const double bound = fl + dl * (st - l);
+    if (bound >= 0.0) {
+      const double smax = detail::SafeNewtonFused(df, dfddf, l, r);
+      if (f(smax) >= 0.0) return detail::SafeNewtonFused(f, fdf, l, smax);
+    }
+  }
+  return kInf;
+}
+
+// The first impact in (0, limit] on either wall: the pieces between the crossings of F = -b
+// (`cuts`) in order, each searched for both walls with ReachOnPiece (the values at its ends
+// serve both); the earliest hit wins (the left wall on a tie). kind is kStop and s = +inf
+// when there is none.
+struct Reach {
+  double s = kInf;
+  EventKind kind = EventKind::kStop;
+};
+
+Reach FirstImpact(const Segment& sg, const PhaseList& cuts, double limit) {
+  ForceValues w = sg.f.Values(0.0);
+  double l = 0.0, xl = sg.X(0.0, w), ul = sg.U(0.0, w);
+  const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
   int next_cut = 0;
   while (l < limit) {
     while (next_cut < cuts.n && cuts.phi[next_cut] <= l + kMinCut) ++next_cut;
     const double r = next_cut < cuts.n ? std::min(cuts.phi[next_cut], limit) : limit;
-    const double fr = f(r);
-    const double curvature = dir * (sg.f.F(0.5 * (l + r)) + sg.b);  // sign of f'' on (l, r)
-    if (l == 0.0 && start_on_wall) {
-      if (curvature > sg.tol && fr >= 0.0) {
-        // Convex, leaving the wall: it returns after its minimum.
-        double lo = 0.0;
-        if (df(0.0) < 0.0 && df(r) > 0.0) lo = detail::SafeNewton(df, ddf, 0.0, r);
-        if (f(lo) < 0.0) return detail::SafeNewton(f, df, lo, r);
-        return l;  // pressed into the wall (the caller settles this case first)
-      }
-    } else if (fl < 0.0 && fr >= 0.0) {
-      return detail::SafeNewton(f, df, l, r);
-    } else if (fl < 0.0 && curvature < 0.0) {
-      const double dl = df(l), dr = df(r);
-      if (dl > 0.0 && dr < 0.0) {
-        // Concave with an interior maximum: bound it by the two tangents first.
-        const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
-        const double bound = fl + dl * (st - l);
-        if (bound >= 0.0) {
-          const double smax = detail::SafeNewton(df, ddf, l, r);
-          if (f(smax) >= 0.0) return detail::SafeNewton(f, df, l, smax);
-        }
-      }
-    }
+    w = sg.f.Values(r);
+    const double xr = sg.X(r, w), ur = sg.U(r, w);
+    const double accel = sg.f.F(0.5 * (l + r)) + sg.b;  // sign of x'' on (l, r)
+    const double right = ReachOnPiece(sg, Wall::kRight, l, r, xl - 1.0, ul, xr - 1.0, ur, accel,
+                                      l == 0.0 && right_from_wall);
+    const double left =
+        ReachOnPiece(sg, Wall::kLeft, l, r, -xl, -ul, -xr, -ur, -accel, l == 0.0 && left_from_wall);
+    if (left <= right && left < kInf) return {left, EventKind::kImpactLeft};
+    if (right < kInf) return {right, EventKind::kImpactRight};
     l = r;
-    fl = fr;
+    xl = xr;
+    ul = ur;
   }
-  return kInf;
+  return {};
 }
 
 // First s in (0, limit] where the sliding capsule stops: v' = -(sgn T0 + F)/(1-alpha) keeps its
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
 // piece whose end has sgn v <= 0 brackets the unique stop.
 double FirstStop(const Segment& sg, double limit) {
-  const auto v = [&](double s) { return sg.V(s); };
-  const auto dv = [&](double s) { return -(sg.sgn * sg.T0 + sg.f.F(s)) / (1.0 - sg.alpha); };
+  const auto v = [&](double s) { return sg.V(s, sg.f.Values(s)); };
+  const auto vdv = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
+  };
   const PhaseList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
   double l = 0.0;
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewton(v, dv, l, r);
+    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewtonFused(v, vdv, l, r);
     l = r;
   }
   return kInf;
+}
+
+// integral_0^S max(F u, 0) of a free mode: F u keeps its sign between the zeros of F and of u,
+// and u is monotone between the crossings of F = -b (u' = kx (F + b)), so each such piece holds
+// at most one zero of u. On the pieces between consecutive sign changes the exact integral
+// (Segment::MotorWork) has the sign of F u, so only the positive ones are summed.
+double PositiveMotorWork(const Segment& sg, double S) {
+  if (sg.OnWall() || !(S > 0.0)) return 0.0;
+  const auto u = [&](double s) { return sg.U(s, sg.f.Values(s)); };
+  const auto udu = [&](double s) {
+    const ForceValues w = sg.f.Values(s);
+    return std::pair<double, double>(sg.U(s, w), sg.Accel(w));
+  };
+  // The sign changes: zeros of F (at most 2K) and of u (at most one per monotone piece).
+  std::array<double, 2 * (2 * kMaxHarmonics + 2) + 2> cut{};
+  int n = 0;
+  const PhaseList zf = sg.f.Crossings(0.0, 0.0, S);
+  for (int i = 0; i < zf.n; ++i) cut[n++] = zf.phi[i];
+  const PhaseList mono = sg.f.Crossings(-sg.b, 0.0, S);
+  double l = 0.0, ul = u(0.0);
+  for (int i = 0; i <= mono.n; ++i) {
+    const double r = i < mono.n ? mono.phi[i] : S;
+    if (!(r > l)) continue;
+    const double ur = u(r);
+    if ((ul < 0.0 && ur > 0.0) || (ul > 0.0 && ur < 0.0))
+      cut[n++] = detail::SafeNewtonFused(u, udu, l, r);
+    l = r;
+    ul = ur;
+  }
+  cut[n++] = S;
+  std::sort(cut.begin(), cut.begin() + n);
+  double positive = 0.0, w_lo = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double w_hi = sg.MotorWork(cut[i], sg.f.Values(cut[i]));
+    positive += std::max(w_hi - w_lo, 0.0);
+    w_lo = w_hi;
+  }
+  return positive;
 }
 
 // The first crossing of `level` after l + kMinCut, with `cuts` = the crossings in [0, tau)
@@ -186,11 +295,12 @@ double SignAfterOrigin(const Forcing& f, double level, double tol, bool first_on
   return 0.0;
 }
 
-// First s in [0, limit] where F crosses `level` in direction `dir` (+1 upwards, -1 downwards):
-// the start of the first piece between exact crossings (Forcing::Crossings) on which
-// dir (F - level) > tol. A tangential touch (no sign change across it) does not count; s = 0
-// when F leaves the level that way right from the start.
-double FirstCrossing(const Forcing& f, double level, double dir, double tol, double limit) {
+// First s in [0, limit] where F crosses `level` upwards (or downwards): the start of the first
+// piece between exact crossings (Forcing::Crossings) on which F - level > tol (< -tol). A
+// tangential touch (no sign change across it) does not count; s = 0 when F leaves the level
+// that way right from the start.
+double FirstCrossing(const Forcing& f, double level, bool upwards, double tol, double limit) {
+  const double dir = upwards ? 1.0 : -1.0;
   const PhaseList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l <= limit) {
@@ -201,34 +311,60 @@ double FirstCrossing(const Forcing& f, double level, double dir, double tol, dou
   return kInf;
 }
 
+// The earliest event of the current segment: its local phase s (+inf: none in the window),
+// its kind and, for a break-away, the direction of the slide it starts.
+struct Event {
+  double s = kInf;
+  EventKind kind = EventKind::kStop;
+  Slide slide = Slide::kNone;
+};
+
+// The run as a loop of three named steps: LocateEvent (the earliest event of the current mode
+// within a window of at most one period), Advance (move the segment's origin there: samples,
+// energy, state) and ApplyEvent (the instantaneous transition, then Settle for the ones it
+// triggers at the same phase).
 class Simulation {
  public:
   Simulation(const Forcing& forcing, const Params& params, const SimOptions& opt,
              SimObserver* observer)
       : forcing_(forcing), params_(params), opt_(opt), observer_(observer) {
     force_scale_ = params.T0 + forcing.MaxAbs();
-    end_turns_ = opt.periods;
+    in_transient_ = opt.transient > 0.0;
+    end_turns_ = in_transient_ ? opt.transient : opt.periods;
   }
 
   SimResult Run();
 
  private:
   double Phase() const { return static_cast<double>(turns_) * kTau + r_; }
+  // Phase left to the current boundary (the transient's end, then the run's end).
   double Remaining() const { return (end_turns_ - static_cast<double>(turns_)) * kTau - r_; }
-  // Start a new segment at local phase s of the current one with the given state.
-  void Rebase(double s);
   SimState StateAt(double s) const;
+
+  // The three steps.
+  Event LocateEvent(double window) const;
+  SimState Advance(double s);
+  void ApplyEvent(const Event& event, double u_before, double v_before);
+
+  // Start a new segment at local phase s of the current one with the state `st` there.
+  void Rebase(double s, const SimState& st);
+  void AccumulateEnergy(double s);
   void Emit(EventKind kind, double u_before, double v_before);
   void EmitSamplesBefore(double s_end, bool final);
   // Instantaneous transitions at the origin: impacts with inward velocity, choice of the
   // capsule mode when v = 0, sticking to and leaving a wall. `hint` is the slide direction
-  // of a break-away (0 if none).
-  void Settle(double hint);
-  void Impact(double dir);
+  // of a break-away (kNone if none).
+  void Settle(Slide hint);
+  void Impact(Wall wall);
+  void Release(double u_before, double v_before);
   // Sets the capsule mode at the origin from v (and F when v = 0) without other transitions.
-  void UpdateMode(double hint);
-  double RestOrSlide(double hint) const;
-  bool FreeAccelIntoWall(double dir, double sgn) const;
+  void UpdateMode(Slide hint);
+  Slide RestOrSlide(Slide hint) const;
+  bool FreeAccelIntoWall(Wall wall, Slide slide) const;
+  // The transient's end: its figures move to res_.transient, the record starts.
+  void EndTransient();
+  // Span, displacement and mean velocity of the span that ends at the origin.
+  void CloseTally(SimTally& tally) const;
   bool Fail(const char* what);
 
   const Forcing& forcing_;
@@ -237,6 +373,9 @@ class Simulation {
   SimObserver* observer_;
   double force_scale_ = 0.0;
   double end_turns_ = 0.0;
+  bool in_transient_ = false;
+  double span_phase0_ = 0.0;  // phase and capsule position where the current span started
+  double span_y0_ = 0.0;
   std::int64_t turns_ = 0;  // origin phase = turns_ * tau + r_, r_ in [0, tau)
   double r_ = 0.0;
   Segment sg_;
@@ -244,7 +383,7 @@ class Simulation {
   std::int64_t next_sample_ = 0;
   int chatter_count_ = 0;
   double last_impact_phase_ = -kInf;
-  double last_impact_dir_ = 0.0;
+  Wall last_impact_wall_ = Wall::kRight;
 };
 
 SimState Simulation::StateAt(double s) const {
@@ -258,16 +397,16 @@ SimState Simulation::StateAt(double s) const {
     st.y = sg_.y0;
     return st;
   }
+  const ForceValues w = sg_.f.Values(s);
   st.phi = Phase() + s;
-  st.x = sg_.X(s);
-  st.u = sg_.U(s);
-  st.v = sg_.V(s);
-  st.y = sg_.Y(s);
+  st.x = sg_.X(s, w);
+  st.u = sg_.U(s, w);
+  st.v = sg_.V(s, w);
+  st.y = sg_.Y(s, w);
   return st;
 }
 
-void Simulation::Rebase(double s) {
-  const SimState st = StateAt(s);
+void Simulation::Rebase(double s, const SimState& st) {
   r_ += s;
   while (r_ >= kTau) {
     r_ -= kTau;
@@ -278,6 +417,26 @@ void Simulation::Rebase(double s) {
   sg_.u0 = st.u;
   sg_.v0 = st.v;
   sg_.y0 = st.y;
+}
+
+// Energy over [0, s] of the segment (docs/model.md section 11), in closed form: motor work
+// Segment::MotorWork (and its positive part), friction T0 |y(s) - y0| (v keeps its sign while
+// the mode lasts: a slide ends at the stop).
+void Simulation::AccumulateEnergy(double s) {
+  const ForceValues w = sg_.f.Values(s);
+  Energy& en = res_.energy;
+  en.motor_work += sg_.MotorWork(s, w);
+  en.motor_work_positive += PositiveMotorWork(sg_, s);
+  en.friction_loss += sg_.T0 * std::abs(sg_.DY(s, w));
+}
+
+// Moves the origin to local phase s; returns the state there (right before an event at s).
+SimState Simulation::Advance(double s) {
+  EmitSamplesBefore(s, false);
+  if (opt_.energy) AccumulateEnergy(s);
+  const SimState st = StateAt(s);
+  Rebase(s, st);
+  return st;
 }
 
 void Simulation::Emit(EventKind kind, double u_before, double v_before) {
@@ -316,7 +475,8 @@ void Simulation::Emit(EventKind kind, double u_before, double v_before) {
 // `final`, every remaining sample up to the end phase (rounding of k * step allowed).
 void Simulation::EmitSamplesBefore(double s_end, bool final) {
   if (observer_ == nullptr || !(opt_.sample_step > 0.0)) return;
-  const double origin = Phase(), end = opt_.periods * kTau, slack = 1e-12 * (1.0 + end);
+  const double origin = Phase(), end = (opt_.transient + opt_.periods) * kTau,
+               slack = 1e-12 * (1.0 + end);
   for (;;) {
     const double p = static_cast<double>(next_sample_) * opt_.sample_step;
     if (p > end + slack) return;
@@ -327,54 +487,57 @@ void Simulation::EmitSamplesBefore(double s_end, bool final) {
   }
 }
 
-// The free relative acceleration x'' = kx (F + b) at the origin, for capsule mode sgn, points
-// into the wall dir (+1 right, -1 left); for a body resting on the wall this is the sign of
-// the contact force (docs/model.md section 3 with u' = 0). It is the sign of F + b on the first
-// piece (between crossings of F with -b) after the origin where it is not zero within
-// rounding: a contact force that only touches zero, or is zero for an instant, keeps the body
-// on the wall (the same pieces decide a release in Run, so the two never disagree).
-bool Simulation::FreeAccelIntoWall(double dir, double sgn) const {
-  const double level = -sgn * sg_.alpha * sg_.T0, tol = kLevelTol * force_scale_;
+// The free relative acceleration x'' = kx (F + b) at the origin, for capsule mode `slide`,
+// points into `wall`; for a body resting on the wall this is the sign of the contact force
+// (docs/model.md section 3 with u' = 0). It is the sign of F + b on the first piece (between
+// crossings of F with -b) after the origin where it is not zero within rounding: a contact
+// force that only touches zero, or is zero for an instant, keeps the body on the wall (the
+// same pieces decide a release in LocateEvent, so the two never disagree).
+bool Simulation::FreeAccelIntoWall(Wall wall, Slide slide) const {
+  const double dir = Sign(wall);
+  const double level = -Sign(slide) * sg_.alpha * sg_.T0, tol = kLevelTol * force_scale_;
   const double g = sg_.f.F(0.0) - level;
   if (std::abs(g) > 1e3 * tol) return dir * g > 0.0;  // far from the level: no crossing near
   return dir * SignAfterOrigin(sg_.f, level, tol, false) > 0.0;
 }
 
 // Capsule at v = 0 (docs/model.md section 3): rest while |F| <= T0; it slides forward once
-// -F > T0, backward once F > T0. Returns the friction sign of the mode (0 = rest). On the
-// level within rounding, the sign of F -+ T0 on the piece right after the origin decides: a
-// force that only touches +-T0 is no break-away.
-double Simulation::RestOrSlide(double hint) const {
-  if (hint != 0.0) return hint;
+// -F > T0, backward once F > T0. On the level within rounding, the sign of F -+ T0 on the
+// piece right after the origin decides: a force that only touches +-T0 is no break-away.
+Slide Simulation::RestOrSlide(Slide hint) const {
+  if (hint != Slide::kNone) return hint;
   const double F = sg_.f.F(0.0), T0 = sg_.T0, tol = kLevelTol * force_scale_;
-  if (F > T0 + tol) return -1.0;
-  if (F < -T0 - tol) return 1.0;
-  if (F > T0 - tol && SignAfterOrigin(sg_.f, T0, tol, true) > 0.0) return -1.0;
-  if (F < -T0 + tol && SignAfterOrigin(sg_.f, -T0, tol, true) < 0.0) return 1.0;
-  return 0.0;
+  if (F > T0 + tol) return Slide::kBackward;
+  if (F < -T0 - tol) return Slide::kForward;
+  if (F > T0 - tol && SignAfterOrigin(sg_.f, T0, tol, true) > 0.0) return Slide::kBackward;
+  if (F < -T0 + tol && SignAfterOrigin(sg_.f, -T0, tol, true) < 0.0) return Slide::kForward;
+  return Slide::kNone;
 }
 
-// Impact with wall dir (docs/model.md section 3): u+ = -e u, v+ = v + alpha (1+e) u. A slow impact
+// Impact with `wall` (docs/model.md section 3): u+ = -e u, v+ = v + alpha (1+e) u. A slow impact
 // (|u| < chatter_velocity, or the end of a long run of close impacts) with the body pushed
 // into the wall is taken as plastic: it ends a chattering sequence with the momentum of its
 // remaining impacts (u+ = 0, v+ = v + alpha u); Settle then makes the body rest on the wall.
-void Simulation::Impact(double dir) {
+// Energy: the kinetic energy lost, alpha (1-alpha) (1-e^2) u^2/2 (e = 0 when plastic: the
+// losses of the remaining impacts, sum (1-e^2) e^(2k) = 1).
+void Simulation::Impact(Wall wall) {
   const double u = sg_.u0, v = sg_.v0, phase = Phase();
-  if (dir == last_impact_dir_ && phase - last_impact_phase_ < kChatterSpan) {
+  if (wall == last_impact_wall_ && phase - last_impact_phase_ < kChatterSpan) {
     ++chatter_count_;
   } else {
     chatter_count_ = 1;
   }
-  last_impact_dir_ = dir;
+  last_impact_wall_ = wall;
   last_impact_phase_ = phase;
-  sg_.x0 = dir > 0.0 ? 1.0 : 0.0;
+  sg_.x0 = Position(wall);
   bool plastic = false;
   if (std::abs(u) < opt_.chatter_velocity || chatter_count_ > kMaxChatterImpacts) {
     const double v_plastic = v + sg_.alpha * u;
-    const double sgn = v_plastic > 0.0 ? 1.0 : v_plastic < 0.0 ? -1.0 : 0.0;
+    const Slide slide = SlideOf(v_plastic);
     sg_.v0 = v_plastic;
-    plastic = FreeAccelIntoWall(dir, sgn != 0.0 ? sgn : RestOrSlide(0.0));
+    plastic = FreeAccelIntoWall(wall, slide != Slide::kNone ? slide : RestOrSlide(Slide::kNone));
   }
+  const double e = plastic ? 0.0 : params_.e;
   if (plastic) {
     sg_.u0 = 0.0;
     sg_.v0 = v + sg_.alpha * u;
@@ -383,61 +546,138 @@ void Simulation::Impact(double dir) {
     sg_.v0 = v + sg_.alpha * (1.0 + params_.e) * u;
   }
   if (sg_.u0 == 0.0) sg_.u0 = 0.0;  // no -0
-  UpdateMode(0.0);
-  Emit(dir > 0.0 ? EventKind::kImpactRight : EventKind::kImpactLeft, u, v);
+  if (opt_.energy) {
+    res_.energy.impact_loss += 0.5 * sg_.alpha * (1.0 - sg_.alpha) * (1.0 - e * e) * u * u;
+  }
+  UpdateMode(Slide::kNone);
+  Emit(ImpactKind(wall), u, v);
 }
 
-void Simulation::UpdateMode(double hint) {
-  const double sgn = sg_.v0 > 0.0   ? 1.0
-                     : sg_.v0 < 0.0 ? -1.0
-                     : sg_.OnWall() ? 0.0
-                                    : RestOrSlide(hint);
-  SetCoefficients(sg_, sgn);
+// The inner body leaves the wall it rested on (u stays 0).
+void Simulation::Release(double u_before, double v_before) {
+  sg_.mode = SimMode::kRest;
+  sg_.u0 = 0.0;
+  UpdateMode(Slide::kNone);
+  Emit(EventKind::kRelease, u_before, v_before);
+}
+
+void Simulation::UpdateMode(Slide hint) {
+  const Slide slide = sg_.v0 > 0.0 || sg_.v0 < 0.0 ? SlideOf(sg_.v0)
+                      : sg_.OnWall()               ? Slide::kNone
+                                                   : RestOrSlide(hint);
+  SetCoefficients(sg_, slide);
   if (sg_.OnWall()) return;
-  sg_.mode = sgn > 0.0   ? SimMode::kSlideForward
-             : sgn < 0.0 ? SimMode::kSlideBackward
-                         : SimMode::kRest;
+  sg_.mode = slide == Slide::kForward    ? SimMode::kSlideForward
+             : slide == Slide::kBackward ? SimMode::kSlideBackward
+                                         : SimMode::kRest;
 }
 
-void Simulation::Settle(double hint) {
+void Simulation::Settle(Slide hint) {
   for (int iter = 0; iter < 8; ++iter) {
     if (!sg_.OnWall()) {
       if (sg_.x0 >= 1.0 && sg_.u0 > 0.0) {
-        Impact(1.0);
-        hint = 0.0;
+        Impact(Wall::kRight);
+        hint = Slide::kNone;
         continue;
       }
       if (sg_.x0 <= 0.0 && sg_.u0 < 0.0) {
-        Impact(-1.0);
-        hint = 0.0;
+        Impact(Wall::kLeft);
+        hint = Slide::kNone;
         continue;
       }
       UpdateMode(hint);
-      const double sgn = sg_.sgn;
       if (sg_.u0 == 0.0 && (sg_.x0 >= 1.0 || sg_.x0 <= 0.0)) {
-        const double dir = sg_.x0 >= 1.0 ? 1.0 : -1.0;
-        if (FreeAccelIntoWall(dir, sgn)) {
-          sg_.mode = dir > 0.0 ? SimMode::kOnRightWall : SimMode::kOnLeftWall;
-          sg_.x0 = dir > 0.0 ? 1.0 : 0.0;
+        const Wall wall = sg_.x0 >= 1.0 ? Wall::kRight : Wall::kLeft;
+        if (FreeAccelIntoWall(wall, sg_.slide)) {
+          sg_.mode = wall == Wall::kRight ? SimMode::kOnRightWall : SimMode::kOnLeftWall;
+          sg_.x0 = Position(wall);
           Emit(EventKind::kStick, 0.0, sg_.v0);
         }
       }
       return;
     }
-    const double dir = sg_.mode == SimMode::kOnRightWall ? 1.0 : -1.0;
-    const double sgn = sg_.v0 > 0.0 ? 1.0 : sg_.v0 < 0.0 ? -1.0 : 0.0;
-    SetCoefficients(sg_, sgn);
-    if (FreeAccelIntoWall(dir, sgn)) return;  // the contact force keeps its sign
-    sg_.mode = SimMode::kRest;                // free
-    sg_.u0 = 0.0;
-    UpdateMode(0.0);
-    Emit(EventKind::kRelease, 0.0, sg_.v0);
+    const Slide slide = SlideOf(sg_.v0);
+    SetCoefficients(sg_, slide);
+    if (FreeAccelIntoWall(sg_.RestingWall(), slide)) return;  // the contact force keeps its sign
+    Release(0.0, sg_.v0);
   }
+}
+
+Event Simulation::LocateEvent(double window) const {
+  const double tol = sg_.tol;
+  Event ev;
+  if (sg_.OnWall()) {
+    // Moving with the capsule: it stops (v' = -sgn T0), or the contact force changes sign.
+    if (sg_.Sliding()) ev.s = sg_.v0 / (sg_.sgn * sg_.T0);
+    const bool upwards = sg_.RestingWall() == Wall::kLeft;  // F + b turns away from the wall
+    const double s = FirstCrossing(sg_.f, -sg_.b, upwards, tol, std::min(window, ev.s));
+    if (s <= ev.s) ev = {s, EventKind::kRelease};
+    return ev;
+  }
+  if (sg_.Sliding()) {
+    ev.s = FirstStop(sg_, window);
+  } else {
+    const double back = FirstCrossing(sg_.f, sg_.T0, true, tol, window);
+    const double fwd = FirstCrossing(sg_.f, -sg_.T0, false, tol, std::min(window, back));
+    ev = {std::min(back, fwd), EventKind::kBreakaway,
+          fwd <= back ? Slide::kForward : Slide::kBackward};
+  }
+  const double limit = std::min(window, ev.s);
+  const PhaseList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
+  const Reach impact = FirstImpact(sg_, cuts, limit);
+  if (impact.s <= ev.s) ev = {impact.s, impact.kind};
+  return ev;
+}
+
+void Simulation::ApplyEvent(const Event& event, double u_before, double v_before) {
+  Slide hint = Slide::kNone;
+  switch (event.kind) {
+    case EventKind::kStop:
+      sg_.v0 = 0.0;
+      UpdateMode(Slide::kNone);
+      Emit(EventKind::kStop, u_before, v_before);
+      break;
+    case EventKind::kBreakaway:
+      hint = event.slide;
+      UpdateMode(hint);
+      Emit(EventKind::kBreakaway, u_before, v_before);
+      break;
+    case EventKind::kImpactRight:
+      Impact(Wall::kRight);
+      break;
+    case EventKind::kImpactLeft:
+      Impact(Wall::kLeft);
+      break;
+    case EventKind::kRelease:
+      Release(u_before, v_before);
+      break;
+    case EventKind::kStick:  // decided by Settle, never located
+      break;
+  }
+  Settle(hint);
+}
+
+void Simulation::CloseTally(SimTally& tally) const {
+  tally.span = Phase() - span_phase0_;
+  tally.displacement = sg_.y0 - span_y0_;
+  tally.v_mean = tally.span > 0.0 ? tally.displacement / tally.span : SimTally::kNaN;
+}
+
+void Simulation::EndTransient() {
+  static_cast<SimTally&>(res_.transient) = static_cast<const SimTally&>(res_);
+  CloseTally(res_.transient);
+  static_cast<SimTally&>(res_) = SimTally{};
+  if (opt_.energy) res_.energy = Energy{0.0, 0.0, 0.0, 0.0};
+  span_phase0_ = Phase();
+  span_y0_ = sg_.y0;
+  in_transient_ = false;
+  end_turns_ = opt_.transient + opt_.periods;
 }
 
 bool Simulation::Fail(const char* what) {
   res_.status = SimStatus::kEventLimit;
-  res_.message = fmt::format("{} at phase {:.17g} after {} events", what, Phase(), res_.events);
+  res_.message = fmt::format("{} at phase {:.17g} after {} events", what, Phase(),
+                             res_.events + res_.transient.events);
   return true;
 }
 
@@ -449,104 +689,55 @@ SimResult Simulation::Run() {
   sg_.u0 = opt_.u0;
   sg_.v0 = opt_.v0;
   sg_.y0 = opt_.y0;
+  sg_.tol = kLevelTol * force_scale_;
+  span_y0_ = opt_.y0;
+  if (opt_.energy) res_.energy = Energy{0.0, 0.0, 0.0, 0.0};
   // The work bound, saturated: the product of two valid options may exceed int64.
   const double events_bound =
-      static_cast<double>(opt_.max_events_per_period) * std::ceil(opt_.periods);
+      static_cast<double>(opt_.max_events_per_period) * std::ceil(opt_.transient + opt_.periods);
   const std::int64_t max_events = events_bound >= 9.2e18 ? std::numeric_limits<std::int64_t>::max()
                                                          : static_cast<std::int64_t>(events_bound);
-  const double tol = kLevelTol * force_scale_;
-  sg_.tol = tol;
   int stalled = 0;
   res_.status = SimStatus::kOk;
-  Settle(0.0);
+  Settle(Slide::kNone);
   for (;;) {
-    if (opt_.max_impacts_right > 0 && res_.impacts_right >= opt_.max_impacts_right) {
+    const std::int64_t impacts_right = res_.impacts_right + res_.transient.impacts_right;
+    if (opt_.max_impacts_right > 0 && impacts_right >= opt_.max_impacts_right) {
       res_.status = SimStatus::kImpactLimit;
       break;
     }
-    if (res_.events >= max_events && Fail("work bound max_events_per_period reached")) break;
+    if (res_.events + res_.transient.events >= max_events &&
+        Fail("work bound max_events_per_period reached")) {
+      break;
+    }
     const double rem = Remaining();
-    if (rem <= 0.0) break;
-    const double W = std::min(kTau, rem + kEndSlack);
-    double best = kInf, hint = 0.0;
-    EventKind kind = EventKind::kStop;
-    if (sg_.OnWall()) {
-      const double dir = sg_.mode == SimMode::kOnRightWall ? 1.0 : -1.0;
-      if (sg_.Sliding()) best = sg_.v0 / (sg_.sgn * sg_.T0);
-      const double s = FirstCrossing(sg_.f, -sg_.b, -dir, tol, std::min(W, best));
-      if (s <= best) {
-        best = s;
-        kind = EventKind::kRelease;
+    bool boundary = rem <= 0.0;
+    if (!boundary) {
+      const double window = std::min(kTau, rem + kEndSlack);
+      const Event event = LocateEvent(window);
+      if (event.s <= window) {
+        stalled = event.s > 0.0 ? 0 : stalled + 1;
+        if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
+        const SimState before = Advance(event.s);
+        ApplyEvent(event, before.u, before.v);
+        continue;
       }
-    } else {
-      if (sg_.Sliding()) {
-        best = FirstStop(sg_, W);
-      } else {
-        const double back = FirstCrossing(sg_.f, sg_.T0, 1.0, tol, W);
-        const double fwd = FirstCrossing(sg_.f, -sg_.T0, -1.0, tol, std::min(W, back));
-        best = std::min(back, fwd);
-        hint = fwd <= back ? 1.0 : -1.0;
-        kind = EventKind::kBreakaway;
-      }
-      const double limit = std::min(W, best);
-      const PhaseList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
-      const double right = FirstReach(sg_, 1.0, 1.0, cuts, limit);
-      if (right <= best) {
-        best = right;
-        kind = EventKind::kImpactRight;
-      }
-      const double left = FirstReach(sg_, 0.0, -1.0, cuts, std::min(limit, best));
-      if (left <= best) {
-        best = left;
-        kind = EventKind::kImpactLeft;
-      }
+      const double step = std::min(window, rem);  // no event in the window
+      Advance(step);
+      boundary = step >= rem;
     }
-    if (!(best <= W)) {  // no event in the window
-      const double step = std::min(W, rem);
-      EmitSamplesBefore(step, false);
-      Rebase(step);
-      if (step >= rem) break;
-      continue;
-    }
-    stalled = best > 0.0 ? 0 : stalled + 1;
-    if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
-    EmitSamplesBefore(best, false);
-    const double u_before = sg_.U(best), v_before = sg_.V(best);
-    Rebase(best);
-    switch (kind) {
-      case EventKind::kStop:
-        sg_.v0 = 0.0;
-        UpdateMode(0.0);
-        Emit(EventKind::kStop, u_before, v_before);
-        Settle(0.0);
-        break;
-      case EventKind::kBreakaway:
-        UpdateMode(hint);
-        Emit(EventKind::kBreakaway, u_before, v_before);
-        Settle(hint);
-        break;
-      case EventKind::kImpactRight:
-      case EventKind::kImpactLeft:
-        sg_.x0 = kind == EventKind::kImpactRight ? 1.0 : 0.0;
-        Impact(kind == EventKind::kImpactRight ? 1.0 : -1.0);
-        Settle(0.0);
-        break;
-      case EventKind::kRelease:
-        sg_.mode = SimMode::kRest;
-        sg_.u0 = 0.0;
-        UpdateMode(0.0);
-        Emit(EventKind::kRelease, u_before, v_before);
-        Settle(0.0);
-        break;
-      case EventKind::kStick:
-        break;
-    }
+    if (!boundary) continue;
+    if (!in_transient_) break;
+    EndTransient();
   }
   EmitSamplesBefore(0.0, true);
   res_.final_state = StateAt(0.0);
-  res_.displacement = res_.final_state.y - opt_.y0;
-  res_.v_mean =
-      res_.final_state.phi > 0.0 ? res_.displacement / res_.final_state.phi : SimResult::kNaN;
+  if (in_transient_) {  // stopped inside the transient: its figures, and an empty record
+    EndTransient();
+    static_cast<SimTally&>(res_) = SimTally{};
+  } else {
+    CloseTally(res_);
+  }
   return res_;
 }
 
@@ -606,6 +797,7 @@ void SimOptions::Validate() const {
   Require(std::isfinite(u0), "initial relative velocity u0", u0, "a finite number");
   Require(std::isfinite(v0), "initial capsule velocity v0", v0, "a finite number");
   Require(std::isfinite(y0), "initial capsule position y0", y0, "a finite number");
+  Require(transient >= 0.0 && transient <= 1e8, "transient", transient, "0 <= transient <= 1e8");
   Require(periods > 0.0 && periods <= 1e8, "periods", periods, "0 < periods <= 1e8");
   if (max_impacts_right < 0) {
     throw std::invalid_argument(fmt::format(

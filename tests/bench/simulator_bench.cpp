@@ -24,7 +24,7 @@ struct StableOrbit {
   }
 };
 
-void SimulateOrbit(benchmark::State& state, double periods) {
+void SimulateOrbit(benchmark::State& state, double periods, bool energy = false) {
   const StableOrbit s;
   capsubot::SimOptions opt;
   opt.alpha = s.orbit.alpha;
@@ -32,6 +32,7 @@ void SimulateOrbit(benchmark::State& state, double periods) {
   opt.u0 = -s.params.e * s.orbit.u;
   opt.v0 = s.orbit.v_plus;
   opt.periods = periods;
+  opt.energy = energy;
   double sum = 0.0;
   for (auto _ : state) {
     const capsubot::SimResult r = capsubot::Simulate(s.orbit.forcing, s.params, opt);
@@ -47,6 +48,12 @@ BENCHMARK(BM_SimulateOrbitOnePeriod);
 
 void BM_SimulateOrbit1000Periods(benchmark::State& state) { SimulateOrbit(state, 1000.0); }
 BENCHMARK(BM_SimulateOrbit1000Periods);
+
+// The same with the energy budget accumulated (SimOptions::energy).
+void BM_SimulateOrbit1000PeriodsWithEnergy(benchmark::State& state) {
+  SimulateOrbit(state, 1000.0, true);
+}
+BENCHMARK(BM_SimulateOrbit1000PeriodsWithEnergy);
 
 // A two-harmonic Fourier force (crossings through the companion matrix): a slower path.
 void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {

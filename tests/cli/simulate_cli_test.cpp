@@ -63,6 +63,31 @@ TEST(SimulateCli, FromOrbitConfirmsTheAnalyticOrbitOverTenPeriods) {
   EXPECT_EQ(sim["orbit"]["valid"], true);
 }
 
+// --transient: the counts, v_mean and energy are over the periods after it; the transient's
+// figures are apart. Reference: the analytic orbit (I per period; friction T0 I per period,
+// since the capsule only slides forward; motor work = friction + impact losses).
+TEST(SimulateCli, TransientIsReportedApartAndTheEnergyBalances) {
+  const auto orbit = Json("solve " + kOrbit + " --json");
+  const double I = orbit["I"].get<double>();
+  const auto sim = Json("simulate " + kOrbit + " --from-orbit --transient 3 --periods 4 --json");
+  EXPECT_EQ(sim["impacts_right"], 4);
+  EXPECT_EQ(sim["stops"], 4);
+  EXPECT_TRUE(Near(sim["displacement"].get<double>(), 4.0 * I, kTol));
+  EXPECT_TRUE(Near(sim["v_mean"].get<double>(), orbit["v_mean"].get<double>(), kTol));
+  const auto& tr = sim["transient"];
+  EXPECT_EQ(tr["periods"], 3.0);
+  EXPECT_EQ(tr["impacts_right"], 3);
+  EXPECT_TRUE(Near(tr["displacement"].get<double>(), 3.0 * I, kTol));
+  const auto& en = sim["energy"];
+  EXPECT_TRUE(Near(en["friction_loss"].get<double>(), 0.1 * 4.0 * I, kTol));
+  EXPECT_TRUE(Near(en["motor_work"].get<double>(),
+                   en["friction_loss"].get<double>() + en["impact_loss"].get<double>(), kTol));
+  EXPECT_GE(en["motor_work_positive"].get<double>(), en["motor_work"].get<double>());
+  EXPECT_TRUE(Near(tr["energy"]["friction_loss"].get<double>(), 0.1 * 3.0 * I, kTol));
+  // Without --transient there is no "transient" key.
+  EXPECT_FALSE(Json("simulate " + kOrbit + " --from-orbit --json").contains("transient"));
+}
+
 TEST(SimulateCli, ExplicitStateEqualsFromOrbit) {
   const auto orbit = Json("solve " + kOrbit + " --json");
   const std::string state = " --alpha " + Num(orbit["alpha"].get<double>()) + " --x0 1 --u0 " +
@@ -141,6 +166,8 @@ TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
        "(non_positive_mean_force)"},
       {"simulate " + kOrbit + " --from-orbit --periods 0",
        "periods = 0 is invalid: expected 0 < periods <= 1e8"},
+      {"simulate " + kOrbit + " --from-orbit --transient -1",
+       "transient = -1 is invalid: expected 0 <= transient <= 1e8"},
       {"simulate " + kOrbit + " --alpha 1.2 --x0 1 --u0 0 --v0 0",
        "mass ratio alpha = 1.2 is invalid: expected 0 < alpha < 1"},
       {"simulate " + kOrbit + " --alpha 0.3 --x0 2 --u0 0 --v0 0",

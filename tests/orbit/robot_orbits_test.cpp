@@ -142,6 +142,63 @@ INSTANTIATE_TEST_SUITE_P(
              Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0), 0.1, 0.5, 0.05}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
+// Near a fold of alpha(phi0) (its local maximum alpha*), Psi is flat: the roots' acceptance
+// bands span many of the search's finest intervals. Each root is one orbit. Reference: a dense
+// scan of alpha(phi0) (ComputeOrbit only) on a 2e-5 grid over [-pi, pi) for the count, and a
+// golden-section search of alpha on the scan's best cell for alpha* (the fold of the case
+// `orbits --A 0.2 --c 0.03 --T0 1 --e 1`, near phi0 = -3.1356, alpha* = 0.68618243).
+TEST(RobotOrbitsNearFold, ReturnEachOrbitOnceForAlphasApproachingTheFoldFromBothSides) {
+  const Forcing f = Forcing::Harmonic(0.2, 0.03, 0.0);
+  const Params p{1.0, 1.0};
+  const auto alpha = [&](double phi0) {
+    const Orbit o = ComputeOrbit(f.WithPhase(phi0), p);
+    return o.ok() ? o.alpha : NAN;
+  };
+  constexpr int kScan = 314159;  // step 2e-5: the closest pair below (1e-3 apart), 50 cells
+  std::vector<double> scan(kScan + 1);
+  int best = 0;
+  for (int i = 0; i <= kScan; ++i) {
+    const double phi0 = -M_PI + kTau * i / kScan;
+    scan[i] = alpha(phi0);
+    if (phi0 > -3.2 && phi0 < -3.07 && !(scan[i] <= scan[best])) best = i;
+  }
+  double lo = -M_PI + kTau * (best - 1) / kScan, hi = -M_PI + kTau * (best + 1) / kScan;
+  for (int it = 0; it < 100; ++it) {  // golden section for the maximum of alpha
+    const double m1 = lo + 0.381966 * (hi - lo), m2 = lo + 0.618034 * (hi - lo);
+    if (alpha(m1) < alpha(m2)) {
+      lo = m1;
+    } else {
+      hi = m2;
+    }
+  }
+  const double fold = alpha(0.5 * (lo + hi));
+  ASSERT_TRUE(Near(fold, 0.68618243, 1e-8));
+  const auto scan_count = [&](double a) {
+    int n = 0;
+    for (int i = 1; i <= kScan; ++i) {
+      n += !std::isnan(scan[i]) && !std::isnan(scan[i - 1]) && (scan[i] < a) != (scan[i - 1] < a);
+    }
+    return n;
+  };
+  int checked = 0, below_with_pair = 0;
+  for (int k = 0; k < 10; ++k) {
+    const double d = std::pow(10.0, -3.0 - 0.5 * k);  // 1e-3 down to 3e-8
+    for (const double side : {-1.0, 1.0}) {
+      const double a = fold + side * d;
+      const int expected = scan_count(a);
+      const std::vector<Solution> found = FindRobotOrbits(f, p, a);
+      EXPECT_EQ(static_cast<int>(found.size()), expected) << "alpha = fold + " << side * d;
+      // Below the fold the pair exists: two more orbits than above it.
+      if (side < 0.0) below_with_pair += expected >= 2;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 20);
+  EXPECT_EQ(below_with_pair, 10);
+  // The command line's case: two orbits, 0.0095 apart (it listed 32 before the bands).
+  EXPECT_EQ(FindRobotOrbits(f, p, 0.68618).size(), 2U);
+}
+
 TEST(RobotOrbitsInput, BadMassRatioIsRejectedWithItsRule) {
   Params p;
   try {

@@ -1,0 +1,25 @@
+#include "capsubot/orbit_start.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace capsubot {
+
+SimOptions StartAfterImpact(const Orbit& orbit, double periods) {
+  if (!orbit.ok()) {
+    throw std::invalid_argument(
+        fmt::format("orbit status = {} is invalid: expected an orbit that exists (status ok)",
+                    StatusName(orbit.status)));
+  }
+  // Right after the impact (docs/model.md section 4): x = 1, x' = -e u, v = v+.
+  SimOptions opt;
+  opt.alpha = orbit.alpha;
+  opt.x0 = 1.0;
+  opt.u0 = -orbit.e * orbit.u;
+  opt.v0 = orbit.v_plus;
+  opt.periods = periods;
+  return opt;
+}
+
+}  // namespace capsubot
