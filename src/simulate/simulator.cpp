@@ -230,6 +230,8 @@ class Simulation {
   double RestOrSlide(double hint) const;
   bool FreeAccelIntoWall(double dir, double sgn) const;
   bool Fail(const char* what);
+  // Ends the run with kNonFinite when the stored state holds inf or NaN; true if it did.
+  bool StopIfNotFinite();
 
   const Forcing& forcing_;
   const Params& params_;
@@ -269,10 +271,12 @@ SimState Simulation::StateAt(double s) const {
 void Simulation::Rebase(double s) {
   const SimState st = StateAt(s);
   r_ += s;
+  const std::int64_t turns_before = turns_;
   while (r_ >= kTau) {
     r_ -= kTau;
     ++turns_;
   }
+  if (observer_ != nullptr && turns_ != turns_before) observer_->OnPeriods(turns_);
   sg_.f = forcing_.WithPhase(forcing_.phi0() + r_);
   sg_.x0 = st.x;
   sg_.u0 = st.u;
@@ -441,6 +445,19 @@ bool Simulation::Fail(const char* what) {
   return true;
 }
 
+bool Simulation::StopIfNotFinite() {
+  if (std::isfinite(sg_.x0) && std::isfinite(sg_.u0) && std::isfinite(sg_.v0) &&
+      std::isfinite(sg_.y0)) {
+    return false;
+  }
+  res_.status = SimStatus::kNonFinite;
+  res_.message = fmt::format(
+      "the state is not finite (x = {}, u = {}, v = {}, y = {}) at phase {:.17g} after {} "
+      "events: velocities or positions beyond double precision",
+      sg_.x0, sg_.u0, sg_.v0, sg_.y0, Phase(), res_.events);
+  return true;
+}
+
 SimResult Simulation::Run() {
   sg_.alpha = opt_.alpha;
   sg_.T0 = params_.T0;
@@ -460,6 +477,7 @@ SimResult Simulation::Run() {
   res_.status = SimStatus::kOk;
   Settle(0.0);
   for (;;) {
+    if (StopIfNotFinite()) break;
     if (opt_.max_impacts_right > 0 && res_.impacts_right >= opt_.max_impacts_right) {
       res_.status = SimStatus::kImpactLimit;
       break;
@@ -542,7 +560,7 @@ SimResult Simulation::Run() {
         break;
     }
   }
-  EmitSamplesBefore(0.0, true);
+  if (res_.status != SimStatus::kNonFinite && !StopIfNotFinite()) EmitSamplesBefore(0.0, true);
   res_.final_state = StateAt(0.0);
   res_.displacement = res_.final_state.y - opt_.y0;
   res_.v_mean =
@@ -596,6 +614,8 @@ const char* SimStatusName(SimStatus status) {
       return "impact_limit";
     case SimStatus::kEventLimit:
       return "event_limit";
+    case SimStatus::kNonFinite:
+      return "non_finite";
   }
   return "unknown";
 }
