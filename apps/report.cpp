@@ -13,9 +13,15 @@ std::vector<double> Coefficients(const Forcing& f, bool sine) {
   return out;
 }
 
-std::string Num(double value) { return std::isnan(value) ? "-" : fmt::format("{:.10g}", value); }
-
 }  // namespace
+
+std::string Num(double value, int digits) {
+  return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
+}
+
+std::string NumFixed(double value, int decimals) {
+  return std::isnan(value) ? "-" : fmt::format("{:.{}f}", value, decimals);
+}
 
 nlohmann::json SolutionJson(const Solution& s) {
   const Orbit& o = s.orbit;
@@ -106,8 +112,8 @@ std::string StabilityTable(const Stability& st) {
     t += fmt::format("  multiplier {}     {} {} {}i\n", i + 1, Num(z.real()),
                      z.imag() < 0 ? '-' : '+', Num(std::abs(z.imag())));
   }
-  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n", Num(st.spectral_radius),
-                   st.stable ? "stable, < 1" : "unstable, >= 1");
+  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n",
+                   Num(st.spectral_radius), st.stable ? "stable, < 1" : "unstable, >= 1");
   return t;
 }
 
