@@ -3,30 +3,73 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <climits>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
+
+#include "capsubot/io.hpp"
 
 namespace capsubot::app {
 
 namespace {
 
-// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element must be a whole number ("1,,2" is a typo).
+// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element is a number of ParseNumber ("1,,2" is a typo).
 std::vector<double> ParseCoefficients(const char* option, const std::string& text) {
   std::vector<double> values;
   std::size_t start = 0;
   while (true) {
     const std::size_t end = std::min(text.find(',', start), text.size());
     const std::string element = text.substr(start, end - start);
-    char* stop = nullptr;
-    const double value = std::strtod(element.c_str(), &stop);
-    if (element.empty() || stop != element.c_str() + element.size()) {
+    try {
+      values.push_back(ParseNumber(element, option));
+    } catch (const std::invalid_argument&) {
       throw std::invalid_argument(
           fmt::format("{} = {} is invalid: expected comma-separated numbers (element {} is '{}')",
-                      option, text, values.size() + 1, element));
+                      option, QuoteForMessage(text), values.size() + 1, element));
     }
-    values.push_back(value);
     if (end == text.size()) return values;
     start = end + 1;
+  }
+}
+
+constexpr const char* kIntegerValidator = "integer";
+
+// The transform of a numeric option: the strict parse, then the value in a form CLI11's own
+// conversion reads back exactly (17 significant digits, plain decimal integers).
+CLI::Validator NumberText(const std::string& name) {
+  return CLI::Validator(
+      [name](std::string& text) {
+        try {
+          text = fmt::format("{:.17g}", ParseNumber(text, name));
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      },
+      "", "number");
+}
+
+CLI::Validator IntegerText(const std::string& name, std::int64_t lo, std::int64_t hi,
+                           const std::string& description) {
+  return CLI::Validator(
+      [name, lo, hi](std::string& text) {
+        try {
+          text = std::to_string(ParseInteger(text, name, lo, hi));
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      },
+      description, kIntegerValidator);
+}
+
+bool HasValidator(CLI::Option* option, const char* name) {
+  try {
+    option->get_validator(name);
+    return true;
+  } catch (const CLI::OptionNotFound&) {
+    return false;
   }
 }
 
@@ -84,6 +127,36 @@ void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {
                    "0 <= d < 0.5")
         ->capture_default_str();
   }
+}
+
+void UseStrictNumbers(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type == "FLOAT") {
+      option->transform(NumberText(option->get_name()));
+    } else if ((type == "INT" || type == "UINT") && !HasValidator(option, kIntegerValidator)) {
+      option->transform(IntegerText(option->get_name(), type == "UINT" ? 0 : INT_MIN, INT_MAX, ""));
+    }
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    UseStrictNumbers(*sub);
+  }
+}
+
+CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi) {
+  return option->transform(
+      IntegerText(option->get_name(), lo, hi, fmt::format("in [{}, {}]", lo, hi)));
+}
+
+int CapThreads(int requested, const char* who) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cap = kThreadsPerCore * cores;
+  if (requested <= cap) return requested;
+  fmt::print(stderr,
+             "{}: note: --threads {} lowered to {} ({} per core on {} cores: more only adds "
+             "overhead)\n",
+             who, requested, cap, kThreadsPerCore, cores);
+  return cap;
 }
 
 }  // namespace capsubot::app

@@ -2,6 +2,7 @@
 // Pieces shared by the subcommands: the command record, the force and model options.
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <string>
@@ -39,5 +40,26 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase =
 
 /// Adds --T0, --e and (with `with_margin`) --margin to `cmd`.
 void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
+
+/// Gives every numeric option of `app` and of its subcommands the one number syntax of
+/// capsubot::ParseNumber (floating-point options) or ParseInteger (integer options: the
+/// range of Bounded, else that of int). Call once, after every option is added. An option
+/// is numeric by its CLI11 type name (FLOAT, INT, UINT): keep those names on numeric options.
+void UseStrictNumbers(CLI::App& app);
+
+/// A size option: its integer value must lie in [lo, hi], checked while parsing (before any
+/// work), the range named in the message and shown in --help.
+CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi);
+
+/// Rows of a --trajectory file at most (about 1 GB of CSV), checked before any work.
+inline constexpr std::int64_t kMaxTrajectoryRows = 10'000'000;
+
+/// Worker threads beyond this many per core only add overhead: a larger --threads is
+/// lowered to it (with a note on stderr).
+inline constexpr int kThreadsPerCore = 4;
+
+/// `requested` threads (0: all cores) capped at kThreadsPerCore x the cores; a note on
+/// stderr (naming `who`) when it lowers the request.
+int CapThreads(int requested, const char* who);
 
 }  // namespace capsubot::app

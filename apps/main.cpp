@@ -1,11 +1,14 @@
 // capsubot: the command-line program. Parses, runs one subcommand, maps errors to exit codes:
 // 0 done, 2 bad input (one line on stderr naming the parameter, its value and the rule),
-// 1 a computation that could not be completed (one line saying why) or an unexpected failure.
+// 1 a computation that could not be completed (one line saying why: also a failed write, on
+// standard output too) or an unexpected failure. SIGINT/SIGTERM remove temporary files.
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -23,20 +26,36 @@ std::string OneLine(std::string text) {
   return text;
 }
 
-// CLI11 says "Could not convert: --A = abc"; say which rule the value broke.
+// CLI11 says "Could not convert: --A = abc"; say which rule the value broke. Our number
+// validators name the option themselves: "--A: --A = '' is invalid: ..." loses its prefix.
 std::string ParseErrorMessage(const CLI::ParseError& e) {
   const std::string text = OneLine(e.what());
   const std::string prefix = "Could not convert: ";
   if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr && text.rfind(prefix, 0) == 0) {
     return text.substr(prefix.size()) + " is invalid: expected a number";
   }
+  const std::size_t colon = text.find(": ");
+  if (dynamic_cast<const CLI::ValidationError*>(&e) != nullptr && colon != std::string::npos &&
+      text.compare(colon + 2, colon + 1, text.substr(0, colon) + " ") == 0) {
+    return text.substr(colon + 2);
+  }
   return text;
+}
+
+// Output that did not reach standard output (a full disk, /dev/full) is a failed run.
+int CheckStdout(const std::string& who, int status) {
+  errno = 0;
+  if (std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return status;
+  const int err = errno != 0 ? errno : EIO;
+  fmt::print(stderr, "{}: error: standard output cannot be written: {}\n", who, std::strerror(err));
+  return 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace capsubot::app;
+  capsubot::InstallTempFileCleanup();
   CLI::App app{
       "capsubot: one-impact periodic gaits of a vibro-impact capsule robot (A. P. Ivanov, "
       "Vibroimpact Mobile Robot, 2021). All quantities are dimensionless: phases in rad, "
@@ -49,18 +68,20 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {AddSolveCommand(app),    AddSimulateCommand(app),
                                          AddOrbitsCommand(app),   AddSweepCommand(app),
                                          AddOptimizeCommand(app), AddDesignCommand(app)};
+  UseStrictNumbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::ParseError& e) {
     const auto subs = app.get_subcommands();
     const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
-    if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr) {
+    if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr ||
+        dynamic_cast<const CLI::ValidationError*>(&e) != nullptr) {
       fmt::print(stderr, "{}: error: {}\n", who, ParseErrorMessage(e));
     } else {
       fmt::print(stderr, "{}: error: {} (see {} --help)\n", who, ParseErrorMessage(e), who);
@@ -71,10 +92,13 @@ int main(int argc, char** argv) {
     if (!command.parser->parsed()) continue;
     const std::string who = "capsubot " + command.parser->get_name();
     try {
-      return command.run();
+      return CheckStdout(who, command.run());
     } catch (const std::invalid_argument& e) {
       fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
       return 2;
+    } catch (const capsubot::WriteError& e) {  // the file could be opened: not bad input
+      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
+      return 1;
     } catch (const capsubot::IoError& e) {
       fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
       return 2;

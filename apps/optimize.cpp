@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -47,10 +48,54 @@ struct OptimizeCliOptions {
   std::string output = "results/optimum.json";
   CLI::Option* output_option = nullptr;
   std::string force_csv;
+  CLI::App* cmd = nullptr;
 };
 
-std::string Num(double v, int digits = 6) {
-  return std::isnan(v) ? "-" : fmt::format("{:.{}g}", v, digits);
+// The runs that use an option: "" is the main job (no --problem), else a problem name.
+struct OptionUse {
+  const char* option;
+  std::array<const char*, 3> runs;
+};
+const OptionUse kOptionUses[] = {
+    {"--A", {"phase"}},
+    {"--c", {"phase"}},
+    {"--harmonics", {"fourier"}},
+    {"--hops", {"", "forcing"}},
+    {"--starts", {"", "forcing", "fourier"}},
+    {"--bound", {"", "forcing", "fourier"}},
+    {"--global-algorithm", {"", "forcing", "fourier"}},
+    {"--local-algorithm", {"", "forcing", "fourier"}},
+    {"--global-evaluations", {"", "forcing", "fourier"}},
+};
+
+std::string RunName(const std::string& problem) {
+  return problem.empty() ? "the main job (no --problem)" : "--problem " + problem;
+}
+
+// An option the chosen run does not use would be silently ignored: refuse it, naming both.
+void RejectUnusedOptions(const OptimizeCliOptions& opt) {
+  for (const OptionUse& use : kOptionUses) {
+    const CLI::Option* option = opt.cmd->get_option_no_throw(use.option);
+    if (option == nullptr || option->count() == 0) continue;
+    std::string expected;
+    bool used = false;
+    for (const char* run : use.runs) {
+      if (run == nullptr) break;
+      used = used || opt.problem == run;
+      expected += (expected.empty() ? "" : " or ") + RunName(run);
+    }
+    if (!used) {
+      throw std::invalid_argument(fmt::format("{} conflicts with {}: expected {} only with {}",
+                                              use.option, RunName(opt.problem), use.option,
+                                              expected));
+    }
+  }
+  const CLI::Option* evaluations = opt.cmd->get_option_no_throw("--global-evaluations");
+  if (evaluations != nullptr && evaluations->count() > 0 && opt.global_algorithm == kMultistart) {
+    throw std::invalid_argument(
+        "--global-evaluations conflicts with --global-algorithm multistart: expected an NLopt "
+        "global algorithm with it (multistart has no evaluation budget)");
+  }
 }
 
 std::string Join(const std::vector<std::string>& items, const char* none = "none") {
@@ -193,7 +238,8 @@ int RunMainJob(const OptimizeCliOptions& opt) {
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section 7)\n"
+      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section "
+      "7)\n"
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
       "margin {:g}\n"
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
@@ -218,7 +264,8 @@ int RunMainJob(const OptimizeCliOptions& opt) {
       // Only the left wall fails: the same gait scaled down with T0 fits (LargestFittingT0).
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
-          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): this\n"
+          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): "
+          "this\n"
           "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
           Num(v.x_min, 4), Num(LargestFittingT0(paper.solution, p.margin), 4), p.T0);
@@ -315,6 +362,7 @@ void RequireGiven(const CLI::Option* option, bool ok, const std::string& value, 
 }
 
 int Run(const OptimizeCliOptions& opt) {
+  RejectUnusedOptions(opt);
   RequireGiven(opt.A_option, std::isfinite(opt.A) && opt.A >= 0.0, fmt::format("{}", opt.A),
                "a finite amplitude A >= 0");
   RequireGiven(opt.c_option, std::isfinite(opt.c), fmt::format("{}", opt.c),
@@ -397,6 +445,7 @@ Command AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
                   "columns phi,F) to this CSV file (main job: the fastest valid gait's force)");
+  opt->cmd = cmd;
   return {cmd, [opt] { return Run(*opt); }};
 }
 

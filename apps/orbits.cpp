@@ -23,6 +23,9 @@ struct OrbitsOptions {
   bool json = false;
 };
 
+// The largest --max-evaluations: 250 times the default.
+constexpr std::int64_t kMaxEvaluations = 1'000'000'000;
+
 // Said when the search hit its work bound: the list is then not known to be complete.
 constexpr const char* kIncompleteNote =
     "the search stopped at its work bound (--max-evaluations): orbits may be missing";
@@ -46,7 +49,7 @@ int Run(const OrbitsOptions& opt) {
     if (!complete) fmt::print(stderr, "capsubot orbits: note: {}\n", kIncompleteNote);
     return 0;
   }
-  std::string t = fmt::format("one-impact orbits of the robot with alpha = {:.10g}\n", opt.alpha);
+  std::string t = fmt::format("one-impact orbits of the robot with alpha = {}\n", Num(opt.alpha));
   t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
                    ForceFormula(forcing.WithPhase(0.0)));
   t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", opt.params.T0, opt.params.e,
@@ -64,9 +67,10 @@ int Run(const OrbitsOptions& opt) {
       valid = "no:";
       for (const auto& n : s.validity.ViolationNames()) valid += " " + n;
     }
-    t += fmt::format("  {:>14.10f}  {:>10.6f}  {:>14.8g}  {:>15.6g}  {:>8}  {}\n",
-                     s.orbit.forcing.phi0(), s.orbit.phi1, s.orbit.v_mean, st.spectral_radius,
-                     st.stable ? "yes" : "no", valid);
+    t += fmt::format("  {:>14}  {:>10}  {:>14}  {:>15}  {:>8}  {}\n",
+                     NumFixed(s.orbit.forcing.phi0(), 10), NumFixed(s.orbit.phi1, 6),
+                     Num(s.orbit.v_mean, 8), Num(st.spectral_radius, 6), st.stable ? "yes" : "no",
+                     valid);
   }
   fmt::print("{}", t);
   return 0;
@@ -85,10 +89,11 @@ Command AddOrbitsCommand(CLI::App& app) {
   AddParamsOptions(*cmd, opt->params);
   cmd->add_option("--alpha", opt->alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
-  cmd->add_option("--max-evaluations", opt->max_evaluations,
-                  "work bound of the search: evaluations of the orbit equation while refining "
-                  "the circle, >= 1 (default 4000000, far above what the tested forces need); "
-                  "when it is hit, orbits may be missing: a note says so")
+  Bounded(cmd->add_option("--max-evaluations", opt->max_evaluations,
+                          "work bound of the search: evaluations of the orbit equation while "
+                          "refining the circle (default 4000000, far above what the tested "
+                          "forces need); when it is hit, orbits may be missing: a note says so"),
+          1, kMaxEvaluations)
       ->capture_default_str();
   cmd->add_flag("--json", opt->json,
                 "print a JSON array with one object per orbit, sorted by phi0, with the keys of "

@@ -13,9 +13,15 @@ std::vector<double> Coefficients(const Forcing& f, bool sine) {
   return out;
 }
 
-std::string Num(double value) { return std::isnan(value) ? "-" : fmt::format("{:.10g}", value); }
-
 }  // namespace
+
+std::string Num(double value, int digits) {
+  return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
+}
+
+std::string NumFixed(double value, int decimals) {
+  return std::isnan(value) ? "-" : fmt::format("{:.{}f}", value, decimals);
+}
 
 nlohmann::json SolutionJson(const Solution& s) {
   const Orbit& o = s.orbit;

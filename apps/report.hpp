@@ -10,6 +10,13 @@
 
 namespace capsubot::app {
 
+/// A number in a text table with `digits` significant digits; a missing value (NaN) is "-"
+/// everywhere (JSON writes it as null, CSV as an empty cell).
+std::string Num(double value, int digits = 10);
+
+/// The same with `decimals` digits after the point (aligned columns); NaN is "-".
+std::string NumFixed(double value, int decimals);
+
 /// JSON of a solved orbit: A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, v_mean, x_min,
 /// x_max, valid, violations (null for what does not exist); "cos"/"sin" for a Fourier force.
 nlohmann::json SolutionJson(const Solution& solution);

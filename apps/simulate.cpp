@@ -3,19 +3,27 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "capsubot/io.hpp"
 #include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
 namespace {
+
+// Runs of at least this many periods (about 0.2 s) show a progress bar on a terminal.
+constexpr double kProgressPeriods = 1e5;
+constexpr int kMaxSamplesPerPeriod = 1'000'000;
+constexpr std::int64_t kMaxEventsPerPeriod = 1'000'000'000;
 
 struct SimulateOptions {
   ForcingOptions forcing;
@@ -32,11 +40,12 @@ struct SimulateOptions {
   CLI::Option* v0_option = nullptr;
 };
 
-// Streams events and samples to the CSV files as they come (no storage of the run).
+// Streams events and samples to the CSV files as they come (no storage of the run), and
+// draws the progress bar when given one.
 class CsvObserver : public SimObserver {
  public:
-  CsvObserver(AtomicFile* events, AtomicFile* trajectory)
-      : events_(events), trajectory_(trajectory) {
+  CsvObserver(AtomicFile* events, AtomicFile* trajectory, ProgressBar* bar, double periods)
+      : events_(events), trajectory_(trajectory), bar_(bar), periods_(periods) {
     if (events_ != nullptr) events_->stream() << "phase,kind,x,u,v,y,u_before,v_before,mode\n";
     if (trajectory_ != nullptr) trajectory_->stream() << "phi,x,u,v,y,mode\n";
   }
@@ -54,10 +63,22 @@ class CsvObserver : public SimObserver {
                           << FormatNumber(s.u) << ',' << FormatNumber(s.v) << ','
                           << FormatNumber(s.y) << ',' << SimModeName(s.mode) << '\n';
   }
+  void OnPeriods(std::int64_t periods) override {
+    if (bar_ == nullptr) return;
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
+    bar_->Update(static_cast<double>(periods), periods_, elapsed.count());
+  }
+  // The bar's last line (100 %), however the run ended.
+  void Finish() {
+    if (bar_ != nullptr) OnPeriods(static_cast<std::int64_t>(std::ceil(periods_)));
+  }
 
  private:
   AtomicFile* events_;
   AtomicFile* trajectory_;
+  ProgressBar* bar_;
+  double periods_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // The figures of a span of the run (the record, or the transient) as JSON keys of `j`.
@@ -80,16 +101,9 @@ void AddTallyJson(nlohmann::json& j, const SimTally& t) {
 int Run(SimulateOptions& opt) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
-  const bool has_state =
-      opt.x0_option->count() + opt.u0_option->count() + opt.v0_option->count() > 0;
   SimOptions sim = opt.sim;
   std::optional<Solution> orbit;
-  if (opt.from_orbit) {
-    if (has_state || opt.alpha_option->count() > 0) {
-      throw std::invalid_argument(
-          "--from-orbit takes the state and alpha from the analytic orbit: do not give "
-          "--alpha, --x0, --u0 or --v0 with it");
-    }
+  if (opt.from_orbit) {  // CLI11 refuses --alpha, --x0, --u0, --v0 with it
     orbit = Solve(forcing, opt.params);
     const Orbit& o = orbit->orbit;
     if (!o.ok()) {
@@ -118,22 +132,32 @@ int Run(SimulateOptions& opt) {
           "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)");
     }
   }
-  if (opt.samples_per_period < 1) {
-    throw std::invalid_argument(fmt::format(
-        "--samples-per-period = {} is invalid: expected at least 1", opt.samples_per_period));
-  }
-  if (!opt.trajectory.empty()) sim.sample_step = kTau / opt.samples_per_period;
   sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
+  if (!opt.trajectory.empty()) {
+    const double rows = std::floor(sim.periods * opt.samples_per_period) + 1.0;
+    if (rows > static_cast<double>(kMaxTrajectoryRows)) {
+      throw std::invalid_argument(fmt::format(
+          "--samples-per-period = {} with --periods {:g} is invalid: expected at most {} rows "
+          "of --trajectory (samples per period x periods + 1 = {:.0f})",
+          opt.samples_per_period, sim.periods, kMaxTrajectoryRows, rows));
+    }
+    sim.sample_step = kTau / opt.samples_per_period;
+  }
 
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
   if (!opt.events.empty()) events_file = std::make_unique<AtomicFile>(opt.events, "--events");
   if (!opt.trajectory.empty()) {
     trajectory_file = std::make_unique<AtomicFile>(opt.trajectory, "--trajectory");
   }
-  CsvObserver observer(events_file.get(), trajectory_file.get());
-  const bool observe = events_file || trajectory_file;
+  std::optional<ProgressBar> bar;
+  if (sim.periods >= kProgressPeriods && StderrIsTerminal()) bar.emplace("periods");
+  CsvObserver observer(events_file.get(), trajectory_file.get(), bar ? &*bar : nullptr,
+                       sim.periods);
+  const bool observe = events_file || trajectory_file || bar;
   const SimResult r = Simulate(forcing, opt.params, sim, observe ? &observer : nullptr);
+  observer.Finish();
+  if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
   if (events_file) events_file->Commit();
   if (trajectory_file) trajectory_file->Commit();
   if (r.status == SimStatus::kEventLimit) {
@@ -165,24 +189,25 @@ int Run(SimulateOptions& opt) {
   }
   std::string t = "event-driven simulation\n";
   t += fmt::format("  force            {}\n", ForceFormula(forcing));
-  t += fmt::format("  model            T0 = {:g}, e = {:g}, alpha = {:.10g}\n", opt.params.T0,
-                   opt.params.e, sim.alpha);
-  t += fmt::format("  start            x = {:.10g}, u = {:.10g}, v = {:.10g}{}\n", sim.x0, sim.u0,
-                   sim.v0, opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
-  t += fmt::format("  status           {}   (phase {:.10g} = {:.6g} periods)\n",
-                   SimStatusName(r.status), f.phi, f.phi / kTau);
+  t += fmt::format("  model            T0 = {:g}, e = {:g}, alpha = {}\n", opt.params.T0,
+                   opt.params.e, Num(sim.alpha));
+  t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
+                   Num(sim.v0),
+                   opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
+  t += fmt::format("  status           {}   (phase {} = {} periods)\n", SimStatusName(r.status),
+                   Num(f.phi), Num(f.phi / kTau, 6));
   if (sim.transient > 0.0) {
     t += fmt::format(
-        "  transient        {:g} periods: displacement {:.10g}, mean velocity {:.10g}, {} right "
+        "  transient        {:g} periods: displacement {}, mean velocity {}, {} right "
         "and {} left impacts (not in the figures below)\n",
-        sim.transient, r.transient.displacement, r.transient.v_mean, r.transient.impacts_right,
-        r.transient.impacts_left);
+        sim.transient, Num(r.transient.displacement), Num(r.transient.v_mean),
+        r.transient.impacts_right, r.transient.impacts_left);
   }
-  t += fmt::format("  final state      x = {:.10g}, u = {:.10g}, v = {:.10g}, y = {:.10g} ({})\n",
-                   f.x, f.u, f.v, f.y, SimModeName(f.mode));
-  t += fmt::format("  displacement     {:.10g}   (L)\n", r.displacement);
-  t += fmt::format("  mean velocity    {:.10g}   (omega L)", r.v_mean);
-  if (orbit) t += fmt::format("   analytic: {:.10g}", orbit->orbit.v_mean);
+  t += fmt::format("  final state      x = {}, u = {}, v = {}, y = {} ({})\n", Num(f.x), Num(f.u),
+                   Num(f.v), Num(f.y), SimModeName(f.mode));
+  t += fmt::format("  displacement     {}   (L)\n", Num(r.displacement));
+  t += fmt::format("  mean velocity    {}   (omega L)", Num(r.v_mean));
+  if (orbit) t += fmt::format("   analytic: {}", Num(orbit->orbit.v_mean));
   t += "\n";
   t += fmt::format("  events           {} right impacts, {} left impacts, {} stops, {} break-aways",
                    r.impacts_right, r.impacts_left, r.stops, r.breakaways);
@@ -225,7 +250,11 @@ Command AddSimulateCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start right after the impact of the analytic one-impact orbit for these A, c, "
-                "phi0, T0, e (x = 1, u = -e u, v = v_plus) with its mass ratio alpha");
+                "phi0, T0, e (x = 1, u = -e u, v = v_plus) with its mass ratio alpha")
+      ->excludes(opt->alpha_option)
+      ->excludes(opt->x0_option)
+      ->excludes(opt->u0_option)
+      ->excludes(opt->v0_option);
   cmd->add_option("--periods", opt->sim.periods,
                   "forcing periods (2 pi each) recorded after the transient, 0 < N <= 1e8")
       ->capture_default_str();
@@ -242,18 +271,23 @@ Command AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--events", opt->events,
                   "write every event to this CSV file: phase, kind, x, u, v, y (state right "
                   "after the event), u_before, v_before, mode");
-  cmd->add_option("--trajectory", opt->trajectory,
-                  "write the state phi, x, u, v, y, mode sampled on a grid to this CSV file");
-  cmd->add_option("--samples-per-period", opt->samples_per_period,
-                  "grid of --trajectory: samples per forcing period")
-      ->capture_default_str();
+  CLI::Option* trajectory = cmd->add_option(
+      "--trajectory", opt->trajectory,
+      "write the state phi, x, u, v, y, mode sampled on a grid to this CSV file (at most "
+      "10000000 rows: samples per period x periods + 1)");
+  Bounded(cmd->add_option("--samples-per-period", opt->samples_per_period,
+                          "grid of --trajectory: samples per forcing period"),
+          1, kMaxSamplesPerPeriod)
+      ->capture_default_str()
+      ->needs(trajectory);
   cmd->add_option("--chatter-velocity", opt->sim.chatter_velocity,
                   "an impact slower than this (omega L) with the inner body pushed into the "
                   "wall ends a chattering sequence: the body then rests on the wall")
       ->capture_default_str();
-  cmd->add_option("--max-events-per-period", opt->sim.max_events_per_period,
-                  "work bound: the run stops (status event_limit) after this many events per "
-                  "period")
+  Bounded(cmd->add_option("--max-events-per-period", opt->sim.max_events_per_period,
+                          "work bound: the run stops (status event_limit) after this many "
+                          "events per period"),
+          10, kMaxEventsPerPeriod)
       ->capture_default_str();
   return {cmd, [opt] { return Run(*opt); }};
 }

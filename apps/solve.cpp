@@ -39,10 +39,6 @@ void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
 int Run(const SolveOptions& opt) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
-  if (opt.samples < 2) {
-    throw std::invalid_argument(
-        fmt::format("--samples = {} is invalid: expected at least 2", opt.samples));
-  }
   const Solution s = Solve(forcing, opt.params);
   if (!opt.trajectory.empty()) {
     if (s.orbit.ok()) {
@@ -85,11 +81,14 @@ Command AddSolveCommand(CLI::App& app) {
                 "also compute the stability of the orbit (docs/model.md section 8): adds the keys "
                 "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "
                 "spectral_radius and stable (spectral_radius < 1) to --json");
-  cmd->add_option("--trajectory", opt->trajectory,
-                  "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "
-                  "the impact)");
-  cmd->add_option("--samples", opt->samples, "number of rows of --trajectory")
-      ->capture_default_str();
+  CLI::Option* trajectory =
+      cmd->add_option("--trajectory", opt->trajectory,
+                      "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "
+                      "the impact)");
+  Bounded(cmd->add_option("--samples", opt->samples, "number of rows of --trajectory"), 2,
+          kMaxTrajectoryRows)
+      ->capture_default_str()
+      ->needs(trajectory);
   return {cmd, [opt] { return Run(*opt); }};
 }
 

@@ -4,17 +4,15 @@
 #include "capsubot/sweep.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -24,50 +22,30 @@ struct SweepCliOptions {
   ForcingOptions forcing;
   SweepOptions sweep;
   std::string optimize;
+  CLI::App* cmd = nullptr;
 };
 
-std::string Duration(double seconds) {
-  if (!std::isfinite(seconds) || seconds < 0.0) return "--:--";
-  const long s = std::lround(seconds);
-  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
-                   : fmt::format("{:02}:{:02}", s / 60, s % 60);
-}
-
-std::string Rate(double rate) {
-  if (rate >= 1e6) return fmt::format("{:.2f}M", rate / 1e6);
-  if (rate >= 1e3) return fmt::format("{:.1f}k", rate / 1e3);
-  return fmt::format("{:.3g}", rate);
-}
-
-// A one-line progress bar on stderr, redrawn at most 10 times a second.
-class ProgressBar {
- public:
-  void operator()(const SweepProgress& p) {
-    const bool last = p.points_done >= p.points_total;
-    if (!last && p.seconds - drawn_ < 0.1) return;
-    drawn_ = p.seconds;
-    const double fraction =
-        p.points_total > 0 ? static_cast<double>(p.points_done) / p.points_total : 1.0;
-    const double rate = p.seconds > 0.0 ? (p.points_done - p.points_resumed) / p.seconds : 0.0;
-    const double left = rate > 0.0 ? (p.points_total - p.points_done) / rate : NAN;
-    constexpr int kWidth = 30;
-    const int full = static_cast<int>(fraction * kWidth);
-    fmt::print(stderr, "\r[{}{}] {:5.1f}%  {}/{} points  {} points/s  {} elapsed  {} left ",
-               std::string(full, '#'), std::string(kWidth - full, '.'), 100.0 * fraction,
-               p.points_done, p.points_total, Rate(rate), Duration(p.seconds), Duration(left));
-    if (last) fmt::print(stderr, "\n");
-    std::fflush(stderr);
+// A gridded parameter takes its values from the grid: the same parameter given as an option
+// as well contradicts it (it would be ignored).
+void RejectGriddedOptions(const SweepCliOptions& opt) {
+  for (const GridAxis& axis : opt.sweep.grid.axes) {
+    const std::string name = std::string("--") + SweepParameterName(axis.parameter);
+    const CLI::Option* option = opt.cmd->get_option_no_throw(name);
+    if (option != nullptr && option->count() > 0) {
+      throw std::invalid_argument(fmt::format(
+          "{} = {} conflicts with --grid {}: expected one of them (the grid gives {} at every "
+          "point)",
+          name, option->results().front(), axis.ToString(), SweepParameterName(axis.parameter)));
+    }
   }
-
- private:
-  double drawn_ = -1.0;
-};
+}
 
 int Run(SweepCliOptions& opt) {
   SweepOptions& s = opt.sweep;
   s.grid.axes.clear();
   for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
   s.grid.Validate();
+  RejectGriddedOptions(opt);
   if (!opt.optimize.empty()) {
     if (opt.optimize != "phi0") {
       throw std::invalid_argument(fmt::format(
@@ -102,10 +80,16 @@ int Run(SweepCliOptions& opt) {
                       opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
     }
   }
-  const bool tty = ::isatty(STDERR_FILENO) != 0;
-  ProgressBar bar;
+  s.threads = CapThreads(s.threads, "capsubot sweep");
+  const bool tty = StderrIsTerminal();
+  ProgressBar bar("points");
   SweepProgressCallback progress;
-  if (tty) progress = [&bar](const SweepProgress& p) { bar(p); };
+  if (tty) {
+    progress = [&bar](const SweepProgress& p) {
+      bar.Update(static_cast<double>(p.points_done), static_cast<double>(p.points_total), p.seconds,
+                 static_cast<double>(p.points_resumed));
+    };
+  }
   const SweepSummary summary = RunSweep(s, progress);
   if (tty) {
     fmt::print(stderr,
@@ -159,14 +143,17 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_flag("--stability", opt->sweep.stability,
                 "add the columns spectral_radius (of the impact map, docs/model.md section 8) and "
                 "stable (1 when < 1)");
-  cmd->add_option("--optimize", opt->optimize,
-                  "phi0: at every point, the impact phase phi0 maximising I over valid orbits "
-                  "(problem P1); adds the columns phi0 (the optimum) and status");
+  CLI::Option* optimize =
+      cmd->add_option("--optimize", opt->optimize,
+                      "phi0: at every point, the impact phase phi0 maximising I over valid "
+                      "orbits (problem P1); adds the columns phi0 (the optimum) and status");
   cmd->add_flag("--stable-only", opt->sweep.phase.stable,
-                "with --optimize phi0: maximise over valid and stable orbits only");
+                "with --optimize phi0: maximise over valid and stable orbits only")
+      ->needs(optimize);
   cmd->add_option("--scan-points", opt->sweep.phase.scan_points,
                   "with --optimize phi0: points of the optimiser's initial scan of phi0")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->needs(optimize);
   cmd->add_flag("--resume", opt->sweep.resume,
                 "continue an interrupted sweep from <output>.checkpoint (same options "
                 "required); without it a sweep always starts again");
@@ -175,8 +162,10 @@ Command AddSweepCommand(CLI::App& app) {
                   "0: after every block of rows")
       ->capture_default_str();
   cmd->add_option("--threads", opt->sweep.threads,
-                  "worker threads (default 0: all cores, std::thread::hardware_concurrency)")
+                  "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
+                  "more than 4 per core is lowered to that, with a note")
       ->capture_default_str();
+  opt->cmd = cmd;
   return {cmd, [opt] { return Run(*opt); }};
 }
 

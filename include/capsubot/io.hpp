@@ -1,9 +1,12 @@
 #pragma once
-// Output files that other tools can read: atomic writes and round-trip number formatting.
+// Files and numbers as text: atomic writes that follow symlinks, removal of temporary files
+// on SIGINT/SIGTERM, round-trip number formatting and strict number parsing.
 
+#include <cstdint>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace capsubot {
 
@@ -13,10 +16,36 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Writes to `path` atomically: the text goes to a temporary file beside it, which Commit()
-/// renames to `path`; destroyed without Commit() (an exception, a kill), it leaves no file
-/// under `path`. `what` names the file in messages ("--trajectory", ...). A path that is not
-/// a regular file (/dev/stdout, a pipe) is written directly, and "-" means standard output.
+/// Writing to a file that could be opened failed (a full disk, /dev/full, a closed pipe):
+/// the input was fine, the run could not be completed.
+class WriteError : public IoError {
+ public:
+  using IoError::IoError;
+};
+
+/// Where an output path is written.
+struct OutputTarget {
+  /// The file that receives the text: `path` with symlinks of its last component followed
+  /// (a symlink to a regular file is never replaced: its target is written); "/dev/stdout"
+  /// for "-".
+  std::string path;
+  /// Written in place (standard output, a device, a pipe: no temporary file, no rename).
+  bool in_place = false;
+};
+
+/// Resolves an output path: "-" is standard output; symlinks are followed (at most
+/// kMaxSymlinks, relative targets against the link's folder); an existing file that is not
+/// a regular file is written in place. Throws IoError naming `what` for a symlink loop.
+OutputTarget ResolveOutput(const std::string& path, const std::string& what);
+
+/// Symlinks followed by ResolveOutput before it reports a loop (Linux's own limit).
+inline constexpr int kMaxSymlinks = 40;
+
+/// Writes to `path` atomically: the text goes to a temporary file `<target>.tmp.<pid>` beside
+/// the target (ResolveOutput), which Commit() renames over the target; destroyed without
+/// Commit() (an exception), it leaves no file behind, and SIGINT/SIGTERM remove it too once
+/// InstallTempFileCleanup() ran. `what` names the file in messages ("--trajectory", ...).
+/// Standard output ("-"), devices and pipes are written in place.
 class AtomicFile {
  public:
   AtomicFile(std::string path, std::string what);  ///< throws IoError if it cannot be created
@@ -25,18 +54,50 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ofstream& stream() { return out_; }
-  /// The file being written before Commit() (the path itself when written directly).
+  /// The file being written before Commit() (the target itself when written in place).
   const std::string& temp_path() const { return temp_; }
-  void Commit();  ///< flush, check for write errors, rename; throws IoError
+  /// Flush, check for write errors (WriteError), rename over the target (IoError).
+  void Commit();
 
  private:
-  std::string path_, what_, temp_;
+  std::string path_, what_, target_, temp_;
   std::ofstream out_;
   bool committed_ = false;
-  bool direct_ = false;  // not a regular file: no temporary, no rename
+  bool direct_ = false;  // written in place: no temporary, no rename
+  int slot_ = -1;        // entry in the temporary-file registry (-1: none)
 };
+
+/// Temporary files removed when the process is ended by SIGINT or SIGTERM. At most
+/// kMaxTempFiles at once, paths up to kMaxTempPathBytes - 1 bytes (longer ones are simply
+/// not registered). Register returns the slot (-1 when not registered); Unregister(-1) does
+/// nothing. Both are thread-safe and lock-free.
+inline constexpr int kMaxTempFiles = 64;
+inline constexpr int kMaxTempPathBytes = 4096;
+int RegisterTempFile(const std::string& path);
+void UnregisterTempFile(int slot);
+
+/// Installs handlers for SIGINT and SIGTERM that remove the registered temporary files,
+/// then re-raise the signal with its default action (the exit status is 128 + signal).
+/// For programs (the library never installs it by itself); idempotent.
+void InstallTempFileCleanup();
 
 /// A double with 17 significant digits (round-trips exactly); "" for NaN (a CSV empty cell).
 std::string FormatNumber(double value);
+
+/// Parses a decimal number: optional sign, digits with an optional point, optional exponent
+/// ("-2.5", ".5", "1e-3", "+4E2"). Nothing else: no spaces, no hex, no "inf" or "nan", not
+/// empty. The result is the nearest double; it must be finite, and a nonzero number must not
+/// round to 0 (subnormal numbers are accepted). Throws std::invalid_argument
+/// "<name> = <text> is invalid: expected ..." naming the rule.
+double ParseNumber(std::string_view text, const std::string& name);
+
+/// Parses an integer lo <= n <= hi: decimal digits with an optional sign, or a number in the
+/// syntax of ParseNumber whose value is a whole number ("2e6"). Throws std::invalid_argument
+/// "<name> = <text> is invalid: expected an integer lo <= n <= hi".
+std::int64_t ParseInteger(std::string_view text, const std::string& name, std::int64_t lo,
+                          std::int64_t hi);
+
+/// `text` as shown in a message: quoted when empty or holding spaces or control characters.
+std::string QuoteForMessage(std::string_view text);
 
 }  // namespace capsubot

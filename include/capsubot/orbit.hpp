@@ -16,9 +16,13 @@ enum class OrbitStatus {
   kOk,                    ///< phi1 and alpha exist (the orbit may still be invalid: validity.hpp)
   kNonPositiveMeanForce,  ///< Pi(tau) <= 0: no directed one-impact orbit, no phi1
   kNoMassRatio,           ///< psi(0)*psi(1) >= 0: no alpha in (0, 1) closes the orbit
+  /// A quantity of the orbit is not a finite number in double precision (or alpha rounds to
+  /// 0 or 1): the force or T0 is beyond the range this computation can represent. Rescale
+  /// as in docs/model.md section 6.
+  kNonFinite,
 };
 
-/// Stable identifier of a status ("ok", "non_positive_mean_force", ...).
+/// Stable identifier of a status ("ok", "non_positive_mean_force", "non_finite", ...).
 const char* StatusName(OrbitStatus status);
 
 struct Orbit {

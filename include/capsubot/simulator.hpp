@@ -68,6 +68,10 @@ class SimObserver {
   virtual void OnEvent(const SimEvent& event) { (void)event; }
   /// Called at phases k * sample_step (k = 0, 1, ...) up to the end, in order.
   virtual void OnSample(const SimState& state) { (void)state; }
+  /// Called when the run passes into a new forcing period (for progress reports): `periods`
+  /// whole periods are done. At most once per period; several periods without an event
+  /// may be reported at once.
+  virtual void OnPeriods(std::int64_t periods) { (void)periods; }
 };
 
 struct SimOptions {
@@ -108,9 +112,12 @@ enum class SimStatus {
   kOk,           ///< reached the end phase
   kImpactLimit,  ///< stopped right after max_impacts_right right-wall impacts
   kEventLimit,   ///< the work bound was hit (message says where); the state is where it stopped
+  /// The state stopped being finite numbers (a velocity or position beyond double precision,
+  /// e.g. a huge u0): the run stops there, message says where; the final state is that state.
+  kNonFinite,
 };
 
-/// Stable identifier of a status ("ok", "impact_limit", "event_limit").
+/// Stable identifier of a status ("ok", "impact_limit", "event_limit", "non_finite").
 const char* SimStatusName(SimStatus status);
 
 /// What happened over a span of the run (the record after the transient, or the transient).
@@ -138,7 +145,7 @@ struct SimTally {
 /// apart.
 struct SimResult : SimTally {
   SimStatus status = SimStatus::kNotRun;
-  std::string message;   ///< empty unless status is kEventLimit
+  std::string message;   ///< why the run stopped early (kEventLimit, kNonFinite), else empty
   SimState final_state;  ///< state at the end (after any event at the end phase)
   /// The first SimOptions::transient periods (all zero/NaN when there is none). A run stopped
   /// inside the transient (impact or event limit) has all its figures here and an empty record.

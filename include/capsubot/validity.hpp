@@ -19,6 +19,9 @@ enum class Condition {
   kRightWall,           ///< 4. x <= 1 on (0, tau): no early second impact
   kSeparation,          ///< 5. the inner body leaves the wall after the impact
   kClearance,           ///< 6. d <= x_min and x_max <= 1 - d (checked only when d > 0)
+  /// Every quantity of the orbit and of these checks is a finite number in double precision
+  /// (fails with OrbitStatus::kNonFinite, or extrema or forces that overflow).
+  kFinite,
   kCount,
 };
 

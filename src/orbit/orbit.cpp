@@ -43,6 +43,8 @@ const char* StatusName(OrbitStatus status) {
       return "non_positive_mean_force";
     case OrbitStatus::kNoMassRatio:
       return "no_mass_ratio";
+    case OrbitStatus::kNonFinite:
+      return "non_finite";
   }
   return "unknown";
 }
@@ -56,6 +58,10 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
   const double T0 = o.T0, e = o.e, tau = kTau;
   o.Pi_tau = forcing.mean() * tau;
   o.Phi_tau = forcing.Phi(tau);
+  if (!std::isfinite(o.Pi_tau) || !std::isfinite(o.Phi_tau)) {
+    o.status = OrbitStatus::kNonFinite;
+    return o;
+  }
   if (!(o.Pi_tau > 0.0)) {
     o.status = OrbitStatus::kNonPositiveMeanForce;
     return o;
@@ -67,18 +73,32 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
   const double head = e * tau * o.Pi_tau / (1.0 + e);
   o.psi0 = head - o.Phi_tau;
   o.psi1 = head - T0 * phi1 * phi1 / 2.0 - (tau - phi1) * o.Pi_tau - Phi1;
+  if (!std::isfinite(o.psi0) || !std::isfinite(o.psi1)) {
+    o.status = OrbitStatus::kNonFinite;
+    return o;
+  }
   if (!(o.psi0 * o.psi1 < 0.0)) {
     o.status = OrbitStatus::kNoMassRatio;
     return o;
   }
   const double alpha = o.psi0 / (o.psi0 - o.psi1);
+  const double u = o.Pi_tau / (alpha * (1.0 - alpha) * (1.0 + e));
+  const double v_plus = o.Pi_tau / (1.0 - alpha);
+  const double I = (o.Pi_tau * phi1 - T0 * phi1 * phi1 / 2.0 - Phi1) / (1.0 - alpha);
+  const double x1 = 1.0 - e * u * phi1 + T0 * phi1 * phi1 / (2.0 * (1.0 - alpha)) +
+                    Phi1 / (alpha * (1.0 - alpha));
+  // alpha rounded to 0 or 1 (a tiny psi0 or psi1 next to the other) divides by zero above.
+  if (!(alpha > 0.0 && alpha < 1.0 && std::isfinite(u) && std::isfinite(v_plus) &&
+        std::isfinite(I) && std::isfinite(x1))) {
+    o.status = OrbitStatus::kNonFinite;
+    return o;
+  }
   o.alpha = alpha;
-  o.u = o.Pi_tau / (alpha * (1.0 - alpha) * (1.0 + e));
-  o.v_plus = o.Pi_tau / (1.0 - alpha);
-  o.I = (o.Pi_tau * phi1 - T0 * phi1 * phi1 / 2.0 - Phi1) / (1.0 - alpha);
-  o.v_mean = o.I / tau;
-  o.x1 = 1.0 - e * o.u * phi1 + T0 * phi1 * phi1 / (2.0 * (1.0 - alpha)) +
-         Phi1 / (alpha * (1.0 - alpha));
+  o.u = u;
+  o.v_plus = v_plus;
+  o.I = I;
+  o.v_mean = I / tau;
+  o.x1 = x1;
   o.status = OrbitStatus::kOk;
   return o;
 }

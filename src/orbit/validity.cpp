@@ -54,6 +54,8 @@ const char* ConditionName(Condition condition) {
       return "separation";
     case Condition::kClearance:
       return "clearance";
+    case Condition::kFinite:
+      return "finite";
     case Condition::kCount:
       break;
   }
@@ -73,6 +75,10 @@ Validity CheckValidity(const Orbit& o, double margin) {
   v.checked = true;
   v.max_force = o.forcing.MaxAbs();
   Set(v, Condition::kForceBelowFriction, !WithinForceBound(v.max_force, o.T0));
+  if (o.status == OrbitStatus::kNonFinite || !std::isfinite(v.max_force)) {
+    Set(v, Condition::kFinite, true);
+    return v;
+  }
   if (o.status == OrbitStatus::kNonPositiveMeanForce) {
     Set(v, Condition::kPositiveMeanForce, true);
     return v;
@@ -92,6 +98,9 @@ Validity CheckValidity(const Orbit& o, double margin) {
   if (margin > 0.0) {
     Set(v, Condition::kClearance, !(v.x_min >= margin) || v.x_max > 1.0 - margin);
   }
+  // x_max is NaN when x has no interior maximum; an infinite one overflowed.
+  Set(v, Condition::kFinite,
+      !std::isfinite(v.x_min) || std::isinf(v.x_max) || !std::isfinite(v.rest_force));
   return v;
 }
 

@@ -366,6 +366,8 @@ class Simulation {
   // Span, displacement and mean velocity of the span that ends at the origin.
   void CloseTally(SimTally& tally) const;
   bool Fail(const char* what);
+  // Ends the run with kNonFinite when the stored state holds inf or NaN; true if it did.
+  bool StopIfNotFinite();
 
   const Forcing& forcing_;
   const Params& params_;
@@ -408,10 +410,12 @@ SimState Simulation::StateAt(double s) const {
 
 void Simulation::Rebase(double s, const SimState& st) {
   r_ += s;
+  const std::int64_t turns_before = turns_;
   while (r_ >= kTau) {
     r_ -= kTau;
     ++turns_;
   }
+  if (observer_ != nullptr && turns_ != turns_before) observer_->OnPeriods(turns_);
   sg_.f = forcing_.WithPhase(forcing_.phi0() + r_);
   sg_.x0 = st.x;
   sg_.u0 = st.u;
@@ -681,6 +685,19 @@ bool Simulation::Fail(const char* what) {
   return true;
 }
 
+bool Simulation::StopIfNotFinite() {
+  if (std::isfinite(sg_.x0) && std::isfinite(sg_.u0) && std::isfinite(sg_.v0) &&
+      std::isfinite(sg_.y0)) {
+    return false;
+  }
+  res_.status = SimStatus::kNonFinite;
+  res_.message = fmt::format(
+      "the state is not finite (x = {}, u = {}, v = {}, y = {}) at phase {:.17g} after {} "
+      "events: velocities or positions beyond double precision",
+      sg_.x0, sg_.u0, sg_.v0, sg_.y0, Phase(), res_.events);
+  return true;
+}
+
 SimResult Simulation::Run() {
   sg_.alpha = opt_.alpha;
   sg_.T0 = params_.T0;
@@ -701,6 +718,7 @@ SimResult Simulation::Run() {
   res_.status = SimStatus::kOk;
   Settle(Slide::kNone);
   for (;;) {
+    if (StopIfNotFinite()) break;
     const std::int64_t impacts_right = res_.impacts_right + res_.transient.impacts_right;
     if (opt_.max_impacts_right > 0 && impacts_right >= opt_.max_impacts_right) {
       res_.status = SimStatus::kImpactLimit;
@@ -730,7 +748,7 @@ SimResult Simulation::Run() {
     if (!in_transient_) break;
     EndTransient();
   }
-  EmitSamplesBefore(0.0, true);
+  if (res_.status != SimStatus::kNonFinite && !StopIfNotFinite()) EmitSamplesBefore(0.0, true);
   res_.final_state = StateAt(0.0);
   if (in_transient_) {  // stopped inside the transient: its figures, and an empty record
     EndTransient();
@@ -787,6 +805,8 @@ const char* SimStatusName(SimStatus status) {
       return "impact_limit";
     case SimStatus::kEventLimit:
       return "event_limit";
+    case SimStatus::kNonFinite:
+      return "non_finite";
   }
   return "unknown";
 }

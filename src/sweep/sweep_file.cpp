@@ -50,19 +50,22 @@ CheckpointRecord ReadCheckpoint(const std::string& path) {
 }  // namespace
 
 void SweepFile::Fail(const std::string& what, const std::string& path) const {
-  throw IoError(
-      fmt::format("--output {}: cannot {} {}: {}", output_, what, path, std::strerror(errno)));
+  const std::string message =
+      fmt::format("--output {}: cannot {} {}: {}", output_, what, path, std::strerror(errno));
+  // A file that was opened and then cannot take the rows (a full disk) is no bad input.
+  if (what == "write" || what == "sync") throw WriteError(message);
+  throw IoError(message);
 }
 
 SweepFile::SweepFile(const std::string& output, const std::string& description,
                      const std::string& header, bool resume, double checkpoint_seconds)
     : output_(output),
-      partial_(PartialPath(output)),
-      checkpoint_(CheckpointPath(output)),
+      target_(ResolveOutput(output, "--output")),
+      partial_(PartialPath(target_.path)),
+      checkpoint_(CheckpointPath(target_.path)),
       description_(description),
       checkpoint_seconds_(checkpoint_seconds) {
-  struct stat out {};
-  direct_ = output_ == "-" || (::stat(output_.c_str(), &out) == 0 && !S_ISREG(out.st_mode));
+  direct_ = target_.in_place;
   if (direct_) {
     if (resume) {
       throw std::invalid_argument(fmt::format(
@@ -174,7 +177,7 @@ void SweepFile::Commit() {
   if (::fsync(fd_) != 0) Fail("sync", partial_);
   // Checkpoint first: killed in between, a partial file without checkpoint starts over.
   std::remove(checkpoint_.c_str());
-  if (std::rename(partial_.c_str(), output_.c_str()) != 0) Fail("rename", partial_);
+  if (std::rename(partial_.c_str(), target_.path.c_str()) != 0) Fail("rename", partial_);
   ::close(fd_);
   fd_ = -1;
 }

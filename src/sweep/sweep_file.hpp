@@ -2,12 +2,15 @@
 // The file a sweep is written to: `<output>.partial`, locked while in use, with a checkpoint
 // `<output>.checkpoint` recording how many grid points (and bytes) are complete, renamed to
 // `<output>` when the sweep is done. An output that is "-" (stdout) or not a regular file
-// (/dev/stdout, a pipe) is written in place, without partial file or checkpoint (as AtomicFile).
+// (/dev/stdout, a pipe) is written in place, without partial file or checkpoint; a symlink
+// is followed and its target replaced (as AtomicFile: capsubot::ResolveOutput).
 
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include "capsubot/io.hpp"
 
 namespace capsubot::detail {
 
@@ -40,7 +43,9 @@ class SweepFile {
  private:
   [[noreturn]] void Fail(const std::string& what, const std::string& path) const;
 
-  std::string output_, partial_, checkpoint_, description_;
+  std::string output_;
+  OutputTarget target_;  // the file renamed over at the end (symlinks followed)
+  std::string partial_, checkpoint_, description_;
   int fd_ = -1;
   bool direct_ = false;      // written in place: no partial file, no checkpoint
   std::int64_t points_ = 0;  // complete points written

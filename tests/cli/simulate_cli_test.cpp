@@ -159,8 +159,7 @@ TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
        "option --alpha is missing: give the mass ratio (or --from-orbit)"},
       {"simulate " + kOrbit + " --alpha 0.3 --x0 1",
        "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)"},
-      {"simulate " + kOrbit + " --from-orbit --alpha 0.3",
-       "--from-orbit takes the state and alpha from the analytic orbit"},
+      {"simulate " + kOrbit + " --from-orbit --alpha 0.3", "--alpha excludes --from-orbit"},
       {"simulate --A 0.05 --c 0 --phi0 0 --from-orbit",
        "--from-orbit: no one-impact orbit exists for this force, T0 and e "
        "(non_positive_mean_force)"},
@@ -173,7 +172,7 @@ TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
       {"simulate " + kOrbit + " --alpha 0.3 --x0 2 --u0 0 --v0 0",
        "initial position x0 = 2 is invalid: expected 0 <= x0 <= 1"},
       {"simulate " + kOrbit + " --from-orbit --trajectory /tmp/x.csv --samples-per-period 0",
-       "--samples-per-period = 0 is invalid: expected at least 1"},
+       "--samples-per-period = 0 is invalid: expected an integer 1 <= n <= 1000000"},
       {"simulate " + kOrbit + " --from-orbit --events /nonexistent-dir/e.csv",
        "--events /nonexistent-dir/e.csv cannot be written"},
       {"simulate --A 0.05 --c 0.02 --phi0 0 --e 1.5 --from-orbit",
@@ -247,7 +246,9 @@ TEST(OrbitsCli, SearchStoppedByTheWorkBoundSaysOrbitsMayBeMissing) {
       << note.out;
   const auto bad = RunCli("orbits " + force + " --alpha 0.199 --max-evaluations 0 2>&1");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.out.find("max_evaluations = 0 is invalid: expected >= 1"), std::string::npos)
+  EXPECT_NE(
+      bad.out.find("--max-evaluations = 0 is invalid: expected an integer 1 <= n <= 1000000000"),
+      std::string::npos)
       << bad.out;
 }
 

@@ -135,23 +135,23 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --e 1.3",
                  "capsubot solve: error: restitution e = 1.3 is invalid: expected 0 <= e <= 1"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --e nan",
-                 "capsubot solve: error: restitution e = nan is invalid: expected 0 <= e <= 1"},
+                 "capsubot solve: error: --e = nan is invalid: expected a finite number"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --T0 0",
                  "capsubot solve: error: friction bound T0 = 0 is invalid: expected a finite "
                  "T0 > 0"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --T0 inf",
-                 "capsubot solve: error: friction bound T0 = inf is invalid: expected a finite "
-                 "T0 > 0"},
+                 "capsubot solve: error: --T0 = inf is invalid: expected a finite number"},
         BadInput{"solve --A -0.5 --c 0.5 --phi0 1",
                  "capsubot solve: error: A = -0.5 is invalid: expected A >= 0"},
         BadInput{"solve --A 0.5 --c nan --phi0 1",
-                 "capsubot solve: error: c = nan is invalid: expected a finite number"},
+                 "capsubot solve: error: --c = nan is invalid: expected a finite number"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 inf",
-                 "capsubot solve: error: phi0 = inf is invalid: expected a finite number"},
+                 "capsubot solve: error: --phi0 = inf is invalid: expected a finite number"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --margin 0.5",
                  "capsubot solve: error: margin d = 0.5 is invalid: expected 0 <= d < 0.5"},
         BadInput{"solve --A abc --c 0.5 --phi0 1",
-                 "capsubot solve: error: --A = abc is invalid: expected a number"},
+                 "capsubot solve: error: --A = abc is invalid: expected a decimal number such as "
+                 "0.5, -2 or 1e-3 (no spaces, no hex)"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --frobnicate",
                  "capsubot solve: error: The following argument was not expected: --frobnicate "
                  "(see capsubot solve --help)"},
@@ -159,7 +159,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "capsubot solve: error: option --phi0 is missing: give the impact phase phi0 "
                  "[rad]"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --samples 1",
-                 "capsubot solve: error: --samples = 1 is invalid: expected at least 2"},
+                 "capsubot solve: error: --samples = 1 is invalid: expected an integer 2 <= n <= "
+                 "10000000"},
         BadInput{"solve --c 0.5 --sin 1,,2",
                  "capsubot solve: error: --sin = 1,,2 is invalid: expected comma-separated "
                  "numbers (element 2 is '')"},

@@ -1,4 +1,5 @@
-// Output files: atomic writes leave either the whole file or nothing; numbers round-trip.
+// Output files: atomic writes leave either the whole file or nothing, follow symlinks and
+// report failed writes; temporary files are registered for removal on signals.
 
 #include "capsubot/io.hpp"
 
@@ -9,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "test_utils.hpp"
 
@@ -66,6 +69,87 @@ TEST(AtomicFile, SpecialFilesAreWrittenInPlace) {
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
   AtomicFile out("-", "--events");  // standard output
   EXPECT_EQ(out.temp_path(), "/dev/stdout");
+}
+
+TEST(AtomicFile, SymlinkIsFollowedAndItsTargetReplaced) {
+  // link -> target (a regular file): the new text lands in the target, the link stays a link
+  // and no temporary is left in the folder.
+  const fs::path dir = TempPath("capsubot_io_symlink");
+  fs::create_directories(dir);
+  std::ofstream(dir / "target.csv") << "old\n";
+  fs::create_symlink("target.csv", dir / "link.csv");
+  fs::create_symlink("link.csv", dir / "chain.csv");  // two links deep
+  int checked = 0;
+  for (const char* name : {"link.csv", "chain.csv"}) {
+    AtomicFile f((dir / name).string(), "--out");
+    EXPECT_EQ(fs::path(f.temp_path()).parent_path(), fs::canonical(dir));
+    f.stream() << name << "\n";
+    f.Commit();
+    EXPECT_TRUE(fs::is_symlink(dir / "link.csv"));
+    EXPECT_TRUE(fs::is_symlink(dir / "chain.csv"));
+    std::ifstream in(dir / "target.csv");
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, name);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 3);
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, DanglingSymlinkCreatesItsTarget) {
+  const fs::path dir = TempPath("capsubot_io_dangling");
+  fs::create_directories(dir);
+  fs::create_symlink("new.csv", dir / "link.csv");
+  AtomicFile f((dir / "link.csv").string(), "--out");
+  f.stream() << "x\n";
+  f.Commit();
+  EXPECT_TRUE(fs::is_symlink(dir / "link.csv"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "new.csv"));
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, SymlinkLoopIsAnErrorNamingTheFile) {
+  const fs::path dir = TempPath("capsubot_io_loop");
+  fs::create_directories(dir);
+  fs::create_symlink("b", dir / "a");
+  fs::create_symlink("a", dir / "b");
+  const std::string path = (dir / "a").string();
+  try {
+    AtomicFile f(path, "--out");
+    ADD_FAILURE() << "no exception";
+  } catch (const IoError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--out " + path + " cannot be written: more than 40 symbolic links");
+  }
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, WriteFailureIsAWriteError) {
+  AtomicFile f("/dev/full", "--trajectory");  // a device: written in place, every write fails
+  f.stream() << std::string(1 << 16, 'x');
+  try {
+    f.Commit();
+    ADD_FAILURE() << "no exception";
+  } catch (const WriteError& e) {
+    EXPECT_STREQ(e.what(), "--trajectory /dev/full cannot be written: No space left on device");
+  }
+}
+
+TEST(TempFileRegistry, SlotsAreReusedAndBounded) {
+  std::vector<int> slots;
+  for (int i = 0; i < kMaxTempFiles; ++i)
+    slots.push_back(RegisterTempFile("/tmp/x" + std::to_string(i)));
+  EXPECT_EQ(RegisterTempFile("/tmp/one-too-many"), -1);  // full: not registered, no crash
+  EXPECT_EQ(RegisterTempFile(std::string(kMaxTempPathBytes, 'p')), -1);  // too long
+  int distinct = 0;
+  for (int i = 0; i < kMaxTempFiles; ++i) distinct += slots[i] == i ? 1 : 0;
+  EXPECT_EQ(distinct, kMaxTempFiles);
+  for (int slot : slots) UnregisterTempFile(slot);
+  EXPECT_EQ(RegisterTempFile("/tmp/again"), 0);  // freed slots are used again
+  UnregisterTempFile(0);
+  UnregisterTempFile(-1);  // "not registered": nothing to do
 }
 
 TEST(FormatNumber, RoundTripsEveryDouble) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "capsubot/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -173,6 +174,41 @@ TEST(Orbit, NoMassRatioWhenPsiKeepsItsSign) {
   EXPECT_EQ(o.status, OrbitStatus::kNoMassRatio);
   EXPECT_TRUE(std::isnan(o.alpha));
   EXPECT_FALSE(std::isnan(o.phi1));  // phi1 does not depend on alpha
+}
+
+// Beyond double precision the orbit's formulas overflow or round alpha to 0 or 1: the status
+// says so, nothing non-finite is reported as an orbit, and the orbit is never valid.
+TEST(Orbit, NonFiniteQuantitiesAreAStatusNeverAnOrbit) {
+  struct Case {
+    const char* what;
+    Forcing forcing;
+    Params params;
+  };
+  const Case cases[] = {
+      // psi1 is ~1e-19 next to psi0 ~ 1: alpha = psi0/(psi0 - psi1) rounds to 1, 1 - alpha = 0.
+      {"tiny mean force", Forcing::Harmonic(0.5, 1e-19, -2.9), Params{}},
+      // T0 phi1^2/2 overflows psi1 to -inf: alpha rounds to 0.
+      {"huge T0", Forcing::Harmonic(0.5, 0.5, -2.9), Params{1e308, 1.0, 0.0}},
+      // Pi(tau) = c tau overflows.
+      {"huge mean force", Forcing::Harmonic(0.0, 1e308, 0.0), Params{}},
+  };
+  int checked = 0;
+  for (const Case& c : cases) {
+    const Solution s = Solve(c.forcing, c.params);
+    EXPECT_EQ(s.orbit.status, OrbitStatus::kNonFinite) << c.what;
+    EXPECT_STREQ(StatusName(s.orbit.status), "non_finite");
+    EXPECT_TRUE(std::isnan(s.orbit.alpha) && std::isnan(s.orbit.u) && std::isnan(s.orbit.I))
+        << c.what;
+    EXPECT_FALSE(s.validity.valid()) << c.what;
+    EXPECT_TRUE(s.validity.violated(Condition::kFinite)) << c.what;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  // A small but representable case keeps its orbit: alpha = 1 - 6.4e-15 is still below 1.
+  const Orbit small = ComputeOrbit(Forcing::Harmonic(0.5, 1e-15, -2.9), Params{});
+  ASSERT_TRUE(small.ok());
+  EXPECT_LT(small.alpha, 1.0);
+  EXPECT_TRUE(std::isfinite(small.u));
 }
 
 TEST(Orbit, StopPhaseIsTheFirstOfSeveralRootsOfG) {

@@ -169,9 +169,15 @@ TEST(Validity, ClearanceMarginIsCheckedOnlyWhenRequired) {
 
 TEST(Validity, ConditionNamesAreStable) {
   // These identifiers are the JSON and CSV interface.
-  const char* expected[] = {
-      "positive_mean_force", "mass_ratio", "force_below_friction", "stick",
-      "left_wall",           "right_wall", "separation",           "clearance"};
+  const char* expected[] = {"positive_mean_force",
+                            "mass_ratio",
+                            "force_below_friction",
+                            "stick",
+                            "left_wall",
+                            "right_wall",
+                            "separation",
+                            "clearance",
+                            "finite"};
   for (int i = 0; i < static_cast<int>(Condition::kCount); ++i) {
     EXPECT_STREQ(ConditionName(static_cast<Condition>(i)), expected[i]);
   }

@@ -613,6 +613,21 @@ TEST(Simulator, SimulateValidatesParams) {
   EXPECT_THROW(Simulate(Forcing::Harmonic(0.05, 0.02, 0.0), p, ok), std::invalid_argument);
 }
 
+TEST(Simulator, NonFiniteStateEndsTheRunWithItsStatus) {
+  // x = x0 + u0 s overflows at once for u0 near the largest double: the run must not report
+  // ok (or any count of events) with inf in the state.
+  int checked = 0;
+  for (double u0 : {1.7e308, -1e308}) {
+    const SimResult r =
+        Simulate(Forcing::Harmonic(0.5, 0.5, 0.0), Params{}, StartAt(0.5, 0.5, u0, 0.0, 10.0));
+    EXPECT_EQ(r.status, SimStatus::kNonFinite) << u0;
+    EXPECT_STREQ(SimStatusName(r.status), "non_finite");
+    EXPECT_NE(r.message.find("the state is not finite"), std::string::npos) << r.message;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 TEST(Simulator, NamesAreStable) {
   EXPECT_STREQ(EventKindName(EventKind::kImpactRight), "impact_right");
   EXPECT_STREQ(EventKindName(EventKind::kImpactLeft), "impact_left");

@@ -1,0 +1,399 @@
+// `capsubot` under hostile input and faults, end to end: every row of the table runs the built
+// program in a fresh folder of its own and checks the exit status, the one line on stderr
+// (a substring of it), what stdout holds, and that the folder holds exactly the expected files
+// afterwards (no temporary or half-written file). Signals and progress need a process of their
+// own and have their own tests below.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "test_utils.hpp"
+
+extern char** environ;
+
+namespace capsubot {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSolve = "solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5";
+const std::string kSim = "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 --v0 0";
+const std::string kSweep = "sweep --grid A=0:1:3 --c 0.5 --phi0 0";
+const std::string kOrbits = "orbits --A 0.5 --c 0.5 --alpha 0.5";
+
+std::string ReadFile(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::set<std::string> Listing(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
+// A folder of its own for one run, removed at the end.
+struct Sandbox {
+  fs::path root, work;
+  explicit Sandbox(const std::string& name) {
+    root = testing::TempPath("capsubot_hostile_" + name);
+    fs::remove_all(root);
+    work = root / "work";
+    fs::create_directories(work);
+  }
+  ~Sandbox() { fs::remove_all(root); }
+};
+
+struct Case {
+  const char* name;
+  std::string args;             // the command line after `capsubot`, run inside the folder
+  int status;                   // expected exit status
+  std::string message;          // expected in the single line on stderr ("" : stderr empty)
+  std::set<std::string> files;  // the folder's files afterwards
+  std::string setup = "";       // shell commands run in the folder first
+  std::string stdout_to = "";   // redirect of stdout ("": captured and checked)
+  std::string stdout_has = "";  // expected in stdout
+  std::function<void(const fs::path&)> verify = nullptr;  // more checks on the folder
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+std::string SymlinkSetup() {
+  return "printf 'old\\n' > target.csv && ln -s target.csv link.csv && ln -s link.csv chain.csv";
+}
+
+// The symlinks stay links; their target holds the new output.
+void LinksKeptTargetWritten(const fs::path& dir, const std::string& first_line) {
+  EXPECT_TRUE(fs::is_symlink(dir / "link.csv"));
+  EXPECT_TRUE(fs::is_symlink(dir / "chain.csv"));
+  EXPECT_EQ(ReadFile(dir / "target.csv").rfind(first_line, 0), 0U) << ReadFile(dir / "target.csv");
+}
+
+std::vector<Case> Cases() {
+  const std::set<std::string> none;
+  const std::set<std::string> links = {"target.csv", "link.csv", "chain.csv"};
+  const std::string nums = "expected a decimal number such as 0.5, -2 or 1e-3 (no spaces, no hex)";
+  return {
+      // Output through symlinks: the target is written, the link kept.
+      {"SolveTrajectoryThroughSymlink", kSolve + " --samples 3 --trajectory link.csv", 0, "", links,
+       SymlinkSetup(), "/dev/null", "",
+       [](const fs::path& d) { LinksKeptTargetWritten(d, "phi,x,dx,v\n"); }},
+      {"SimulateEventsThroughSymlinkChain", kSim + " --events chain.csv", 0, "", links,
+       SymlinkSetup(), "/dev/null", "",
+       [](const fs::path& d) { LinksKeptTargetWritten(d, "phase,kind,"); }},
+      {"SweepOutputThroughSymlink", kSweep + " -o link.csv", 0, "", links, SymlinkSetup(), "", "",
+       [](const fs::path& d) { LinksKeptTargetWritten(d, "A,phi1,"); }},
+      {"OptimizeOutputThroughSymlink", "optimize --problem phase --A 0.5 --c 0.5 --output link.csv",
+       0, "", links, SymlinkSetup(), "/dev/null", "",
+       [](const fs::path& d) { LinksKeptTargetWritten(d, "{"); }},
+      {"DanglingSymlinkCreatesTarget",
+       kSolve + " --samples 3 --trajectory link.csv",
+       0,
+       "",
+       {"link.csv", "new.csv"},
+       "ln -s new.csv link.csv",
+       "/dev/null",
+       "",
+       [](const fs::path& d) { EXPECT_TRUE(fs::is_symlink(d / "link.csv")); }},
+      {"SymlinkLoopIsAnError",
+       kSolve + " --trajectory a",
+       2,
+       "more than 40 symbolic links",
+       {"a", "b"},
+       "ln -s b a && ln -s a b"},
+      // Non-finite orbits are a status, never valid.
+      {"TinyMeanForceIsNonFinite", "solve --A 0.5 --c 1e-19 --phi0 -2.9 --json", 0, "", none, "",
+       "", "\"status\":\"non_finite\",\"u\":null,\"v_mean\":null,\"v_plus\":null,\"valid\":false"},
+      {"HugeT0IsNonFinite", "solve --A 0.5 --c 0.5 --phi0 -2.9 --T0 1e308 --json", 0, "", none, "", "",
+       "\"status\":\"non_finite\""},
+      {"NonFiniteTableSaysNotValid", "solve --A 0.5 --c 1e-19 --phi0 -2.9", 0, "", none, "", "",
+       "valid            no: violated finite"},
+      // Size options: a bound, checked before any work, the range in the message.
+      {"SolveSamplesBound", kSolve + " --samples 2e9 --trajectory t.csv", 2,
+       "--samples = 2e9 is invalid: expected an integer 2 <= n <= 10000000", none},
+      {"SimulateSamplesPerPeriodBound", kSim + " --samples-per-period 2e9 --trajectory t.csv", 2,
+       "--samples-per-period = 2e9 is invalid: expected an integer 1 <= n <= 1000000", none},
+      {"SimulateTrajectoryRowsBound",
+       kSim + " --periods 1e6 --samples-per-period 100 --trajectory t.csv", 2,
+       "expected at most 10000000 rows of --trajectory", none},
+      {"SimulateEventBound", kSim + " --max-events-per-period 2e9", 2,
+       "--max-events-per-period = 2e9 is invalid: expected an integer 10 <= n <= 1000000000", none},
+      {"OrbitsEvaluationBound", kOrbits + " --max-evaluations 0", 2,
+       "--max-evaluations = 0 is invalid: expected an integer 1 <= n <= 1000000000", none},
+      // A state beyond double precision ends the simulation with an error, no file.
+      {"SimulateHugeU0",
+       "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 1.7e308 "
+       "--v0 0 --trajectory t.csv --events e.csv",
+       1, "the state is not finite", none},
+      // Write errors on standard output and in files: exit 1.
+      {"SolveToDevFull", kSolve, 1,
+       "capsubot solve: error: standard output cannot be written: "
+       "No space left on device",
+       none, "", "/dev/full"},
+      {"SolveJsonToDevFull", kSolve + " --json", 1, "standard output cannot be written", none, "",
+       "/dev/full"},
+      {"SimulateToDevFull", kSim, 1, "standard output cannot be written", none, "", "/dev/full"},
+      {"OrbitsToDevFull", kOrbits, 1, "standard output cannot be written", none, "", "/dev/full"},
+      {"OptimizeToDevFull", "optimize --problem phase --A 0.5 --c 0.5", 1,
+       "standard output cannot be written", none, "", "/dev/full"},
+      {"SweepStdoutToDevFull", kSweep + " -o -", 1, "No space left on device", none, "",
+       "/dev/full"},
+      {"HelpToDevFull", "solve --help", 1, "standard output cannot be written", none, "",
+       "/dev/full"},
+      {"TrajectoryToDevFull", kSolve + " --trajectory /dev/full", 1,
+       "--trajectory /dev/full cannot be written: No space left on device", none, "", "/dev/null"},
+      // Empty strings are no number.
+      {"EmptyA", "solve --A '' --c 0.5 --phi0 0", 2,
+       "capsubot solve: error: --A = '' is invalid: expected a number, not an empty string", none},
+      {"EmptyT0", kSim + " --T0 ''", 2, "--T0 = '' is invalid", none},
+      {"EmptyInteger", kSolve + " --samples '' --trajectory t.csv", 2,
+       "--samples = '' is invalid: expected an integer 2 <= n <= 10000000", none},
+      {"EmptyGridOption", kSweep + " -o out.csv --T0 ''", 2, "--T0 = '' is invalid", none},
+      {"EmptyOptimizeA", "optimize --problem phase --A '' --c 0.5", 2, "--A = '' is invalid", none},
+      {"EmptySinElement", "solve --c 0.5 --sin 0.1,,0.2 --phi0 0", 2,
+       "--sin = 0.1,,0.2 is invalid: expected comma-separated numbers (element 2 is '')", none},
+      // Hex, spaces and other malformed numbers: rejected the same way everywhere.
+      {"HexA", "solve --A 0x1p-2 --c 0.5 --phi0 0", 2, "--A = 0x1p-2 is invalid: " + nums, none},
+      {"LeadingSpace", "solve --A ' 1' --c 0.5 --phi0 0", 2, "--A = ' 1' is invalid: " + nums,
+       none},
+      {"TrailingSpace", "solve --A '1 ' --c 0.5 --phi0 0", 2, "--A = '1 ' is invalid: " + nums,
+       none},
+      {"HexInteger", kSolve + " --samples 0x10 --trajectory t.csv", 2,
+       "--samples = 0x10 is invalid: expected an integer", none},
+      {"SpaceInInteger", kOrbits + " --max-evaluations ' 5'", 2,
+       "--max-evaluations = ' 5' is invalid", none},
+      {"MalformedExponent", "solve --A 1e --c 0.5 --phi0 0", 2, "--A = 1e is invalid", none},
+      {"CommaDecimal", kSim + " --periods 1,5", 2, "--periods = 1,5 is invalid", none},
+      {"HexInSinList", "solve --c 0.5 --sin 0x1 --phi0 0", 2,
+       "--sin = 0x1 is invalid: expected comma-separated numbers", none},
+      // NaN, infinity and numbers beyond double.
+      {"NanA", "solve --A nan --c 0.5 --phi0 0", 2,
+       "--A = nan is invalid: expected a finite "
+       "number",
+       none},
+      {"InfC", "solve --A 0.5 --c inf --phi0 0", 2, "--c = inf is invalid: expected a finite",
+       none},
+      {"MinusInfT0", kSim + " --T0 -inf", 2, "--T0 = -inf is invalid", none},
+      {"OverflowA", "solve --A 1e999 --c 0.5 --phi0 0", 2,
+       "--A = 1e999 is invalid: expected a number within the range of double", none},
+      {"UnderflowC", "solve --A 0.5 --c 1e-400 --phi0 0", 2,
+       "--c = 1e-400 is invalid: expected a number within the range of double", none},
+      // Integers out of range: the range in the message, never clamped.
+      {"HugeInteger", kSolve + " --samples 99999999999999999999 --trajectory t.csv", 2,
+       "expected an integer 2 <= n <= 10000000", none},
+      {"HugeInt64", kOrbits + " --max-evaluations 99999999999999999999", 2,
+       "expected an integer 1 <= n <= 1000000000", none},
+      {"IntOverflow", kSweep + " -o out.csv --threads 3000000000", 2,
+       "--threads = 3000000000 is invalid: expected an integer -2147483648 <= n <= 2147483647",
+       none},
+      {"FractionalInteger", kSolve + " --samples 2.5 --trajectory t.csv", 2,
+       "--samples = 2.5 is invalid: expected an integer", none},
+      // Subnormal numbers are numbers.
+      {"SubnormalAccepted", "solve --A 1e-310 --c 0.5 --phi0 0 --json", 0, "", none, "", "",
+       "\"A\":1e-310"},
+      {"SmallestDoubleAccepted", "solve --A 4.9406564584124654e-324 --c 0.5 --phi0 0 --json", 0, "",
+       none, "", "", "\"A\":5e-324"},
+      // Unknown options and unwritable paths.
+      {"UnknownOption", kSolve + " --bogus 1", 2, "The following arguments were not expected",
+       none},
+      {"UnknownCommand", "frobnicate", 2, "capsubot: error:", none},
+      {"MissingFolder", kSolve + " --trajectory nothere/t.csv", 2,
+       "--trajectory nothere/t.csv cannot be written: No such file or directory", none},
+      {"FolderAsOutput", kSolve + " --trajectory .", 2, "--trajectory . cannot be written", none},
+      {"SweepMissingFolder", kSweep + " -o nothere/out.csv", 2, "nothere/out.csv", none},
+      // Threads are capped at 4 per core, with a note.
+      {"ThreadsCapped",
+       kSweep + " -o out.csv --threads 1024",
+       0,
+       "--threads 1024 lowered to",
+       {"out.csv"}},
+      // Conflicting options name both.
+      {"GridAndOption", "sweep --grid A=0:1:5 --A 5 --c 0.5 --phi0 0 -o out.csv", 2,
+       "--A = 5 conflicts with --grid A=0:1:5", none},
+      {"GridT0AndT0", kSweep + " --grid T0=0.5:1:2 --T0 1 -o out.csv", 2,
+       "--T0 = 1 conflicts with --grid T0=0.5:1:2", none},
+      {"AWithSin", "solve --A 0.5 --sin 0.1 --c 0.5 --phi0 0", 2, "--A excludes --sin", none},
+      {"FromOrbitWithX0", "simulate --A 0.5 --c 0.5 --phi0 -2.9 --from-orbit --x0 0.5", 2,
+       "--x0 excludes --from-orbit", none},
+      {"SamplesWithoutTrajectory", kSolve + " --samples 5", 2, "--samples requires --trajectory",
+       none},
+      {"SamplesPerPeriodWithoutTrajectory", kSim + " --samples-per-period 5", 2,
+       "--samples-per-period requires --trajectory", none},
+      {"StableOnlyWithoutOptimize", kSweep + " -o out.csv --stable-only", 2,
+       "--stable-only requires --optimize", none},
+      {"OptimizeAWithMainJob", "optimize --A 0.5", 2,
+       "--A conflicts with the main job (no --problem): expected --A only with --problem phase",
+       none},
+      {"OptimizeHarmonicsWithForcing", "optimize --problem forcing --harmonics 3", 2,
+       "--harmonics conflicts with --problem forcing: expected --harmonics only with --problem "
+       "fourier",
+       none},
+      // One convention for a missing value in tables: "-".
+      {"MissingValuesAreDashes", "solve --A 0.2 --c 0.03 --phi0 0", 0, "", none, "", "",
+       "alpha  = -   (m2/(m1+m2))", nullptr},
+  };
+}
+
+constexpr int kCaseCount = 64;
+
+class HostileCli : public ::testing::TestWithParam<Case> {};
+
+TEST_P(HostileCli, ExitStatusMessageAndNoStrayFile) {
+  const Case& c = GetParam();
+  Sandbox box(c.name);
+  const fs::path out = box.root / "stdout.txt", err = box.root / "stderr.txt";
+  std::string command = "cd '" + box.work.string() + "' && ";
+  if (!c.setup.empty()) command += "(" + c.setup + ") && ";
+  command += std::string(CAPSUBOT_CLI) + " " + c.args + " >" +
+             (c.stdout_to.empty() ? "'" + out.string() + "'" : c.stdout_to) + " 2>'" +
+             err.string() + "'";
+  const std::set<std::string> before = Listing(box.work);  // empty: setup runs in `command`
+  ASSERT_TRUE(before.empty());
+  const int raw = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(raw)) << command;
+  const std::string stderr_text = ReadFile(err);
+  EXPECT_EQ(WEXITSTATUS(raw), c.status) << command << "\n" << stderr_text;
+  if (c.message.empty()) {
+    EXPECT_EQ(stderr_text, "") << command;
+  } else {
+    EXPECT_NE(stderr_text.find(c.message), std::string::npos) << command << "\n" << stderr_text;
+    EXPECT_EQ(std::count(stderr_text.begin(), stderr_text.end(), '\n'), 1) << stderr_text;
+  }
+  if (!c.stdout_has.empty()) {
+    EXPECT_NE(ReadFile(out).find(c.stdout_has), std::string::npos) << ReadFile(out);
+  }
+  EXPECT_EQ(ReadFile(out).find("nan"), std::string::npos) << ReadFile(out);
+  EXPECT_EQ(Listing(box.work), c.files) << command;
+  if (c.verify) c.verify(box.work);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, HostileCli, ::testing::ValuesIn(Cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::string(info.param.name);
+                         });
+
+TEST(HostileCliTable, EveryRowRuns) {
+  // The table is the catalogue: a row lost in an edit must show.
+  EXPECT_EQ(static_cast<int>(Cases().size()), kCaseCount);
+  std::set<std::string> names;
+  for (const Case& c : Cases()) names.insert(c.name);
+  EXPECT_EQ(static_cast<int>(names.size()), kCaseCount);  // unique test names
+}
+
+// Starts `capsubot args...` with stdout and stderr to files (or stderr to `stderr_path`).
+pid_t Spawn(const std::vector<std::string>& args, const std::string& stdout_path,
+            const std::string& stderr_path) {
+  std::vector<std::string> all = {CAPSUBOT_CLI};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_path.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_path.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, CAPSUBOT_CLI, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+// A long simulation writing a large trajectory, killed by SIGINT or SIGTERM while its
+// temporary file exists: it dies of that signal (status 128 + signal in a shell) and leaves
+// no file behind.
+TEST(HostileCliSignals, InterruptRemovesTemporaryFiles) {
+  int checked = 0;
+  for (int signal_number : {SIGINT, SIGTERM}) {
+    Sandbox box("signal" + std::to_string(signal_number));
+    const fs::path trajectory = box.work / "t.csv";
+    const pid_t pid = Spawn({"simulate", "--A", "0.5", "--c", "0.5", "--phi0", "-2.944899971002",
+                             "--T0", "1", "--from-orbit", "--periods", "9e5",
+                             "--samples-per-period", "10", "--trajectory", trajectory.string()},
+                            (box.root / "stdout.txt").string(), (box.root / "stderr.txt").string());
+    ASSERT_GT(pid, 0);
+    const fs::path temp = trajectory.string() + ".tmp." + std::to_string(pid);
+    // Wait (bounded) until the temporary file holds some rows.
+    for (int i = 0; i < 1000 && !(fs::exists(temp) && fs::file_size(temp) > 0); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(fs::exists(temp)) << "no temporary file " << temp;
+    ASSERT_EQ(::kill(pid, signal_number), 0);
+    int raw = 0;
+    ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(raw)) << "exit status " << raw;
+    EXPECT_EQ(WTERMSIG(raw), signal_number);
+    EXPECT_TRUE(Listing(box.work).empty()) << "left: " << *Listing(box.work).begin();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
+// Reads the master side of a pseudo-terminal until the other side is closed.
+std::string DrainTerminal(int master) {
+  std::string text;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(master, buffer, sizeof buffer);
+    if (n <= 0) return text;  // EIO once the program has exited and closed the terminal
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+}
+
+// Progress goes to stderr when it is a terminal, and never to stdout.
+TEST(HostileCliProgress, LongSimulationShowsProgressOnATerminalOnly) {
+  Sandbox box("progress");
+  const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(::grantpt(master), 0);
+  ASSERT_EQ(::unlockpt(master), 0);
+  const std::string terminal = ::ptsname(master);
+  // Held open until the program is done, so the reader never sees a terminal without users.
+  const int slave = ::open(terminal.c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(slave, 0);
+  std::string shown;
+  std::thread reader([&] { shown = DrainTerminal(master); });
+  const std::vector<std::string> args = {
+      "simulate",        "--A",          "0.5",       "--c", "0.5", "--phi0",
+      "-2.944899971002", "--from-orbit", "--periods", "2e5"};
+  const pid_t pid = Spawn(args, (box.root / "stdout.txt").string(), terminal);
+  ASSERT_GT(pid, 0);
+  int raw = 0;
+  ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  ::close(slave);
+  reader.join();
+  ::close(master);
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 0);
+  EXPECT_NE(shown.find("200000/200000 periods"), std::string::npos) << shown;
+  const std::string out = ReadFile(box.root / "stdout.txt");
+  EXPECT_EQ(out.find("periods/s"), std::string::npos) << out;
+  EXPECT_NE(out.find("event-driven simulation"), std::string::npos) << out;
+  // The same run with stderr to a file: no progress at all.
+  const pid_t quiet =
+      Spawn(args, (box.root / "stdout2.txt").string(), (box.root / "stderr2.txt").string());
+  ASSERT_EQ(::waitpid(quiet, &raw, 0), quiet);
+  EXPECT_EQ(ReadFile(box.root / "stderr2.txt").find("periods/s"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace capsubot
