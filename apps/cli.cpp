@@ -83,6 +83,22 @@ void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {
                    "clearance d required between inner body and walls (fraction of L), "
                    "0 <= d < 0.5")
         ->capture_default_str();
+    cmd.add_option("--margin-stroke", p.margin_stroke,
+                   "clearance relative to the stroke d_s: the clearance from both walls is at "
+                   "least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)")
+        ->capture_default_str();
+    cmd.add_option("--stick-margin", p.stick_margin,
+                   "stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1 "
+                   "(docs/model.md section 12)")
+        ->capture_default_str();
+  }
+}
+
+void RequireInRange(const std::string& option, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi) {
+    const std::string name = option.substr(option.find_first_not_of('-'));
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected {} <= {} <= {}", option, value, lo, name, hi));
   }
 }
 

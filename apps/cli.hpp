@@ -37,7 +37,12 @@ struct ForcingOptions {
 /// Adds --A, --c, --phi0, --cos, --sin to `cmd`.
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
 
-/// Adds --T0, --e and (with `with_margin`) --margin to `cmd`.
+/// Adds --T0, --e and (with `with_margin`) the margins --margin, --margin-stroke,
+/// --stick-margin to `cmd` (their defaults: the values in `params`).
 void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
+
+/// A size option given on the command line must lie in [lo, hi], checked before any work:
+/// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
+void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
 
 }  // namespace capsubot::app

@@ -57,7 +57,7 @@ double ReferenceI(const Params& params, bool stable) {
       o.rel_tol = 1e-14;
       o.local_evaluations = 100000;
       o.local_algorithm = local;
-      o.stable = stable;
+      o.rho_max = stable ? 1.0 : o.rho_max;
       const auto r = capsubot::OptimizeForcing(params, o);
       if (r.found()) best = std::max(best, r.solution.orbit.I);
     }
@@ -74,7 +74,7 @@ void BM_OptimizeForcing(benchmark::State& state) {
   const bool stable = state.range(1) != 0;
   const Params params = state.range(2) != 0 ? Model(T0, 0.6, 0.1) : Model(T0);
   capsubot::ForcingDesignOptions o;
-  o.stable = stable;
+  o.rho_max = stable ? 1.0 : o.rho_max;
   const double reference = ReferenceI(params, stable);
   double I = 0.0;
   int evaluations = 0;

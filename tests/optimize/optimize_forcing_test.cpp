@@ -51,7 +51,7 @@ std::ostream& operator<<(std::ostream& os, const DesignCase& k) {
 ForcingDesignOptions OptionsFor(const DesignCase& k) {
   ForcingDesignOptions o;
   o.force_bound = k.bound_ratio * k.T0;
-  o.stable = k.stable;
+  if (k.stable) o.rho_max = 1.0;
   return o;
 }
 
@@ -109,8 +109,10 @@ TEST_P(ForcingOptimum, SatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   if (k.stable) {
     EXPECT_LE(ComputeStability(s.orbit).spectral_radius, 1.0);
   }
-  // The geometric conditions bind (docs/model.md section 7): at least one wall is active.
-  EXPECT_TRUE(Has(r.active_constraints, "left_wall") || Has(r.active_constraints, "right_wall"))
+  // The geometric conditions bind (docs/model.md section 7): at least one wall is active, or
+  // with a clearance margin the clearance from a wall.
+  EXPECT_TRUE(Has(r.active_constraints, "left_wall") || Has(r.active_constraints, "right_wall") ||
+              (k.margin > 0.0 && Has(r.active_constraints, "clearance")))
       << r.message;
 }
 
@@ -248,7 +250,7 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   EXPECT_EQ(ErrorOf(wide, {}), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");
   ForcingDesignOptions no_starts;
   no_starts.starts = 0;
-  EXPECT_EQ(ErrorOf(Params{}, no_starts), "starts = 0 is invalid: expected starts >= 1");
+  EXPECT_EQ(ErrorOf(Params{}, no_starts), "starts = 0 is invalid: expected 1 <= starts <= 1000");
 }
 
 TEST(NloptStatus, MapsEveryResultCode) {

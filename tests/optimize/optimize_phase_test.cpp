@@ -195,7 +195,6 @@ TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
   const Params params{0.3, 1.0, 0.0};
   const Forcing shape = Forcing::Harmonic(0.09, 0.03, 0.0);
   PhaseOptions options;
-  options.stable = true;
   options.rho_max = 1.0;
   const ScanBest scan = DenseScan(shape, params, true, 1.0);
   const OptimizeResult r = OptimizePhase(shape, params, options);
@@ -216,7 +215,8 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
     OptimizePhase(shape, Params{}, few);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "scan_points = 3 is invalid: expected at least 16");
+    EXPECT_EQ(std::string(e.what()),
+              "scan_points = 3 is invalid: expected 16 <= scan_points <= 1000000");
   }
   PhaseOptions rho;
   rho.rho_max = 0.0;
@@ -224,7 +224,9 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
     OptimizePhase(shape, Params{}, rho);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "rho_max = 0 is invalid: expected a finite rho_max > 0");
+    EXPECT_EQ(std::string(e.what()),
+              "rho_max = 0 is invalid: expected rho_max > 0 (infinity: no stability "
+              "requirement)");
   }
   Params wide;
   wide.margin = 0.5;
