@@ -36,8 +36,6 @@ struct OptimizeOptions {
   /// when T0 < 1, for positions; of T0 for forces; plain for alpha and rho); >= 0.
   double active_tol = 1e-7;
 
-  /// True when a stability requirement is set (rho_max finite).
-  bool stability_required() const { return rho_max < kInf; }
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
 };

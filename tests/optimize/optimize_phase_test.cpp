@@ -120,7 +120,7 @@ TEST_P(PhaseOnFrictionBoundDiagonal, FindsTheValidPhasesSolveFinds) {
   EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
 }
 
-// 0.006 + 0.003 is 0.009 plus one ulp in floating point (the review's example); the others
+// 0.006 + 0.003 is 0.009 plus one ulp in floating point; the others
 // are diagonal points of a sweep over (A, c) at T0 = 0.1 and 0.05.
 INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOnFrictionBoundDiagonal,
                          ::testing::Values(DiagonalCase{0.006, 0.003, 0.009},

@@ -108,7 +108,7 @@ TEST(Validity, EarlyRightWallContactIsReported) {
 }
 
 TEST(Validity, MotorStrongerThanFrictionIsReported) {
-  // A + c > T0: not an input error, a violated condition (issue 2, item 8).
+  // A + c > T0: not an input error, a violated condition.
   const Solution s = Solve(Forcing::Harmonic(0.9, 0.3, -2.5), Params{});
   EXPECT_TRUE(s.validity.violated(Condition::kForceBelowFriction));
   EXPECT_TRUE(Near(s.validity.max_force, 1.2, 1e-15));
