@@ -37,9 +37,11 @@ constexpr const char* kIntegerValidator = "integer";
 
 // The transform of a numeric option: the strict parse, then the value in a form CLI11's own
 // conversion reads back exactly (17 significant digits, plain decimal integers).
-CLI::Validator NumberText(const std::string& name) {
+// `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max).
+CLI::Validator NumberText(const std::string& name, bool allow_inf) {
   return CLI::Validator(
-      [name](std::string& text) {
+      [name, allow_inf](std::string& text) {
+        if (allow_inf && text == "inf") return std::string();
         try {
           text = fmt::format("{:.17g}", ParseNumber(text, name));
           return std::string();
@@ -126,14 +128,30 @@ void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {
                    "clearance d required between inner body and walls (fraction of L), "
                    "0 <= d < 0.5")
         ->capture_default_str();
+    cmd.add_option("--margin-stroke", p.margin_stroke,
+                   "clearance relative to the stroke d_s: the clearance from both walls is at "
+                   "least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)")
+        ->capture_default_str();
+    cmd.add_option("--stick-margin", p.stick_margin,
+                   "stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1 "
+                   "(docs/model.md section 12)")
+        ->capture_default_str();
+  }
+}
+
+void RequireInRange(const std::string& option, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi) {
+    const std::string name = option.substr(option.find_first_not_of('-'));
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected {} <= {} <= {}", option, value, lo, name, hi));
   }
 }
 
 void UseStrictNumbers(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
-    if (type == "FLOAT") {
-      option->transform(NumberText(option->get_name()));
+    if (type == "FLOAT" || type == kFloatOrInf) {
+      option->transform(NumberText(option->get_name(), type == kFloatOrInf));
     } else if ((type == "INT" || type == "UINT") && !HasValidator(option, kIntegerValidator)) {
       option->transform(IntegerText(option->get_name(), type == "UINT" ? 0 : INT_MIN, INT_MAX, ""));
     }

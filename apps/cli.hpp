@@ -38,14 +38,19 @@ struct ForcingOptions {
 /// Adds --A, --c, --phi0, --cos, --sin to `cmd`.
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
 
-/// Adds --T0, --e and (with `with_margin`) --margin to `cmd`.
+/// Adds --T0, --e and (with `with_margin`) the margins --margin, --margin-stroke,
+/// --stick-margin to `cmd` (their defaults: the values in `params`).
 void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
 
 /// Gives every numeric option of `app` and of its subcommands the one number syntax of
 /// capsubot::ParseNumber (floating-point options) or ParseInteger (integer options: the
 /// range of Bounded, else that of int). Call once, after every option is added. An option
 /// is numeric by its CLI11 type name (FLOAT, INT, UINT): keep those names on numeric options.
+/// Options of type kFloatOrInf also accept "inf" (e.g. --rho-max inf: no bound).
 void UseStrictNumbers(CLI::App& app);
+
+/// CLI11 type name of a floating-point option that also accepts "inf".
+inline constexpr const char* kFloatOrInf = "FLOAT|inf";
 
 /// A size option: its integer value must lie in [lo, hi], checked while parsing (before any
 /// work), the range named in the message and shown in --help.
@@ -61,5 +66,9 @@ inline constexpr int kThreadsPerCore = 4;
 /// `requested` threads (0: all cores) capped at kThreadsPerCore x the cores; a note on
 /// stderr (naming `who`) when it lowers the request.
 int CapThreads(int requested, const char* who);
+
+/// A size option given on the command line must lie in [lo, hi], checked before any work:
+/// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
+void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
 
 }  // namespace capsubot::app

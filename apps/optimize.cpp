@@ -1,6 +1,7 @@
-// capsubot optimize: the fastest gait (docs/model.md section 7). Without --problem it runs the main
-// job: the paper's problem P1 at c = A = T0/2, then P2 at the same T0 with and without the
-// stability requirement, a readable summary and results/optimum.json.
+// capsubot optimize: the fastest gait (docs/model.md section 7) with the margins of a robust
+// gait (section 12). Without --problem it runs the main job: the paper's problem P1 at
+// c = A = T0/2, the fastest robust gait (P2 with the margins), and for comparison the exact
+// optima without margins (valid; stable). Prints a summary (or --json); -o writes the JSON.
 
 #include "capsubot/optimize.hpp"
 
@@ -24,7 +25,18 @@ namespace capsubot::app {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kForceCsvRows = 1001;
+// The robust defaults of the command (docs/model.md section 12); the library's are 0 and inf.
+constexpr double kDefaultMarginStroke = 0.02;
+constexpr double kDefaultStickMargin = 0.02;
+constexpr double kDefaultRhoMax = 0.9;
+
+// P2's library defaults (one instance: the defaults of the options below).
+const ForcingDesignOptions& P2Defaults() {
+  static const ForcingDesignOptions defaults;
+  return defaults;
+}
 
 struct OptimizeCliOptions {
   std::string problem;  // "", phase, forcing, fourier
@@ -40,13 +52,12 @@ struct OptimizeCliOptions {
   std::string local_algorithm = "LN_COBYLA";
   int starts = 0;  // used only when given: else the problem's default
   CLI::Option* starts_option = nullptr;
-  int global_evaluations = ForcingDesignOptions{}.global_evaluations;
-  int hops = ForcingDesignOptions{}.hops;
-  double rho_max = kNaN;  // NaN: no stability requirement
-  CLI::Option* stable_option = nullptr;
+  int global_evaluations = P2Defaults().global_evaluations;
+  int hops = P2Defaults().hops;
+  double rho_max = kDefaultRhoMax;
+  double max_time = P2Defaults().max_time;
   bool json = false;
-  std::string output = "results/optimum.json";
-  CLI::Option* output_option = nullptr;
+  std::string output;  // empty: no file
   std::string force_csv;
   CLI::App* cmd = nullptr;
 };
@@ -104,8 +115,14 @@ std::string Join(const std::vector<std::string>& items, const char* none = "none
   return s.empty() ? none : s;
 }
 
-// The JSON object of one optimisation result (keys of issue 4, item 5): the optimum's orbit
-// as `solve --json` shows it, with the optimiser's status in place of the orbit's.
+std::vector<std::string> BindingNames(const OptimizeResult& r) {
+  std::vector<std::string> names;
+  for (Margin m : r.binding) names.emplace_back(MarginName(m));
+  return names;
+}
+
+// The JSON object of one optimisation result: the optimum's orbit as `solve --json` shows it,
+// with the optimiser's status in place of the orbit's.
 nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
   const Forcing& f = r.solution.orbit.forcing;
   nlohmann::json j = SolutionJson(r.solution);
@@ -113,6 +130,7 @@ nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
   j["status"] = OptimizeStatusName(r.status);
   j["message"] = r.message;
   j["active_constraints"] = r.active_constraints;
+  j["binding"] = BindingNames(r);
   j["evaluations"] = r.evaluations;
   j["algorithm"] = r.algorithm;
   if (!std::isnan(r.spectral_radius)) {
@@ -125,8 +143,18 @@ nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
   return j;
 }
 
+// The model and the requirements every result of a run shares (rho_max null: none).
+void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
+  j["T0"] = p.T0;
+  j["e"] = p.e;
+  j["margin"] = p.margin;
+  j["margin_stroke"] = p.margin_stroke;
+  j["stick_margin"] = p.stick_margin;
+  j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
+}
+
 void WriteJson(const nlohmann::json& j, const std::string& path) {
-  AtomicFile file(path, "--output");
+  AtomicFile file(path, "-o");
   file.stream() << j.dump(2) << '\n';
   file.Commit();
 }
@@ -142,20 +170,27 @@ void WriteForceCsv(const Forcing& f, const std::string& path) {
   file.Commit();
 }
 
-// What an active constraint means for the gait.
-const char* BindingInPlainTerms(const std::string& name) {
-  namespace n = constraint_names;
-  if (name == n::kLeftWall) return "the inner body just reaches the left wall (x_min = margin)";
-  if (name == n::kRightWall) return "it just grazes the right wall before the impact";
-  if (name == n::kStick) return "the force reaches the friction bound while the capsule rests";
-  if (name == n::kForceBound) return "the force uses its whole bound";
-  if (name == n::kStability) return "the gait sits on the stability limit";
-  if (name == n::kMassRatioLow || name == n::kMassRatioHigh) return "alpha at its limit";
+// What an active constraint or binding margin means for the gait.
+const char* InPlainTerms(const std::string& name) {
+  if (name == ConditionName(Condition::kLeftWall))
+    return "the inner body just reaches the left wall";
+  if (name == ConditionName(Condition::kRightWall)) {
+    return "it just grazes the right wall before the impact";
+  }
+  if (name == ConditionName(Condition::kClearance)) {
+    return "it comes exactly the required clearance close to a wall";
+  }
+  if (name == ConditionName(Condition::kStick)) {
+    return "the force reaches its limit while the capsule rests";
+  }
+  if (name == ConditionName(Condition::kMassRatio)) return "alpha at its limit";
+  if (name == kForceBoundName) return "the force uses its whole bound";
+  if (name == MarginName(Margin::kRhoMax)) return "the spectral radius sits on rho_max";
   return "";
 }
 
 // A gait in plain terms, indented.
-std::string GaitText(const OptimizeResult& r) {
+std::string GaitText(const OptimizeResult& r, double rho_max) {
   const Orbit& o = r.solution.orbit;
   const Validity& v = r.solution.validity;
   std::string t;
@@ -169,89 +204,115 @@ std::string GaitText(const OptimizeResult& r) {
       "    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
       "until phi1 = {} rad\n",
       Num(o.u, 5), Num(o.v_plus, 5), Num(o.phi1, 5));
-  t += fmt::format("    inner body       x from {} to {} (walls at 0 and 1)\n", Num(v.x_min, 4),
-                   std::isnan(v.x_max) ? "1 (at the impact)" : Num(v.x_max, 6));
-  t += fmt::format("    binding          {}\n", Join(r.active_constraints));
+  t += fmt::format("    inner body       x from {} to {} (walls at 0 and 1){}\n", Num(v.x_min, 4),
+                   std::isnan(v.x_max) ? "1 (at the impact)" : Num(v.x_max, 6),
+                   v.clearance > 0.0 ? fmt::format(", clearance {}", Num(v.clearance, 4)) : "");
+  t += fmt::format("    active           {}\n", Join(r.active_constraints));
   for (const auto& name : r.active_constraints) {
-    const char* plain = BindingInPlainTerms(name);
+    const char* plain = InPlainTerms(name);
     if (*plain != '\0') t += fmt::format("                     - {}\n", plain);
   }
+  if (r.found()) t += fmt::format("    margins binding  {}\n", Join(BindingNames(r)));
   if (!std::isnan(r.spectral_radius)) {
     const double rho = r.spectral_radius;
-    // The stability constraint often binds: rho = 1 up to the optimiser's tolerance.
-    const bool boundary = std::abs(rho - 1.0) <= 1e-6;
+    // The stability requirement often binds: rho = rho_max up to the optimiser's tolerance.
+    const bool boundary = std::isfinite(rho_max) && std::abs(rho - rho_max) <= 1e-6;
     t += fmt::format("    stability        spectral radius {} -> {}\n", Num(rho, 4),
-                     boundary    ? "on the stability boundary: the limit of the stable gaits "
-                                   "(use --stable 0.95 for a margin)"
-                     : rho < 1.0 ? "stable: a real robot settles on this gait"
-                                 : "unstable: a real robot would drift away from this gait");
+                     boundary ? fmt::format("on the required bound rho_max = {:g}", rho_max)
+                     : rho < 1.0
+                         ? std::string("stable: a real robot settles on this gait")
+                         : std::string("unstable: a real robot would drift away from this gait"));
   }
   t += fmt::format("    solver           {} ({} evaluations, status {})\n", r.algorithm,
                    r.evaluations, OptimizeStatusName(r.status));
   return t;
 }
 
-ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
+// The gait asked for, with P2's default search: what P3 asks and starts from.
+ForcingDesignOptions GaitOptions(const OptimizeCliOptions& opt, double rho_max) {
   ForcingDesignOptions d;
   d.force_bound = opt.bound;
-  d.global_algorithm = opt.global_algorithm;
   d.local_algorithm = opt.local_algorithm;
+  d.rho_max = rho_max;
+  d.max_time = opt.max_time;
+  return d;
+}
+
+// P2: the gait asked for, searched as the command line says.
+ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, double rho_max) {
+  ForcingDesignOptions d = GaitOptions(opt, rho_max);
+  d.global_algorithm = opt.global_algorithm;
   if (opt.starts_option->count() > 0) d.starts = opt.starts;
   d.global_evaluations = opt.global_evaluations;
   d.hops = opt.hops;
-  d.stable = stable;
-  if (stable) d.rho_max = opt.rho_max;
   return d;
+}
+
+PhaseOptions PhaseFor(const OptimizeCliOptions& opt) {
+  PhaseOptions po;
+  po.rho_max = opt.rho_max;
+  po.max_time = opt.max_time;
+  return po;
+}
+
+void Emit(const nlohmann::json& j, const std::string& text, const OptimizeCliOptions& opt) {
+  if (!opt.output.empty()) WriteJson(j, opt.output);
+  if (opt.json) {
+    fmt::print("{}\n", j.dump());
+  } else {
+    fmt::print("{}{}", text, opt.output.empty() ? "" : fmt::format("\nwritten: {}\n", opt.output));
+  }
 }
 
 int RunMainJob(const OptimizeCliOptions& opt) {
   const Params& p = opt.params;
-  const double rho_max = std::isnan(opt.rho_max) ? 1.0 : opt.rho_max;
-  OptimizeCliOptions stable_opt = opt;
-  stable_opt.rho_max = rho_max;
-  // 1. The paper's problem: c = A = T0/2, best phase.
+  Params exact = p;  // the exact optima: no margins
+  exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
+  // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2,
+  // best phase. Its force sits on the friction bound, so any stick margin would exclude it.
+  PhaseOptions paper_options = PhaseFor(opt);
+  paper_options.rho_max = kInf;
   const OptimizeResult paper =
-      OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), p, PhaseOptions{});
-  // 2. The fastest valid gait and 3. the fastest stable one, A + c <= bound.
-  const OptimizeResult fastest = OptimizeForcing(p, DesignOptions(opt, false));
-  const OptimizeResult stable = OptimizeForcing(p, DesignOptions(stable_opt, true));
+      OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, paper_options);
+  // 2. The fastest robust gait; 3. the exact optima, valid and stable, for comparison.
+  const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  const OptimizeResult fastest = OptimizeForcing(exact, DesignOptions(opt, kInf));
+  const OptimizeResult stable = OptimizeForcing(exact, DesignOptions(opt, 1.0));
   const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
 
   nlohmann::json j;
-  j["T0"] = p.T0;
-  j["e"] = p.e;
-  j["margin"] = p.margin;
+  AddRequirementsJson(j, p, opt.rho_max);
   j["force_bound"] = bound;
-  j["rho_max"] = rho_max;
   j["paper_phase"] = ResultJson(paper, "phase");
-  j["paper_phase"]["note"] = "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0";
+  j["paper_phase"]["note"] =
+      "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no margins)";
+  j["robust"] = ResultJson(robust, "forcing");
+  j["robust"]["note"] =
+      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= rho_max";
   j["fastest"] = ResultJson(fastest, "forcing");
-  j["fastest"]["note"] = "P2: A, c, phi0 free with A + c <= force_bound";
+  j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = ResultJson(stable, "forcing");
-  j["fastest_stable"]["note"] = "P2 restricted to spectral radius <= rho_max";
-  WriteJson(j, opt.output);
-  if (!opt.force_csv.empty()) WriteForceCsv(fastest.solution.orbit.forcing, opt.force_csv);
-  if (opt.json) {
-    fmt::print("{}\n", j.dump());
-    return 0;
-  }
+  j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
+  if (!opt.force_csv.empty()) WriteForceCsv(robust.solution.orbit.forcing, opt.force_csv);
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section "
-      "7)\n"
-      "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
-      "margin {:g}\n"
+      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md "
+      "section 7)\n"
+      "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution)\n"
+      "robust gait (docs/model.md section 12): clearance >= max(d = {:g}, d_s = {:g} x stroke), "
+      "stick margin s = {:g}, spectral radius <= {:g}\n"
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
       "omega L\n"
-      "(T0 = 1, e = 1 are the paper's values; change them with --T0, --e, --margin)\n\n",
-      p.T0, p.e, p.margin);
+      "(change them with --T0, --e, --margin, --margin-stroke, --stick-margin, --rho-max)\n\n",
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max);
   t += fmt::format(
       "1. The paper's problem (P1): force F = A sin(phi + phi0) + c with c = A = T0/2 = {:g},\n"
-      "   best impact phase phi0 over the whole circle.\n",
+      "   best impact phase phi0 over the whole circle, valid orbits as the paper asks (no\n"
+      "   margins: its force reaches the friction bound).\n",
       p.T0 / 2.0);
   if (paper.found()) {
-    t += "   Result: a valid gait exists.\n" + GaitText(paper);
+    t += "   Result: a valid gait exists.\n" + GaitText(paper, kInf);
   } else {
     const Validity& v = paper.solution.validity;
     t += fmt::format(
@@ -261,86 +322,77 @@ int RunMainJob(const OptimizeCliOptions& opt) {
         OptimizeStatusName(paper.status), Num(paper.solution.orbit.forcing.phi0(), 6),
         Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
     if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
-      // Only the left wall fails: the same gait scaled down with T0 fits (LargestFittingT0).
+      // Scaling A, c, T0 by k scales 1 - x by k and leaves the other conditions unchanged
+      // (docs/model.md section 6): the orbit fits once k (1 - x_min) <= 1.
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
           "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): "
           "this\n"
-          "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
+          "   orbit would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
           Num(v.x_min, 4), Num(LargestFittingT0(paper.solution, p.margin), 4), p.T0);
     }
   }
-  t += fmt::format("\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
-  t += fastest.found() ? GaitText(fastest)
-                       : fmt::format("   Result: none found ({})\n", fastest.message);
   t += fmt::format(
-      "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, docs/model.md section 8):\n",
-      rho_max);
-  t += stable.found() ? GaitText(stable)
+      "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
+      "   above. This is the gait to build.\n",
+      bound);
+  t += robust.found() ? GaitText(robust, opt.rho_max)
+                      : fmt::format("   Result: none found ({})\n", robust.message);
+  t += "\n3. For comparison, the exact optima without margins (they graze the walls: a robot\n"
+       "   with slightly different parameters does something else).\n"
+       "   The fastest valid gait:\n";
+  t += fastest.found() ? GaitText(fastest, kInf)
+                       : fmt::format("   Result: none found ({})\n", fastest.message);
+  t += "   The fastest stable gait (spectral radius <= 1, docs/model.md section 8):\n";
+  t += stable.found() ? GaitText(stable, 1.0)
                       : fmt::format("   Result: none found ({})\n", stable.message);
-  if (fastest.found() && stable.found()) {
+  if (robust.found() && fastest.found()) {
     t += fmt::format(
-        "\nIn short: the fastest valid gait moves {} L per period with inner mass ratio {};\n"
-        "the fastest stable one, the gait a real robot can settle on, moves {} L per period\n"
-        "({} of the former) with inner mass ratio {}.\n",
-        Num(fastest.solution.orbit.I, 5), Num(fastest.solution.orbit.alpha, 4),
-        Num(stable.solution.orbit.I, 5),
-        fmt::format("{:.1f}%", 100.0 * stable.solution.orbit.I / fastest.solution.orbit.I),
-        Num(stable.solution.orbit.alpha, 4));
+        "\nIn short: the fastest robust gait moves {} L per period with inner mass ratio {}\n"
+        "({} of the exact, wall-grazing optimum {} L per period; margins binding: {}).\n",
+        Num(robust.solution.orbit.I, 5), Num(robust.solution.orbit.alpha, 4),
+        fmt::format("{:.1f}%", 100.0 * robust.solution.orbit.I / fastest.solution.orbit.I),
+        Num(fastest.solution.orbit.I, 5), Join(BindingNames(robust)));
   }
-  t += fmt::format("\nwritten: {}\n", opt.output);
-  fmt::print("{}", t);
+  Emit(j, t, opt);
   return 0;
 }
 
 int RunProblem(const OptimizeCliOptions& opt) {
   const Params& p = opt.params;
-  const bool stable = !std::isnan(opt.rho_max);
   OptimizeResult r;
   if (opt.problem == "phase") {
     if (std::isnan(opt.A) || std::isnan(opt.c)) {
       throw std::invalid_argument(
           "--problem phase needs the force shape: give --A and --c (F = A sin(phi + phi0) + c)");
     }
-    PhaseOptions po;
-    po.stable = stable;
-    if (stable) po.rho_max = opt.rho_max;
-    r = OptimizePhase(Forcing::Harmonic(opt.A, opt.c, 0.0), p, po);
+    r = OptimizePhase(Forcing::Harmonic(opt.A, opt.c, 0.0), p, PhaseFor(opt));
   } else if (opt.problem == "forcing") {
-    r = OptimizeForcing(p, DesignOptions(opt, stable));
+    r = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
   } else {  // fourier (CLI11 checks the name)
     FourierOptions fo;
+    fo.harmonic = GaitOptions(opt, opt.rho_max);
     fo.harmonics = opt.harmonics;
-    fo.force_bound = opt.bound;
-    fo.global_algorithm = opt.global_algorithm;
-    fo.local_algorithm = opt.local_algorithm;
-    if (opt.starts_option->count() > 0) fo.starts = opt.starts;
-    fo.global_evaluations = opt.global_evaluations;
-    fo.stable = stable;
-    if (stable) fo.rho_max = opt.rho_max;
+    fo.search.global_algorithm = opt.global_algorithm;
+    if (opt.starts_option->count() > 0) fo.search.starts = opt.starts;
+    fo.search.global_evaluations = opt.global_evaluations;
     r = OptimizeFourier(p, fo);
   }
   nlohmann::json j = ResultJson(r, opt.problem.c_str());
-  j["T0"] = p.T0;
-  j["e"] = p.e;
-  j["margin"] = p.margin;
+  AddRequirementsJson(j, p, opt.rho_max);
   if (opt.problem == "fourier") {
     j["baseline_I"] = r.baseline_I;
     j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
   }
   if (!opt.force_csv.empty()) WriteForceCsv(r.solution.orbit.forcing, opt.force_csv);
-  if (opt.output_option->count() > 0) WriteJson(j, opt.output);
-  if (opt.json) {
-    fmt::print("{}\n", j.dump());
-    return 0;
-  }
   std::string t;
-  t += fmt::format("capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margin = {:g}{}\n",
-                   opt.problem, p.T0, p.e, p.margin,
-                   stable ? fmt::format(", spectral radius <= {:g}", opt.rho_max) : "");
+  t += fmt::format(
+      "capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, "
+      "s = {:g}, spectral radius <= {:g}\n",
+      opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max);
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r);
+  t += GaitText(r, opt.rho_max);
   if (opt.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",
@@ -348,12 +400,12 @@ int RunProblem(const OptimizeCliOptions& opt) {
                   : std::string("-"),
         Num(r.baseline_I, 8));
   }
-  fmt::print("{}", t);
+  Emit(j, t, opt);
   return 0;
 }
 
 // A value given on the command line must be admissible itself: NaN (the library's "use T0"
-// for the bound, the CLI's "not given" for A and c) or a count below 1 is not a default.
+// for the bound, the CLI's "not given" for A and c) is not a default.
 void RequireGiven(const CLI::Option* option, bool ok, const std::string& value, const char* rule) {
   if (option->count() > 0 && !ok) {
     throw std::invalid_argument(
@@ -369,12 +421,20 @@ int Run(const OptimizeCliOptions& opt) {
                "a finite mean force c");
   RequireGiven(opt.bound_option, std::isfinite(opt.bound) && opt.bound > 0.0,
                fmt::format("{}", opt.bound), "a finite bound > 0 (at most T0)");
-  RequireGiven(opt.starts_option, opt.starts >= 1, fmt::format("{}", opt.starts), "starts >= 1");
-  opt.params.Validate();
-  if (opt.stable_option->count() > 0 && !(std::isfinite(opt.rho_max) && opt.rho_max > 0.0)) {
+  // Every size is bounded before any work starts.
+  if (opt.starts_option->count() > 0) RequireInRange("--starts", opt.starts, 1, kMaxStarts);
+  RequireInRange("--hops", opt.hops, 0, kMaxStarts);
+  RequireInRange("--global-evaluations", opt.global_evaluations, 10, kMaxStageEvaluations);
+  if (!(opt.rho_max > 0.0)) {
     throw std::invalid_argument(fmt::format(
-        "--stable = {} is invalid: expected a spectral radius bound rho_max > 0", opt.rho_max));
+        "--rho-max = {} is invalid: expected rho_max > 0 (inf: no stability requirement)",
+        opt.rho_max));
   }
+  if (!(opt.max_time > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "--max-time = {} is invalid: expected a time limit > 0 seconds (inf: none)", opt.max_time));
+  }
+  opt.params.Validate();
   return opt.problem.empty() ? RunMainJob(opt) : RunProblem(opt);
 }
 
@@ -382,13 +442,16 @@ int Run(const OptimizeCliOptions& opt) {
 
 Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
+  opt->params.margin_stroke = kDefaultMarginStroke;
+  opt->params.stick_margin = kDefaultStickMargin;
   CLI::App* cmd = app.add_subcommand(
       "optimize",
-      "The fastest gait (docs/model.md section 7). Without --problem: the main job, run from the "
-      "repository root: the paper's problem (best phase at c = A = T0/2), then the fastest "
-      "valid and the fastest stable gait with A + c <= T0; prints a summary and writes "
-      "--output. With --problem: one problem. Exit status 0 whenever the computation ran, "
-      "valid gait found or not.");
+      "The fastest gait (docs/model.md section 7) with the margins of a robust gait (section "
+      "12). Without --problem: the main job: the paper's problem (best phase at c = A = T0/2), "
+      "the fastest robust gait with A + c <= T0, and the exact optima without margins (valid, "
+      "stable) for comparison. With --problem: one problem. Prints a summary (or --json); -o "
+      "also writes the JSON. Exit status 0 whenever the computation ran, valid gait found or "
+      "not.");
   cmd->add_option("--problem", opt->problem,
                   "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
                   "A + c <= --bound) or fourier (P3: best K-harmonic force with max |F| <= "
@@ -405,6 +468,20 @@ Command AddOptimizeCommand(CLI::App& app) {
       cmd->add_option("--bound", opt->bound,
                       "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
                       "same unit as A (default: T0)");
+  CLI::Option* rho_max =
+      cmd->add_option("--rho-max", opt->rho_max,
+                      "largest spectral radius of the impact map (docs/model.md sections 8, 12); "
+                      "inf: no stability requirement")
+          ->capture_default_str()
+          ->type_name(kFloatOrInf);
+  cmd->add_flag_callback(
+         "--stable", [opt] { opt->rho_max = 1.0; },
+         "the same as --rho-max 1: stable orbits, up to marginal stability")
+      ->excludes(rho_max);
+  cmd->add_option("--max-time", opt->max_time,
+                  "time limit [s] of each optimisation; when reached, the best point so far is "
+                  "reported with status max_time (inf: none)")
+      ->capture_default_str();
   cmd->add_option("--harmonics", opt->harmonics, "number K of harmonics of the Fourier force")
       ->capture_default_str();
   cmd->add_option("--global-algorithm", opt->global_algorithm,
@@ -416,35 +493,33 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "(LD_*: gradients by central differences)")
       ->capture_default_str();
   cmd->add_option("--global-evaluations", opt->global_evaluations,
-                  "evaluation budget of an NLopt global algorithm (not used by multistart)")
+                  fmt::format("evaluation budget of an NLopt global algorithm (not used by "
+                              "multistart), 10 to {}",
+                              kMaxStageEvaluations))
       ->capture_default_str();
   cmd->add_option("--hops", opt->hops,
-                  "forcing: basin-hopping restarts from random perturbations of the best point "
-                  "after the starts")
+                  fmt::format("forcing: basin-hopping restarts from random perturbations of the "
+                              "best point after the starts, 0 to {}",
+                              kMaxStarts))
       ->capture_default_str();
-  opt->starts_option = cmd->add_option("--starts", opt->starts,
-                                       "number of local polishes of the multistart, >= 1 "
-                                       "(default: 10 for forcing, 20 for fourier)");
-  opt->stable_option =
-      cmd->add_option("--stable", opt->rho_max,
-                      "require a stable orbit: spectral radius of the impact map (docs/model.md "
-                      "section 8) <= rho_max; the value is optional (--stable alone means "
-                      "rho_max = 1). The main job always reports both")
-          ->expected(0, 1)
-          ->default_str("1");
+  opt->starts_option = cmd->add_option(
+      "--starts", opt->starts,
+      fmt::format("number of local polishes of the multistart, 1 to {} (default: 10 for "
+                  "forcing, 20 for fourier)",
+                  kMaxStarts));
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: status, I, v_mean, A, c, phi0, phi1, alpha, u, v_plus, "
-                "x_min, x_max, active_constraints, evaluations, algorithm (+ coefficients for "
-                "fourier, spectral_radius when the orbit exists; null where a quantity does not "
-                "exist); the main job prints the object it writes to --output");
-  opt->output_option = cmd->add_option(
-      "--output", opt->output,
-      "JSON file written atomically: always by the main job (a path relative to the working "
-      "directory), by --problem only when given");
-  opt->output_option->capture_default_str();
+                "x_min, x_max, stroke, clearance, active_constraints, binding, evaluations, "
+                "algorithm, the margins and rho_max (+ coefficients for fourier, "
+                "spectral_radius when the orbit exists; null where a quantity does not exist); "
+                "the main job prints one object with paper_phase, robust, fastest, "
+                "fastest_stable");
+  cmd->add_option("-o,--output", opt->output,
+                  "also write the JSON object (indented) to this file, atomically; nothing is "
+                  "written without it");
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
-                  "columns phi,F) to this CSV file (main job: the fastest valid gait's force)");
+                  "columns phi,F) to this CSV file (main job: the robust gait's force)");
   opt->cmd = cmd;
   return {cmd, [opt] { return Run(*opt); }};
 }

@@ -47,6 +47,8 @@ nlohmann::json SolutionJson(const Solution& s) {
   j["v_mean"] = o.v_mean;
   j["x_min"] = v.x_min;
   j["x_max"] = v.x_max;
+  j["stroke"] = v.stroke;
+  j["clearance"] = v.clearance;
   j["valid"] = v.valid();
   j["violations"] = v.ViolationNames();
   return j;
@@ -70,7 +72,11 @@ std::string SolutionTable(const Solution& s, const Params& p) {
   std::string t;
   t += fmt::format("one-impact periodic orbit\n");
   t += fmt::format("  force            {}\n", ForceFormula(o.forcing));
-  t += fmt::format("  model            T0 = {:g}, e = {:g}, margin = {:g}\n", p.T0, p.e, p.margin);
+  t += fmt::format("  model            T0 = {:g}, e = {:g}, margin = {:g}{}\n", p.T0, p.e, p.margin,
+                   p.margin_stroke > 0.0 || p.stick_margin > 0.0
+                       ? fmt::format(", margin_stroke = {:g}, stick_margin = {:g}", p.margin_stroke,
+                                     p.stick_margin)
+                       : std::string());
   t += fmt::format("  status           {}\n", StatusName(o.status));
   t += fmt::format("  stop phase       phi1   = {}\n", Num(o.phi1));
   t += fmt::format("  mass ratio       alpha  = {}   (m2/(m1+m2))\n", Num(o.alpha));
@@ -80,6 +86,10 @@ std::string SolutionTable(const Solution& s, const Params& p) {
   t += fmt::format("  mean velocity    v_mean = {}   (omega L)\n", Num(o.v_mean));
   t += fmt::format("  inner body       x_min  = {}, x_max = {}   (walls at 0 and 1)\n",
                    Num(v.x_min), Num(v.x_max));
+  if (v.clearance > 0.0) {
+    t += fmt::format("  clearance        {} required from both walls (stroke {})\n",
+                     Num(v.clearance), Num(v.stroke));
+  }
   if (v.valid()) {
     t += "  valid            yes: every condition of docs/model.md section 5 holds\n";
   } else {

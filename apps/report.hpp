@@ -18,7 +18,8 @@ std::string Num(double value, int digits = 10);
 std::string NumFixed(double value, int decimals);
 
 /// JSON of a solved orbit: A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, v_mean, x_min,
-/// x_max, valid, violations (null for what does not exist); "cos"/"sin" for a Fourier force.
+/// x_max, stroke, clearance, valid, violations (null for what does not exist); "cos"/"sin" for
+/// a Fourier force.
 nlohmann::json SolutionJson(const Solution& solution);
 
 /// The force as a formula: "0.5 sin(phi - 2.9449) + 0.5".

@@ -42,6 +42,7 @@ void RejectGriddedOptions(const SweepCliOptions& opt) {
 
 int Run(SweepCliOptions& opt) {
   SweepOptions& s = opt.sweep;
+  RequireInRange("--scan-points", s.phase.scan_points, kMinScanPoints, kMaxScanPoints);
   s.grid.axes.clear();
   for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
   s.grid.Validate();
@@ -147,11 +148,22 @@ Command AddSweepCommand(CLI::App& app) {
       cmd->add_option("--optimize", opt->optimize,
                       "phi0: at every point, the impact phase phi0 maximising I over valid "
                       "orbits (problem P1); adds the columns phi0 (the optimum) and status");
-  cmd->add_flag("--stable-only", opt->sweep.phase.stable,
-                "with --optimize phi0: maximise over valid and stable orbits only")
+  CLI::Option* rho_max =
+      cmd->add_option("--rho-max", opt->sweep.phase.rho_max,
+                      "with --optimize phi0: maximise over orbits whose spectral radius is at "
+                      "most rho_max (docs/model.md sections 8, 12); inf: no stability requirement")
+          ->capture_default_str()
+          ->type_name(kFloatOrInf)
+          ->needs(optimize);
+  cmd->add_flag_callback(
+         "--stable-only", [opt] { opt->sweep.phase.rho_max = 1.0; },
+         "with --optimize phi0: the same as --rho-max 1 (valid and stable orbits only)")
+      ->excludes(rho_max)
       ->needs(optimize);
   cmd->add_option("--scan-points", opt->sweep.phase.scan_points,
-                  "with --optimize phi0: points of the optimiser's initial scan of phi0")
+                  fmt::format("with --optimize phi0: points of the optimiser's initial scan of "
+                              "phi0, {} to {}",
+                              kMinScanPoints, kMaxScanPoints))
       ->capture_default_str()
       ->needs(optimize);
   cmd->add_flag("--resume", opt->sweep.resume,

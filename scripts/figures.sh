@@ -4,6 +4,7 @@
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
 #   design_m2_*.csv, design_example.json, design_speed_power.png: the example robot's design
+#   optimum.json                  the main job: `capsubot optimize -o results/optimum.json`
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -20,6 +21,9 @@ mkdir -p "$out"
 say() { echo "figures: $*" >&2; }
 
 # --- the data (every number of results/REPRODUCTION.md comes from these commands) ----------
+say "the main job: the fastest robust gait (docs/optimize.md)"
+"$cli" optimize -o "$out/optimum.json" > /dev/null
+
 say "Fig. 2: phi1(phi0), c = A = T0/2"
 "$cli" sweep --grid phi0=-pi:pi:721 --A 0.5 --c 0.5 --T0 1 -o "$out/fig2_phi1_vs_phi0.csv"
 

@@ -1,11 +1,12 @@
 #pragma once
 // What every optimisation problem of docs/model.md section 7 returns: a status, the optimum as a
-// solved orbit, the constraints active there and the cost.
+// solved orbit, the constraints and design margins active there and the cost.
 
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "capsubot/optimize_options.hpp"
 #include "capsubot/validity.hpp"
 
 namespace capsubot {
@@ -16,7 +17,7 @@ enum class OptimizeStatus {
   kOk,                ///< converged (NLopt success, stopval, ftol or xtol reached) to a valid orbit
   kNoValidOrbit,      ///< no valid (and, if required, stable) orbit was found: see `message`
   kMaxEvaluations,    ///< the evaluation budget ran out; the best valid point is returned
-  kMaxTime,           ///< the time budget ran out; the best valid point is returned
+  kMaxTime,           ///< the time limit (max_time) was reached; the best point is returned
   kRoundoffLimited,   ///< NLopt stopped on round-off (nlopt::roundoff_limited); best point kept
   kForcedStop,        ///< NLopt was stopped (nlopt::forced_stop); best point kept
   kInvalidArguments,  ///< NLopt rejected the problem (NLOPT_INVALID_ARGS)
@@ -26,18 +27,6 @@ enum class OptimizeStatus {
 
 /// Stable identifier of a status ("ok", "no_valid_orbit", "max_evaluations", ...).
 const char* OptimizeStatusName(OptimizeStatus status);
-
-/// Names of the constraints reported in OptimizeResult::active_constraints (docs/model.md s. 5, 7).
-namespace constraint_names {
-inline constexpr const char* kLeftWall = "left_wall";        ///< x_min >= margin
-inline constexpr const char* kRightWall = "right_wall";      ///< x_max <= 1 - margin
-inline constexpr const char* kMassRatioLow = "alpha_low";    ///< alpha > 0 (alpha >= alpha_min)
-inline constexpr const char* kMassRatioHigh = "alpha_high";  ///< alpha < 1 (alpha <= alpha_max)
-inline constexpr const char* kStick = "stick";               ///< max |F| on rest phase <= T0
-inline constexpr const char* kForceBound = "force_bound";    ///< A + c (max |F|) <= bound
-inline constexpr const char* kSeparation = "separation";     ///< inner body leaves the wall
-inline constexpr const char* kStability = "stability";       ///< spectral radius <= rho_max
-}  // namespace constraint_names
 
 struct OptimizeResult {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -50,9 +39,13 @@ struct OptimizeResult {
   /// Spectral radius of the impact map at the returned orbit (docs/model.md section 8), computed
   /// whenever the orbit exists (< 1: stable); NaN without orbit.
   double spectral_radius = kNaN;
-  /// Constraints whose slack at the optimum is within the options' active_tol (names from
-  /// capsubot::constraint_names), in a fixed order.
+  /// Constraints whose slack at the optimum is within the options' active_tol, in a fixed
+  /// order: validity conditions by ConditionName ("left_wall", "clearance", "stick", ...),
+  /// kForceBoundName and MarginName(Margin::kRhoMax).
   std::vector<std::string> active_constraints;
+  /// The design margins of docs/model.md section 12 that the optimum touches (a subset of
+  /// the active constraints, saying which margin sets the clearance), in enum order.
+  std::vector<Margin> binding;
   int evaluations = 0;    ///< orbit evaluations (Solve calls) spent
   std::string algorithm;  ///< what ran, e.g. "scan720+brent" or "multistart+LN_COBYLA"
   /// P3 only: I of the harmonic (P2) optimum at the same bound, the reference of the gain.

@@ -1,11 +1,12 @@
 #pragma once
 // What the NLopt problems P2 and P3 of docs/model.md section 7 share: the force bound, the global
-// and local stages and their budgets, the stability requirement.
+// and local stages and their budgets, the stability requirement and the time limit.
 
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "capsubot/optimize_options.hpp"
 #include "capsubot/params.hpp"
 
 namespace capsubot {
@@ -20,31 +21,43 @@ std::vector<std::string> GlobalAlgorithmNames();
 /// The local algorithm names accepted: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ.
 std::vector<std::string> LocalAlgorithmNames();
 
-struct SearchOptions {
-  /// Bound on the force, max |F| (A + c for the harmonic force); NaN means T0. Must satisfy
-  /// 0 < force_bound <= T0 (a larger force moves the capsule without impacts, section 6).
-  double force_bound = std::numeric_limits<double>::quiet_NaN();
+/// Largest number of local polishes (starts, restarts) of one search: bounds its work.
+inline constexpr int kMaxStarts = 1000;
+/// Largest evaluation budget of one NLopt stage.
+inline constexpr int kMaxStageEvaluations = 10000000;
+
+/// How hard a problem is searched: the global stage, the local polishes and their budgets.
+struct SearchEffort {
   /// Global stage: "multistart" or an NLopt global algorithm name (GlobalAlgorithmNames()).
   std::string global_algorithm = kMultistart;
-  /// Local constrained polish, by NLopt name (LocalAlgorithmNames(); gradients of the LD_
-  /// algorithms by central differences).
-  std::string local_algorithm = "LN_COBYLA";
-  /// Local polishes; >= 1.
+  /// Local polishes; 1 <= starts <= kMaxStarts.
   int starts = 10;
   /// Relative tolerance of the local polish on the variables and on I; > 0.
   double rel_tol = 1e-10;
-  /// Evaluation budget of each local polish; >= 10.
+  /// Evaluation budget of each local polish; 10 <= local_evaluations <= kMaxStageEvaluations.
   int local_evaluations = 20000;
-  /// Evaluation budget of an NLopt global stage; >= 10.
+  /// Evaluation budget of an NLopt global stage; 10 <= .. <= kMaxStageEvaluations.
   int global_evaluations = 5000;
+
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule
+  /// (unknown algorithm names list the valid ones).
+  void Validate() const;
+};
+
+/// The gait asked of P2 (and of P3, which starts from P2's optimum for the same request):
+/// stability, time limit, force bound, local algorithm and seed, with P2's search effort.
+struct SearchOptions : OptimizeOptions, SearchEffort {
+  // Not an aggregate: value-initialised through this constructor (GCC 12 misreads the
+  // aggregate initialisation of a struct with two bases holding strings).
+  SearchOptions() {}  // NOLINT(modernize-use-equals-default)
+  /// Bound on the force, max |F| (A + c for the harmonic force); NaN means T0. Must satisfy
+  /// 0 < force_bound <= T0 (a larger force moves the capsule without impacts, section 6).
+  double force_bound = std::numeric_limits<double>::quiet_NaN();
+  /// Local constrained polish, by NLopt name (LocalAlgorithmNames(); gradients of the LD_
+  /// algorithms by central differences).
+  std::string local_algorithm = "LN_COBYLA";
   /// Seed of the random numbers (restarts, NLopt's stochastic global algorithms).
   unsigned seed = 1;
-  /// Require a stable orbit: spectral radius (docs/model.md section 8) <= rho_max.
-  bool stable = false;
-  /// Largest admissible spectral radius when `stable`; > 0.
-  double rho_max = 1.0;
-  /// Slack at or below which a constraint is reported active; >= 0.
-  double active_tol = 1e-7;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule
   /// (unknown algorithm names list the valid ones).

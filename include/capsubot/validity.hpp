@@ -14,11 +14,13 @@ enum class Condition {
   kPositiveMeanForce,   ///< 1. Pi(tau) > 0, so u > 0
   kMassRatio,           ///< 1. 0 < alpha < 1
   kForceBelowFriction,  ///< max |F| <= T0: the motor alone cannot move the capsule (A + c <= T0)
-  kStick,               ///< 2. the capsule stays at rest on [phi1, tau]: |F| <= T0 there
+  kStick,               ///< 2. the capsule stays at rest on [phi1, tau]: |F| <= (1 - s) T0 there
   kLeftWall,            ///< 3. x >= 0 on [0, tau]
   kRightWall,           ///< 4. x <= 1 on (0, tau): no early second impact
   kSeparation,          ///< 5. the inner body leaves the wall after the impact
-  kClearance,           ///< 6. d <= x_min and x_max <= 1 - d (checked only when d > 0)
+  /// 6. clearance <= x_min and x_max <= 1 - clearance, clearance = max(d, d_s * stroke)
+  /// (checked only when d > 0 or d_s > 0)
+  kClearance,
   /// Every quantity of the orbit and of these checks is a finite number in double precision
   /// (fails with OrbitStatus::kNonFinite, or extrema or forces that overflow).
   kFinite,
@@ -39,6 +41,10 @@ struct Validity {
   double phi_x_max = kNaN;   ///< where it is reached
   double rest_force = kNaN;  ///< max |F| on [phi1, tau], the rest phase
   double max_force = kNaN;   ///< max |F| over the period
+  /// x's range over the period, max(1, x_max) - x_min (x = 1 at the impact); NaN without orbit
+  double stroke = kNaN;
+  /// The clearance required from both walls, max(d, d_s * stroke) (docs/model.md section 12)
+  double clearance = kNaN;
 
   bool valid() const { return checked && violations == 0; }
   bool violated(Condition c) const { return (violations >> static_cast<unsigned>(c)) & 1U; }
@@ -55,8 +61,10 @@ inline bool WithinForceBound(double force, double bound) {
   return force <= bound * (1.0 + kForceBoundRelTol);
 }
 
-/// Checks every condition of docs/model.md section 5 with clearance `margin` (0 <= margin < 0.5).
-Validity CheckValidity(const Orbit& orbit, double margin);
+/// Checks every condition of docs/model.md section 5, with the margins of `params` (section
+/// 12): the clearance max(d, d_s * stroke) from both walls and |F| <= (1 - s) T0 at rest.
+/// params must be valid and be those of the orbit.
+Validity CheckValidity(const Orbit& orbit, const Params& params);
 
 /// An orbit together with its validity: what `capsubot solve` computes.
 struct Solution {

@@ -75,13 +75,7 @@ void DesignInput::Validate() const {
   Require(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && lo < hi,
           fmt::format("inner mass range m2 = {}:{} is invalid: expected 0 < M2MIN < M2MAX [kg]", lo,
                       hi));
-  Require(margin >= 0.0 && margin < 0.5,
-          fmt::format("margin d = {} is invalid: expected 0 <= d < 0.5", margin));
-  Require(
-      std::isfinite(margin_stroke) && margin_stroke >= 0.0,
-      fmt::format("stroke margin d_s = {} is invalid: expected a finite d_s >= 0", margin_stroke));
-  Require(stick_margin >= 0.0 && stick_margin < 1.0,
-          fmt::format("stick margin s = {} is invalid: expected 0 <= s < 1", stick_margin));
+  Params{1.0, e, margin, margin_stroke, stick_margin}.Validate();  // the margins' rules
   Require(rho_max > 0.0, fmt::format("rho_max = {} is invalid: expected rho_max > 0 (infinity: "
                                      "no stability requirement)",
                                      rho_max));
@@ -109,6 +103,8 @@ DesignModel MapToModel(const DesignInput& in, double m2, double frequency) {
   m.params.T0 = in.mu * in.g / w2L;
   m.params.e = in.e;
   m.params.margin = in.margin;
+  m.params.margin_stroke = in.margin_stroke;
+  m.params.stick_margin = in.stick_margin;
   m.alpha = m2 / (in.m1 + m2);
   return m;
 }

@@ -5,7 +5,8 @@
 #include <cmath>
 
 #include "capsubot/design.hpp"
-#include "capsubot/optimize_result.hpp"
+#include "capsubot/optimize_options.hpp"
+#include "capsubot/validity.hpp"
 #include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
 
@@ -37,20 +38,22 @@ void ToUserUnits(const DesignInput& in, Gait& gait) {
 }
 
 // The robustness limits of docs/model.md section 12 whose slack at the gait is below
-// kBindingTol, in the order of design.hpp. The clearance is the larger of d and d_s times the
-// stroke 1 - x_min (x reaches 1 at the impact).
+// kBindingTol, in the order of design.hpp: the walls at the required clearance (validity's
+// max(d, d_s * stroke)), the stick margin, the force bound and the stability bound.
 std::vector<std::string> Binding(const DesignInput& in, const Gait& gait) {
-  namespace n = constraint_names;
   const Validity& v = gait.solution.validity;
   const double T0 = gait.model.params.T0;
-  const double clearance = std::max(in.margin, in.margin_stroke * (1.0 - v.x_min));
   std::vector<std::string> names;
-  if (v.x_min - clearance <= kBindingTol) names.emplace_back(n::kLeftWall);
-  if (1.0 - clearance - v.x_max <= kBindingTol) names.emplace_back(n::kRightWall);  // NaN: no
-  if ((1.0 - in.stick_margin) - v.rest_force / T0 <= kBindingTol) names.emplace_back(n::kStick);
-  if (1.0 - v.max_force / T0 <= kBindingTol) names.emplace_back(n::kForceBound);
+  if (v.x_min - v.clearance <= kBindingTol) names.emplace_back(ConditionName(Condition::kLeftWall));
+  if (1.0 - v.clearance - v.x_max <= kBindingTol) {  // NaN (no interior maximum): not binding
+    names.emplace_back(ConditionName(Condition::kRightWall));
+  }
+  if ((1.0 - in.stick_margin) - v.rest_force / T0 <= kBindingTol) {
+    names.emplace_back(ConditionName(Condition::kStick));
+  }
+  if (1.0 - v.max_force / T0 <= kBindingTol) names.emplace_back(kForceBoundName);
   if (in.rho_max - gait.stability.spectral_radius <= kBindingTol) {
-    names.emplace_back(n::kStability);
+    names.emplace_back(MarginName(Margin::kRhoMax));
   }
   return names;
 }

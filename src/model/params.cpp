@@ -20,6 +20,14 @@ void Params::Validate() const {
     throw std::invalid_argument(
         fmt::format("margin d = {} is invalid: expected 0 <= d < 0.5", margin));
   }
+  if (!(margin_stroke >= 0.0 && margin_stroke < 0.5)) {
+    throw std::invalid_argument(
+        fmt::format("stroke margin d_s = {} is invalid: expected 0 <= d_s < 0.5", margin_stroke));
+  }
+  if (!(stick_margin >= 0.0 && stick_margin < 1.0)) {
+    throw std::invalid_argument(
+        fmt::format("stick margin s = {} is invalid: expected 0 <= s < 1", stick_margin));
+  }
 }
 
 }  // namespace capsubot

@@ -5,65 +5,106 @@
 #include <algorithm>
 #include <cmath>
 
-#include "capsubot/optimize_result.hpp"
 #include "capsubot/stability.hpp"
 
 namespace capsubot::detail {
+namespace {
 
-const char* ConstraintName(int index) {
-  namespace n = constraint_names;
+bool ClearanceRequired(const Params& p) { return p.margin > 0.0 || p.margin_stroke > 0.0; }
+
+// The validity condition that row i checks (kCount for the problem's own requirements).
+Condition ConditionOf(int index) {
   switch (index) {
     case kLeftWallIndex:
-      return n::kLeftWall;
+      return Condition::kLeftWall;
     case kRightWallIndex:
-      return n::kRightWall;
+      return Condition::kRightWall;
+    case kClearanceLeftIndex:
+    case kClearanceRightIndex:
+      return Condition::kClearance;
     case kAlphaLowIndex:
-      return n::kMassRatioLow;
     case kAlphaHighIndex:
-      return n::kMassRatioHigh;
+      return Condition::kMassRatio;
     case kStickIndex:
-      return n::kStick;
-    case kForceBoundIndex:
-      return n::kForceBound;
+      return Condition::kStick;
     case kSeparationIndex:
-      return n::kSeparation;
-    case kStabilityIndex:
-      return n::kStability;
+      return Condition::kSeparation;
     default:
-      return "unknown";
+      return Condition::kCount;
   }
 }
+
+}  // namespace
+
+const char* ConstraintName(int index) {
+  if (index == kForceBoundIndex) return kForceBoundName;
+  if (index == kRhoMaxIndex) return MarginName(Margin::kRhoMax);
+  return ConditionName(ConditionOf(index));
+}
+
+bool ConstraintSetup::Applies(int index) const {
+  switch (index) {
+    case kLeftWallIndex:
+    case kRightWallIndex:
+      return !ClearanceRequired(params);
+    case kClearanceLeftIndex:
+    case kClearanceRightIndex:
+      return ClearanceRequired(params);
+    case kForceBoundIndex:
+      return std::isfinite(force_bound);
+    case kRhoMaxIndex:
+      return rho_max < OptimizeOptions::kInf;
+    default:
+      return index >= 0 && index < kConstraintCount;
+  }
+}
+
+double ConstraintSetup::length() const { return std::min(1.0, params.T0); }
 
 Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double force) {
   Evaluation ev;
   const Params& p = setup.params;
   Solution& s = ev.solution;
   s.orbit = ComputeOrbit(forcing, p);
-  s.validity = CheckValidity(s.orbit, p.margin);
+  s.validity = CheckValidity(s.orbit, p);
   const Orbit& o = s.orbit;
   const Validity& v = s.validity;
+  const double length = setup.length();
+  const bool stability_required = setup.Applies(kRhoMaxIndex);
   ev.g.fill(kNoOrbitConstraint);
   ev.force = std::isnan(force) ? v.max_force : force;
   ev.g[kForceBoundIndex] = (ev.force - setup.force_bound) / p.T0;
-  if (!std::isnan(v.rest_force)) ev.g[kStickIndex] = (v.rest_force - p.T0) / p.T0;
-  ev.g[kStabilityIndex] = setup.stable ? kNoOrbitConstraint : 0.0;
+  if (!std::isnan(v.rest_force)) {
+    ev.g[kStickIndex] = (v.rest_force - (1.0 - p.stick_margin) * p.T0) / p.T0;
+  }
+  ev.g[kRhoMaxIndex] = stability_required ? kNoOrbitConstraint : 0.0;
   if (o.ok()) {
     ev.I = o.I;
-    ev.g[kLeftWallIndex] = p.margin - v.x_min;
-    ev.g[kRightWallIndex] = std::isnan(v.x_max) ? -1.0 : v.x_max - (1.0 - p.margin);
+    const bool interior_max = !std::isnan(v.x_max);
+    ev.g[kLeftWallIndex] = -v.x_min;
+    ev.g[kRightWallIndex] = interior_max ? (v.x_max - 1.0) / length : -1.0;
+    ev.g[kClearanceLeftIndex] = v.clearance - v.x_min;
+    ev.g[kClearanceRightIndex] = interior_max ? (v.x_max - (1.0 - v.clearance)) / length : -1.0;
     ev.g[kAlphaLowIndex] = -o.alpha;
     ev.g[kAlphaHighIndex] = o.alpha - 1.0;
-    ev.g[kSeparationIndex] = o.e > 0.0 ? -o.e * o.u : o.ddx(0.0);
-    if (setup.stable) {
+    ev.g[kSeparationIndex] = (o.e > 0.0 ? -o.e * o.u : o.ddx(0.0)) / p.T0;
+    if (stability_required) {
       const Stability st = ComputeStability(o);
       ev.rho = st.spectral_radius;
-      if (st.computed && std::isfinite(ev.rho)) ev.g[kStabilityIndex] = ev.rho - setup.rho_max;
+      if (st.computed && std::isfinite(ev.rho)) ev.g[kRhoMaxIndex] = ev.rho - setup.rho_max;
     }
   }
   ev.violation = 0.0;
-  for (double g : ev.g) ev.violation += std::max(g, 0.0);
-  ev.valid = v.valid() && WithinForceBound(ev.force, setup.force_bound) &&
-             (!setup.stable || ev.g[kStabilityIndex] <= 0.0);
+  for (int i = 0; i < kConstraintCount; ++i) {
+    // A value that is not a number (an orbit at the edge of what doubles resolve) is no orbit:
+    // NLopt must never see one (COBYLA does not return from NaN constraints).
+    if (!std::isfinite(ev.g[i])) ev.g[i] = kNoOrbitConstraint;
+    if (setup.Applies(i)) ev.violation += std::max(ev.g[i], 0.0);
+  }
+  if (!std::isfinite(ev.I)) ev.I = -std::numeric_limits<double>::infinity();
+  ev.valid = v.valid() && ev.I > -std::numeric_limits<double>::infinity() &&
+             WithinForceBound(ev.force, setup.force_bound) &&
+             (!stability_required || ev.g[kRhoMaxIndex] <= 0.0);
   // CheckValidity and the g_i agree on the orbit conditions; a valid orbit has no violation.
   if (ev.valid) ev.violation = 0.0;
   return ev;
@@ -87,16 +128,44 @@ std::vector<std::string> ActiveConstraints(const Evaluation& ev, const Constrain
   std::vector<std::string> names;
   if (!ev.solution.orbit.ok()) return names;
   for (int i = 0; i < kConstraintCount; ++i) {
-    if (i == kForceBoundIndex && !std::isfinite(setup.force_bound)) continue;
-    if (i == kStabilityIndex && !setup.stable) continue;
-    if (std::abs(ev.g[i]) <= tol) names.emplace_back(ConstraintName(i));
+    if (!setup.Applies(i) || !(std::abs(ev.g[i]) <= tol)) continue;
+    const char* name = ConstraintName(i);
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.emplace_back(name);
   }
   return names;
+}
+
+std::vector<Margin> BindingMargins(const Evaluation& ev, const ConstraintSetup& setup, double tol) {
+  std::vector<Margin> margins;
+  if (!ev.solution.orbit.ok()) return margins;
+  auto active = [&](int i) { return setup.Applies(i) && std::abs(ev.g[i]) <= tol; };
+  const Params& p = setup.params;
+  if (active(kClearanceLeftIndex) || active(kClearanceRightIndex)) {
+    const double stroke_clearance = p.margin_stroke * ev.solution.validity.stroke;
+    margins.push_back(p.margin >= stroke_clearance ? Margin::kClearance : Margin::kClearanceStroke);
+  }
+  if (p.stick_margin > 0.0 && active(kStickIndex)) margins.push_back(Margin::kStickMargin);
+  if (active(kRhoMaxIndex)) margins.push_back(Margin::kRhoMax);
+  return margins;
+}
+
+std::string RequirementWords(const ConstraintSetup& setup) {
+  const Params& p = setup.params;
+  std::string words;
+  if (p.margin > 0.0 || p.margin_stroke > 0.0 || p.stick_margin > 0.0) {
+    words = fmt::format("margins d = {:g}, d_s = {:g}, s = {:g}", p.margin, p.margin_stroke,
+                        p.stick_margin);
+  }
+  if (setup.Applies(kRhoMaxIndex)) {
+    words += fmt::format("{}spectral radius <= {:g}", words.empty() ? "" : "; ", setup.rho_max);
+  }
+  return words.empty() ? words : " (" + words + ")";
 }
 
 std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setup) {
   const Solution& s = ev.solution;
   const Validity& v = s.validity;
+  const Params& p = setup.params;
   std::string out;
   auto add = [&out](const std::string& item) { out += (out.empty() ? "" : ", ") + item; };
   for (int i = 0; i < static_cast<int>(Condition::kCount); ++i) {
@@ -110,16 +179,15 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
         add(fmt::format("right_wall (x_max = {:.6g} > 1)", v.x_max));
         break;
       case Condition::kClearance:
-        add(fmt::format("clearance (x_min = {:.6g}, x_max = {:.6g}, margin {:g})", v.x_min, v.x_max,
-                        setup.params.margin));
+        add(fmt::format("clearance (x_min = {:.6g}, x_max = {:.6g}, clearance {:.6g})", v.x_min,
+                        v.x_max, v.clearance));
         break;
       case Condition::kStick:
-        add(fmt::format("stick (max |F| at rest = {:.6g} > T0 = {:g})", v.rest_force,
-                        setup.params.T0));
+        add(fmt::format("stick (max |F| at rest = {:.6g} > (1 - s) T0 = {:g})", v.rest_force,
+                        (1.0 - p.stick_margin) * p.T0));
         break;
       case Condition::kForceBelowFriction:
-        add(fmt::format("force_below_friction (max |F| = {:.6g} > T0 = {:g})", v.max_force,
-                        setup.params.T0));
+        add(fmt::format("force_below_friction (max |F| = {:.6g} > T0 = {:g})", v.max_force, p.T0));
         break;
       case Condition::kMassRatio:
         add("mass_ratio (no alpha in (0, 1) closes the orbit)");
@@ -130,10 +198,11 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
   }
   if (!WithinForceBound(ev.force, setup.force_bound) &&
       !v.violated(Condition::kForceBelowFriction)) {
-    add(fmt::format("force_bound (max |F| = {:.6g} > {:g})", ev.force, setup.force_bound));
+    add(fmt::format("{} (max |F| = {:.6g} > {:g})", kForceBoundName, ev.force, setup.force_bound));
   }
-  if (setup.stable && v.valid() && !(ev.g[kStabilityIndex] <= 0.0)) {
-    add(fmt::format("stability (spectral radius = {:.6g} > {:g})", ev.rho, setup.rho_max));
+  if (setup.Applies(kRhoMaxIndex) && v.valid() && !(ev.g[kRhoMaxIndex] <= 0.0)) {
+    add(fmt::format("{} (spectral radius = {:.6g} > {:g})", MarginName(Margin::kRhoMax), ev.rho,
+                    setup.rho_max));
   }
   return out;
 }

@@ -12,37 +12,51 @@
 #include <vector>
 
 #include "capsubot/forcing.hpp"
+#include "capsubot/optimize_options.hpp"
 #include "capsubot/params.hpp"
 #include "capsubot/validity.hpp"
 
 namespace capsubot::detail {
 
+/// The constraints g_i <= 0. Positions are in units of the length scale min(1, T0): an
+/// orbit's size scales with T0 (docs/model.md section 6), so that at a small T0 the
+/// constraints stay of order 1 for NLopt. Each row checks one validity condition (section 5,
+/// with the margins of section 12) or one requirement of the problem.
 enum ConstraintIndex {
-  kLeftWallIndex,    ///< margin - x_min                       (units of L)
-  kRightWallIndex,   ///< x_max - (1 - margin); -1 without an interior maximum
-  kAlphaLowIndex,    ///< -alpha
-  kAlphaHighIndex,   ///< alpha - 1
-  kStickIndex,       ///< (max |F| on [phi1, tau] - T0) / T0
-  kForceBoundIndex,  ///< (max |F| - force_bound) / T0; holds up to rounding (WithinForceBound)
-  kSeparationIndex,  ///< -e u for e > 0; x''(0+) for e = 0
-  kStabilityIndex,   ///< spectral radius - rho_max (0 when stability is not required)
+  kLeftWallIndex,        ///< -x_min                                (left_wall)
+  kRightWallIndex,       ///< x_max - 1; -1 without an interior maximum (right_wall)
+  kClearanceLeftIndex,   ///< clearance - x_min                     (clearance)
+  kClearanceRightIndex,  ///< x_max - (1 - clearance); -1 without an interior maximum
+  kAlphaLowIndex,        ///< -alpha                                (mass_ratio)
+  kAlphaHighIndex,       ///< alpha - 1                             (mass_ratio)
+  kStickIndex,           ///< (max |F| on [phi1, tau] - (1 - s) T0) / T0   (stick)
+  kForceBoundIndex,      ///< (force - force_bound) / T0; held up to rounding (WithinForceBound)
+  kSeparationIndex,      ///< -e u / T0 for e > 0; x''(0+) / T0 for e = 0  (separation)
+  kRhoMaxIndex,          ///< spectral radius - rho_max             (rho_max)
   kConstraintCount,
 };
 
 /// Value of the orbit constraints where the orbit does not exist.
 inline constexpr double kNoOrbitConstraint = 10.0;
 
-/// Name of constraint i (capsubot::constraint_names).
+/// Name of constraint i: the validity condition it checks (ConditionName), kForceBoundName or
+/// MarginName(Margin::kRhoMax).
 const char* ConstraintName(int index);
 
 /// What the constraints are measured against.
 struct ConstraintSetup {
-  Params params;  ///< T0, e, margin
+  Params params;  ///< T0, e and the margins d, d_s, s
   /// Bound on max |F| (P2, P3), held up to rounding (WithinForceBound); infinity for none
   /// (P1: the force is given, and validity's force_below_friction already bounds it by T0).
   double force_bound = std::numeric_limits<double>::infinity();
-  bool stable = false;  ///< require spectral radius <= rho_max
-  double rho_max = 1.0;
+  /// Largest admissible spectral radius; infinity: no stability requirement.
+  double rho_max = std::numeric_limits<double>::infinity();
+
+  /// Whether row i is part of the problem: the walls without a clearance margin, the
+  /// clearance rows with one (they imply the walls), the force bound and rho_max when set.
+  bool Applies(int index) const;
+  /// The unit of the position constraints: min(1, T0).
+  double length() const;
 };
 
 /// One evaluated candidate.
@@ -51,7 +65,8 @@ struct Evaluation {
   double rho = std::numeric_limits<double>::quiet_NaN();  ///< spectral radius (if computed)
   std::array<double, kConstraintCount> g{};               ///< constraint values, <= 0 holds
   bool valid = false;  ///< every condition of section 5 holds (and stability if asked)
-  double violation = std::numeric_limits<double>::infinity();  ///< sum of max(g_i, 0)
+  /// Sum of max(g_i, 0) over the rows that apply
+  double violation = std::numeric_limits<double>::infinity();
   /// The force held against the bound: max |F|, or the problem's own measure (P2: A + c).
   double force = std::numeric_limits<double>::quiet_NaN();
   /// I if the orbit exists, else -infinity (so any orbit is better than none).
@@ -72,10 +87,17 @@ double SpectralRadius(const Evaluation& ev);
 /// smaller violation among invalid ones.
 bool Better(const Evaluation& a, const Evaluation& b);
 
-/// Names of the constraints with -tol <= g_i <= tol (and g_i defined), in index order; the
-/// force bound only when setup.force_bound is finite.
+/// Names of the constraints that apply with -tol <= g_i <= tol, in index order, each once.
 std::vector<std::string> ActiveConstraints(const Evaluation& ev, const ConstraintSetup& setup,
                                            double tol);
+
+/// The design margins (docs/model.md section 12) among the active constraints: the clearance
+/// by the margin that sets it (d or d_s * stroke), the stick margin when s > 0, rho_max.
+std::vector<Margin> BindingMargins(const Evaluation& ev, const ConstraintSetup& setup, double tol);
+
+/// The requirements beyond section 5 in words, for messages: "" without any, else e.g.
+/// " (margins d = 0, d_s = 0.02, s = 0.02; spectral radius <= 0.9)".
+std::string RequirementWords(const ConstraintSetup& setup);
 
 /// Why an evaluated point is not valid: "left_wall (x_min = -0.31)", ... (empty if valid).
 std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setup);

@@ -31,7 +31,7 @@ struct Context {
   void Values(const double* y, double& f, double* g) {
     const Problem& p = *problem;
     const Evaluation ev = EvaluateAt(p, y, *tracker);
-    f = ev.solution.orbit.ok() ? ev.I / p.objective_scale : 0.0;
+    f = std::isfinite(ev.I) ? ev.I / p.objective_scale : 0.0;
     for (std::size_t i = 0; i < p.constraints.size(); ++i) {
       const int c = p.constraints[i];
       g[i] = ev.g[c];
@@ -102,21 +102,6 @@ void Tracker::Offer(const Evaluation& ev, const double* y, int n) {
   }
 }
 
-Search SetUpSearch(const Params& params, const SearchOptions& options) {
-  params.Validate();
-  Search search;
-  search.bound = options.BoundFor(params);
-  search.local =
-      AlgorithmFromName(options.local_algorithm, LocalAlgorithmNames(), "local_algorithm");
-  Problem& problem = search.problem;
-  problem.setup = {params, search.bound, options.stable, options.rho_max};
-  problem.constraints = {kLeftWallIndex, kRightWallIndex,  kAlphaLowIndex,  kAlphaHighIndex,
-                         kStickIndex,    kForceBoundIndex, kSeparationIndex};
-  if (options.stable) problem.constraints.push_back(kStabilityIndex);
-  problem.objective_scale = params.T0;
-  return search;
-}
-
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker) {
   ++tracker.evaluations;
   const double force =
@@ -130,6 +115,10 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
                    const std::vector<double>& initial_step, double rel_tol, int max_evaluations,
                    Tracker& tracker) {
   RunResult run;
+  if (tracker.deadline.Expired()) {
+    run.status = OptimizeStatus::kMaxTime;
+    return run;
+  }
   for (int j = 0; j < problem.n; ++j) y0[j] = std::clamp(y0[j], problem.lower[j], problem.upper[j]);
   Context ctx{&problem, &tracker, {}, 0.0, {}, {}, {}, false};
   try {
@@ -145,12 +134,15 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
     opt.set_ftol_rel(rel_tol);
     opt.set_maxeval(max_evaluations);
     if (!initial_step.empty()) opt.set_initial_step(initial_step);
+    const double remaining = tracker.deadline.Remaining();
+    if (remaining < HUGE_VAL) opt.set_maxtime(remaining);
     double f = 0.0;
     run.y = y0;
     run.status = StatusFromNlopt(opt.optimize(run.y, f));
   } catch (...) {
     run.status = StatusFromCurrentException(run.message);
   }
+  if (run.status == OptimizeStatus::kMaxTime) tracker.deadline.MarkReached();
   return run;
 }
 
@@ -169,7 +161,6 @@ Evaluation PolishPhase(const Problem& problem,
   if (tracker.best_y.empty()) return best;
   PhaseOptions phase;
   phase.scan_points = kFinalPhaseScan;
-  phase.stable = problem.setup.stable;
   phase.rho_max = problem.setup.rho_max;
   const OptimizeResult p1 =
       OptimizePhase(problem.build(tracker.best_y.data()), problem.setup.params, phase);
@@ -178,25 +169,6 @@ Evaluation PolishPhase(const Problem& problem,
   Evaluation candidate = evaluate(p1.solution.orbit.forcing);
   if (candidate.valid && (!best.valid || candidate.I > best.I)) best = std::move(candidate);
   return best;
-}
-
-OptimizeResult ResultAt(const Evaluation& best, const Problem& problem, const Tracker& tracker,
-                        const BestRun& best_run, const std::string& global_message,
-                        std::string algorithm, double active_tol, std::string& note) {
-  note = best_run.message;
-  if (!global_message.empty()) note += (note.empty() ? "" : "; ") + global_message;
-  OptimizeResult result;
-  result.algorithm = std::move(algorithm);
-  result.evaluations = tracker.evaluations;
-  result.solution = best.solution;
-  result.spectral_radius = SpectralRadius(best);
-  if (best.valid) {
-    result.status = best_run.status;
-    result.active_constraints = ActiveConstraints(best, problem.setup, active_tol);
-  } else {
-    result.status = OptimizeStatus::kNoValidOrbit;
-  }
-  return result;
 }
 
 }  // namespace capsubot::detail

@@ -11,6 +11,7 @@
 #include "capsubot/optimize_result.hpp"
 #include "capsubot/optimize_search.hpp"
 #include "optimize/nlopt_constraints.hpp"
+#include "optimize/optimize_common.hpp"
 
 namespace capsubot::detail {
 
@@ -27,11 +28,13 @@ struct Problem {
   std::function<double(const double* y)> force_total;
 };
 
-/// The best point seen over every run (valid beats invalid, then larger I), and the cost.
+/// The best point seen over every run (valid beats invalid, then larger I), the cost, and the
+/// time limit of the whole optimisation.
 struct Tracker {
   Evaluation best;
   std::vector<double> best_y;
   int evaluations = 0;
+  Deadline deadline;  ///< reached: the search stopped early
   void Offer(const Evaluation& ev, const double* y, int n);
 };
 
@@ -49,23 +52,14 @@ struct RunResult {
   std::vector<double> y;  ///< NLopt's final point
 };
 
-/// What P2 and P3 share, for validated options: the bound in force, the local algorithm, and a
-/// problem with the setup, every condition of section 5 and the force bound as NLopt
-/// constraints (stability too if asked) and I/T0 as objective. The caller adds the variables,
-/// their bounds and `build`. Throws std::invalid_argument for bad params or a bound above T0.
-struct Search {
-  double bound = 0.0;
-  nlopt::algorithm local = nlopt::LN_COBYLA;
-  Problem problem;
-};
-Search SetUpSearch(const Params& params, const SearchOptions& options);
-
 /// Evaluates the problem at y (counted in the tracker, offered to it).
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker);
 
 /// Runs `algorithm` from y0 (clamped into the bounds) with relative tolerance rel_tol on y
 /// and on I, at most max_evaluations evaluations; initial_step may be empty (NLopt default).
 /// Every NLopt result and exception is mapped to the returned status; never throws for them.
+/// Stops at the tracker's deadline (status kMaxTime, deadline reached); does not start
+/// after it.
 RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vector<double> y0,
                    const std::vector<double>& initial_step, double rel_tol, int max_evaluations,
                    Tracker& tracker);
@@ -84,13 +78,5 @@ void PolishLocally(nlopt::algorithm algorithm, const Problem& problem,
 /// bit. Without a best point (no evaluation yet), returns the empty tracker.best.
 Evaluation PolishPhase(const Problem& problem,
                        const std::function<Evaluation(const Forcing&)>& evaluate, Tracker& tracker);
-
-/// The result of P2 or P3 at its best point: solution, spectral radius, evaluations and
-/// algorithm; if the point is valid, status best_run.status and the active constraints (slack
-/// within active_tol), else kNoValidOrbit. `note` (NLopt's messages) gets best_run.message
-/// and global_message joined by "; ". The caller writes the result's message.
-OptimizeResult ResultAt(const Evaluation& best, const Problem& problem, const Tracker& tracker,
-                        const BestRun& best_run, const std::string& global_message,
-                        std::string algorithm, double active_tol, std::string& note);
 
 }  // namespace capsubot::detail

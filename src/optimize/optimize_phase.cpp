@@ -26,7 +26,6 @@ namespace {
 using detail::kPi;
 using detail::Require;
 
-constexpr int kMinScanPoints = 16;
 constexpr int kMaxBrentIterations = 100;
 // A point whose constraint violation is at most this is invalid by round-off only (e.g. an
 // orbit grazing a wall in the last bit): it does not end a valid arc, yet it is never
@@ -45,8 +44,8 @@ struct GslMinimizerFree {
 
 class PhaseSearch {
  public:
-  PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup)
-      : forcing_(forcing), setup_(setup) {}
+  PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup, double max_time)
+      : forcing_(forcing), setup_(setup), deadline_(max_time) {}
 
   // The orbit at phi0, reduced into [-pi, pi) first: the search works on unwrapped phases
   // (arcs across -pi), and the evaluated numbers are then exactly the reported ones.
@@ -159,10 +158,13 @@ class PhaseSearch {
   }
 
   int evaluations() const { return evaluations_; }
+  /// True once the time limit has passed (every stage then stops at its next step).
+  bool Expired() { return deadline_.Expired(); }
 
  private:
   Forcing forcing_;
   detail::ConstraintSetup setup_;
+  detail::Deadline deadline_;
   int evaluations_ = 0;
   std::unique_ptr<gsl_min_fminimizer, GslMinimizerFree> minimizer_;
 };
@@ -170,20 +172,10 @@ class PhaseSearch {
 }  // namespace
 
 void PhaseOptions::Validate() const {
-  if (scan_points < kMinScanPoints) {
-    throw std::invalid_argument(fmt::format("scan_points = {} is invalid: expected at least {}",
-                                            scan_points, kMinScanPoints));
-  }
-  if (!(std::isfinite(phase_tol) && phase_tol > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("phase_tol = {} is invalid: expected a finite phase_tol > 0", phase_tol));
-  }
-  if (!(std::isfinite(rho_max) && rho_max > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("rho_max = {} is invalid: expected a finite rho_max > 0", rho_max));
-  }
-  Require(std::isfinite(active_tol) && active_tol >= 0.0,
-          fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
+  detail::RequireCount("scan_points", scan_points, kMinScanPoints, kMaxScanPoints);
+  Require(std::isfinite(phase_tol) && phase_tol > 0.0,
+          fmt::format("phase_tol = {} is invalid: expected a finite phase_tol > 0", phase_tol));
+  OptimizeOptions::Validate();
 }
 
 OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
@@ -191,8 +183,8 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   params.Validate();
   options.Validate();
   // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
-  const detail::ConstraintSetup setup{params, HUGE_VAL, options.stable, options.rho_max};
-  PhaseSearch search(forcing, setup);
+  const detail::ConstraintSetup setup{params, HUGE_VAL, options.rho_max};
+  PhaseSearch search(forcing, setup, options.max_time);
   const int n = options.scan_points;
   const double h = kTau / n;
   std::vector<double> phase(n);
@@ -201,6 +193,10 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   int best = 0, valid_count = 0;
   for (int i = 0; i < n; ++i) {
     phase[i] = -kPi + h * i;
+    if (search.Expired()) {  // not scanned: outside every arc
+      scan[i].violation = HUGE_VAL;
+      continue;
+    }
     scan[i] = search.At(phase[i]);
     if (scan[i].valid) ++valid_count;
     arc[i] = InArc(scan[i]);
@@ -233,6 +229,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
       dips.resize(kMaxHiddenArcs);
     }
     for (int i : dips) {
+      if (search.Expired()) break;
       search.HiddenArc(beside(i, prev(i)), phase[i], beside(i, next(i)), options.phase_tol, winner);
     }
   }
@@ -245,7 +242,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     for (int i = 0; i < n; ++i) {
       const int j = next(i);
-      if (arc[i] == arc[j]) continue;
+      if (arc[i] == arc[j] || search.Expired()) continue;
       const int v = arc[i] ? i : j, w = arc[i] ? j : i;
       double edge_phase = phase[v];
       detail::Evaluation edge =
@@ -255,7 +252,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     // Polish around every local maximum of I among the valid scan points.
     for (int i = 0; i < n; ++i) {
-      if (!arc[i]) continue;
+      if (!arc[i] || search.Expired()) continue;
       const int a = prev(i), b = next(i);
       if ((arc[a] && scan[a].I > scan[i].I) || (arc[b] && scan[b].I > scan[i].I)) continue;
       search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);
@@ -266,18 +263,25 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   result.evaluations = search.evaluations();
   result.solution = winner.solution;
   result.spectral_radius = detail::SpectralRadius(winner);
+  const std::string gait = "orbit" + detail::RequirementWords(setup);
   if (winner.valid) {
     result.status = OptimizeStatus::kOk;
     result.active_constraints = detail::ActiveConstraints(winner, setup, options.active_tol);
+    result.binding = detail::BindingMargins(winner, setup, options.active_tol);
     result.message = fmt::format(
-        "best {}orbit over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
-        options.stable ? "valid stable " : "valid ", winner.I, phi0, valid_count, n);
+        "best valid {} over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
+        gait, winner.I, phi0, valid_count, n);
   } else {
     result.status = OptimizeStatus::kNoValidOrbit;
     result.message = fmt::format(
-        "no phase phi0 gives a valid {}orbit ({} phases scanned); nearest to valid: phi0 = "
+        "no phase phi0 gives a valid {} ({} phases scanned); nearest to valid: phi0 = "
         "{:.10g}, which violates {}",
-        options.stable ? "stable " : "", n, phi0, detail::DescribeViolations(winner, setup));
+        gait, n, phi0, detail::DescribeViolations(winner, setup));
+  }
+  if (search.Expired()) {
+    result.status = OptimizeStatus::kMaxTime;
+    result.message +=
+        fmt::format(" (time limit of {:g} s reached: the search is incomplete)", options.max_time);
   }
   return result;
 }

@@ -1,31 +1,45 @@
 #include "capsubot/optimize_result.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+
+#include "model/enum_names.hpp"
+
 namespace capsubot {
 
 const char* OptimizeStatusName(OptimizeStatus status) {
-  switch (status) {
-    case OptimizeStatus::kNotRun:
-      return "not_run";
-    case OptimizeStatus::kOk:
-      return "ok";
-    case OptimizeStatus::kNoValidOrbit:
-      return "no_valid_orbit";
-    case OptimizeStatus::kMaxEvaluations:
-      return "max_evaluations";
-    case OptimizeStatus::kMaxTime:
-      return "max_time";
-    case OptimizeStatus::kRoundoffLimited:
-      return "roundoff_limited";
-    case OptimizeStatus::kForcedStop:
-      return "forced_stop";
-    case OptimizeStatus::kInvalidArguments:
-      return "invalid_arguments";
-    case OptimizeStatus::kOutOfMemory:
-      return "out_of_memory";
-    case OptimizeStatus::kFailure:
-      return "failure";
+  static constexpr const char* kNames[] = {
+      "not_run",          "ok",          "no_valid_orbit",    "max_evaluations", "max_time",
+      "roundoff_limited", "forced_stop", "invalid_arguments", "out_of_memory",   "failure"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(OptimizeStatus::kFailure) + 1);
+  return detail::EnumName(kNames, status);
+}
+
+const char* MarginName(Margin margin) {
+  static constexpr const char* kNames[] = {"clearance", "clearance_stroke", "stick_margin",
+                                           "rho_max"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(Margin::kCount));
+  return detail::EnumName(kNames, margin);
+}
+
+void OptimizeOptions::Validate() const {
+  if (!(rho_max > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "rho_max = {} is invalid: expected rho_max > 0 (infinity: no stability requirement)",
+        rho_max));
   }
-  return "unknown";
+  if (!(max_time > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "max_time = {} is invalid: expected a time limit max_time > 0 [s] (infinity: none)",
+        max_time));
+  }
+  if (!(std::isfinite(active_tol) && active_tol >= 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("active_tol = {} is invalid: expected a finite active_tol >= 0", active_tol));
+  }
 }
 
 }  // namespace capsubot

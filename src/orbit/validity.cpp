@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
+#include "model/enum_names.hpp"
+#include "numerics/brent.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {
@@ -37,29 +40,11 @@ void PositionExtrema(const Orbit& o, Validity& v) {
 }  // namespace
 
 const char* ConditionName(Condition condition) {
-  switch (condition) {
-    case Condition::kPositiveMeanForce:
-      return "positive_mean_force";
-    case Condition::kMassRatio:
-      return "mass_ratio";
-    case Condition::kForceBelowFriction:
-      return "force_below_friction";
-    case Condition::kStick:
-      return "stick";
-    case Condition::kLeftWall:
-      return "left_wall";
-    case Condition::kRightWall:
-      return "right_wall";
-    case Condition::kSeparation:
-      return "separation";
-    case Condition::kClearance:
-      return "clearance";
-    case Condition::kFinite:
-      return "finite";
-    case Condition::kCount:
-      break;
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {
+      "positive_mean_force", "mass_ratio", "force_below_friction", "stick",
+      "left_wall",           "right_wall", "separation",           "clearance",  "finite"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(Condition::kCount));
+  return detail::EnumName(kNames, condition);
 }
 
 std::vector<std::string> Validity::ViolationNames() const {
@@ -70,7 +55,7 @@ std::vector<std::string> Validity::ViolationNames() const {
   return names;
 }
 
-Validity CheckValidity(const Orbit& o, double margin) {
+Validity CheckValidity(const Orbit& o, const Params& params) {
   Validity v;
   v.checked = true;
   v.max_force = o.forcing.MaxAbs();
@@ -85,7 +70,7 @@ Validity CheckValidity(const Orbit& o, double margin) {
   }
   const Range rest = o.forcing.Bounds(o.phi1, kTau);
   v.rest_force = std::max(std::abs(rest.min), std::abs(rest.max));
-  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, o.T0));
+  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, (1.0 - params.stick_margin) * o.T0));
   if (!o.ok()) {
     Set(v, Condition::kMassRatio, true);
     return v;
@@ -95,8 +80,10 @@ Validity CheckValidity(const Orbit& o, double margin) {
   Set(v, Condition::kRightWall, v.x_max > 1.0);
   // After the impact x' = -e u < 0; for e = 0 the inner body must accelerate away: x''(0+) < 0.
   Set(v, Condition::kSeparation, !(o.e * o.u > 0.0 || (o.e == 0.0 && o.ddx(0.0) < 0.0)));
-  if (margin > 0.0) {
-    Set(v, Condition::kClearance, !(v.x_min >= margin) || v.x_max > 1.0 - margin);
+  v.stroke = (v.x_max > 1.0 ? v.x_max : 1.0) - v.x_min;
+  v.clearance = std::max(params.margin, params.margin_stroke * v.stroke);
+  if (v.clearance > 0.0) {
+    Set(v, Condition::kClearance, !(v.x_min >= v.clearance) || v.x_max > 1.0 - v.clearance);
   }
   // x_max is NaN when x has no interior maximum; an infinite one overflowed.
   Set(v, Condition::kFinite,
@@ -107,7 +94,7 @@ Validity CheckValidity(const Orbit& o, double margin) {
 Solution Solve(const Forcing& forcing, const Params& params) {
   Solution s;
   s.orbit = ComputeOrbit(forcing, params);  // validates params
-  s.validity = CheckValidity(s.orbit, params.margin);
+  s.validity = CheckValidity(s.orbit, params);
   return s;
 }
 

@@ -53,12 +53,15 @@ std::string SweepDescription(const SweepOptions& o) {
   d += fmt::format(" c={} phi0={} K={}", Hex(f.mean()), Hex(f.phi0()), f.harmonics());
   for (int k = 1; k <= f.harmonics(); ++k)
     d += fmt::format(" a{}={} b{}={}", k, Hex(f.a(k)), k, Hex(f.b(k)));
-  d += fmt::format(" T0={} e={} margin={} stability={} optimize_phi0={}", Hex(o.params.T0),
-                   Hex(o.params.e), Hex(o.params.margin), o.stability, o.optimize_phi0);
+  d += fmt::format(
+      " T0={} e={} margin={} margin_stroke={} stick_margin={} stability={} "
+      "optimize_phi0={}",
+      Hex(o.params.T0), Hex(o.params.e), Hex(o.params.margin), Hex(o.params.margin_stroke),
+      Hex(o.params.stick_margin), o.stability, o.optimize_phi0);
   if (o.optimize_phi0) {
     const PhaseOptions& p = o.phase;
-    d += fmt::format(" scan_points={} phase_tol={} stable_only={} rho_max={}", p.scan_points,
-                     Hex(p.phase_tol), p.stable, Hex(p.rho_max));
+    d += fmt::format(" scan_points={} phase_tol={} rho_max={}", p.scan_points, Hex(p.phase_tol),
+                     Hex(p.rho_max));
   }
   return d;
 }

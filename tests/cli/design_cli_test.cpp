@@ -71,7 +71,7 @@ TEST(DesignCli, JsonHoldsEveryKeyInTheUsersUnits) {
   for (const char* key : {"T0", "A", "c", "alpha", "phi0"}) {
     EXPECT_TRUE(g.at("dimensionless").at(key).is_number()) << key;
   }
-  EXPECT_EQ(g["binding"], nlohmann::json::array({"stability"}));
+  EXPECT_EQ(g["binding"], nlohmann::json::array({"rho_max"}));
   // The example of docs/design.md: near 0.21 kg, 1.3 mm/s, 2 mW (the library test checks m2
   // against an independent scan; here the units).
   EXPECT_NEAR(g["m2_kg"].get<double>(), 0.2128, 0.001);

@@ -121,7 +121,7 @@ std::vector<Case> Cases() {
        "ln -s b a && ln -s a b"},
       // Non-finite orbits are a status, never valid.
       {"TinyMeanForceIsNonFinite", "solve --A 0.5 --c 1e-19 --phi0 -2.9 --json", 0, "", none, "",
-       "", "\"status\":\"non_finite\",\"u\":null,\"v_mean\":null,\"v_plus\":null,\"valid\":false"},
+       "", "\"status\":\"non_finite\",\"stroke\":null,\"u\":null,\"v_mean\":null,\"v_plus\":null,\"valid\":false"},
       {"HugeT0IsNonFinite", "solve --A 0.5 --c 0.5 --phi0 -2.9 --T0 1e308 --json", 0, "", none, "", "",
        "\"status\":\"non_finite\""},
       {"NonFiniteTableSaysNotValid", "solve --A 0.5 --c 1e-19 --phi0 -2.9", 0, "", none, "", "",

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -19,9 +22,12 @@ std::string TempPath(const std::string& name) {
   return "/tmp/capsubot_optimize_cli_" + std::to_string(::getpid()) + "_" + name;
 }
 
+// The margins and stability requirement of today's optima: none.
+constexpr const char* kNoMargins = " --margin 0 --margin-stroke 0 --stick-margin 0 --rho-max inf";
+
 TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   const std::string path = TempPath("optimum.json");
-  const auto r = RunCli("optimize --json --output " + path);
+  const auto r = RunCli("optimize --json -o " + path);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto printed = nlohmann::json::parse(r.out);
   std::ifstream in(path);
@@ -36,17 +42,32 @@ TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   EXPECT_EQ(written["fastest_stable"]["status"], "ok");
   EXPECT_LE(written["fastest_stable"]["I"].get<double>(), written["fastest"]["I"].get<double>());
   EXPECT_LE(written["fastest_stable"]["spectral_radius"].get<double>(), 1.0);
+  // The robust gait (defaults d_s = 0.02, s = 0.02, rho_max = 0.9) is slower than both.
+  const auto& robust = written["robust"];
+  EXPECT_EQ(robust["status"], "ok");
+  EXPECT_LE(robust["I"].get<double>(), written["fastest_stable"]["I"].get<double>());
+  EXPECT_LE(robust["spectral_radius"].get<double>(), 0.9 * (1.0 + 1e-12));
+  EXPECT_EQ(written["margin_stroke"], 0.02);
+  EXPECT_EQ(written["stick_margin"], 0.02);
+  EXPECT_EQ(written["rho_max"], 0.9);
 }
 
-TEST(OptimizeCli, MainJobSummaryNamesGaitMassRatioAndSpeed) {
-  const std::string path = TempPath("summary.json");
-  const auto r = RunCli("optimize --output " + path);
-  std::remove(path.c_str());
+TEST(OptimizeCli, MainJobSummaryNamesGaitMassRatioSpeedAndBindingMarginsAndWritesNothing) {
+  const auto r = RunCli("optimize");
   ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* text : {"NO valid gait", "fastest valid gait", "fastest stable gait",
-                           "inner mass ratio", "shell lengths per period", "left_wall"}) {
+  for (const char* text : {"NO valid gait", "fastest robust gait", "fastest valid gait",
+                           "fastest stable gait", "inner mass ratio", "shell lengths per period",
+                           "left_wall", "margins binding  clearance_stroke, rho_max"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << "missing \"" << text << "\" in\n" << r.out;
   }
+  EXPECT_EQ(r.out.find("written:"), std::string::npos);
+  // Run in an empty folder: without -o nothing is written (no results/optimum.json).
+  const std::filesystem::path dir = TempPath("main_job_dir");
+  std::filesystem::create_directories(dir);
+  const std::string in_dir = "cd " + dir.string() + " && " + CAPSUBOT_CLI + " optimize > /dev/null";
+  ASSERT_EQ(std::system(in_dir.c_str()), 0);
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "the main job wrote into " << dir;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(OptimizeCli, ForcingJsonHasEveryDocumentedKey) {
@@ -85,8 +106,10 @@ TEST(OptimizeCli, FourierJsonHasCoefficientsAndTheForceCsvOnePeriod) {
 
 TEST(OptimizeCli, StableAloneMeansSpectralRadiusAtMostOne) {
   // At T0 = 1 every valid phase of this shape is unstable (spectral radius above 3).
-  const auto any = RunCli("optimize --problem phase --A 0.3 --c 0.1 --json");
-  const auto stable = RunCli("optimize --problem phase --A 0.3 --c 0.1 --stable --json");
+  const std::string shape = std::string("optimize --problem phase --A 0.3 --c 0.1 --json") +
+                            " --margin-stroke 0 --stick-margin 0";
+  const auto any = RunCli(shape + " --rho-max inf");
+  const auto stable = RunCli(shape + " --stable");
   ASSERT_EQ(any.status, 0) << any.out;
   ASSERT_EQ(stable.status, 0) << stable.out;
   EXPECT_EQ(nlohmann::json::parse(any.out)["status"], "ok");
@@ -105,9 +128,11 @@ TEST(OptimizeCli, GivenNumbersOutsideTheirRangeAreRejectedNotTakenAsDefaults) {
         Case{"--problem fourier --bound 0",
              "--bound = 0 is invalid: expected a finite bound > 0 (at most T0)"},
         Case{"--bound -1", "--bound = -1 is invalid: expected a finite bound > 0 (at most T0)"},
-        Case{"--problem forcing --starts 0", "--starts = 0 is invalid: expected starts >= 1"},
-        Case{"--problem fourier --starts -2", "--starts = -2 is invalid: expected starts >= 1"},
-        Case{"--starts 0", "--starts = 0 is invalid: expected starts >= 1"},
+        Case{"--problem forcing --starts 0",
+             "--starts = 0 is invalid: expected 1 <= starts <= 1000"},
+        Case{"--problem fourier --starts -2",
+             "--starts = -2 is invalid: expected 1 <= starts <= 1000"},
+        Case{"--starts 0", "--starts = 0 is invalid: expected 1 <= starts <= 1000"},
         Case{"--problem phase --A -1 --c 0.1",
              "--A = -1 is invalid: expected a finite amplitude A >= 0"},
         Case{"--problem phase --A 0.3 --c nan",
@@ -131,13 +156,116 @@ TEST(OptimizeCli, BadInputExitsTwoWithOneLineNamingTheRule) {
         Case{"--problem forcing --margin 0.5", "margin d = 0.5 is invalid"},
         Case{"--problem forcing --bound 2", "force_bound = 2 is invalid"},
         Case{"--problem phase --A 0.3", "--problem phase needs the force shape"},
-        Case{"--problem phase --A 0.3 --c 0.1 --stable 0", "--stable = 0 is invalid"},
+        Case{"--problem phase --A 0.3 --c 0.1 --rho-max 0", "--rho-max = 0 is invalid"},
+        Case{"--problem phase --A 0.3 --c 0.1 --stable --rho-max 0.5", "--stable"},
+        Case{"--problem forcing --margin-stroke 0.5",
+             "stroke margin d_s = 0.5 is invalid: expected 0 <= d_s < 0.5"},
+        Case{"--problem forcing --stick-margin 1",
+             "stick margin s = 1 is invalid: expected 0 <= s < 1"},
+        Case{"--problem forcing --max-time 0", "--max-time = 0 is invalid"},
         Case{"--problem speed", "--problem"},
-        Case{"--output /nonexistent_dir/optimum.json", "/nonexistent_dir/optimum.json"}}) {
+        Case{"-o /nonexistent_dir/optimum.json", "/nonexistent_dir/optimum.json"}}) {
     const auto r = RunCli(std::string("optimize ") + c.args + " 2>&1");
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out;
     EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
   }
+}
+
+TEST(OptimizeCli, ZeroMarginsReproduceTheOptimaOfValidAndOfStableOrbits) {
+  // References: the optima this program printed before it had margins (P2 at T0 = 1, e = 1:
+  // every valid orbit; spectral radius <= 1), to the last digit.
+  constexpr double kValidI = 0.31228817482875976, kStableI = 0.22510921192914857;
+  constexpr double kSameOptimumTol = 1e-12;
+  const auto valid = RunCli(std::string("optimize --problem forcing --json") + kNoMargins);
+  const auto stable = RunCli(
+      "optimize --problem forcing --json --margin 0 --margin-stroke 0 --stick-margin 0 "
+      "--rho-max 1");
+  ASSERT_EQ(valid.status, 0) << valid.out;
+  ASSERT_EQ(stable.status, 0) << stable.out;
+  const auto v = nlohmann::json::parse(valid.out), s = nlohmann::json::parse(stable.out);
+  EXPECT_TRUE(testing::RelNear(v["I"].get<double>(), kValidI, kSameOptimumTol));
+  EXPECT_TRUE(testing::RelNear(s["I"].get<double>(), kStableI, kSameOptimumTol));
+  EXPECT_EQ(v["active_constraints"], nlohmann::json({"left_wall", "right_wall"}));
+  EXPECT_EQ(v["binding"], nlohmann::json::array());
+  EXPECT_EQ(s["binding"], nlohmann::json({"rho_max"}));
+}
+
+TEST(OptimizeCli, RobustDefaultsHoldEveryMarginAndReportWhichBind) {
+  const auto r = RunCli("optimize --problem forcing --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["status"], "ok") << j["message"];
+  const double x_min = j["x_min"], x_max = j["x_max"], stroke = j["stroke"];
+  EXPECT_DOUBLE_EQ(stroke, 1.0 - x_min);  // x_max < 1: the stroke ends at the impact, x = 1
+  EXPECT_GE(x_min, 0.02 * stroke);
+  EXPECT_LE(x_max, 1.0 - 0.02 * stroke);
+  EXPECT_LE(j["spectral_radius"].get<double>(), 0.9);
+  EXPECT_EQ(j["binding"], nlohmann::json({"clearance_stroke", "rho_max"}));
+  EXPECT_EQ(j["valid"], true);
+}
+
+TEST(OptimizeCli, TinyT0ReturnsAValidGaitScaledFromTheReference) {
+  // Once an endless NLopt search (T0 from about 1e-12 to 3e-8). docs/model.md section 6: the
+  // robust gait is scale-free at small T0, so I/T0 is the same at T0 = 1e-9 and 1e-3.
+  for (const char* extra : {"", kNoMargins}) {
+    const auto tiny = RunCli(std::string("optimize --problem forcing --T0 1e-9 --json") + extra);
+    const auto ref = RunCli(std::string("optimize --problem forcing --T0 1e-3 --json") + extra);
+    ASSERT_EQ(tiny.status, 0) << tiny.out;
+    ASSERT_EQ(ref.status, 0) << ref.out;
+    const auto t = nlohmann::json::parse(tiny.out), r = nlohmann::json::parse(ref.out);
+    EXPECT_EQ(t["status"], "ok") << t["message"];
+    EXPECT_EQ(t["valid"], true);
+    EXPECT_TRUE(testing::RelNear(t["I"].get<double>() / 1e-9, r["I"].get<double>() / 1e-3, 1e-9))
+        << extra;
+  }
+}
+
+TEST(OptimizeCli, HugeT0FindsTheValidGaitsThatExist) {
+  // Once "no valid gait": at T0 = 1e6 valid gaits need forces of order 1e-6 of the bound.
+  const auto r = RunCli(std::string("optimize --problem forcing --T0 1e6 --json") + kNoMargins);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "ok") << j["message"];
+  EXPECT_EQ(j["valid"], true);
+  EXPECT_GT(j["I"].get<double>(), 0.0);
+}
+
+TEST(OptimizeCli, TimeLimitStopsTheSearchWithItsStatus) {
+  const auto r = RunCli("optimize --problem forcing --max-time 0.005 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "max_time");
+  EXPECT_NE(j["message"].get<std::string>().find("time limit of 0.005 s reached"),
+            std::string::npos)
+      << j["message"];
+}
+
+TEST(OptimizeCli, SizeOptionsAreBoundedBeforeAnyWork) {
+  // Each of these once ran for ever or allocated until the process died.
+  struct Case {
+    const char* args;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"optimize --problem forcing --hops 2000000000",
+       "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000"},
+      {"optimize --problem fourier --starts 2000000000",
+       "--starts = 2000000000 is invalid: expected 1 <= starts <= 1000"},
+      {"optimize --problem forcing --global-algorithm GN_ISRES --global-evaluations 2000000000",
+       "--global-evaluations = 2000000000 is invalid: expected 10 <= global-evaluations <= "
+       "10000000"},
+      {"sweep --grid A=0:1:2 --c 0.1 --optimize phi0 --scan-points 2000000000 -o -",
+       "--scan-points = 2000000000 is invalid: expected 16 <= scan-points <= 1000000"},
+  };
+  int checked = 0;
+  for (const Case& c : cases) {
+    const auto r = RunCli(std::string(c.args) + " 2>&1");
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);
 }
 
 }  // namespace

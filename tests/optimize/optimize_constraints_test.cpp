@@ -1,4 +1,4 @@
-// The constraints of P1, P2 and P3 (src/optimize/nlopt_constraints.cpp, docs/model.md sections 5
+// The constraints shared by P1, P2 and P3 (src/optimize/nlopt_constraints.cpp, docs/model.md sections 5
 // and 7): a force touching its bound is within it up to rounding, as validity itself says.
 
 #include <gtest/gtest.h>

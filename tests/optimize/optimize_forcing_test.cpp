@@ -51,7 +51,7 @@ std::ostream& operator<<(std::ostream& os, const DesignCase& k) {
 ForcingDesignOptions OptionsFor(const DesignCase& k) {
   ForcingDesignOptions o;
   o.force_bound = k.bound_ratio * k.T0;
-  o.stable = k.stable;
+  if (k.stable) o.rho_max = 1.0;
   return o;
 }
 
@@ -109,8 +109,10 @@ TEST_P(ForcingOptimum, SatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   if (k.stable) {
     EXPECT_LE(ComputeStability(s.orbit).spectral_radius, 1.0);
   }
-  // The geometric conditions bind (docs/model.md section 7): at least one wall is active.
-  EXPECT_TRUE(Has(r.active_constraints, "left_wall") || Has(r.active_constraints, "right_wall"))
+  // The geometric conditions bind (docs/model.md section 7): at least one wall is active, or
+  // with a clearance margin the clearance from a wall.
+  EXPECT_TRUE(Has(r.active_constraints, "left_wall") || Has(r.active_constraints, "right_wall") ||
+              (k.margin > 0.0 && Has(r.active_constraints, "clearance")))
       << r.message;
 }
 
@@ -121,6 +123,54 @@ INSTANTIATE_TEST_SUITE_P(Designs, ForcingOptimum,
                                            DesignCase{0.3, 0.6, 0.05, 0.8, false},
                                            // Rugged: the clearance condition jumps.
                                            DesignCase{1.0, 0.2, 0.1, 1.0, false}));
+
+TEST(OptimizeForcing, RobustOptimumHoldsEveryMarginAndNamesTheOnesThatBind) {
+  // The command's robust defaults (docs/model.md section 12), re-checked through Solve with
+  // the same margins and through the stability of the orbit.
+  const Params params{1.0, 1.0, 0.0, 0.02, 0.02};
+  ForcingDesignOptions o;
+  o.rho_max = 0.9;
+  const OptimizeResult r = OptimizeForcing(params, o);
+  ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  const Solution s = Solve(r.solution.orbit.forcing, params);
+  ASSERT_TRUE(s.validity.valid()) << s.validity.violations;
+  const double rho = ComputeStability(s.orbit).spectral_radius;
+  EXPECT_LE(rho, o.rho_max);
+  const double clearance = 0.02 * s.validity.stroke;
+  EXPECT_GE(s.validity.x_min, clearance);
+  // Each margin reported as binding is reached within the reporting tolerance.
+  int binding = 0;
+  for (Margin m : r.binding) {
+    if (m == Margin::kRhoMax) {
+      EXPECT_NEAR(rho, o.rho_max, o.active_tol);
+    } else if (m == Margin::kClearanceStroke) {
+      EXPECT_NEAR(s.validity.x_min, clearance, o.active_tol);
+    }
+    ++binding;
+  }
+  EXPECT_EQ(binding, 2) << r.message;
+  // Robustness costs speed: the exact stable optimum (no margins, rho <= 1) is faster.
+  ForcingDesignOptions stable;
+  stable.rho_max = 1.0;
+  EXPECT_LT(r.solution.orbit.I, OptimizeForcing(Params{}, stable).solution.orbit.I);
+}
+
+TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) {
+  // docs/model.md section 6: A, c, T0 -> k A, k c, k T0 keeps every condition of the robust
+  // problem but the left wall, which only relaxes: the robust optimum at T0 = 1e-7 is the one
+  // at 1e-3 scaled by 1e-4 (the left wall does not bind there).
+  const Params reference{1e-3, 1.0, 0.0, 0.02, 0.02}, tiny{1e-7, 1.0, 0.0, 0.02, 0.02};
+  ForcingDesignOptions o;
+  o.rho_max = 0.9;
+  const OptimizeResult at_reference = OptimizeForcing(reference, o);
+  const OptimizeResult at_tiny = OptimizeForcing(tiny, o);
+  ASSERT_EQ(at_tiny.status, OptimizeStatus::kOk) << at_tiny.message;
+  EXPECT_TRUE(testing::RelNear(at_tiny.solution.orbit.I, 1e-4 * at_reference.solution.orbit.I,
+                               kScalingTol));
+  EXPECT_TRUE(
+      testing::Near(at_tiny.solution.orbit.alpha, at_reference.solution.orbit.alpha, kScalingTol));
+  EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny).validity.valid());
+}
 
 TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   // docs/model.md section 6: A, c, T0 -> k A, k c, k T0 keeps phi1, alpha and the right-wall,
@@ -246,9 +296,17 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   Params wide;
   wide.margin = 0.5;
   EXPECT_EQ(ErrorOf(wide, {}), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");
+  ForcingDesignOptions many_hops;
+  many_hops.hops = 2000000000;
+  EXPECT_EQ(ErrorOf(Params{}, many_hops),
+            "hops = 2000000000 is invalid: expected 0 <= hops <= 1000");
+  ForcingDesignOptions no_time;
+  no_time.max_time = 0.0;
+  EXPECT_EQ(ErrorOf(Params{}, no_time),
+            "max_time = 0 is invalid: expected a time limit max_time > 0 [s] (infinity: none)");
   ForcingDesignOptions no_starts;
   no_starts.starts = 0;
-  EXPECT_EQ(ErrorOf(Params{}, no_starts), "starts = 0 is invalid: expected starts >= 1");
+  EXPECT_EQ(ErrorOf(Params{}, no_starts), "starts = 0 is invalid: expected 1 <= starts <= 1000");
 }
 
 TEST(NloptStatus, MapsEveryResultCode) {

@@ -28,7 +28,7 @@ constexpr double kSimulatorTol = 1e-8;
 FourierOptions Quick(int K) {
   FourierOptions o;
   o.harmonics = K;
-  o.starts = 4;  // a few polishes keep the test fast; the gain only grows with more
+  o.search.starts = 4;  // a few polishes keep the test fast; the gain only grows with more
   return o;
 }
 
@@ -49,19 +49,19 @@ TEST(OptimizeFourier, KeepsTheHarmonicOptimumWhenTheForceBoundBinds) {
   const Params params{0.3, 1.0, 0.0};
   FourierOptions o;
   o.harmonics = 3;
-  o.starts = 2;
-  o.force_bound = 0.24;
+  o.search.starts = 2;
+  o.harmonic.force_bound = 0.24;
   const OptimizeResult r = OptimizeFourier(params, o);
   ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
   EXPECT_GE(r.solution.orbit.I, r.baseline_I * (1.0 - kSameValueTol));
   EXPECT_TRUE(Solve(r.solution.orbit.forcing, params).validity.valid());
-  EXPECT_TRUE(WithinForceBound(r.solution.validity.max_force, o.force_bound));
+  EXPECT_TRUE(WithinForceBound(r.solution.validity.max_force, o.harmonic.force_bound));
 }
 
 TEST(OptimizeFourier, OptimumSatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   const Params params{0.3, 0.8, 0.02};
   FourierOptions o = Quick(2);
-  o.force_bound = 0.25;
+  o.harmonic.force_bound = 0.25;
   const OptimizeResult r = OptimizeFourier(params, o);
   ASSERT_TRUE(r.found()) << r.message;
   const Forcing& f = r.solution.orbit.forcing;
@@ -104,12 +104,12 @@ TEST(OptimizeFourier, BadOptionsAreRejectedWithTheRule) {
   none.harmonics = 0;
   EXPECT_EQ(error(none), "harmonics K = 0 is invalid: expected 1 <= K <= 16");
   FourierOptions unknown;
-  unknown.local_algorithm = "cobyla";
+  unknown.harmonic.local_algorithm = "cobyla";
   EXPECT_EQ(error(unknown),
             "local_algorithm = \"cobyla\" is invalid: expected one of LN_COBYLA, LD_SLSQP, "
             "LD_MMA, LD_CCSAQ");
   FourierOptions above;
-  above.force_bound = 1.5;
+  above.harmonic.force_bound = 1.5;
   EXPECT_NE(error(above).find("force_bound = 1.5 is invalid: expected force_bound <= T0 = 1"),
             std::string::npos);
 }

@@ -52,13 +52,15 @@ ScanBest DenseScan(const Forcing& shape, const Params& params, bool stable = fal
 
 struct PhaseCase {
   double A_ratio, c_ratio, T0, e, margin;  // A = A_ratio T0, c = c_ratio T0
+  double margin_stroke = 0.0, stick_margin = 0.0;
+  Params params() const { return Params{T0, e, margin, margin_stroke, stick_margin}; }
 };
 
 class PhaseOptimum : public ::testing::TestWithParam<PhaseCase> {};
 
 TEST_P(PhaseOptimum, IsAtLeastTheBestValidPointOfADenseScan) {
   const PhaseCase k = GetParam();
-  const Params params{k.T0, k.e, k.margin};
+  const Params params = k.params();
   const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
   const ScanBest scan = DenseScan(shape, params);
   ASSERT_GT(scan.valid, 0) << "test case without valid orbits";
@@ -71,7 +73,7 @@ TEST_P(PhaseOptimum, IsAtLeastTheBestValidPointOfADenseScan) {
 
 TEST_P(PhaseOptimum, IsValidWhenRecheckedThroughSolve) {
   const PhaseCase k = GetParam();
-  const Params params{k.T0, k.e, k.margin};
+  const Params params = k.params();
   const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
   const OptimizeResult r = OptimizePhase(shape, params);
   ASSERT_TRUE(r.found()) << r.message;
@@ -90,7 +92,10 @@ INSTANTIATE_TEST_SUITE_P(
     Shapes, PhaseOptimum,
     ::testing::Values(PhaseCase{0.5, 0.5, 0.02, 1.0, 0.0}, PhaseCase{0.5, 0.5, 0.1, 1.0, 0.0},
                       PhaseCase{0.3, 0.1, 1.0, 1.0, 0.0}, PhaseCase{0.6, 0.3, 0.05, 1.0, 0.1},
-                      PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0}, PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0}));
+                      PhaseCase{0.2, 0.1, 0.3, 0.7, 0.0}, PhaseCase{0.8, 0.2, 0.01, 0.3, 0.0},
+                      // The robust margins of docs/model.md section 12.
+                      PhaseCase{0.5, 0.4, 0.05, 1.0, 0.0, 0.02, 0.02},
+                      PhaseCase{0.3, 0.1, 0.3, 0.8, 0.01, 0.05, 0.1}));
 
 // The force touching the friction bound, A + c = T0 (the paper's boundary, and a diagonal of
 // `capsubot sweep --optimize phi0`): max |F| equals T0 up to the last bit of its evaluation,
@@ -115,7 +120,7 @@ TEST_P(PhaseOnFrictionBoundDiagonal, FindsTheValidPhasesSolveFinds) {
   EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
 }
 
-// 0.006 + 0.003 is 0.009 plus one ulp in floating point (the review's example); the others
+// 0.006 + 0.003 is 0.009 plus one ulp in floating point; the others
 // are diagonal points of a sweep over (A, c) at T0 = 0.1 and 0.05.
 INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOnFrictionBoundDiagonal,
                          ::testing::Values(DiagonalCase{0.006, 0.003, 0.009},
@@ -195,7 +200,6 @@ TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
   const Params params{0.3, 1.0, 0.0};
   const Forcing shape = Forcing::Harmonic(0.09, 0.03, 0.0);
   PhaseOptions options;
-  options.stable = true;
   options.rho_max = 1.0;
   const ScanBest scan = DenseScan(shape, params, true, 1.0);
   const OptimizeResult r = OptimizePhase(shape, params, options);
@@ -216,7 +220,8 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
     OptimizePhase(shape, Params{}, few);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "scan_points = 3 is invalid: expected at least 16");
+    EXPECT_EQ(std::string(e.what()),
+              "scan_points = 3 is invalid: expected 16 <= scan_points <= 1000000");
   }
   PhaseOptions rho;
   rho.rho_max = 0.0;
@@ -224,7 +229,9 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
     OptimizePhase(shape, Params{}, rho);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "rho_max = 0 is invalid: expected a finite rho_max > 0");
+    EXPECT_EQ(std::string(e.what()),
+              "rho_max = 0 is invalid: expected rho_max > 0 (infinity: no stability "
+              "requirement)");
   }
   Params wide;
   wide.margin = 0.5;

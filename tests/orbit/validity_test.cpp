@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "test_utils.hpp"
 
@@ -105,7 +108,7 @@ TEST(Validity, EarlyRightWallContactIsReported) {
 }
 
 TEST(Validity, MotorStrongerThanFrictionIsReported) {
-  // A + c > T0: not an input error, a violated condition (issue 2, item 8).
+  // A + c > T0: not an input error, a violated condition.
   const Solution s = Solve(Forcing::Harmonic(0.9, 0.3, -2.5), Params{});
   EXPECT_TRUE(s.validity.violated(Condition::kForceBelowFriction));
   EXPECT_TRUE(Near(s.validity.max_force, 1.2, 1e-15));
@@ -181,6 +184,69 @@ TEST(Validity, ConditionNamesAreStable) {
   for (int i = 0; i < static_cast<int>(Condition::kCount); ++i) {
     EXPECT_STREQ(ConditionName(static_cast<Condition>(i)), expected[i]);
   }
+}
+
+// The margins of a robust gait (docs/model.md section 12) on the valid orbit "valid_no_max"
+// (x from 0.166 to 1, no interior maximum): thresholds from the orbit's own extrema.
+TEST(Validity, StrokeClearanceIsDsTimesTheRangeOfX) {
+  const Case& k = kCases[0];
+  const Solution plain = Solve(k.forcing, k.params);
+  ASSERT_TRUE(plain.validity.valid());
+  ASSERT_TRUE(std::isnan(plain.validity.x_max));
+  const double x_min = plain.validity.x_min, stroke = 1.0 - x_min;  // x = 1 at the impact
+  EXPECT_EQ(plain.validity.stroke, stroke);
+  const double d_s = x_min / stroke;  // the clearance that x_min just meets
+  Params p = k.params;
+  p.margin_stroke = d_s * (1.0 - 1e-9);
+  const Validity holds = Solve(k.forcing, p).validity;
+  EXPECT_TRUE(holds.valid());
+  EXPECT_EQ(holds.clearance, p.margin_stroke * stroke);
+  p.margin_stroke = d_s * (1.0 + 1e-9);
+  const Validity fails = Solve(k.forcing, p).validity;
+  EXPECT_EQ(fails.ViolationNames(), std::vector<std::string>{"clearance"});
+  // The absolute clearance d wins when it is the larger.
+  p.margin = 0.5 * x_min;
+  p.margin_stroke = 0.1 * d_s;
+  EXPECT_EQ(Solve(k.forcing, p).validity.clearance, 0.5 * x_min);
+}
+
+TEST(Validity, StickMarginLowersTheForceAllowedAtRest) {
+  const Case& k = kCases[0];
+  const Solution plain = Solve(k.forcing, k.params);
+  ASSERT_TRUE(plain.validity.valid());
+  const double s = 1.0 - plain.validity.rest_force / k.params.T0;  // the margin it just meets
+  ASSERT_GT(s, 0.0);
+  Params p = k.params;
+  p.stick_margin = s * (1.0 - 1e-6);
+  EXPECT_TRUE(Solve(k.forcing, p).validity.valid());
+  p.stick_margin = s * (1.0 + 1e-6);
+  EXPECT_EQ(Solve(k.forcing, p).validity.ViolationNames(), std::vector<std::string>{"stick"});
+}
+
+TEST(Validity, MarginsOutsideTheirRangeAreRejectedWithTheRule) {
+  struct Bad {
+    Params params;
+    const char* message;
+  };
+  const Bad cases[] = {
+      {Params{1.0, 1.0, 0.0, 0.5, 0.0},
+       "stroke margin d_s = 0.5 is invalid: expected 0 <= d_s < 0.5"},
+      {Params{1.0, 1.0, 0.0, -0.1, 0.0},
+       "stroke margin d_s = -0.1 is invalid: expected 0 <= d_s < 0.5"},
+      {Params{1.0, 1.0, 0.0, 0.0, 1.0}, "stick margin s = 1 is invalid: expected 0 <= s < 1"},
+      {Params{1.0, 1.0, 0.0, 0.0, NAN}, "stick margin s = nan is invalid: expected 0 <= s < 1"},
+  };
+  int checked = 0;
+  for (const Bad& b : cases) {
+    try {
+      b.params.Validate();
+      ADD_FAILURE() << "accepted: " << b.message;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), b.message);
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);
 }
 
 }  // namespace
