@@ -1,0 +1,47 @@
+// Speed of the long-run classification from rest (docs/model.md sections 12 and 13): one start of
+// 200 + 100 periods (wanted <= 0.5 ms), 64 starts from rest on 2 threads (wanted <= 50 ms).
+// The robot is the exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem
+// forcing --stable --json`), whose starts from rest end in a 3-right/1-left motion.
+
+#include <benchmark/benchmark.h>
+
+#include "capsubot/attractors.hpp"
+
+namespace {
+
+using capsubot::Forcing;
+using capsubot::Params;
+
+struct Robot {
+  Forcing forcing =
+      Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
+  Params params;
+  double alpha = 0.6435592358295166;
+};
+
+void BM_LongRunMotionOneStart300Periods(benchmark::State& state) {
+  const Robot r;
+  const capsubot::MotionOptions opt;  // 200 + 100 periods
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += capsubot::LongRunMotion(r.forcing, r.params, r.alpha, capsubot::RestStart(0.5, 1.0), opt)
+               .mean_velocity;
+  }
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * 300);  // periods
+}
+BENCHMARK(BM_LongRunMotionOneStart300Periods)->Unit(benchmark::kMillisecond);
+
+void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
+  const Robot r;
+  capsubot::FromRestOptions opt;  // 8 x 8 starts, 200 + 100 periods
+  opt.attractor.threads = 2;
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
+  }
+  benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace

@@ -1,0 +1,87 @@
+// The command line of the long-run motions: `capsubot attractors` (and later periodic, basins,
+// bifurcation). Reference numbers come from the library tests (tests/attract/), which check
+// them against independent long simulations.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+using testing::RunCli;
+
+// The exact stable P2 optimum at T0 = 1, e = 1 (`optimize --problem forcing --stable --json`).
+const std::string kOptimum =
+    "--A 0.34063197373861814 --c 0.06410131873607934 --phi0 -3.1181183398453047 --T0 1 --e 1 "
+    "--alpha 0.6435592358295166";
+// A stable one-impact orbit with clearance (`solve ... --stability`: spectral radius 0.16).
+const std::string kSmallOrbit =
+    "--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278";
+
+nlohmann::json Json(const std::string& args) {
+  const auto r = RunCli(args);
+  EXPECT_EQ(r.status, 0) << args << "\n" << r.out;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST(AttractorsCli, StableOptimumEndsInTheThreeImpactMotionFromEveryStart) {
+  const auto j = Json("attractors " + kOptimum + " --starts 2x3 --json");
+  EXPECT_EQ(j["starts"], 6);
+  ASSERT_EQ(j["attractors"].size(), 1U);
+  const auto& a = j["attractors"][0];
+  EXPECT_EQ(a["status"], "periodic");
+  EXPECT_EQ(a["period"], 1);
+  EXPECT_EQ(a["impacts_right"], 3);
+  EXPECT_EQ(a["impacts_left"], 1);
+  EXPECT_EQ(a["fraction"], 1.0);
+  EXPECT_EQ(a["one_impact_orbit"], false);
+  EXPECT_TRUE(Near(a["mean_velocity"].get<double>(), 0.0244, 1e-4));
+  EXPECT_TRUE(Near(j["mean_velocity"].get<double>(), a["mean_velocity"].get<double>(), 1e-12));
+  EXPECT_EQ(a["example_start"]["x0"], 0.25);
+  EXPECT_EQ(a["example_start"]["psi"], 0.0);
+}
+
+TEST(AttractorsCli, MarksTheAnalyticOrbitAndSortsByFraction) {
+  const auto j = Json("attractors " + kSmallOrbit + " --json");
+  ASSERT_GE(j["attractors"].size(), 1U);
+  int marked = 0;
+  double last = 2.0;
+  for (const auto& a : j["attractors"]) {
+    EXPECT_LE(a["fraction"].get<double>(), last);
+    last = a["fraction"].get<double>();
+    if (a["one_impact_orbit"].get<bool>()) {
+      ++marked;
+      EXPECT_EQ(a["period"], 1);
+      EXPECT_TRUE(Near(a["mean_velocity"].get<double>(), 0.02017805287097631, 1e-9));  // solve
+    }
+  }
+  EXPECT_EQ(marked, 1);
+}
+
+TEST(AttractorsCli, TextOutputNamesTheMotion) {
+  const auto r = RunCli("attractors " + kOptimum + " --starts 1x2");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("period 1: 3 right + 1 left impacts per period"), std::string::npos)
+      << r.out;
+}
+
+TEST(AttractorsCli, BadInputIsOneLineNamingTheParameter) {
+  auto r = RunCli("attractors " + kOptimum + " --starts 8by8 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot attractors: error: --starts = 8by8 is invalid: expected NXxNPSI, two whole "
+            "numbers from 1 to 100000 (e.g. 8x8)\n");
+  r = RunCli("attractors " + kOptimum + " --record 3 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot attractors: error: record = 3 is invalid: expected 2 * max_period = 16 <= "
+            "record <= 1e8 periods\n");
+}
+
+}  // namespace
+}  // namespace capsubot
