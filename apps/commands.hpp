@@ -11,5 +11,6 @@ Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddOptimizeCommand(CLI::App& app);
 Command AddAttractorsCommand(CLI::App& app);
+Command AddPeriodicCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {AddSolveCommand(app),    AddSimulateCommand(app),
                                          AddOrbitsCommand(app),   AddSweepCommand(app),
-                                         AddOptimizeCommand(app), AddAttractorsCommand(app)};
+                                         AddOptimizeCommand(app), AddAttractorsCommand(app),
+                                         AddPeriodicCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -83,5 +83,43 @@ TEST(AttractorsCli, BadInputIsOneLineNamingTheParameter) {
             "record <= 1e8 periods\n");
 }
 
+TEST(PeriodicCli, FromRestFindsTheThreeImpactMotionWithItsMultipliers) {
+  const auto j = Json("periodic " + kOptimum + " --from-rest 0.5,1 --json");
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["period"], 1);
+  EXPECT_EQ(j["impacts_right"], 3);
+  EXPECT_EQ(j["impacts_left"], 1);
+  EXPECT_LE(j["residual"].get<double>(), 1e-12);
+  EXPECT_TRUE(Near(j["mean_velocity"].get<double>(), 0.0244, 1e-4));
+  ASSERT_EQ(j["multipliers"].size(), 2U);
+  EXPECT_EQ(j["multipliers"][0].size(), 2U);  // [re, im]
+  EXPECT_EQ(j["stable"], true);
+  for (const char* key : {"x", "u", "v", "psi"}) EXPECT_TRUE(j["state"].contains(key)) << key;
+}
+
+TEST(PeriodicCli, FromAStateNearTheOneImpactOrbitConvergesToIt) {
+  // Near the post-impact state of the orbit (solve: u = 0.41620, v_plus = 0.17436, e = 0.5).
+  const auto j = Json("periodic " + kSmallOrbit + " --x0 1 --u0 -0.2 --v0 0.17 --psi 0 --json");
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["period"], 1);
+  EXPECT_EQ(j["impacts_right"], 1);
+  EXPECT_TRUE(Near(j["mean_velocity"].get<double>(), 0.02017805287097631, 1e-10));
+  // solve --stability: 0.152295106379941 +- 0.0488451050716622 i
+  EXPECT_TRUE(Near(j["multipliers"][0][0].get<double>(), 0.152295106379941, 1e-8));
+}
+
+TEST(PeriodicCli, StartMustBeComplete) {
+  auto r = RunCli("periodic " + kSmallOrbit + " --x0 1 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot periodic: error: the start is missing: give all of --x0, --u0, --v0, --psi "
+            "(or --from-rest X0,PSI)\n");
+  r = RunCli("periodic " + kSmallOrbit + " --from-rest 0.5 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot periodic: error: --from-rest = 0.5 is invalid: expected X0,PSI (two "
+            "numbers, e.g. 0.5,1)\n");
+}
+
 }  // namespace
 }  // namespace capsubot
