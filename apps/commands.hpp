@@ -12,5 +12,6 @@ Command AddSweepCommand(CLI::App& app);
 Command AddOptimizeCommand(CLI::App& app);
 Command AddAttractorsCommand(CLI::App& app);
 Command AddPeriodicCommand(CLI::App& app);
+Command AddBasinsCommand(CLI::App& app);
 
 }  // namespace capsubot::app

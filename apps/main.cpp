@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {AddSolveCommand(app),    AddSimulateCommand(app),
                                          AddOrbitsCommand(app),   AddSweepCommand(app),
                                          AddOptimizeCommand(app), AddAttractorsCommand(app),
-                                         AddPeriodicCommand(app)};
+                                         AddPeriodicCommand(app), AddBasinsCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

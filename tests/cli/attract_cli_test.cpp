@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "test_utils.hpp"
@@ -119,6 +121,51 @@ TEST(PeriodicCli, StartMustBeComplete) {
   EXPECT_EQ(r.out,
             "capsubot periodic: error: --from-rest = 0.5 is invalid: expected X0,PSI (two "
             "numbers, e.g. 0.5,1)\n");
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(BasinsCli, LabelsEveryStartByItsAttractorTheSameForAnyThreadCount) {
+  // The small orbit's robot has two attractors from rest: a period-12 motion (28 right impacts
+  // per 12 periods) and the one-impact orbit (`attractors --max-period 30 --transient 2000`).
+  const std::string a = testing::TempPath("basins_1.csv");
+  const std::string b = testing::TempPath("basins_2.csv");
+  const std::string common =
+      "basins " + kSmallOrbit + " --max-period 16 --transient 1000 --starts 8x6 --json";
+  const auto j = Json(common + " --threads 1 -o " + a);
+  Json(common + " --threads 2 -o " + b);
+  const std::string csv = ReadFile(a);
+  EXPECT_EQ(csv, ReadFile(b));
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "x0,psi,attractor,period,impacts_right,impacts_left,mean_velocity,status");
+  int rows = 0, periods[2] = {0, 0};
+  while (std::getline(lines, line)) {
+    ++rows;
+    if (line.find(",1,1,0,") != std::string::npos) ++periods[0];    // period 1, 1 right, 0 left
+    if (line.find(",12,28,0,") != std::string::npos) ++periods[1];  // period 12
+  }
+  EXPECT_EQ(rows, 48);
+  EXPECT_GT(periods[0], 0);
+  EXPECT_GT(periods[1], 0);
+  EXPECT_EQ(periods[0] + periods[1], 48);
+  ASSERT_EQ(j["attractors"].size(), 2U);
+  EXPECT_EQ(j["starts"], 48);
+}
+
+TEST(BasinsCli, BadPlaneIsNamedAndNoFileIsWritten) {
+  const std::string path = testing::TempPath("basins_bad.csv");
+  const auto r = RunCli("basins " + kSmallOrbit + " --plane x0-v0 -o " + path + " 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out,
+            "capsubot basins: error: --plane = x0-v0 is invalid: expected x0-psi or x0-u0\n");
+  EXPECT_FALSE(std::ifstream(path).good());
 }
 
 }  // namespace
