@@ -13,5 +13,6 @@ Command AddOptimizeCommand(CLI::App& app);
 Command AddAttractorsCommand(CLI::App& app);
 Command AddPeriodicCommand(CLI::App& app);
 Command AddBasinsCommand(CLI::App& app);
+Command AddBifurcationCommand(CLI::App& app);
 
 }  // namespace capsubot::app

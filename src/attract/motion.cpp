@@ -106,7 +106,8 @@ void FillPeriodic(Motion& m, int p, const Recorder& recorder, double tol) {
 }
 
 Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
-                      const MotionOptions& options, MapState s, Recorder& recorder) {
+                      const MotionOptions& options, MapState s, Recorder& recorder,
+                      bool keep_impacts) {
   Motion m;
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   const auto stopped = [&](const SimResult& r) {
@@ -137,6 +138,7 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
       FillPeriodic(m, p, recorder, options.converged_tolerance);
       m.section = s.z;
       m.mode = s.mode;
+      recorder.impacts.clear();
       return m;
     }
     if (!clear && advance(SectionShift(recorder.event_phases) / kTau, false)) return m;
@@ -152,7 +154,7 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   if (shift > 0.0 && advance(shift / kTau, false)) return m;
   // Record: the state at every whole period from the section.
   const int R = options.record;
-  recorder.Start(R, true, false);
+  recorder.Start(R, true, false, keep_impacts);
   double displacement = 0.0;
   const SimResult r =
       Advance(forcing, params, alpha, options, s, R, &displacement, &recorder, true);

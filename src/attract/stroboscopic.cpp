@@ -5,8 +5,10 @@
 
 namespace capsubot::detail {
 
-void Recorder::Start(int periods, bool samples_wanted, bool events_wanted) {
+void Recorder::Start(int periods, bool samples_wanted, bool events_wanted, bool impacts_wanted) {
   periods_ = periods;
+  keep_impacts_ = impacts_wanted;
+  impacts.clear();
   keep_samples_ = samples_wanted;
   keep_events_ = events_wanted;
   samples.clear();
@@ -24,7 +26,9 @@ void Recorder::OnEvent(const SimEvent& event) {
   if (periods_ <= 0) return;
   // The section lies away from every impact, so an impact belongs to one period unambiguously.
   const int k = std::clamp(static_cast<int>(std::floor(phase / kTau)), 0, periods_ - 1);
-  ++(event.kind == EventKind::kImpactRight ? right : left)[static_cast<std::size_t>(k)];
+  const bool is_right = event.kind == EventKind::kImpactRight;
+  ++(is_right ? right : left)[static_cast<std::size_t>(k)];
+  if (keep_impacts_) impacts.push_back({phase, is_right, event.u_before, k});
 }
 
 void Recorder::OnSample(const SimState& state) {

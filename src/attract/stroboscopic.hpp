@@ -24,20 +24,28 @@ struct MapState {
 /// the first runs of a given length nothing is allocated.
 class Recorder : public SimObserver {
  public:
-  /// Clears the record for a run of `periods` whole periods; `samples` and `events` say what
-  /// to keep (per-period impacts are always counted).
-  void Start(int periods, bool samples, bool events);
+  /// Clears the record for a run of `periods` whole periods; `samples`, `events` and `impacts`
+  /// say what to keep (per-period impact counts are always kept).
+  void Start(int periods, bool samples, bool events, bool impacts = false);
   void OnEvent(const SimEvent& event) override;
   void OnSample(const SimState& state) override;
 
   std::vector<SimState> samples;          ///< state at phase k tau, k = 0..periods
   std::vector<std::int32_t> right, left;  ///< impacts in period k, k = 0..periods-1
   std::vector<double> event_phases;       ///< phase mod tau of every event (at most kMaxEvents)
+  /// An impact: phase since the start of the run, wall, velocity before it, period index.
+  struct Impact {
+    double phase;
+    bool right;
+    double u_before;
+    int period;
+  };
+  std::vector<Impact> impacts;  ///< every impact (when kept)
   static constexpr std::size_t kMaxEvents = 4096;
 
  private:
   int periods_ = 0;
-  bool keep_samples_ = false, keep_events_ = false;
+  bool keep_samples_ = false, keep_events_ = false, keep_impacts_ = false;
 };
 
 /// Simulates `periods` (> 0, any real) forcing periods from s, updates s (state, phase, mode)
@@ -61,9 +69,12 @@ bool SameState(const SimState& a, const SimState& b, double tol);
 /// (SameState with tol); 0 if none (or fewer than 2p + 1 samples).
 int DetectPeriod(const std::vector<SimState>& samples, int max_period, double tol);
 
-/// The motion from s (the whole of LongRunMotion after validation), reusing `recorder`.
+/// The motion from s (the whole of LongRunMotion after validation), reusing `recorder`. With
+/// `keep_impacts`, the recorder holds the impacts of the record afterwards (phases from the
+/// section's phase); it holds none when the early stop skipped the record.
 Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
-                      const MotionOptions& options, MapState s, Recorder& recorder);
+                      const MotionOptions& options, MapState s, Recorder& recorder,
+                      bool keep_impacts = false);
 
 /// Checks alpha and a start state (std::invalid_argument naming the bad value).
 void ValidateStart(double alpha, const PhaseState& start);
