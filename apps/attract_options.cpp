@@ -58,6 +58,21 @@ std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
   return {a, b};
 }
 
+PhaseState ParseRestStart(const char* name, const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const std::string a = text.substr(0, comma);
+  const std::string b = comma == std::string::npos ? "" : text.substr(comma + 1);
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const double x0 = std::strtod(a.c_str(), &end1);
+  const double psi = std::strtod(b.c_str(), &end2);
+  if (a.empty() || b.empty() || end1 != a.c_str() + a.size() || end2 != b.c_str() + b.size()) {
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected X0,PSI (two numbers, e.g. 0.5,1)", name, text));
+  }
+  return RestStart(x0, psi);
+}
+
 void AddThreadsOption(CLI::App& cmd, int& threads) {
   cmd.add_option("--threads", threads,
                  "worker threads (0: all cores); the output does not depend on it")

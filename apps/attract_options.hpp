@@ -26,6 +26,9 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& options, bool with_motion = tr
 /// "8x8" -> (8, 8) for option `name`; throws std::invalid_argument naming it and the rule.
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
 
+/// "0.5,1" -> RestStart(0.5, 1) for option `name`; throws std::invalid_argument naming it.
+PhaseState ParseRestStart(const char* name, const std::string& text);
+
 /// Adds --threads (0: all cores).
 void AddThreadsOption(CLI::App& cmd, int& threads);
 

@@ -20,6 +20,7 @@ struct BifurcationCommandOptions {
   BifurcationOptions diagram;
   std::string param;
   std::string direction = "both";
+  std::string start = "0.5,0";
   std::string output, summary;
   bool no_analytic = false;
 };
@@ -29,6 +30,7 @@ int Run(BifurcationCommandOptions& opt) {
   BifurcationOptions o = opt.diagram;
   o.param = ParseBifurcationParam(opt.param);
   o.motion = opt.robot.motion;
+  o.start = ParseRestStart("--start", opt.start);
   o.analytic = !opt.no_analytic && !opt.summary.empty();
   if (opt.direction != "up" && opt.direction != "down" && opt.direction != "both") {
     throw std::invalid_argument(
@@ -98,6 +100,10 @@ Command AddBifurcationCommand(CLI::App& app) {
   cmd->add_option("--steps", opt->diagram.steps, "values of the parameter, both ends included")
       ->capture_default_str();
   cmd->add_option("--direction", opt->direction, "up, down or both (up, then down)")
+      ->capture_default_str();
+  cmd->add_option("--start", opt->start,
+                  "start of each sweep: from rest at x0 = X0, forcing phase PSI")
+      ->type_name("X0,PSI")
       ->capture_default_str();
   cmd->add_option("-o,--output", opt->output,
                   "CSV of every recorded impact: param, direction, period_index, wall, phase, "

@@ -192,7 +192,8 @@ int RunMainJob(const OptimizeCliOptions& opt) {
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section 7)\n"
+      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section "
+      "7)\n"
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
       "margin {:g}\n"
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
@@ -215,10 +216,12 @@ int RunMainJob(const OptimizeCliOptions& opt) {
         Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
     if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
       // Only the left wall fails. Scaling A, c, T0 by k scales 1 - x by k and leaves the
-      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min) <= 1.
+      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min)
+      // <= 1.
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
-          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): this\n"
+          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): "
+          "this\n"
           "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
           Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);

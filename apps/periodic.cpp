@@ -57,19 +57,7 @@ int Run(PeriodicCommandOptions& opt) {
       throw std::invalid_argument(
           "--from-rest gives the start: do not give --x0, --u0, --v0 or --psi with it");
     }
-    const std::size_t comma = opt.from_rest.find(',');
-    char* end1 = nullptr;
-    char* end2 = nullptr;
-    const std::string a = opt.from_rest.substr(0, comma);
-    const std::string b = comma == std::string::npos ? "" : opt.from_rest.substr(comma + 1);
-    const double x0 = std::strtod(a.c_str(), &end1);
-    const double psi = std::strtod(b.c_str(), &end2);
-    if (comma == std::string::npos || a.empty() || b.empty() || end1 != a.c_str() + a.size() ||
-        end2 != b.c_str() + b.size()) {
-      throw std::invalid_argument(fmt::format(
-          "--from-rest = {} is invalid: expected X0,PSI (two numbers, e.g. 0.5,1)", opt.from_rest));
-    }
-    start = RestStart(x0, psi);
+    start = ParseRestStart("--from-rest", opt.from_rest);
   } else {
     if (given < 4) {
       throw std::invalid_argument(

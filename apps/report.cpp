@@ -106,8 +106,8 @@ std::string StabilityTable(const Stability& st) {
     t += fmt::format("  multiplier {}     {} {} {}i\n", i + 1, Num(z.real()),
                      z.imag() < 0 ? '-' : '+', Num(std::abs(z.imag())));
   }
-  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n", Num(st.spectral_radius),
-                   st.stable ? "stable, < 1" : "unstable, >= 1");
+  t += fmt::format("  spectral radius  {}   ({}: docs/model.md section 8)\n",
+                   Num(st.spectral_radius), st.stable ? "stable, < 1" : "unstable, >= 1");
   return t;
 }
 

@@ -3,6 +3,9 @@
 #   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
+#   bifurcation_T0_*.csv, bifurcation_T0.png: long-run motions of the stable optimum's robot vs T0
+#   basins_coexisting.{csv,png}: basins of a one-impact orbit and a period-12 motion
+#   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -41,6 +44,17 @@ c_grid="c=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'B
   -o "$out/map_valid.csv"
 "$cli" sweep --grid "$A_grid" --grid "$c_grid" --T0 $T0 --optimize phi0 --stable-only \
   --stability -o "$out/map_stable.csv"
+
+# Long-run motions (docs/attractors.md). The robot of the stable optimum at T0 = 1, e = 1
+# (`optimize --problem forcing --stable --json`, no margins).
+robot="--A 0.34063197373861814 --c 0.06410131873607934 --phi0 -3.1181183398453047 --e 1"
+say "bifurcation diagram of the stable optimum's robot against T0"
+"$cli" bifurcation $robot --alpha 0.6435592358295166 --param T0 --from 0.45 --to 2 --steps 311 \
+  --start 0.5,1 -o "$out/bifurcation_T0_impacts.csv" --summary "$out/bifurcation_T0_summary.csv"
+say "mean velocity against alpha: multi-impact motions and one-impact orbits"
+small="--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5"  # a force with valid one-impact orbits
+"$cli" bifurcation $small --param alpha --from 0.05 --to 0.95 --steps 181 --start 0.5,1 \
+  --max-period 16 -o "$out/velocity_alpha_impacts.csv" --summary "$out/velocity_alpha.csv"
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -91,4 +105,15 @@ gnuplot -e "term='$term'; out='$out/fig3_I_vs_phi0.png';
 
 gnuplot -e "term='$term'; out='$out/map_best_velocity.png'; valid_data='$out/map_valid.csv';
   stable_data='$out/map_stable.csv'; T0=$T0; n=$n; lo=$lo; hi=$hi" "$gp/map.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; out='$out/bifurcation_T0.png'; impacts='$out/bifurcation_T0_impacts.csv';
+  summary='$out/bifurcation_T0_summary.csv';
+  title_text='Long-run motions against T0: F = 0.3406 sin(phi - 3.1181) + 0.0641, alpha = 0.6436, e = 1'" \
+  "$gp/bifurcation.gp"
+gnuplot -e "term='$term'; out='$out/velocity_alpha.png'; summary='$out/velocity_alpha.csv';
+  title_text='Mean velocity against alpha: F = 0.05 sin(phi - 2.842) + 0.02, T0 = 0.1, e = 0.5'" \
+  "$gp/velocity_alpha.gp"
+say "basins of two coexisting attractors (drawn by capsubot basins through gnuplot)"
+"$cli" basins $small --alpha 0.2792869076315278 \
+  --max-period 16 --transient 1000 --starts 128x128 -o "$out/basins_coexisting.csv" \
+  --plot "$out/basins_coexisting.png"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"
