@@ -11,5 +11,9 @@ Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddOptimizeCommand(CLI::App& app);
 Command AddDesignCommand(CLI::App& app);
+Command AddAttractorsCommand(CLI::App& app);
+Command AddPeriodicCommand(CLI::App& app);
+Command AddBasinsCommand(CLI::App& app);
+Command AddBifurcationCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -5,6 +5,9 @@
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
 #   design_m2_*.csv, design_example.json, design_speed_power.png: the example robot's design
 #   optimum.json                  the main job: `capsubot optimize -o results/optimum.json`
+#   bifurcation_T0_*.csv, bifurcation_T0.png: long-run motions of the stable optimum's robot vs T0
+#   basins_coexisting.{csv,png}: basins of a one-impact orbit and a period-12 motion
+#   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -53,6 +56,16 @@ say "design: speed and power of the example robot (examples/robot.toml) against 
 "$cli" design --config examples/robot.toml --sweep m2:0.002:0.5:400 -o "$out/design_m2_robust.csv"
 "$cli" design --config examples/robot.toml --json > "$out/design_example.json.tmp"
 mv "$out/design_example.json.tmp" "$out/design_example.json"
+# Long-run motions (docs/attractors.md). The robot of the stable optimum at T0 = 1, e = 1
+# (`optimize --problem forcing --stable --json`, no margins).
+robot="--A 0.34063197373861814 --c 0.06410131873607934 --phi0 -3.1181183398453047 --e 1"
+say "bifurcation diagram of the stable optimum's robot against T0"
+"$cli" bifurcation $robot --alpha 0.6435592358295166 --param T0 --from 0.45 --to 2 --steps 311 \
+  --start 0.5,1 -o "$out/bifurcation_T0_impacts.csv" --summary "$out/bifurcation_T0_summary.csv"
+say "mean velocity against alpha: multi-impact motions and one-impact orbits"
+small="--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5"  # a force with valid one-impact orbits
+"$cli" bifurcation $small --param alpha --from 0.05 --to 0.95 --steps 181 --start 0.5,1 \
+  --max-period 16 -o "$out/velocity_alpha_impacts.csv" --summary "$out/velocity_alpha.csv"
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -109,4 +122,15 @@ print(g["m2_kg"], g["speed_mm_s"], g["power_mw"])' < "$out/design_example.json")
 gnuplot -e "term='$term'; out='$out/design_speed_power.png'; valid_data='$out/design_m2_valid.csv';
   robust_data='$out/design_m2_robust.csv'; best_m2=$dm2; best_speed=$dspeed; best_power=$dpower" \
   "$gp/design.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; out='$out/bifurcation_T0.png'; impacts='$out/bifurcation_T0_impacts.csv';
+  summary='$out/bifurcation_T0_summary.csv';
+  title_text='Long-run motions against T0: F = 0.3406 sin(phi - 3.1181) + 0.0641, alpha = 0.6436, e = 1'" \
+  "$gp/bifurcation.gp"
+gnuplot -e "term='$term'; out='$out/velocity_alpha.png'; summary='$out/velocity_alpha.csv';
+  title_text='Mean velocity against alpha: F = 0.05 sin(phi - 2.842) + 0.02, T0 = 0.1, e = 0.5'" \
+  "$gp/velocity_alpha.gp"
+say "basins of two coexisting attractors (drawn by capsubot basins through gnuplot)"
+"$cli" basins $small --alpha 0.2792869076315278 \
+  --max-period 16 --transient 1000 --starts 128x128 -o "$out/basins_coexisting.csv" \
+  --plot "$out/basins_coexisting.png"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"

@@ -1,0 +1,139 @@
+#include "attract_options.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace capsubot::app {
+
+void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
+  AddForcingOptions(cmd, o.forcing);
+  AddParamsOptions(cmd, o.params, false);
+  cmd.add_option("--alpha", o.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
+      ->required();
+  if (!with_motion) return;
+  cmd.add_option("--transient", o.motion.transient,
+                 "forcing periods simulated before the motion is recorded, >= 0")
+      ->capture_default_str();
+  cmd.add_option("--record", o.motion.record,
+                 "forcing periods recorded (period, impacts, mean velocity), >= 2 max-period")
+      ->capture_default_str();
+  cmd.add_option("--max-period", o.motion.max_period,
+                 "largest period searched, in forcing periods (0 is reported when none is found)")
+      ->capture_default_str();
+  cmd.add_option("--state-tolerance", o.motion.state_tolerance,
+                 "two states of the stroboscopic map are the same when x, u, v differ by at most "
+                 "this")
+      ->capture_default_str();
+  cmd.add_option("--converged-tolerance", o.motion.converged_tolerance,
+                 "early stop: a motion whose states already repeat to this tolerance is periodic "
+                 "(0: always run the whole transient and record)")
+      ->capture_default_str();
+  cmd.add_option("--chatter-velocity", o.motion.chatter_velocity,
+                 "an impact slower than this (omega L) with the inner body pushed into the wall "
+                 "ends a chattering sequence: the body then rests on the wall")
+      ->capture_default_str();
+  cmd.add_option("--max-events-per-period", o.motion.max_events_per_period,
+                 "work bound: a start needing more events per period ends as event_limit")
+      ->capture_default_str();
+}
+
+std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  const auto whole = [&](const std::string& part, int* value) {
+    char* end = nullptr;
+    const long n = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || end != part.c_str() + part.size() || n < 1 || n > 100000) return false;
+    *value = static_cast<int>(n);
+    return true;
+  };
+  int a = 0, b = 0;
+  if (x == std::string::npos || !whole(text.substr(0, x), &a) || !whole(text.substr(x + 1), &b)) {
+    throw std::invalid_argument(fmt::format(
+        "{} = {} is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 (e.g. 8x8)", name,
+        text));
+  }
+  return {a, b};
+}
+
+PhaseState ParseRestStart(const char* name, const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const std::string a = text.substr(0, comma);
+  const std::string b = comma == std::string::npos ? "" : text.substr(comma + 1);
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const double x0 = std::strtod(a.c_str(), &end1);
+  const double psi = std::strtod(b.c_str(), &end2);
+  if (a.empty() || b.empty() || end1 != a.c_str() + a.size() || end2 != b.c_str() + b.size()) {
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected X0,PSI (two numbers, e.g. 0.5,1)", name, text));
+  }
+  return RestStart(x0, psi);
+}
+
+void AddThreadsOption(CLI::App& cmd, int& threads) {
+  cmd.add_option("--threads", threads,
+                 "worker threads (0: all cores); the output does not depend on it")
+      ->capture_default_str();
+}
+
+nlohmann::json MotionJson(const Motion& m) {
+  nlohmann::json j;
+  j["status"] = MotionStatusName(m.status);
+  j["period"] = m.period;
+  j["impacts_right"] = m.impacts_right;
+  j["impacts_left"] = m.impacts_left;
+  j["mean_velocity"] = m.mean_velocity;  // NaN is written as null
+  return j;
+}
+
+nlohmann::json AttractorsJson(const Attractors& a) {
+  nlohmann::json j;
+  j["starts"] = a.starts;
+  j["attractors"] = nlohmann::json::array();
+  for (const Attractor& at : a.attractors) {
+    nlohmann::json x = MotionJson(at.motion);
+    x["fraction"] = at.fraction;
+    x["starts"] = at.starts;
+    x["example_start"] = {{"x0", at.example.x}, {"psi", at.example.psi}};
+    x["one_impact_orbit"] = at.one_impact_orbit;
+    j["attractors"].push_back(x);
+  }
+  j["mean_velocity"] = a.mean_velocity;
+  j["event_limit_starts"] = a.event_limit_starts;
+  return j;
+}
+
+std::string MotionWords(const Motion& m, int max_period) {
+  switch (m.status) {
+    case MotionStatus::kPeriodic:
+      return fmt::format("period {}: {} right + {} left impacts per {}", m.period, m.impacts_right,
+                         m.impacts_left,
+                         m.period == 1 ? "period" : fmt::format("{} periods", m.period));
+    case MotionStatus::kNoPeriod:
+      return fmt::format("no period up to {} ({} right + {} left impacts in the record)",
+                         max_period, m.impacts_right, m.impacts_left);
+    case MotionStatus::kEventLimit:
+      return "event_limit: the work bound was hit (a Zeno sequence of impacts)";
+    case MotionStatus::kNotRun:
+      break;
+  }
+  return "not run";
+}
+
+StartsProgress TerminalProgress(const char* what) {
+  if (::isatty(STDERR_FILENO) == 0) return {};
+  return [what](std::int64_t done, std::int64_t total) {
+    // At most ~100 updates: every 1 % and at the end.
+    const std::int64_t step = std::max<std::int64_t>(1, total / 100);
+    if (done % step != 0 && done != total) return;
+    fmt::print(stderr, "\r{}: {} of {} starts ({:.0f} %)", what, done, total,
+               100.0 * static_cast<double>(done) / static_cast<double>(total));
+    if (done == total) fmt::print(stderr, "\n");
+    std::fflush(stderr);
+  };
+}
+
+}  // namespace capsubot::app

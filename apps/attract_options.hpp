@@ -1,0 +1,49 @@
+#pragma once
+// Options and output shared by the commands on long-run motions (attractors, basins,
+// periodic, bifurcation): the robot, the simulation lengths, the start grid, JSON of motions.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+
+#include "capsubot/attractors.hpp"
+#include "cli.hpp"
+
+namespace capsubot::app {
+
+/// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
+struct RobotOptions {
+  ForcingOptions forcing;
+  Params params;
+  double alpha = std::numeric_limits<double>::quiet_NaN();
+  MotionOptions motion;
+};
+
+/// Adds the force, --T0, --e, --alpha (required), and with `with_motion` --transient, --record,
+/// --max-period, --chatter-velocity, --max-events-per-period.
+void AddRobotOptions(CLI::App& cmd, RobotOptions& options, bool with_motion = true);
+
+/// "8x8" -> (8, 8) for option `name`; throws std::invalid_argument naming it and the rule.
+std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
+
+/// "0.5,1" -> RestStart(0.5, 1) for option `name`; throws std::invalid_argument naming it.
+PhaseState ParseRestStart(const char* name, const std::string& text);
+
+/// Adds --threads (0: all cores).
+void AddThreadsOption(CLI::App& cmd, int& threads);
+
+/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity"} of a motion (null
+/// for what was not found).
+nlohmann::json MotionJson(const Motion& motion);
+
+/// The attractors object: {"starts", "attractors": [...], "mean_velocity",
+/// "event_limit_starts"}.
+nlohmann::json AttractorsJson(const Attractors& attractors);
+
+/// "3 right + 1 left impacts per 1 period" or "no period found up to 8 (...)".
+std::string MotionWords(const Motion& motion, int max_period);
+
+/// Calls a StartsProgress that draws a bar on stderr when it is a terminal (else none).
+StartsProgress TerminalProgress(const char* what);
+
+}  // namespace capsubot::app

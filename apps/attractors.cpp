@@ -1,0 +1,81 @@
+// capsubot attractors: the long-run motions reached from rest on a grid of starts
+// (docs/model.md sections 12 and 13), with the exact simulator.
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <tuple>
+
+#include "attract_options.hpp"
+#include "commands.hpp"
+#include "report.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct AttractorsCommandOptions {
+  RobotOptions robot;
+  std::string starts = "8x8";
+  int threads = 0;
+  bool json = false;
+};
+
+int Run(const AttractorsCommandOptions& opt) {
+  const Forcing forcing = opt.robot.forcing.Build();
+  FromRestOptions fr;
+  std::tie(fr.n_x, fr.n_psi) = ParseGridSize("--starts", opt.starts);
+  fr.attractor.motion = opt.robot.motion;
+  fr.attractor.threads = opt.threads;
+  const Attractors a = FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr,
+                                      TerminalProgress("attractors"));
+  if (opt.json) {
+    fmt::print("{}\n", AttractorsJson(a).dump());
+    return 0;
+  }
+  const MotionOptions& mo = fr.attractor.motion;
+  std::string t =
+      fmt::format("attractors from rest: {} starts ({} x0 x {} phases), {} + {} periods\n",
+                  a.starts, fr.n_x, fr.n_psi, mo.transient, mo.record);
+  t += fmt::format("  force          {}\n", ForceFormula(forcing));
+  t += fmt::format("  model          T0 = {:g}, e = {:g}, alpha = {:.10g}\n", opt.robot.params.T0,
+                   opt.robot.params.e, opt.robot.alpha);
+  int k = 0;
+  for (const Attractor& at : a.attractors) {
+    t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13.10g} {}{}\n", ++k,
+                     100.0 * at.fraction, at.motion.mean_velocity,
+                     MotionWords(at.motion, mo.max_period),
+                     at.one_impact_orbit ? "  (the analytic one-impact orbit)" : "");
+    t += fmt::format("      e.g. from x0 = {:.6g}, psi = {:.6g}\n", at.example.x, at.example.psi);
+  }
+  t += fmt::format("  mean velocity over the starts: {:.10g} (omega L)", a.mean_velocity);
+  if (a.event_limit_starts > 0) {
+    t += fmt::format(", {} starts hit the work bound and are left out", a.event_limit_starts);
+  }
+  t += "\n";
+  fmt::print("{}", t);
+  return 0;
+}
+
+}  // namespace
+
+Command AddAttractorsCommand(CLI::App& app) {
+  auto opt = std::make_shared<AttractorsCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "attractors",
+      "What the robot does from rest (docs/model.md sections 12 and 13): the exact simulator is "
+      "started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/NX and the "
+      "forcing at phase psi = 2 pi j/NPSI (F = A sin(psi + phi0) + c at the start); after a "
+      "transient the long-run motion of each start is classified (period, impacts, mean "
+      "velocity) and equal motions are grouped into attractors.");
+  AddRobotOptions(*cmd, opt->robot);
+  cmd->add_option("--starts", opt->starts, "grid of starts NXxNPSI (positions x phases)")
+      ->capture_default_str();
+  AddThreadsOption(*cmd, opt->threads);
+  cmd->add_flag("--json", opt->json,
+                "print one JSON object: starts, attractors (status, period, impacts_right, "
+                "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
+                "one_impact_orbit), mean_velocity (over the starts), event_limit_starts");
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app

@@ -1,0 +1,86 @@
+#pragma once
+// Bifurcation diagrams by brute force (docs/model.md section 13): one parameter is stepped from
+// one end of a range to the other with the state carried from each value to the next (so
+// coexisting attractors show as hysteresis between the up and down sweeps); at each value the
+// motion is simulated for a transient, classified, its impacts recorded, and its largest
+// multiplier found by Newton shooting (periodic.hpp). The analytic one-impact orbits of the
+// same robots (robot_orbits.hpp) can be added for comparison.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "capsubot/attractors.hpp"
+
+namespace capsubot {
+
+/// The parameter of a diagram.
+enum class BifurcationParam { kA, kC, kAlpha, kT0, kE, kPhi0 };
+
+/// "A", "c", "alpha", "T0", "e", "phi0"; and the parse of such a name (std::invalid_argument
+/// naming the value and the choices).
+const char* BifurcationParamName(BifurcationParam param);
+BifurcationParam ParseBifurcationParam(const std::string& name);
+
+struct BifurcationOptions {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  BifurcationParam param = BifurcationParam::kT0;  ///< the parameter stepped (A: harmonic force)
+  double from = kNaN;                              ///< first value (finite)
+  double to = kNaN;                                ///< last value (finite; may be below `from`)
+  int steps = 101;                                 ///< values, both ends included; >= 2
+  bool up = true;                                  ///< sweep from `from` to `to`
+  bool down = true;                                ///< sweep from `to` back to `from`
+  MotionOptions motion;                            ///< transient, record, max_period, ... per value
+  PhaseState start = RestStart(0.5, 0.0);          ///< state at the first value of each sweep
+  bool multipliers = true;  ///< largest multiplier of each periodic motion (Newton)
+  bool analytic = true;     ///< add the valid one-impact orbits of every value
+  int threads = 0;          ///< the sweeps run in parallel (0: all cores); same result
+
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule.
+  void Validate() const;
+};
+
+enum class SweepDirection { kUp, kDown, kAnalytic };
+/// "up", "down", "analytic".
+const char* SweepDirectionName(SweepDirection direction);
+
+/// One impact of a recorded motion.
+struct ImpactPoint {
+  double param = 0.0;
+  SweepDirection direction = SweepDirection::kUp;
+  int period_index = 0;   ///< forcing period of the record it happened in (0 = first)
+  bool right = true;      ///< right wall (else left)
+  double phase = 0.0;     ///< forcing phase psi at the impact, in [0, tau)
+  double velocity = 0.0;  ///< relative velocity just before it
+};
+
+/// The long-run motion at one parameter value (or an analytic orbit).
+struct BifurcationPoint {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double param = kNaN;
+  SweepDirection direction = SweepDirection::kUp;
+  Motion motion;  ///< analytic rows: period 1, one right impact, the orbit's mean velocity
+  /// Largest multiplier (by modulus) of the periodic motion: Newton shooting from the recorded
+  /// state for sweeps, the impact map for analytic orbits; NaN when not found.
+  double multiplier_re = kNaN;
+  double multiplier_im = kNaN;
+  double spectral_radius = kNaN;  ///< its modulus
+};
+
+struct BifurcationDiagram {
+  /// Every recorded impact, up sweep then down: those of the record, or of one period p for a
+  /// periodic motion found by the early stop (the others would repeat them).
+  std::vector<ImpactPoint> impacts;
+  std::vector<BifurcationPoint> summary;  ///< per value: up sweep, down sweep, analytic orbits
+};
+
+/// The diagram for the robot (forcing, params, alpha) with options.param stepped. Throws
+/// std::invalid_argument for bad inputs (a value of the range that makes the robot invalid
+/// names the parameter and the value).
+BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                                      const BifurcationOptions& options);
+
+}  // namespace capsubot

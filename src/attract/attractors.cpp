@@ -1,0 +1,181 @@
+// Attractors from a set of starts (docs/model.md sections 12 and 13): the long-run motion of
+// every start, in parallel, grouped into classes; the one-impact orbit recognised by its state.
+
+#include "capsubot/attractors.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "attract/parallel.hpp"
+#include "attract/stroboscopic.hpp"
+#include "capsubot/robot_orbits.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr int kMaxThreads = 1024;
+
+bool SameClass(const Motion& a, const Motion& b, double velocity_tolerance) {
+  if (a.status != b.status) return false;
+  if (a.status == MotionStatus::kEventLimit) return true;
+  if (a.period != b.period || a.impacts_right != b.impacts_right ||
+      a.impacts_left != b.impacts_left) {
+    return false;
+  }
+  const double scale = std::max(std::abs(a.mean_velocity), std::abs(b.mean_velocity));
+  return std::abs(a.mean_velocity - b.mean_velocity) <= velocity_tolerance * scale;
+}
+
+bool OneImpactShape(const Motion& m) {
+  return m.status == MotionStatus::kPeriodic && m.period == 1 && m.impacts_right == 1 &&
+         m.impacts_left == 0;
+}
+
+}  // namespace
+
+void AttractorOptions::Validate() const {
+  motion.Validate();
+  if (!(velocity_tolerance >= 0.0) || !std::isfinite(velocity_tolerance)) {
+    throw std::invalid_argument(fmt::format(
+        "velocity_tolerance = {} is invalid: expected a finite number >= 0", velocity_tolerance));
+  }
+  if (!(orbit_tolerance > 0.0) || !std::isfinite(orbit_tolerance)) {
+    throw std::invalid_argument(fmt::format(
+        "orbit_tolerance = {} is invalid: expected a finite number > 0", orbit_tolerance));
+  }
+  if (threads < 0 || threads > kMaxThreads) {
+    throw std::invalid_argument(
+        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
+                    kMaxThreads));
+  }
+}
+
+void FromRestOptions::Validate() const {
+  if (n_x < 1 || n_x > 100000) {
+    throw std::invalid_argument(
+        fmt::format("n_x = {} is invalid: expected 1 <= n_x <= 100000 starting positions", n_x));
+  }
+  if (n_psi < 1 || n_psi > 100000) {
+    throw std::invalid_argument(
+        fmt::format("n_psi = {} is invalid: expected 1 <= n_psi <= 100000 starting phases", n_psi));
+  }
+  attractor.Validate();
+}
+
+bool MatchesOrbit(const Motion& motion, const Forcing& forcing, const Orbit& orbit,
+                  double tolerance) {
+  if (!orbit.ok() || !OneImpactShape(motion)) return false;
+  // Motor phase at the section minus the motor phase at the orbit's impact.
+  double phi = forcing.phi0() + motion.section.psi - orbit.forcing.phi0();
+  phi -= kTau * std::floor(phi / kTau);
+  return std::abs(motion.section.x - orbit.x(phi)) <= tolerance &&
+         std::abs(motion.section.u - orbit.dx(phi)) <= tolerance &&
+         std::abs(motion.section.v - orbit.v(phi)) <= tolerance;
+}
+
+std::int64_t CountReached(const Attractors& attractors, const Forcing& forcing, const Orbit& orbit,
+                          double tolerance) {
+  return std::count_if(attractors.motions.begin(), attractors.motions.end(),
+                       [&](const Motion& m) { return MatchesOrbit(m, forcing, orbit, tolerance); });
+}
+
+Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
+                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
+                          const StartsProgress& progress) {
+  params.Validate();
+  options.Validate();
+  for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
+  Attractors out;
+  const auto n = static_cast<std::int64_t>(starts.size());
+  out.starts = n;
+  out.motions.resize(starts.size());
+  const int workers = detail::WorkerCount(options.threads, n);
+  std::vector<detail::Recorder> recorders(static_cast<std::size_t>(workers));
+  detail::ParallelFor(
+      n, workers,
+      [&](std::int64_t i, int w) {
+        const auto k = static_cast<std::size_t>(i);
+        out.motions[k] = detail::ClassifyMotion(forcing, params, alpha, options.motion,
+                                                {starts[k], SimMode::kRest},
+                                                recorders[static_cast<std::size_t>(w)]);
+      },
+      [&](std::int64_t done) {
+        if (progress) progress(done, n);
+      });
+
+  // Group in the order of the starts (deterministic), then sort by size.
+  std::vector<int> label(starts.size(), -1);
+  std::vector<Attractor> found;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const Motion& m = out.motions[k];
+    if (m.status == MotionStatus::kEventLimit) {
+      ++out.event_limit_starts;
+    } else {
+      sum += m.mean_velocity;
+    }
+    for (std::size_t a = 0; a < found.size() && label[k] < 0; ++a) {
+      if (SameClass(found[a].motion, m, options.velocity_tolerance)) label[k] = static_cast<int>(a);
+    }
+    if (label[k] < 0) {
+      label[k] = static_cast<int>(found.size());
+      Attractor a;
+      a.motion = m;
+      a.example = starts[k];
+      found.push_back(a);
+    }
+    ++found[static_cast<std::size_t>(label[k])].starts;
+  }
+  if (n > out.event_limit_starts)
+    out.mean_velocity = sum / static_cast<double>(n - out.event_limit_starts);
+
+  std::vector<int> order(found.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return found[a].starts > found[b].starts; });
+  std::vector<int> rank(found.size());
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    rank[static_cast<std::size_t>(order[r])] = static_cast<int>(r);
+    out.attractors.push_back(found[static_cast<std::size_t>(order[r])]);
+    out.attractors.back().fraction =
+        static_cast<double>(out.attractors.back().starts) / static_cast<double>(n);
+  }
+  out.labels.resize(starts.size());
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    out.labels[k] = rank[static_cast<std::size_t>(label[k])];
+  }
+
+  // The analytic one-impact orbits are needed only if a motion has their shape.
+  const bool any = std::any_of(out.attractors.begin(), out.attractors.end(),
+                               [](const Attractor& a) { return OneImpactShape(a.motion); });
+  if (any) {
+    const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+    for (Attractor& a : out.attractors) {
+      for (const Solution& s : orbits) {
+        if (MatchesOrbit(a.motion, forcing, s.orbit, options.orbit_tolerance)) {
+          a.one_impact_orbit = true;
+        }
+      }
+    }
+  }
+  return out;
+}
+
+Attractors FindAttractors(const Forcing& forcing, const Params& params, double alpha,
+                          const FromRestOptions& options, const StartsProgress& progress) {
+  options.Validate();
+  std::vector<PhaseState> starts;
+  starts.reserve(static_cast<std::size_t>(options.n_x) * static_cast<std::size_t>(options.n_psi));
+  for (int i = 0; i < options.n_x; ++i) {
+    for (int j = 0; j < options.n_psi; ++j) {
+      starts.push_back(GridStart(i, j, options.n_x, options.n_psi));
+    }
+  }
+  return ClassifyStarts(forcing, params, alpha, starts, options.attractor, progress);
+}
+
+}  // namespace capsubot

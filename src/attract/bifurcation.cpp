@@ -1,0 +1,243 @@
+// Bifurcation diagrams by brute force with the state carried along (docs/model.md section 13).
+
+#include "capsubot/bifurcation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "attract/parallel.hpp"
+#include "attract/stroboscopic.hpp"
+#include "capsubot/periodic.hpp"
+#include "capsubot/robot_orbits.hpp"
+#include "capsubot/stability.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr int kMaxSteps = 10000000;
+
+// The robot at one value of the parameter.
+struct Robot {
+  Forcing forcing;
+  Params params;
+  double alpha = 0.0;
+};
+
+Forcing WithMean(const Forcing& f, double c) {
+  std::vector<double> a, b;
+  for (int k = 1; k <= f.harmonics(); ++k) {
+    a.push_back(f.a(k));
+    b.push_back(f.b(k));
+  }
+  return Forcing::Fourier(c, a, b, f.phi0());
+}
+
+Robot At(const Robot& base, BifurcationParam param, double value) {
+  Robot r = base;
+  switch (param) {
+    case BifurcationParam::kA:
+      r.forcing = Forcing::Harmonic(value, base.forcing.mean(), base.forcing.phi0());
+      break;
+    case BifurcationParam::kC:
+      r.forcing = WithMean(base.forcing, value);
+      break;
+    case BifurcationParam::kAlpha:
+      r.alpha = value;
+      break;
+    case BifurcationParam::kT0:
+      r.params.T0 = value;
+      break;
+    case BifurcationParam::kE:
+      r.params.e = value;
+      break;
+    case BifurcationParam::kPhi0:
+      r.forcing = base.forcing.WithPhase(value);
+      break;
+  }
+  return r;
+}
+
+double Value(const BifurcationOptions& o, int i) {
+  if (i == o.steps - 1) return o.to;
+  return o.from + (o.to - o.from) * static_cast<double>(i) / (o.steps - 1);
+}
+
+// One sweep in `direction`, the state carried from each value to the next.
+void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direction,
+           BifurcationDiagram& out) {
+  detail::Recorder recorder;
+  detail::MapState s{o.start, SimMode::kRest};
+  ShootingOptions shooting;
+  shooting.chatter_velocity = o.motion.chatter_velocity;
+  shooting.max_events_per_period = o.motion.max_events_per_period;
+  for (int n = 0; n < o.steps; ++n) {
+    const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
+    const double value = Value(o, i);
+    const Robot r = At(base, o.param, value);
+    BifurcationPoint point;
+    point.param = value;
+    point.direction = direction;
+    point.motion =
+        detail::ClassifyMotion(r.forcing, r.params, r.alpha, o.motion, s, recorder, true);
+    s = {point.motion.section, point.motion.mode};
+    if (point.motion.status == MotionStatus::kPeriodic && recorder.impacts.empty()) {
+      // Stopped early on a periodic motion: its impacts of one period p stand for the record.
+      detail::MapState again = s;
+      recorder.Start(point.motion.period, false, false, true);
+      detail::Advance(r.forcing, r.params, r.alpha, o.motion, again, point.motion.period, nullptr,
+                      &recorder);
+    }
+    if (point.motion.status != MotionStatus::kEventLimit) {
+      for (const detail::Recorder::Impact& im : recorder.impacts) {
+        double phase = s.z.psi + im.phase;
+        phase -= kTau * std::floor(phase / kTau);
+        out.impacts.push_back({value, direction, im.period, im.right, phase, im.u_before});
+      }
+    }
+    if (o.multipliers && point.motion.status == MotionStatus::kPeriodic) {
+      const PeriodicMotion pm = ShootPeriodicMotion(
+          r.forcing, r.params, r.alpha, point.motion.section, point.motion.period, shooting);
+      if (pm.status == ShootingStatus::kConverged && !pm.multipliers.empty()) {
+        point.multiplier_re = pm.multipliers.front().real();
+        point.multiplier_im = pm.multipliers.front().imag();
+        point.spectral_radius = pm.spectral_radius;
+      }
+    }
+    out.summary.push_back(point);
+  }
+}
+
+void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram& out) {
+  for (int i = 0; i < o.steps; ++i) {
+    const double value = Value(o, i);
+    const Robot r = At(base, o.param, value);
+    for (const Solution& s : FindRobotOrbits(r.forcing, r.params, r.alpha)) {
+      if (!s.validity.valid()) continue;
+      BifurcationPoint point;
+      point.param = value;
+      point.direction = SweepDirection::kAnalytic;
+      point.motion.status = MotionStatus::kPeriodic;
+      point.motion.period = 1;
+      point.motion.impacts_right = 1;
+      point.motion.mean_velocity = s.orbit.v_mean;
+      const Stability st = ComputeStability(s.orbit);
+      if (st.computed) {
+        point.multiplier_re = st.multipliers[0].real();
+        point.multiplier_im = st.multipliers[0].imag();
+        point.spectral_radius = st.spectral_radius;
+      }
+      out.summary.push_back(point);
+    }
+  }
+}
+
+}  // namespace
+
+const char* BifurcationParamName(BifurcationParam param) {
+  switch (param) {
+    case BifurcationParam::kA:
+      return "A";
+    case BifurcationParam::kC:
+      return "c";
+    case BifurcationParam::kAlpha:
+      return "alpha";
+    case BifurcationParam::kT0:
+      return "T0";
+    case BifurcationParam::kE:
+      return "e";
+    case BifurcationParam::kPhi0:
+      return "phi0";
+  }
+  return "unknown";
+}
+
+BifurcationParam ParseBifurcationParam(const std::string& name) {
+  for (BifurcationParam p :
+       {BifurcationParam::kA, BifurcationParam::kC, BifurcationParam::kAlpha, BifurcationParam::kT0,
+        BifurcationParam::kE, BifurcationParam::kPhi0}) {
+    if (name == BifurcationParamName(p)) return p;
+  }
+  throw std::invalid_argument(
+      fmt::format("parameter = {} is invalid: expected one of A, c, alpha, T0, e, phi0", name));
+}
+
+const char* SweepDirectionName(SweepDirection direction) {
+  switch (direction) {
+    case SweepDirection::kUp:
+      return "up";
+    case SweepDirection::kDown:
+      return "down";
+    case SweepDirection::kAnalytic:
+      return "analytic";
+  }
+  return "unknown";
+}
+
+void BifurcationOptions::Validate() const {
+  if (!std::isfinite(from) || !std::isfinite(to)) {
+    throw std::invalid_argument(
+        fmt::format("range from = {} to = {} is invalid: expected two finite numbers", from, to));
+  }
+  if (steps < 2 || steps > kMaxSteps) {
+    throw std::invalid_argument(
+        fmt::format("steps = {} is invalid: expected 2 <= steps <= {}", steps, kMaxSteps));
+  }
+  if (!up && !down) {
+    throw std::invalid_argument("direction is invalid: expected up, down or both");
+  }
+  motion.Validate();
+  if (threads < 0 || threads > 1024) {
+    throw std::invalid_argument(fmt::format(
+        "threads = {} is invalid: expected 1 <= threads <= 1024 (0: all cores)", threads));
+  }
+}
+
+BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                                      const BifurcationOptions& options) {
+  options.Validate();
+  const Robot base{forcing, params, alpha};
+  if (options.param == BifurcationParam::kA && !forcing.harmonic()) {
+    throw std::invalid_argument(
+        "parameter = A is invalid for a Fourier force: expected the harmonic family");
+  }
+  // Every robot of the range must be valid: check both ends and name the one that is not.
+  for (double value : {options.from, options.to}) {
+    const Robot r = At(base, options.param, value);
+    try {
+      r.params.Validate();
+      detail::ValidateStart(r.alpha, options.start);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("{} = {} makes the robot invalid: {}",
+                                              BifurcationParamName(options.param), value,
+                                              e.what()));
+    }
+  }
+  // Up, down and analytic parts are independent: run them in parallel, join in order.
+  std::vector<SweepDirection> parts;
+  if (options.up) parts.push_back(SweepDirection::kUp);
+  if (options.down) parts.push_back(SweepDirection::kDown);
+  if (options.analytic) parts.push_back(SweepDirection::kAnalytic);
+  std::vector<BifurcationDiagram> results(parts.size());
+  detail::ParallelFor(
+      static_cast<std::int64_t>(parts.size()),
+      detail::WorkerCount(options.threads, static_cast<std::int64_t>(parts.size())),
+      [&](std::int64_t k, int) {
+        const auto i = static_cast<std::size_t>(k);
+        if (parts[i] == SweepDirection::kAnalytic) {
+          Analytic(base, options, results[i]);
+        } else {
+          Sweep(base, options, parts[i], results[i]);
+        }
+      },
+      [](std::int64_t) {});
+  BifurcationDiagram out;
+  for (BifurcationDiagram& r : results) {
+    out.impacts.insert(out.impacts.end(), r.impacts.begin(), r.impacts.end());
+    out.summary.insert(out.summary.end(), r.summary.begin(), r.summary.end());
+  }
+  return out;
+}
+
+}  // namespace capsubot

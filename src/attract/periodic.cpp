@@ -1,0 +1,330 @@
+// Newton shooting on the p-th iterate of the stroboscopic map (docs/model.md section 13).
+
+#include "capsubot/periodic.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "attract/stroboscopic.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr int kMaxPeriodLimit = 64;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A candidate period whose return distance is within this factor of the smallest one (plus
+// rounding) is preferred when it is shorter: near a period-p motion every multiple of p
+// returns about as close.
+constexpr double kReturnFactor = 2.0;
+constexpr double kReturnRounding = 1e-12;
+// Newton steps are halved at most this many times while the residual does not decrease.
+constexpr int kMaxHalvings = 8;
+
+using Vec3 = std::array<double, 3>;  // (x, u, v)
+
+Vec3 ToVec(const PhaseState& z) { return {z.x, z.u, z.v}; }
+
+// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
+// velocity v (see periodic.hpp).
+std::vector<int> FreeCoordinates(SimMode mode, double v) {
+  switch (mode) {
+    case SimMode::kRest:
+      return {0, 1};
+    case SimMode::kSlideForward:
+    case SimMode::kSlideBackward:
+      return {0, 1, 2};
+    case SimMode::kOnRightWall:
+    case SimMode::kOnLeftWall:
+      return v != 0.0 ? std::vector<int>{2} : std::vector<int>{};
+  }
+  return {};
+}
+
+class Shooter {
+ public:
+  Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
+      : forcing_(forcing), params_(params), alpha_(alpha) {
+    motion_.chatter_velocity = o.chatter_velocity;
+    motion_.max_events_per_period = o.max_events_per_period;
+  }
+
+  // P^p(z): false if the simulation hit the work bound.
+  bool Map(const PhaseState& z, int p, detail::MapState* out, double* displacement = nullptr,
+           detail::Recorder* recorder = nullptr) {
+    *out = {z, SimMode::kRest};
+    const SimResult r =
+        detail::Advance(forcing_, params_, alpha_, motion_, *out, p, displacement, recorder);
+    return r.status != SimStatus::kEventLimit;
+  }
+
+  // The section: events of `periods` periods from s, then s moved to the middle of their
+  // largest gap.
+  bool PlaceSection(detail::MapState& s, int periods) {
+    detail::MapState probe = s;
+    recorder_.Start(periods, false, true);
+    if (detail::Advance(forcing_, params_, alpha_, motion_, probe, periods, nullptr, &recorder_)
+            .status == SimStatus::kEventLimit) {
+      return false;
+    }
+    const double shift = detail::SectionShift(recorder_.event_phases);
+    if (shift <= 0.0) return true;
+    return detail::Advance(forcing_, params_, alpha_, motion_, s, shift / kTau, nullptr).status !=
+           SimStatus::kEventLimit;
+  }
+
+  // The period whose iterate returns closest (the shortest within kReturnFactor).
+  int ChoosePeriod(const detail::MapState& s, int max_period, bool* ok) {
+    detail::MapState probe = s;
+    recorder_.Start(max_period, true, false);
+    *ok = detail::Advance(forcing_, params_, alpha_, motion_, probe, max_period, nullptr,
+                          &recorder_, true)
+              .status != SimStatus::kEventLimit;
+    const std::vector<SimState>& S = recorder_.samples;
+    if (!*ok || static_cast<int>(S.size()) != max_period + 1) return 1;
+    std::vector<double> back(static_cast<std::size_t>(max_period) + 1, kInf);
+    double best = kInf;
+    for (int p = 1; p <= max_period; ++p) {
+      const SimState& a = S[static_cast<std::size_t>(p)];
+      const SimState& b = S[0];
+      if (a.mode != b.mode) continue;
+      back[static_cast<std::size_t>(p)] =
+          std::max({std::abs(a.x - b.x), std::abs(a.u - b.u), std::abs(a.v - b.v)});
+      best = std::min(best, back[static_cast<std::size_t>(p)]);
+    }
+    for (int p = 1; p <= max_period; ++p) {
+      if (back[static_cast<std::size_t>(p)] <= kReturnFactor * best + kReturnRounding) return p;
+    }
+    return 1;
+  }
+
+  detail::Recorder recorder_;
+
+ private:
+  const Forcing& forcing_;
+  const Params& params_;
+  double alpha_;
+  MotionOptions motion_;
+};
+
+double Residual(const Vec3& z, const PhaseState& image) {
+  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])});
+}
+
+PhaseState WithCoordinates(PhaseState base, const Vec3& z) {
+  base.x = z[0];
+  base.u = z[1];
+  base.v = z[2];
+  return base;
+}
+
+PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptions& o) {
+  PeriodicMotion out;
+  out.period = p;
+  detail::MapState image;
+  if (!shooter.Map(z0, p, &image)) {
+    out.status = ShootingStatus::kEventLimit;
+    out.state = z0;
+    return out;
+  }
+  const SimMode mode = image.mode;
+  const std::vector<int> free = FreeCoordinates(mode, image.z.v);
+  const int d = static_cast<int>(free.size());
+  // Fixed coordinates take the values the mode imposes (those of the image).
+  Vec3 z = ToVec(z0);
+  for (int i = 0; i < 3; ++i) {
+    if (std::find(free.begin(), free.end(), i) == free.end())
+      z[static_cast<std::size_t>(i)] = ToVec(image.z)[static_cast<std::size_t>(i)];
+  }
+  const auto jacobian = [&](const Vec3& at, Eigen::MatrixXd* J) {
+    J->resize(d, d);
+    for (int c = 0; c < d; ++c) {
+      Vec3 plus = at, minus = at;
+      const auto k = static_cast<std::size_t>(free[static_cast<std::size_t>(c)]);
+      plus[k] += o.step;
+      minus[k] -= o.step;
+      detail::MapState ip, im;
+      if (!shooter.Map(WithCoordinates(z0, plus), p, &ip) ||
+          !shooter.Map(WithCoordinates(z0, minus), p, &im)) {
+        return false;
+      }
+      const Vec3 a = ToVec(ip.z), b = ToVec(im.z);
+      for (int r = 0; r < d; ++r) {
+        const auto kr = static_cast<std::size_t>(free[static_cast<std::size_t>(r)]);
+        (*J)(r, c) = (a[kr] - b[kr]) / (2.0 * o.step);
+      }
+    }
+    return true;
+  };
+  const auto evaluate = [&](const Vec3& at, double* res, Vec3* f) {
+    detail::MapState im;
+    if (!shooter.Map(WithCoordinates(z0, at), p, &im)) return false;
+    *res = Residual(at, im.z);
+    const Vec3 v = ToVec(im.z);
+    for (int i = 0; i < 3; ++i)
+      (*f)[static_cast<std::size_t>(i)] =
+          v[static_cast<std::size_t>(i)] - at[static_cast<std::size_t>(i)];
+    return true;
+  };
+
+  double res = kInf;
+  Vec3 f{};
+  if (!evaluate(z, &res, &f)) {
+    out.status = ShootingStatus::kEventLimit;
+    return out;
+  }
+  Eigen::MatrixXd J;
+  int it = 0;
+  for (; it < o.max_iterations && res > o.residual_tolerance && d > 0; ++it) {
+    if (!jacobian(z, &J)) {
+      out.status = ShootingStatus::kEventLimit;
+      break;
+    }
+    Eigen::VectorXd rhs(d);
+    for (int r = 0; r < d; ++r)
+      rhs(r) = -f[static_cast<std::size_t>(free[static_cast<std::size_t>(r)])];
+    const Eigen::MatrixXd A = J - Eigen::MatrixXd::Identity(d, d);
+    const Eigen::VectorXd dz = A.fullPivLu().solve(rhs);
+    // Damped step: halve while the residual does not decrease.
+    double scale = 1.0;
+    bool improved = false;
+    for (int h = 0; h <= kMaxHalvings && !improved; ++h, scale *= 0.5) {
+      Vec3 trial = z;
+      for (int r = 0; r < d; ++r)
+        trial[static_cast<std::size_t>(free[static_cast<std::size_t>(r)])] += scale * dz(r);
+      trial[0] = std::clamp(trial[0], 0.0, 1.0);
+      double tres = kInf;
+      Vec3 tf{};
+      if (evaluate(trial, &tres, &tf) && tres < res) {
+        z = trial;
+        res = tres;
+        f = tf;
+        improved = true;
+      }
+    }
+    if (!improved) break;
+  }
+  out.iterations = it;
+  out.residual = res;
+  out.state = WithCoordinates(z0, z);
+  out.mode = mode;
+  out.dimension = d;
+  if (out.status == ShootingStatus::kEventLimit) return out;
+  out.status =
+      res <= o.residual_tolerance ? ShootingStatus::kConverged : ShootingStatus::kNoConvergence;
+  // Multipliers at the reported state.
+  if (d > 0 && jacobian(z, &J)) {
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
+    for (int i = 0; i < d; ++i) out.multipliers.push_back(es.eigenvalues()(i));
+    std::stable_sort(out.multipliers.begin(), out.multipliers.end(),
+                     [](const std::complex<double>& a, const std::complex<double>& b) {
+                       return std::abs(a) > std::abs(b);
+                     });
+    const std::complex<double> top = out.multipliers.front();
+    out.spectral_radius = std::abs(top);
+    out.distance_to_plus_one = std::abs(top - 1.0);
+    out.distance_to_minus_one = std::abs(top + 1.0);
+    out.distance_to_unit_circle = std::abs(std::abs(top) - 1.0);
+  } else if (d == 0) {
+    out.spectral_radius = 0.0;
+    out.distance_to_plus_one = out.distance_to_minus_one = out.distance_to_unit_circle = 1.0;
+  }
+  out.stable = out.spectral_radius < 1.0;
+  // Impacts and displacement over one period p of the motion.
+  detail::MapState end;
+  double displacement = 0.0;
+  shooter.recorder_.Start(p, false, false);
+  if (shooter.Map(out.state, p, &end, &displacement, &shooter.recorder_)) {
+    for (int k = 0; k < p; ++k) {
+      out.impacts_right += shooter.recorder_.right[static_cast<std::size_t>(k)];
+      out.impacts_left += shooter.recorder_.left[static_cast<std::size_t>(k)];
+    }
+    out.mean_velocity = displacement / (p * kTau);
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* ShootingStatusName(ShootingStatus status) {
+  switch (status) {
+    case ShootingStatus::kNotRun:
+      return "not_run";
+    case ShootingStatus::kConverged:
+      return "converged";
+    case ShootingStatus::kNoConvergence:
+      return "no_convergence";
+    case ShootingStatus::kEventLimit:
+      return "event_limit";
+  }
+  return "unknown";
+}
+
+void ShootingOptions::Validate() const {
+  const auto fail = [](const char* name, double value, const char* rule) {
+    throw std::invalid_argument(fmt::format("{} = {} is invalid: expected {}", name, value, rule));
+  };
+  if (transient < 0) fail("transient", transient, ">= 0 periods");
+  if (max_period < 1 || max_period > kMaxPeriodLimit) {
+    fail("max_period", max_period, "1 <= max_period <= 64");
+  }
+  if (!(residual_tolerance > 0.0) || !std::isfinite(residual_tolerance)) {
+    fail("residual_tolerance", residual_tolerance, "a finite number > 0");
+  }
+  if (max_iterations < 1) fail("max_iterations", max_iterations, ">= 1");
+  if (!(step > 0.0) || !std::isfinite(step)) fail("step", step, "a finite number > 0");
+  if (!(chatter_velocity > 0.0) || !std::isfinite(chatter_velocity)) {
+    fail("chatter_velocity", chatter_velocity, "a finite number > 0");
+  }
+  if (max_events_per_period < 10) {
+    fail("max_events_per_period", static_cast<double>(max_events_per_period), ">= 10");
+  }
+}
+
+PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
+                                  const PhaseState& start, const ShootingOptions& options) {
+  params.Validate();
+  options.Validate();
+  detail::ValidateStart(alpha, start);
+  Shooter shooter(forcing, params, alpha, options);
+  detail::MapState s{start, SimMode::kRest};
+  s.z.psi -= kTau * std::floor(s.z.psi / kTau);
+  PeriodicMotion fail;
+  fail.status = ShootingStatus::kEventLimit;
+  MotionOptions mo;
+  mo.chatter_velocity = options.chatter_velocity;
+  mo.max_events_per_period = options.max_events_per_period;
+  if (options.transient > 0 &&
+      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
+          SimStatus::kEventLimit) {
+    return fail;
+  }
+  if (!shooter.PlaceSection(s, options.max_period)) return fail;
+  bool ok = true;
+  const int p = shooter.ChoosePeriod(s, options.max_period, &ok);
+  if (!ok) return fail;
+  return Shoot(shooter, s.z, p, options);
+}
+
+PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
+                                   const PhaseState& start, int period,
+                                   const ShootingOptions& options) {
+  params.Validate();
+  options.Validate();
+  detail::ValidateStart(alpha, start);
+  if (period < 1 || period > kMaxPeriodLimit) {
+    throw std::invalid_argument(
+        fmt::format("period = {} is invalid: expected 1 <= period <= 64", period));
+  }
+  Shooter shooter(forcing, params, alpha, options);
+  PhaseState z = start;
+  z.psi -= kTau * std::floor(z.psi / kTau);
+  return Shoot(shooter, z, period, options);
+}
+
+}  // namespace capsubot

@@ -1,0 +1,85 @@
+// Speed of the long-run classification from rest (docs/model.md sections 12 and 13): one start of
+// 200 + 100 periods (wanted <= 0.5 ms), 64 starts from rest on 2 threads (wanted <= 50 ms), a
+// 256 x 256 basin map on 2 threads (wanted <= 10 s), a 1000-value bifurcation diagram in T0, both
+// directions, 200 + 100 periods per value, with multipliers, on 2 threads (wanted <= 1 s).
+// The robot is the exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem
+// forcing --stable --json`), whose starts from rest end in a 3-right/1-left motion.
+
+#include <benchmark/benchmark.h>
+
+#include "capsubot/attractors.hpp"
+#include "capsubot/bifurcation.hpp"
+
+namespace {
+
+using capsubot::Forcing;
+using capsubot::Params;
+
+struct Robot {
+  Forcing forcing =
+      Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
+  Params params;
+  double alpha = 0.6435592358295166;
+};
+
+void BM_LongRunMotionOneStart300Periods(benchmark::State& state) {
+  const Robot r;
+  const capsubot::MotionOptions opt;  // 200 + 100 periods
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += capsubot::LongRunMotion(r.forcing, r.params, r.alpha, capsubot::RestStart(0.5, 1.0), opt)
+               .mean_velocity;
+  }
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * 300);  // periods
+}
+BENCHMARK(BM_LongRunMotionOneStart300Periods)->Unit(benchmark::kMillisecond);
+
+void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
+  const Robot r;
+  capsubot::FromRestOptions opt;  // 8 x 8 starts, 200 + 100 periods
+  opt.attractor.threads = 2;
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
+  }
+  benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
+  const Robot r;
+  capsubot::BifurcationOptions opt;
+  opt.param = capsubot::BifurcationParam::kT0;
+  opt.from = 0.5;
+  opt.to = 2.0;
+  opt.steps = 1000;
+  opt.analytic = false;
+  opt.threads = 2;
+  std::size_t rows = 0;
+  for (auto _ : state) {
+    rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
+  }
+  benchmark::DoNotOptimize(rows);
+}
+BENCHMARK(BM_Bifurcation1000ValuesBothDirections)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+}  // namespace
+
+// A 256 x 256 basin map, 200 + 100 periods per start, 2 threads (wanted <= 10 s).
+void BM_Basins256x256TwoThreads(benchmark::State& state) {
+  const Robot r;
+  capsubot::FromRestOptions opt;
+  opt.n_x = 256;
+  opt.n_psi = 256;
+  opt.attractor.threads = 2;
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
+  }
+  benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_Basins256x256TwoThreads)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
