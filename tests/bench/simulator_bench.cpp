@@ -1,4 +1,4 @@
-// Simulated periods per second of a one-impact orbit (issue 3: at least 200,000 on one core,
+// Simulated periods per second of a one-impact orbit (target: at least 200,000 on one core,
 // Release) and the cost of the analytic stability (wanted: about 2 microseconds or less).
 
 #include <benchmark/benchmark.h>

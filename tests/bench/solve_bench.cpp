@@ -1,5 +1,5 @@
 // One full solve (orbit + exact validity), the unit of work of every sweep and optimiser.
-// Target (issue 2): at least 500,000 solves per second on one core (Release).
+// Target: at least 500,000 solves per second on one core (Release).
 
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// The sweep's hot path (issue 5: 1,000,000 phi0 points, solve + exact validity + CSV row, in
+// The sweep's hot path (1,000,000 phi0 points, solve + exact validity + CSV row, in
 // at most 2 s wall on 2 cores, near-linear scaling from 1 to 2 threads).
 //
 //   capsubot_bench --benchmark_filter=Sweep

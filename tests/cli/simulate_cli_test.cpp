@@ -1,4 +1,4 @@
-// The command line of issue 3: `capsubot simulate`, `capsubot orbits`, `solve --stability`.
+// The command line of the simulator and the robot orbits: `capsubot simulate`, `capsubot orbits`, `solve --stability`.
 // Reference numbers come from `capsubot solve --json` (the analytic orbit), which the
 // simulation must reproduce.
 

@@ -1,5 +1,5 @@
 // The event-driven simulator (docs/model.md sections 3 and 10) and the validation of the analytic
-// orbit against it (issue 3, item 3). The simulator never calls the orbit code; these tests
+// orbit against it. The simulator never calls the orbit code; these tests
 // compare the two.
 
 #include "capsubot/simulator.hpp"
@@ -514,7 +514,7 @@ TEST(Simulator, ContactForceTouchingZeroKeepsTheBodyOnTheWall) {
 }
 
 // The same touch reached from inside: the body comes to the right wall (A = c = 0.5, T0 = 1,
-// the reviewer's case), chatters (e = 1: by the cut-off), rests on the wall, and the contact
+// a grazing start), chatters (e = 1: by the cut-off), rests on the wall, and the contact
 // force F = 0.5 (sin + 1) touches zero at phase 3 pi / 2 without changing sign.
 TEST(Simulator, BodyComingToRestOnTheWallStaysThroughATouchOfTheContactForce) {
   const Forcing f = Forcing::Harmonic(0.5, 0.5, 0.0);
