@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "attract/parallel.hpp"
@@ -12,6 +13,7 @@
 #include "capsubot/periodic.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
+#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -136,21 +138,9 @@ void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram
 }  // namespace
 
 const char* BifurcationParamName(BifurcationParam param) {
-  switch (param) {
-    case BifurcationParam::kA:
-      return "A";
-    case BifurcationParam::kC:
-      return "c";
-    case BifurcationParam::kAlpha:
-      return "alpha";
-    case BifurcationParam::kT0:
-      return "T0";
-    case BifurcationParam::kE:
-      return "e";
-    case BifurcationParam::kPhi0:
-      return "phi0";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"A", "c", "alpha", "T0", "e", "phi0"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BifurcationParam::kPhi0) + 1);
+  return detail::EnumName(kNames, param);
 }
 
 BifurcationParam ParseBifurcationParam(const std::string& name) {
@@ -164,15 +154,9 @@ BifurcationParam ParseBifurcationParam(const std::string& name) {
 }
 
 const char* SweepDirectionName(SweepDirection direction) {
-  switch (direction) {
-    case SweepDirection::kUp:
-      return "up";
-    case SweepDirection::kDown:
-      return "down";
-    case SweepDirection::kAnalytic:
-      return "analytic";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"up", "down", "analytic"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(SweepDirection::kAnalytic) + 1);
+  return detail::EnumName(kNames, direction);
 }
 
 void BifurcationOptions::Validate() const {

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "attract/stroboscopic.hpp"
 #include "capsubot/attractors.hpp"
+#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -21,17 +23,9 @@ constexpr double kSectionClearance = 1e-6;
 }  // namespace
 
 const char* MotionStatusName(MotionStatus status) {
-  switch (status) {
-    case MotionStatus::kNotRun:
-      return "not_run";
-    case MotionStatus::kPeriodic:
-      return "periodic";
-    case MotionStatus::kNoPeriod:
-      return "no_period";
-    case MotionStatus::kEventLimit:
-      return "event_limit";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "periodic", "no_period", "event_limit"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(MotionStatus::kEventLimit) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 void MotionOptions::Validate() const {

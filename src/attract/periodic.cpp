@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
 #include "attract/stroboscopic.hpp"
+#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -252,17 +254,9 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
 }  // namespace
 
 const char* ShootingStatusName(ShootingStatus status) {
-  switch (status) {
-    case ShootingStatus::kNotRun:
-      return "not_run";
-    case ShootingStatus::kConverged:
-      return "converged";
-    case ShootingStatus::kNoConvergence:
-      return "no_convergence";
-    case ShootingStatus::kEventLimit:
-      return "event_limit";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "converged", "no_convergence", "event_limit"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(ShootingStatus::kEventLimit) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 void ShootingOptions::Validate() const {

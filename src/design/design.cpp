@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
+#include "model/enum_names.hpp"
 #include "numerics/golden.hpp"
 
 namespace capsubot {
@@ -129,17 +131,9 @@ std::string Describe(const DesignInput& in, const Gait& g) {
 }  // namespace
 
 const char* DesignStatusName(DesignStatus status) {
-  switch (status) {
-    case DesignStatus::kNotRun:
-      return "not_run";
-    case DesignStatus::kOk:
-      return "ok";
-    case DesignStatus::kMotorSlidesShell:
-      return "motor_slides_shell";
-    case DesignStatus::kNoGait:
-      return "no_gait";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "ok", "motor_slides_shell", "no_gait"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(DesignStatus::kNoGait) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 DesignResult Design(const DesignInput& in, const DesignProgress& progress) {

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "capsubot/design.hpp"
 #include "capsubot/optimize_options.hpp"
-#include "capsubot/validity.hpp"
 #include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
+#include "capsubot/validity.hpp"
+#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -61,19 +63,10 @@ std::vector<std::string> Binding(const DesignInput& in, const Gait& gait) {
 }  // namespace
 
 const char* GaitStatusName(GaitStatus status) {
-  switch (status) {
-    case GaitStatus::kNotRun:
-      return "not_run";
-    case GaitStatus::kOk:
-      return "ok";
-    case GaitStatus::kMotorSlidesShell:
-      return "motor_slides_shell";
-    case GaitStatus::kNoOrbit:
-      return "no_orbit";
-    case GaitStatus::kNotRobust:
-      return "not_robust";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "ok", "motor_slides_shell", "no_orbit",
+                                           "not_robust"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(GaitStatus::kNotRobust) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 Gait EvaluateGait(const DesignInput& input, double m2, double frequency) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
+#include "model/enum_names.hpp"
 #include "numerics/brent.hpp"
 
 namespace capsubot {
@@ -34,19 +36,10 @@ double StopPhase(const Forcing& f, double T0, double Pi_tau) {
 }  // namespace
 
 const char* StatusName(OrbitStatus status) {
-  switch (status) {
-    case OrbitStatus::kNotRun:
-      return "not_run";
-    case OrbitStatus::kOk:
-      return "ok";
-    case OrbitStatus::kNonPositiveMeanForce:
-      return "non_positive_mean_force";
-    case OrbitStatus::kNoMassRatio:
-      return "no_mass_ratio";
-    case OrbitStatus::kNonFinite:
-      return "non_finite";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "ok", "non_positive_mean_force",
+                                           "no_mass_ratio", "non_finite"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(OrbitStatus::kNonFinite) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {

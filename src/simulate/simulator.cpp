@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 
+#include "model/enum_names.hpp"
 #include "numerics/brent.hpp"
 
 namespace capsubot {
@@ -762,53 +764,24 @@ SimResult Simulation::Run() {
 }  // namespace
 
 const char* EventKindName(EventKind kind) {
-  switch (kind) {
-    case EventKind::kImpactRight:
-      return "impact_right";
-    case EventKind::kImpactLeft:
-      return "impact_left";
-    case EventKind::kStop:
-      return "stop";
-    case EventKind::kBreakaway:
-      return "breakaway";
-    case EventKind::kStick:
-      return "stick";
-    case EventKind::kRelease:
-      return "release";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"impact_right", "impact_left", "stop",
+                                           "breakaway",    "stick",       "release"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(EventKind::kRelease) + 1);
+  return detail::EnumName(kNames, kind);
 }
 
 const char* SimModeName(SimMode mode) {
-  switch (mode) {
-    case SimMode::kRest:
-      return "rest";
-    case SimMode::kSlideForward:
-      return "slide_forward";
-    case SimMode::kSlideBackward:
-      return "slide_backward";
-    case SimMode::kOnRightWall:
-      return "on_right_wall";
-    case SimMode::kOnLeftWall:
-      return "on_left_wall";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"rest", "slide_forward", "slide_backward",
+                                           "on_right_wall", "on_left_wall"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(SimMode::kOnLeftWall) + 1);
+  return detail::EnumName(kNames, mode);
 }
 
 const char* SimStatusName(SimStatus status) {
-  switch (status) {
-    case SimStatus::kNotRun:
-      return "not_run";
-    case SimStatus::kOk:
-      return "ok";
-    case SimStatus::kImpactLimit:
-      return "impact_limit";
-    case SimStatus::kEventLimit:
-      return "event_limit";
-    case SimStatus::kNonFinite:
-      return "non_finite";
-  }
-  return "unknown";
+  static constexpr const char* kNames[] = {"not_run", "ok", "impact_limit", "event_limit",
+                                           "non_finite"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(SimStatus::kNonFinite) + 1);
+  return detail::EnumName(kNames, status);
 }
 
 void SimOptions::Validate() const {
