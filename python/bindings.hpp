@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "capsubot/energy.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
@@ -60,9 +61,21 @@ inline constexpr const char* kModelArgsDoc =
 /// A number as the command line's JSON writes it: None for NaN or infinity (JSON null).
 py::object Number(double value);
 
-/// The dict of `capsubot solve --json`: A, c, phi0 (cos, sin for a Fourier force), T0, e,
-/// status, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid, violations.
+/// The dict of `capsubot solve --json` without the energy: A, c, phi0 (cos, sin for a Fourier
+/// force), T0, e, status, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance,
+/// valid, violations.
 py::dict SolutionDict(const Solution& solution);
+
+/// Adds the key "energy" of `solve --json`: a dict motor_work, motor_work_positive,
+/// friction_loss, impact_loss (per period; None when not computed).
+void AddEnergy(py::dict& d, const Energy& energy);
+
+/// The docstring lines of the margins of a robust gait (docs/model.md section 12).
+inline constexpr const char* kMarginArgsDoc =
+    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
+    "    margin_stroke  clearance relative to the stroke d_s: the clearance from both walls is\n"
+    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)\n"
+    "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
 
 /// Adds the keys of `solve --stability --json`: multipliers (list of {"re", "im"}),
 /// spectral_radius and stable (None, None, False when not computed).

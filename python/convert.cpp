@@ -69,9 +69,20 @@ py::dict SolutionDict(const Solution& s) {
   d["v_mean"] = Number(o.v_mean);
   d["x_min"] = Number(v.x_min);
   d["x_max"] = Number(v.x_max);
+  d["stroke"] = Number(v.stroke);
+  d["clearance"] = Number(v.clearance);
   d["valid"] = v.valid();
   d["violations"] = v.ViolationNames();
   return d;
+}
+
+void AddEnergy(py::dict& d, const Energy& en) {
+  py::dict energy;
+  energy["motor_work"] = Number(en.motor_work);
+  energy["motor_work_positive"] = Number(en.motor_work_positive);
+  energy["friction_loss"] = Number(en.friction_loss);
+  energy["impact_loss"] = Number(en.impact_loss);
+  d["energy"] = energy;
 }
 
 void AddStability(py::dict& d, const Stability& st) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
 
 namespace capsubot::python {
@@ -15,8 +16,9 @@ namespace {
 
 py::list Orbits(double alpha, std::optional<double> A, double c,
                 std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
-                double T0, double e, double margin, std::int64_t max_evaluations) {
-  const Params params{T0, e, margin};
+                double T0, double e, double margin, double margin_stroke, double stick_margin,
+                std::int64_t max_evaluations) {
+  const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
   bool complete = true;
@@ -28,6 +30,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
   py::list all;
   for (const Solution& s : found) {
     py::dict d = SolutionDict(s);
+    AddEnergy(d, OrbitEnergy(s.orbit));
     AddStability(d, ComputeStability(s.orbit));
     d["complete"] = complete;
     all.append(d);
@@ -52,7 +55,6 @@ constexpr const char* kOrbitsDoc =
     "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
 
 constexpr const char* kOrbitsArgsDoc =
-    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
     "    max_evaluations  work bound of the search (evaluations of the orbit equation), >= 1\n\n"
     "Returns a list of dicts sorted by phi0, each with the keys of solve(..., stability=True) "
     "and complete (False: the search hit its work bound and orbits may be missing; a "
@@ -64,11 +66,13 @@ constexpr const char* kOrbitsArgsDoc =
 }  // namespace
 
 void BindOrbits(py::module_& m) {
-  const std::string doc =
-      std::string(kOrbitsDoc) + kForcingArgsDoc + kModelArgsDoc + kOrbitsArgsDoc + kUnits;
+  const std::string doc = std::string(kOrbitsDoc) + kForcingArgsDoc + kModelArgsDoc +
+                          kMarginArgsDoc + kOrbitsArgsDoc + kUnits;
   m.def("orbits", &Orbits, doc.c_str(), py::kw_only(), py::arg("alpha"), py::arg("A") = py::none(),
         py::arg("c"), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
+        py::arg("margin_stroke") = Params{}.margin_stroke,
+        py::arg("stick_margin") = Params{}.stick_margin,
         py::arg("max_evaluations") = kRobotOrbitsMaxEvaluations);
 }
 

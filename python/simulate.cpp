@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
 
 namespace capsubot::python {
@@ -98,18 +99,34 @@ py::dict EventTable(const TableObserver& o) {
   return d;
 }
 
+// The figures of a span of the run (the record, or the transient) as keys of `d`.
+void AddTally(py::dict& d, const SimTally& t) {
+  d["displacement"] = Number(t.displacement);
+  d["v_mean"] = Number(t.v_mean);
+  d["impacts_right"] = t.impacts_right;
+  d["impacts_left"] = t.impacts_left;
+  d["stops"] = t.stops;
+  d["breakaways"] = t.breakaways;
+  d["sticks"] = t.sticks;
+  d["releases"] = t.releases;
+  d["events"] = t.events;
+  AddEnergy(d, t.energy);
+}
+
 py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                   double T0, double e, std::optional<double> alpha, std::optional<double> x0,
                   std::optional<double> u0, std::optional<double> v0, double y0, bool from_orbit,
-                  double periods, double chatter_velocity, std::int64_t max_events_per_period,
-                  bool events, bool trajectory, long samples_per_period) {
+                  double periods, double transient, double chatter_velocity,
+                  std::int64_t max_events_per_period, bool events, bool trajectory,
+                  long samples_per_period) {
   const Params params{T0, e, 0.0};
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   SimOptions sim;
   sim.y0 = y0;
   sim.periods = periods;
+  sim.transient = transient;
   sim.chatter_velocity = chatter_velocity;
   sim.max_events_per_period = max_events_per_period;
   std::optional<Solution> orbit;
@@ -126,11 +143,11 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
           fmt::format("from_orbit: no one-impact orbit exists for this force, T0 and e ({})",
                       StatusName(o.status)));
     }
-    // Right after the impact (docs/model.md section 4): x = 1, x' = -e u, v = v+.
-    sim.alpha = o.alpha;
-    sim.x0 = 1.0;
-    sim.u0 = -o.e * o.u;
-    sim.v0 = o.v_plus;
+    const SimOptions start = StartAfterImpact(o);
+    sim.alpha = start.alpha;
+    sim.x0 = start.x0;
+    sim.u0 = start.u0;
+    sim.v0 = start.v0;
   } else {
     if (!alpha) {
       throw std::invalid_argument("alpha is missing: give the mass ratio (or from_orbit=True)");
@@ -149,6 +166,7 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
         fmt::format("samples_per_period = {} is invalid: expected at least 1", samples_per_period));
   }
   if (trajectory) sim.sample_step = kTau / static_cast<double>(samples_per_period);
+  sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
 
   TableObserver observer(events, trajectory);
@@ -157,6 +175,7 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
     py::gil_scoped_release release;
     r = capsubot::Simulate(forcing, params, sim, events || trajectory ? &observer : nullptr);
   }
+  if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
   const SimState& f = r.final_state;
   py::dict d;
   d["status"] = SimStatusName(r.status);
@@ -168,15 +187,13 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
   d["v"] = Number(f.v);
   d["y"] = Number(f.y);
   d["mode"] = SimModeName(f.mode);
-  d["displacement"] = Number(r.displacement);
-  d["v_mean"] = Number(r.v_mean);
-  d["impacts_right"] = r.impacts_right;
-  d["impacts_left"] = r.impacts_left;
-  d["stops"] = r.stops;
-  d["breakaways"] = r.breakaways;
-  d["sticks"] = r.sticks;
-  d["releases"] = r.releases;
-  d["events"] = r.events;
+  AddTally(d, r);
+  if (sim.transient > 0.0) {
+    py::dict t;
+    t["periods"] = Number(sim.transient);
+    AddTally(t, r.transient);
+    d["transient"] = t;
+  }
   if (orbit) d["orbit"] = SolutionDict(*orbit);
   if (events) d["event_table"] = EventTable(observer);
   if (trajectory) d["trajectory"] = StateDict(observer.samples, "phi");
@@ -200,7 +217,9 @@ constexpr const char* kSimulateStateDoc =
     "    y0      initial capsule position [L]\n"
     "    from_orbit  start right after the impact of the analytic one-impact orbit for these\n"
     "            A, c, phi0, T0, e (x = 1, u = -e u, v = v_plus) with its alpha\n"
-    "    periods length in forcing periods (2 pi each), 0 < periods <= 1e8\n"
+    "    periods forcing periods (2 pi each) recorded after the transient, 0 < periods <= 1e8\n"
+    "    transient  forcing periods run first and reported apart (key 'transient'): the\n"
+    "            counts, v_mean and energy are over the periods after it, 0 <= transient <= 1e8\n"
     "    chatter_velocity  an impact slower than this [omega L], with the inner body pushed\n"
     "            into the wall, ends a chattering sequence: the body then rests on the wall\n"
     "    max_events_per_period  work bound: the run stops (status 'event_limit') after this\n"
@@ -211,13 +230,17 @@ constexpr const char* kSimulateStateDoc =
     "Returns a dict: status ('ok', 'impact_limit', 'event_limit'), message, alpha, the final "
     "state phi (rad), x (L), u, v (omega L), y (L), mode, displacement (y(end) - y0, L), "
     "v_mean (omega L), the counts impacts_right, impacts_left, stops, breakaways, sticks, "
-    "releases, events; with from_orbit, orbit (the dict of solve). With events: "
+    "releases, events, energy (a dict motor_work, motor_work_positive, friction_loss, "
+    "impact_loss in (m1+m2) omega^2 L^2, docs/model.md section 11), all over the recorded "
+    "periods; with transient > 0, transient (a dict periods and the same figures over the "
+    "transient); with from_orbit, orbit (the dict of solve). With events: "
     "'event_table', a dict of NumPy arrays phase, kind, x, u, v, y (state right after the "
     "event), u_before, v_before, mode (the columns of --events). With trajectory: "
     "'trajectory', a dict of arrays phi, x, u, v, y, mode. The tables are kept in memory: "
     "mind long runs.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule).\n\n";
+    "rule), RuntimeError when the state stops being finite (status 'non_finite': the command "
+    "line then exits with status 1).\n\n";
 
 }  // namespace
 
@@ -230,7 +253,7 @@ void BindSimulate(py::module_& m) {
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
         py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
         py::arg("y0") = defaults.y0, py::arg("from_orbit") = false,
-        py::arg("periods") = defaults.periods,
+        py::arg("periods") = defaults.periods, py::arg("transient") = defaults.transient,
         py::arg("chatter_velocity") = defaults.chatter_velocity,
         py::arg("max_events_per_period") = defaults.max_events_per_period,
         py::arg("events") = false, py::arg("trajectory") = false,

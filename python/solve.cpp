@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/orbit_energy.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -24,15 +25,17 @@ constexpr const char* kPhaseDoc =
     "            at the impact; required with A, default 0 with sin/cos\n";
 
 constexpr const char* kSolveReturnsDoc =
-    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
     "    stability  also the stability of the orbit (docs/model.md section 8)\n\n"
     "Returns a dict: A, c, phi0 (and cos, sin for a Fourier force, A is then None), T0, e, "
     "status ('ok', 'non_positive_mean_force', 'no_mass_ratio'), phi1 (stop phase, rad), alpha "
     "(mass ratio m2/(m1+m2) that closes the orbit), u (impact velocity, omega L), v_plus "
     "(capsule velocity after the impact, omega L), I (step per period, L), v_mean (mean "
-    "velocity I/tau, omega L), x_min, x_max (extrema of the inner body's position, L), valid "
-    "(bool), violations (names of the violated conditions); None where a quantity does not "
-    "exist. With stability: multipliers (list of {'re', 'im'}: eigenvalues of the impact "
+    "velocity I/tau, omega L), x_min, x_max (extrema of the inner body's position, L), stroke "
+    "(x_max - x_min, L), clearance (the clearance required from both walls, L), valid (bool), "
+    "violations (names of the violated conditions), energy (a dict motor_work, "
+    "motor_work_positive, friction_loss, impact_loss: per period, in (m1+m2) omega^2 L^2, "
+    "docs/model.md section 11); None where a quantity does not exist. With stability: multipliers "
+    "(list of {'re', 'im'}: eigenvalues of the impact "
     "map's Jacobian), spectral_radius and stable (spectral_radius < 1).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule).\n\n";
@@ -53,12 +56,14 @@ constexpr const char* kTrajectoryReturnsDoc =
 
 py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
                std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
-               double T0, double e, double margin, bool stability) {
-  const Params params{T0, e, margin};
+               double T0, double e, double margin, double margin_stroke, double stick_margin,
+               bool stability) {
+  const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   const Solution s = capsubot::Solve(forcing, params);
   py::dict d = SolutionDict(s);
+  AddEnergy(d, OrbitEnergy(s.orbit));
   if (stability) AddStability(d, ComputeStability(s.orbit));
   return d;
 }
@@ -103,11 +108,12 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
 
 void BindSolve(py::module_& m) {
   const std::string solve_doc = std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc +
-                                kModelArgsDoc + kSolveReturnsDoc + kUnits;
+                                kModelArgsDoc + kMarginArgsDoc + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("stability") = false);
+        py::arg("margin_stroke") = Params{}.margin_stroke,
+        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
                                      kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
   m.def("trajectory", &Trajectory, trajectory_doc.c_str(), py::kw_only(), py::arg("A") = py::none(),

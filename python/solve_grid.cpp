@@ -30,8 +30,9 @@ constexpr std::int64_t kBlockPoints = 2048;  // ~2 ms of Solve calls: the unit o
 constexpr std::int64_t kNoError = std::numeric_limits<std::int64_t>::max();
 
 // The inputs, in this order; every one is an array broadcast to the grid's shape.
-enum Input { kA, kc, kphi0, kT0, ke, kmargin, kInputs };
-constexpr std::array<const char*, kInputs> kInputNames = {"A", "c", "phi0", "T0", "e", "margin"};
+enum Input { kA, kc, kphi0, kT0, ke, kmargin, kmargin_stroke, kstick_margin, kInputs };
+constexpr std::array<const char*, kInputs> kInputNames = {
+    "A", "c", "phi0", "T0", "e", "margin", "margin_stroke", "stick_margin"};
 
 using Array = py::array_t<double, py::array::forcecast>;
 
@@ -162,7 +163,8 @@ class GridSolver {
         if (!(std::isfinite(A) && A >= 0.0)) (void)Forcing::Harmonic(A, c, phi0);
         b[0] = A;
         const Forcing forcing = Forcing::Fourier(c, a, b, phi0);  // no allocation
-        Store(p, capsubot::Solve(forcing, Params{in[kT0], in[ke], in[kmargin]}));
+        const Params params{in[kT0], in[ke], in[kmargin], in[kmargin_stroke], in[kstick_margin]};
+        Store(p, capsubot::Solve(forcing, params));
       } catch (...) {
         Fail(p, std::current_exception());
         return;
@@ -263,9 +265,11 @@ void RunBlocks(GridSolver& solver, std::int64_t size, int threads) {
 
 py::dict SolveGrid(const py::object& A, const py::object& c, const py::object& phi0,
                    const py::object& T0, const py::object& e, const py::object& margin,
-                   bool stability, std::optional<int> threads) {
+                   const py::object& margin_stroke, const py::object& stick_margin, bool stability,
+                   std::optional<int> threads) {
   const int thread_count = ThreadCount(threads);
-  const std::array<const py::object*, kInputs> objects = {&A, &c, &phi0, &T0, &e, &margin};
+  const std::array<const py::object*, kInputs> objects = {
+      &A, &c, &phi0, &T0, &e, &margin, &margin_stroke, &stick_margin};
   std::array<Array, kInputs> in;
   for (int k = 0; k < kInputs; ++k) {
     in[k] = Array::ensure(*objects[k]);
@@ -320,7 +324,6 @@ constexpr const char* kSolveGridDoc =
     "    phi0    motor phase at the impact [rad]\n";
 
 constexpr const char* kSolveGridOptionsDoc =
-    "    margin  clearance d between inner body and walls [L], 0 <= d < 0.5\n"
     "    stability  also spectral_radius and stable (docs/model.md section 8)\n"
     "    threads number of threads, 1..1024; None: all cores\n\n"
     "Returns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "
@@ -341,10 +344,12 @@ void BindSolveGrid(py::module_& m) {
   }
   m.attr("CONDITIONS") = conditions;
   const std::string doc =
-      std::string(kSolveGridDoc) + kModelArgsDoc + kSolveGridOptionsDoc + kUnits;
+      std::string(kSolveGridDoc) + kModelArgsDoc + kMarginArgsDoc + kSolveGridOptionsDoc + kUnits;
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
-        py::arg("phi0"), py::arg("T0") = 1.0, py::arg("e") = 1.0, py::arg("margin") = 0.0,
-        py::arg("stability") = false, py::arg("threads") = py::none());
+        py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
+        py::arg("margin") = Params{}.margin, py::arg("margin_stroke") = Params{}.margin_stroke,
+        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false,
+        py::arg("threads") = py::none());
 }
 
 }  // namespace capsubot::python

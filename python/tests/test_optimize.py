@@ -20,16 +20,19 @@ def test_phase_equals_the_command_lines_json():
 
 
 def test_phase_optimum_is_the_best_valid_point_of_a_dense_scan():
-    d = capsubot.optimize(problem="phase", **SHAPE)
+    # The command line's margins d_s = s = 0.02 (validity, as solve_grid checks it), without
+    # the stability requirement (solve_grid does not bound the spectral radius).
+    d = capsubot.optimize(problem="phase", **SHAPE, rho_max=math.inf)
+    assert (d["margin_stroke"], d["stick_margin"], d["rho_max"]) == (0.02, 0.02, None)
     phi0 = np.linspace(-math.pi, math.pi, SCAN_POINTS)
-    g = capsubot.solve_grid(**SHAPE, phi0=phi0)
+    g = capsubot.solve_grid(**SHAPE, phi0=phi0, margin_stroke=0.02, stick_margin=0.02)
     valid_I = np.where(g["valid"], g["I"], np.nan)
     best = np.nanmax(valid_I)
     assert np.count_nonzero(g["valid"]) > 1000  # the valid arcs are well sampled
     assert best <= d["I"] + 1e-12
-    # The optimum lies on an arc edge (right_wall is active), within one scan step of a valid
-    # scan point: the scan's best is below it by at most the largest change of I per step.
-    assert d["active_constraints"] == ["right_wall"]
+    # The optimum lies on an arc edge (the stroke clearance binds), within one scan step of a
+    # valid scan point: the scan's best is below it by at most the largest change of I per step.
+    assert d["active_constraints"] == ["clearance"] and d["binding"] == ["clearance_stroke"]
     step_change = np.nanmax(np.abs(np.diff(valid_I)))
     assert 0.0 <= d["I"] - best <= step_change, (d["I"] - best, step_change)
 
@@ -38,7 +41,25 @@ def test_stable_phase_equals_the_command_line():
     d = capsubot.optimize(problem="phase", **SHAPE, stable=True)
     assert d == cli_json("optimize", "--problem", "phase", "--A", 0.2, "--c", 0.03, "--stable")
     assert d["spectral_radius"] <= 1.0 and d["stable"] is True
-    assert capsubot.optimize(problem="phase", **SHAPE, stable=1.0) == d
+    assert capsubot.optimize(problem="phase", **SHAPE, rho_max=1.0) == d
+
+
+def test_margins_and_rho_max_equal_the_command_line():
+    args = dict(margin=0.01, margin_stroke=0.0, stick_margin=0.05, rho_max=math.inf)
+    d = capsubot.optimize(problem="phase", **SHAPE, **args)
+    assert d == cli_json("optimize", "--problem", "phase", "--A", 0.2, "--c", 0.03, "--margin",
+                         0.01, "--margin-stroke", 0, "--stick-margin", 0.05, "--rho-max", "inf")
+    assert (d["margin"], d["margin_stroke"], d["stick_margin"], d["rho_max"]) == (
+        0.01, 0.0, 0.05, None)
+
+
+def test_main_job_equals_the_command_line():
+    d = capsubot.optimize(T0=0.1, starts=2, hops=2)
+    assert d == cli_json("optimize", "--T0", 0.1, "--starts", 2, "--hops", 2)
+    assert [d[k]["problem"] for k in ("paper_phase", "robust", "fastest", "fastest_stable")] == [
+        "phase", "forcing", "forcing", "forcing"]
+    # The robust gait pays for its margins: never faster than the exact optimum.
+    assert d["robust"]["I"] <= d["fastest"]["I"] and d["rho_max"] == 0.9
 
 
 def test_forcing_and_fourier_equal_the_command_line():

@@ -19,6 +19,9 @@ def test_equals_the_command_line_and_each_orbit_solves_back():
     # Two orbits, the README's: phi0 = -2.8498 (stable) and 2.9506 (unstable).
     assert [round(o["phi0"], 4) for o in found] == [-2.8498, 2.9506]
     assert [o["stable"] for o in found] == [True, False]
+    margins = capsubot.orbits(alpha=ALPHA, **MOTOR, margin_stroke=0.3, stick_margin=0.1)
+    assert margins == cli_json("orbits", "--alpha", ALPHA, "--A", 0.05, "--c", 0.02, "--T0",
+                               0.1, "--e", 0.5, "--margin-stroke", 0.3, "--stick-margin", 0.1)
     checked = 0
     for o in found:
         assert o["complete"] is True and abs(o["alpha"] - ALPHA) <= ALPHA_TOL

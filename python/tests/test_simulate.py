@@ -24,7 +24,10 @@ def without_tables(d):
 def test_from_orbit_returns_to_the_analytic_orbit():
     s = capsubot.simulate(**VALID, from_orbit=True, periods=PERIODS)
     o = s["orbit"]
-    assert o == capsubot.solve(**VALID) and o["valid"] is True
+    # The orbit of simulate is solve's dict without the energy (as `simulate --from-orbit`).
+    solved = capsubot.solve(**VALID)
+    assert "energy" in solved and "energy" not in o
+    assert o == {k: v for k, v in solved.items() if k != "energy"} and o["valid"] is True
     assert (s["status"], s["impacts_right"], s["impacts_left"], s["stops"]) == ("ok", 10, 0, 10)
     # After whole periods the state is the one right after the impact (docs/model.md s. 4).
     assert s["phi"] == pytest.approx(PERIODS * 2 * math.pi, abs=1e-12)
@@ -36,14 +39,16 @@ def test_from_orbit_returns_to_the_analytic_orbit():
 
 
 @pytest.mark.parametrize("state", [dict(from_orbit=True),
-                                   dict(alpha=0.3, x0=0.5, u0=0.1, v0=0.0, y0=2.0)],
-                         ids=["from_orbit", "given_state"])
+                                   dict(alpha=0.3, x0=0.5, u0=0.1, v0=0.0, y0=2.0),
+                                   dict(from_orbit=True, transient=2.0)],
+                         ids=["from_orbit", "given_state", "transient"])
 def test_dict_is_the_command_lines_json(state):
     args = [*cli_args(VALID), "--periods", 3]
     for key, value in state.items():
         args += [f"--{key.replace('_', '-')}"] + ([] if value is True else [repr(value)])
     s = capsubot.simulate(**VALID, **state, periods=3, events=True, trajectory=True)
     assert without_tables(s) == cli_json("simulate", *args)
+    assert ("transient" in s) == ("transient" in state) and "energy" in s
 
 
 def test_event_table_lists_every_event():

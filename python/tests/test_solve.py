@@ -13,6 +13,8 @@ from conftest import cli_json, run_cli
 PAPER = dict(A=0.5, c=0.5, phi0=-2.944899971002)  # the paper's example (T0 = 1, e = 1)
 # A valid and stable orbit (the README's simulation example).
 VALID = dict(A=0.05, c=0.02, phi0=-2.842, T0=0.1, e=0.5)
+# The same orbit with the margins of a robust gait (docs/model.md section 12).
+MARGINS = dict(VALID, margin_stroke=0.1, stick_margin=0.05)
 FOURIER = dict(c=0.02, cos=[0.01, 0.0, 0.005], sin=[0.04, 0.01, 0.0], phi0=-2.6, T0=0.1, e=0.7)
 
 # phi1 is computed by an independent root search to this accuracy (bisection on doubles).
@@ -23,7 +25,7 @@ def cli_args(case):
     """The command-line options of a case (keyword arguments named as the options)."""
     args = []
     for key, value in case.items():
-        args += [f"--{key}", ",".join(map(repr, value)) if isinstance(value, list) else repr(value)]
+        args += [f"--{key.replace('_', '-')}", ",".join(map(repr, value)) if isinstance(value, list) else repr(value)]
     return args
 
 
@@ -56,14 +58,18 @@ def test_paper_example_stop_phase_is_the_closed_form_root():
     assert abs(capsubot.solve(**PAPER)["phi1"] - phi1) <= ROOT_TOL
 
 
-@pytest.mark.parametrize("case", [PAPER, VALID, FOURIER, dict(A=0.5, c=-0.1, phi0=0.0)],
-                         ids=["paper", "valid", "fourier", "no_orbit"])
+@pytest.mark.parametrize("case", [PAPER, VALID, MARGINS, FOURIER, dict(A=0.5, c=-0.1, phi0=0.0)],
+                         ids=["paper", "valid", "margins", "fourier", "no_orbit"])
 @pytest.mark.parametrize("stability", [False, True])
 def test_dict_is_the_command_lines_json(case, stability):
     # Same library call, same keys: the dict equals the parsed --json exactly (JSON numbers
     # round-trip), None where the JSON has null.
     expected = cli_json("solve", *cli_args(case), *(["--stability"] if stability else []))
-    assert capsubot.solve(**case, stability=stability) == expected
+    d = capsubot.solve(**case, stability=stability)
+    assert d == expected
+    assert sorted(d["energy"]) == ["friction_loss", "impact_loss", "motor_work",
+                                   "motor_work_positive"]
+    assert {"stroke", "clearance"} <= set(d)
 
 
 def test_margin_is_checked_as_clearance():
