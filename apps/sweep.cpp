@@ -9,12 +9,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
+#include "provenance.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -24,6 +28,16 @@ struct SweepCliOptions {
   ForcingOptions forcing;
   SweepOptions sweep;
   std::string optimize;
+  bool stable_only = false;
+  double rho_max = 1.0;
+  double bound = std::numeric_limits<double>::quiet_NaN();  // NaN: T0
+  int harmonics = FourierOptions{}.harmonics;
+  int starts = 0;  // used only when given: else the problem's default
+  CLI::Option* starts_option = nullptr;
+  int hops = ForcingDesignOptions{}.hops;
+  std::string global_algorithm = kMultistart;
+  std::string local_algorithm = SearchOptions{}.local_algorithm;
+  bool no_header_comment = false;
 };
 
 std::string Duration(double seconds) {
@@ -63,27 +77,70 @@ class ProgressBar {
   double drawn_ = -1.0;
 };
 
-int Run(SweepCliOptions& opt) {
-  SweepOptions& s = opt.sweep;
-  s.grid.axes.clear();
-  for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
-  s.grid.Validate();
-  if (!opt.optimize.empty()) {
-    if (opt.optimize != "phi0") {
-      throw std::invalid_argument(fmt::format(
-          "--optimize {} is invalid: expected phi0 (the impact phase, problem P1)", opt.optimize));
+// Library messages name the sweep's parameters; the user typed these flags.
+constexpr std::pair<const char*, const char*> kFlagOf[] = {
+    {"grid", "--grid"},
+    {"optimize", "--optimize"},
+    {"output", "--output"},
+    {"threads", "--threads"},
+    {"resume", "--resume"},
+    {"checkpoint_seconds", "--checkpoint-seconds"},
+    {"scan_points", "--scan-points"},
+    {"harmonics", "--harmonics"},
+    {"starts", "--starts"},
+    {"hops", "--hops"},
+    {"rho_max", "--rho-max"}};
+
+std::string WithFlagNames(const std::string& message) {
+  for (const auto& [name, flag] : kFlagOf) {
+    const std::size_t n = std::strlen(name);
+    if (message.compare(0, n, name) == 0 && n < message.size() &&
+        (message[n] == ' ' || message[n] == ':')) {
+      return flag + message.substr(n);
     }
-    s.optimize_phi0 = true;
   }
+  return message;
+}
+
+// An option that gives a value the grid also gives, or that the optimiser chooses itself.
+void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
+  const SweepOptions& s = opt.sweep;
+  for (const GridAxis& axis : s.grid.axes) {
+    const std::string flag = "--" + axis.name();
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) {
+      throw std::invalid_argument(
+          fmt::format("{} = {} is invalid with --grid {}: expected the value from only one of them",
+                      flag, option->as<std::string>(), axis.ToString()));
+    }
+  }
+  if (s.optimize != SweepOptimize::kForcing && s.optimize != SweepOptimize::kFourier) return;
+  for (const char* flag : {"--A", "--c", "--phi0", "--sin", "--cos"}) {
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) {
+      throw std::invalid_argument(
+          fmt::format("{} is invalid with --optimize {}: expected no force option (the "
+                      "optimiser chooses the force)",
+                      flag, SweepOptimizeName(s.optimize)));
+    }
+  }
+}
+
+// The force at every point from --A, --c, --phi0, --sin, --cos (not needed by P2 and P3).
+void BuildForcing(SweepCliOptions& opt) {
+  SweepOptions& s = opt.sweep;
   const Grid& g = s.grid;
+  if (s.optimize == SweepOptimize::kForcing || s.optimize == SweepOptimize::kFourier) return;
   // A gridded A or c needs no option: the grid gives its value at every point.
   if (g.Has(SweepParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
-  const bool phase_given_elsewhere =
-      g.Has(SweepParameter::kphi0) || g.Has(SweepParameter::kalpha) || s.optimize_phi0;
+  const bool phase_given_elsewhere = g.Has(SweepParameter::kphi0) ||
+                                     g.Has(SweepParameter::kalpha) ||
+                                     s.optimize == SweepOptimize::kPhase;
   if (std::isnan(opt.forcing.c)) {
     throw std::invalid_argument("option --c is missing: give the mean force c (or --grid c=...)");
   }
-  if (g.Has(SweepParameter::kA) && opt.forcing.fourier_option->count() == 0 &&
+  const bool amplitude_elsewhere = g.Has(SweepParameter::kA) || g.Has(SweepParameter::ksin, 1);
+  if (amplitude_elsewhere && opt.forcing.fourier_option->count() == 0 &&
       opt.forcing.A_option->count() == 0) {
     s.forcing = Forcing::Harmonic(0.0, opt.forcing.c,
                                   opt.forcing.phi0_option->count() > 0 ? opt.forcing.phi0 : 0.0);
@@ -95,12 +152,44 @@ int Run(SweepCliOptions& opt) {
   } else {
     s.forcing = opt.forcing.Build(!phase_given_elsewhere);
   }
-  if (s.optimize_phi0 || g.Has(SweepParameter::kalpha)) {
-    if (opt.forcing.phi0_option->count() > 0) {
-      throw std::invalid_argument(
-          fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
-                      opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
-    }
+  if ((s.optimize == SweepOptimize::kPhase || g.Has(SweepParameter::kalpha)) &&
+      opt.forcing.phi0_option->count() > 0) {
+    throw std::invalid_argument(
+        fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
+                    opt.forcing.phi0,
+                    s.optimize == SweepOptimize::kPhase ? "--optimize phi0" : "--grid alpha"));
+  }
+}
+
+// The optimisers' options from the command line (each mode reads its own).
+void SetOptimizerOptions(SweepCliOptions& opt) {
+  SweepOptions& s = opt.sweep;
+  s.phase.stable = s.design.stable = s.fourier.stable = opt.stable_only;
+  s.phase.rho_max = s.design.rho_max = s.fourier.rho_max = opt.rho_max;
+  s.design.force_bound = s.fourier.force_bound = opt.bound;
+  s.fourier.harmonics = opt.harmonics;
+  if (opt.starts_option->count() > 0) s.design.starts = s.fourier.starts = opt.starts;
+  s.design.hops = opt.hops;
+  s.design.global_algorithm = s.fourier.global_algorithm = opt.global_algorithm;
+  s.design.local_algorithm = s.fourier.local_algorithm = opt.local_algorithm;
+}
+
+int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
+  SweepOptions& s = opt.sweep;
+  s.grid.axes.clear();
+  for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
+  s.grid.Validate();
+  if (!opt.optimize.empty()) s.optimize = ParseSweepOptimize(opt.optimize);
+  RejectConflicts(opt, cmd);
+  BuildForcing(opt);
+  SetOptimizerOptions(opt);
+  s.comments.clear();
+  if (!opt.no_header_comment) {
+    // Not how or where the sweep runs, and not the defaults of options a grid replaces.
+    std::vector<std::string> exclude = {"--threads", "--output", "--resume", "--checkpoint-seconds",
+                                        "--no-header-comment"};
+    for (const GridAxis& axis : s.grid.axes) exclude.push_back("--" + axis.name());
+    s.comments.push_back(CommandProvenance(cmd, exclude).CommandLine());
   }
   const bool tty = ::isatty(STDERR_FILENO) != 0;
   ProgressBar bar;
@@ -118,38 +207,52 @@ int Run(SweepCliOptions& opt) {
   return 0;
 }
 
+int Run(SweepCliOptions& opt, const CLI::App& cmd) {
+  try {
+    return RunSweepCommand(opt, cmd);
+  } catch (const SweepResumableError& e) {
+    throw IoError(WithFlagNames(e.what()) + ": run the same command with --resume to continue");
+  } catch (const IoError& e) {
+    throw IoError(WithFlagNames(e.what()));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(WithFlagNames(e.what()));
+  }
+}
+
 }  // namespace
 
 Command AddSweepCommand(CLI::App& app) {
   auto opt = std::make_shared<SweepCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "The orbit and its validity (docs/model.md sections 4-5) at every point of a 1-D or 2-D grid "
-      "of parameters, to a CSV file: columns <grid parameters>, phi1, alpha, u, v_plus, I, "
-      "v_mean, x_min, x_max, valid, violations (empty cell: the quantity does not exist). "
-      "Runs on all cores; the file is byte-identical for any --threads, written to "
-      "<output>.partial and renamed at the end; --resume continues a killed sweep.");
+      "The orbit and its validity (docs/model.md sections 4-5), or the best gait of problem "
+      "P1, P2 or P3 (section 7), at every point of a grid of parameters, to a CSV file: "
+      "comment lines (# capsubot <version> sweep <options>), a header, one row per point "
+      "(empty cell: the quantity does not exist). Runs on all cores; the file is "
+      "byte-identical for any --threads, written to <output>.partial and renamed at the end; "
+      "--resume continues a killed sweep. See docs/sweep.md.");
   cmd->add_option("--grid", opt->grids,
-                  "a grid name=lo:hi:n: n >= 1 equally spaced values from lo to hi inclusive "
-                  "(n = 1: lo), name among A, c, phi0, T0, e, margin, alpha (lo, hi may be "
-                  "pi or -pi). Give 1 or 2 grids; with 2 the first varies slowest. alpha "
-                  "(robot mode) finds every orbit of the robot with that mass ratio: one row "
-                  "per orbit, with columns orbits, orbit, phi0 (if that search ever hits its "
-                  "work bound, the sweep stops with an error rather than write rows that may "
-                  "miss orbits)")
+                  "an axis: name=lo:hi:n (n >= 1 equally spaced values from lo to hi inclusive; "
+                  "lo, hi may be pi or -pi), name=lo:hi:n:log (geometric, lo, hi > 0) or "
+                  "name=v1,v2,... (a list). name: " +
+                      SweepParameterNames() + ". Any number of axes (at most " +
+                      std::to_string(kMaxGridPoints) +
+                      " points in all), the first slowest. alpha (robot mode) finds every "
+                      "orbit of the robot with that mass ratio: one row per orbit, with columns "
+                      "orbits, orbit, phi0")
       ->required()
       ->take_all()
       ->allow_extra_args(false);
   AddForcingOptions(*cmd, opt->forcing);
   cmd->get_option("--c")->required(false)->description(
-      "mean force c of F (same unit as A), required unless c has a --grid; a directed orbit "
-      "needs c > 0");
+      "mean force c of F (same unit as A), required unless c has a --grid or the force is "
+      "optimised (--optimize forcing|fourier); a directed orbit needs c > 0");
   cmd->get_option("--A")->description(
       "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units of (m1+m2) omega^2 L "
-      "(required unless A has a --grid or --sin/--cos are given)");
+      "(required unless A has a --grid, --sin/--cos are given or the force is optimised)");
   cmd->get_option("--phi0")->description(
       "motor phase phi0 [rad] at the impact (phi = 0): F(phi) = A sin(phi + phi0) + c; "
-      "required unless phi0 has a --grid, is optimised (--optimize phi0) or solved for "
+      "required unless phi0 has a --grid, is optimised (--optimize) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt->sweep.params);
   cmd->add_option(
@@ -157,19 +260,56 @@ Command AddSweepCommand(CLI::App& app) {
          "the CSV file to write (required); - writes to standard output (no --resume then)")
       ->required();
   cmd->add_flag("--stability", opt->sweep.stability,
-                "add the columns spectral_radius (of the impact map, docs/model.md section 8) and "
-                "stable (1 when < 1)");
+                "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
+                "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss "
+                "(fold, flip or torus when unstable)");
+  std::string modes;
+  for (SweepOptimize mode : SweepOptimizeModes()) {
+    modes += (modes.empty() ? "" : "|") + std::string(SweepOptimizeName(mode));
+  }
   cmd->add_option("--optimize", opt->optimize,
-                  "phi0: at every point, the impact phase phi0 maximising I over valid orbits "
-                  "(problem P1); adds the columns phi0 (the optimum) and status");
-  cmd->add_flag("--stable-only", opt->sweep.phase.stable,
-                "with --optimize phi0: maximise over valid and stable orbits only");
+                  "the best gait at every point: phi0 (P1: the impact phase for the given force "
+                  "shape; adds column phi0), forcing (P2: A, c, phi0 with A + c <= --bound; "
+                  "adds A, c, phi0) or fourier (P3: a --harmonics K force with max |F| <= "
+                  "--bound; adds c, a1..aK, b1..bK); adds a status column")
+      ->type_name(modes);
+  cmd->add_flag("--stable-only", opt->stable_only,
+                "with --optimize: maximise over valid and stable orbits only (spectral radius "
+                "<= --rho-max)");
+  cmd->add_option("--rho-max", opt->rho_max,
+                  "with --stable-only: the largest admissible spectral radius, > 0")
+      ->capture_default_str();
   cmd->add_option("--scan-points", opt->sweep.phase.scan_points,
                   "with --optimize phi0: points of the optimiser's initial scan of phi0")
       ->capture_default_str();
+  cmd->add_option("--bound", opt->bound,
+                  "with --optimize forcing|fourier: the force bound A + c (max |F|) <= bound "
+                  "<= T0 (default: T0)");
+  cmd->add_option("--harmonics", opt->harmonics,
+                  "with --optimize fourier: the number K of harmonics")
+      ->capture_default_str();
+  opt->starts_option = cmd->add_option(
+      "--starts", opt->starts,
+      "with --optimize forcing|fourier: local polishes of the multistart, >= 1 (default: 10 "
+      "for forcing, 20 for fourier)");
+  cmd->add_option("--hops", opt->hops,
+                  "with --optimize forcing: basin-hopping restarts after the starts")
+      ->capture_default_str();
+  cmd->add_option("--global-algorithm", opt->global_algorithm,
+                  "with --optimize forcing|fourier: multistart or an NLopt global algorithm "
+                  "(GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
+      ->capture_default_str();
+  cmd->add_option("--local-algorithm", opt->local_algorithm,
+                  "with --optimize forcing|fourier: the local polish (LN_COBYLA, LD_SLSQP, "
+                  "LD_MMA, LD_CCSAQ)")
+      ->capture_default_str();
+  cmd->add_flag("--no-header-comment", opt->no_header_comment,
+                "write no comment lines before the header (for tools that cannot skip '#' "
+                "lines; pandas: comment='#', gnuplot: skips them by default)");
   cmd->add_flag("--resume", opt->sweep.resume,
                 "continue an interrupted sweep from <output>.checkpoint (same options "
-                "required); without it a sweep always starts again");
+                "required; the checkpoint's checksums are verified); without it a sweep "
+                "always starts again");
   cmd->add_option("--checkpoint-seconds", opt->sweep.checkpoint_seconds,
                   "minimum time [s] between two checkpoints (each one fsyncs the partial file); "
                   "0: after every block of rows")
@@ -177,7 +317,7 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option("--threads", opt->sweep.threads,
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency)")
       ->capture_default_str();
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

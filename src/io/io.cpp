@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -44,9 +45,14 @@ void AtomicFile::Commit() {
   committed_ = true;
 }
 
+char* WriteNumber(char* out, double value) {
+  if (std::isnan(value)) return out;
+  return std::to_chars(out, out + kMaxNumberChars, value).ptr;
+}
+
 std::string FormatNumber(double value) {
-  if (std::isnan(value)) return "";
-  return fmt::format("{:.17g}", value);
+  char text[kMaxNumberChars];
+  return std::string(text, WriteNumber(text, value));
 }
 
 }  // namespace capsubot

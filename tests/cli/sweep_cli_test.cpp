@@ -160,9 +160,10 @@ TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.output, "");
   const std::string csv = ReadFile(dir.File("a.csv"));
-  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+  const std::size_t header = csv.find('\n') + 1;  // after the provenance comment
+  EXPECT_EQ(csv.substr(header, csv.find('\n', header) - header),
             "phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
 }
 
 TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
@@ -175,7 +176,7 @@ TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
   EXPECT_FALSE(Exists("-.partial"));
   const Outcome r = RunCli(args + " -o - --resume", dir.File("log2"));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.output.find("--resume with --output - is invalid"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--resume with output - is invalid"), std::string::npos) << r.output;
 }
 
 struct BadCommand {
@@ -191,7 +192,11 @@ TEST_P(SweepCliRejects, WithStatus2AndAMessage) {
       RunCli(std::string("sweep ") + GetParam().args + " -o " + dir.File("x.csv"), dir.File("log"));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  // nothing is left behind: no output, no partial file, no checkpoint
   EXPECT_FALSE(Exists(dir.File("x.csv")));
+  EXPECT_FALSE(Exists(dir.File("x.csv.partial")));
+  EXPECT_FALSE(Exists(dir.File("x.csv.checkpoint")));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -204,17 +209,174 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"--grid phi0=0:1:3 --grid phi0=1:2:3 --A 0.5 --c 0.5",
                    "parameter phi0 already has a grid"},
         BadCommand{"--grid alpha=0.1:0.5:3 --grid phi0=0:1:3 --A 0.5 --c 0.5",
-                   "--grid alpha together with --grid phi0 is invalid"},
+                   "--grid alpha together with grid phi0 is invalid"},
         BadCommand{"--grid phi0=nan:1:3 --A 0.5 --c 0.5", "expected finite bounds"},
         BadCommand{"--grid c=0:1:3 --A 0.5", "option --phi0 is missing"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5", "option --c is missing"},
         BadCommand{"--grid A=0:1:3 --c 0.5 --optimize phi1",
-                   "--optimize phi1 is invalid: expected phi0"},
+                   "--optimize = phi1 is invalid: expected one of phi0, forcing, fourier"},
+        BadCommand{"--grid A=0:1:3 --A 5 --c 0.5 --phi0 1",
+                   "--A = 5 is invalid with --grid A=0:1:3: expected the value from only one"},
+        BadCommand{"--grid T0=0.1,0.2 --A 0.5 --c 0.1 --optimize forcing",
+                   "--A is invalid with --optimize forcing: expected no force option"},
+        BadCommand{"--grid T0=0.1,0.2 --optimize forcing --bound 0.15",
+                   "force_bound = 0.15 is invalid"},
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --grid e=0.5:1:1000000 --grid "
+                   "margin=0:0.1:1001",
+                   "--grid phi0=0:1:3 e=0.5:1:1000000 margin=0:0.1:1001 is invalid: more than "
+                   "1000000000 points"},
+        BadCommand{"--grid phi0=-1.7e308:1.7e308:5 --A 0.5 --c 0.5",
+                   "capsubot sweep: error: --grid phi0=-1.7e308:1.7e308:5 is invalid: the "
+                   "bounds are too large for 5 points"},
+        BadCommand{"--grid A=0:1e308:10 --c 0.5 --phi0 1",
+                   "capsubot sweep: error: --grid A=0:1e308:10 is invalid: the bounds are too "
+                   "large for 10 points"},
+        BadCommand{"--grid c=0:1:3:log --A 0.5 --phi0 1",
+                   "--grid c=0:1:3:log is invalid: expected lo > 0 and hi > 0 for a log grid"},
         BadCommand{"--grid A=0:1:3 --c 0.5 --phi0 1 --optimize phi0",
                    "--phi0 = 1 is invalid with --optimize phi0"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --threads -2",
                    "--threads = -2 is invalid: expected 1 <= threads"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --T0 0",
                    "friction bound T0 = 0 is invalid"}));
+
+// The first line records what made the file; it leaves out the thread count and the output,
+// so that the same content carries the same line, and replaying it gives the same bytes.
+TEST(SweepCli, TheProvenanceLineReproducesTheFile) {
+  TempDir dir;
+  const std::string args =
+      "sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 --stability";
+  ASSERT_EQ(RunCli(args + " --threads 1 -o " + dir.File("a.csv"), dir.File("log")).status, 0);
+  ASSERT_EQ(
+      RunCli(args + " --threads 2 --checkpoint-seconds 0 -o " + dir.File("b.csv"), dir.File("log"))
+          .status,
+      0);
+  const std::string a = ReadFile(dir.File("a.csv"));
+  EXPECT_TRUE(a == ReadFile(dir.File("b.csv"))) << "thread count or checkpoints changed the bytes";
+  const std::string version = RunCli("--version", dir.File("v")).output;
+  const std::string line = a.substr(0, a.find('\n'));
+  EXPECT_EQ(line.rfind("# capsubot " + version.substr(0, version.find('\n')) +
+                           " sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 "
+                           "--T0 1 --margin 0 --stability ",
+                       0),
+            0u)
+      << line;
+  for (const char* left_out :
+       {"--threads", "--output", "-o ", "--checkpoint", "--resume", "--e "}) {
+    EXPECT_EQ(line.find(left_out), std::string::npos) << left_out << " in " << line;
+  }
+  // Replay: the command after "# capsubot <version> " with a new output.
+  const std::string command = line.substr(line.find(" sweep ") + 1);
+  ASSERT_EQ(RunCli(command + " -o " + dir.File("c.csv"), dir.File("log")).status, 0);
+  EXPECT_TRUE(ReadFile(dir.File("c.csv")) == a) << "replaying " << command;
+  // --no-header-comment: the same file without that line.
+  ASSERT_EQ(RunCli(args + " --no-header-comment -o " + dir.File("d.csv"), dir.File("log")).status,
+            0);
+  EXPECT_EQ(ReadFile(dir.File("d.csv")), a.substr(a.find('\n') + 1));
+}
+
+// gnuplot reads the file as it is: it skips the comment line and takes the header's names.
+TEST(SweepCli, GnuplotReadsTheFileWithItsCommentLine) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  TempDir dir;
+  ASSERT_EQ(
+      RunCli("sweep --grid phi0=-pi:pi:9 --A 0.5 --c 0.5 -o " + dir.File("g.csv"), dir.File("log"))
+          .status,
+      0);
+  const std::string script = "set datafile separator ','; set datafile columnheaders; stats '" +
+                             dir.File("g.csv") +
+                             "' using 'phi1' nooutput; print STATS_records, STATS_max";
+  const int raw =
+      std::system(("gnuplot -e \"" + script + "\" > " + dir.File("gp") + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << ReadFile(dir.File("gp"));
+  // 9 rows; the largest phi1 is at phi0 = +-pi (the paper's example: 2.7337...)
+  EXPECT_EQ(ReadFile(dir.File("gp")).rfind("9 2.733716", 0), 0u) << ReadFile(dir.File("gp"));
+}
+
+// A resume of a damaged checkpoint is refused with a message naming the flag, not trusted.
+TEST(SweepCli, ACorruptedCheckpointIsRefused) {
+  TempDir dir;
+  const std::string out = dir.File("k.csv");
+  const std::vector<std::string> slow = SlowSweep(out, 1);
+  const pid_t pid = Spawn(slow);
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (CheckpointPoints(out + ".checkpoint") == 0 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  std::string checkpoint = ReadFile(out + ".checkpoint");
+  const std::size_t at = checkpoint.find("points ") + 7;
+  checkpoint[at] = checkpoint[at] == '9' ? '8' : '9';  // more points than were written
+  std::ofstream(out + ".checkpoint", std::ios::trunc) << checkpoint;
+  std::vector<std::string> resume = slow;
+  resume.emplace_back("--resume");
+  const Outcome r = RunCli(Join(resume), dir.File("log"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "capsubot sweep: error: --resume: checkpoint " + out +
+                          ".checkpoint is not a valid capsubot sweep checkpoint (checksum "
+                          "mismatch): delete it and its .partial file to start the sweep again\n");
+  EXPECT_FALSE(Exists(out));
+}
+
+TEST(SweepCli, ACheckpointPointingAtAnEndlessFileIsNotRead) {
+  TempDir dir;
+  const std::string out = dir.File("z.csv");
+  const std::string args = "sweep --grid phi0=-pi:pi:50 --A 0.5 --c 0.5 --resume -o " + out;
+  std::ofstream(out + ".partial") << "x";
+  ASSERT_EQ(::symlink("/dev/zero", (out + ".checkpoint").c_str()), 0);
+  const Outcome r = RunCli(args, dir.File("log"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--resume: checkpoint " + out +
+                          ".checkpoint is not a valid capsubot sweep checkpoint (not a regular "
+                          "file)"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(SweepCli, AWriteErrorOnADeviceNamesTheDeviceNotAPartialFile) {
+  TempDir dir;
+  const Outcome r =
+      RunCli("sweep --grid phi0=-pi:pi:50000 --A 0.5 --c 0.5 -o /dev/full", dir.File("log"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.output,
+            "capsubot sweep: error: --output /dev/full: cannot write /dev/full: No space left on "
+            "device\n");
+}
+
+// A write error part-way (the file size limit, as a full disk) can be mended: the partial
+// file and its checkpoint stay, the message says so, and --resume completes the same bytes.
+TEST(SweepCli, AWriteErrorPartWayKeepsTheRowsForAResume) {
+  TempDir dir;
+  const std::string args = "sweep --grid phi0=-pi:pi:4000 --A 0.5 --c 0.5 --checkpoint-seconds 0";
+  ASSERT_EQ(RunCli(args + " -o " + dir.File("ref.csv"), dir.File("log")).status, 0);
+  const std::string out = dir.File("f.csv");
+  // 200 blocks of 512 bytes: about a quarter of the file. SIGXFSZ ignored: write fails (EFBIG).
+  const std::string limited =
+      "sh -c \"trap '' XFSZ; ulimit -f 200; exec " + kCli + " " + args + " -o " + out + "\"";
+  const int raw = std::system((limited + " > " + dir.File("log") + " 2>&1").c_str());
+  const std::string message = ReadFile(dir.File("log"));
+  ASSERT_TRUE(WIFEXITED(raw)) << message;
+  EXPECT_NE(WEXITSTATUS(raw), 0) << message;
+  EXPECT_EQ(message.rfind("capsubot sweep: error: --output " + out + ": cannot write " + out +
+                              ".partial: File too large; the rows done are kept in " + out +
+                              ".partial with its checkpoint " + out +
+                              ".checkpoint for a resume: run the same command with --resume to "
+                              "continue\n",
+                          0),
+            0u)
+      << message;
+  EXPECT_FALSE(Exists(out));
+  EXPECT_TRUE(Exists(out + ".partial"));
+  EXPECT_TRUE(Exists(out + ".checkpoint"));
+  const Outcome r = RunCli(args + " -o " + out + " --resume", dir.File("log2"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(ReadFile(out) == ReadFile(dir.File("ref.csv")));
+  EXPECT_FALSE(Exists(out + ".partial"));
+  EXPECT_FALSE(Exists(out + ".checkpoint"));
+}
 
 }  // namespace
