@@ -331,9 +331,9 @@ TEST(Sweep, ResumeWithoutCheckpointStartsFromTheBeginning) {
   EXPECT_EQ(ReadCsv(o.output).size(), 51u);
 }
 
-TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
-  TempDir dir;
-  SweepOptions o = PaperPhaseSweep(dir.File("a.csv"), 500);
+// Interrupts a 500-point sweep after 100 points (checkpoint after every block).
+SweepOptions InterruptedSweep(const TempDir& dir) {
+  SweepOptions o = PaperPhaseSweep(dir.File("cut.csv"), 500);
   o.block_points = 10;
   o.checkpoint_seconds = 0.0;
   EXPECT_THROW(RunSweep(o,
@@ -342,6 +342,12 @@ TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
                         }),
                Interrupt);
   o.resume = true;
+  return o;
+}
+
+TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
+  TempDir dir;
+  SweepOptions o = InterruptedSweep(dir);
   o.params.T0 = 1.5;  // another sweep
   try {
     RunSweep(o);
@@ -715,20 +721,6 @@ TEST(Sweep, FileIsByteIdenticalForAnyThreadCountWithCommentsStabilityAndAllSpaci
     }
   }
   EXPECT_EQ(runs, 6);
-}
-
-// Interrupts a 500-point sweep after 100 points (checkpoint after every block).
-SweepOptions InterruptedSweep(const TempDir& dir) {
-  SweepOptions o = PaperPhaseSweep(dir.File("cut.csv"), 500);
-  o.block_points = 10;
-  o.checkpoint_seconds = 0.0;
-  EXPECT_THROW(RunSweep(o,
-                        [](const SweepProgress& p) {
-                          if (p.points_done >= 100) throw Interrupt{};
-                        }),
-               Interrupt);
-  o.resume = true;
-  return o;
 }
 
 std::string IoErrorMessage(const SweepOptions& o) {
