@@ -10,5 +10,6 @@ Command AddSimulateCommand(CLI::App& app);
 Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddOptimizeCommand(CLI::App& app);
+Command AddMergeCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +39,7 @@ struct SweepCliOptions {
   std::string global_algorithm = kMultistart;
   std::string local_algorithm = SearchOptions{}.local_algorithm;
   bool no_header_comment = false;
+  std::string shard;  // "K/N", empty: the whole grid
 };
 
 std::string Duration(double seconds) {
@@ -89,7 +91,8 @@ constexpr std::pair<const char*, const char*> kFlagOf[] = {
     {"harmonics", "--harmonics"},
     {"starts", "--starts"},
     {"hops", "--hops"},
-    {"rho_max", "--rho-max"}};
+    {"rho_max", "--rho-max"},
+    {"shard", "--shard"}};
 
 std::string WithFlagNames(const std::string& message) {
   for (const auto& [name, flag] : kFlagOf) {
@@ -180,14 +183,23 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
   s.grid.Validate();
   if (!opt.optimize.empty()) s.optimize = ParseSweepOptimize(opt.optimize);
+  if (!opt.shard.empty()) {
+    int used = 0;
+    if (std::sscanf(opt.shard.c_str(), "%d/%d%n", &s.shard, &s.shards, &used) != 2 ||
+        static_cast<std::size_t>(used) != opt.shard.size() || !std::isdigit(opt.shard[0])) {
+      throw std::invalid_argument(fmt::format(
+          "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", opt.shard));
+    }
+  }
   RejectConflicts(opt, cmd);
   BuildForcing(opt);
   SetOptimizerOptions(opt);
   s.comments.clear();
   if (!opt.no_header_comment) {
     // Not how or where the sweep runs, and not the defaults of options a grid replaces.
-    std::vector<std::string> exclude = {"--threads", "--output", "--resume", "--checkpoint-seconds",
-                                        "--no-header-comment"};
+    std::vector<std::string> exclude = {
+        "--threads",           "--output", "--resume", "--checkpoint-seconds",
+        "--no-header-comment", "--shard"};
     for (const GridAxis& axis : s.grid.axes) exclude.push_back("--" + axis.name());
     s.comments.push_back(CommandProvenance(cmd, exclude).CommandLine());
   }
@@ -314,6 +326,12 @@ Command AddSweepCommand(CLI::App& app) {
                   "minimum time [s] between two checkpoints (each one fsyncs the partial file); "
                   "0: after every block of rows")
       ->capture_default_str();
+  cmd->add_option("--shard", opt->shard,
+                  "compute only shard K of N (0 <= K < N): the grid points p with p % N = K; "
+                  "the file gets a line '# shard K/N of T points'; `capsubot merge OUT "
+                  "SHARD_FILES...` joins the N files into the file of the whole sweep "
+                  "(docs/cluster.md)")
+      ->type_name("K/N");
   cmd->add_option("--threads", opt->sweep.threads,
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency)")
       ->capture_default_str();

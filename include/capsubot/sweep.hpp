@@ -86,6 +86,13 @@ struct SweepOptions {
   /// The CSV file to write (required); "-" (standard output) or a path that is not a regular
   /// file (/dev/stdout, a pipe) is written in place, without checkpoint or resume.
   std::string output;
+  /// Compute only shard `shard` of `shards` (0 <= shard < shards): the grid points p with
+  /// p % shards == shard, in grid order (interleaved: neighbouring points, of similar cost,
+  /// go to different shards). A shard's file has the same comment and header lines plus the
+  /// line `# shard K/N of T points`; MergeSweepShards joins the N files into the file of the
+  /// whole grid, byte for byte. 1 shard: the whole grid.
+  int shard = 0;
+  int shards = 1;
   /// Continue from `<output>.checkpoint` if it exists and belongs to this same sweep.
   bool resume = false;
   /// Worker threads; 0 means std::thread::hardware_concurrency().
@@ -129,6 +136,14 @@ class SweepResumableError : public IoError {
  public:
   using IoError::IoError;
 };
+
+/// Number of grid points this run computes: the grid's, or its shard's.
+std::int64_t ShardPointCount(const SweepOptions& options);
+/// The grid point (row-major index) of this run's i-th point, i < ShardPointCount(options).
+/// The unit of work is a block of consecutive i: a distributed backend (threads here, a
+/// master handing blocks to workers elsewhere) claims blocks and one writer writes them in
+/// order.
+std::int64_t ShardPoint(const SweepOptions& options, std::int64_t i);
 
 /// The CSV header's column names for these options.
 std::vector<std::string> SweepColumns(const SweepOptions& options);

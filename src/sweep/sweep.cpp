@@ -112,6 +112,15 @@ std::string KeptMessage(const IoError& e, const std::string& output) {
 
 }  // namespace
 
+std::int64_t ShardPointCount(const SweepOptions& o) {
+  const std::int64_t total = o.grid.size();
+  return o.shards <= 1 ? total : (total - o.shard + o.shards - 1) / o.shards;
+}
+
+std::int64_t ShardPoint(const SweepOptions& o, std::int64_t i) {
+  return o.shard + i * std::max(1, o.shards);
+}
+
 const char* SweepOptimizeName(SweepOptimize mode) { return RuleOf(mode).name; }
 
 std::vector<SweepOptimize> SweepOptimizeModes() {
@@ -142,6 +151,16 @@ void SweepOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
                     kMaxThreads));
+  }
+  if (shards < 1 || shard < 0 || shard >= shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
+  }
+  if (shards > 1 && grid.size() < shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: the grid has only {} points: expected at most as many shards "
+        "as points",
+        shard, shards, grid.size()));
   }
   if (block_points < 0) {
     throw std::invalid_argument(
@@ -244,7 +263,8 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   using Clock = std::chrono::steady_clock;
   options.Validate();
   const auto start = Clock::now();
-  const std::int64_t total = options.grid.size();
+  // This run's points: every grid point, or those of one shard (ShardPoint).
+  const std::int64_t total = ShardPointCount(options);
   const int threads = ThreadCount(options);
 
   detail::SweepFile file(options.output, detail::SweepDescription(options),
@@ -309,7 +329,7 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
         slot.rows.clear();
         std::int64_t rows = 0;
         for (std::int64_t p = block_begin(k); p < block_end(k); ++p) {
-          rows += writer.AppendPoint(p, slot.rows);
+          rows += writer.AppendPoint(ShardPoint(options, p), slot.rows);
         }
         {
           std::lock_guard<std::mutex> lock(mutex);

@@ -41,6 +41,10 @@ std::string SearchDescription(const SearchOptions& s) {
 
 }  // namespace
 
+std::string ShardLine(int shard, int shards, std::int64_t points) {
+  return fmt::format("# shard {}/{} of {} points\n", shard, shards, points);
+}
+
 void AppendNumber(RowBuffer& out, double value) {
   const std::size_t size = out.size();
   out.try_resize(size + kMaxNumberChars);  // grows the capacity once, then never allocates
@@ -51,6 +55,7 @@ void AppendNumber(RowBuffer& out, double value) {
 std::string SweepHeaderLines(const SweepOptions& options) {
   std::string text;
   for (const std::string& line : options.comments) text += "# " + line + '\n';
+  if (options.shards > 1) text += ShardLine(options.shard, options.shards, options.grid.size());
   std::string header;
   for (const std::string& name : SweepColumns(options)) {
     header += (header.empty() ? "" : ",") + name;

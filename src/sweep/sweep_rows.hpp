@@ -18,7 +18,10 @@ using RowBuffer = fmt::memory_buffer;
 /// Appends `value` as capsubot::WriteNumber writes it (nothing for NaN: an empty cell).
 void AppendNumber(RowBuffer& out, double value);
 
-/// The comment lines and the header line, as the file begins.
+/// The line that marks a shard's file: "# shard K/N of T points\n".
+std::string ShardLine(int shard, int shards, std::int64_t points);
+
+/// The comment lines (with the shard line of a shard) and the header line, as the file begins.
 std::string SweepHeaderLines(const SweepOptions& options);
 
 /// One line that determines the sweep's bytes (format version, comments, columns, grid,
