@@ -198,27 +198,6 @@ TEST(Sweep, PhaseRowsEqualSolveAtEveryPoint) {
   EXPECT_GT(invalid, 0);  // the row layout is exercised with violations too
 }
 
-TEST(Sweep, TwoDimensionalGridRunsTheLastAxisFastest) {
-  TempDir dir;
-  SweepOptions o;
-  o.grid.axes = {ParseGridAxis("A=0.1:0.4:4"), ParseGridAxis("c=0.05:0.3:3")};
-  o.forcing = Forcing::Harmonic(1.0, 1.0, -2.0);
-  o.params.T0 = 0.8;
-  o.output = dir.File("ac.csv");
-  RunSweep(o);
-  const auto rows = ReadCsv(o.output);
-  ASSERT_EQ(rows.size(), 13u);
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double A = o.grid.axes[0].Value(i), c = o.grid.axes[1].Value(j);
-      const Solution s = Solve(Forcing::Harmonic(A, c, -2.0), o.params);
-      std::vector<std::string> expected = {FormatNumber(A), FormatNumber(c)};
-      for (const std::string& cell : SolutionCells(s)) expected.push_back(cell);
-      EXPECT_EQ(rows[1 + 3 * i + j], expected) << "A = " << A << ", c = " << c;
-    }
-  }
-}
-
 TEST(Sweep, ModelParameterAxesReachSolve) {
   TempDir dir;
   SweepOptions o;
