@@ -11,5 +11,6 @@ Command AddOrbitsCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddOptimizeCommand(CLI::App& app);
 Command AddDesignCommand(CLI::App& app);
+Command AddMergeCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -65,9 +65,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", capsubot::Version(), "Print the version and exit");
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
-  const std::vector<Command> commands = {AddSolveCommand(app),    AddSimulateCommand(app),
-                                         AddOrbitsCommand(app),   AddSweepCommand(app),
-                                         AddOptimizeCommand(app), AddDesignCommand(app)};
+  const std::vector<Command> commands = {
+      AddSolveCommand(app),    AddSimulateCommand(app), AddOrbitsCommand(app), AddSweepCommand(app),
+      AddOptimizeCommand(app), AddDesignCommand(app),   AddMergeCommand(app)};
   UseStrictNumbers(app);
   try {
     app.parse(argc, argv);
