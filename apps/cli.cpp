@@ -36,14 +36,14 @@ std::vector<double> ParseCoefficients(const char* option, const std::string& tex
 constexpr const char* kIntegerValidator = "integer";
 
 // The transform of a numeric option: the strict parse, then the value in a form CLI11's own
-// conversion reads back exactly (17 significant digits, plain decimal integers).
+// conversion reads back exactly (shortest round-trip, plain decimal integers).
 // `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max).
 CLI::Validator NumberText(const std::string& name, bool allow_inf) {
   return CLI::Validator(
       [name, allow_inf](std::string& text) {
         if (allow_inf && text == "inf") return std::string();
         try {
-          text = fmt::format("{:.17g}", ParseNumber(text, name));
+          text = FormatNumber(ParseNumber(text, name));
           return std::string();
         } catch (const std::invalid_argument& e) {
           return std::string(e.what());

@@ -15,5 +15,6 @@ Command AddAttractorsCommand(CLI::App& app);
 Command AddPeriodicCommand(CLI::App& app);
 Command AddBasinsCommand(CLI::App& app);
 Command AddBifurcationCommand(CLI::App& app);
+Command AddMergeCommand(CLI::App& app);
 
 }  // namespace capsubot::app

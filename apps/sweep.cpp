@@ -5,14 +5,21 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -22,47 +29,96 @@ struct SweepCliOptions {
   ForcingOptions forcing;
   SweepOptions sweep;
   std::string optimize;
-  CLI::App* cmd = nullptr;
+  double rho_max = OptimizeOptions::kInf;                   // --stable-only: 1
+  double bound = std::numeric_limits<double>::quiet_NaN();  // NaN: T0
+  int harmonics = FourierOptions{}.harmonics;
+  int starts = 0;  // used only when given: else the problem's default
+  CLI::Option* starts_option = nullptr;
+  int hops = ForcingDesignOptions{}.hops;
+  std::string global_algorithm = kMultistart;
+  std::string local_algorithm = SearchOptions{}.local_algorithm;
+  bool no_header_comment = false;
+  std::string shard;  // "K/N", empty: the whole grid
 };
 
-// A gridded parameter takes its values from the grid: the same parameter given as an option
-// as well contradicts it (it would be ignored).
-void RejectGriddedOptions(const SweepCliOptions& opt) {
-  for (const GridAxis& axis : opt.sweep.grid.axes) {
-    const std::string name = std::string("--") + SweepParameterName(axis.parameter);
-    const CLI::Option* option = opt.cmd->get_option_no_throw(name);
+// Library messages name the sweep's parameters; the user typed these flags.
+constexpr std::pair<const char*, const char*> kFlagOf[] = {
+    {"grid", "--grid"},
+    {"optimize", "--optimize"},
+    {"output", "--output"},
+    {"threads", "--threads"},
+    {"resume", "--resume"},
+    {"checkpoint_seconds", "--checkpoint-seconds"},
+    {"scan_points", "--scan-points"},
+    {"harmonics", "--harmonics"},
+    {"starts", "--starts"},
+    {"hops", "--hops"},
+    {"rho_max", "--rho-max"},
+    {"shard", "--shard"}};
+
+std::string WithFlagNames(const std::string& message) {
+  for (const auto& [name, flag] : kFlagOf) {
+    const std::size_t n = std::strlen(name);
+    if (message.compare(0, n, name) == 0 && n < message.size() &&
+        (message[n] == ' ' || message[n] == ':')) {
+      return flag + message.substr(n);
+    }
+  }
+  return message;
+}
+
+// The option giving a grid parameter's value: "--rho-max" for rho_max.
+std::string FlagOf(const GridAxis& axis) {
+  std::string flag = "--" + axis.name();
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+// An option that gives a value the grid also gives, or that the optimiser chooses itself.
+void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
+  const SweepOptions& s = opt.sweep;
+  for (const GridAxis& axis : s.grid.axes) {
+    const std::string flag = FlagOf(axis);
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
     if (option != nullptr && option->count() > 0) {
+      throw std::invalid_argument(
+          fmt::format("{} = {} is invalid with --grid {}: expected the value from only one of them",
+                      flag, option->as<std::string>(), axis.ToString()));
+    }
+    if (axis.parameter == SweepParameter::krho_max && cmd.count("--stable-only") > 0) {
       throw std::invalid_argument(fmt::format(
-          "{} = {} conflicts with --grid {}: expected one of them (the grid gives {} at every "
-          "point)",
-          name, option->results().front(), axis.ToString(), SweepParameterName(axis.parameter)));
+          "--stable-only (rho_max = 1) is invalid with --grid {}: expected the value from only "
+          "one of them",
+          axis.ToString()));
+    }
+  }
+  if (s.optimize != SweepOptimize::kForcing && s.optimize != SweepOptimize::kFourier) return;
+  for (const char* flag : {"--A", "--c", "--phi0", "--sin", "--cos"}) {
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) {
+      throw std::invalid_argument(
+          fmt::format("{} is invalid with --optimize {}: expected no force option (the "
+                      "optimiser chooses the force)",
+                      flag, SweepOptimizeName(s.optimize)));
     }
   }
 }
 
-int Run(SweepCliOptions& opt) {
+// The force at every point from --A, --c, --phi0, --sin, --cos (not needed by P2 and P3).
+void BuildForcing(SweepCliOptions& opt) {
   SweepOptions& s = opt.sweep;
-  RequireInRange("--scan-points", s.phase.scan_points, kMinScanPoints, kMaxScanPoints);
-  s.grid.axes.clear();
-  for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
-  s.grid.Validate();
-  RejectGriddedOptions(opt);
-  if (!opt.optimize.empty()) {
-    if (opt.optimize != "phi0") {
-      throw std::invalid_argument(fmt::format(
-          "--optimize {} is invalid: expected phi0 (the impact phase, problem P1)", opt.optimize));
-    }
-    s.optimize_phi0 = true;
-  }
   const Grid& g = s.grid;
+  if (s.optimize == SweepOptimize::kForcing || s.optimize == SweepOptimize::kFourier) return;
   // A gridded A or c needs no option: the grid gives its value at every point.
   if (g.Has(SweepParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
-  const bool phase_given_elsewhere =
-      g.Has(SweepParameter::kphi0) || g.Has(SweepParameter::kalpha) || s.optimize_phi0;
+  const bool phase_given_elsewhere = g.Has(SweepParameter::kphi0) ||
+                                     g.Has(SweepParameter::kalpha) ||
+                                     s.optimize == SweepOptimize::kPhase;
   if (std::isnan(opt.forcing.c)) {
     throw std::invalid_argument("option --c is missing: give the mean force c (or --grid c=...)");
   }
-  if (g.Has(SweepParameter::kA) && opt.forcing.fourier_option->count() == 0 &&
+  const bool amplitude_elsewhere = g.Has(SweepParameter::kA) || g.Has(SweepParameter::ksin, 1);
+  if (amplitude_elsewhere && opt.forcing.fourier_option->count() == 0 &&
       opt.forcing.A_option->count() == 0) {
     s.forcing = Forcing::Harmonic(0.0, opt.forcing.c,
                                   opt.forcing.phi0_option->count() > 0 ? opt.forcing.phi0 : 0.0);
@@ -74,12 +130,53 @@ int Run(SweepCliOptions& opt) {
   } else {
     s.forcing = opt.forcing.Build(!phase_given_elsewhere);
   }
-  if (s.optimize_phi0 || g.Has(SweepParameter::kalpha)) {
-    if (opt.forcing.phi0_option->count() > 0) {
-      throw std::invalid_argument(
-          fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
-                      opt.forcing.phi0, s.optimize_phi0 ? "--optimize phi0" : "--grid alpha"));
+  if ((s.optimize == SweepOptimize::kPhase || g.Has(SweepParameter::kalpha)) &&
+      opt.forcing.phi0_option->count() > 0) {
+    throw std::invalid_argument(
+        fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
+                    opt.forcing.phi0,
+                    s.optimize == SweepOptimize::kPhase ? "--optimize phi0" : "--grid alpha"));
+  }
+}
+
+// The optimisers' options from the command line (each mode reads its own).
+void SetOptimizerOptions(SweepCliOptions& opt) {
+  SweepOptions& s = opt.sweep;
+  s.phase.rho_max = s.design.rho_max = s.fourier.harmonic.rho_max = opt.rho_max;
+  s.design.force_bound = s.fourier.harmonic.force_bound = opt.bound;
+  s.fourier.harmonics = opt.harmonics;
+  if (opt.starts_option->count() > 0) s.design.starts = s.fourier.search.starts = opt.starts;
+  s.design.hops = opt.hops;
+  s.design.global_algorithm = s.fourier.search.global_algorithm = opt.global_algorithm;
+  s.design.local_algorithm = s.fourier.harmonic.local_algorithm = opt.local_algorithm;
+}
+
+int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
+  SweepOptions& s = opt.sweep;
+  RequireInRange("--scan-points", s.phase.scan_points, kMinScanPoints, kMaxScanPoints);
+  s.grid.axes.clear();
+  for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
+  s.grid.Validate();
+  if (!opt.optimize.empty()) s.optimize = ParseSweepOptimize(opt.optimize);
+  if (!opt.shard.empty()) {
+    int used = 0;
+    if (std::sscanf(opt.shard.c_str(), "%d/%d%n", &s.shard, &s.shards, &used) != 2 ||
+        static_cast<std::size_t>(used) != opt.shard.size() || !std::isdigit(opt.shard[0])) {
+      throw std::invalid_argument(fmt::format(
+          "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", opt.shard));
     }
+  }
+  RejectConflicts(opt, cmd);
+  BuildForcing(opt);
+  SetOptimizerOptions(opt);
+  s.comments.clear();
+  if (!opt.no_header_comment) {
+    // Not how or where the sweep runs, and not the defaults of options a grid replaces.
+    std::vector<std::string> exclude = {
+        "--threads",           "--output", "--resume", "--checkpoint-seconds",
+        "--no-header-comment", "--shard"};
+    for (const GridAxis& axis : s.grid.axes) exclude.push_back(FlagOf(axis));
+    s.comments.push_back(CommandProvenance(cmd, exclude).CommandLine());
   }
   s.threads = CapThreads(s.threads, "capsubot sweep");
   const bool tty = StderrIsTerminal();
@@ -103,38 +200,54 @@ int Run(SweepCliOptions& opt) {
   return 0;
 }
 
+int Run(SweepCliOptions& opt, const CLI::App& cmd) {
+  try {
+    return RunSweepCommand(opt, cmd);
+  } catch (const SweepResumableError& e) {
+    throw WriteError(WithFlagNames(e.what()) + ": run the same command with --resume to continue");
+  } catch (const WriteError& e) {
+    throw WriteError(WithFlagNames(e.what()));
+  } catch (const IoError& e) {
+    throw IoError(WithFlagNames(e.what()));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(WithFlagNames(e.what()));
+  }
+}
+
 }  // namespace
 
 Command AddSweepCommand(CLI::App& app) {
   auto opt = std::make_shared<SweepCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "The orbit and its validity (docs/model.md sections 4-5) at every point of a 1-D or 2-D grid "
-      "of parameters, to a CSV file: columns <grid parameters>, phi1, alpha, u, v_plus, I, "
-      "v_mean, x_min, x_max, valid, violations (empty cell: the quantity does not exist). "
-      "Runs on all cores; the file is byte-identical for any --threads, written to "
-      "<output>.partial and renamed at the end; --resume continues a killed sweep.");
+      "The orbit and its validity (docs/model.md sections 4-5), or the best gait of problem "
+      "P1, P2 or P3 (section 7), at every point of a grid of parameters, to a CSV file: "
+      "comment lines (# capsubot <version> sweep <options>), a header, one row per point "
+      "(empty cell: the quantity does not exist). Runs on all cores; the file is "
+      "byte-identical for any --threads, written to <output>.partial and renamed at the end; "
+      "--resume continues a killed sweep. See docs/sweep.md.");
   cmd->add_option("--grid", opt->grids,
-                  "a grid name=lo:hi:n: n >= 1 equally spaced values from lo to hi inclusive "
-                  "(n = 1: lo), name among A, c, phi0, T0, e, margin, alpha (lo, hi may be "
-                  "pi or -pi). Give 1 or 2 grids; with 2 the first varies slowest. alpha "
-                  "(robot mode) finds every orbit of the robot with that mass ratio: one row "
-                  "per orbit, with columns orbits, orbit, phi0 (if that search ever hits its "
-                  "work bound, the sweep stops with an error rather than write rows that may "
-                  "miss orbits)")
+                  "an axis: name=lo:hi:n (n >= 1 equally spaced values from lo to hi inclusive; "
+                  "lo, hi may be pi or -pi), name=lo:hi:n:log (geometric, lo, hi > 0) or "
+                  "name=v1,v2,... (a list). name: " +
+                      SweepParameterNames() + ". Any number of axes (at most " +
+                      std::to_string(kMaxGridPoints) +
+                      " points in all), the first slowest. alpha (robot mode) finds every "
+                      "orbit of the robot with that mass ratio: one row per orbit, with columns "
+                      "orbits, orbit, phi0")
       ->required()
       ->take_all()
       ->allow_extra_args(false);
   AddForcingOptions(*cmd, opt->forcing);
   cmd->get_option("--c")->required(false)->description(
-      "mean force c of F (same unit as A), required unless c has a --grid; a directed orbit "
-      "needs c > 0");
+      "mean force c of F (same unit as A), required unless c has a --grid or the force is "
+      "optimised (--optimize forcing|fourier); a directed orbit needs c > 0");
   cmd->get_option("--A")->description(
       "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units of (m1+m2) omega^2 L "
-      "(required unless A has a --grid or --sin/--cos are given)");
+      "(required unless A has a --grid, --sin/--cos are given or the force is optimised)");
   cmd->get_option("--phi0")->description(
       "motor phase phi0 [rad] at the impact (phi = 0): F(phi) = A sin(phi + phi0) + c; "
-      "required unless phi0 has a --grid, is optimised (--optimize phi0) or solved for "
+      "required unless phi0 has a --grid, is optimised (--optimize) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt->sweep.params);
   cmd->add_option(
@@ -142,22 +255,31 @@ Command AddSweepCommand(CLI::App& app) {
          "the CSV file to write (required); - writes to standard output (no --resume then)")
       ->required();
   cmd->add_flag("--stability", opt->sweep.stability,
-                "add the columns spectral_radius (of the impact map, docs/model.md section 8) and "
-                "stable (1 when < 1)");
+                "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
+                "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss "
+                "(fold, flip or torus when unstable)");
+  std::string modes;
+  for (SweepOptimize mode : SweepOptimizeModes()) {
+    modes += (modes.empty() ? "" : "|") + std::string(SweepOptimizeName(mode));
+  }
   CLI::Option* optimize =
-      cmd->add_option("--optimize", opt->optimize,
-                      "phi0: at every point, the impact phase phi0 maximising I over valid "
-                      "orbits (problem P1); adds the columns phi0 (the optimum) and status");
+      cmd->add_option(
+             "--optimize", opt->optimize,
+             "the best gait at every point: phi0 (P1: the impact phase for the given force "
+             "shape; adds column phi0), forcing (P2: A, c, phi0 with A + c <= --bound; "
+             "adds A, c, phi0) or fourier (P3: a --harmonics K force with max |F| <= "
+             "--bound; adds c, a1..aK, b1..bK); adds a status column")
+          ->type_name(modes);
   CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt->sweep.phase.rho_max,
-                      "with --optimize phi0: maximise over orbits whose spectral radius is at "
-                      "most rho_max (docs/model.md sections 8, 12); inf: no stability requirement")
+      cmd->add_option("--rho-max", opt->rho_max,
+                      "with --optimize: maximise over orbits whose spectral radius is at most "
+                      "rho_max > 0 (docs/model.md sections 8, 12); inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf)
           ->needs(optimize);
   cmd->add_flag_callback(
-         "--stable-only", [opt] { opt->sweep.phase.rho_max = 1.0; },
-         "with --optimize phi0: the same as --rho-max 1 (valid and stable orbits only)")
+         "--stable-only", [opt] { opt->rho_max = 1.0; },
+         "with --optimize: the same as --rho-max 1 (valid and stable orbits only)")
       ->excludes(rho_max)
       ->needs(optimize);
   cmd->add_option("--scan-points", opt->sweep.phase.scan_points,
@@ -166,19 +288,49 @@ Command AddSweepCommand(CLI::App& app) {
                               kMinScanPoints, kMaxScanPoints))
       ->capture_default_str()
       ->needs(optimize);
+  cmd->add_option("--bound", opt->bound,
+                  "with --optimize forcing|fourier: the force bound A + c (max |F|) <= bound "
+                  "<= T0 (default: T0)");
+  cmd->add_option("--harmonics", opt->harmonics,
+                  "with --optimize fourier: the number K of harmonics")
+      ->capture_default_str();
+  opt->starts_option = cmd->add_option(
+      "--starts", opt->starts,
+      "with --optimize forcing|fourier: local polishes of the multistart, >= 1 (default: 10 "
+      "for forcing, 20 for fourier)");
+  cmd->add_option("--hops", opt->hops,
+                  "with --optimize forcing: basin-hopping restarts after the starts")
+      ->capture_default_str();
+  cmd->add_option("--global-algorithm", opt->global_algorithm,
+                  "with --optimize forcing|fourier: multistart or an NLopt global algorithm "
+                  "(GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
+      ->capture_default_str();
+  cmd->add_option("--local-algorithm", opt->local_algorithm,
+                  "with --optimize forcing|fourier: the local polish (LN_COBYLA, LD_SLSQP, "
+                  "LD_MMA, LD_CCSAQ)")
+      ->capture_default_str();
+  cmd->add_flag("--no-header-comment", opt->no_header_comment,
+                "write no comment lines before the header (for tools that cannot skip '#' "
+                "lines; pandas: comment='#', gnuplot: skips them by default)");
   cmd->add_flag("--resume", opt->sweep.resume,
                 "continue an interrupted sweep from <output>.checkpoint (same options "
-                "required); without it a sweep always starts again");
+                "required; the checkpoint's checksums are verified); without it a sweep "
+                "always starts again");
   cmd->add_option("--checkpoint-seconds", opt->sweep.checkpoint_seconds,
                   "minimum time [s] between two checkpoints (each one fsyncs the partial file); "
                   "0: after every block of rows")
       ->capture_default_str();
+  cmd->add_option("--shard", opt->shard,
+                  "compute only shard K of N (0 <= K < N): the grid points p with p % N = K; "
+                  "the file gets a line '# shard K/N of T points'; `capsubot merge OUT "
+                  "SHARD_FILES...` joins the N files into the file of the whole sweep "
+                  "(docs/cluster.md)")
+      ->type_name("K/N");
   cmd->add_option("--threads", opt->sweep.threads,
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
                   "more than 4 per core is lowered to that, with a note")
       ->capture_default_str();
-  opt->cmd = cmd;
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the paper's figures into results/ (CSV from `capsubot sweep`, PNG from gnuplot):
+#   every CSV starts with a '# capsubot <version> sweep ...' line (what made it): gnuplot
+#   skips it, the awk helpers below read the table through `table`.
 #   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
@@ -8,6 +10,7 @@
 #   bifurcation_T0_*.csv, bifurcation_T0.png: long-run motions of the stable optimum's robot vs T0
 #   basins_coexisting.{csv,png}: basins of a one-impact orbit and a period-12 motion
 #   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
+#   p2_T0_e.csv, p2_T0_e_stable.csv, p2_T0_e.png: the P2 optimum at every (T0, e)
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -22,6 +25,7 @@ if [[ ! -x "$cli" ]]; then
 fi
 mkdir -p "$out"
 say() { echo "figures: $*" >&2; }
+table() { grep -v '^#' "$1"; }  # a CSV without its comment lines: header, then rows
 
 # --- the data (every number of results/REPRODUCTION.md comes from these commands) ----------
 say "the main job: the fastest robust gait (docs/optimize.md)"
@@ -67,6 +71,14 @@ small="--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5"  # a force with valid o
 "$cli" bifurcation $small --param alpha --from 0.05 --to 0.95 --steps 181 --start 0.5,1 \
   --max-period 16 -o "$out/velocity_alpha_impacts.csv" --summary "$out/velocity_alpha.csv"
 
+say "P2 per point: the fastest gait (best A, c, phi0 with A + c <= T0) over (T0, e)"
+n_T0=17
+T0_grid="T0=0.01:1:$n_T0:log" e_grid="e=0:1:11"
+"$cli" sweep --grid "$T0_grid" --grid "$e_grid" --optimize forcing --stability \
+  -o "$out/p2_T0_e.csv"
+"$cli" sweep --grid "$T0_grid" --grid "$e_grid" --optimize forcing --stable-only --stability \
+  -o "$out/p2_T0_e_stable.csv"
+
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
 # changes sign, interpolated linearly (NaN when h keeps its sign).
@@ -75,15 +87,16 @@ heuristic() {  # prints "phi0 I"
              if (NR > 2 && ph * h <= 0 && ph != h) { t = ph / (ph - h)
                printf "%.10g %.10g\n", p0 + t * ($1 - p0), pI + t * ($6 - pI); found = 1; exit }
              ph = h; p0 = $1; pI = $6 }
-           END { if (!found) print "NaN NaN" }' "$1"
+           END { if (!found) print "NaN NaN" }' <(table "$1")
 }
 max_I() {  # prints "phi0 I" of the largest I
-  awk -F, 'NR > 1 && $6 != "" && (!n++ || $6 > m) { m = $6; p = $1 } END { print p, m }' "$1"
+  awk -F, 'NR > 1 && $6 != "" && (!n++ || $6 > m) { m = $6; p = $1 } END { print p, m }' \
+    <(table "$1")
 }
 p1() {  # prints "phi0 I" of the optimiser's answer if it is a valid orbit
   awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i }
            NR == 2 { if ($col["status"] == "ok" && $col["valid"] == 1) print $col["phi0"], $col["I"]
-                     else print "NaN NaN" }' "$1"
+                     else print "NaN NaN" }' <(table "$1")
 }
 
 if ! command -v gnuplot > /dev/null 2>&1; then
@@ -97,7 +110,7 @@ if gnuplot -e "set terminal pngcairo" > /dev/null 2>&1; then term=pngcairo; fi
 read -r h0 h1 < <(awk -F, 'NR > 1 { h = $1 + $2 / 2 + atan2(0, -1) / 2
    if (NR > 2 && ph * h <= 0 && ph != h) { t = ph / (ph - h)
      printf "%.10g %.10g\n", p0 + t * ($1 - p0), q1 + t * ($2 - q1); exit }
-   ph = h; p0 = $1; q1 = $2 }' "$out/fig2_phi1_vs_phi0.csv")
+   ph = h; p0 = $1; q1 = $2 }' <(table "$out/fig2_phi1_vs_phi0.csv"))
 gnuplot -e "term='$term'; data='$out/fig2_phi1_vs_phi0.csv'; out='$out/fig2_phi1_vs_phi0.png'; h_phi0=$h0; h_phi1=$h1" \
   "$gp/fig2.gp"
 
@@ -133,4 +146,6 @@ say "basins of two coexisting attractors (drawn by capsubot basins through gnupl
 "$cli" basins $small --alpha 0.2792869076315278 \
   --max-period 16 --transient 1000 --starts 128x128 -o "$out/basins_coexisting.csv" \
   --plot "$out/basins_coexisting.png"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; out='$out/p2_T0_e.png'; valid_data='$out/p2_T0_e.csv';
+  stable_data='$out/p2_T0_e_stable.csv'; n_T0=$n_T0" "$gp/p2_T0_e.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* p2_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"

@@ -1,7 +1,12 @@
 #pragma once
-// Grids of parameter values for sweeps: `name=lo:hi:n`, n equally spaced values from lo to hi
-// inclusive (n = 1 means lo alone). A sweep has one or two axes; with two, the first one
-// varies slowest (row-major order).
+// Grids of parameter values for sweeps. An axis is written `name=lo:hi:n` (n equally spaced
+// values from lo to hi inclusive; n = 1 means lo alone), `name=lo:hi:n:log` (n geometrically
+// spaced values, lo, hi > 0) or `name=v1,v2,...` (an explicit list, in that order). A grid
+// is any number of axes over different parameters; its points run row-major: the first axis
+// varies slowest, the last fastest.
+//
+// Every parameter a grid can vary is one row of a table (its name, its domain and the rule a
+// message states): SweepParameterName, ParseGridAxis and the checks all read it.
 
 #include <cstdint>
 #include <string>
@@ -9,52 +14,85 @@
 
 namespace capsubot {
 
-/// A parameter a grid can vary (docs/model.md sections 2 and 6 for the symbols).
+/// A parameter a grid can vary (docs/model.md sections 2, 6, 7 and 8 for the symbols).
 enum class SweepParameter {
-  kA,       ///< amplitude A of F = A sin(phi + phi0) + c
-  kc,       ///< mean force c
-  kphi0,    ///< motor phase at the impact phi0 [rad]
-  kT0,      ///< friction bound T0
-  ke,       ///< restitution e
-  kmargin,  ///< clearance d
-  kalpha,   ///< mass ratio of a given robot: phi0 is then solved for (docs/model.md section 8)
+  kA,        ///< amplitude A of F = A sin(phi + phi0) + c (the sine coefficient b_1)
+  kc,        ///< mean force c
+  kphi0,     ///< motor phase at the impact phi0 [rad]
+  kT0,       ///< friction bound T0
+  ke,        ///< restitution e
+  kmargin,   ///< clearance d
+  kalpha,    ///< mass ratio of a given robot: phi0 is then solved for (docs/model.md section 8)
+  kcos,      ///< cosine coefficient a_k of the Fourier force (GridAxis::harmonic = k)
+  ksin,      ///< sine coefficient b_k of the Fourier force (GridAxis::harmonic = k)
+  kbound,    ///< force bound of problems P2 and P3: A + c (max |F|) <= bound
+  krho_max,  ///< largest admissible spectral radius of a stability requirement
+  kmargin_stroke,  ///< clearance relative to the stroke d_s (docs/model.md section 12)
+  kstick_margin,   ///< stick margin s (docs/model.md section 12)
 };
 
-/// The parameter's name as written in `--grid` and in CSV headers ("A", "phi0", ...).
-const char* SweepParameterName(SweepParameter parameter);
+/// Largest number of points of a grid (the product of its axes' sizes), checked by
+/// Grid::Validate before any work: 10^9 rows of about 110 bytes are a 110 GB file.
+inline constexpr std::int64_t kMaxGridPoints = 1000000000;
 
-/// One axis of a grid: n values lo, lo + (hi-lo)/(n-1), ..., hi.
+/// The parameter's name as written in a grid and in CSV headers ("A", "phi0", "a2", ...);
+/// `harmonic` is k for kcos and ksin ("a" and "b" alone when it is 0).
+std::string SweepParameterName(SweepParameter parameter, int harmonic = 0);
+
+/// Every name a grid accepts, for messages: "A, c, phi0, T0, e, margin, alpha, a1..a16, ...".
+std::string SweepParameterNames();
+
+/// How the values of an axis are spaced.
+enum class GridSpacing {
+  kLinear,  ///< lo:hi:n, equal steps
+  kLog,     ///< lo:hi:n:log, equal ratios (lo, hi > 0)
+  kList,    ///< v1,v2,...: the listed values
+};
+
+/// One axis of a grid.
 struct GridAxis {
   SweepParameter parameter = SweepParameter::kphi0;  ///< what varies
-  double lo = 0.0;                                   ///< first value (unit of the parameter)
+  int harmonic = 0;                                  ///< k of a_k or b_k (1..kMaxHarmonics), else 0
+  GridSpacing spacing = GridSpacing::kLinear;        ///< how the values are spaced
+  double lo = 0.0;                                   ///< first value (linear and log spacing)
   double hi = 0.0;                                   ///< last value (ignored when n = 1)
-  std::int64_t n = 1;                                ///< number of values, n >= 1
+  std::int64_t n = 1;                                ///< number of values (linear, log), n >= 1
+  std::vector<double> values;                        ///< the values of a list (kList), at least one
 
-  /// The i-th value, i in [0, n): exactly lo for i = 0 and exactly hi for i = n-1 (n > 1).
+  /// Number of values.
+  std::int64_t size() const;
+  /// The i-th value, i in [0, size()): exactly lo for i = 0 and exactly hi for i = n-1.
   double Value(std::int64_t i) const;
-  /// Throws std::invalid_argument naming the axis ("--grid phi0=...") and the broken rule:
-  /// n >= 1, finite bounds, and bounds inside the parameter's domain (A >= 0, T0 > 0,
-  /// 0 <= e <= 1, 0 <= margin < 0.5, 0 < alpha < 1).
+  /// Smallest and largest value.
+  double Min() const;
+  double Max() const;
+  /// The parameter's name ("phi0", "a2").
+  std::string name() const { return SweepParameterName(parameter, harmonic); }
+  /// Throws std::invalid_argument "grid <axis> is invalid: ..." naming the broken rule:
+  /// 1 <= n <= kMaxGridPoints, finite values that do not overflow the spacing, lo, hi > 0
+  /// for a log axis, values inside the parameter's domain (A >= 0, T0 > 0, 0 <= e <= 1, ...).
   void Validate() const;
-  /// The axis as `name=lo:hi:n` with round-trip numbers (for messages and checkpoints).
+  /// The axis as written (`name=lo:hi:n`, `name=lo:hi:n:log`, `name=v1,v2`) with
+  /// shortest round-trip numbers.
   std::string ToString() const;
 };
 
-/// Parses `name=lo:hi:n` (lo and hi are numbers or +-pi). Throws std::invalid_argument
-/// "--grid <spec> is invalid: ..." for an unknown name, a malformed spec or a bad value.
+/// Parses one axis. Throws std::invalid_argument "grid <spec> is invalid: ..." for an unknown
+/// name, a malformed spec or a bad value. Numbers are decimal; lo and hi may also be pi, -pi.
 GridAxis ParseGridAxis(const std::string& spec);
 
-/// One or two axes; the point index runs row-major (the last axis varies fastest).
+/// Any number of axes over different parameters; the point index runs row-major.
 struct Grid {
-  std::vector<GridAxis> axes;  ///< 1 or 2 axes, first = slowest
+  std::vector<GridAxis> axes;  ///< first = slowest
 
-  /// Validates each axis and the combination: 1 or 2 axes, no parameter twice, not alpha
-  /// together with phi0 (alpha determines phi0), at most 2^53 points.
+  /// Validates each axis and the combination: at least one axis, no parameter twice, not
+  /// alpha together with phi0 (alpha determines phi0), not A together with b1 (A is b1),
+  /// at most kMaxGridPoints points. Messages begin with "grid".
   void Validate() const;
-  /// Number of points: the product of the axes' n.
+  /// Number of points: the product of the axes' sizes.
   std::int64_t size() const;
-  /// True when one axis varies `parameter`.
-  bool Has(SweepParameter parameter) const;
+  /// True when an axis varies `parameter` (with `harmonic` k for kcos and ksin; 0 means any k).
+  bool Has(SweepParameter parameter, int harmonic = 0) const;
   /// The value of axis `axis` at point index `point` (row-major).
   double Value(std::int64_t point, std::size_t axis) const;
 };

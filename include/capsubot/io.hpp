@@ -81,7 +81,16 @@ void UnregisterTempFile(int slot);
 /// For programs (the library never installs it by itself); idempotent.
 void InstallTempFileCleanup();
 
-/// A double with 17 significant digits (round-trips exactly); "" for NaN (a CSV empty cell).
+/// Most characters WriteNumber writes ("-2.2250738585072014e-308").
+inline constexpr int kMaxNumberChars = 24;
+
+/// Writes `value` at `out` (room for kMaxNumberChars) in its shortest round-trip form: the
+/// fewest significant digits that read back to the same double (std::to_chars), "0.1" rather
+/// than "0.10000000000000001"; inf as "inf"; nothing for NaN (a CSV empty cell). Returns
+/// the end of what was written.
+char* WriteNumber(char* out, double value);
+
+/// WriteNumber's text as a string ("" for NaN).
 std::string FormatNumber(double value);
 
 /// Parses a decimal number: optional sign, digits with an optional point, optional exponent

@@ -30,6 +30,21 @@ struct Stability {
   bool stable = false;            ///< spectral_radius < 1
 };
 
+/// How an unstable orbit loses its stability: which multiplier of largest modulus is outside
+/// the unit circle (docs/model.md sections 8 and 13).
+enum class StabilityLoss {
+  kNone,   ///< stable (spectral radius < 1), or stability not computed
+  kFold,   ///< the largest multiplier is real and positive (through +1: a fold)
+  kFlip,   ///< the largest multiplier is real and negative (through -1: period doubling)
+  kTorus,  ///< the largest multipliers are a complex pair (through the circle off the axis)
+};
+
+/// "" for kNone (an empty CSV cell), else "fold", "flip", "torus".
+const char* StabilityLossName(StabilityLoss loss);
+
+/// The loss of a computed stability with spectral radius >= 1; kNone otherwise.
+StabilityLoss ClassifyLoss(const Stability& stability);
+
 /// Stability of the orbit (needs orbit.ok(), else `computed` stays false; never throws).
 /// Allocation-free and closed form: a few evaluations of F, Pi and Phi (docs/model.md section 8).
 Stability ComputeStability(const Orbit& orbit);

@@ -1,7 +1,7 @@
 #pragma once
-// Parameter sweeps to CSV: the orbit (docs/model.md section 4) and its validity (section 5), and
-// optionally its stability (section 8) or the best impact phase (problem P1, section 7), at
-// every point of a 1-D or 2-D grid (grid.hpp).
+// Parameter sweeps to CSV: the orbit (docs/model.md section 4) and its validity (section 5),
+// optionally its stability (section 8), or the optimum of problem P1, P2 or P3 (section 7),
+// at every point of a grid of any number of axes (grid.hpp).
 //
 // The sweep runs on several threads; the CSV is byte-identical for any thread count. Rows
 // are computed in blocks and written in order with a bounded number of blocks in flight, so
@@ -9,20 +9,25 @@
 // checkpoint `<output>.checkpoint` and renamed to `<output>` at the end: a killed sweep never
 // leaves a truncated CSV under the final name, and `resume` continues it from its checkpoint
 // without recomputing finished points (the result is byte-identical to an uninterrupted run).
+// A checkpoint holds a checksum of itself and of the rows it vouches for, and the sweep's
+// full description: a corrupted checkpoint or partial file, or one of another sweep, is an
+// error, never a silently wrong file.
 //
-// Row layout (one header line, then rows in grid order, the last axis varying fastest):
-//   plain:        <grid parameters>, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid,
-//                 violations [, spectral_radius, stable]
-//   optimize_phi0: <grid parameters>, phi0, phi1, ..., violations [, spectral_radius, stable],
-//                 status        (phi0 is the optimal impact phase; status the optimiser's:
-//                 with no_valid_orbit the row is its point nearest to validity)
+// File layout: the comment lines (`# ` + each of SweepOptions::comments), one header line,
+// then rows in grid order (the last axis varying fastest):
+//   plain:      <grid parameters>, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid,
+//               violations [, spectral_radius, lambda_re, lambda_im, stable, loss]
+//   optimize:   <grid parameters>, <optimised variables>, phi1, ..., violations
+//               [, stability columns], status. The variables are phi0 (P1), A, c, phi0 (P2),
+//               c, a1..aK, b1..bK (P3, force seen from the impact); status is the optimiser's
+//               (with no_valid_orbit the row is its point nearest to validity).
 //   alpha grid (robot mode): <grid parameters>, orbits, orbit, phi0, phi1, ..., violations
-//                 [, spectral_radius, stable]: one row per one-impact orbit of the robot
-//                 (orbit = 1..orbits, in increasing phi0); a point with no orbit gets one
-//                 row with orbits = 0 and every other cell empty. The header then holds
-//                 alpha twice: the robot's (grid) value first, then the orbit's computed one.
-// Numbers have 17 significant digits (they round-trip); a quantity that does not exist is an
-// empty cell; valid and stable are 0/1; violations are condition names joined by ';'.
+//               [, stability columns]: one row per one-impact orbit of the robot (orbit =
+//               1..orbits, in increasing phi0); a point with no orbit gets one row with
+//               orbits = 0 and every other cell empty. The alpha axis is named robot_alpha.
+// Numbers are shortest round-trip (WriteNumber); a quantity that does not exist is an empty
+// cell; valid and stable are 0/1; violations are condition names joined by ';'; loss is
+// fold, flip or torus for an unstable orbit (StabilityLoss), empty otherwise.
 
 #include <cstdint>
 #include <functional>
@@ -31,28 +36,63 @@
 
 #include "capsubot/forcing.hpp"
 #include "capsubot/grid.hpp"
+#include "capsubot/io.hpp"
+#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize_fourier.hpp"
 #include "capsubot/optimize_phase.hpp"
 #include "capsubot/params.hpp"
 
 namespace capsubot {
 
+/// What a sweep computes at each point.
+enum class SweepOptimize {
+  kNone,     ///< the orbit of the given force (Solve)
+  kPhase,    ///< P1: the best impact phase phi0 for the force shape (OptimizePhase)
+  kForcing,  ///< P2: the best A, c, phi0 (OptimizeForcing)
+  kFourier,  ///< P3: the best K-harmonic force (OptimizeFourier)
+};
+
+/// The mode's name: "none", "phi0", "forcing", "fourier".
+const char* SweepOptimizeName(SweepOptimize mode);
+/// Every mode that optimises, in a fixed order (for parsers and messages).
+std::vector<SweepOptimize> SweepOptimizeModes();
+/// The mode called `name` (SweepOptimizeName); throws std::invalid_argument
+/// "optimize = <name> is invalid: expected one of phi0, forcing, fourier".
+SweepOptimize ParseSweepOptimize(const std::string& name);
+
 struct SweepOptions {
-  /// The grid (1 or 2 axes); its parameters replace the values of `forcing` and `params`.
+  /// The grid; its parameters replace the values of `forcing`, `params` and the optimiser's
+  /// options at every point.
   Grid grid;
   /// The force at every point, except the gridded parameters; an A grid needs the harmonic
-  /// family. Its phi0 is ignored with `optimize_phi0` or an alpha grid.
+  /// family; a grid over a_k or b_k beyond its K adds harmonics (the others 0). Its phi0 is
+  /// ignored with an optimisation or an alpha grid; the whole force with P2 and P3.
   Forcing forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
-  /// T0, e, margin at every point, except the gridded ones.
+  /// T0, e and the margins at every point, except the gridded ones.
   Params params;
-  /// Add the columns spectral_radius and stable (docs/model.md section 8).
+  /// Add the stability columns (docs/model.md section 8).
   bool stability = false;
-  /// Maximise I over phi0 at every point (problem P1): adds the columns phi0 and status.
-  bool optimize_phi0 = false;
-  /// Options of that optimisation (OptimizePhase); `phase.stable` maximises over stable orbits.
+  /// What to compute at each point.
+  SweepOptimize optimize = SweepOptimize::kNone;
+  /// Options of P1 (OptimizePhase); `phase.rho_max` bounds the spectral radius (1: stable).
   PhaseOptions phase;
+  /// Options of P2 (OptimizeForcing); a grid over bound or rho_max sets its fields.
+  ForcingDesignOptions design;
+  /// Options of P3 (OptimizeFourier); a grid over bound or rho_max sets those of its `harmonic`.
+  FourierOptions fourier;
+  /// Lines written first, each as `# ` + line (provenance: what made the file); part of the
+  /// file's bytes, so a resume must give the same. No line may contain a line break.
+  std::vector<std::string> comments;
   /// The CSV file to write (required); "-" (standard output) or a path that is not a regular
   /// file (/dev/stdout, a pipe) is written in place, without checkpoint or resume.
   std::string output;
+  /// Compute only shard `shard` of `shards` (0 <= shard < shards): the grid points p with
+  /// p % shards == shard, in grid order (interleaved: neighbouring points, of similar cost,
+  /// go to different shards). A shard's file has the same comment and header lines plus the
+  /// line `# shard K/N of T points`; MergeSweepShards joins the N files into the file of the
+  /// whole grid, byte for byte. 1 shard: the whole grid.
+  int shard = 0;
+  int shards = 1;
   /// Continue from `<output>.checkpoint` if it exists and belongs to this same sweep.
   bool resume = false;
   /// Worker threads; 0 means std::thread::hardware_concurrency().
@@ -63,7 +103,9 @@ struct SweepOptions {
   /// checkpoint), in seconds; 0 checkpoints after every block.
   double checkpoint_seconds = 0.5;
 
-  /// Throws std::invalid_argument naming the bad field, its value and the rule.
+  /// Throws std::invalid_argument naming the bad field (grid, optimize, threads, ...), its
+  /// value and the rule. Checks the gridded values against the other parameters too (a
+  /// bound grid against T0), so that no point fails part-way.
   void Validate() const;
 };
 
@@ -75,7 +117,8 @@ struct SweepProgress {
   double seconds = 0.0;             ///< wall time since this run started
 };
 
-/// Called from the thread that writes the file, after each block; must be cheap.
+/// Called from the thread that writes the file, after each block; must be cheap. An exception
+/// it throws stops the sweep like a kill: the partial file and checkpoint stay for a resume.
 using SweepProgressCallback = std::function<void(const SweepProgress&)>;
 
 /// What a finished sweep did.
@@ -87,13 +130,30 @@ struct SweepSummary {
   double seconds = 0.0;             ///< wall time of this run
 };
 
+/// A sweep stopped by a failure a resume can mend (a write error: disk full, ...): the partial
+/// file and checkpoint are kept, and the message says so.
+class SweepResumableError : public WriteError {
+ public:
+  using WriteError::WriteError;
+};
+
+/// Number of grid points this run computes: the grid's, or its shard's.
+std::int64_t ShardPointCount(const SweepOptions& options);
+/// The grid point (row-major index) of this run's i-th point, i < ShardPointCount(options).
+/// The unit of work is a block of consecutive i: a distributed backend (threads here, a
+/// master handing blocks to workers elsewhere) claims blocks and one writer writes them in
+/// order.
+std::int64_t ShardPoint(const SweepOptions& options, std::int64_t i);
+
 /// The CSV header's column names for these options.
 std::vector<std::string> SweepColumns(const SweepOptions& options);
 
 /// Runs the sweep and writes options.output (see the file comment). Throws
-/// std::invalid_argument for bad options or a checkpoint of another sweep, IoError when a
-/// file cannot be written; on any exception `<output>` is untouched and the partial file
-/// and checkpoint stay for `resume`.
+/// std::invalid_argument for bad options or a checkpoint of another sweep (both before any
+/// file is touched), IoError for a file that cannot be used or a corrupted checkpoint,
+/// SweepResumableError for a write error part-way. On any exception `<output>` is untouched;
+/// the partial file and checkpoint are kept only when a resume can continue (a write error,
+/// an exception of `progress`) and removed otherwise (a point that cannot be computed).
 SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress = {});
 
 }  // namespace capsubot

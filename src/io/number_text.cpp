@@ -1,4 +1,4 @@
-// Numbers as text: 17-digit formatting that round-trips, and the strict parser every numeric
+// Numbers as text: shortest round-trip formatting, and the strict parser every numeric
 // input of the command line goes through.
 
 #include <fmt/format.h>
@@ -55,9 +55,14 @@ bool IsNonFiniteWord(std::string_view text) {
 
 }  // namespace
 
+char* WriteNumber(char* out, double value) {
+  if (std::isnan(value)) return out;
+  return std::to_chars(out, out + kMaxNumberChars, value).ptr;
+}
+
 std::string FormatNumber(double value) {
-  if (std::isnan(value)) return "";
-  return fmt::format("{:.17g}", value);
+  char text[kMaxNumberChars];
+  return std::string(text, WriteNumber(text, value));
 }
 
 std::string QuoteForMessage(std::string_view text) {

@@ -69,4 +69,27 @@ Stability ComputeStability(const Orbit& orbit) {
   return s;
 }
 
+const char* StabilityLossName(StabilityLoss loss) {
+  switch (loss) {
+    case StabilityLoss::kNone:
+      return "";
+    case StabilityLoss::kFold:
+      return "fold";
+    case StabilityLoss::kFlip:
+      return "flip";
+    case StabilityLoss::kTorus:
+      return "torus";
+  }
+  return "";
+}
+
+StabilityLoss ClassifyLoss(const Stability& stability) {
+  if (!stability.computed || !(stability.spectral_radius >= 1.0)) return StabilityLoss::kNone;
+  // ComputeStability gives a real pair an imaginary part of exactly 0 and a complex pair
+  // +-sqrt(-disc) != 0.
+  const std::complex<double> largest = stability.multipliers[0];
+  if (largest.imag() != 0.0) return StabilityLoss::kTorus;
+  return largest.real() > 0.0 ? StabilityLoss::kFold : StabilityLoss::kFlip;
+}
+
 }  // namespace capsubot

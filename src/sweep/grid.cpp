@@ -2,9 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 #include "capsubot/forcing.hpp"
@@ -12,17 +13,54 @@
 namespace capsubot {
 namespace {
 
-constexpr SweepParameter kAllParameters[] = {
-    SweepParameter::kA, SweepParameter::kc,      SweepParameter::kphi0, SweepParameter::kT0,
-    SweepParameter::ke, SweepParameter::kmargin, SweepParameter::kalpha};
-constexpr std::int64_t kMaxPoints = std::int64_t{1} << 53;  // indices stay exact in a double
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
-[[noreturn]] void Fail(const std::string& spec, const std::string& why) {
-  throw std::invalid_argument(fmt::format("--grid {} is invalid: {}", spec, why));
+// What a grid may vary: the name, the domain [min, max] (open ends excluded) and the rule
+// a message states. A new parameter is one row here, one enumerator and one case where the
+// sweep applies it (sweep_rows.cpp).
+struct ParameterRule {
+  SweepParameter parameter;
+  const char* name;  // with `indexed`, the prefix of a1, a2, ...
+  bool indexed;      // one parameter per harmonic k = 1..kMaxHarmonics
+  double min;
+  bool min_open;
+  double max;
+  bool max_open;
+  const char* rule;  // "" when every finite value is admissible
+};
+
+constexpr ParameterRule kParameters[] = {
+    {SweepParameter::kA, "A", false, 0.0, false, kInf, false, "amplitudes A >= 0"},
+    {SweepParameter::kc, "c", false, -kInf, false, kInf, false, ""},
+    {SweepParameter::kphi0, "phi0", false, -kInf, false, kInf, false, ""},
+    {SweepParameter::kT0, "T0", false, 0.0, true, kInf, false, "friction bounds T0 > 0"},
+    {SweepParameter::ke, "e", false, 0.0, false, 1.0, false, "restitutions 0 <= e <= 1"},
+    {SweepParameter::kmargin, "margin", false, 0.0, false, 0.5, true, "margins 0 <= margin < 0.5"},
+    {SweepParameter::kalpha, "alpha", false, 0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"},
+    {SweepParameter::kcos, "a", true, -kInf, false, kInf, false, ""},
+    {SweepParameter::ksin, "b", true, -kInf, false, kInf, false, ""},
+    {SweepParameter::kbound, "bound", false, 0.0, true, kInf, false, "force bounds bound > 0"},
+    {SweepParameter::krho_max, "rho_max", false, 0.0, true, kInf, false,
+     "spectral radius bounds rho_max > 0"},
+    {SweepParameter::kmargin_stroke, "margin_stroke", false, 0.0, false, 0.5, true,
+     "stroke margins 0 <= margin_stroke < 0.5"},
+    {SweepParameter::kstick_margin, "stick_margin", false, 0.0, false, 1.0, true,
+     "stick margins 0 <= stick_margin < 1"},
+};
+
+const ParameterRule& RuleOf(SweepParameter parameter) {
+  for (const ParameterRule& r : kParameters) {
+    if (r.parameter == parameter) return r;
+  }
+  return kParameters[0];  // unreachable: every enumerator has a row
 }
 
-// A bound: a decimal number, or pi / -pi / +pi.
-bool ParseBound(const std::string& text, double& value) {
+[[noreturn]] void Fail(const std::string& spec, const std::string& why) {
+  throw std::invalid_argument(fmt::format("grid {} is invalid: {}", spec, why));
+}
+
+// A decimal number (optional sign, no spaces, no hexadecimal), or pi, +pi, -pi.
+bool ParseNumber(const std::string& text, double& value) {
   if (text == "pi" || text == "+pi") {
     value = kTau / 2.0;
     return true;
@@ -31,48 +69,106 @@ bool ParseBound(const std::string& text, double& value) {
     value = -kTau / 2.0;
     return true;
   }
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno != ERANGE;
+  const char* first = text.data();
+  const char* last = first + text.size();
+  if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
+  const std::from_chars_result r = std::from_chars(first, last, value);
+  return first != last && r.ec == std::errc() && r.ptr == last;
 }
 
 void CheckAxis(const GridAxis& axis, const std::string& spec);
 
+// A name of the table: "phi0" -> kphi0; "a3" -> kcos with harmonic 3.
+bool ParseName(const std::string& name, GridAxis& axis) {
+  for (const ParameterRule& r : kParameters) {
+    if (!r.indexed) {
+      if (name == r.name) {
+        axis.parameter = r.parameter;
+        axis.harmonic = 0;
+        return true;
+      }
+      continue;
+    }
+    const std::string prefix = r.name;
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* first = name.data() + prefix.size();
+    const char* last = name.data() + name.size();
+    int k = 0;
+    const std::from_chars_result res = std::from_chars(first, last, k);
+    if (res.ec != std::errc() || res.ptr != last || *first == '0' || k < 1 || k > kMaxHarmonics) {
+      continue;
+    }
+    axis.parameter = r.parameter;
+    axis.harmonic = k;
+    return true;
+  }
+  return false;
+}
+
+std::vector<std::string> Split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = std::min(text.find(separator, start), text.size());
+    parts.push_back(text.substr(start, end - start));
+    if (end == text.size()) return parts;
+    start = end + 1;
+  }
+}
+
 }  // namespace
 
-const char* SweepParameterName(SweepParameter parameter) {
-  switch (parameter) {
-    case SweepParameter::kA:
-      return "A";
-    case SweepParameter::kc:
-      return "c";
-    case SweepParameter::kphi0:
-      return "phi0";
-    case SweepParameter::kT0:
-      return "T0";
-    case SweepParameter::ke:
-      return "e";
-    case SweepParameter::kmargin:
-      return "margin";
-    case SweepParameter::kalpha:
-      return "alpha";
+std::string SweepParameterName(SweepParameter parameter, int harmonic) {
+  const ParameterRule& r = RuleOf(parameter);
+  return r.indexed && harmonic > 0 ? fmt::format("{}{}", r.name, harmonic) : std::string(r.name);
+}
+
+std::string SweepParameterNames() {
+  std::string names;
+  for (const ParameterRule& r : kParameters) {
+    if (!names.empty()) names += ", ";
+    names += r.indexed ? fmt::format("{0}1..{0}{1}", r.name, kMaxHarmonics) : r.name;
   }
-  return "unknown";
+  return names;
+}
+
+std::int64_t GridAxis::size() const {
+  return spacing == GridSpacing::kList ? static_cast<std::int64_t>(values.size()) : n;
 }
 
 double GridAxis::Value(std::int64_t i) const {
+  if (spacing == GridSpacing::kList) return values[static_cast<std::size_t>(i)];
   if (n <= 1 || i <= 0) return lo;
   if (i >= n - 1) return hi;
-  // Weighted mean of the ends: symmetric in lo and hi, and round decimals stay round
-  // (0.05:0.95:19 gives 0.1, not 0.09999999999999999).
-  const double m = static_cast<double>(n - 1);
-  return (lo * (m - static_cast<double>(i)) + hi * static_cast<double>(i)) / m;
+  const double m = static_cast<double>(n - 1), t = static_cast<double>(i);
+  double value = 0.0;
+  if (spacing == GridSpacing::kLog) {
+    // Equal ratios, through decimal logarithms: decades stay exact (1e-3:1:4:log).
+    const double l0 = std::log10(lo), l1 = std::log10(hi);
+    value = std::pow(10.0, (l0 * (m - t) + l1 * t) / m);
+  } else {
+    // Weighted mean of the ends: symmetric in lo and hi, and round decimals stay round
+    // (0.05:0.95:19 gives 0.1, not 0.09999999999999999).
+    value = (lo * (m - t) + hi * t) / m;
+  }
+  // Rounding must not leave [lo, hi] (0.1:0.1:7, or e = 1 at a bound of the domain).
+  return std::clamp(value, std::min(lo, hi), std::max(lo, hi));
+}
+
+double GridAxis::Min() const {
+  if (spacing == GridSpacing::kList) return *std::min_element(values.begin(), values.end());
+  return n == 1 ? lo : std::min(lo, hi);
+}
+
+double GridAxis::Max() const {
+  if (spacing == GridSpacing::kList) return *std::max_element(values.begin(), values.end());
+  return n == 1 ? lo : std::max(lo, hi);
 }
 
 std::string GridAxis::ToString() const {
-  return fmt::format("{}={}:{}:{}", SweepParameterName(parameter), lo, hi, n);
+  if (spacing == GridSpacing::kList) return fmt::format("{}={}", name(), fmt::join(values, ","));
+  return fmt::format("{}={}:{}:{}{}", name(), lo, hi, n,
+                     spacing == GridSpacing::kLog ? ":log" : "");
 }
 
 void GridAxis::Validate() const { CheckAxis(*this, ToString()); }
@@ -81,33 +177,42 @@ namespace {
 
 // The rules of GridAxis::Validate, with `spec` quoted in the message.
 void CheckAxis(const GridAxis& axis, const std::string& spec) {
+  const GridSpacing spacing = axis.spacing;
   const std::int64_t n = axis.n;
   const double lo = axis.lo, hi = axis.hi;
-  if (n < 1) Fail(spec, fmt::format("n = {}: expected n >= 1 points", n));
-  if (n > kMaxPoints) Fail(spec, fmt::format("n = {}: expected n <= 2^53", n));
-  if (!std::isfinite(lo) || !std::isfinite(hi)) {
-    Fail(spec, "expected finite bounds lo and hi (not NaN or infinite)");
+  if (spacing == GridSpacing::kList) {
+    if (axis.values.empty()) Fail(spec, "expected at least one value");
+    if (axis.size() > kMaxGridPoints) {
+      Fail(spec, fmt::format("{} values: expected at most {}", axis.size(), kMaxGridPoints));
+    }
+    for (double v : axis.values) {
+      if (!std::isfinite(v)) Fail(spec, "expected finite values (not NaN or infinite)");
+    }
+  } else {
+    if (n < 1) Fail(spec, fmt::format("n = {}: expected n >= 1 points", n));
+    if (n > kMaxGridPoints) {
+      Fail(spec, fmt::format("n = {}: expected n <= {} points", n, kMaxGridPoints));
+    }
+    if (!std::isfinite(lo) || !std::isfinite(hi)) {
+      Fail(spec, "expected finite bounds lo and hi (not NaN or infinite)");
+    }
+    const double m = static_cast<double>(n - 1);
+    if (spacing == GridSpacing::kLinear && (!std::isfinite(lo * m) || !std::isfinite(hi * m))) {
+      Fail(spec, fmt::format("the bounds are too large for {} points: expected |lo| and |hi| "
+                             "<= {:.6g} (the values lo (n-1-i)/(n-1) + hi i/(n-1) overflow)",
+                             n, std::numeric_limits<double>::max() / m));
+    }
+    if (spacing == GridSpacing::kLog && !(lo > 0.0 && hi > 0.0)) {
+      Fail(spec, "expected lo > 0 and hi > 0 for a log grid (geometric spacing)");
+    }
   }
-  const double a = n == 1 ? lo : std::min(lo, hi), b = n == 1 ? lo : std::max(lo, hi);
-  switch (axis.parameter) {
-    case SweepParameter::kA:
-      if (a < 0.0) Fail(spec, "expected amplitudes A >= 0");
-      break;
-    case SweepParameter::kT0:
-      if (a <= 0.0) Fail(spec, "expected friction bounds T0 > 0");
-      break;
-    case SweepParameter::ke:
-      if (a < 0.0 || b > 1.0) Fail(spec, "expected restitutions 0 <= e <= 1");
-      break;
-    case SweepParameter::kmargin:
-      if (a < 0.0 || b >= 0.5) Fail(spec, "expected margins 0 <= margin < 0.5");
-      break;
-    case SweepParameter::kalpha:
-      if (a <= 0.0 || b >= 1.0) Fail(spec, "expected mass ratios 0 < alpha < 1");
-      break;
-    case SweepParameter::kc:
-    case SweepParameter::kphi0:
-      break;
+  const ParameterRule& r = RuleOf(axis.parameter);
+  if (r.indexed && (axis.harmonic < 1 || axis.harmonic > kMaxHarmonics)) {
+    Fail(spec, fmt::format("harmonic k = {}: expected 1 <= k <= {}", axis.harmonic, kMaxHarmonics));
+  }
+  const double a = axis.Min(), b = axis.Max();
+  if ((r.min_open ? a <= r.min : a < r.min) || (r.max_open ? b >= r.max : b > r.max)) {
+    Fail(spec, fmt::format("expected {}", r.rule));
   }
 }
 
@@ -115,88 +220,110 @@ void CheckAxis(const GridAxis& axis, const std::string& spec) {
 
 GridAxis ParseGridAxis(const std::string& spec) {
   const auto eq = spec.find('=');
-  if (eq == std::string::npos) Fail(spec, "expected name=lo:hi:n");
-  const std::string name = spec.substr(0, eq);
+  if (eq == std::string::npos)
+    Fail(spec, "expected name=lo:hi:n, name=lo:hi:n:log or name=v1,v2,...");
   GridAxis axis;
-  bool known = false;
-  for (SweepParameter p : kAllParameters) {
-    if (name == SweepParameterName(p)) {
-      axis.parameter = p;
-      known = true;
-    }
-  }
-  if (!known) {
-    Fail(spec, fmt::format("unknown parameter '{}': expected one of A, c, phi0, T0, e, margin, "
-                           "alpha",
-                           name));
+  const std::string name = spec.substr(0, eq);
+  if (!ParseName(name, axis)) {
+    Fail(spec,
+         fmt::format("unknown parameter '{}': expected one of {}", name, SweepParameterNames()));
   }
   const std::string rest = spec.substr(eq + 1);
-  const auto c1 = rest.find(':');
-  const auto c2 = c1 == std::string::npos ? c1 : rest.find(':', c1 + 1);
-  if (c2 == std::string::npos || rest.find(':', c2 + 1) != std::string::npos) {
-    Fail(spec, "expected name=lo:hi:n (three fields separated by ':')");
+  if (rest.find(':') == std::string::npos) {  // a list (one value is a list of one)
+    axis.spacing = GridSpacing::kList;
+    const std::vector<std::string> items = Split(rest, ',');
+    if (static_cast<std::int64_t>(items.size()) > kMaxGridPoints) {
+      Fail(spec, fmt::format("{} values: expected at most {}", items.size(), kMaxGridPoints));
+    }
+    axis.values.resize(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (!ParseNumber(items[i], axis.values[i])) {
+        Fail(spec, fmt::format("value {} = '{}' is not a number (decimal, within the range of a "
+                               "double)",
+                               i + 1, items[i]));
+      }
+    }
+  } else {
+    const std::vector<std::string> fields = Split(rest, ':');
+    const bool log = fields.size() == 4 && fields[3] == "log";
+    if (fields.size() != 3 && !log) {
+      Fail(spec, "expected name=lo:hi:n or name=lo:hi:n:log (fields separated by ':')");
+    }
+    axis.spacing = log ? GridSpacing::kLog : GridSpacing::kLinear;
+    if (!ParseNumber(fields[0], axis.lo)) {
+      Fail(spec, fmt::format("lo = '{}' is not a number", fields[0]));
+    }
+    if (!ParseNumber(fields[1], axis.hi)) {
+      Fail(spec, fmt::format("hi = '{}' is not a number", fields[1]));
+    }
+    const std::string& n = fields[2];
+    const std::from_chars_result r = std::from_chars(n.data(), n.data() + n.size(), axis.n);
+    if (n.empty() || r.ec != std::errc() || r.ptr != n.data() + n.size()) {
+      Fail(spec,
+           fmt::format("n = '{}' is not an integer number of points (1 to {})", n, kMaxGridPoints));
+    }
   }
-  const std::string lo = rest.substr(0, c1), hi = rest.substr(c1 + 1, c2 - c1 - 1),
-                    n = rest.substr(c2 + 1);
-  if (!ParseBound(lo, axis.lo)) Fail(spec, fmt::format("lo = '{}' is not a number", lo));
-  if (!ParseBound(hi, axis.hi)) Fail(spec, fmt::format("hi = '{}' is not a number", hi));
-  char* end = nullptr;
-  errno = 0;
-  const long long count = n.empty() ? 0 : std::strtoll(n.c_str(), &end, 10);
-  if (n.empty() || end != n.c_str() + n.size() || errno == ERANGE) {
-    Fail(spec, fmt::format("n = '{}' is not an integer number of points", n));
-  }
-  axis.n = count;
-  if (!std::isfinite(axis.lo) || !std::isfinite(axis.hi)) {
-    Fail(spec, "expected finite bounds lo and hi (not NaN or infinite)");
-  }
-  if (axis.n < 1) Fail(spec, fmt::format("n = {}: expected n >= 1 points", axis.n));
-  CheckAxis(axis, spec);
+  CheckAxis(axis, spec);  // quotes the spec as written
   return axis;
 }
 
 void Grid::Validate() const {
-  if (axes.empty() || axes.size() > 2) {
-    throw std::invalid_argument(fmt::format(
-        "--grid given {} times is invalid: expected 1 or 2 grids (name=lo:hi:n)", axes.size()));
+  if (axes.empty()) {
+    throw std::invalid_argument(
+        "grid is missing: expected at least one axis (name=lo:hi:n, name=lo:hi:n:log or "
+        "name=v1,v2,...)");
   }
-  for (const GridAxis& axis : axes) axis.Validate();
-  if (axes.size() == 2) {
-    if (axes[0].parameter == axes[1].parameter) {
-      throw std::invalid_argument(fmt::format(
-          "--grid {} is invalid: parameter {} already has a grid (--grid {}): "
-          "expected two different parameters",
-          axes[1].ToString(), SweepParameterName(axes[1].parameter), axes[0].ToString()));
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    axes[i].Validate();
+    for (std::size_t j = 0; j < i; ++j) {
+      if (axes[j].parameter == axes[i].parameter && axes[j].harmonic == axes[i].harmonic) {
+        throw std::invalid_argument(
+            fmt::format("grid {} is invalid: parameter {} already has a grid ({}): expected each "
+                        "parameter at most once",
+                        axes[i].ToString(), axes[i].name(), axes[j].ToString()));
+      }
     }
-    if (Has(SweepParameter::kalpha) && Has(SweepParameter::kphi0)) {
+  }
+  if (Has(SweepParameter::kalpha) && Has(SweepParameter::kphi0)) {
+    throw std::invalid_argument(
+        "grid alpha together with grid phi0 is invalid: a robot's mass ratio alpha "
+        "determines its impact phases phi0: expected a grid over only one of them");
+  }
+  if (Has(SweepParameter::kA) && Has(SweepParameter::ksin, 1)) {
+    throw std::invalid_argument(
+        "grid A together with grid b1 is invalid: A is the sine coefficient b1 of the "
+        "harmonic force: expected a grid over only one of them");
+  }
+  std::int64_t points = 1;
+  for (const GridAxis& axis : axes) {
+    if (points > kMaxGridPoints / axis.size()) {
+      std::string specs;
+      for (const GridAxis& a : axes) specs += (specs.empty() ? "" : " ") + a.ToString();
       throw std::invalid_argument(
-          "--grid alpha together with --grid phi0 is invalid: a robot's mass ratio alpha "
-          "determines its impact phases phi0: expected a grid over only one of them");
+          fmt::format("grid {} is invalid: more than {} points: expected at most {} points", specs,
+                      kMaxGridPoints, kMaxGridPoints));
     }
-    if (axes[0].n > kMaxPoints / axes[1].n) {
-      throw std::invalid_argument(fmt::format(
-          "--grid {} --grid {} is invalid: {} x {} points: expected at most 2^53 points",
-          axes[0].ToString(), axes[1].ToString(), axes[0].n, axes[1].n));
-    }
+    points *= axis.size();
   }
 }
 
 std::int64_t Grid::size() const {
   std::int64_t n = 1;
-  for (const GridAxis& axis : axes) n *= axis.n;
+  for (const GridAxis& axis : axes) n *= axis.size();
   return axes.empty() ? 0 : n;
 }
 
-bool Grid::Has(SweepParameter parameter) const {
+bool Grid::Has(SweepParameter parameter, int harmonic) const {
   for (const GridAxis& axis : axes) {
-    if (axis.parameter == parameter) return true;
+    if (axis.parameter == parameter && (harmonic == 0 || axis.harmonic == harmonic)) return true;
   }
   return false;
 }
 
 double Grid::Value(std::int64_t point, std::size_t axis) const {
-  if (axes.size() == 1) return axes[0].Value(point);
-  return axis == 0 ? axes[0].Value(point / axes[1].n) : axes[1].Value(point % axes[1].n);
+  std::int64_t stride = 1;
+  for (std::size_t i = axis + 1; i < axes.size(); ++i) stride *= axes[i].size();
+  return axes[axis].Value(point / stride % axes[axis].size());
 }
 
 }  // namespace capsubot

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "sweep/sweep_file.hpp"
 #include "sweep/sweep_rows.hpp"
@@ -21,14 +22,49 @@ constexpr int kMaxThreads = 1024;
 constexpr int kBlocksInFlightPerThread = 4;  // bounds memory: blocks computed ahead of the writer
 constexpr int kSolveBlockPoints = 2048;      // ~3 ms of Solve calls: cheap to hand over
 constexpr int kRobotBlockPoints = 32;
-constexpr int kOptimizeBlockPoints = 2;
+constexpr int kPhaseBlockPoints = 2;
+
+constexpr unsigned Bit(SweepParameter p) { return 1U << static_cast<unsigned>(p); }
+constexpr unsigned kForceParameters = Bit(SweepParameter::kA) | Bit(SweepParameter::kc) |
+                                      Bit(SweepParameter::kcos) | Bit(SweepParameter::ksin);
+constexpr unsigned kModelParameters =
+    Bit(SweepParameter::kT0) | Bit(SweepParameter::ke) | Bit(SweepParameter::kmargin) |
+    Bit(SweepParameter::kmargin_stroke) | Bit(SweepParameter::kstick_margin);
+
+// What each mode computes: its name, the problem it solves, the parameters a grid may vary
+// with it (the others are chosen by the optimiser or unused), points per block.
+struct ModeRule {
+  SweepOptimize mode;
+  const char* name;
+  const char* problem;
+  unsigned gridded;
+  int block_points;
+};
+
+constexpr ModeRule kModes[] = {
+    {SweepOptimize::kNone, "none", "the orbit of the given force",
+     kForceParameters | kModelParameters | Bit(SweepParameter::kphi0) | Bit(SweepParameter::kalpha),
+     kSolveBlockPoints},
+    {SweepOptimize::kPhase, "phi0", "problem P1, the best impact phase phi0",
+     kForceParameters | kModelParameters | Bit(SweepParameter::krho_max), kPhaseBlockPoints},
+    {SweepOptimize::kForcing, "forcing", "problem P2, the best A, c and phi0",
+     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+    {SweepOptimize::kFourier, "fourier", "problem P3, the best K-harmonic force",
+     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+};
+
+const ModeRule& RuleOf(SweepOptimize mode) {
+  for (const ModeRule& r : kModes) {
+    if (r.mode == mode) return r;
+  }
+  return kModes[0];  // unreachable: every enumerator has a row
+}
 
 // Points per block: big enough to amortise the hand-over, small enough to balance threads.
 std::int64_t BlockPoints(const SweepOptions& o, std::int64_t todo, int threads) {
   if (o.block_points > 0) return o.block_points;
-  const std::int64_t base = o.optimize_phi0                      ? kOptimizeBlockPoints
-                            : o.grid.Has(SweepParameter::kalpha) ? kRobotBlockPoints
-                                                                 : kSolveBlockPoints;
+  const std::int64_t base =
+      o.grid.Has(SweepParameter::kalpha) ? kRobotBlockPoints : RuleOf(o.optimize).block_points;
   const std::int64_t balanced = todo / (8 * static_cast<std::int64_t>(threads));
   return std::max<std::int64_t>(1, std::min(base, balanced));
 }
@@ -38,18 +74,94 @@ int ThreadCount(const SweepOptions& o) {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+// The names of the parameters in `set`, for messages.
+std::string ParameterList(unsigned set) {
+  std::string names;
+  for (unsigned p = 0; p < 32; ++p) {
+    if ((set & (1U << p)) == 0) continue;
+    const auto parameter = static_cast<SweepParameter>(p);
+    const bool indexed = parameter == SweepParameter::kcos || parameter == SweepParameter::ksin;
+    names += (names.empty() ? "" : ", ") + SweepParameterName(parameter) + (indexed ? "k" : "");
+  }
+  return names;
+}
+
+// Smallest and largest value of a parameter over the sweep: its axis, or `fixed`.
+std::pair<double, double> Extent(const Grid& grid, SweepParameter parameter, double fixed) {
+  for (const GridAxis& axis : grid.axes) {
+    if (axis.parameter == parameter) return {axis.Min(), axis.Max()};
+  }
+  return {fixed, fixed};
+}
+
+// The bound of P2 and P3 against T0 at the worst point of the grid (largest bound, smallest
+// T0): no point can then fail part-way.
+void CheckBoundAgainstT0(const SweepOptions& o, const SearchOptions& search) {
+  SearchOptions worst = search;
+  Params params = o.params;
+  params.T0 = Extent(o.grid, SweepParameter::kT0, o.params.T0).first;
+  worst.force_bound = Extent(o.grid, SweepParameter::kbound, search.force_bound).second;
+  worst.BoundFor(params);
+}
+
+// The message of a write error after which the partial file and its checkpoint are kept.
+std::string KeptMessage(const IoError& e, const std::string& output) {
+  return fmt::format("{}; the rows done are kept in {} with its checkpoint {} for a resume",
+                     e.what(), detail::SweepFile::PartialPath(output),
+                     detail::SweepFile::CheckpointPath(output));
+}
+
 }  // namespace
+
+std::int64_t ShardPointCount(const SweepOptions& o) {
+  const std::int64_t total = o.grid.size();
+  return o.shards <= 1 ? total : (total - o.shard + o.shards - 1) / o.shards;
+}
+
+std::int64_t ShardPoint(const SweepOptions& o, std::int64_t i) {
+  return o.shard + i * std::max(1, o.shards);
+}
+
+const char* SweepOptimizeName(SweepOptimize mode) { return RuleOf(mode).name; }
+
+std::vector<SweepOptimize> SweepOptimizeModes() {
+  std::vector<SweepOptimize> modes;
+  for (const ModeRule& r : kModes) {
+    if (r.mode != SweepOptimize::kNone) modes.push_back(r.mode);
+  }
+  return modes;
+}
+
+SweepOptimize ParseSweepOptimize(const std::string& name) {
+  std::string names;
+  for (SweepOptimize mode : SweepOptimizeModes()) {
+    if (name == SweepOptimizeName(mode)) return mode;
+    names += (names.empty() ? "" : ", ") + std::string(SweepOptimizeName(mode));
+  }
+  throw std::invalid_argument(
+      fmt::format("optimize = {} is invalid: expected one of {}", name, names));
+}
 
 void SweepOptions::Validate() const {
   grid.Validate();
   params.Validate();
   if (output.empty()) {
-    throw std::invalid_argument("--output is missing: expected the path of the CSV file to write");
+    throw std::invalid_argument("output is missing: expected the path of the CSV file to write");
   }
   if (threads < 0 || threads > kMaxThreads) {
     throw std::invalid_argument(
-        fmt::format("--threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)",
-                    threads, kMaxThreads));
+        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
+                    kMaxThreads));
+  }
+  if (shards < 1 || shard < 0 || shard >= shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
+  }
+  if (shards > 1 && grid.size() < shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: the grid has only {} points: expected at most as many shards "
+        "as points",
+        shard, shards, grid.size()));
   }
   if (block_points < 0) {
     throw std::invalid_argument(
@@ -59,23 +171,40 @@ void SweepOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
   }
+  for (const std::string& line : comments) {
+    if (line.find_first_of("\r\n") != std::string::npos) {
+      throw std::invalid_argument(
+          "comments are invalid: a comment line contains a line break: expected one line each");
+    }
+  }
+  const ModeRule& mode = RuleOf(optimize);
+  for (const GridAxis& axis : grid.axes) {
+    if ((mode.gridded & Bit(axis.parameter)) == 0) {
+      throw std::invalid_argument(
+          fmt::format("grid {} is invalid with optimize = {} ({}): expected a grid over {}",
+                      axis.ToString(), mode.name, mode.problem, ParameterList(mode.gridded)));
+    }
+  }
   if (grid.Has(SweepParameter::kA) && !forcing.harmonic()) {
     throw std::invalid_argument(
-        "--grid A is invalid with a Fourier force (--sin/--cos): expected the harmonic force "
-        "A sin(phi + phi0) + c, whose amplitude A the grid varies");
+        "grid A is invalid with a Fourier force: expected the harmonic force "
+        "A sin(phi + phi0) + c, whose amplitude A the grid varies (or a grid over b1)");
   }
-  if (optimize_phi0) {
-    if (grid.Has(SweepParameter::kphi0)) {
-      throw std::invalid_argument(
-          "--optimize phi0 with --grid phi0 is invalid: expected phi0 either optimised or "
-          "gridded, not both");
-    }
-    if (grid.Has(SweepParameter::kalpha)) {
-      throw std::invalid_argument(
-          "--optimize phi0 with --grid alpha is invalid: a robot's alpha fixes its orbits "
-          "(phi0 is solved for): expected one of them");
-    }
-    phase.Validate();
+  // A rho_max grid needs no stability switch: rho_max is the requirement (infinity: none).
+  switch (optimize) {
+    case SweepOptimize::kNone:
+      break;
+    case SweepOptimize::kPhase:
+      phase.Validate();
+      break;
+    case SweepOptimize::kForcing:
+      design.Validate();
+      CheckBoundAgainstT0(*this, design);
+      break;
+    case SweepOptimize::kFourier:
+      fourier.Validate();
+      CheckBoundAgainstT0(*this, fourier.harmonic);
+      break;
   }
 }
 
@@ -84,22 +213,41 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
   for (const GridAxis& axis : o.grid.axes) {
     // In robot mode the computed alpha has its own column: the grid's is the robot's.
     const bool robot = axis.parameter == SweepParameter::kalpha;
-    columns.emplace_back(robot ? "robot_alpha" : SweepParameterName(axis.parameter));
+    columns.emplace_back(robot ? "robot_alpha" : axis.name());
   }
   if (o.grid.Has(SweepParameter::kalpha)) {
     columns.emplace_back("orbits");
     columns.emplace_back("orbit");
+    columns.emplace_back("phi0");
   }
-  if (o.grid.Has(SweepParameter::kalpha) || o.optimize_phi0) columns.emplace_back("phi0");
+  switch (o.optimize) {
+    case SweepOptimize::kNone:
+      break;
+    case SweepOptimize::kPhase:
+      columns.emplace_back("phi0");
+      break;
+    case SweepOptimize::kForcing:
+      for (const char* name : {"A", "c", "phi0"}) columns.emplace_back(name);
+      break;
+    case SweepOptimize::kFourier:
+      columns.emplace_back("c");
+      for (const char* prefix : {"a", "b"}) {
+        for (int k = 1; k <= o.fourier.harmonics; ++k) {
+          columns.push_back(fmt::format("{}{}", prefix, k));
+        }
+      }
+      break;
+  }
   for (const char* name :
        {"phi1", "alpha", "u", "v_plus", "I", "v_mean", "x_min", "x_max", "valid", "violations"}) {
     columns.emplace_back(name);
   }
   if (o.stability) {
-    columns.emplace_back("spectral_radius");
-    columns.emplace_back("stable");
+    for (const char* name : {"spectral_radius", "lambda_re", "lambda_im", "stable", "loss"}) {
+      columns.emplace_back(name);
+    }
   }
-  if (o.optimize_phi0) columns.emplace_back("status");
+  if (o.optimize != SweepOptimize::kNone) columns.emplace_back("status");
   return columns;
 }
 
@@ -107,11 +255,12 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   using Clock = std::chrono::steady_clock;
   options.Validate();
   const auto start = Clock::now();
-  const std::int64_t total = options.grid.size();
+  // This run's points: every grid point, or those of one shard (ShardPoint).
+  const std::int64_t total = ShardPointCount(options);
   const int threads = ThreadCount(options);
 
   detail::SweepFile file(options.output, detail::SweepDescription(options),
-                         detail::SweepHeaderLine(options), options.resume,
+                         detail::SweepHeaderLines(options), options.resume,
                          options.checkpoint_seconds);
   SweepSummary summary;
   summary.threads = threads;
@@ -140,9 +289,15 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   std::int64_t next_claim = 0, next_write = 0;
   bool abort = false;
   std::exception_ptr error;
-  const auto fail = [&](std::exception_ptr e) {
+  // Where the first error came from: a point (deterministic: a resume would fail the same
+  // way) or the file (a write error: a resume can continue once it is mended).
+  enum class Origin { kOther, kPoint, kFile } origin = Origin::kOther;
+  const auto fail = [&](std::exception_ptr e, Origin from) {
     std::lock_guard<std::mutex> lock(mutex);
-    if (!error) error = e;
+    if (!error) {
+      error = e;
+      origin = from;
+    }
     abort = true;
     work_cv.notify_all();
     ready_cv.notify_all();
@@ -166,7 +321,7 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
         slot.rows.clear();
         std::int64_t rows = 0;
         for (std::int64_t p = block_begin(k); p < block_end(k); ++p) {
-          rows += writer.AppendPoint(p, slot.rows);
+          rows += writer.AppendPoint(ShardPoint(options, p), slot.rows);
         }
         {
           std::lock_guard<std::mutex> lock(mutex);
@@ -176,7 +331,7 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
         ready_cv.notify_all();
       }
     } catch (...) {
-      fail(std::current_exception());
+      fail(std::current_exception(), Origin::kPoint);
     }
   };
 
@@ -194,7 +349,12 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
         ready_cv.wait(lock, [&] { return abort || slot.ready; });
         if (abort) break;
       }
-      file.Append(slot.rows.data(), slot.rows.size(), block_end(k) - block_begin(k));
+      try {
+        file.Append(slot.rows.data(), slot.rows.size(), block_end(k) - block_begin(k));
+      } catch (const IoError&) {
+        fail(std::current_exception(), Origin::kFile);
+        break;
+      }
       summary.rows += slot.count;
       {
         std::lock_guard<std::mutex> lock(mutex);
@@ -212,12 +372,24 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
       }
     }
   } catch (...) {
-    fail(std::current_exception());
+    fail(std::current_exception(), Origin::kOther);
   }
   for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-
-  file.Commit();
+  if (error) {
+    if (origin == Origin::kPoint) file.Discard();  // no resume could get past that point
+    if (origin != Origin::kFile || file.direct()) std::rethrow_exception(error);
+    try {
+      std::rethrow_exception(error);
+    } catch (const IoError& e) {
+      throw SweepResumableError(KeptMessage(e, options.output));
+    }
+  }
+  try {
+    file.Commit();
+  } catch (const IoError& e) {
+    if (file.direct()) throw;
+    throw SweepResumableError(KeptMessage(e, options.output));
+  }
   summary.points = total;
   summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return summary;

@@ -5,45 +5,117 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "capsubot/io.hpp"
 
 namespace capsubot::detail {
 namespace {
 
-constexpr const char* kMagic = "capsubot sweep checkpoint 1";
+constexpr const char* kMagic = "capsubot sweep checkpoint 2";
+// A checkpoint is its description plus a few short lines: anything much longer is not one.
+constexpr std::size_t kCheckpointOverhead = 4096;
+constexpr std::size_t kChunkBytes = std::size_t{1} << 20;  // reads of the partial file
+
+std::uint32_t Crc32(std::uint32_t crc, const char* data, std::size_t size) {
+  while (size > 0) {  // zlib takes at most 4 GB per call
+    const auto n = static_cast<uInt>(std::min<std::size_t>(size, 1U << 30));
+    crc = static_cast<std::uint32_t>(crc32(crc, reinterpret_cast<const Bytef*>(data), n));
+    data += n;
+    size -= n;
+  }
+  return crc;
+}
+
+// The checkpoint's text: the record, then the CRC-32 of the record.
+std::string CheckpointText(std::int64_t points, std::int64_t bytes, std::uint32_t data_crc,
+                           const std::string& description) {
+  const std::string record = fmt::format("{}\npoints {}\nbytes {}\ndata_crc32 {:08x}\nsweep {}\n",
+                                         kMagic, points, bytes, data_crc, description);
+  return record + fmt::format("crc32 {:08x}\n", Crc32(0, record.data(), record.size()));
+}
 
 struct CheckpointRecord {
   bool exists = false;
   std::int64_t points = 0, bytes = 0;
+  std::uint32_t data_crc = 0;
   std::string description;
 };
 
-// Reads a checkpoint; a file that does not parse is reported (never silently restarted).
-CheckpointRecord ReadCheckpoint(const std::string& path) {
-  CheckpointRecord r;
-  std::ifstream in(path);
-  if (!in) return r;
-  r.exists = true;
-  std::string magic, points, bytes, sweep;
-  std::getline(in, magic);
-  in >> points >> r.points >> bytes >> r.bytes >> sweep;
-  in.get();  // the space after "sweep"
-  std::getline(in, r.description);
-  if (magic != kMagic || points != "points" || bytes != "bytes" || sweep != "sweep" || !in ||
-      r.points < 0 || r.bytes <= 0) {
-    throw IoError(fmt::format(
-        "--resume: checkpoint {} cannot be read (not a capsubot sweep checkpoint): delete it "
-        "to start the sweep again",
-        path));
+[[noreturn]] void Corrupted(const std::string& path, const std::string& why) {
+  throw IoError(fmt::format(
+      "resume: checkpoint {} is not a valid capsubot sweep checkpoint ({}): delete it and "
+      "its .partial file to start the sweep again",
+      path, why));
+}
+
+// The whole file, at most `limit` bytes; only a regular file is read (never a device).
+std::string ReadSmallFile(const std::string& path, std::size_t limit, bool& exists) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  exists = fd >= 0;
+  if (fd < 0) {
+    if (errno == ENOENT) return "";
+    Corrupted(path, std::strerror(errno));
   }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    Corrupted(path, "not a regular file");
+  }
+  if (static_cast<std::size_t>(st.st_size) > limit) {
+    ::close(fd);
+    Corrupted(path, fmt::format("{} bytes, more than the {} of a checkpoint of this sweep",
+                                static_cast<long long>(st.st_size), limit));
+  }
+  std::string text(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::read(fd, &text[done], text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  text.resize(done);
+  return text;
+}
+
+// Reads and checks a checkpoint: any damage is reported (never silently restarted).
+CheckpointRecord ReadCheckpoint(const std::string& path, std::size_t description_size) {
+  CheckpointRecord r;
+  const std::string text = ReadSmallFile(path, description_size + kCheckpointOverhead, r.exists);
+  if (!r.exists) return r;
+  // The last line, "crc32 xxxxxxxx\n", holds the CRC-32 of everything before it.
+  constexpr std::size_t kCrcLine = 15;
+  const std::size_t crc_line = text.size() < kCrcLine ? 0 : text.size() - kCrcLine;
+  unsigned stored = 0;
+  if (crc_line == 0 || text[crc_line - 1] != '\n' || text.compare(crc_line, 6, "crc32 ") != 0 ||
+      std::sscanf(text.c_str() + crc_line, "crc32 %8x", &stored) != 1) {
+    Corrupted(path, "no checksum line");
+  }
+  if (Crc32(0, text.data(), crc_line) != stored) Corrupted(path, "checksum mismatch");
+  const std::string head = fmt::format("{}\n", kMagic);
+  if (text.compare(0, head.size(), head) != 0) Corrupted(path, "unknown format");
+  long long points = -1, bytes = -1;
+  unsigned data_crc = 0;
+  int used = 0;
+  if (std::sscanf(text.c_str() + head.size(), "points %lld\nbytes %lld\ndata_crc32 %8x\nsweep %n",
+                  &points, &bytes, &data_crc, &used) != 3 ||
+      used == 0 || points < 0 || bytes <= 0) {
+    Corrupted(path, "malformed record");
+  }
+  const std::size_t start = head.size() + static_cast<std::size_t>(used);
+  r.points = points;
+  r.bytes = bytes;
+  r.data_crc = data_crc;
+  r.description = text.substr(start, crc_line - 1 - start);
   return r;
 }
 
@@ -51,7 +123,7 @@ CheckpointRecord ReadCheckpoint(const std::string& path) {
 
 void SweepFile::Fail(const std::string& what, const std::string& path) const {
   const std::string message =
-      fmt::format("--output {}: cannot {} {}: {}", output_, what, path, std::strerror(errno));
+      fmt::format("output {}: cannot {} {}: {}", output_, what, path, std::strerror(errno));
   // A file that was opened and then cannot take the rows (a full disk) is no bad input.
   if (what == "write" || what == "sync") throw WriteError(message);
   throw IoError(message);
@@ -60,7 +132,7 @@ void SweepFile::Fail(const std::string& what, const std::string& path) const {
 SweepFile::SweepFile(const std::string& output, const std::string& description,
                      const std::string& header, bool resume, double checkpoint_seconds)
     : output_(output),
-      target_(ResolveOutput(output, "--output")),
+      target_(ResolveOutput(output, "output")),
       partial_(PartialPath(target_.path)),
       checkpoint_(CheckpointPath(target_.path)),
       description_(description),
@@ -69,15 +141,17 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
   if (direct_) {
     if (resume) {
       throw std::invalid_argument(fmt::format(
-          "--resume with --output {} is invalid: expected a regular file to resume (standard "
+          "resume with output {} is invalid: expected a regular file to resume (standard "
           "output, pipes and devices are written in place, without checkpoint)",
           output_));
     }
+    written_ = output_ == "-" ? std::string("standard output") : output_;
     fd_ = output_ == "-" ? ::dup(STDOUT_FILENO) : ::open(output_.c_str(), O_WRONLY | O_CLOEXEC);
-    if (fd_ < 0) Fail("open", output_);
+    if (fd_ < 0) Fail("open", written_);
     Append(header.data(), header.size(), 0);
     return;
   }
+  written_ = partial_;
   fd_ = ::open(partial_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) Fail("create", partial_);
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -86,44 +160,71 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     fd_ = -1;
     if (err == EWOULDBLOCK) {
       throw IoError(
-          fmt::format("--output {}: another capsubot sweep is writing {}", output_, partial_));
+          fmt::format("output {}: another capsubot sweep is writing {}", output_, partial_));
     }
     errno = err;
     Fail("lock", partial_);
   }
-  CheckpointRecord record;
-  if (resume) record = ReadCheckpoint(checkpoint_);
+  try {
+    Open(header, resume);
+  } catch (...) {  // no destructor runs: release the file and its lock here
+    ::close(fd_);
+    fd_ = -1;
+    throw;
+  }
+  last_checkpoint_ = std::chrono::steady_clock::now();
+}
+
+void SweepFile::Open(const std::string& header, bool resume) {
+  const CheckpointRecord record =
+      resume ? ReadCheckpoint(checkpoint_, description_.size()) : CheckpointRecord{};
   if (record.exists) {
     if (record.description != description_) {
       throw std::invalid_argument(fmt::format(
-          "--resume: checkpoint {} is invalid for this sweep: it was written by a sweep with "
-          "other options or another capsubot version ({}): expected the same options as the "
-          "interrupted run, or no --resume to start again",
-          checkpoint_, record.description));
+          "resume: checkpoint {} is invalid for this sweep: it was written by a sweep with "
+          "other options or another capsubot version: expected the same options as the "
+          "interrupted run, or a run without resuming to start again",
+          checkpoint_));
     }
     struct stat st {};
     if (::fstat(fd_, &st) != 0) Fail("read", partial_);
     if (st.st_size < record.bytes) {
       throw IoError(fmt::format(
-          "--resume: {} holds {} bytes but its checkpoint {} says {}: delete both to start the "
+          "resume: {} holds {} bytes but its checkpoint {} says {}: delete both to start the "
           "sweep again",
           partial_, static_cast<long long>(st.st_size), checkpoint_, record.bytes));
+    }
+    // The rows the checkpoint vouches for must be those written: check their CRC-32.
+    std::vector<char> chunk(kChunkBytes);
+    std::uint32_t crc = 0;
+    for (std::int64_t at = 0; at < record.bytes;) {
+      const auto want = static_cast<std::size_t>(
+          std::min<std::int64_t>(record.bytes - at, static_cast<std::int64_t>(kChunkBytes)));
+      const ssize_t n = ::pread(fd_, chunk.data(), want, at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) Fail("read", partial_);
+      crc = Crc32(crc, chunk.data(), static_cast<std::size_t>(n));
+      at += n;
+    }
+    if (crc != record.data_crc) {
+      throw IoError(fmt::format(
+          "resume: {} does not hold the rows its checkpoint {} vouches for (checksum "
+          "mismatch: the file was changed or damaged): delete both to start the sweep again",
+          partial_, checkpoint_));
     }
     // Rows after the checkpoint may be partial: drop them, they are computed again.
     if (::ftruncate(fd_, record.bytes) != 0) Fail("truncate", partial_);
     points_ = record.points;
     bytes_ = record.bytes;
-  } else {
-    if (::ftruncate(fd_, 0) != 0) Fail("truncate", partial_);
-    points_ = 0;
-    bytes_ = 0;
+    crc_ = record.data_crc;
+  } else if (::ftruncate(fd_, 0) != 0) {
+    Fail("truncate", partial_);
   }
   if (::lseek(fd_, bytes_, SEEK_SET) < 0) Fail("seek in", partial_);
   if (!record.exists) {
     Append(header.data(), header.size(), 0);
     Checkpoint();
   }
-  last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
 SweepFile::~SweepFile() {
@@ -136,13 +237,14 @@ void SweepFile::Append(const char* data, std::size_t size, std::int64_t points) 
     const ssize_t n = ::write(fd_, data + done, size - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      Fail("write", partial_);
+      Fail("write", written_);
     }
     done += static_cast<std::size_t>(n);
   }
   bytes_ += static_cast<std::int64_t>(size);
   points_ += points;
   if (direct_) return;
+  crc_ = Crc32(crc_, data, size);
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_checkpoint_).count() >= checkpoint_seconds_) {
     Checkpoint();
@@ -153,8 +255,7 @@ void SweepFile::Checkpoint() {
   if (direct_) return;
   // Data first: the checkpoint never claims bytes that are not on disk.
   if (::fsync(fd_) != 0) Fail("sync", partial_);
-  const std::string text =
-      fmt::format("{}\npoints {}\nbytes {}\nsweep {}\n", kMagic, points_, bytes_, description_);
+  const std::string text = CheckpointText(points_, bytes_, crc_, description_);
   const std::string temp = checkpoint_ + ".tmp";
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) Fail("create", temp);
@@ -163,7 +264,11 @@ void SweepFile::Checkpoint() {
   const int err = errno;
   ::close(fd);
   errno = err;
-  if (!ok) Fail("write", temp);
+  if (!ok) {
+    std::remove(temp.c_str());
+    errno = err;
+    Fail("write", temp);
+  }
   if (std::rename(temp.c_str(), checkpoint_.c_str()) != 0) Fail("rename", temp);
   last_checkpoint_ = std::chrono::steady_clock::now();
 }
@@ -177,9 +282,20 @@ void SweepFile::Commit() {
   if (::fsync(fd_) != 0) Fail("sync", partial_);
   // Checkpoint first: killed in between, a partial file without checkpoint starts over.
   std::remove(checkpoint_.c_str());
-  if (std::rename(partial_.c_str(), target_.path.c_str()) != 0) Fail("rename", partial_);
+  if (std::rename(partial_.c_str(), target_.path.c_str()) != 0) {
+    const int err = errno;
+    Checkpoint();  // every point is done: a resume only renames
+    errno = err;
+    Fail("rename to the output", partial_);
+  }
   ::close(fd_);
   fd_ = -1;
+}
+
+void SweepFile::Discard() {
+  if (direct_) return;
+  std::remove(checkpoint_.c_str());
+  std::remove(partial_.c_str());
 }
 
 }  // namespace capsubot::detail

@@ -1,6 +1,7 @@
 #pragma once
 // The file a sweep is written to: `<output>.partial`, locked while in use, with a checkpoint
-// `<output>.checkpoint` recording how many grid points (and bytes) are complete, renamed to
+// `<output>.checkpoint` recording how many grid points (and bytes) are complete, a CRC-32 of
+// those bytes, the sweep's description and a CRC-32 of the checkpoint itself; renamed to
 // `<output>` when the sweep is done. An output that is "-" (stdout) or not a regular file
 // (/dev/stdout, a pipe) is written in place, without partial file or checkpoint; a symlink
 // is followed and its target replaced (as AtomicFile: capsubot::ResolveOutput).
@@ -17,10 +18,11 @@ namespace capsubot::detail {
 class SweepFile {
  public:
   /// Opens (and locks) the partial file. With `resume` and a checkpoint whose description is
-  /// `description`, continues after its last complete point; otherwise starts a new file with
-  /// `header`. Throws std::invalid_argument for a checkpoint of another sweep, IoError for a
-  /// file that cannot be used (including one locked by another running sweep). `resume` with
-  /// an output written in place is a std::invalid_argument.
+  /// `description`, continues after its last complete point (after checking both checksums);
+  /// otherwise starts a new file with `header`. Throws std::invalid_argument for a checkpoint
+  /// of another sweep or `resume` with an output written in place, IoError for a file that
+  /// cannot be used (one locked by another running sweep, a corrupted checkpoint or partial
+  /// file, a checkpoint that is not a small regular file).
   SweepFile(const std::string& output, const std::string& description, const std::string& header,
             bool resume, double checkpoint_seconds);
   ~SweepFile();  ///< closes the partial file, which stays for a later resume
@@ -28,28 +30,36 @@ class SweepFile {
   SweepFile& operator=(const SweepFile&) = delete;
 
   std::int64_t points_done() const { return points_; }  ///< complete grid points in the file
+  bool direct() const { return direct_; }               ///< written in place (no resume)
 
   /// Appends the rows of `points` complete grid points; checkpoints when the last
   /// checkpoint is older than checkpoint_seconds. Throws IoError.
   void Append(const char* data, std::size_t size, std::int64_t points);
   /// Checkpoint now: fsync the partial file, then write and fsync the checkpoint.
   void Checkpoint();
-  /// fsync, rename the partial file to the output, remove the checkpoint. Throws IoError.
+  /// fsync, rename the partial file to the output, remove the checkpoint. Throws IoError
+  /// (the partial file then stays with a checkpoint of every point: a resume completes it).
   void Commit();
+  /// Removes the partial file and the checkpoint (a sweep that no resume could complete).
+  void Discard();
 
   static std::string PartialPath(const std::string& output) { return output + ".partial"; }
   static std::string CheckpointPath(const std::string& output) { return output + ".checkpoint"; }
 
  private:
   [[noreturn]] void Fail(const std::string& what, const std::string& path) const;
+  // Resumes from the checkpoint (checked) or starts the file with `header`.
+  void Open(const std::string& header, bool resume);
 
   std::string output_;
   OutputTarget target_;  // the file renamed over at the end (symlinks followed)
   std::string partial_, checkpoint_, description_;
+  std::string written_;  // the file written: partial_, or the output itself when direct
   int fd_ = -1;
   bool direct_ = false;      // written in place: no partial file, no checkpoint
   std::int64_t points_ = 0;  // complete points written
   std::int64_t bytes_ = 0;   // bytes written
+  std::uint32_t crc_ = 0;    // CRC-32 of those bytes
   double checkpoint_seconds_ = 0.5;
   std::chrono::steady_clock::time_point last_checkpoint_;
 };

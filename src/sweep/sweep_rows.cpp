@@ -1,10 +1,11 @@
 #include "sweep/sweep_rows.hpp"
 
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
 
+#include "capsubot/io.hpp"
 #include "capsubot/optimize_phase.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
@@ -13,7 +14,7 @@ namespace capsubot::detail {
 namespace {
 
 // Bumped whenever the bytes of a sweep change for the same options (invalidates checkpoints).
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
 bool RobotMode(const SweepOptions& o) { return o.grid.Has(SweepParameter::kalpha); }
 
@@ -22,102 +23,185 @@ void Append(RowBuffer& out, const char* text) { out.append(fmt::string_view(text
 // Exact text of a double for the description (hexadecimal: no rounding at all).
 std::string Hex(double value) { return fmt::format("{:a}", value); }
 
-}  // namespace
-
-void AppendNumber(RowBuffer& out, double value) {
-  if (std::isnan(value)) return;
-  // std::to_chars with a precision formats exactly as printf("%.17g") (and so as fmt's
-  // "{:.17g}" in FormatNumber), about twice as fast as fmt 9 here (measured).
-  char text[32];
-  const std::to_chars_result r =
-      std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
-  out.append(text, r.ptr);
+// Harmonics of the swept force: the given force's, or more when a_k or b_k is gridded.
+int SweepHarmonics(const SweepOptions& o) {
+  int K = std::max(1, o.forcing.harmonics());
+  for (const GridAxis& axis : o.grid.axes) K = std::max(K, axis.harmonic);
+  return K;
 }
 
-std::string SweepHeaderLine(const SweepOptions& options) {
-  std::string line;
+// The shared optimiser options (OptimizeOptions).
+std::string GoalDescription(const OptimizeOptions& g) {
+  return fmt::format(" rho_max={} max_time={} active_tol={}", Hex(g.rho_max), Hex(g.max_time),
+                     Hex(g.active_tol));
+}
+
+std::string EffortDescription(const SearchEffort& s) {
+  return fmt::format(" global={} starts={} rel_tol={} local_evaluations={} global_evaluations={}",
+                     s.global_algorithm, s.starts, Hex(s.rel_tol), s.local_evaluations,
+                     s.global_evaluations);
+}
+
+std::string SearchDescription(const SearchOptions& s) {
+  return fmt::format(" bound={} local={} seed={}", Hex(s.force_bound), s.local_algorithm, s.seed) +
+         EffortDescription(s) + GoalDescription(s);
+}
+
+std::string DesignDescription(const ForcingDesignOptions& p) {
+  return SearchDescription(p) + fmt::format(" grid_points={} hops={} phase_exact_evaluations={}",
+                                            p.grid, p.hops, p.phase_exact_evaluations);
+}
+
+}  // namespace
+
+std::string ShardLine(int shard, int shards, std::int64_t points) {
+  return fmt::format("# shard {}/{} of {} points\n", shard, shards, points);
+}
+
+void AppendNumber(RowBuffer& out, double value) {
+  const std::size_t size = out.size();
+  out.try_resize(size + kMaxNumberChars);  // grows the capacity once, then never allocates
+  char* end = WriteNumber(out.data() + size, value);
+  out.try_resize(static_cast<std::size_t>(end - out.data()));
+}
+
+std::string SweepHeaderLines(const SweepOptions& options) {
+  std::string text;
+  for (const std::string& line : options.comments) text += "# " + line + '\n';
+  if (options.shards > 1) text += ShardLine(options.shard, options.shards, options.grid.size());
+  std::string header;
   for (const std::string& name : SweepColumns(options)) {
-    line += (line.empty() ? "" : ",") + name;
+    header += (header.empty() ? "" : ",") + name;
   }
-  return line + '\n';
+  return text + header + '\n';
 }
 
 std::string SweepDescription(const SweepOptions& o) {
-  std::string d = fmt::format("format={} columns={}", kFormatVersion, SweepHeaderLine(o));
-  d.pop_back();  // the header's '\n'
+  std::string lines = SweepHeaderLines(o);
+  std::replace(lines.begin(), lines.end(), '\n', '\x1f');  // the description is one line
+  std::string d = fmt::format("format={} header={}", kFormatVersion, lines);
   for (const GridAxis& axis : o.grid.axes) {
-    d += fmt::format(" grid={}:{}:{}:{}", SweepParameterName(axis.parameter), Hex(axis.lo),
-                     Hex(axis.hi), axis.n);
+    d += fmt::format(" grid={}:{}", axis.name(), static_cast<int>(axis.spacing));
+    if (axis.spacing == GridSpacing::kList) {
+      for (double v : axis.values) d += ":" + Hex(v);
+    } else {
+      d += fmt::format(":{}:{}:{}", Hex(axis.lo), Hex(axis.hi), axis.n);
+    }
   }
   const Forcing& f = o.forcing;
   d += fmt::format(" c={} phi0={} K={}", Hex(f.mean()), Hex(f.phi0()), f.harmonics());
-  for (int k = 1; k <= f.harmonics(); ++k)
+  for (int k = 1; k <= f.harmonics(); ++k) {
     d += fmt::format(" a{}={} b{}={}", k, Hex(f.a(k)), k, Hex(f.b(k)));
+  }
   d += fmt::format(
-      " T0={} e={} margin={} margin_stroke={} stick_margin={} stability={} "
-      "optimize_phi0={}",
+      " T0={} e={} margin={} margin_stroke={} stick_margin={} stability={} optimize={}",
       Hex(o.params.T0), Hex(o.params.e), Hex(o.params.margin), Hex(o.params.margin_stroke),
-      Hex(o.params.stick_margin), o.stability, o.optimize_phi0);
-  if (o.optimize_phi0) {
-    const PhaseOptions& p = o.phase;
-    d += fmt::format(" scan_points={} phase_tol={} rho_max={}", p.scan_points, Hex(p.phase_tol),
-                     Hex(p.rho_max));
+      Hex(o.params.stick_margin), o.stability, SweepOptimizeName(o.optimize));
+  switch (o.optimize) {
+    case SweepOptimize::kNone:
+      break;
+    case SweepOptimize::kPhase: {
+      const PhaseOptions& p = o.phase;
+      d += fmt::format(" scan_points={} phase_tol={}", p.scan_points, Hex(p.phase_tol)) +
+           GoalDescription(p);
+      break;
+    }
+    case SweepOptimize::kForcing:
+      d += DesignDescription(o.design);
+      break;
+    case SweepOptimize::kFourier:
+      d += DesignDescription(o.fourier.harmonic) + EffortDescription(o.fourier.search) +
+           fmt::format(" harmonics={}", o.fourier.harmonics);
+      break;
   }
   return d;
 }
 
-SweepRowWriter::SweepRowWriter(const SweepOptions& options)
-    : options_(options), forcing_(options.forcing), params_(options.params) {
-  const Grid& g = options.grid;
-  rebuild_force_ = g.Has(SweepParameter::kA) || g.Has(SweepParameter::kc);
-  const Forcing& f = options.forcing;
+SweepPoint::SweepPoint(const SweepOptions& o)
+    : params(o.params), phase(o.phase), design(o.design), fourier(o.fourier) {
+  const Forcing& f = o.forcing;
+  const int K = SweepHarmonics(o);
+  a.assign(static_cast<std::size_t>(K), 0.0);
+  b.assign(static_cast<std::size_t>(K), 0.0);
   for (int k = 1; k <= f.harmonics(); ++k) {
-    a_.push_back(f.a(k));
-    b_.push_back(f.b(k));
+    a[static_cast<std::size_t>(k - 1)] = f.a(k);
+    b[static_cast<std::size_t>(k - 1)] = f.b(k);
   }
-  if (a_.empty()) {  // the zero-amplitude harmonic force still has a slot for A
-    a_.push_back(0.0);
-    b_.push_back(0.0);
+  c = f.mean();
+  phi0 = f.phi0();
+}
+
+void SweepPoint::Set(const GridAxis& axis, double value) {
+  switch (axis.parameter) {
+    case SweepParameter::kA:
+      b[0] = value;
+      break;
+    case SweepParameter::kc:
+      c = value;
+      break;
+    case SweepParameter::kphi0:
+      phi0 = value;
+      break;
+    case SweepParameter::kT0:
+      params.T0 = value;
+      break;
+    case SweepParameter::ke:
+      params.e = value;
+      break;
+    case SweepParameter::kmargin:
+      params.margin = value;
+      break;
+    case SweepParameter::kmargin_stroke:
+      params.margin_stroke = value;
+      break;
+    case SweepParameter::kstick_margin:
+      params.stick_margin = value;
+      break;
+    case SweepParameter::kalpha:
+      alpha = value;
+      break;
+    case SweepParameter::kcos:
+      a[static_cast<std::size_t>(axis.harmonic - 1)] = value;
+      break;
+    case SweepParameter::ksin:
+      b[static_cast<std::size_t>(axis.harmonic - 1)] = value;
+      break;
+    case SweepParameter::kbound:
+      design.force_bound = value;
+      fourier.harmonic.force_bound = value;
+      break;
+    case SweepParameter::krho_max:
+      phase.rho_max = value;
+      design.rho_max = value;
+      fourier.harmonic.rho_max = value;
+      break;
   }
-  c_ = f.mean();
-  phi0_ = f.phi0();
+}
+
+SweepRowWriter::SweepRowWriter(const SweepOptions& options)
+    : options_(options), point_(options), forcing_(options.forcing) {
+  for (const GridAxis& axis : options.grid.axes) {
+    const SweepParameter p = axis.parameter;
+    rebuild_force_ = rebuild_force_ || p == SweepParameter::kA || p == SweepParameter::kc ||
+                     p == SweepParameter::kcos || p == SweepParameter::ksin;
+  }
+  if (rebuild_force_) forcing_ = Forcing::Fourier(point_.c, point_.a, point_.b, point_.phi0);
+  // robot mode, no orbit: orbits = 0, then an empty cell for every further column
+  const std::size_t cells = SweepColumns(options).size() - options.grid.axes.size() - 1;
+  no_orbit_cells_ = "0" + std::string(cells, ',') + "\n";
 }
 
 void SweepRowWriter::SetPoint(std::int64_t point) {
   const Grid& g = options_.grid;
-  double phi0 = phi0_;
   bool phase_changed = false;
   for (std::size_t i = 0; i < g.axes.size(); ++i) {
-    const double value = g.Value(point, i);
-    switch (g.axes[i].parameter) {
-      case SweepParameter::kA:
-        b_[0] = value;
-        break;
-      case SweepParameter::kc:
-        c_ = value;
-        break;
-      case SweepParameter::kphi0:
-        phi0 = value;
-        phase_changed = true;
-        break;
-      case SweepParameter::kT0:
-        params_.T0 = value;
-        break;
-      case SweepParameter::ke:
-        params_.e = value;
-        break;
-      case SweepParameter::kmargin:
-        params_.margin = value;
-        break;
-      case SweepParameter::kalpha:
-        alpha_ = value;
-        break;
-    }
+    point_.Set(g.axes[i], g.Value(point, i));
+    phase_changed = phase_changed || g.axes[i].parameter == SweepParameter::kphi0;
   }
   if (rebuild_force_) {
-    forcing_ = Forcing::Fourier(c_, a_, b_, phi0);  // no allocation: the vectors are ours
+    forcing_ = Forcing::Fourier(point_.c, point_.a, point_.b, point_.phi0);  // no allocation
   } else if (phase_changed) {
-    forcing_ = options_.forcing.WithPhase(phi0);
+    forcing_ = options_.forcing.WithPhase(point_.phi0);
   }
 }
 
@@ -137,21 +221,52 @@ void SweepRowWriter::AppendSolution(const Solution& s, RowBuffer& out) const {
     Append(out, ConditionName(static_cast<Condition>(i)));
     first = false;
   }
-  if (options_.stability) {
+  if (!options_.stability) return;
+  // spectral_radius, lambda_re, lambda_im, stable, loss (empty cells without orbit)
+  const Stability st = o.ok() ? ComputeStability(o) : Stability{};
+  if (!st.computed) {
+    Append(out, ",,,,,");
+    return;
+  }
+  for (double value : {st.spectral_radius, st.multipliers[0].real(), st.multipliers[0].imag()}) {
     out.push_back(',');
-    if (o.ok()) {
-      const Stability st = ComputeStability(o);
-      AppendNumber(out, st.computed ? st.spectral_radius : Stability::kNaN);
-      out.push_back(',');
-      if (st.computed) out.push_back(st.stable ? '1' : '0');
-    } else {
-      out.push_back(',');
+    AppendNumber(out, value);
+  }
+  out.push_back(',');
+  out.push_back(st.stable ? '1' : '0');
+  out.push_back(',');
+  Append(out, StabilityLossName(ClassifyLoss(st)));
+}
+
+// The optimised variables of the mode: phi0 (P1), A, c, phi0 (P2), c, a1..aK, b1..bK (P3).
+void SweepRowWriter::AppendVariables(const Forcing& f, bool exists, RowBuffer& out) const {
+  const auto cell = [&](double value) {
+    AppendNumber(out, exists ? value : Orbit::kNaN);
+    out.push_back(',');
+  };
+  switch (options_.optimize) {
+    case SweepOptimize::kNone:
+      break;
+    case SweepOptimize::kPhase:
+      cell(f.phi0());
+      break;
+    case SweepOptimize::kForcing:
+      cell(f.amplitude());
+      cell(f.mean());
+      cell(f.phi0());
+      break;
+    case SweepOptimize::kFourier: {
+      const Forcing g = f.InImpactFrame();
+      const int K = options_.fourier.harmonics;
+      cell(g.mean());
+      for (int k = 1; k <= K; ++k) cell(k <= g.harmonics() ? g.a(k) : 0.0);
+      for (int k = 1; k <= K; ++k) cell(k <= g.harmonics() ? g.b(k) : 0.0);
+      break;
     }
   }
 }
 
-int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
-  SetPoint(point);
+int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
   const Grid& g = options_.grid;
   const auto append_axes = [&] {
     for (std::size_t i = 0; i < g.axes.size(); ++i) {
@@ -159,47 +274,64 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
       out.push_back(',');
     }
   };
-  if (RobotMode(options_)) {
-    bool complete = true;
-    const std::vector<Solution> orbits = FindRobotOrbits(forcing_, params_, alpha_, &complete);
-    if (!complete) {  // never write a row set that may miss orbits
-      throw std::runtime_error(fmt::format(
-          "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "
-          "orbits may be missing",
-          point, alpha_));
-    }
-    if (orbits.empty()) {
-      append_axes();
-      // orbits = 0, then empty cells: orbit, phi0, 8 numbers, valid, violations [, 2]
-      Append(out, options_.stability ? "0,,,,,,,,,,,,,,\n" : "0,,,,,,,,,,,,\n");
-      return 1;
-    }
-    int index = 0;
-    for (const Solution& s : orbits) {
-      append_axes();
-      fmt::format_to(fmt::appender(out), "{},{},", orbits.size(), ++index);
-      AppendNumber(out, s.orbit.forcing.phi0());
-      out.push_back(',');
-      AppendSolution(s, out);
-      out.push_back('\n');
-    }
-    return index;
+  bool complete = true;
+  const std::vector<Solution> orbits =
+      FindRobotOrbits(forcing_, point_.params, point_.alpha, &complete);
+  if (!complete) {  // never write a row set that may miss orbits
+    throw std::runtime_error(fmt::format(
+        "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "
+        "orbits may be missing",
+        point, point_.alpha));
   }
-  append_axes();
-  if (options_.optimize_phi0) {
-    const OptimizeResult r = OptimizePhase(forcing_, params_, options_.phase);
-    const Solution& s = r.solution;
-    AppendNumber(out, s.orbit.ok() || s.orbit.status != OrbitStatus::kNotRun
-                          ? s.orbit.forcing.phi0()
-                          : Orbit::kNaN);
+  if (orbits.empty()) {
+    append_axes();
+    Append(out, no_orbit_cells_.c_str());
+    return 1;
+  }
+  int index = 0;
+  for (const Solution& s : orbits) {
+    append_axes();
+    fmt::format_to(fmt::appender(out), "{},{},", orbits.size(), ++index);
+    AppendNumber(out, s.orbit.forcing.phi0());
     out.push_back(',');
     AppendSolution(s, out);
+    out.push_back('\n');
+  }
+  return index;
+}
+
+int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
+  SetPoint(point);
+  if (RobotMode(options_)) return AppendRobotPoint(point, out);
+  const Grid& g = options_.grid;
+  for (std::size_t i = 0; i < g.axes.size(); ++i) {
+    AppendNumber(out, g.Value(point, i));
     out.push_back(',');
-    Append(out, OptimizeStatusName(r.status));
+  }
+  if (options_.optimize == SweepOptimize::kNone) {
+    AppendSolution(Solve(forcing_, point_.params), out);
     out.push_back('\n');
     return 1;
   }
-  AppendSolution(Solve(forcing_, params_), out);
+  OptimizeResult r;
+  switch (options_.optimize) {
+    case SweepOptimize::kPhase:
+      r = OptimizePhase(forcing_, point_.params, point_.phase);
+      break;
+    case SweepOptimize::kForcing:
+      r = OptimizeForcing(point_.params, point_.design);
+      break;
+    case SweepOptimize::kFourier:
+      r = OptimizeFourier(point_.params, point_.fourier);
+      break;
+    case SweepOptimize::kNone:  // handled above
+      break;
+  }
+  const Solution& s = r.solution;
+  AppendVariables(s.orbit.forcing, s.orbit.status != OrbitStatus::kNotRun, out);
+  AppendSolution(s, out);
+  out.push_back(',');
+  Append(out, OptimizeStatusName(r.status));
   out.push_back('\n');
   return 1;
 }

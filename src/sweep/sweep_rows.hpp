@@ -15,16 +15,37 @@ namespace capsubot::detail {
 
 using RowBuffer = fmt::memory_buffer;
 
-/// Appends `value` with 17 significant digits, byte-identical to capsubot::FormatNumber
-/// (nothing for NaN: an empty cell).
+/// Appends `value` as capsubot::WriteNumber writes it (nothing for NaN: an empty cell).
 void AppendNumber(RowBuffer& out, double value);
 
-/// Appends the header line (column names joined by ',', then '\n').
-std::string SweepHeaderLine(const SweepOptions& options);
+/// The line that marks a shard's file: "# shard K/N of T points\n".
+std::string ShardLine(int shard, int shards, std::int64_t points);
 
-/// One line that determines the sweep's bytes (format version, columns, grid, force,
-/// parameters, modes), stored in the checkpoint: a resume must match it exactly.
+/// The comment lines (with the shard line of a shard) and the header line, as the file begins.
+std::string SweepHeaderLines(const SweepOptions& options);
+
+/// One line that determines the sweep's bytes (format version, comments, columns, grid,
+/// force, parameters, mode and its options, numbers in hexadecimal), stored in the
+/// checkpoint: a resume must match it exactly.
 std::string SweepDescription(const SweepOptions& options);
+
+/// The values a sweep point sets: the force's coefficients, the model parameters, the robot's
+/// mass ratio and the optimisers' options.
+struct SweepPoint {
+  std::vector<double> a, b;  ///< Fourier coefficients of the force (A lives in b[0])
+  double c = 0.0, phi0 = 0.0;
+  Params params;
+  double alpha = 0.0;
+  PhaseOptions phase;
+  ForcingDesignOptions design;
+  FourierOptions fourier;
+
+  /// The sweep's fixed values (the grid not applied yet).
+  explicit SweepPoint(const SweepOptions& options);
+  /// Sets the value of one gridded parameter (the one place that maps a SweepParameter to
+  /// what it changes).
+  void Set(const GridAxis& axis, double value);
+};
 
 /// Formats the rows of grid points. One per worker thread (holds scratch space).
 class SweepRowWriter {
@@ -36,14 +57,14 @@ class SweepRowWriter {
  private:
   void SetPoint(std::int64_t point);
   void AppendSolution(const Solution& s, RowBuffer& out) const;
+  void AppendVariables(const Forcing& f, bool exists, RowBuffer& out) const;
+  int AppendRobotPoint(std::int64_t point, RowBuffer& out);
 
   const SweepOptions& options_;
-  bool rebuild_force_ = false;  // an A or c axis: the force is rebuilt at each point
-  std::vector<double> a_, b_;   // its Fourier coefficients (A lives in b_[0])
-  double c_ = 0.0, phi0_ = 0.0;
+  bool rebuild_force_ = false;  // a force coefficient is gridded: rebuilt at each point
+  SweepPoint point_;
   Forcing forcing_;
-  Params params_;
-  double alpha_ = 0.0;
+  std::string no_orbit_cells_;  // robot mode: the cells after the axes of a point without orbit
 };
 
 }  // namespace capsubot::detail

@@ -1,19 +1,23 @@
-// The sweep's hot path (1,000,000 phi0 points, solve + exact validity + CSV row, in
-// at most 2 s wall on 2 cores, near-linear scaling from 1 to 2 threads).
+// The sweep's hot path: 1,000,000 phi0 points, solve + exact validity + CSV row (target:
+// 0.45 s wall on 2 threads, byte-identical for any thread count).
 //
 //   capsubot_bench --benchmark_filter=Sweep
 // BM_SweepPhaseMillion/threads: the whole sweep to a file in /tmp (items/s = grid points per
-// second); BM_SweepSolveOnly: the Solve calls of the same grid, one thread (the rest of the
-// sweep's time is formatting and writing).
+// second); BM_SweepSolveOnly: the Solve calls of the same grid, one thread;
+// BM_SweepRowsOnly: Solve + the row into a reused buffer (SweepRowWriter), one thread, no file;
+// BM_SweepFormat/0 and /1: the 9 numbers of a row formatted as the sweep does (shortest
+// round-trip) and with 17 significant digits (the former format), for comparison.
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <string>
 
 #include "capsubot/sweep.hpp"
 #include "capsubot/validity.hpp"
+#include "sweep/sweep_rows.hpp"
 
 namespace {
 
@@ -46,5 +50,46 @@ void BM_SweepSolveOnly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_SweepSolveOnly);
+
+void BM_SweepRowsOnly(benchmark::State& state) {
+  const capsubot::SweepOptions o = PhaseSweep(1000000);
+  capsubot::detail::SweepRowWriter writer(o);
+  capsubot::detail::RowBuffer buffer;
+  std::int64_t point = 0;
+  for (auto _ : state) {
+    buffer.clear();
+    writer.AppendPoint(point, buffer);
+    benchmark::DoNotOptimize(buffer.data());
+    point = (point + 7919) % 1000000;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SweepRowsOnly);
+
+void BM_SweepFormat(benchmark::State& state) {
+  const capsubot::SweepOptions o = PhaseSweep(1000000);
+  const capsubot::Solution s =
+      capsubot::Solve(o.forcing.WithPhase(-3.0), o.params);  // every cell of the row exists
+  const double cells[] = {-3.0,      s.orbit.phi1,   s.orbit.alpha,    s.orbit.u, s.orbit.v_plus,
+                          s.orbit.I, s.orbit.v_mean, s.validity.x_min, s.orbit.T0};
+  capsubot::detail::RowBuffer buffer;
+  const bool shortest = state.range(0) == 0;
+  for (auto _ : state) {
+    buffer.clear();
+    for (double x : cells) {
+      if (shortest) {
+        capsubot::detail::AppendNumber(buffer, x);
+      } else {
+        char text[32];
+        const auto r = std::to_chars(text, text + sizeof text, x, std::chars_format::general, 17);
+        buffer.append(text, r.ptr);
+      }
+      buffer.push_back(',');
+    }
+    benchmark::DoNotOptimize(buffer.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SweepFormat)->Arg(0)->Arg(1);
 
 }  // namespace

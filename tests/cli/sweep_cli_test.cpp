@@ -1,7 +1,10 @@
 // `capsubot sweep` as a user runs it: a sweep killed mid-way (SIGKILL or SIGINT, the real
 // process) leaves no CSV under the final name and `--resume` completes it to the same bytes
 // as an uninterrupted run; bad command lines exit with status 2 and a message naming the
-// option, its value and the rule.
+// option, its value and the rule; the provenance line; damaged checkpoints; write errors.
+// `--shard K/N` and `capsubot merge`: N shards merged give the bytes of the single run
+// (plain, robot mode with several rows a point, an optimisation); merge refuses shards of
+// another run, a missing, duplicated or truncated shard, extra rows.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -160,9 +163,10 @@ TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.output, "");
   const std::string csv = ReadFile(dir.File("a.csv"));
-  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+  const std::size_t header = csv.find('\n') + 1;  // after the provenance comment
+  EXPECT_EQ(csv.substr(header, csv.find('\n', header) - header),
             "phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
 }
 
 TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
@@ -175,7 +179,7 @@ TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
   EXPECT_FALSE(Exists("-.partial"));
   const Outcome r = RunCli(args + " -o - --resume", dir.File("log2"));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.output.find("--resume with --output - is invalid"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--resume with output - is invalid"), std::string::npos) << r.output;
 }
 
 struct BadCommand {
@@ -191,7 +195,11 @@ TEST_P(SweepCliRejects, WithStatus2AndAMessage) {
       RunCli(std::string("sweep ") + GetParam().args + " -o " + dir.File("x.csv"), dir.File("log"));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  // nothing is left behind: no output, no partial file, no checkpoint
   EXPECT_FALSE(Exists(dir.File("x.csv")));
+  EXPECT_FALSE(Exists(dir.File("x.csv.partial")));
+  EXPECT_FALSE(Exists(dir.File("x.csv.checkpoint")));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -204,17 +212,286 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"--grid phi0=0:1:3 --grid phi0=1:2:3 --A 0.5 --c 0.5",
                    "parameter phi0 already has a grid"},
         BadCommand{"--grid alpha=0.1:0.5:3 --grid phi0=0:1:3 --A 0.5 --c 0.5",
-                   "--grid alpha together with --grid phi0 is invalid"},
+                   "--grid alpha together with grid phi0 is invalid"},
         BadCommand{"--grid phi0=nan:1:3 --A 0.5 --c 0.5", "expected finite bounds"},
         BadCommand{"--grid c=0:1:3 --A 0.5", "option --phi0 is missing"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5", "option --c is missing"},
         BadCommand{"--grid A=0:1:3 --c 0.5 --optimize phi1",
-                   "--optimize phi1 is invalid: expected phi0"},
+                   "--optimize = phi1 is invalid: expected one of phi0, forcing, fourier"},
+        BadCommand{"--grid A=0:1:3 --A 5 --c 0.5 --phi0 1",
+                   "--A = 5 is invalid with --grid A=0:1:3: expected the value from only one"},
+        BadCommand{"--grid T0=0.1,0.2 --A 0.5 --c 0.1 --optimize forcing",
+                   "--A is invalid with --optimize forcing: expected no force option"},
+        BadCommand{"--grid T0=0.1,0.2 --optimize forcing --bound 0.15",
+                   "force_bound = 0.15 is invalid"},
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --grid e=0.5:1:1000000 --grid "
+                   "margin=0:0.1:1001",
+                   "--grid phi0=0:1:3 e=0.5:1:1000000 margin=0:0.1:1001 is invalid: more than "
+                   "1000000000 points"},
+        BadCommand{"--grid phi0=-1.7e308:1.7e308:5 --A 0.5 --c 0.5",
+                   "capsubot sweep: error: --grid phi0=-1.7e308:1.7e308:5 is invalid: the "
+                   "bounds are too large for 5 points"},
+        BadCommand{"--grid A=0:1e308:10 --c 0.5 --phi0 1",
+                   "capsubot sweep: error: --grid A=0:1e308:10 is invalid: the bounds are too "
+                   "large for 10 points"},
+        BadCommand{"--grid c=0:1:3:log --A 0.5 --phi0 1",
+                   "--grid c=0:1:3:log is invalid: expected lo > 0 and hi > 0 for a log grid"},
         BadCommand{"--grid A=0:1:3 --c 0.5 --phi0 1 --optimize phi0",
                    "--phi0 = 1 is invalid with --optimize phi0"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --threads -2",
                    "--threads = -2 is invalid: expected 1 <= threads"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --T0 0",
                    "friction bound T0 = 0 is invalid"}));
+
+// The first line records what made the file; it leaves out the thread count and the output,
+// so that the same content carries the same line, and replaying it gives the same bytes.
+TEST(SweepCli, TheProvenanceLineReproducesTheFile) {
+  TempDir dir;
+  const std::string args =
+      "sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 --stability";
+  ASSERT_EQ(RunCli(args + " --threads 1 -o " + dir.File("a.csv"), dir.File("log")).status, 0);
+  ASSERT_EQ(
+      RunCli(args + " --threads 2 --checkpoint-seconds 0 -o " + dir.File("b.csv"), dir.File("log"))
+          .status,
+      0);
+  const std::string a = ReadFile(dir.File("a.csv"));
+  EXPECT_TRUE(a == ReadFile(dir.File("b.csv"))) << "thread count or checkpoints changed the bytes";
+  const std::string version = RunCli("--version", dir.File("v")).output;
+  const std::string line = a.substr(0, a.find('\n'));
+  EXPECT_EQ(line.rfind("# capsubot " + version.substr(0, version.find('\n')) +
+                           " sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 "
+                           "--T0 1 --margin 0 --margin-stroke 0 --stick-margin 0 --stability ",
+                       0),
+            0u)
+      << line;
+  for (const char* left_out :
+       {"--threads", "--output", "-o ", "--checkpoint", "--resume", "--e "}) {
+    EXPECT_EQ(line.find(left_out), std::string::npos) << left_out << " in " << line;
+  }
+  // Replay: the command after "# capsubot <version> " with a new output.
+  const std::string command = line.substr(line.find(" sweep ") + 1);
+  ASSERT_EQ(RunCli(command + " -o " + dir.File("c.csv"), dir.File("log")).status, 0);
+  EXPECT_TRUE(ReadFile(dir.File("c.csv")) == a) << "replaying " << command;
+  // --no-header-comment: the same file without that line.
+  ASSERT_EQ(RunCli(args + " --no-header-comment -o " + dir.File("d.csv"), dir.File("log")).status,
+            0);
+  EXPECT_EQ(ReadFile(dir.File("d.csv")), a.substr(a.find('\n') + 1));
+}
+
+// gnuplot reads the file as it is: it skips the comment line and takes the header's names.
+TEST(SweepCli, GnuplotReadsTheFileWithItsCommentLine) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  TempDir dir;
+  ASSERT_EQ(
+      RunCli("sweep --grid phi0=-pi:pi:9 --A 0.5 --c 0.5 -o " + dir.File("g.csv"), dir.File("log"))
+          .status,
+      0);
+  const std::string script = "set datafile separator ','; set datafile columnheaders; stats '" +
+                             dir.File("g.csv") +
+                             "' using 'phi1' nooutput; print STATS_records, STATS_max";
+  const int raw =
+      std::system(("gnuplot -e \"" + script + "\" > " + dir.File("gp") + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << ReadFile(dir.File("gp"));
+  // 9 rows; the largest phi1 is at phi0 = +-pi (the paper's example: 2.7337...)
+  EXPECT_EQ(ReadFile(dir.File("gp")).rfind("9 2.733716", 0), 0u) << ReadFile(dir.File("gp"));
+}
+
+// A resume of a damaged checkpoint is refused with a message naming the flag, not trusted.
+TEST(SweepCli, ACorruptedCheckpointIsRefused) {
+  TempDir dir;
+  const std::string out = dir.File("k.csv");
+  const std::vector<std::string> slow = SlowSweep(out, 1);
+  const pid_t pid = Spawn(slow);
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (CheckpointPoints(out + ".checkpoint") == 0 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  std::string checkpoint = ReadFile(out + ".checkpoint");
+  const std::size_t at = checkpoint.find("points ") + 7;
+  checkpoint[at] = checkpoint[at] == '9' ? '8' : '9';  // more points than were written
+  std::ofstream(out + ".checkpoint", std::ios::trunc) << checkpoint;
+  std::vector<std::string> resume = slow;
+  resume.emplace_back("--resume");
+  const Outcome r = RunCli(Join(resume), dir.File("log"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "capsubot sweep: error: --resume: checkpoint " + out +
+                          ".checkpoint is not a valid capsubot sweep checkpoint (checksum "
+                          "mismatch): delete it and its .partial file to start the sweep again\n");
+  EXPECT_FALSE(Exists(out));
+}
+
+TEST(SweepCli, ACheckpointPointingAtAnEndlessFileIsNotRead) {
+  TempDir dir;
+  const std::string out = dir.File("z.csv");
+  const std::string args = "sweep --grid phi0=-pi:pi:50 --A 0.5 --c 0.5 --resume -o " + out;
+  std::ofstream(out + ".partial") << "x";
+  ASSERT_EQ(::symlink("/dev/zero", (out + ".checkpoint").c_str()), 0);
+  const Outcome r = RunCli(args, dir.File("log"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--resume: checkpoint " + out +
+                          ".checkpoint is not a valid capsubot sweep checkpoint (not a regular "
+                          "file)"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(SweepCli, AWriteErrorOnADeviceNamesTheDeviceNotAPartialFile) {
+  TempDir dir;
+  const Outcome r =
+      RunCli("sweep --grid phi0=-pi:pi:50000 --A 0.5 --c 0.5 -o /dev/full", dir.File("log"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.output,
+            "capsubot sweep: error: --output /dev/full: cannot write /dev/full: No space left on "
+            "device\n");
+}
+
+// A write error part-way (the file size limit, as a full disk) can be mended: the partial
+// file and its checkpoint stay, the message says so, and --resume completes the same bytes.
+TEST(SweepCli, AWriteErrorPartWayKeepsTheRowsForAResume) {
+  TempDir dir;
+  const std::string args = "sweep --grid phi0=-pi:pi:4000 --A 0.5 --c 0.5 --checkpoint-seconds 0";
+  ASSERT_EQ(RunCli(args + " -o " + dir.File("ref.csv"), dir.File("log")).status, 0);
+  const std::string out = dir.File("f.csv");
+  // 200 blocks of 512 bytes: about a quarter of the file. SIGXFSZ ignored: write fails (EFBIG).
+  const std::string limited =
+      "sh -c \"trap '' XFSZ; ulimit -f 200; exec " + kCli + " " + args + " -o " + out + "\"";
+  const int raw = std::system((limited + " > " + dir.File("log") + " 2>&1").c_str());
+  const std::string message = ReadFile(dir.File("log"));
+  ASSERT_TRUE(WIFEXITED(raw)) << message;
+  EXPECT_NE(WEXITSTATUS(raw), 0) << message;
+  EXPECT_EQ(message.rfind("capsubot sweep: error: --output " + out + ": cannot write " + out +
+                              ".partial: File too large; the rows done are kept in " + out +
+                              ".partial with its checkpoint " + out +
+                              ".checkpoint for a resume: run the same command with --resume to "
+                              "continue\n",
+                          0),
+            0u)
+      << message;
+  EXPECT_FALSE(Exists(out));
+  EXPECT_TRUE(Exists(out + ".partial"));
+  EXPECT_TRUE(Exists(out + ".checkpoint"));
+  const Outcome r = RunCli(args + " -o " + out + " --resume", dir.File("log2"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(ReadFile(out) == ReadFile(dir.File("ref.csv")));
+  EXPECT_FALSE(Exists(out + ".partial"));
+  EXPECT_FALSE(Exists(out + ".checkpoint"));
+}
+
+// Runs `sweep` whole and in `n` shards, merges them; returns the shard paths.
+std::vector<std::string> RunShards(const std::string& sweep, int n, const TempDir& dir) {
+  EXPECT_EQ(RunCli(sweep + " -o " + dir.File("whole.csv"), dir.File("log")).status, 0);
+  std::vector<std::string> shards;
+  for (int k = 0; k < n; ++k) {
+    shards.push_back(dir.File("shard" + std::to_string(k) + ".csv"));
+    const Outcome r = RunCli(
+        sweep + " --shard " + std::to_string(k) + "/" + std::to_string(n) + " -o " + shards.back(),
+        dir.File("log"));
+    EXPECT_EQ(r.status, 0) << r.output;
+  }
+  return shards;
+}
+
+std::string Merge(const std::string& out, const std::vector<std::string>& shards,
+                  const TempDir& dir, int* status = nullptr) {
+  std::string args = "merge " + out;
+  for (const std::string& s : shards) args += " " + s;
+  const Outcome r = RunCli(args, dir.File("log"));
+  if (status != nullptr) *status = r.status;
+  return r.output;
+}
+
+class ShardsMerged : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ShardsMerged, AreByteIdenticalToTheSingleRun) {
+  TempDir dir;
+  std::vector<std::string> shards = RunShards(GetParam(), 3, dir);
+  std::swap(shards[0], shards[2]);  // any order
+  int status = -1;
+  const std::string message = Merge(dir.File("merged.csv"), shards, dir, &status);
+  ASSERT_EQ(status, 0) << message;
+  const std::string whole = ReadFile(dir.File("whole.csv"));
+  EXPECT_GT(whole.size(), 1000u);
+  EXPECT_TRUE(ReadFile(dir.File("merged.csv")) == whole);
+  EXPECT_NE(ReadFile(shards[1]).find("\n# shard 1/3 of "), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Sweeps, ShardsMerged,
+    ::testing::Values("sweep --grid phi0=-pi:pi:301 --grid c=0.1,0.5 --A 0.5 --stability",
+                      // robot mode: 0, 1 or 2 rows a point
+                      "sweep --grid alpha=0.05:0.95:37 --A 0.5 --c 0.5",
+                      "sweep --grid c=0.01:0.3:10 --A 0.2 --optimize phi0 --scan-points 90"));
+
+TEST(MergeRefuses, ShardsOfAnotherRunMissingDuplicatedTruncatedOrLonger) {
+  TempDir dir;
+  const std::string sweep = "sweep --grid phi0=-pi:pi:100 --A 0.5 --c 0.5";
+  const std::vector<std::string> s = RunShards(sweep, 3, dir);
+  const std::string other = dir.File("other.csv");
+  ASSERT_EQ(RunCli(sweep + " --T0 0.9 --shard 1/3 -o " + other, dir.File("log")).status, 0);
+  const std::string text = ReadFile(s[1]);
+  const std::string cut_row = dir.File("cut_row.csv"), cut_line = dir.File("cut_line.csv"),
+                    longer = dir.File("longer.csv");
+  std::ofstream(cut_row) << text.substr(0, text.rfind('\n', text.size() - 2) + 1);  // a row less
+  std::ofstream(cut_line) << text.substr(0, text.size() - 5);                       // mid-line
+  std::ofstream(longer) << text << text.substr(text.rfind('\n', text.size() - 2) + 1);
+  const std::string out = dir.File("merged.csv");
+  struct Case {
+    std::vector<std::string> files;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{s[0], other, s[2]},
+       "capsubot merge: error: shard files " + s[0] + " and " + other +
+           " are of different sweeps: expected the same comment lines, header, shard count N "
+           "and point count T\n"},
+      {{s[0], s[2]},
+       "capsubot merge: error: shard files: shard 1/3 missing: expected all 3 shards\n"},
+      {{s[0], s[1], s[1], s[2]},
+       "capsubot merge: error: shard files " + s[1] + " and " + s[1] + " are both shard 1/3\n"},
+      {{s[0], cut_row, s[2]},
+       "capsubot merge: error: shard file " + cut_row +
+           " is truncated: it ends after 32 of its "
+           "33 points\n"},
+      {{s[0], cut_line, s[2]},
+       "capsubot merge: error: shard file " + cut_line +
+           " is truncated: its last line has no line break\n"},
+      {{s[0], longer, s[2]},
+       "capsubot merge: error: shard file " + longer +
+           " holds more rows than its 33 points: expected a shard of this sweep\n"},
+      {{s[0], dir.File("whole.csv"), s[2]},
+       "capsubot merge: error: shard file " + dir.File("whole.csv") +
+           " is invalid: expected a file of `capsubot sweep --shard K/N` (a line '# shard K/N "
+           "of T points' with 0 <= K < N, N >= 2, N <= T)\n"},
+  };
+  int checked = 0;
+  for (const Case& c : cases) {
+    int status = -1;
+    EXPECT_EQ(Merge(out, c.files, dir, &status), c.message);
+    EXPECT_EQ(status, 2);
+    EXPECT_NE(::access(out.c_str(), F_OK), 0) << "a refused merge wrote " << out;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 7);
+}
+
+TEST(SweepShard, BadShardSpecsAreRefused) {
+  TempDir dir;
+  const std::string sweep = "sweep --grid phi0=-pi:pi:5 --A 0.5 --c 0.5 -o " + dir.File("x.csv");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"3/3", "--shard = 3/3 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
+      {"-1/3", "--shard -1/3 is invalid: expected K/N"},
+      {"1/2/3", "--shard 1/2/3 is invalid: expected K/N"},
+      {"1/6", "--shard = 1/6 is invalid: the grid has only 5 points"}};
+  for (const auto& [spec, message] : cases) {
+    const Outcome r = RunCli(sweep + " --shard " + spec, dir.File("log"));
+    EXPECT_EQ(r.status, 2) << spec;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+  }
+}
 
 }  // namespace

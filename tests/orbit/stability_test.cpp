@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <string>
+#include <utility>
 
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
@@ -216,6 +218,104 @@ TEST(Stability, MultipliersAreTheEigenvaluesSortedByModulus) {
     EXPECT_DOUBLE_EQ(st.spectral_radius, std::abs(st.multipliers[0]));
     EXPECT_EQ(st.stable, st.spectral_radius < 1.0);
   }
+}
+
+// How stability is lost, at the crossing itself. For each force a scan of phi0 finds a stable
+// orbit next to an unstable one with the expected label; bisection in phi0 then locates where
+// the spectral radius reaches 1, and there the multiplier that left the unit circle must be
+// +1 (fold), -1 (flip) or a complex pair of modulus 1 (torus). The fold is also checked
+// against the orbit family itself: a fold is a turning point of alpha(phi0) (docs/model.md
+// section 12), seen here as a sign change of its finite differences.
+struct LossCase {
+  const char* name;
+  double A, c, T0, e;
+  StabilityLoss loss;
+  friend void PrintTo(const LossCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class StabilityLossAtTheCrossing : public ::testing::TestWithParam<LossCase> {};
+
+constexpr int kScanPoints = 2001;
+constexpr int kBisections = 60;
+// At the bisected crossing the radius is 1 to rounding; the multiplier's position on the
+// circle is then known to about the conditioning of the 2x2 eigenproblem.
+constexpr double kCrossingTol = 1e-6;
+constexpr double kFoldStep = 1e-4;  // finite-difference step of alpha(phi0) at the fold
+
+TEST_P(StabilityLossAtTheCrossing, LabelsTheMultiplierThatLeavesTheUnitCircle) {
+  const LossCase& lc = GetParam();
+  Params p;
+  p.T0 = lc.T0;
+  p.e = lc.e;
+  const auto stability = [&](double phi0) {
+    return ComputeStability(ComputeOrbit(Forcing::Harmonic(lc.A, lc.c, phi0), p));
+  };
+  int labelled = 0, crossings = 0;
+  for (int i = 1; i < kScanPoints; ++i) {
+    double a = -M_PI + kTau * (i - 1) / (kScanPoints - 1), b = -M_PI + kTau * i / (kScanPoints - 1);
+    const Stability sa = stability(a), sb = stability(b);
+    if (sb.computed) labelled += ClassifyLoss(sb) == lc.loss;
+    if (!sa.computed || !sb.computed || sa.stable == sb.stable) continue;
+    if (ClassifyLoss(sa.stable ? sb : sa) != lc.loss) continue;
+    if (!sa.stable) std::swap(a, b);  // a stable, b unstable
+    for (int k = 0; k < kBisections; ++k) {
+      const double mid = 0.5 * (a + b);
+      (stability(mid).stable ? a : b) = mid;
+    }
+    const Stability at = stability(b);
+    ASSERT_TRUE(at.computed);
+    EXPECT_EQ(ClassifyLoss(at), lc.loss) << "phi0 = " << b;
+    EXPECT_TRUE(Near(at.spectral_radius, 1.0, kCrossingTol)) << "phi0 = " << b;
+    const std::complex<double> m = at.multipliers[0];
+    switch (lc.loss) {
+      case StabilityLoss::kFold: {
+        EXPECT_TRUE(Near(m.real(), 1.0, kCrossingTol)) << "phi0 = " << b;
+        const auto alpha = [&](double phi0) {
+          return ComputeOrbit(Forcing::Harmonic(lc.A, lc.c, phi0), p).alpha;
+        };
+        const double left = alpha(b) - alpha(b - kFoldStep),
+                     right = alpha(b + kFoldStep) - alpha(b);
+        EXPECT_LT(left * right, 0.0) << "alpha(phi0) has no turning point at phi0 = " << b;
+        break;
+      }
+      case StabilityLoss::kFlip:
+        EXPECT_TRUE(Near(m.real(), -1.0, kCrossingTol)) << "phi0 = " << b;
+        break;
+      case StabilityLoss::kTorus:
+        EXPECT_GT(std::abs(m.imag()), 0.01) << "phi0 = " << b;
+        break;
+      case StabilityLoss::kNone:
+        break;
+    }
+    ++crossings;
+  }
+  EXPECT_GT(labelled, 0);
+  EXPECT_GE(crossings, 1) << "the scan found no crossing of this kind";
+}
+
+// The forces come from a scan of (e, A, c, phi0) with `capsubot sweep --stability`: the
+// paper's example loses stability only by folds, A = 0.2, c = 0.03 also by flips, and a
+// strong force with e = 0.5 through a complex pair.
+INSTANTIATE_TEST_SUITE_P(
+    Kinds, StabilityLossAtTheCrossing,
+    ::testing::Values(LossCase{"fold", 0.5, 0.5, 1.0, 1.0, StabilityLoss::kFold},
+                      LossCase{"flip", 0.2, 0.03, 1.0, 1.0, StabilityLoss::kFlip},
+                      LossCase{"torus", 0.95, 0.36 / 7.0, 1.0, 0.5, StabilityLoss::kTorus}),
+    [](const ::testing::TestParamInfo<LossCase>& info) { return info.param.name; });
+
+TEST(StabilityLoss, NoneWhenStableOrNotComputedAndNamesForCsv) {
+  EXPECT_EQ(ClassifyLoss(Stability{}), StabilityLoss::kNone);
+  Params p;
+  p.T0 = 0.1;
+  p.e = 0.5;
+  const Stability stable =
+      ComputeStability(ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.7243), p));
+  ASSERT_TRUE(stable.stable);
+  EXPECT_EQ(ClassifyLoss(stable), StabilityLoss::kNone);
+  EXPECT_STREQ(StabilityLossName(StabilityLoss::kNone), "");
+  EXPECT_STREQ(StabilityLossName(StabilityLoss::kFold), "fold");
+  EXPECT_STREQ(StabilityLossName(StabilityLoss::kFlip), "flip");
+  EXPECT_STREQ(StabilityLossName(StabilityLoss::kTorus), "torus");
 }
 
 }  // namespace

@@ -9,21 +9,28 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capsubot/io.hpp"
+#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize_fourier.hpp"
 #include "capsubot/optimize_phase.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
+#include "sweep/sweep_file.hpp"
 #include "sweep/sweep_rows.hpp"
 
 namespace capsubot {
@@ -61,11 +68,11 @@ std::vector<std::string> Split(const std::string& text, char sep) {
   return parts;
 }
 
-// The CSV as rows of cells; rows[0] is the header.
+// The CSV as rows of cells, as a reader that skips '#' lines sees it; rows[0] is the header.
 std::vector<std::vector<std::string>> ReadCsv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
   for (const std::string& line : Split(ReadFile(path), '\n')) {
-    if (!line.empty()) rows.push_back(Split(line, ','));
+    if (!line.empty() && line[0] != '#') rows.push_back(Split(line, ','));
   }
   return rows;
 }
@@ -96,44 +103,79 @@ SweepOptions PaperPhaseSweep(const std::string& output, int n) {
 
 TEST(SweepColumns, FollowTheDocumentedLayout) {
   SweepOptions o = PaperPhaseSweep("x.csv", 3);
-  EXPECT_EQ(detail::SweepHeaderLine(o),
+  EXPECT_EQ(detail::SweepHeaderLines(o),
             "phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations\n");
   o.stability = true;
-  EXPECT_EQ(detail::SweepHeaderLine(o),
+  EXPECT_EQ(detail::SweepHeaderLines(o),
             "phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations,spectral_radius,"
-            "stable\n");
+            "lambda_re,lambda_im,stable,loss\n");
   o.grid.axes = {ParseGridAxis("A=0:1:2"), ParseGridAxis("c=0:1:2")};
-  o.optimize_phi0 = true;
-  EXPECT_EQ(detail::SweepHeaderLine(o),
+  o.optimize = SweepOptimize::kPhase;
+  o.comments = {"made by a test", "second line"};
+  EXPECT_EQ(detail::SweepHeaderLines(o),
+            "# made by a test\n# second line\n"
             "A,c,phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations,"
-            "spectral_radius,stable,status\n");
-  o.optimize_phi0 = false;
+            "spectral_radius,lambda_re,lambda_im,stable,loss,status\n");
+  o.comments.clear();
   o.stability = false;
+  o.grid.axes = {ParseGridAxis("T0=0.1,0.2"), ParseGridAxis("bound=0.05,0.1")};
+  o.optimize = SweepOptimize::kForcing;
+  EXPECT_EQ(detail::SweepHeaderLines(o),
+            "T0,bound,A,c,phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations,"
+            "status\n");
+  o.optimize = SweepOptimize::kFourier;
+  o.fourier.harmonics = 2;
+  EXPECT_EQ(detail::SweepHeaderLines(o),
+            "T0,bound,c,a1,a2,b1,b2,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,violations,"
+            "status\n");
+  o.optimize = SweepOptimize::kNone;
   o.grid.axes = {ParseGridAxis("alpha=0.1:0.9:2")};
-  EXPECT_EQ(detail::SweepHeaderLine(o),
+  EXPECT_EQ(detail::SweepHeaderLines(o),
             "robot_alpha,orbits,orbit,phi0,phi1,alpha,u,v_plus,I,v_mean,x_min,x_max,valid,"
             "violations\n");
 }
 
-TEST(SweepNumbers, AreByteIdenticalToFormatNumber) {
-  for (double x : {0.0, -0.0, 1.0, -2.944899971002, 1e-300, 6.02214076e23, 0.1, 1.0 / 3.0, 5e-324,
-                   1.7976931348623157e308, -std::nan("")}) {
+TEST(SweepNumbers, AreShortestRoundTripAndEqualToFormatNumber) {
+  const std::pair<double, const char*> exact[] = {
+      {0.0, "0"},
+      {-0.0, "-0"},
+      {1.0, "1"},
+      {0.1, "0.1"},
+      {1.0 / 3.0, "0.3333333333333333"},
+      {5e-324, "5e-324"},
+      {1e22, "1e+22"},
+      {1.7976931348623157e308, "1.7976931348623157e+308"},
+      {-2.5e-5, "-2.5e-05"},
+      {std::numeric_limits<double>::infinity(), "inf"},
+      {std::nan(""), ""}};
+  for (const auto& [x, text] : exact) {
     detail::RowBuffer buffer;
     detail::AppendNumber(buffer, x);
-    EXPECT_EQ(std::string(buffer.data(), buffer.size()), FormatNumber(x)) << x;
+    EXPECT_EQ(std::string(buffer.data(), buffer.size()), text);
+    EXPECT_EQ(FormatNumber(x), text);
   }
-  // Random doubles over the whole exponent range, subnormals and integers included.
+  // Random doubles over the whole exponent range, subnormals and integers included: the text
+  // reads back to the same double and is no longer than fmt's shortest form (an independent
+  // implementation of shortest round-trip, Dragonbox).
   std::mt19937_64 rng(20211);
+  int checked = 0;
+  detail::RowBuffer buffer;  // one buffer, reused as the sweep does
   for (int i = 0; i < 100000; ++i) {
     std::uint64_t bits = rng();
     double x = 0.0;
     std::memcpy(&x, &bits, sizeof x);
     if (i % 3 == 0) x = std::ldexp(static_cast<double>(bits >> 11), -52) * 1e3;  // ordinary
     if (i % 7 == 0) x = std::round(x);
-    detail::RowBuffer buffer;
+    if (std::isnan(x)) continue;
+    buffer.clear();
     detail::AppendNumber(buffer, x);
-    ASSERT_EQ(std::string(buffer.data(), buffer.size()), FormatNumber(x)) << i;
+    const std::string text(buffer.data(), buffer.size());
+    ASSERT_EQ(std::strtod(text.c_str(), nullptr), x) << text;
+    const std::string shortest = fmt::format("{}", x);
+    ASSERT_LE(text.size(), shortest.size()) << text << " vs " << shortest;
+    ++checked;
   }
+  EXPECT_GT(checked, 99000);
 }
 
 TEST(Sweep, PhaseRowsEqualSolveAtEveryPoint) {
@@ -154,27 +196,6 @@ TEST(Sweep, PhaseRowsEqualSolveAtEveryPoint) {
     (s.validity.valid() ? valid : invalid)++;
   }
   EXPECT_GT(invalid, 0);  // the row layout is exercised with violations too
-}
-
-TEST(Sweep, TwoDimensionalGridRunsTheLastAxisFastest) {
-  TempDir dir;
-  SweepOptions o;
-  o.grid.axes = {ParseGridAxis("A=0.1:0.4:4"), ParseGridAxis("c=0.05:0.3:3")};
-  o.forcing = Forcing::Harmonic(1.0, 1.0, -2.0);
-  o.params.T0 = 0.8;
-  o.output = dir.File("ac.csv");
-  RunSweep(o);
-  const auto rows = ReadCsv(o.output);
-  ASSERT_EQ(rows.size(), 13u);
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double A = o.grid.axes[0].Value(i), c = o.grid.axes[1].Value(j);
-      const Solution s = Solve(Forcing::Harmonic(A, c, -2.0), o.params);
-      std::vector<std::string> expected = {FormatNumber(A), FormatNumber(c)};
-      for (const std::string& cell : SolutionCells(s)) expected.push_back(cell);
-      EXPECT_EQ(rows[1 + 3 * i + j], expected) << "A = " << A << ", c = " << c;
-    }
-  }
 }
 
 TEST(Sweep, ModelParameterAxesReachSolve) {
@@ -289,9 +310,9 @@ TEST(Sweep, ResumeWithoutCheckpointStartsFromTheBeginning) {
   EXPECT_EQ(ReadCsv(o.output).size(), 51u);
 }
 
-TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
-  TempDir dir;
-  SweepOptions o = PaperPhaseSweep(dir.File("a.csv"), 500);
+// Interrupts a 500-point sweep after 100 points (checkpoint after every block).
+SweepOptions InterruptedSweep(const TempDir& dir) {
+  SweepOptions o = PaperPhaseSweep(dir.File("cut.csv"), 500);
   o.block_points = 10;
   o.checkpoint_seconds = 0.0;
   EXPECT_THROW(RunSweep(o,
@@ -300,12 +321,18 @@ TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
                         }),
                Interrupt);
   o.resume = true;
+  return o;
+}
+
+TEST(Sweep, ResumeRefusesTheCheckpointOfAnotherSweep) {
+  TempDir dir;
+  SweepOptions o = InterruptedSweep(dir);
   o.params.T0 = 1.5;  // another sweep
   try {
     RunSweep(o);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("--resume: checkpoint " + o.output +
+    EXPECT_NE(std::string(e.what()).find("resume: checkpoint " + o.output +
                                          ".checkpoint is invalid for this sweep"),
               std::string::npos)
         << e.what();
@@ -319,7 +346,7 @@ TEST(Sweep, UnwritableOutputIsAnIoErrorNamingTheFile) {
     RunSweep(o);
     FAIL() << "expected IoError";
   } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("--output /nonexistent_dir_capsubot/x.csv: cannot "
+    EXPECT_NE(std::string(e.what()).find("output /nonexistent_dir_capsubot/x.csv: cannot "
                                          "create /nonexistent_dir_capsubot/x.csv.partial"),
               std::string::npos)
         << e.what();
@@ -337,9 +364,8 @@ TEST(Sweep, RefusesAnOutputAnotherSweepIsWriting) {
     RunSweep(o);
     ADD_FAILURE() << "expected IoError";
   } catch (const IoError& e) {
-    EXPECT_EQ(
-        std::string(e.what()),
-        "--output " + o.output + ": another capsubot sweep is writing " + o.output + ".partial");
+    EXPECT_EQ(std::string(e.what()), "output " + o.output + ": another capsubot sweep is writing " +
+                                         o.output + ".partial");
   }
   ::close(fd);
   EXPECT_FALSE(Exists(o.output));
@@ -357,34 +383,74 @@ std::string InvalidArgumentMessage(const Fn& f) {
   return "";
 }
 
-TEST(SweepOptions, RejectsBadCombinationsWithAMessage) {
-  SweepOptions o = PaperPhaseSweep("x.csv", 5);
-  o.optimize_phi0 = true;
-  EXPECT_NE(InvalidArgumentMessage([&] {
-              o.Validate();
-            }).find("--optimize phi0 with --grid phi0 is invalid"),
-            std::string::npos);
-  o = PaperPhaseSweep("x.csv", 5);
-  o.grid.axes = {ParseGridAxis("A=0:1:3")};
-  o.forcing = Forcing::Fourier(0.2, {0.1, 0.0}, {0.3, 0.1}, 0.0);
-  EXPECT_NE(InvalidArgumentMessage([&] {
-              o.Validate();
-            }).find("--grid A is invalid with a Fourier force"),
-            std::string::npos);
-  o = PaperPhaseSweep("x.csv", 5);
-  o.threads = -1;
-  EXPECT_EQ(InvalidArgumentMessage([&] { o.Validate(); }),
-            "--threads = -1 is invalid: expected 1 <= threads <= 1024 (0: all cores)");
-  o = PaperPhaseSweep("", 5);
-  EXPECT_NE(InvalidArgumentMessage([&] { o.Validate(); }).find("--output is missing"),
-            std::string::npos);
-  o = PaperPhaseSweep("x.csv", 5);
-  o.grid.axes = {ParseGridAxis("alpha=0.2:0.5:3")};
-  o.optimize_phi0 = true;
-  EXPECT_NE(InvalidArgumentMessage([&] {
-              o.Validate();
-            }).find("--optimize phi0 with --grid alpha is invalid"),
-            std::string::npos);
+TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
+  struct Bad {
+    std::function<void(SweepOptions&)> change;
+    std::string message;  // the whole message, or its beginning when it ends with "..."
+  };
+  const Bad cases[] = {
+      {[](SweepOptions& o) { o.optimize = SweepOptimize::kPhase; },
+       "grid phi0=-3.141592653589793:3.141592653589793:5 is invalid with optimize = phi0 "
+       "(problem P1, the best impact phase phi0): expected a grid over A, c, T0, e, margin, "
+       "ak, bk, rho_max, margin_stroke, stick_margin"},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("A=0:1:3")};
+         o.forcing = Forcing::Fourier(0.2, {0.1, 0.0}, {0.3, 0.1}, 0.0);
+       },
+       "grid A is invalid with a Fourier force..."},
+      {[](SweepOptions& o) { o.threads = -1; },
+       "threads = -1 is invalid: expected 1 <= threads <= 1024 (0: all cores)"},
+      {[](SweepOptions& o) { o.output.clear(); }, "output is missing..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("alpha=0.2:0.5:3")};
+         o.optimize = SweepOptimize::kPhase;
+       },
+       "grid alpha=0.2:0.5:3 is invalid with optimize = phi0..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("T0=0.05,0.2")};
+         o.optimize = SweepOptimize::kForcing;
+       },
+       ""},  // accepted: the bound is T0 at each point
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("T0=0.05,0.2")};
+         o.optimize = SweepOptimize::kForcing;
+         o.design.force_bound = 0.1;  // above the smallest T0
+       },
+       "force_bound = 0.1 is invalid..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("T0=0.2,0.3"), ParseGridAxis("bound=0.1:0.25:4")};
+         o.optimize = SweepOptimize::kFourier;
+       },
+       "force_bound = 0.25 is invalid..."},
+      {[](SweepOptions& o) { o.grid.axes = {ParseGridAxis("bound=0.1,0.2")}; },
+       "grid bound=0.1,0.2 is invalid with optimize = none..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("rho_max=0.5,0.9")};
+         o.optimize = SweepOptimize::kForcing;
+       },
+       ""},  // accepted: rho_max is the stability requirement (infinity: none)
+      {[](SweepOptions& o) { o.comments = {"two\nlines"}; }, "comments are invalid..."},
+  };
+  int checked = 0;
+  for (const Bad& bad : cases) {
+    SweepOptions o = PaperPhaseSweep("x.csv", 5);
+    bad.change(o);
+    const std::string message = InvalidArgumentMessage([&] { o.Validate(); });
+    const bool prefix =
+        bad.message.size() > 3 && bad.message.compare(bad.message.size() - 3, 3, "...") == 0;
+    if (prefix) {
+      EXPECT_EQ(message.rfind(bad.message.substr(0, bad.message.size() - 3), 0), 0u) << message;
+    } else {
+      EXPECT_EQ(message, bad.message);
+    }
+    EXPECT_EQ(message.find("--"), std::string::npos)
+        << "a library message names a flag: " << message;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 11);
+  EXPECT_EQ(ParseSweepOptimize("forcing"), SweepOptimize::kForcing);
+  EXPECT_EQ(InvalidArgumentMessage([] { ParseSweepOptimize("phi1"); }),
+            "optimize = phi1 is invalid: expected one of phi0, forcing, fourier");
 }
 
 TEST(Sweep, StabilityColumnsEqualComputeStability) {
@@ -394,21 +460,27 @@ TEST(Sweep, StabilityColumnsEqualComputeStability) {
   RunSweep(o);
   const auto rows = ReadCsv(o.output);
   ASSERT_EQ(rows.size(), 62u);
-  int with_orbit = 0;
+  int with_orbit = 0, stable = 0, unstable = 0;
   for (int i = 0; i < 61; ++i) {
     const Solution s = Solve(Forcing::Harmonic(0.5, 0.5, o.grid.axes[0].Value(i)), o.params);
-    ASSERT_EQ(rows[i + 1].size(), 13u);
+    ASSERT_EQ(rows[i + 1].size(), 16u);
+    const std::vector<std::string> cells(rows[i + 1].begin() + 11, rows[i + 1].end());
     if (!s.orbit.ok()) {
-      EXPECT_EQ(rows[i + 1][11], "");
-      EXPECT_EQ(rows[i + 1][12], "");
+      EXPECT_EQ(cells, std::vector<std::string>(5, ""));
       continue;
     }
     ++with_orbit;
     const Stability st = ComputeStability(s.orbit);
-    EXPECT_EQ(rows[i + 1][11], FormatNumber(st.spectral_radius));
-    EXPECT_EQ(rows[i + 1][12], st.stable ? "1" : "0");
+    const std::vector<std::string> expected = {
+        FormatNumber(st.spectral_radius), FormatNumber(st.multipliers[0].real()),
+        FormatNumber(st.multipliers[0].imag()), st.stable ? "1" : "0",
+        StabilityLossName(ClassifyLoss(st))};
+    EXPECT_EQ(cells, expected) << "row " << i + 1;
+    ++(st.stable ? stable : unstable);
   }
   EXPECT_GT(with_orbit, 0);
+  EXPECT_GT(stable, 0);
+  EXPECT_GT(unstable, 0);  // the paper's example has folds: the loss column is exercised
 }
 
 TEST(Sweep, OptimizedPhaseRowsEqualOptimizePhase) {
@@ -417,7 +489,7 @@ TEST(Sweep, OptimizedPhaseRowsEqualOptimizePhase) {
   o.grid.axes = {ParseGridAxis("c=0.05:0.25:3")};
   o.forcing = Forcing::Harmonic(0.2, 0.0, 0.0);
   o.params.T0 = 0.5;
-  o.optimize_phi0 = true;
+  o.optimize = SweepOptimize::kPhase;
   o.phase.scan_points = 90;
   o.output = dir.File("opt.csv");
   RunSweep(o);
@@ -469,6 +541,229 @@ TEST(Sweep, RobotModeWritesOneRowPerOrbitOfThatMassRatio) {
   EXPECT_EQ(r, rows.size());
   EXPECT_GT(orbits_seen, 0);
   EXPECT_GT(points_without, 0);  // both layouts are exercised (no orbit for alpha >= 0.4)
+}
+
+TEST(Sweep, ThreeGridSweepEqualsNestedLoopsOfSolve) {
+  TempDir dir;
+  SweepOptions o;
+  // A linear, a list and a log axis: row-major, the first slowest.
+  o.grid.axes = {ParseGridAxis("A=0.1:0.3:3"), ParseGridAxis("c=0.05,0.02,0.1"),
+                 ParseGridAxis("e=0.25:1:3:log")};
+  o.forcing = Forcing::Harmonic(1.0, 1.0, -2.6);
+  o.params.T0 = 0.8;
+  o.output = dir.File("three.csv");
+  RunSweep(o);
+  const auto rows = ReadCsv(o.output);
+  ASSERT_EQ(rows.size(), 28u);
+  const std::vector<double> cs = {0.05, 0.02, 0.1};
+  const std::vector<double> es = {0.25, 0.5, 1.0};  // 0.25 * 2^k: exact on the log axis
+  int r = 1, valid = 0;
+  for (double A : {0.1, 0.2, 0.3}) {
+    for (double c : cs) {
+      for (double e : es) {
+        Params p = o.params;
+        p.e = e;
+        const Solution s = Solve(Forcing::Harmonic(A, c, -2.6), p);
+        std::vector<std::string> expected = {FormatNumber(A), FormatNumber(c), FormatNumber(e)};
+        for (const std::string& cell : SolutionCells(s)) expected.push_back(cell);
+        EXPECT_EQ(rows[r++], expected) << "A = " << A << ", c = " << c << ", e = " << e;
+        valid += s.validity.valid();
+      }
+    }
+  }
+  EXPECT_EQ(r, 28);
+  EXPECT_GT(valid, 0);
+}
+
+TEST(Sweep, FourierCoefficientGridsAddHarmonicsToTheForce) {
+  TempDir dir;
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("b2=0:0.04:3"), ParseGridAxis("a1=-0.02,0.02")};
+  o.forcing = Forcing::Harmonic(0.2, 0.03, -2.8);
+  o.output = dir.File("fourier.csv");
+  RunSweep(o);
+  const auto rows = ReadCsv(o.output);
+  ASSERT_EQ(rows.size(), 7u);
+  int checked = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double b2 = o.grid.axes[0].Value(i), a1 = o.grid.axes[1].Value(j);
+      const Solution s = Solve(Forcing::Fourier(0.03, {a1, 0.0}, {0.2, b2}, -2.8), o.params);
+      std::vector<std::string> expected = {FormatNumber(b2), FormatNumber(a1)};
+      for (const std::string& cell : SolutionCells(s)) expected.push_back(cell);
+      EXPECT_EQ(rows[1 + 2 * i + j], expected) << "b2 = " << b2 << ", a1 = " << a1;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+// P2 at every point of a T0 grid: each row is what OptimizeForcing returns for that T0 (a
+// reduced search budget keeps the test short; the sweep passes the same options).
+TEST(Sweep, ForcingPerPointEqualsOptimizeForcing) {
+  TempDir dir;
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("T0=0.05,0.08,0.1,0.2,1")};
+  o.optimize = SweepOptimize::kForcing;
+  o.design.starts = 2;
+  o.design.hops = 2;
+  o.stability = true;
+  o.output = dir.File("p2.csv");
+  RunSweep(o);
+  const auto rows = ReadCsv(o.output);
+  ASSERT_EQ(rows.size(), 6u);
+  int found = 0;
+  for (int i = 0; i < 5; ++i) {
+    Params p = o.params;
+    p.T0 = o.grid.axes[0].Value(i);
+    const OptimizeResult r = OptimizeForcing(p, o.design);
+    const Forcing& f = r.solution.orbit.forcing;
+    std::vector<std::string> expected = {FormatNumber(p.T0), FormatNumber(f.amplitude()),
+                                         FormatNumber(f.mean()), FormatNumber(f.phi0())};
+    for (const std::string& cell : SolutionCells(r.solution)) expected.push_back(cell);
+    const Stability st = ComputeStability(r.solution.orbit);
+    for (const std::string& cell :
+         {FormatNumber(st.spectral_radius), FormatNumber(st.multipliers[0].real()),
+          FormatNumber(st.multipliers[0].imag()), std::string(st.stable ? "1" : "0"),
+          std::string(StabilityLossName(ClassifyLoss(st)))}) {
+      expected.push_back(cell);
+    }
+    expected.emplace_back(OptimizeStatusName(r.status));
+    EXPECT_EQ(rows[i + 1], expected) << "T0 = " << p.T0;
+    found += r.found();
+  }
+  EXPECT_EQ(found, 5);  // a valid gait at every T0
+}
+
+TEST(Sweep, FourierPerPointEqualsOptimizeFourier) {
+  TempDir dir;
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("e=0.5,1")};
+  o.params.T0 = 0.1;
+  o.optimize = SweepOptimize::kFourier;
+  o.fourier.harmonics = 2;
+  o.fourier.search.starts = 2;
+  o.output = dir.File("p3.csv");
+  RunSweep(o);
+  const auto rows = ReadCsv(o.output);
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 2; ++i) {
+    Params p = o.params;
+    p.e = o.grid.axes[0].Value(i);
+    const OptimizeResult r = OptimizeFourier(p, o.fourier);
+    const Forcing f = r.solution.orbit.forcing.InImpactFrame();
+    ASSERT_EQ(f.harmonics(), 2);
+    std::vector<std::string> expected = {FormatNumber(p.e),    FormatNumber(f.mean()),
+                                         FormatNumber(f.a(1)), FormatNumber(f.a(2)),
+                                         FormatNumber(f.b(1)), FormatNumber(f.b(2))};
+    for (const std::string& cell : SolutionCells(r.solution)) expected.push_back(cell);
+    expected.emplace_back(OptimizeStatusName(r.status));
+    EXPECT_EQ(rows[i + 1], expected) << "e = " << p.e;
+  }
+}
+
+TEST(Sweep, CommentLinesComeFirstAndReadersThatSkipThemSeeTheTable) {
+  TempDir dir;
+  SweepOptions o = PaperPhaseSweep(dir.File("c.csv"), 9);
+  o.comments = {"capsubot test sweep --grid phi0=-pi:pi:9", "second"};
+  RunSweep(o);
+  const std::string text = ReadFile(o.output);
+  EXPECT_EQ(text.rfind("# capsubot test sweep --grid phi0=-pi:pi:9\n# second\nphi0,phi1,", 0), 0u);
+  const auto rows = ReadCsv(o.output);  // skips '#' lines, as pandas' comment='#' does
+  ASSERT_EQ(rows.size(), 10u);
+  EXPECT_EQ(rows[0][0], "phi0");
+  for (std::size_t r = 1; r < rows.size(); ++r) EXPECT_EQ(rows[r].size(), rows[0].size()) << r;
+}
+
+TEST(Sweep, FileIsByteIdenticalForAnyThreadCountWithCommentsStabilityAndAllSpacings) {
+  TempDir dir;
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("c=0.01:0.5:7:log"), ParseGridAxis("A=0.5,0.2"),
+                 ParseGridAxis("phi0=-pi:pi:101")};
+  o.comments = {"provenance"};
+  o.stability = true;
+  o.output = dir.File("ref.csv");
+  o.threads = 1;
+  o.block_points = 5000;
+  RunSweep(o);
+  const std::string reference = ReadFile(o.output);
+  ASSERT_GT(reference.size(), 10000u);
+  int runs = 0;
+  for (int threads : {2, 3}) {
+    for (int block : {1, 13, 0}) {
+      o.output = dir.File("t" + std::to_string(threads) + "b" + std::to_string(block) + ".csv");
+      o.threads = threads;
+      o.block_points = block;
+      RunSweep(o);
+      EXPECT_TRUE(ReadFile(o.output) == reference) << threads << " threads, blocks of " << block;
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 6);
+}
+
+std::string IoErrorMessage(const SweepOptions& o) {
+  try {
+    RunSweep(o);
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SweepCheckpoint, AFlippedByteInTheCheckpointIsAnError) {
+  TempDir dir;
+  const SweepOptions o = InterruptedSweep(dir);
+  const std::string checkpoint = detail::SweepFile::CheckpointPath(o.output);
+  std::string text = ReadFile(checkpoint);
+  int checked = 0;
+  // A digit of the point count, of the byte count, of the description, of the checksum.
+  for (const std::string key : {"points ", "bytes ", "T0=", "crc32 "}) {
+    std::string bad = text;
+    const std::size_t at = bad.rfind(key) + key.size();
+    bad[at] = bad[at] == '1' ? '2' : '1';
+    std::ofstream(checkpoint, std::ios::binary | std::ios::trunc) << bad;
+    const std::string message = IoErrorMessage(o);
+    EXPECT_EQ(message.rfind("resume: checkpoint " + checkpoint +
+                                " is not a valid capsubot sweep checkpoint (checksum mismatch)",
+                            0),
+              0u)
+        << key << ": " << message;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);
+  std::ofstream(checkpoint, std::ios::binary | std::ios::trunc) << text;  // intact again
+  RunSweep(o);
+  EXPECT_EQ(ReadCsv(o.output).size(), 501u);
+}
+
+TEST(SweepCheckpoint, ChangedRowsInThePartialFileAreAnError) {
+  TempDir dir;
+  const SweepOptions o = InterruptedSweep(dir);
+  const std::string partial = detail::SweepFile::PartialPath(o.output);
+  std::string text = ReadFile(partial);
+  const std::size_t at = text.find("\n-3.") + 2;  // a row's first digit
+  text[at] = '4';
+  std::ofstream(partial, std::ios::binary | std::ios::trunc) << text;
+  EXPECT_EQ(IoErrorMessage(o), "resume: " + partial + " does not hold the rows its checkpoint " +
+                                   detail::SweepFile::CheckpointPath(o.output) +
+                                   " vouches for (checksum mismatch: the file was changed or "
+                                   "damaged): delete both to start the sweep again");
+}
+
+TEST(SweepCheckpoint, ACheckpointThatIsNotASmallRegularFileIsNotRead) {
+  TempDir dir;
+  const SweepOptions o = InterruptedSweep(dir);
+  const std::string checkpoint = detail::SweepFile::CheckpointPath(o.output);
+  ASSERT_EQ(std::remove(checkpoint.c_str()), 0);
+  ASSERT_EQ(::symlink("/dev/zero", checkpoint.c_str()), 0);  // endless: must not be read
+  EXPECT_EQ(IoErrorMessage(o), "resume: checkpoint " + checkpoint +
+                                   " is not a valid capsubot sweep checkpoint (not a regular "
+                                   "file): delete it and its .partial file to start the sweep "
+                                   "again");
+  ASSERT_EQ(std::remove(checkpoint.c_str()), 0);
+  std::ofstream(checkpoint) << std::string(1 << 20, 'x');  // far longer than a checkpoint
+  EXPECT_NE(IoErrorMessage(o).find("1048576 bytes, more than the"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,46 @@
+// capsubot merge: joins the shard files of `capsubot sweep --shard K/N` into the file of the
+// whole sweep (library: capsubot/sweep_merge.hpp).
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "capsubot/sweep_merge.hpp"
+#include "commands.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct MergeCliOptions {
+  std::string output;
+  std::vector<std::string> shards;
+};
+
+int Run(const MergeCliOptions& opt) {
+  const MergeSummary summary = MergeSweepShards(opt.shards, opt.output);
+  if (::isatty(STDERR_FILENO) != 0) {
+    fmt::print(stderr, "capsubot merge: {} shards, {} points, {} rows written to {}\n",
+               summary.shards, summary.points, summary.rows, opt.output);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command AddMergeCommand(CLI::App& app) {
+  auto opt = std::make_shared<MergeCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "merge",
+      "Joins the N shard files of one `capsubot sweep --shard K/N` run (any order) into OUT, "
+      "byte-identical to the sweep run on one machine; refuses shards of different runs, a "
+      "missing or duplicated shard and a truncated one (docs/cluster.md).");
+  cmd->add_option("OUT", opt->output, "the CSV file to write (atomically; - : standard output)")
+      ->required();
+  cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();
+  return {cmd, [opt] { return Run(*opt); }};
+}
+
+}  // namespace capsubot::app

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# A sweep split over a Slurm job array: task K of N computes shard K/N, a last job that
+# depends on the array merges the N files into the file the sweep gives on one machine.
+#
+#   sbatch --array=0-15 examples/slurm/sweep_array.sh          # the 16 shards
+#   sbatch --dependency=afterok:<array job id> --export=ALL,MERGE=1 examples/slurm/sweep_array.sh
+#
+# or both at once:  examples/slurm/sweep_array.sh submit
+# A killed or requeued task continues from its checkpoint (--resume). Edit SWEEP, OUT, N.
+#SBATCH --job-name=capsubot-sweep
+#SBATCH --cpus-per-task=2
+#SBATCH --time=02:00:00
+#SBATCH --requeue
+set -euo pipefail
+
+CAPSUBOT=${CAPSUBOT:-capsubot}
+N=${N:-16}
+OUT=${OUT:-p2_T0_e.csv}
+SWEEP=(sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize forcing --stability)
+
+if [[ "${1:-}" == "submit" ]]; then
+  array=$(sbatch --parsable --array=0-$((N - 1)) "$0")
+  sbatch --dependency=afterok:"$array" --export=ALL,MERGE=1,N="$N",OUT="$OUT" "$0"
+  exit 0
+fi
+
+shard_file() { echo "${OUT%.csv}.shard$1of$N.csv"; }
+
+if [[ "${MERGE:-0}" == 1 ]]; then
+  files=()
+  for ((k = 0; k < N; ++k)); do files+=("$(shard_file "$k")"); done
+  "$CAPSUBOT" merge "$OUT" "${files[@]}"   # checks: same run, none missing, none truncated
+  exit 0
+fi
+
+K=${SLURM_ARRAY_TASK_ID:?run as a job array (sbatch --array=0-$((N - 1)))}
+"$CAPSUBOT" "${SWEEP[@]}" --shard "$K/$N" --threads "${SLURM_CPUS_PER_TASK:-1}" \
+  --resume -o "$(shard_file "$K")"
