@@ -1,6 +1,7 @@
-// capsubot optimize: the fastest gait (docs/model.md section 7). Without --problem it runs the main
-// job: the paper's problem P1 at c = A = T0/2, then P2 at the same T0 with and without the
-// stability requirement, a readable summary and results/optimum.json.
+// capsubot optimize: the fastest gait (docs/model.md sections 7, 12, 13). Without --problem it
+// runs the main job: the paper's problem P1 at c = A = T0/2, the fastest robust one-impact gait
+// (P2, spectral radius <= 0.9) checked from rest, the fastest motion from rest (reach), which to
+// build, and results/optimum.json. Every reported gait carries its check from rest.
 
 #include "capsubot/optimize.hpp"
 
@@ -16,6 +17,7 @@
 
 #include "capsubot/io.hpp"
 #include "commands.hpp"
+#include "from_rest_report.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -46,7 +48,14 @@ struct OptimizeCliOptions {
   std::string output = "results/optimum.json";
   CLI::Option* output_option = nullptr;
   std::string force_csv;
+  FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
+  double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
+  std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
 };
+
+// The robust gait of the main job: largest multiplier modulus at most this (docs/model.md
+// section 12) unless --stable says otherwise.
+constexpr double kRobustRhoMax = 0.9;
 
 std::string Num(double v, int digits = 6) {
   return std::isnan(v) ? "-" : fmt::format("{:.{}g}", v, digits);
@@ -158,17 +167,61 @@ ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, bool stable) {
   return d;
 }
 
+// Which gait to build, in plain words: the reach winner when it beats the robust one-impact
+// gait from rest, else the robust gait.
+std::string Advice(const OptimizeResult& robust, const ReachResult& reach) {
+  const GaitFromRest& fr = reach.seed.from_rest;
+  std::string t = "\nWhich to build:\n";
+  if (std::isnan(reach.mean_velocity)) {
+    return t + "  no motion from rest could be checked: see the messages above.\n";
+  }
+  const Attractor& top = reach.attractors.attractors.front();
+  const std::string odds = top.fraction == 1.0
+                               ? std::string("every start from rest ends in it")
+                               : fmt::format(
+                                     "{:.0f} % of the starts from rest end in its most "
+                                     "common motion",
+                                     100.0 * top.fraction);
+  if (reach.seed_won) {
+    return t + fmt::format(
+                   "  the robust one-impact gait (2): it is also the fastest motion found from "
+                   "rest,\n  {} omega L on average over the starts; {}.\n",
+                   Num(reach.mean_velocity, 4), fr.summary);
+  }
+  t += fmt::format(
+      "  the motion of 3 (A = {}, c = {}, alpha = {}): from rest the robot moves at {} omega L\n"
+      "  on average over the starts; {}.\n",
+      Num(reach.forcing.amplitude(), 4), Num(reach.forcing.mean(), 4), Num(reach.alpha, 4),
+      Num(reach.mean_velocity, 4), odds);
+  if (!reach.robust_to_settings) {
+    t += "  Caution: its mean velocity changes under other numerical settings (see \"settings\"\n"
+         "  above): check it with a finer simulation before building.\n";
+  }
+  if (robust.found() && fr.checked) {
+    t += fmt::format(
+        "  The robust one-impact gait (2) promises {} omega L, but from rest the robot averages\n"
+        "  {} omega L with it ({} of {} starts end on it).\n",
+        Num(robust.solution.orbit.v_mean, 4), Num(fr.attractors.mean_velocity, 4), fr.reached,
+        fr.attractors.starts);
+  }
+  return t;
+}
+
 int RunMainJob(const OptimizeCliOptions& opt) {
   const Params& p = opt.params;
-  const double rho_max = std::isnan(opt.rho_max) ? 1.0 : opt.rho_max;
+  const double rho_max = std::isnan(opt.rho_max) ? kRobustRhoMax : opt.rho_max;
   OptimizeCliOptions stable_opt = opt;
   stable_opt.rho_max = rho_max;
   // 1. The paper's problem: c = A = T0/2, best phase.
   const OptimizeResult paper =
       OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), p, PhaseOptions{});
-  // 2. The fastest valid gait and 3. the fastest stable one, A + c <= bound.
-  const OptimizeResult fastest = OptimizeForcing(p, DesignOptions(opt, false));
-  const OptimizeResult stable = OptimizeForcing(p, DesignOptions(stable_opt, true));
+  // 2. The fastest robust one-impact gait, A + c <= bound; checked from rest inside 3.
+  // Robust margins (clearance in units of the stroke, stick margin) belong to this design as
+  // soon as Params carries them; until then: spectral radius <= rho_max, clearance --margin.
+  const OptimizeResult robust = OptimizeForcing(p, DesignOptions(stable_opt, true));
+  // 3. The fastest motion from rest, seeded with the robust gait.
+  const ReachResult reach =
+      OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, ReachOptions::kNaN));
   const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
 
   nlohmann::json j;
@@ -177,14 +230,17 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   j["margin"] = p.margin;
   j["force_bound"] = bound;
   j["rho_max"] = rho_max;
-  j["paper_phase"] = ResultJson(paper, "phase");
-  j["paper_phase"]["note"] = "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0";
-  j["fastest"] = ResultJson(fastest, "forcing");
-  j["fastest"]["note"] = "P2: A, c, phi0 free with A + c <= force_bound";
-  j["fastest_stable"] = ResultJson(stable, "forcing");
-  j["fastest_stable"]["note"] = "P2 restricted to spectral radius <= rho_max";
+  j["paper"] = ResultJson(paper, "phase");
+  j["paper"]["note"] = "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0";
+  j["robust"] = ResultJson(robust, "forcing");
+  j["robust"]["note"] = "P2 restricted to spectral radius <= rho_max, checked from rest";
+  j["robust"]["from_rest"] = FromRestJson(reach.seed.from_rest);
+  j["reach"] = ReachJson(reach);
   WriteJson(j, opt.output);
-  if (!opt.force_csv.empty()) WriteForceCsv(fastest.solution.orbit.forcing, opt.force_csv);
+  if (!opt.force_csv.empty()) WriteForceCsv(robust.solution.orbit.forcing, opt.force_csv);
+  if (!opt.from_rest_csv.empty()) {
+    WriteFromRestCsv(opt.from_rest_csv, "--from-rest-csv", robust, reach);
+  }
   if (opt.json) {
     fmt::print("{}\n", j.dump());
     return 0;
@@ -192,7 +248,8 @@ int RunMainJob(const OptimizeCliOptions& opt) {
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md section 7)\n"
+      "capsubot optimize: the fastest gait of the capsule robot that the robot reaches "
+      "(docs/model.md sections 7, 12, 13)\n"
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution), clearance "
       "margin {:g}\n"
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
@@ -215,35 +272,51 @@ int RunMainJob(const OptimizeCliOptions& opt) {
         Num(paper.solution.orbit.I, 6), Join(v.ViolationNames()));
     if (v.violations == (1U << static_cast<unsigned>(Condition::kLeftWall))) {
       // Only the left wall fails. Scaling A, c, T0 by k scales 1 - x by k and leaves the
-      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min) <= 1.
+      // other conditions unchanged (docs/model.md section 6): the gait fits once k (1 - x_min)
+      // <= 1.
       t += fmt::format(
           "   The inner body would have to reach x = {} (the shell spans 0..1): the force is\n"
-          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): this\n"
-          "   gait would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
-          "   weaker, differently shaped force is needed:\n",
-          Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4), p.T0);
+          "   too strong for this shell. Orbit sizes scale with T0 (docs/model.md section 6): "
+          "this\n"
+          "   gait would fit for T0 <= {} (a shorter shell or a faster motor).\n",
+          Num(v.x_min, 4), Num(p.T0 / (1.0 - v.x_min), 4));
     }
   }
-  t += fmt::format("\n2. The fastest valid gait (P2): A, c and phi0 free, A + c <= {:g}.\n", bound);
-  t += fastest.found() ? GaitText(fastest)
-                       : fmt::format("   Result: none found ({})\n", fastest.message);
   t += fmt::format(
-      "\n3. The fastest stable gait (P2 with spectral radius <= {:g}, docs/model.md section 8):\n",
-      rho_max);
-  t += stable.found() ? GaitText(stable)
-                      : fmt::format("   Result: none found ({})\n", stable.message);
-  if (fastest.found() && stable.found()) {
-    t += fmt::format(
-        "\nIn short: the fastest valid gait moves {} L per period with inner mass ratio {};\n"
-        "the fastest stable one, the gait a real robot can settle on, moves {} L per period\n"
-        "({} of the former) with inner mass ratio {}.\n",
-        Num(fastest.solution.orbit.I, 5), Num(fastest.solution.orbit.alpha, 4),
-        Num(stable.solution.orbit.I, 5),
-        fmt::format("{:.1f}%", 100.0 * stable.solution.orbit.I / fastest.solution.orbit.I),
-        Num(stable.solution.orbit.alpha, 4));
-  }
+      "\n2. The fastest robust one-impact gait (P2: A, c, phi0 free, A + c <= {:g}, spectral\n"
+      "   radius <= {:g}), checked from rest on {} starts:\n",
+      bound, rho_max, reach.seed.from_rest.attractors.starts);
+  t += robust.found() ? GaitText(robust) + FromRestText(reach.seed.from_rest)
+                      : fmt::format("   Result: none found ({})\n", robust.message);
+  t += fmt::format(
+      "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
+      "   simulated from every start:\n",
+      bound);
+  t += ReachText(reach);
+  t += Advice(robust, reach);
   t += fmt::format("\nwritten: {}\n", opt.output);
   fmt::print("{}", t);
+  return 0;
+}
+
+// --problem reach: the fastest motion from rest, seeded with the robust gait.
+int RunReach(const OptimizeCliOptions& opt) {
+  OptimizeCliOptions stable_opt = opt;
+  stable_opt.rho_max = std::isnan(opt.rho_max) ? kRobustRhoMax : opt.rho_max;
+  const OptimizeResult robust = OptimizeForcing(opt.params, DesignOptions(stable_opt, true));
+  const ReachResult reach =
+      OptimizeReach(opt.params, robust, opt.from_rest.Reach(opt.bound, opt.alpha));
+  nlohmann::json j = ReachJson(reach);
+  if (opt.output_option->count() > 0) WriteJson(j, opt.output);
+  if (opt.json) {
+    fmt::print("{}\n", j.dump());
+    return 0;
+  }
+  fmt::print(
+      "capsubot optimize --problem reach: T0 = {:g}, e = {:g}\n  status           {}\n  "
+      "{}\n{}",
+      opt.params.T0, opt.params.e, OptimizeStatusName(reach.status), reach.message,
+      ReachText(reach));
   return 0;
 }
 
@@ -274,7 +347,9 @@ int RunProblem(const OptimizeCliOptions& opt) {
     if (stable) fo.rho_max = opt.rho_max;
     r = OptimizeFourier(p, fo);
   }
+  const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, opt.from_rest.Check());
   nlohmann::json j = ResultJson(r, opt.problem.c_str());
+  j["from_rest"] = FromRestJson(from_rest);
   j["T0"] = p.T0;
   j["e"] = p.e;
   j["margin"] = p.margin;
@@ -293,7 +368,7 @@ int RunProblem(const OptimizeCliOptions& opt) {
                    opt.problem, p.T0, p.e, p.margin,
                    stable ? fmt::format(", spectral radius <= {:g}", opt.rho_max) : "");
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r);
+  t += GaitText(r) + FromRestText(from_rest);
   if (opt.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",
@@ -327,7 +402,8 @@ int Run(const OptimizeCliOptions& opt) {
     throw std::invalid_argument(fmt::format(
         "--stable = {} is invalid: expected a spectral radius bound rho_max > 0", opt.rho_max));
   }
-  return opt.problem.empty() ? RunMainJob(opt) : RunProblem(opt);
+  if (opt.problem.empty()) return RunMainJob(opt);
+  return opt.problem == "reach" ? RunReach(opt) : RunProblem(opt);
 }
 
 }  // namespace
@@ -337,15 +413,17 @@ Command AddOptimizeCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "optimize",
       "The fastest gait (docs/model.md section 7). Without --problem: the main job, run from the "
-      "repository root: the paper's problem (best phase at c = A = T0/2), then the fastest "
-      "valid and the fastest stable gait with A + c <= T0; prints a summary and writes "
+      "repository root: the paper's problem (best phase at c = A = T0/2), the fastest robust "
+      "one-impact gait with A + c <= T0 checked from rest, and the fastest motion from rest; "
+      "prints a summary and which to build, and writes "
       "--output. With --problem: one problem. Exit status 0 whenever the computation ran, "
       "valid gait found or not.");
   cmd->add_option("--problem", opt->problem,
                   "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
                   "A + c <= --bound) or fourier (P3: best K-harmonic force with max |F| <= "
-                  "--bound); default: the main job")
-      ->check(CLI::IsMember({"phase", "forcing", "fourier"}));
+                  "--bound) or reach (the fastest motion from rest: A, c, alpha with A + c <= "
+                  "--bound, simulated, seeded with the robust P2 gait); default: the main job")
+      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}));
   opt->A_option =
       cmd->add_option("--A", opt->A,
                       "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
@@ -353,6 +431,14 @@ Command AddOptimizeCommand(CLI::App& app) {
   opt->c_option =
       cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
   AddParamsOptions(*cmd, opt->params);
+  AddFromRestOptions(*cmd, opt->from_rest, true);
+  cmd->add_option("--from-rest-csv", opt->from_rest_csv,
+                  "main job: write the robust gait's promised mean velocity and the attractors "
+                  "reached from rest (robust gait and fastest motion from rest) to this CSV file "
+                  "(columns gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,"
+                  "one_impact_orbit)");
+  cmd->add_option("--alpha", opt->alpha,
+                  "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
       cmd->add_option("--bound", opt->bound,
                       "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
@@ -396,7 +482,7 @@ Command AddOptimizeCommand(CLI::App& app) {
   opt->output_option->capture_default_str();
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
-                  "columns phi,F) to this CSV file (main job: the fastest valid gait's force)");
+                  "columns phi,F) to this CSV file (main job: the robust gait's force)");
   return {cmd, [opt] { return Run(*opt); }};
 }
 

@@ -3,6 +3,7 @@
 #   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
+#   reach_from_rest.csv, reach_from_rest.png: the main job's promised and reached speeds
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -41,6 +42,9 @@ c_grid="c=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'B
   -o "$out/map_valid.csv"
 "$cli" sweep --grid "$A_grid" --grid "$c_grid" --T0 $T0 --optimize phi0 --stable-only \
   --stability -o "$out/map_stable.csv"
+
+say "reach: the main job (optimum.json) and the speeds its robot reaches from rest"
+"$cli" optimize --output "$out/optimum.json" --from-rest-csv "$out/reach_from_rest.csv" > /dev/null
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -91,4 +95,6 @@ gnuplot -e "term='$term'; out='$out/fig3_I_vs_phi0.png';
 
 gnuplot -e "term='$term'; out='$out/map_best_velocity.png'; valid_data='$out/map_valid.csv';
   stable_data='$out/map_stable.csv'; T0=$T0; n=$n; lo=$lo; hi=$hi" "$gp/map.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; data='$out/reach_from_rest.csv'; out='$out/reach_from_rest.png'" \
+  "$gp/reach.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* | tr '\n' ' ')"

@@ -19,9 +19,14 @@ std::string TempPath(const std::string& name) {
   return "/tmp/capsubot_optimize_cli_" + std::to_string(::getpid()) + "_" + name;
 }
 
+// Reduced from-rest settings so the main job and the reach problem run quickly.
+const std::string kQuickReach =
+    " --from-rest-starts 2x2 --reach-starts 2x2 --reach-evaluations 10 "
+    "--reach-local-evaluations 5 --hops 2 --starts 3";
+
 TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   const std::string path = TempPath("optimum.json");
-  const auto r = RunCli("optimize --json --output " + path);
+  const auto r = RunCli("optimize --json --output " + path + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto printed = nlohmann::json::parse(r.out);
   std::ifstream in(path);
@@ -30,23 +35,82 @@ TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   std::remove(path.c_str());
   EXPECT_EQ(printed, written);
   // The paper's problem at the paper's T0 = 1 has no valid orbit (docs/model.md section 6).
-  EXPECT_EQ(written["paper_phase"]["status"], "no_valid_orbit");
-  EXPECT_EQ(written["paper_phase"]["violations"], nlohmann::json({"left_wall"}));
-  EXPECT_EQ(written["fastest"]["status"], "ok");
-  EXPECT_EQ(written["fastest_stable"]["status"], "ok");
-  EXPECT_LE(written["fastest_stable"]["I"].get<double>(), written["fastest"]["I"].get<double>());
-  EXPECT_LE(written["fastest_stable"]["spectral_radius"].get<double>(), 1.0);
+  EXPECT_EQ(written["paper"]["status"], "no_valid_orbit");
+  EXPECT_EQ(written["paper"]["violations"], nlohmann::json({"left_wall"}));
+  // The robust gait: today's gait keys, spectral radius <= 0.9, and its check from rest.
+  const auto& robust = written["robust"];
+  EXPECT_EQ(robust["status"], "ok");
+  for (const char* key : {"A", "c", "phi0", "alpha", "I", "v_mean", "x_min", "x_max",
+                          "spectral_radius", "from_rest"}) {
+    EXPECT_TRUE(robust.contains(key)) << key;
+  }
+  EXPECT_LE(robust["spectral_radius"].get<double>(), 0.9 + 1e-9);
+  const auto& from_rest = robust["from_rest"];
+  EXPECT_EQ(from_rest["starts"], 4);
+  for (const char* key :
+       {"attractors", "mean_velocity", "event_limit_starts", "reached", "summary"}) {
+    EXPECT_TRUE(from_rest.contains(key)) << key;
+  }
+  EXPECT_LE(from_rest["reached"].get<int>(), 4);
+  // The fastest motion from rest: never slower from rest than the robust gait.
+  const auto& reach = written["reach"];
+  for (const char* key : {"A", "c", "alpha", "mean_velocity", "attractors", "spread", "seed"}) {
+    EXPECT_TRUE(reach.contains(key)) << key;
+  }
+  EXPECT_EQ(reach["attractors"]["starts"], 4);
+  EXPECT_GE(reach["mean_velocity"].get<double>(), from_rest["mean_velocity"].get<double>());
+  EXPECT_EQ(reach["seed"]["mean_velocity_from_rest"], from_rest["mean_velocity"]);
 }
 
-TEST(OptimizeCli, MainJobSummaryNamesGaitMassRatioAndSpeed) {
+TEST(OptimizeCli, MainJobSummarySaysWhatTheRobotReachesAndWhichToBuild) {
   const std::string path = TempPath("summary.json");
-  const auto r = RunCli("optimize --output " + path);
+  const auto r = RunCli("optimize --output " + path + kQuickReach);
   std::remove(path.c_str());
   ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* text : {"NO valid gait", "fastest valid gait", "fastest stable gait",
-                           "inner mass ratio", "shell lengths per period", "left_wall"}) {
+  for (const char* text : {"NO valid gait", "fastest robust one-impact gait", "inner mass ratio",
+                           "shell lengths per period", "left_wall", "reached from rest in",
+                           "fastest motion from rest", "Which to build"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << "missing \"" << text << "\" in\n" << r.out;
   }
+}
+
+TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
+  const auto r = RunCli("optimize --problem reach --json" + kQuickReach);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key :
+       {"status", "message", "A", "c", "phi0", "alpha", "mean_velocity", "attractors", "summary",
+        "spread", "seed_won", "robust_to_settings", "evaluations", "rejected_evaluations",
+        "search_seconds", "algorithm", "seed"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  for (const char* key : {"chatter_small", "chatter_large", "e_0999", "max_relative_deviation",
+                          "event_limit_starts"}) {
+    EXPECT_TRUE(j["spread"].contains(key)) << key;
+  }
+  for (const char* key : {"A", "c", "phi0", "alpha", "I", "mean_velocity_from_rest", "reached"}) {
+    EXPECT_TRUE(j["seed"].contains(key)) << key;
+  }
+  EXPECT_EQ(j["attractors"]["starts"], 4);
+  EXPECT_GE(j["mean_velocity"].get<double>(), j["seed"]["mean_velocity_from_rest"].get<double>());
+  EXPECT_LE(j["A"].get<double>() + j["c"].get<double>(), 1.0 + 1e-12);
+}
+
+TEST(OptimizeCli, ReachWithFixedAlphaKeepsIt) {
+  const auto r = RunCli("optimize --problem reach --alpha 0.5 --json" + kQuickReach);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["alpha"], 0.5);
+}
+
+TEST(OptimizeCli, SingleProblemsReportTheirGaitFromRest) {
+  const auto r = RunCli(
+      "optimize --problem phase --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --json "
+      "--from-rest-starts 2x2");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["from_rest"].is_object()) << r.out;
+  EXPECT_EQ(j["from_rest"]["starts"], 4);
+  EXPECT_TRUE(j["from_rest"].contains("reached"));
 }
 
 TEST(OptimizeCli, ForcingJsonHasEveryDocumentedKey) {
