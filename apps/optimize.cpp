@@ -194,8 +194,9 @@ std::string Advice(const OptimizeResult& robust, const ReachResult& reach) {
       Num(reach.forcing.amplitude(), 4), Num(reach.forcing.mean(), 4), Num(reach.alpha, 4),
       Num(reach.mean_velocity, 4), odds);
   if (!reach.robust_to_settings) {
-    t += "  Caution: its mean velocity changes under other numerical settings (see \"settings\"\n"
-         "  above): check it with a finer simulation before building.\n";
+    t += "  Caution: under other numerical settings (see \"settings\" above) its starts hit the\n"
+         "  work bound or its mean velocity moves by more than 1 %: check it with a finer\n"
+         "  simulation before building.\n";
   }
   if (robust.found() && fr.checked) {
     t += fmt::format(

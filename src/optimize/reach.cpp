@@ -224,12 +224,9 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                           const ReachOptions& options) {
   options.Validate();
   params.Validate();
-  const double bound = std::isnan(options.force_bound) ? params.T0 : options.force_bound;
-  Require(bound <= params.T0,
-          fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
-                      "above the friction bound moves the capsule without impacts, docs/model.md "
-                      "section 6)",
-                      bound, params.T0));
+  SearchOptions bound_options;  // the force bound's rule is that of P2 and P3
+  bound_options.force_bound = options.force_bound;
+  const double bound = bound_options.BoundFor(params);
   ReachResult out;
   out.seed.gait = seed;
   const Orbit& so = seed.solution.orbit;
