@@ -1,7 +1,9 @@
 // capsubot optimize: the fastest gait (docs/model.md section 7) with the margins of a robust
-// gait (section 12). Without --problem it runs the main job: the paper's problem P1 at
-// c = A = T0/2, the fastest robust gait (P2 with the margins), and for comparison the exact
-// optima without margins (valid; stable). Prints a summary (or --json); -o writes the JSON.
+// gait (section 12), every gait checked from rest. Without --problem it runs the main job: the
+// paper's problem P1 at c = A = T0/2, the fastest robust gait (P2 with the margins) checked from
+// rest, the fastest motion from rest (reach, section 13), for comparison the exact optima
+// without margins (valid; stable), and which gait to build. Prints a summary (or --json); -o
+// writes the JSON.
 
 #include "capsubot/optimize.hpp"
 
@@ -19,6 +21,7 @@
 #include "capsubot/io.hpp"
 #include "capsubot/scaling.hpp"
 #include "commands.hpp"
+#include "from_rest_report.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -27,10 +30,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kForceCsvRows = 1001;
-// The robust defaults of the command (docs/model.md section 12); the library's are 0 and inf.
-constexpr double kDefaultMarginStroke = 0.02;
-constexpr double kDefaultStickMargin = 0.02;
-constexpr double kDefaultRhoMax = 0.9;
 
 // P2's library defaults (one instance: the defaults of the options below).
 const ForcingDesignOptions& P2Defaults() {
@@ -39,7 +38,7 @@ const ForcingDesignOptions& P2Defaults() {
 }
 
 struct OptimizeCliOptions {
-  std::string problem;  // "", phase, forcing, fourier
+  std::string problem;  // "", phase, forcing, fourier, reach
   double A = kNaN;      // NaN: not given
   double c = kNaN;
   CLI::Option* A_option = nullptr;
@@ -54,29 +53,39 @@ struct OptimizeCliOptions {
   CLI::Option* starts_option = nullptr;
   int global_evaluations = P2Defaults().global_evaluations;
   int hops = P2Defaults().hops;
-  double rho_max = kDefaultRhoMax;
+  double rho_max = kRobustRhoMax;  // the robust default; the library's is inf
   double max_time = P2Defaults().max_time;
   bool json = false;
   std::string output;  // empty: no file
   std::string force_csv;
+  FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
+  double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
+  std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
   CLI::App* cmd = nullptr;
 };
 
 // The runs that use an option: "" is the main job (no --problem), else a problem name.
 struct OptionUse {
   const char* option;
-  std::array<const char*, 3> runs;
+  std::array<const char*, 4> runs;
 };
+// The P2 options apply to reach through its seed, the robust gait.
 const OptionUse kOptionUses[] = {
     {"--A", {"phase"}},
     {"--c", {"phase"}},
     {"--harmonics", {"fourier"}},
-    {"--hops", {"", "forcing"}},
-    {"--starts", {"", "forcing", "fourier"}},
-    {"--bound", {"", "forcing", "fourier"}},
-    {"--global-algorithm", {"", "forcing", "fourier"}},
-    {"--local-algorithm", {"", "forcing", "fourier"}},
-    {"--global-evaluations", {"", "forcing", "fourier"}},
+    {"--hops", {"", "forcing", "reach"}},
+    {"--starts", {"", "forcing", "fourier", "reach"}},
+    {"--bound", {"", "forcing", "fourier", "reach"}},
+    {"--global-algorithm", {"", "forcing", "fourier", "reach"}},
+    {"--local-algorithm", {"", "forcing", "fourier", "reach"}},
+    {"--global-evaluations", {"", "forcing", "fourier", "reach"}},
+    {"--alpha", {"reach"}},
+    {"--reach-starts", {"", "reach"}},
+    {"--reach-evaluations", {"", "reach"}},
+    {"--reach-local-evaluations", {"", "reach"}},
+    {"--reach-seconds", {"", "reach"}},
+    {"--from-rest-csv", {""}},
 };
 
 std::string RunName(const std::string& problem) {
@@ -153,21 +162,25 @@ void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
   j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
 }
 
-void WriteJson(const nlohmann::json& j, const std::string& path) {
-  AtomicFile file(path, "-o");
-  file.stream() << j.dump(2) << '\n';
-  file.Commit();
+// The files asked for, opened before any work (a bad path fails at once) and committed
+// when their content is complete; null: not asked for.
+struct OutputFiles {
+  std::unique_ptr<AtomicFile> json, force_csv, from_rest_csv;
+};
+
+std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* option) {
+  return path.empty() ? nullptr : std::make_unique<AtomicFile>(path, option);
 }
 
-void WriteForceCsv(const Forcing& f, const std::string& path) {
-  AtomicFile file(path, "--force-csv");
-  auto& out = file.stream();
+void WriteForceCsv(const Forcing& f, AtomicFile* file) {
+  if (file == nullptr) return;
+  auto& out = file->stream();
   out << "phi,F\n";  // phi = 0 is the impact
   for (int i = 0; i < kForceCsvRows; ++i) {
     const double phi = kTau * i / (kForceCsvRows - 1);
     out << FormatNumber(phi) << ',' << FormatNumber(f.F(phi)) << '\n';
   }
-  file.Commit();
+  file->Commit();
 }
 
 // What an active constraint or binding margin means for the gait.
@@ -255,8 +268,12 @@ PhaseOptions PhaseFor(const OptimizeCliOptions& opt) {
   return po;
 }
 
-void Emit(const nlohmann::json& j, const std::string& text, const OptimizeCliOptions& opt) {
-  if (!opt.output.empty()) WriteJson(j, opt.output);
+void Emit(const nlohmann::json& j, const std::string& text, const OptimizeCliOptions& opt,
+          AtomicFile* json_file) {
+  if (json_file != nullptr) {
+    json_file->stream() << j.dump(2) << '\n';
+    json_file->Commit();
+  }
   if (opt.json) {
     fmt::print("{}\n", j.dump());
   } else {
@@ -264,7 +281,47 @@ void Emit(const nlohmann::json& j, const std::string& text, const OptimizeCliOpt
   }
 }
 
-int RunMainJob(const OptimizeCliOptions& opt) {
+// Which gait to build, in plain words: the reach winner when it beats the robust gait from
+// rest, else the robust gait.
+std::string Advice(const OptimizeResult& robust, const ReachResult& reach) {
+  const GaitFromRest& fr = reach.seed.from_rest;
+  std::string t = "\nWhich to build:\n";
+  if (std::isnan(reach.mean_velocity)) {
+    return t + "  no motion from rest could be checked: see the messages above.\n";
+  }
+  const Attractor& top = reach.attractors.attractors.front();
+  const std::string odds =
+      top.fraction == 1.0
+          ? std::string("every start from rest ends in it")
+          : fmt::format("{:.0f} % of the starts from rest end in its most common motion",
+                        100.0 * top.fraction);
+  if (reach.seed_won) {
+    return t + fmt::format(
+                   "  the robust gait (2): it is also the fastest motion found from rest,\n"
+                   "  {} omega L on average over the starts; {}.\n",
+                   Num(reach.mean_velocity, 4), fr.summary);
+  }
+  t += fmt::format(
+      "  the motion of 3 (A = {}, c = {}, alpha = {}): from rest the robot moves at {} omega L\n"
+      "  on average over the starts; {}.\n",
+      Num(reach.forcing.amplitude(), 4), Num(reach.forcing.mean(), 4), Num(reach.alpha, 4),
+      Num(reach.mean_velocity, 4), odds);
+  if (!reach.robust_to_settings) {
+    t += "  Caution: under other numerical settings (see \"settings\" above) its starts hit the\n"
+         "  work bound or its mean velocity moves by more than 1 %: check it with a finer\n"
+         "  simulation before building.\n";
+  }
+  if (robust.found() && fr.checked) {
+    t += fmt::format(
+        "  The robust gait (2) promises {} omega L, but from rest the robot averages\n"
+        "  {} omega L with it ({} of {} starts end on it).\n",
+        Num(robust.solution.orbit.v_mean, 4), Num(fr.attractors.mean_velocity, 4), fr.reached,
+        fr.attractors.starts);
+  }
+  return t;
+}
+
+int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   const Params& p = opt.params;
   Params exact = p;  // the exact optima: no margins
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
@@ -274,8 +331,11 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   paper_options.rho_max = kInf;
   const OptimizeResult paper =
       OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, paper_options);
-  // 2. The fastest robust gait; 3. the exact optima, valid and stable, for comparison.
+  // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
+  // seeded with it; 4. the exact optima, valid and stable, for comparison.
   const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  const ReachResult reach =
+      OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, ReachOptions::kNaN));
   const OptimizeResult fastest = OptimizeForcing(exact, DesignOptions(opt, kInf));
   const OptimizeResult stable = OptimizeForcing(exact, DesignOptions(opt, 1.0));
   const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
@@ -283,22 +343,26 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   nlohmann::json j;
   AddRequirementsJson(j, p, opt.rho_max);
   j["force_bound"] = bound;
-  j["paper_phase"] = ResultJson(paper, "phase");
-  j["paper_phase"]["note"] =
+  j["paper"] = ResultJson(paper, "phase");
+  j["paper"]["note"] =
       "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no margins)";
   j["robust"] = ResultJson(robust, "forcing");
   j["robust"]["note"] =
-      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= rho_max";
+      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= "
+      "rho_max; checked from rest";
+  j["robust"]["from_rest"] = FromRestJson(reach.seed.from_rest);
+  j["reach"] = ReachJson(reach);
   j["fastest"] = ResultJson(fastest, "forcing");
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = ResultJson(stable, "forcing");
   j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
-  if (!opt.force_csv.empty()) WriteForceCsv(robust.solution.orbit.forcing, opt.force_csv);
+  WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
+  if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
   std::string t;
   t += fmt::format(
-      "capsubot optimize: the fastest one-impact gait of the capsule robot (docs/model.md "
-      "section 7)\n"
+      "capsubot optimize: the fastest gait of the capsule robot that the robot reaches "
+      "(docs/model.md sections 7, 12, 13)\n"
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution)\n"
       "robust gait (docs/model.md section 12): clearance >= max(d = {:g}, d_s = {:g} x stroke), "
       "stick margin s = {:g}, spectral radius <= {:g}\n"
@@ -335,11 +399,16 @@ int RunMainJob(const OptimizeCliOptions& opt) {
   }
   t += fmt::format(
       "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
-      "   above. This is the gait to build.\n",
-      bound);
-  t += robust.found() ? GaitText(robust, opt.rho_max)
+      "   above; checked from rest on {} starts.\n",
+      bound, reach.seed.from_rest.attractors.starts);
+  t += robust.found() ? GaitText(robust, opt.rho_max) + FromRestText(reach.seed.from_rest)
                       : fmt::format("   Result: none found ({})\n", robust.message);
-  t += "\n3. For comparison, the exact optima without margins (they graze the walls: a robot\n"
+  t += fmt::format(
+      "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
+      "   simulated from every start:\n",
+      bound);
+  t += ReachText(reach);
+  t += "\n4. For comparison, the exact optima without margins (they graze the walls: a robot\n"
        "   with slightly different parameters does something else).\n"
        "   The fastest valid gait:\n";
   t += fastest.found() ? GaitText(fastest, kInf)
@@ -355,11 +424,29 @@ int RunMainJob(const OptimizeCliOptions& opt) {
         fmt::format("{:.1f}%", 100.0 * robust.solution.orbit.I / fastest.solution.orbit.I),
         Num(fastest.solution.orbit.I, 5), Join(BindingNames(robust)));
   }
-  Emit(j, t, opt);
+  t += Advice(robust, reach);
+  Emit(j, t, opt, files.json.get());
   return 0;
 }
 
-int RunProblem(const OptimizeCliOptions& opt) {
+// --problem reach: the fastest motion from rest, seeded with the robust gait.
+int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
+  const Params& p = opt.params;
+  const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  const ReachResult reach = OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, opt.alpha));
+  nlohmann::json j = ReachJson(reach);
+  AddRequirementsJson(j, p, opt.rho_max);  // those of the seed
+  WriteForceCsv(reach.forcing, files.force_csv.get());
+  const std::string t = fmt::format(
+      "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
+      "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  {}\n{}",
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max,
+      OptimizeStatusName(reach.status), reach.message, ReachText(reach));
+  Emit(j, t, opt, files.json.get());
+  return 0;
+}
+
+int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, OutputFiles& files) {
   const Params& p = opt.params;
   OptimizeResult r;
   if (opt.problem == "phase") {
@@ -379,20 +466,22 @@ int RunProblem(const OptimizeCliOptions& opt) {
     fo.search.global_evaluations = opt.global_evaluations;
     r = OptimizeFourier(p, fo);
   }
+  const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   nlohmann::json j = ResultJson(r, opt.problem.c_str());
+  j["from_rest"] = FromRestJson(from_rest);
   AddRequirementsJson(j, p, opt.rho_max);
   if (opt.problem == "fourier") {
     j["baseline_I"] = r.baseline_I;
     j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
   }
-  if (!opt.force_csv.empty()) WriteForceCsv(r.solution.orbit.forcing, opt.force_csv);
+  WriteForceCsv(r.solution.orbit.forcing, files.force_csv.get());
   std::string t;
   t += fmt::format(
       "capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, "
       "s = {:g}, spectral radius <= {:g}\n",
       opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max);
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r, opt.rho_max);
+  t += GaitText(r, opt.rho_max) + FromRestText(from_rest);
   if (opt.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",
@@ -400,7 +489,7 @@ int RunProblem(const OptimizeCliOptions& opt) {
                   : std::string("-"),
         Num(r.baseline_I, 8));
   }
-  Emit(j, t, opt);
+  Emit(j, t, opt, files.json.get());
   return 0;
 }
 
@@ -435,28 +524,45 @@ int Run(const OptimizeCliOptions& opt) {
         "--max-time = {} is invalid: expected a time limit > 0 seconds (inf: none)", opt.max_time));
   }
   opt.params.Validate();
-  return opt.problem.empty() ? RunMainJob(opt) : RunProblem(opt);
+  // The options of the work to come, checked before any of it starts.
+  const FromRestOptions check = opt.from_rest.Check();
+  if (opt.problem.empty() || opt.problem == "reach") {
+    opt.from_rest.Reach(opt.bound, opt.alpha).Validate();
+  }
+  if (opt.problem != "phase") {
+    const ForcingDesignOptions design = DesignOptions(opt, opt.rho_max);
+    design.Validate();
+    design.BoundFor(opt.params);
+  }
+  OutputFiles files;
+  files.json = OpenIfAsked(opt.output, "-o");
+  files.force_csv = OpenIfAsked(opt.force_csv, "--force-csv");
+  files.from_rest_csv = OpenIfAsked(opt.from_rest_csv, "--from-rest-csv");
+  if (opt.problem.empty()) return RunMainJob(opt, files);
+  return opt.problem == "reach" ? RunReach(opt, files) : RunProblem(opt, check, files);
 }
 
 }  // namespace
 
 Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
-  opt->params.margin_stroke = kDefaultMarginStroke;
-  opt->params.stick_margin = kDefaultStickMargin;
+  opt->params.margin_stroke = kRobustMarginStroke;
+  opt->params.stick_margin = kRobustStickMargin;
   CLI::App* cmd = app.add_subcommand(
       "optimize",
       "The fastest gait (docs/model.md section 7) with the margins of a robust gait (section "
-      "12). Without --problem: the main job: the paper's problem (best phase at c = A = T0/2), "
-      "the fastest robust gait with A + c <= T0, and the exact optima without margins (valid, "
-      "stable) for comparison. With --problem: one problem. Prints a summary (or --json); -o "
-      "also writes the JSON. Exit status 0 whenever the computation ran, valid gait found or "
-      "not.");
+      "12), every gait checked from rest. Without --problem: the main job: the paper's problem "
+      "(best phase at c = A = T0/2), the fastest robust gait with A + c <= T0 checked from "
+      "rest, the fastest motion from rest (section 13), the exact optima without margins "
+      "(valid, stable) for comparison, and which gait to build. With --problem: one problem. "
+      "Prints a summary (or --json); -o also writes the JSON. Exit status 0 whenever the "
+      "computation ran, valid gait found or not.");
   cmd->add_option("--problem", opt->problem,
                   "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
-                  "A + c <= --bound) or fourier (P3: best K-harmonic force with max |F| <= "
-                  "--bound); default: the main job")
-      ->check(CLI::IsMember({"phase", "forcing", "fourier"}));
+                  "A + c <= --bound), fourier (P3: best K-harmonic force with max |F| <= "
+                  "--bound) or reach (the fastest motion from rest: A, c, alpha with A + c <= "
+                  "--bound, simulated, seeded with the robust P2 gait); default: the main job")
+      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}));
   opt->A_option =
       cmd->add_option("--A", opt->A,
                       "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
@@ -464,6 +570,14 @@ Command AddOptimizeCommand(CLI::App& app) {
   opt->c_option =
       cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
   AddParamsOptions(*cmd, opt->params);
+  AddFromRestOptions(*cmd, opt->from_rest, true);
+  cmd->add_option("--from-rest-csv", opt->from_rest_csv,
+                  "main job: write the robust gait's promised mean velocity and the attractors "
+                  "reached from rest (robust gait and fastest motion from rest) to this CSV file "
+                  "(columns gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,"
+                  "one_impact_orbit)");
+  cmd->add_option("--alpha", opt->alpha,
+                  "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
       cmd->add_option("--bound", opt->bound,
                       "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
@@ -511,15 +625,17 @@ Command AddOptimizeCommand(CLI::App& app) {
                 "print one JSON object: status, I, v_mean, A, c, phi0, phi1, alpha, u, v_plus, "
                 "x_min, x_max, stroke, clearance, active_constraints, binding, evaluations, "
                 "algorithm, the margins and rho_max (+ coefficients for fourier, "
-                "spectral_radius when the orbit exists; null where a quantity does not exist); "
-                "the main job prints one object with paper_phase, robust, fastest, "
-                "fastest_stable");
+                "spectral_radius when the orbit exists, from_rest: the gait checked from rest; "
+                "null where a quantity does not exist); --problem reach prints the reach object; "
+                "the main job prints one object with paper, robust (with from_rest), reach, "
+                "fastest, fastest_stable");
   cmd->add_option("-o,--output", opt->output,
                   "also write the JSON object (indented) to this file, atomically; nothing is "
                   "written without it");
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
-                  "columns phi,F) to this CSV file (main job: the robust gait's force)");
+                  "columns phi,F) to this CSV file (main job: the robust gait's force; reach: the "
+                  "winner's)");
   opt->cmd = cmd;
   return {cmd, [opt] { return Run(*opt); }};
 }

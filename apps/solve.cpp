@@ -9,6 +9,7 @@
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
+#include "from_rest_report.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -21,6 +22,7 @@ struct SolveOptions {
   bool stability = false;
   std::string trajectory;
   int samples = 1001;
+  FromRestCliOptions from_rest;  // with --stability: the orbit checked from rest
 };
 
 void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
@@ -38,6 +40,7 @@ void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
 
 int Run(const SolveOptions& opt) {
   opt.params.Validate();
+  const FromRestOptions from_rest_options = opt.from_rest.Check();  // bad grids before any work
   const Forcing forcing = opt.forcing.Build();
   const Solution s = Solve(forcing, opt.params);
   if (!opt.trajectory.empty()) {
@@ -48,15 +51,20 @@ int Run(const SolveOptions& opt) {
                  StatusName(s.orbit.status));
     }
   }
+  const GaitFromRest from_rest =
+      opt.stability ? CheckGaitFromRest(s.orbit, opt.params, from_rest_options) : GaitFromRest{};
   if (opt.json) {
     nlohmann::json j = SolutionJson(s);
     AddEnergyJson(j, OrbitEnergy(s.orbit));
     if (opt.stability) AddStabilityJson(j, ComputeStability(s.orbit));
+    if (opt.stability) j["from_rest"] = FromRestJson(from_rest);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", SolutionTable(s, opt.params));
     fmt::print("{}", EnergyTable(OrbitEnergy(s.orbit)));
-    if (opt.stability) fmt::print("{}", StabilityTable(ComputeStability(s.orbit)));
+    if (opt.stability) {
+      fmt::print("{}{}", StabilityTable(ComputeStability(s.orbit)), FromRestText(from_rest, 2));
+    }
   }
   return 0;
 }
@@ -77,10 +85,15 @@ Command AddSolveCommand(CLI::App& app) {
                 "v_mean, x_min, x_max, valid, violations, and energy {motor_work, "
                 "motor_work_positive, friction_loss, impact_loss} per period in (m1+m2) "
                 "omega^2 L^2; null where a quantity does not exist)");
-  cmd->add_flag("--stability", opt->stability,
-                "also compute the stability of the orbit (docs/model.md section 8): adds the keys "
-                "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "
-                "spectral_radius and stable (spectral_radius < 1) to --json");
+  cmd->add_flag(
+      "--stability", opt->stability,
+      "also compute the stability of the orbit (docs/model.md section 8): adds the keys "
+      "multipliers (array of {re, im}, the eigenvalues of the impact map's Jacobian), "
+      "spectral_radius and stable (spectral_radius < 1) to --json, and checks the orbit from "
+      "rest (docs/model.md section 12): from_rest = the attractors object of "
+      "`capsubot attractors --json` plus reached (starts that end on the orbit) and "
+      "summary");
+  AddFromRestOptions(*cmd, opt->from_rest, false);
   CLI::Option* trajectory =
       cmd->add_option("--trajectory", opt->trajectory,
                       "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "

@@ -7,6 +7,7 @@
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)
 #   design_m2_*.csv, design_example.json, design_speed_power.png: the example robot's design
 #   optimum.json                  the main job: `capsubot optimize -o results/optimum.json`
+#   reach_from_rest.csv, reach_from_rest.png: the main job's promised and reached speeds
 #   bifurcation_T0_*.csv, bifurcation_T0.png: long-run motions of the stable optimum's robot vs T0
 #   basins_coexisting.{csv,png}: basins of a one-impact orbit and a period-12 motion
 #   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
@@ -28,8 +29,8 @@ say() { echo "figures: $*" >&2; }
 table() { grep -v '^#' "$1"; }  # a CSV without its comment lines: header, then rows
 
 # --- the data (every number of results/REPRODUCTION.md comes from these commands) ----------
-say "the main job: the fastest robust gait (docs/optimize.md)"
-"$cli" optimize -o "$out/optimum.json" > /dev/null
+say "the main job: the robust gait and the fastest motion from rest (docs/optimize.md)"
+"$cli" optimize -o "$out/optimum.json" --from-rest-csv "$out/reach_from_rest.csv" > /dev/null
 
 say "Fig. 2: phi1(phi0), c = A = T0/2"
 "$cli" sweep --grid phi0=-pi:pi:721 --A 0.5 --c 0.5 --T0 1 -o "$out/fig2_phi1_vs_phi0.csv"
@@ -129,6 +130,8 @@ gnuplot -e "term='$term'; out='$out/fig3_I_vs_phi0.png';
 
 gnuplot -e "term='$term'; out='$out/map_best_velocity.png'; valid_data='$out/map_valid.csv';
   stable_data='$out/map_stable.csv'; T0=$T0; n=$n; lo=$lo; hi=$hi" "$gp/map.gp"
+gnuplot -e "term='$term'; data='$out/reach_from_rest.csv'; out='$out/reach_from_rest.png'" \
+  "$gp/reach.gp"
 read -r dm2 dspeed dpower < <(python3 -c 'import json, sys
 g = json.load(sys.stdin)["one_impact"]
 print(g["m2_kg"], g["speed_mm_s"], g["power_mw"])' < "$out/design_example.json")
@@ -148,4 +151,4 @@ say "basins of two coexisting attractors (drawn by capsubot basins through gnupl
   --plot "$out/basins_coexisting.png"
 gnuplot -e "term='$term'; out='$out/p2_T0_e.png'; valid_data='$out/p2_T0_e.csv';
   stable_data='$out/p2_T0_e_stable.csv'; n_T0=$n_T0" "$gp/p2_T0_e.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* design_* p2_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"

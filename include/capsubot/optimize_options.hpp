@@ -24,6 +24,13 @@ const char* MarginName(Margin margin);
 /// of the validity conditions (ConditionName) and MarginName(Margin::kRhoMax).
 inline constexpr const char* kForceBoundName = "force_bound";
 
+/// The robust gait the commands ask for by default and the reach search starts from
+/// (docs/model.md section 12): clearance d_s = 0.02 of the stroke (Params::margin_stroke),
+/// stick margin s = 0.02 (Params::stick_margin), spectral radius <= 0.9 (rho_max).
+inline constexpr double kRobustMarginStroke = 0.02;
+inline constexpr double kRobustStickMargin = 0.02;  ///< see kRobustMarginStroke
+inline constexpr double kRobustRhoMax = 0.9;        ///< see kRobustMarginStroke
+
 struct OptimizeOptions {
   static constexpr double kInf = std::numeric_limits<double>::infinity();
   /// Largest admissible spectral radius of the impact map (docs/model.md sections 8, 12);

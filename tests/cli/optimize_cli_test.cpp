@@ -25,9 +25,14 @@ std::string TempPath(const std::string& name) {
 // The margins and stability requirement of today's optima: none.
 constexpr const char* kNoMargins = " --margin 0 --margin-stroke 0 --stick-margin 0 --rho-max inf";
 
+// Reduced from-rest settings so the main job and the reach problem run quickly.
+const std::string kQuickReach =
+    " --from-rest-starts 2x2 --reach-starts 2x2 --reach-evaluations 10 "
+    "--reach-local-evaluations 5 --hops 2 --starts 3";
+
 TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   const std::string path = TempPath("optimum.json");
-  const auto r = RunCli("optimize --json -o " + path);
+  const auto r = RunCli("optimize --json -o " + path + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto printed = nlohmann::json::parse(r.out);
   std::ifstream in(path);
@@ -36,13 +41,14 @@ TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   std::remove(path.c_str());
   EXPECT_EQ(printed, written);
   // The paper's problem at the paper's T0 = 1 has no valid orbit (docs/model.md section 6).
-  EXPECT_EQ(written["paper_phase"]["status"], "no_valid_orbit");
-  EXPECT_EQ(written["paper_phase"]["violations"], nlohmann::json({"left_wall"}));
+  EXPECT_EQ(written["paper"]["status"], "no_valid_orbit");
+  EXPECT_EQ(written["paper"]["violations"], nlohmann::json({"left_wall"}));
   EXPECT_EQ(written["fastest"]["status"], "ok");
   EXPECT_EQ(written["fastest_stable"]["status"], "ok");
   EXPECT_LE(written["fastest_stable"]["I"].get<double>(), written["fastest"]["I"].get<double>());
   EXPECT_LE(written["fastest_stable"]["spectral_radius"].get<double>(), 1.0);
-  // The robust gait (defaults d_s = 0.02, s = 0.02, rho_max = 0.9) is slower than both.
+  // The robust gait (defaults d_s = 0.02, s = 0.02, rho_max = 0.9) is slower than both, has
+  // today's gait keys and its check from rest.
   const auto& robust = written["robust"];
   EXPECT_EQ(robust["status"], "ok");
   EXPECT_LE(robust["I"].get<double>(), written["fastest_stable"]["I"].get<double>());
@@ -50,24 +56,86 @@ TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   EXPECT_EQ(written["margin_stroke"], 0.02);
   EXPECT_EQ(written["stick_margin"], 0.02);
   EXPECT_EQ(written["rho_max"], 0.9);
+  for (const char* key : {"A", "c", "phi0", "alpha", "I", "v_mean", "x_min", "x_max",
+                          "spectral_radius", "binding", "from_rest"}) {
+    EXPECT_TRUE(robust.contains(key)) << key;
+  }
+  const auto& from_rest = robust["from_rest"];
+  EXPECT_EQ(from_rest["starts"], 4);
+  for (const char* key :
+       {"attractors", "mean_velocity", "event_limit_starts", "reached", "summary"}) {
+    EXPECT_TRUE(from_rest.contains(key)) << key;
+  }
+  EXPECT_LE(from_rest["reached"].get<int>(), 4);
+  // The fastest motion from rest: seeded with the robust gait, never slower from rest.
+  const auto& reach = written["reach"];
+  for (const char* key : {"A", "c", "alpha", "mean_velocity", "attractors", "spread", "seed"}) {
+    EXPECT_TRUE(reach.contains(key)) << key;
+  }
+  EXPECT_EQ(reach["attractors"]["starts"], 4);
+  EXPECT_GE(reach["mean_velocity"].get<double>(), from_rest["mean_velocity"].get<double>());
+  EXPECT_EQ(reach["seed"]["mean_velocity_from_rest"], from_rest["mean_velocity"]);
+  EXPECT_EQ(reach["seed"]["A"], robust["A"]);
+  EXPECT_EQ(reach["seed"]["alpha"], robust["alpha"]);
 }
 
-TEST(OptimizeCli, MainJobSummaryNamesGaitMassRatioSpeedAndBindingMarginsAndWritesNothing) {
-  const auto r = RunCli("optimize");
+TEST(OptimizeCli, MainJobSummarySaysWhatTheRobotReachesAndWhichToBuildAndWritesNothing) {
+  const auto r = RunCli("optimize" + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
   for (const char* text : {"NO valid gait", "fastest robust gait", "fastest valid gait",
                            "fastest stable gait", "inner mass ratio", "shell lengths per period",
-                           "left_wall", "margins binding  clearance_stroke, rho_max"}) {
+                           "left_wall", "margins binding  clearance_stroke, rho_max",
+                           "reached from rest in", "fastest motion from rest", "Which to build"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << "missing \"" << text << "\" in\n" << r.out;
   }
   EXPECT_EQ(r.out.find("written:"), std::string::npos);
   // Run in an empty folder: without -o nothing is written (no results/optimum.json).
   const std::filesystem::path dir = TempPath("main_job_dir");
   std::filesystem::create_directories(dir);
-  const std::string in_dir = "cd " + dir.string() + " && " + CAPSUBOT_CLI + " optimize > /dev/null";
+  const std::string in_dir =
+      "cd " + dir.string() + " && " + CAPSUBOT_CLI + " optimize" + kQuickReach + " > /dev/null";
   ASSERT_EQ(std::system(in_dir.c_str()), 0);
   EXPECT_TRUE(std::filesystem::is_empty(dir)) << "the main job wrote into " << dir;
   std::filesystem::remove_all(dir);
+}
+
+TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
+  const auto r = RunCli("optimize --problem reach --json" + kQuickReach);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key :
+       {"status", "message", "A", "c", "phi0", "alpha", "mean_velocity", "attractors", "summary",
+        "spread", "seed_won", "robust_to_settings", "evaluations", "rejected_evaluations",
+        "search_seconds", "algorithm", "seed"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  for (const char* key : {"chatter_small", "chatter_large", "e_0999", "max_relative_deviation",
+                          "event_limit_starts"}) {
+    EXPECT_TRUE(j["spread"].contains(key)) << key;
+  }
+  for (const char* key : {"A", "c", "phi0", "alpha", "I", "mean_velocity_from_rest", "reached"}) {
+    EXPECT_TRUE(j["seed"].contains(key)) << key;
+  }
+  EXPECT_EQ(j["attractors"]["starts"], 4);
+  EXPECT_GE(j["mean_velocity"].get<double>(), j["seed"]["mean_velocity_from_rest"].get<double>());
+  EXPECT_LE(j["A"].get<double>() + j["c"].get<double>(), 1.0 + 1e-12);
+}
+
+TEST(OptimizeCli, ReachWithFixedAlphaKeepsIt) {
+  const auto r = RunCli("optimize --problem reach --alpha 0.5 --json" + kQuickReach);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["alpha"], 0.5);
+}
+
+TEST(OptimizeCli, SingleProblemsReportTheirGaitFromRest) {
+  const auto r = RunCli(
+      "optimize --problem phase --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --json "
+      "--from-rest-starts 2x2");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["from_rest"].is_object()) << r.out;
+  EXPECT_EQ(j["from_rest"]["starts"], 4);
+  EXPECT_TRUE(j["from_rest"].contains("reached"));
 }
 
 TEST(OptimizeCli, ForcingJsonHasEveryDocumentedKey) {
@@ -164,7 +232,22 @@ TEST(OptimizeCli, BadInputExitsTwoWithOneLineNamingTheRule) {
              "stick margin s = 1 is invalid: expected 0 <= s < 1"},
         Case{"--problem forcing --max-time 0", "--max-time = 0 is invalid"},
         Case{"--problem speed", "--problem"},
-        Case{"-o /nonexistent_dir/optimum.json", "/nonexistent_dir/optimum.json"}}) {
+        Case{"--problem reach --bound 2", "force_bound = 2 is invalid"},
+        Case{"--problem reach --alpha 2",
+             "alpha = 2 is invalid: expected 0 < alpha < 1 (or NaN: free)"},
+        Case{"--problem reach --reach-evaluations 0",
+             "global_evaluations = 0 is invalid: expected at least 1"},
+        Case{"--from-rest-starts 0x3", "--from-rest-starts = 0x3 is invalid: expected NXxNPSI"},
+        Case{"--alpha 0.5",
+             "--alpha conflicts with the main job (no --problem): expected --alpha only with "
+             "--problem reach"},
+        Case{"--problem forcing --reach-seconds 5",
+             "--reach-seconds conflicts with --problem forcing"},
+        Case{"--problem fourier --from-rest-csv /tmp/x.csv",
+             "--from-rest-csv conflicts with --problem fourier"},
+        // Output paths are opened before any work: the main job fails at once.
+        Case{"-o /nonexistent_dir/optimum.json", "/nonexistent_dir/optimum.json"},
+        Case{"--from-rest-csv /nonexistent_dir/from_rest.csv", "/nonexistent_dir/from_rest.csv"}}) {
     const auto r = RunCli(std::string("optimize ") + c.args + " 2>&1");
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out;
     EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;

@@ -181,3 +181,27 @@ TEST(SolveCli, UnwritableTrajectoryIsAnError) {
 
 }  // namespace
 }  // namespace capsubot
+
+namespace capsubot {
+namespace {
+
+TEST(SolveCli, StabilityChecksTheOrbitFromRest) {
+  // A stable orbit with clearance (spectral radius 0.16): reached from rest by some starts.
+  const auto r = testing::RunCli(
+      "solve --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --phi0 -2.842 --stability --json "
+      "--from-rest-starts 4x4");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& fr = j["from_rest"];
+  EXPECT_EQ(fr["starts"], 16);
+  EXPECT_GE(fr["reached"].get<int>(), 1);
+  int on_orbit = 0;
+  for (const auto& a : fr["attractors"]) {
+    if (a["one_impact_orbit"].get<bool>()) on_orbit += a["starts"].get<int>();
+  }
+  EXPECT_EQ(fr["reached"].get<int>(), on_orbit);
+  EXPECT_EQ(fr["summary"].get<std::string>().rfind("reached from rest in", 0), 0U);
+}
+
+}  // namespace
+}  // namespace capsubot

@@ -1,0 +1,156 @@
+#include "from_rest_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include "attract_options.hpp"
+#include "capsubot/io.hpp"
+#include "report.hpp"
+
+namespace capsubot::app {
+
+FromRestOptions FromRestCliOptions::Check() const {
+  FromRestOptions o;
+  std::tie(o.n_x, o.n_psi) = ParseGridSize("--from-rest-starts", starts);
+  o.attractor.threads = threads;
+  return o;
+}
+
+ReachOptions FromRestCliOptions::Reach(double force_bound, double alpha) const {
+  ReachOptions r;
+  r.force_bound = force_bound;
+  r.alpha = alpha;
+  std::tie(r.search.n_x, r.search.n_psi) = ParseGridSize("--reach-starts", reach_starts);
+  r.search.attractor.threads = threads;
+  r.check = Check();
+  r.global_evaluations = reach_evaluations;
+  r.local_evaluations = reach_local_evaluations;
+  r.max_seconds = reach_seconds;
+  return r;
+}
+
+void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
+  cmd.add_option("--from-rest-starts", o.starts,
+                 "grid NXxNPSI of starts from rest on which every reported gait is checked "
+                 "(docs/model.md section 12)")
+      ->capture_default_str();
+  AddThreadsOption(cmd, o.threads);
+  if (!reach) return;
+  cmd.add_option("--reach-starts", o.reach_starts,
+                 "grid NXxNPSI of starts from rest inside the reach search (the winner is "
+                 "re-checked on --from-rest-starts)")
+      ->capture_default_str();
+  cmd.add_option("--reach-evaluations", o.reach_evaluations,
+                 "from-rest evaluations of the reach search's global stage (DIRECT-L), >= 1")
+      ->capture_default_str();
+  cmd.add_option("--reach-local-evaluations", o.reach_local_evaluations,
+                 "from-rest evaluations of the reach search's local polish (Sbplx), >= 0")
+      ->capture_default_str();
+  cmd.add_option("--reach-seconds", o.reach_seconds,
+                 "wall-clock limit of the reach search in seconds (the re-checks come on top)")
+      ->capture_default_str();
+}
+
+nlohmann::json FromRestJson(const GaitFromRest& r) {
+  if (!r.checked) return nullptr;
+  nlohmann::json j = AttractorsJson(r.attractors);
+  j["reached"] = r.reached;
+  j["summary"] = r.summary;
+  return j;
+}
+
+nlohmann::json ReachJson(const ReachResult& r) {
+  const bool found = !std::isnan(r.mean_velocity);
+  nlohmann::json j;
+  j["status"] = OptimizeStatusName(r.status);
+  j["message"] = r.message;
+  j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
+  j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
+  j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
+  j["alpha"] = r.alpha;
+  j["mean_velocity"] = r.mean_velocity;
+  j["attractors"] = found ? AttractorsJson(r.attractors) : nlohmann::json(nullptr);
+  j["summary"] = r.summary;
+  j["spread"] = {{"chatter_small", r.spread.chatter_small},
+                 {"chatter_large", r.spread.chatter_large},
+                 {"e_0999", r.spread.e_0999},
+                 {"max_relative_deviation", r.spread.max_relative_deviation},
+                 {"event_limit_starts", r.spread.event_limit_starts}};
+  j["seed_won"] = r.seed_won;
+  j["robust_to_settings"] = r.robust_to_settings;
+  j["evaluations"] = r.evaluations;
+  j["rejected_evaluations"] = r.rejected_evaluations;
+  j["search_seconds"] = r.search_seconds;
+  j["algorithm"] = r.algorithm;
+  const Orbit& so = r.seed.gait.solution.orbit;
+  if (r.seed.from_rest.checked) {
+    j["seed"] = {{"A", so.forcing.amplitude()},
+                 {"c", so.forcing.mean()},
+                 {"phi0", so.forcing.phi0()},
+                 {"alpha", so.alpha},
+                 {"I", so.I},
+                 {"v_mean", so.v_mean},
+                 {"mean_velocity_from_rest", r.seed.from_rest.attractors.mean_velocity},
+                 {"reached", r.seed.from_rest.reached}};
+  } else {
+    j["seed"] = nullptr;
+  }
+  return j;
+}
+
+void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const ReachResult& reach) {
+  auto& out = file.stream();
+  out << "gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,one_impact_orbit\n";
+  const auto rows = [&](const char* gait, const Attractors& a) {
+    for (const Attractor& at : a.attractors) {
+      const Motion& m = at.motion;
+      out << gait << ",attractor," << FormatNumber(m.mean_velocity) << ','
+          << FormatNumber(at.fraction) << ',' << m.period << ',' << m.impacts_right << ','
+          << m.impacts_left << ',' << (at.one_impact_orbit ? 1 : 0) << '\n';
+    }
+  };
+  if (robust.found()) {
+    out << "robust,promised," << FormatNumber(robust.solution.orbit.v_mean) << ",,1,1,0,1\n";
+    rows("robust", reach.seed.from_rest.attractors);
+  }
+  rows("reach", reach.attractors);
+  file.Commit();
+}
+
+std::string FromRestText(const GaitFromRest& r, int indent) {
+  return fmt::format("{:{}}from rest        {}\n", "", indent, r.summary);
+}
+
+std::string ReachText(const ReachResult& r) {
+  if (std::isnan(r.mean_velocity)) return fmt::format("    none: {}\n", r.message);
+  std::string t;
+  t += fmt::format("    force            {}\n", ForceFormula(r.forcing));
+  t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {:.5g}\n", r.alpha);
+  t += fmt::format("    speed from rest  mean velocity {:.6g} omega L (over {} starts)\n",
+                   r.mean_velocity, r.attractors.starts);
+  t += fmt::format("    from rest        {}\n", r.summary);
+  std::string spread;
+  for (const auto& [name, v] :
+       {std::pair<const char*, double>{"chatter/100", r.spread.chatter_small},
+        {"chatter*100", r.spread.chatter_large},
+        {"e = 0.999", r.spread.e_0999}}) {
+    if (!std::isnan(v)) spread += fmt::format("{}{} {:.6g}", spread.empty() ? "" : ", ", name, v);
+  }
+  if (r.spread.event_limit_starts > 0) {
+    spread += fmt::format("{}{} starts of the re-runs hit the work bound (null above)",
+                          spread.empty() ? "" : "; ", r.spread.event_limit_starts);
+  }
+  t += fmt::format("    settings         {} (largest relative change {:.2g})\n",
+                   spread.empty() ? std::string("no re-run") : spread,
+                   r.spread.max_relative_deviation);
+  t += fmt::format(
+      "    solver           {} ({} from-rest evaluations, {:.1f} s search, status "
+      "{})\n",
+      r.algorithm, r.evaluations, r.search_seconds, OptimizeStatusName(r.status));
+  return t;
+}
+
+}  // namespace capsubot::app

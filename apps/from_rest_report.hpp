@@ -1,0 +1,60 @@
+#pragma once
+// What the robot reaches from rest, as the commands report it (docs/model.md sections 12 and 13):
+// the `from_rest` object of a gait, the `reach` object of the fastest motion from rest, their
+// text, and the options that size them. Shared by optimize, solve and the commands that report
+// a gait.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "capsubot/gait_from_rest.hpp"
+#include "capsubot/io.hpp"
+#include "capsubot/optimize_reach.hpp"
+#include "cli.hpp"
+
+namespace capsubot::app {
+
+/// How gaits are checked from rest and how the reach search is sized, from the command line.
+struct FromRestCliOptions {
+  std::string starts = "8x8";        ///< --from-rest-starts: the full grid NXxNPSI
+  std::string reach_starts = "4x4";  ///< --reach-starts: the grid inside the reach search
+  int reach_evaluations = ReachOptions{}.global_evaluations;       ///< --reach-evaluations
+  int reach_local_evaluations = ReachOptions{}.local_evaluations;  ///< --reach-local-evaluations
+  double reach_seconds = ReachOptions{}.max_seconds;               ///< --reach-seconds
+  int threads = 0;                                                 ///< --threads
+
+  /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
+  /// naming the option for a bad grid.
+  FromRestOptions Check() const;
+  /// The reach options: search grid, budgets, time limit, full check; alpha fixed if given
+  /// (not NaN), force bound (NaN: T0).
+  ReachOptions Reach(double force_bound, double alpha) const;
+};
+
+/// Adds --from-rest-starts and --threads; with `reach` also --reach-starts,
+/// --reach-evaluations, --reach-local-evaluations, --reach-seconds.
+void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& options, bool reach);
+
+/// The `from_rest` object: the attractors object (AttractorsJson) plus "reached" and
+/// "summary"; null when the gait was not checked (no orbit).
+nlohmann::json FromRestJson(const GaitFromRest& report);
+
+/// The `reach` object: A, c, phi0, alpha, mean_velocity, status, message, attractors,
+/// summary, spread, seed_won, evaluations, search_seconds, algorithm, seed {A, c, phi0,
+/// alpha, I, mean_velocity_from_rest, reached}.
+nlohmann::json ReachJson(const ReachResult& reach);
+
+/// CSV for the figure of what the robot reaches (columns gait, row, mean_velocity, fraction,
+/// period, impacts_right, impacts_left, one_impact_orbit): the robust gait's promised speed
+/// (row "promised", empty fraction), its attractors from rest, the reach winner's attractors.
+/// Written into `file` (opened before the work), then committed.
+void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const ReachResult& reach);
+
+/// "from rest        reached from rest in ..." (one line) after `indent` spaces.
+std::string FromRestText(const GaitFromRest& report, int indent = 4);
+
+/// The fastest motion from rest in a few indented lines: force, alpha, speed, attractors,
+/// spread.
+std::string ReachText(const ReachResult& reach);
+
+}  // namespace capsubot::app

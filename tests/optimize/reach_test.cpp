@@ -1,0 +1,141 @@
+// The fastest motion from rest (docs/model.md sections 12 and 13). Reference numbers come from
+// independent from-rest runs (FindAttractors called directly on the reported robot) and from
+// the seed's own check from rest; budgets are small so the tests stay quick.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "capsubot/optimize_reach.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+
+// FindAttractors is deterministic: a re-run of the reported robot gives the same number.
+constexpr double kSameRun = 1e-15;
+
+// Small budgets: 2 x 2 starts in the search, 4 x 4 in the re-check.
+ReachOptions QuickOptions() {
+  ReachOptions o;
+  o.global_evaluations = 20;
+  o.local_evaluations = 10;
+  o.max_seconds = 20.0;
+  o.search.n_x = 2;
+  o.search.n_psi = 2;
+  o.check.n_x = 4;
+  o.check.n_psi = 4;
+  o.seed_design.hops = 2;
+  o.seed_design.starts = 3;
+  return o;
+}
+
+TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
+  const Params params;  // T0 = 1, e = 1: the paper's robot
+  const ReachOptions o = QuickOptions();
+  const ReachResult r = OptimizeReach(params, o);
+  ASSERT_TRUE(r.seed.gait.found()) << r.seed.gait.message;
+  ASSERT_TRUE(r.seed.from_rest.checked);
+  EXPECT_TRUE(r.status == OptimizeStatus::kOk || r.status == OptimizeStatus::kMaxTime) << r.message;
+  const double seed_v = r.seed.from_rest.attractors.mean_velocity;
+  EXPECT_GE(r.mean_velocity, seed_v) << r.message;
+  // The reported robot, re-run independently with the full settings.
+  const Attractors again = FindAttractors(r.forcing, params, r.alpha, o.check);
+  EXPECT_EQ(again.event_limit_starts, 0);
+  EXPECT_TRUE(Near(again.mean_velocity, r.mean_velocity, kSameRun));
+  EXPECT_EQ(r.attractors.starts, 16);
+  // The force bound holds.
+  EXPECT_LE(r.forcing.amplitude() + r.forcing.mean(), params.T0 * (1.0 + 1e-12));
+  // The spread: every variant computed for e = 1; a winner that passed it kept its speed
+  // within max_spread, one that did not is flagged and says so.
+  EXPECT_GE(r.spread.max_relative_deviation, 0.0);
+  if (r.robust_to_settings) {
+    EXPECT_LE(r.spread.max_relative_deviation, o.max_spread);
+    EXPECT_EQ(r.spread.event_limit_starts, 0);
+    for (double v : {r.spread.chatter_small, r.spread.chatter_large, r.spread.e_0999}) {
+      EXPECT_TRUE(Near(v, r.mean_velocity, o.max_spread * std::abs(r.mean_velocity)));
+    }
+  } else {
+    EXPECT_NE(r.message.find("WARNING"), std::string::npos) << r.message;
+  }
+  std::printf("reach: %s\n", r.message.c_str());
+  EXPECT_GT(r.evaluations, o.global_evaluations);
+}
+
+TEST(Reach, EventLimitPointsAreNeverPicked) {
+  // At T0 = 0.7, alpha = 0.95 strong forces make about 100 impacts per period (the work bound of
+  // 10 events per period stops them, attractors_test.cpp); weak ones move with few impacts. No
+  // seed: the search starts from the box.
+  Params params;
+  params.T0 = 0.7;
+  ReachOptions o = QuickOptions();
+  o.alpha = 0.95;
+  o.search.attractor.motion.max_events_per_period = 10;
+  o.check.attractor.motion.max_events_per_period = 10;
+  const ReachResult r = OptimizeReach(params, OptimizeResult{}, o);
+  EXPECT_GT(r.rejected_evaluations, 0);  // the case does exercise the rejection
+  EXPECT_FALSE(r.seed.from_rest.checked);
+  if (r.status == OptimizeStatus::kNoValidOrbit) {
+    EXPECT_TRUE(std::isnan(r.mean_velocity));
+  } else {
+    EXPECT_EQ(r.attractors.event_limit_starts, 0) << r.message;
+    EXPECT_FALSE(std::isnan(r.mean_velocity));
+    EXPECT_EQ(r.alpha, 0.95);
+    const Attractors again = FindAttractors(r.forcing, params, r.alpha, o.check);
+    EXPECT_EQ(again.event_limit_starts, 0);
+  }
+}
+
+TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
+  struct Case {
+    const char* name;
+    void (*set)(ReachOptions&);
+    const char* message;
+  };
+  const Case cases[] = {
+      {"alpha", [](ReachOptions& o) { o.alpha = 1.5; },
+       "alpha = 1.5 is invalid: expected 0 < alpha < 1 (or NaN: free)"},
+      {"alpha box", [](ReachOptions& o) { o.alpha_min = 0.96; },
+       "alpha_min = 0.96, alpha_max = 0.95 are invalid: expected 0 < alpha_min < alpha_max < 1"},
+      {"global", [](ReachOptions& o) { o.global_algorithm = "GN_NOPE"; },
+       "global_algorithm = \"GN_NOPE\" is invalid: expected one of GN_DIRECT_L"},
+      {"evaluations", [](ReachOptions& o) { o.global_evaluations = 0; },
+       "global_evaluations = 0 is invalid: expected at least 1"},
+      {"time", [](ReachOptions& o) { o.max_seconds = 0.0; },
+       "max_seconds = 0 is invalid: expected a finite time > 0"},
+      {"search grid", [](ReachOptions& o) { o.search.n_x = 0; },
+       "n_x = 0 is invalid: expected 1 <= n_x <= 100000 starting positions"},
+  };
+  int checked = 0;
+  for (const Case& c : cases) {
+    ReachOptions o;
+    c.set(o);
+    try {
+      o.Validate();
+      ADD_FAILURE() << c.name << ": no exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(c.message, 0), 0U) << c.name << ": " << e.what();
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+  // A bound above T0 is rejected by the search itself.
+  ReachOptions o = QuickOptions();
+  o.force_bound = 2.0;
+  try {
+    OptimizeReach(Params{}, OptimizeResult{}, o);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(
+        std::string(e.what()).rfind("force_bound = 2 is invalid: expected force_bound <= T0", 0),
+        0U)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace capsubot
