@@ -19,11 +19,14 @@ namespace capsubot::python {
 namespace py = pybind11;
 
 // The functions of the module, one file per concept (solve.cpp, solve_grid.cpp, ...).
-void BindSolve(py::module_& m);      // solve, trajectory
-void BindSolveGrid(py::module_& m);  // solve_grid
-void BindSimulate(py::module_& m);   // simulate
-void BindOptimize(py::module_& m);   // optimize
-void BindOrbits(py::module_& m);     // orbits
+void BindSolve(py::module_& m);       // solve, trajectory
+void BindSolveGrid(py::module_& m);   // solve_grid
+void BindSimulate(py::module_& m);    // simulate
+void BindOptimize(py::module_& m);    // optimize
+void BindOrbits(py::module_& m);      // orbits
+void BindAttractors(py::module_& m);  // attractors
+void BindPeriodic(py::module_& m);    // periodic
+void BindDesign(py::module_& m);      // design
 
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
@@ -57,6 +60,9 @@ inline constexpr const char* kForcingArgsDoc =
 inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
+
+/// The Fourier coefficients of a force: b_1..b_K with `sine`, else a_1..a_K.
+std::vector<double> Coefficients(const Forcing& f, bool sine);
 
 /// A number as the command line's JSON writes it: None for NaN or infinity (JSON null).
 py::object Number(double value);

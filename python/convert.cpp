@@ -10,16 +10,6 @@
 #include "bindings.hpp"
 
 namespace capsubot::python {
-namespace {
-
-std::vector<double> Coefficients(const Forcing& f, bool sine) {
-  std::vector<double> out;
-  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
-  return out;
-}
-
-}  // namespace
-
 Forcing ForcingArgs::Build(bool need_phase) const {
   if (sin) {
     if (A) {
@@ -40,6 +30,12 @@ Forcing ForcingArgs::Build(bool need_phase) const {
     throw std::invalid_argument("phi0 is missing: give the impact phase phi0 [rad]");
   }
   return Forcing::Harmonic(*A, c, phi0.value_or(0.0));
+}
+
+std::vector<double> Coefficients(const Forcing& f, bool sine) {
+  std::vector<double> out;
+  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
+  return out;
 }
 
 py::object Number(double value) {

@@ -9,19 +9,25 @@
 #include "capsubot/version.hpp"
 
 PYBIND11_MODULE(capsubot, m) {
-  m.doc() = std::string(
-                "capsubot: the one-impact gaits of a vibro-impact capsule robot (the library "
-                "behind the `capsubot` command line).\n\n"
-                "solve, trajectory, solve_grid: the periodic orbit and its validity; simulate: "
-                "the exact event-driven simulation; orbits: every orbit of a given robot; "
-                "optimize: the fastest gait. Keyword arguments are named as the command-line "
-                "options; results are the dicts that `capsubot <command> --json` prints (None "
-                "for null). Bad input raises ValueError with the library's message.\n\n") +
-            capsubot::python::kUnits;
+  m.doc() =
+      std::string(
+          "capsubot: the one-impact gaits of a vibro-impact capsule robot (the library "
+          "behind the `capsubot` command line).\n\n"
+          "solve, trajectory, solve_grid: the periodic orbit and its validity; simulate: "
+          "the exact event-driven simulation; orbits: every orbit of a given robot; "
+          "optimize: the fastest gait; attractors: the long-run motions from rest; periodic: a "
+          "periodic motion of any kind by Newton shooting; design: a real robot in SI "
+          "units. Keyword arguments are named as the command-line "
+          "options; results are the dicts that `capsubot <command> --json` prints (None "
+          "for null). Bad input raises ValueError with the library's message.\n\n") +
+      capsubot::python::kUnits;
   m.attr("__version__") = capsubot::Version();
   capsubot::python::BindSolve(m);
   capsubot::python::BindSolveGrid(m);
   capsubot::python::BindSimulate(m);
   capsubot::python::BindOptimize(m);
   capsubot::python::BindOrbits(m);
+  capsubot::python::BindAttractors(m);
+  capsubot::python::BindPeriodic(m);
+  capsubot::python::BindDesign(m);
 }

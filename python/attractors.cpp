@@ -1,0 +1,145 @@
+// attractors: the long-run motions reached from rest on a grid of starts (docs/model.md
+// sections 12 and 13), as `capsubot attractors --json`; motion options shared with periodic.
+
+#include "capsubot/attractors.hpp"
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <optional>
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+
+namespace capsubot::python {
+namespace {
+
+// "8x8" -> n_x = 8, n_psi = 8; the library checks the sizes (1 to 100000).
+void ParseStarts(const std::string& text, FromRestOptions& o) {
+  static const std::regex grid("([0-9]{1,9})[xX]([0-9]{1,9})");
+  std::smatch parts;
+  if (!std::regex_match(text, parts, grid)) {
+    throw std::invalid_argument(fmt::format(
+        "starts = '{}' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')", text));
+  }
+  o.n_x = std::stoi(parts[1].str());
+  o.n_psi = std::stoi(parts[2].str());
+}
+
+py::dict MotionDict(const Motion& m) {
+  py::dict d;
+  d["status"] = MotionStatusName(m.status);
+  d["period"] = m.period;
+  d["impacts_right"] = m.impacts_right;
+  d["impacts_left"] = m.impacts_left;
+  d["mean_velocity"] = Number(m.mean_velocity);
+  return d;
+}
+
+py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<double> phi0,
+                            std::optional<std::vector<double>> cos,
+                            std::optional<std::vector<double>> sin, double T0, double e,
+                            double alpha, std::optional<std::string> starts, std::optional<int> n_x,
+                            std::optional<int> n_psi, int transient, int record, int max_period,
+                            double state_tolerance, double converged_tolerance,
+                            double chatter_velocity, std::int64_t max_events_per_period,
+                            int threads) {
+  const Params params{T0, e, 0.0};
+  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  FromRestOptions fr;
+  if (starts) {
+    if (n_x || n_psi) {
+      throw std::invalid_argument(
+          "starts and n_x, n_psi are exclusive: give the grid as starts='NXxNPSI' or as n_x "
+          "and n_psi");
+    }
+    ParseStarts(*starts, fr);
+  }
+  fr.n_x = n_x.value_or(fr.n_x);
+  fr.n_psi = n_psi.value_or(fr.n_psi);
+  MotionOptions& mo = fr.attractor.motion;
+  mo.transient = transient;
+  mo.record = record;
+  mo.max_period = max_period;
+  mo.state_tolerance = state_tolerance;
+  mo.converged_tolerance = converged_tolerance;
+  mo.chatter_velocity = chatter_velocity;
+  mo.max_events_per_period = max_events_per_period;
+  fr.attractor.threads = threads;
+  Attractors a;
+  {
+    py::gil_scoped_release release;
+    a = FindAttractors(forcing, params, alpha, fr);
+  }
+  py::list attractors;
+  for (const Attractor& at : a.attractors) {
+    py::dict x = MotionDict(at.motion);
+    x["fraction"] = Number(at.fraction);
+    x["starts"] = at.starts;
+    py::dict example;
+    example["x0"] = Number(at.example.x);
+    example["psi"] = Number(at.example.psi);
+    x["example_start"] = example;
+    x["one_impact_orbit"] = at.one_impact_orbit;
+    attractors.append(x);
+  }
+  py::dict d;
+  d["starts"] = a.starts;
+  d["attractors"] = attractors;
+  d["mean_velocity"] = Number(a.mean_velocity);
+  d["event_limit_starts"] = a.event_limit_starts;
+  return d;
+}
+
+constexpr const char* kAttractorsDoc =
+    "What the robot does from rest (docs/model.md sections 12 and 13): the exact simulator is "
+    "started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/n_x and the "
+    "forcing at phase psi = 2 pi j/n_psi; after a transient the long-run motion of each start "
+    "is classified (period, impacts, mean velocity) and equal motions are grouped into "
+    "attractors: the dict `capsubot attractors --json` prints.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot attractors`):\n"
+    "    phi0    phase of the force F = A sin(psi + phi0) + c at the starts' phases psi [rad]\n"
+    "            (required for the harmonic force; default 0 for a Fourier force)\n";
+
+constexpr const char* kAttractorsArgsDoc =
+    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
+    "    starts  grid of starts 'NXxNPSI' (positions x phases), default '8x8'; or n_x, n_psi\n"
+    "    transient  forcing periods simulated before the motion is recorded, >= 0\n"
+    "    record  forcing periods recorded, >= 2 max_period\n"
+    "    max_period  largest period searched, in forcing periods, 1 to 64\n"
+    "    state_tolerance  two section states are the same when x, u, v differ by at most this\n"
+    "    converged_tolerance  early stop of a motion that already repeats to this (0: never)\n"
+    "    chatter_velocity  the simulator's chatter cut-off [omega L]\n"
+    "    max_events_per_period  work bound: a start needing more ends as event_limit\n"
+    "    threads  worker threads (0: all cores); the result does not depend on it\n\n"
+    "Returns a dict: starts (their number), attractors (a list of dicts, most starts first: "
+    "status, period, impacts_right, impacts_left, mean_velocity, fraction, starts, "
+    "example_start {x0, psi}, one_impact_orbit), mean_velocity (over the starts that did not "
+    "hit the work bound), event_limit_starts.\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule). Runs without the GIL.\n\n";
+
+}  // namespace
+
+void BindAttractors(py::module_& m) {
+  const std::string doc =
+      std::string(kAttractorsDoc) + kForcingArgsDoc + kModelArgsDoc + kAttractorsArgsDoc + kUnits;
+  const MotionOptions mo;
+  m.def("attractors", &FindAttractorsDict, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
+        py::arg("c"), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
+        py::arg("alpha"), py::arg("starts") = py::none(), py::arg("n_x") = py::none(),
+        py::arg("n_psi") = py::none(), py::arg("transient") = mo.transient,
+        py::arg("record") = mo.record, py::arg("max_period") = mo.max_period,
+        py::arg("state_tolerance") = mo.state_tolerance,
+        py::arg("converged_tolerance") = mo.converged_tolerance,
+        py::arg("chatter_velocity") = mo.chatter_velocity,
+        py::arg("max_events_per_period") = mo.max_events_per_period,
+        py::arg("threads") = AttractorOptions{}.threads);
+}
+
+}  // namespace capsubot::python

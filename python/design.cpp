@@ -1,0 +1,169 @@
+// design: a real robot in SI units; the inner mass (and motor frequency) of its fastest robust
+// one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
+
+#include "capsubot/design.hpp"
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+
+namespace capsubot::python {
+namespace {
+
+using Range = std::pair<double, double>;
+
+// The key "one_impact" of `design --json`: the gait in the user's units, its dimensionless
+// orbit (null unless ok), the orbits found and the limits it sits on.
+py::dict GaitDict(const Gait& g) {
+  const bool ok = g.ok();
+  const auto when_ok = [ok](double value) { return ok ? Number(value) : py::none(); };
+  const Orbit& o = g.solution.orbit;
+  const Forcing& f = o.forcing;
+  py::dict d;
+  d["status"] = GaitStatusName(g.status);
+  d["m2_kg"] = Number(g.m2_kg);
+  d["frequency_hz"] = Number(g.frequency_hz);
+  d["speed_mm_s"] = Number(g.speed_mm_s);
+  d["displacement_mm"] = Number(g.displacement_mm);
+  d["impact_velocity_m_s"] = Number(g.impact_velocity_m_s);
+  d["energy_mj"] = Number(g.energy_mj);
+  d["power_mw"] = Number(g.power_mw);
+  d["power_positive_mw"] = Number(g.power_positive_mw);
+  d["friction_loss_mj"] = Number(g.friction_loss_mj);
+  d["impact_loss_mj"] = Number(g.impact_loss_mj);
+  d["cot"] = Number(g.cot);
+  d["efficiency"] = Number(g.efficiency);
+  py::dict x;
+  x["T0"] = when_ok(o.T0);
+  x["A"] = ok && f.harmonic() ? Number(f.amplitude()) : py::none();
+  x["c"] = when_ok(f.mean());
+  x["alpha"] = when_ok(o.alpha);
+  x["phi0"] = when_ok(f.phi0());
+  x["I"] = when_ok(o.I);
+  x["spectral_radius"] = when_ok(g.stability.spectral_radius);
+  x["x_min"] = when_ok(g.solution.validity.x_min);
+  x["x_max"] = when_ok(g.solution.validity.x_max);
+  if (ok && !f.harmonic()) {
+    x["cos"] = Coefficients(f, false);
+    x["sin"] = Coefficients(f, true);
+  }
+  if (ok) AddEnergy(x, g.energy);
+  d["dimensionless"] = x;
+  d["orbits"] = g.orbits;
+  d["binding"] = g.binding;
+  return d;
+}
+
+// One of two alternatives must be given, not both (names as the arguments).
+void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
+  if (a && b) {
+    throw std::invalid_argument(std::string(name_a) + " and " + name_b +
+                                " are exclusive: give one of them");
+  }
+  if (!a && !b) {
+    throw std::invalid_argument(std::string(name_a) + " is missing: give " + name_a + " (or " +
+                                name_b + ")");
+  }
+}
+
+py::dict DesignDict(double m1, double L, double mu, double g, double e,
+                    std::optional<double> force_amplitude, double force_bias,
+                    std::optional<std::vector<double>> force_cos,
+                    std::optional<std::vector<double>> force_sin, std::optional<double> frequency,
+                    std::optional<Range> frequency_range, std::optional<Range> m2_range,
+                    double margin, double margin_stroke, double stick_margin, double rho_max,
+                    int scan_points) {
+  RequireOne(force_amplitude.has_value(), force_sin.has_value(), "force_amplitude", "force_sin");
+  if (force_cos && force_amplitude) {
+    throw std::invalid_argument(
+        "force_amplitude and force_cos are exclusive: give one of them (force_cos goes with "
+        "force_sin)");
+  }
+  RequireOne(frequency.has_value(), frequency_range.has_value(), "frequency", "frequency_range");
+  DesignInput in;
+  in.m1 = m1;
+  in.L = L;
+  in.mu = mu;
+  in.g = g;
+  in.e = e;
+  in.force.amplitude = force_amplitude.value_or(DesignInput::kNaN);
+  in.force.bias = force_bias;
+  in.force.cos = force_cos.value_or(std::vector<double>());
+  in.force.sin = force_sin.value_or(std::vector<double>());
+  const Range f = frequency_range.value_or(Range(frequency.value_or(0.0), frequency.value_or(0.0)));
+  in.frequency_min = f.first;
+  in.frequency_max = f.second;
+  if (m2_range) {
+    in.m2_min = m2_range->first;
+    in.m2_max = m2_range->second;
+  }
+  in.margin = margin;
+  in.margin_stroke = margin_stroke;
+  in.stick_margin = stick_margin;
+  in.rho_max = rho_max;
+  in.scan_points = scan_points;
+  in.Validate();
+  DesignResult r;
+  {
+    py::gil_scoped_release release;
+    r = Design(in);
+  }
+  py::dict d;
+  d["status"] = DesignStatusName(r.status);
+  d["message"] = r.message;
+  d["one_impact"] = GaitDict(r.one_impact);
+  d["robots"] = r.robots;
+  d["complete"] = r.complete;
+  return d;
+}
+
+constexpr const char* kDesignDoc =
+    "Design a real robot in SI units: for the shell (m1, gap L, friction mu) and the motor "
+    "force, the inner mass m2 (and the frequency, with frequency_range) of the fastest robust "
+    "one-impact gait, with its speed, motor power, losses and cost of transport "
+    "(docs/design.md): the dict `capsubot design --json` prints.\n\n"
+    "Arguments (keyword only, named as the settings of `capsubot design` with _ for -):\n"
+    "    m1      shell mass [kg], > 0\n"
+    "    L       free gap of the inner body between the walls [m], > 0\n"
+    "    mu      friction coefficient of the shell on the floor, > 0\n"
+    "    g       gravity [m/s^2], > 0\n"
+    "    e       coefficient of restitution of the impacts, 0 <= e <= 1\n"
+    "    force_amplitude  amplitude A_N [N] of F_N = A_N sin(omega t + phase) + c_N, >= 0\n"
+    "    force_bias  mean c_N [N] of the motor force, >= 0\n"
+    "    force_cos, force_sin  Fourier motor force instead of the amplitude: coefficients\n"
+    "            a_1..a_K, b_1..b_K [N] of F_N = c_N + sum_k (a_k cos k s + b_k sin k s)\n"
+    "    frequency  motor frequency f [Hz], > 0; or\n"
+    "    frequency_range  (fmin, fmax) [Hz]: search the frequency too\n"
+    "    m2_range  (m2min, m2max) [kg] searched, default (0.01 m1, 10 m1)\n"
+    "    margin, margin_stroke, stick_margin  the robust gait's clearances and stick margin\n"
+    "            (docs/model.md section 12)\n"
+    "    rho_max  largest admissible multiplier modulus, > 0 (inf: no stability requirement)\n"
+    "    scan_points  log-spaced samples of each searched variable, >= 3\n\n"
+    "Returns a dict: status ('ok', 'motor_slides_shell', 'no_gait'), message, one_impact "
+    "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
+    "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
+    "efficiency, dimensionless {T0, A, c, alpha, phi0, I, spectral_radius, x_min, x_max, "
+    "cos, sin (Fourier), energy}, orbits, binding}, robots, complete.\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule). Runs without the GIL.";
+
+}  // namespace
+
+void BindDesign(py::module_& m) {
+  const DesignInput in;
+  m.def("design", &DesignDict, kDesignDoc, py::kw_only(), py::arg("m1"), py::arg("L"),
+        py::arg("mu"), py::arg("g") = in.g, py::arg("e"), py::arg("force_amplitude") = py::none(),
+        py::arg("force_bias"), py::arg("force_cos") = py::none(), py::arg("force_sin") = py::none(),
+        py::arg("frequency") = py::none(), py::arg("frequency_range") = py::none(),
+        py::arg("m2_range") = py::none(), py::arg("margin") = in.margin,
+        py::arg("margin_stroke") = in.margin_stroke, py::arg("stick_margin") = in.stick_margin,
+        py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points);
+}
+
+}  // namespace capsubot::python

@@ -1,0 +1,150 @@
+// periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of the
+// stroboscopic map, with its multipliers (docs/model.md section 13), as
+// `capsubot periodic --json`.
+
+#include "capsubot/periodic.hpp"
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+
+namespace capsubot::python {
+namespace {
+
+// The CLI's default transient with a start from rest (a given state starts near the motion).
+constexpr int kFromRestTransient = 200;
+
+py::dict PeriodicDict(const PeriodicMotion& m) {
+  py::dict d;
+  d["status"] = ShootingStatusName(m.status);
+  d["period"] = m.period;
+  d["impacts_right"] = m.impacts_right;
+  d["impacts_left"] = m.impacts_left;
+  d["mean_velocity"] = Number(m.mean_velocity);
+  py::dict state;
+  state["x"] = Number(m.state.x);
+  state["u"] = Number(m.state.u);
+  state["v"] = Number(m.state.v);
+  state["psi"] = Number(m.state.psi);
+  d["state"] = state;
+  d["mode"] = SimModeName(m.mode);
+  d["dimension"] = m.dimension;
+  py::list multipliers;
+  for (const auto& l : m.multipliers) {
+    py::list pair;
+    pair.append(Number(l.real()));
+    pair.append(Number(l.imag()));
+    multipliers.append(pair);
+  }
+  d["multipliers"] = multipliers;
+  d["spectral_radius"] = Number(m.spectral_radius);
+  d["stable"] = m.stable;
+  d["distance_to_plus_one"] = Number(m.distance_to_plus_one);
+  d["distance_to_minus_one"] = Number(m.distance_to_minus_one);
+  d["distance_to_unit_circle"] = Number(m.distance_to_unit_circle);
+  d["residual"] = Number(m.residual);
+  d["iterations"] = m.iterations;
+  return d;
+}
+
+// The start: a state (x0, u0, v0 at phase psi) or from rest (from_rest = (x0, psi)).
+PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
+                 std::optional<double> psi,
+                 const std::optional<std::pair<double, double>>& from_rest) {
+  const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
+  if (from_rest) {
+    if (given > 0) {
+      throw std::invalid_argument(
+          "from_rest gives the start: do not give x0, u0, v0 or psi with it");
+    }
+    return RestStart(from_rest->first, from_rest->second);
+  }
+  if (given < 4) {
+    throw std::invalid_argument(
+        "the start is missing: give all of x0, u0, v0, psi (or from_rest=(x0, psi))");
+  }
+  PhaseState s;
+  s.x = *x0;
+  s.u = *u0;
+  s.v = *v0;
+  s.psi = *psi;
+  return s;
+}
+
+py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
+                  std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+                  double T0, double e, double alpha, std::optional<double> x0,
+                  std::optional<double> u0, std::optional<double> v0, std::optional<double> psi,
+                  std::optional<std::pair<double, double>> from_rest, std::optional<int> transient,
+                  std::optional<int> period, int max_period, double step, double chatter_velocity) {
+  const Params params{T0, e, 0.0};
+  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  const PhaseState start = Start(x0, u0, v0, psi, from_rest);
+  if (period && transient) {
+    throw std::invalid_argument(
+        "period and transient are exclusive: with the period given, Newton starts at the start "
+        "itself");
+  }
+  ShootingOptions so;
+  so.transient = transient.value_or(from_rest ? kFromRestTransient : 0);
+  so.max_period = max_period;
+  so.step = step;
+  so.chatter_velocity = chatter_velocity;
+  PeriodicMotion m;
+  {
+    py::gil_scoped_release release;
+    m = period ? ShootPeriodicMotion(forcing, params, alpha, start, *period, so)
+               : FindPeriodicMotion(forcing, params, alpha, start, so);
+  }
+  return PeriodicDict(m);
+}
+
+constexpr const char* kPeriodicDoc =
+    "A periodic motion of any kind (several impacts, both walls, period p) found exactly by "
+    "Newton's method on the p-th iterate of the stroboscopic map (docs/model.md section 13), "
+    "with its multipliers: the dict `capsubot periodic --json` prints.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot periodic`):\n"
+    "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n"
+    "            (required for the harmonic force; default 0 for a Fourier force)\n";
+
+constexpr const char* kPeriodicArgsDoc =
+    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
+    "    x0, u0, v0, psi  the start: position of the inner body, relative velocity, capsule\n"
+    "            velocity at forcing phase psi (no transient unless transient is given)\n"
+    "    from_rest  (x0, psi): start from rest there instead, after transient periods\n"
+    "    transient  periods simulated before shooting (default 200 with from_rest, else 0)\n"
+    "    period  the period p, 1 to 64, when known: Newton from the start itself (no search of\n"
+    "            the period, no transient)\n"
+    "    max_period  largest period searched, in forcing periods, 1 to 64\n"
+    "    step    step of the central finite differences of the Jacobian\n"
+    "    chatter_velocity  the simulator's chatter cut-off [omega L]\n\n"
+    "Returns a dict: status ('converged', 'no_convergence', 'event_limit'), period, "
+    "impacts_right, impacts_left, mean_velocity, state {x, u, v, psi}, mode, dimension, "
+    "multipliers [[re, im], ...], spectral_radius, stable, distance_to_plus_one, "
+    "distance_to_minus_one, distance_to_unit_circle, residual, iterations.\n\n"
+    "Raises ValueError for bad input (the message names the parameter, its value and the "
+    "rule). Runs without the GIL.\n\n";
+
+}  // namespace
+
+void BindPeriodic(py::module_& m) {
+  const std::string doc =
+      std::string(kPeriodicDoc) + kForcingArgsDoc + kModelArgsDoc + kPeriodicArgsDoc + kUnits;
+  const ShootingOptions so;
+  m.def("periodic", &Periodic, doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
+        py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"),
+        py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
+        py::arg("psi") = py::none(), py::arg("from_rest") = py::none(),
+        py::arg("transient") = py::none(), py::arg("period") = py::none(),
+        py::arg("max_period") = so.max_period, py::arg("step") = so.step,
+        py::arg("chatter_velocity") = so.chatter_velocity);
+}
+
+}  // namespace capsubot::python

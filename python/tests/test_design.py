@@ -1,0 +1,40 @@
+"""design: a real robot in SI units, as the command line designs it."""
+
+import pytest
+
+import capsubot
+from conftest import cli_json
+
+# The example robot of docs/design.md (examples/robot.toml).
+ROBOT = dict(m1=0.2, L=0.02, mu=0.3, e=0.7, force_amplitude=0.5, force_bias=0.1)
+CLI_ROBOT = ["--m1", 0.2, "--L", 0.02, "--mu", 0.3, "--e", 0.7, "--force-amplitude", 0.5,
+             "--force-bias", 0.1]
+
+
+def test_equals_the_command_line():
+    found = capsubot.design(**ROBOT, frequency=20)
+    assert found == cli_json("design", *CLI_ROBOT, "--frequency", 20)
+    assert found["status"] == "ok" and found["one_impact"]["status"] == "ok"
+    ranged = capsubot.design(**ROBOT, frequency_range=(15, 25), m2_range=(0.01, 1),
+                             scan_points=8, rho_max=0.8)
+    assert ranged == cli_json("design", *CLI_ROBOT, "--frequency-range", "15:25", "--m2-range",
+                              "0.01:1", "--scan-points", 8, "--rho-max", 0.8)
+
+
+def test_fourier_force_equals_the_command_line():
+    robot = {k: v for k, v in ROBOT.items() if k != "force_amplitude"}
+    found = capsubot.design(**robot, force_sin=[0.5, 0.1], force_cos=[0.0, 0.05], frequency=20)
+    assert found == cli_json("design", *CLI_ROBOT[:-4], "--force-bias", 0.1, "--force-sin",
+                             "0.5,0.1", "--force-cos", "0,0.05", "--frequency", 20)
+
+
+def test_bad_input_names_the_parameter():
+    with pytest.raises(ValueError) as err:
+        capsubot.design(**{**ROBOT, "e": 1.3}, frequency=20)
+    assert str(err.value) == "restitution e = 1.3 is invalid: expected 0 <= e <= 1"
+    with pytest.raises(ValueError) as err:
+        capsubot.design(**ROBOT)
+    assert str(err.value) == "frequency is missing: give frequency (or frequency_range)"
+    with pytest.raises(ValueError) as err:
+        capsubot.design(**ROBOT, frequency=20, frequency_range=(10, 30))
+    assert str(err.value) == "frequency and frequency_range are exclusive: give one of them"
