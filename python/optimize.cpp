@@ -136,7 +136,7 @@ py::dict MainJob(const Params& p, const SearchArgs& a) {
     result["note"] = note;
     d[key] = result;
   };
-  add("paper_phase", paper, "phase",
+  add("paper", paper, "phase",
       "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no "
       "margins)");
   add("robust", robust, "forcing",
@@ -260,7 +260,7 @@ constexpr const char* kOptimizeOptionsDoc =
     "exists), T0, e, margin, margin_stroke, stick_margin, rho_max (None: infinity); for "
     "fourier also baseline_I (the P2 optimum's I) and gain. With status 'no_valid_orbit' the "
     "orbit is the point nearest to validity. For the main job: T0, e, the margins, rho_max, "
-    "force_bound and the results paper_phase, robust, fastest, fastest_stable (each with a "
+    "force_bound and the results paper, robust, fastest, fastest_stable (each with a "
     "note).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL (other Python threads go on).\n\n";

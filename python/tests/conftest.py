@@ -31,3 +31,16 @@ def cli_json(*args):
     status, out, err = run_cli(*args, "--json")
     assert status == 0, err
     return json.loads(out)
+
+
+def without_from_rest(obj):
+    """`obj` without the simulator's checks from rest that the command line adds to its gaits
+    (the keys "from_rest" at any depth, the main job's "reach" and the words saying so in a
+    "note"): the module's solve and
+    optimize return the analytic gait only; capsubot.attractors gives the check from rest."""
+    if isinstance(obj, dict):
+        return {k: (v.removesuffix("; checked from rest") if k == "note" else without_from_rest(v))
+                for k, v in obj.items() if k not in ("from_rest", "reach")}
+    if isinstance(obj, list):
+        return [without_from_rest(v) for v in obj]
+    return obj
