@@ -3,8 +3,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+
+#include "progress.hpp"
 
 namespace capsubot::app {
 
@@ -124,15 +128,12 @@ std::string MotionWords(const Motion& m, int max_period) {
 }
 
 StartsProgress TerminalProgress(const char* what) {
-  if (::isatty(STDERR_FILENO) == 0) return {};
-  return [what](std::int64_t done, std::int64_t total) {
-    // At most ~100 updates: every 1 % and at the end.
-    const std::int64_t step = std::max<std::int64_t>(1, total / 100);
-    if (done % step != 0 && done != total) return;
-    fmt::print(stderr, "\r{}: {} of {} starts ({:.0f} %)", what, done, total,
-               100.0 * static_cast<double>(done) / static_cast<double>(total));
-    if (done == total) fmt::print(stderr, "\n");
-    std::fflush(stderr);
+  if (!StderrIsTerminal()) return {};
+  auto bar = std::make_shared<ProgressBar>(what);
+  const auto start = std::chrono::steady_clock::now();
+  return [bar, start](std::int64_t done, std::int64_t total) {
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    bar->Update(static_cast<double>(done), static_cast<double>(total), seconds.count());
   };
 }
 

@@ -43,7 +43,8 @@ nlohmann::json AttractorsJson(const Attractors& attractors);
 /// "3 right + 1 left impacts per 1 period" or "no period found up to 8 (...)".
 std::string MotionWords(const Motion& motion, int max_period);
 
-/// Calls a StartsProgress that draws a bar on stderr when it is a terminal (else none).
+/// A StartsProgress that draws the shared progress bar (ProgressBar, counting `what`, e.g.
+/// "starts") on stderr when it is a terminal; none otherwise.
 StartsProgress TerminalProgress(const char* what);
 
 }  // namespace capsubot::app

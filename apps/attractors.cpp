@@ -26,8 +26,8 @@ int Run(const AttractorsCommandOptions& opt) {
   std::tie(fr.n_x, fr.n_psi) = ParseGridSize("--starts", opt.starts);
   fr.attractor.motion = opt.robot.motion;
   fr.attractor.threads = opt.threads;
-  const Attractors a = FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr,
-                                      TerminalProgress("attractors"));
+  const Attractors a =
+      FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr, TerminalProgress("starts"));
   if (opt.json) {
     fmt::print("{}\n", AttractorsJson(a).dump());
     return 0;

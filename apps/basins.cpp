@@ -118,7 +118,7 @@ int Run(const BasinsCommandOptions& opt) {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
   const Attractors a = ClassifyStarts(forcing, opt.robot.params, opt.robot.alpha, starts, ao,
-                                      TerminalProgress("basins"));
+                                      TerminalProgress("starts"));
   AtomicFile file(opt.output, "-o");
   auto& out = file.stream();
   out << (x0_u0 ? "x0,u0" : "x0,psi")

@@ -46,7 +46,8 @@ int Run(BifurcationCommandOptions& opt) {
   {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
-  const BifurcationDiagram d = ComputeBifurcation(forcing, opt.robot.params, alpha, o);
+  const BifurcationDiagram d =
+      ComputeBifurcation(forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"));
   AtomicFile impacts(opt.output, "-o");
   impacts.stream() << "param,direction,period_index,wall,phase,velocity\n";
   for (const ImpactPoint& p : d.impacts) {

@@ -22,6 +22,7 @@
 #include "capsubot/scaling.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "progress.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -329,15 +330,20 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   // best phase. Its force sits on the friction bound, so any stick margin would exclude it.
   PhaseOptions paper_options = PhaseFor(opt);
   paper_options.rho_max = kInf;
+  ShowStage("optimize: 1/4 the paper's problem (P1)");
   const OptimizeResult paper =
       OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, paper_options);
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. the exact optima, valid and stable, for comparison.
+  ShowStage("optimize: 2/4 the fastest robust gait (P2)");
   const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  ShowStage("optimize: 3/4 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach =
       OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, ReachOptions::kNaN));
+  ShowStage("optimize: 4/4 the exact optima without margins");
   const OptimizeResult fastest = OptimizeForcing(exact, DesignOptions(opt, kInf));
   const OptimizeResult stable = OptimizeForcing(exact, DesignOptions(opt, 1.0));
+  ShowStage("");
   const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
 
   nlohmann::json j;
@@ -432,8 +438,11 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
 // --problem reach: the fastest motion from rest, seeded with the robust gait.
 int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
   const Params& p = opt.params;
+  ShowStage("optimize: 1/2 the robust gait that seeds the search (P2)");
   const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  ShowStage("optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach = OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, opt.alpha));
+  ShowStage("");
   nlohmann::json j = ReachJson(reach);
   AddRequirementsJson(j, p, opt.rho_max);  // those of the seed
   WriteForceCsv(reach.forcing, files.force_csv.get());
@@ -449,6 +458,7 @@ int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
 int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, OutputFiles& files) {
   const Params& p = opt.params;
   OptimizeResult r;
+  ShowStage(fmt::format("optimize: --problem {}", opt.problem));
   if (opt.problem == "phase") {
     if (std::isnan(opt.A) || std::isnan(opt.c)) {
       throw std::invalid_argument(
@@ -466,7 +476,9 @@ int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, Outp
     fo.search.global_evaluations = opt.global_evaluations;
     r = OptimizeFourier(p, fo);
   }
+  ShowStage("optimize: the optimum checked from rest (simulated starts)");
   const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
+  ShowStage("");
   nlohmann::json j = ResultJson(r, opt.problem.c_str());
   j["from_rest"] = FromRestJson(from_rest);
   AddRequirementsJson(j, p, opt.rho_max);

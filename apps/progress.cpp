@@ -42,4 +42,10 @@ void ProgressBar::Update(double done, double total, double seconds, double skipp
   std::fflush(stderr);
 }
 
+void ShowStage(const std::string& text) {
+  if (!StderrIsTerminal()) return;
+  fmt::print(stderr, "\r{}\033[K", text);
+  std::fflush(stderr);
+}
+
 }  // namespace capsubot::app

@@ -9,6 +9,10 @@ namespace capsubot::app {
 /// True when standard error is a terminal (progress is shown only then).
 bool StderrIsTerminal();
 
+/// The stage a long run is in ("optimize: 2/5 the fastest robust gait"), one line on stderr
+/// redrawn in place when it is a terminal; ShowStage("") clears it before the results.
+void ShowStage(const std::string& text);
+
 /// "[#####.....]  42.0%  420/1000 points  1.2k points/s  00:01 elapsed  00:01 left", redrawn
 /// in place at most 10 times a second; the last update (done >= total) ends the line.
 class ProgressBar {

@@ -80,7 +80,10 @@ struct BifurcationDiagram {
 /// The diagram for the robot (forcing, params, alpha) with options.param stepped. Throws
 /// std::invalid_argument for bad inputs (a value of the range that makes the robot invalid
 /// names the parameter and the value).
+/// `progress` (optional) is told the parameter values simulated so far (up and down sweeps
+/// together) of their total, in increasing order.
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options);
+                                      const BifurcationOptions& options,
+                                      const StartsProgress& progress = {});
 
 }  // namespace capsubot

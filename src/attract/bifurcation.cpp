@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <mutex>
 #include <stdexcept>
 
 #include "attract/parallel.hpp"
@@ -66,9 +67,27 @@ double Value(const BifurcationOptions& o, int i) {
   return o.from + (o.to - o.from) * static_cast<double>(i) / (o.steps - 1);
 }
 
+// Counts the parameter values done by every part and reports them in increasing order.
+class ValuesDone {
+ public:
+  ValuesDone(const StartsProgress& progress, std::int64_t total)
+      : progress_(progress), total_(total) {}
+  void Tick() {
+    if (!progress_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_(++done_, total_);
+  }
+
+ private:
+  const StartsProgress& progress_;
+  std::int64_t total_;
+  std::int64_t done_ = 0;
+  std::mutex mutex_;
+};
+
 // One sweep in `direction`, the state carried from each value to the next.
 void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direction,
-           BifurcationDiagram& out) {
+           BifurcationDiagram& out, ValuesDone& done) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
   ShootingOptions shooting;
@@ -108,6 +127,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
       }
     }
     out.summary.push_back(point);
+    done.Tick();
   }
 }
 
@@ -179,7 +199,8 @@ void BifurcationOptions::Validate() const {
 }
 
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options) {
+                                      const BifurcationOptions& options,
+                                      const StartsProgress& progress) {
   options.Validate();
   const Robot base{forcing, params, alpha};
   if (options.param == BifurcationParam::kA && !forcing.harmonic()) {
@@ -204,6 +225,8 @@ BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& para
   if (options.down) parts.push_back(SweepDirection::kDown);
   if (options.analytic) parts.push_back(SweepDirection::kAnalytic);
   std::vector<BifurcationDiagram> results(parts.size());
+  ValuesDone done(progress, static_cast<std::int64_t>(options.steps) *
+                                ((options.up ? 1 : 0) + (options.down ? 1 : 0)));
   detail::ParallelFor(
       static_cast<std::int64_t>(parts.size()),
       detail::WorkerCount(options.threads, static_cast<std::int64_t>(parts.size())),
@@ -212,7 +235,7 @@ BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& para
         if (parts[i] == SweepDirection::kAnalytic) {
           Analytic(base, options, results[i]);
         } else {
-          Sweep(base, options, parts[i], results[i]);
+          Sweep(base, options, parts[i], results[i], done);
         }
       },
       [](std::int64_t) {});

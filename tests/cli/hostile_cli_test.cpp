@@ -361,41 +361,79 @@ std::string DrainTerminal(int master) {
   }
 }
 
-// Progress goes to stderr when it is a terminal, and never to stdout.
-TEST(HostileCliProgress, LongSimulationShowsProgressOnATerminalOnly) {
-  Sandbox box("progress");
+// Runs capsubot with stderr on a pseudo-terminal and stdout to `stdout_path`; returns what the
+// terminal showed, and the exit status in `status` (-1 when it did not exit normally).
+std::string RunWithTerminalStderr(const std::vector<std::string>& args,
+                                  const std::string& stdout_path, int& status) {
+  status = -1;
   const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
-  ASSERT_GE(master, 0);
-  ASSERT_EQ(::grantpt(master), 0);
-  ASSERT_EQ(::unlockpt(master), 0);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) return "";
   const std::string terminal = ::ptsname(master);
   // Held open until the program is done, so the reader never sees a terminal without users.
   const int slave = ::open(terminal.c_str(), O_RDWR | O_NOCTTY);
-  ASSERT_GE(slave, 0);
   std::string shown;
   std::thread reader([&] { shown = DrainTerminal(master); });
-  const std::vector<std::string> args = {
-      "simulate",        "--A",          "0.5",       "--c", "0.5", "--phi0",
-      "-2.944899971002", "--from-orbit", "--periods", "2e5"};
-  const pid_t pid = Spawn(args, (box.root / "stdout.txt").string(), terminal);
-  ASSERT_GT(pid, 0);
+  const pid_t pid = Spawn(args, stdout_path, terminal);
   int raw = 0;
-  ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  const bool waited = pid > 0 && ::waitpid(pid, &raw, 0) == pid;
   ::close(slave);
   reader.join();
   ::close(master);
-  ASSERT_TRUE(WIFEXITED(raw));
-  EXPECT_EQ(WEXITSTATUS(raw), 0);
-  EXPECT_NE(shown.find("200000/200000 periods"), std::string::npos) << shown;
-  const std::string out = ReadFile(box.root / "stdout.txt");
-  EXPECT_EQ(out.find("periods/s"), std::string::npos) << out;
-  EXPECT_NE(out.find("event-driven simulation"), std::string::npos) << out;
-  // The same run with stderr to a file: no progress at all.
-  const pid_t quiet =
-      Spawn(args, (box.root / "stdout2.txt").string(), (box.root / "stderr2.txt").string());
-  ASSERT_EQ(::waitpid(quiet, &raw, 0), quiet);
-  EXPECT_EQ(ReadFile(box.root / "stderr2.txt").find("periods/s"), std::string::npos);
+  if (waited && WIFEXITED(raw)) status = WEXITSTATUS(raw);
+  return shown;
 }
+
+struct ProgressCase {
+  const char* name;
+  std::vector<std::string> args;
+  const char* progress;  // shown on the terminal, never on stdout or in a log file
+  const char* result;    // on stdout
+};
+
+class HostileCliProgress : public ::testing::TestWithParam<ProgressCase> {};
+
+// Progress of long runs goes to stderr when it is a terminal, and never to stdout.
+TEST_P(HostileCliProgress, ShownOnATerminalOnly) {
+  const ProgressCase& c = GetParam();
+  Sandbox box("progress");
+  int status = 0;
+  const std::string shown =
+      RunWithTerminalStderr(c.args, (box.root / "stdout.txt").string(), status);
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(shown.find(c.progress), std::string::npos) << shown;
+  const std::string out = ReadFile(box.root / "stdout.txt");
+  EXPECT_EQ(out.find(c.progress), std::string::npos) << out;
+  EXPECT_NE(out.find(c.result), std::string::npos) << out;
+  // The same run with stderr to a file: no progress at all.
+  int raw = 0;
+  const pid_t quiet =
+      Spawn(c.args, (box.root / "stdout2.txt").string(), (box.root / "stderr2.txt").string());
+  ASSERT_EQ(::waitpid(quiet, &raw, 0), quiet);
+  EXPECT_EQ(ReadFile(box.root / "stderr2.txt").find(c.progress), std::string::npos);
+}
+
+const ProgressCase kProgressCases[] = {
+    {"LongSimulation",
+     {"simulate", "--A", "0.5", "--c", "0.5", "--phi0", "-2.944899971002", "--from-orbit",
+      "--periods", "2e5"},
+     "200000/200000 periods",
+     "event-driven simulation"},
+    {"Bifurcation",
+     {"bifurcation", "--A",  "0.05",     "--c",     "0.02",    "--phi0", "-2.842",
+      "--T0",        "0.1",  "--e",      "0.5",     "--param", "alpha",  "--from",
+      "0.2",         "--to", "0.3",      "--steps", "5",       "-o",     "/dev/null",
+      "--transient", "20",   "--record", "16"},
+     "10/10 parameter values",
+     "bifurcation diagram over alpha"},
+    {"OptimizeStages",
+     {"optimize", "--problem", "phase", "--A", "0.05", "--c", "0.05", "--T0", "0.1",
+      "--from-rest-starts", "2x2"},
+     "optimize: the optimum checked from rest",
+     "capsubot optimize --problem phase"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Runs, HostileCliProgress, ::testing::ValuesIn(kProgressCases),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace capsubot
