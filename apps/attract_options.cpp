@@ -59,6 +59,10 @@ std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
         "{} = {} is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 (e.g. 8x8)", name,
         text));
   }
+  if (static_cast<std::int64_t>(a) * b > kMaxRestStarts) {
+    throw std::invalid_argument(
+        fmt::format("{} = {} is invalid: expected at most {} starts", name, text, kMaxRestStarts));
+  }
   return {a, b};
 }
 

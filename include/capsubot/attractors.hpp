@@ -151,6 +151,9 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
                           const std::vector<PhaseState>& starts, const AttractorOptions& options,
                           const StartsProgress& progress = {});
 
+/// Most starts of a grid from rest (n_x * n_psi): a 2048 x 2048 map, about 0.5 GB of results.
+inline constexpr std::int64_t kMaxRestStarts = 4194304;
+
 /// Starts from rest on the grid of GridStart.
 struct FromRestOptions {
   int n_x = 8;                 ///< starting positions x0 = (i + 0.5)/n_x; >= 1

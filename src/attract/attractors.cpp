@@ -63,6 +63,11 @@ void FromRestOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("n_psi = {} is invalid: expected 1 <= n_psi <= 100000 starting phases", n_psi));
   }
+  if (static_cast<std::int64_t>(n_x) * n_psi > kMaxRestStarts) {
+    throw std::invalid_argument(
+        fmt::format("starts = {}x{} is invalid: expected n_x * n_psi <= {} starts", n_x, n_psi,
+                    kMaxRestStarts));
+  }
   attractor.Validate();
 }
 

@@ -129,6 +129,12 @@ std::vector<Case> Cases() {
       {"NonFiniteTableSaysNotValid", "solve --A 0.5 --c 1e-19 --phi0 -2.9", 0, "", none, "", "",
        "valid            no: violated finite"},
       // Size options: a bound, checked before any work, the range in the message.
+      {"AttractorsStartsBound",
+       "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --alpha 0.28 --starts 100000x100000", 2,
+       "--starts = 100000x100000 is invalid: expected at most 4194304 starts", none},
+      {"BasinsStartsBound",
+       "basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --alpha 0.28 --starts 3000x3000 -o b.csv",
+       2, "--starts = 3000x3000 is invalid: expected at most 4194304 starts", none},
       {"SolveSamplesBound", kSolve + " --samples 2e9 --trajectory t.csv", 2,
        "--samples = 2e9 is invalid: expected an integer 2 <= n <= 10000000", none},
       {"SimulateSamplesPerPeriodBound", kSim + " --samples-per-period 2e9 --trajectory t.csv", 2,
@@ -254,7 +260,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 64;
+constexpr int kCaseCount = 66;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
