@@ -66,10 +66,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {
-      AddSolveCommand(app),      AddSimulateCommand(app), AddOrbitsCommand(app),
-      AddSweepCommand(app),      AddMergeCommand(app),    AddOptimizeCommand(app),
-      AddDesignCommand(app),     AddAttractorsCommand(app), AddPeriodicCommand(app),
-      AddBasinsCommand(app),     AddBifurcationCommand(app)};
+      AddSolveCommand(app),  AddSimulateCommand(app),   AddOrbitsCommand(app),
+      AddSweepCommand(app),  AddMergeCommand(app),      AddOptimizeCommand(app),
+      AddDesignCommand(app), AddAttractorsCommand(app), AddPeriodicCommand(app),
+      AddBasinsCommand(app), AddBifurcationCommand(app)};
   UseStrictNumbers(app);
   try {
     app.parse(argc, argv);

@@ -9,8 +9,7 @@
 int main() {
   const capsubot::Forcing force = capsubot::Forcing::Harmonic(0.5, 0.5, -2.944899971002);
   const capsubot::Solution s = capsubot::Solve(force, capsubot::Params{});
-  std::printf("capsubot %s: phi1 = %.12f alpha = %.12f I = %.12f valid = %d\n",
-              capsubot::Version(), s.orbit.phi1, s.orbit.alpha, s.orbit.I,
-              s.validity.valid() ? 1 : 0);
+  std::printf("capsubot %s: phi1 = %.12f alpha = %.12f I = %.12f valid = %d\n", capsubot::Version(),
+              s.orbit.phi1, s.orbit.alpha, s.orbit.I, s.validity.valid() ? 1 : 0);
   return s.orbit.ok() ? 0 : 1;
 }

@@ -17,10 +17,10 @@ namespace capsubot {
 inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
 
 /// Every one-impact orbit of a robot with fixed mass ratio alpha: all roots phi0 in [-pi, pi) of
-/// alpha(phi0) = alpha (docs/model.md section 8), each solved and checked (the forcing's own phi0 is
-/// ignored). If the work bound max_evaluations (>= 1) stops the search before every part of
-/// the circle is decided, the list may miss orbits: *complete (if given) is set to false then,
-/// true otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations.
+/// alpha(phi0) = alpha (docs/model.md section 8), each solved and checked (the forcing's own phi0
+/// is ignored). If the work bound max_evaluations (>= 1) stops the search before every part of the
+/// circle is decided, the list may miss orbits: *complete (if given) is set to false then, true
+/// otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations.
 std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
                                       bool* complete = nullptr,
                                       std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations);

@@ -40,9 +40,15 @@ void PositionExtrema(const Orbit& o, Validity& v) {
 }  // namespace
 
 const char* ConditionName(Condition condition) {
-  static constexpr const char* kNames[] = {
-      "positive_mean_force", "mass_ratio", "force_below_friction", "stick",
-      "left_wall",           "right_wall", "separation",           "clearance",  "finite"};
+  static constexpr const char* kNames[] = {"positive_mean_force",
+                                           "mass_ratio",
+                                           "force_below_friction",
+                                           "stick",
+                                           "left_wall",
+                                           "right_wall",
+                                           "separation",
+                                           "clearance",
+                                           "finite"};
   static_assert(std::size(kNames) == static_cast<std::size_t>(Condition::kCount));
   return detail::EnumName(kNames, condition);
 }

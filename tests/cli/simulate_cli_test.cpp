@@ -1,6 +1,6 @@
-// The command line of the simulator and the robot orbits: `capsubot simulate`, `capsubot orbits`, `solve --stability`.
-// Reference numbers come from `capsubot solve --json` (the analytic orbit), which the
-// simulation must reproduce.
+// The command line of the simulator and the robot orbits: `capsubot simulate`, `capsubot orbits`,
+// `solve --stability`. Reference numbers come from `capsubot solve --json` (the analytic orbit),
+// which the simulation must reproduce.
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// The constraints shared by P1, P2 and P3 (src/optimize/nlopt_constraints.cpp, docs/model.md sections 5
-// and 7): a force touching its bound is within it up to rounding, as validity itself says.
+// The constraints shared by P1, P2 and P3 (src/optimize/nlopt_constraints.cpp, docs/model.md
+// sections 5 and 7): a force touching its bound is within it up to rounding, as validity itself
+// says.
 
 #include <gtest/gtest.h>
 
