@@ -71,7 +71,7 @@ class Forcing {
   ForceValues Values(double phi) const;
 
   /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
-  /// hi - lo <= tau. Exact (closed form for K = 1, companion matrix otherwise).
+  /// hi - lo <= tau. Exact (closed form for K = 1, a certified subdivision otherwise).
   PhaseList Crossings(double level, double lo, double hi) const;
   /// Exact min and max of F on [lo, hi] (hi - lo <= tau), from the zeros of dF.
   Range Bounds(double lo, double hi) const;

@@ -55,7 +55,7 @@ void BM_SimulateOrbit1000PeriodsWithEnergy(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulateOrbit1000PeriodsWithEnergy);
 
-// A two-harmonic Fourier force (crossings through the companion matrix): a slower path.
+// A two-harmonic Fourier force (crossings by Bernstein subdivision): a slower path.
 void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {
   Params params;
   params.T0 = 0.1;

@@ -35,7 +35,7 @@ void BM_SolvePaperExampleWholeCircle(benchmark::State& state) {
 }
 BENCHMARK(BM_SolvePaperExampleWholeCircle);
 
-// A three-harmonic Fourier force (companion-matrix crossings).
+// A three-harmonic Fourier force (crossings by Bernstein subdivision).
 void BM_SolveFourier3(benchmark::State& state) {
   SolveOverPhases(state, Forcing::Fourier(0.02, {0.01, 0.0, 0.005}, {0.04, 0.01, 0.0}, 0.0),
                   Params{0.1, 0.5}, -3.14159, 3.14159, 1e-3);
