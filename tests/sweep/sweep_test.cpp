@@ -740,6 +740,37 @@ TEST(Sweep, ReachPerPointEqualsOptimizeReachSeededByOptimizeForcing) {
   EXPECT_EQ(found, 2);  // a motion from rest at both T0
 }
 
+// A resume must not mix reach rows of other settings: every reach option that changes the rows
+// is in the checkpoint's description; the thread count of the attractor search is not.
+TEST(SweepCheckpoint, ReachDescriptionHoldsEveryReachOptionThatChangesTheRows) {
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("T0=0.5,1")};
+  o.optimize = SweepOptimize::kReach;
+  o.output = "x.csv";
+  const std::string base = detail::SweepDescription(o);
+  const std::vector<std::function<void(SweepOptions&)>> changes = {
+      [](SweepOptions& s) { s.reach.global_evaluations = 151; },
+      [](SweepOptions& s) { s.reach.local_evaluations = 49; },
+      [](SweepOptions& s) { s.reach.alpha = 0.5; },
+      [](SweepOptions& s) { s.reach.search.n_x = 3; },
+      [](SweepOptions& s) { s.reach.check.n_psi = 9; },
+      [](SweepOptions& s) { s.reach.check.attractor.motion.transient = 201; },
+      [](SweepOptions& s) { s.reach.max_spread = 0.02; },
+      [](SweepOptions& s) { s.design.hops = 3; },
+  };
+  int checked = 0;
+  for (const auto& change : changes) {
+    SweepOptions changed = o;
+    change(changed);
+    EXPECT_NE(detail::SweepDescription(changed), base) << "change " << checked;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 8);
+  SweepOptions threads = o;
+  threads.reach.check.attractor.threads = 2;
+  EXPECT_EQ(detail::SweepDescription(threads), base);
+}
+
 TEST(Sweep, CommentLinesComeFirstAndReadersThatSkipThemSeeTheTable) {
   TempDir dir;
   SweepOptions o = PaperPhaseSweep(dir.File("c.csv"), 9);
