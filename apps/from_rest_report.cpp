@@ -32,13 +32,24 @@ ReachOptions FromRestCliOptions::Reach(double force_bound, double alpha) const {
   return r;
 }
 
-void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
+void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--from-rest-starts", o.starts,
                  "grid NXxNPSI of starts from rest on which every reported gait is checked "
                  "(docs/model.md section 12)")
       ->capture_default_str();
+}
+
+void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
+  AddFromRestStartsOption(cmd, o);
   AddThreadsOption(cmd, o.threads);
   if (!reach) return;
+  AddReachBudgetOptions(cmd, o);
+  cmd.add_option("--reach-seconds", o.reach_seconds,
+                 "wall-clock limit of the reach search in seconds (the re-checks come on top)")
+      ->capture_default_str();
+}
+
+void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--reach-starts", o.reach_starts,
                  "grid NXxNPSI of starts from rest inside the reach search (the winner is "
                  "re-checked on --from-rest-starts)")
@@ -48,9 +59,6 @@ void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
       ->capture_default_str();
   cmd.add_option("--reach-local-evaluations", o.reach_local_evaluations,
                  "from-rest evaluations of the reach search's local polish (Sbplx), >= 0")
-      ->capture_default_str();
-  cmd.add_option("--reach-seconds", o.reach_seconds,
-                 "wall-clock limit of the reach search in seconds (the re-checks come on top)")
       ->capture_default_str();
 }
 

@@ -34,6 +34,11 @@ struct FromRestCliOptions {
 /// Adds --from-rest-starts and --threads; with `reach` also --reach-starts,
 /// --reach-evaluations, --reach-local-evaluations, --reach-seconds.
 void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& options, bool reach);
+/// Adds --from-rest-starts alone.
+void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& options);
+/// Adds the evaluation budgets of the reach search: --reach-starts, --reach-evaluations,
+/// --reach-local-evaluations (not its wall-clock limit --reach-seconds).
+void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
 
 /// The `from_rest` object: the attractors object (AttractorsJson) plus "reached" and
 /// "summary"; null when the gait was not checked (no orbit).

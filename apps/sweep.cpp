@@ -1,11 +1,13 @@
-// capsubot sweep: the orbit, its validity (and stability, or the best phase) over a 1-D or 2-D
-// grid of parameters, to a CSV file (library: capsubot/sweep.hpp).
+// capsubot sweep: the orbit, its validity (and stability), or the optimum of P1, P2, P3 or the
+// reach problem at every point of a grid of parameters, to a CSV file (library:
+// capsubot/sweep.hpp).
 
 #include "capsubot/sweep.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "from_rest_report.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 
@@ -35,6 +38,10 @@ struct SweepCliOptions {
   int starts = 0;  // used only when given: else the problem's default
   CLI::Option* starts_option = nullptr;
   int hops = ForcingDesignOptions{}.hops;
+  int global_evaluations = ForcingDesignOptions{}.global_evaluations;  // used only when given
+  CLI::Option* global_evaluations_option = nullptr;
+  double alpha = std::numeric_limits<double>::quiet_NaN();  // reach: NaN: alpha is optimised
+  FromRestCliOptions from_rest;                             // reach: starts and budgets
   std::string global_algorithm = kMultistart;
   std::string local_algorithm = SearchOptions{}.local_algorithm;
   bool no_header_comment = false;
@@ -54,6 +61,7 @@ constexpr std::pair<const char*, const char*> kFlagOf[] = {
     {"starts", "--starts"},
     {"hops", "--hops"},
     {"rho_max", "--rho-max"},
+    {"alpha", "--alpha"},
     {"shard", "--shard"}};
 
 std::string WithFlagNames(const std::string& message) {
@@ -74,6 +82,73 @@ std::string FlagOf(const GridAxis& axis) {
   return flag;
 }
 
+// P2, P3 and reach choose the whole force: no force option applies.
+bool ChoosesTheForce(SweepOptimize mode) {
+  return mode == SweepOptimize::kForcing || mode == SweepOptimize::kFourier ||
+         mode == SweepOptimize::kReach;
+}
+
+// The modes that use an option; an option not listed determines the content in every mode.
+struct OptionUse {
+  const char* option;
+  std::array<const char*, 4> modes;
+};
+const OptionUse kOptionUses[] = {
+    {"--A", {"none", "phi0"}},
+    {"--c", {"none", "phi0"}},
+    {"--phi0", {"none"}},
+    {"--sin", {"none", "phi0"}},
+    {"--cos", {"none", "phi0"}},
+    {"--stability", {"none", "phi0", "forcing", "fourier"}},
+    {"--rho-max", {"phi0", "forcing", "fourier", "reach"}},
+    {"--stable-only", {"phi0", "forcing", "fourier", "reach"}},
+    {"--scan-points", {"phi0"}},
+    {"--bound", {"forcing", "fourier", "reach"}},
+    {"--harmonics", {"fourier"}},
+    {"--starts", {"forcing", "fourier", "reach"}},
+    {"--hops", {"forcing", "reach"}},
+    {"--global-algorithm", {"forcing", "fourier", "reach"}},
+    {"--local-algorithm", {"forcing", "fourier", "reach"}},
+    {"--global-evaluations", {"forcing", "fourier", "reach"}},
+    {"--alpha", {"reach"}},
+    {"--from-rest-starts", {"reach"}},
+    {"--reach-starts", {"reach"}},
+    {"--reach-evaluations", {"reach"}},
+    {"--reach-local-evaluations", {"reach"}},
+};
+
+bool UsedBy(const OptionUse& use, const char* mode) {
+  for (const char* m : use.modes) {
+    if (m != nullptr && std::strcmp(m, mode) == 0) return true;
+  }
+  return false;
+}
+
+// The options this mode does not use; one of them given would be silently ignored: refused.
+std::vector<std::string> UnusedOptions(const SweepCliOptions& opt, const CLI::App& cmd) {
+  const char* mode = SweepOptimizeName(opt.sweep.optimize);
+  std::vector<std::string> unused;
+  for (const OptionUse& use : kOptionUses) {
+    if (UsedBy(use, mode)) continue;
+    unused.emplace_back(use.option);
+    const CLI::Option* option = cmd.get_option_no_throw(use.option);
+    if (option == nullptr || option->count() == 0) continue;
+    std::string modes;
+    for (const char* m : use.modes) {
+      if (m == nullptr) continue;
+      modes += (modes.empty() ? "" : ", ") + (std::strcmp(m, "none") == 0
+                                                  ? std::string("no --optimize")
+                                                  : std::string("--optimize ") + m);
+    }
+    throw std::invalid_argument(fmt::format(
+        "{} is invalid {}: expected it only with {}", use.option,
+        opt.sweep.optimize == SweepOptimize::kNone ? std::string("without --optimize")
+                                                   : std::string("with --optimize ") + mode,
+        modes));
+  }
+  return unused;
+}
+
 // An option that gives a value the grid also gives, or that the optimiser chooses itself.
 void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
   const SweepOptions& s = opt.sweep;
@@ -92,7 +167,7 @@ void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
           axis.ToString()));
     }
   }
-  if (s.optimize != SweepOptimize::kForcing && s.optimize != SweepOptimize::kFourier) return;
+  if (!ChoosesTheForce(s.optimize)) return;
   for (const char* flag : {"--A", "--c", "--phi0", "--sin", "--cos"}) {
     const CLI::Option* option = cmd.get_option_no_throw(flag);
     if (option != nullptr && option->count() > 0) {
@@ -108,7 +183,7 @@ void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
 void BuildForcing(SweepCliOptions& opt) {
   SweepOptions& s = opt.sweep;
   const Grid& g = s.grid;
-  if (s.optimize == SweepOptimize::kForcing || s.optimize == SweepOptimize::kFourier) return;
+  if (ChoosesTheForce(s.optimize)) return;
   // A gridded A or c needs no option: the grid gives its value at every point.
   if (g.Has(SweepParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
   const bool phase_given_elsewhere = g.Has(SweepParameter::kphi0) ||
@@ -139,16 +214,75 @@ void BuildForcing(SweepCliOptions& opt) {
   }
 }
 
+// The defaults of `optimize --problem reach` that differ from the sweep's: the seed is the
+// robust gait (docs/model.md section 12) unless the command line says otherwise.
+const std::pair<const char*, double> kReachDefaults[] = {
+    {"--rho-max", kRobustRhoMax},
+    {"--margin-stroke", kRobustMarginStroke},
+    {"--stick-margin", kRobustStickMargin},
+};
+
+// True when the value of `flag` comes from its default: not given, not gridded, not implied.
+bool Defaulted(const CLI::App& cmd, const Grid& grid, const std::string& flag) {
+  for (const GridAxis& axis : grid.axes) {
+    if (FlagOf(axis) == flag) return false;
+  }
+  return cmd.count(flag) == 0 && (flag != "--rho-max" || cmd.count("--stable-only") == 0);
+}
+
 // The optimisers' options from the command line (each mode reads its own).
-void SetOptimizerOptions(SweepCliOptions& opt) {
+void SetOptimizerOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   SweepOptions& s = opt.sweep;
+  if (s.optimize == SweepOptimize::kReach) {
+    for (const auto& [flag, value] : kReachDefaults) {
+      if (!Defaulted(cmd, s.grid, flag)) continue;
+      if (std::strcmp(flag, "--rho-max") == 0) opt.rho_max = value;
+      if (std::strcmp(flag, "--margin-stroke") == 0) s.params.margin_stroke = value;
+      if (std::strcmp(flag, "--stick-margin") == 0) s.params.stick_margin = value;
+    }
+    RequireInRange("--reach-evaluations", opt.from_rest.reach_evaluations, 1, kMaxStageEvaluations);
+    RequireInRange("--reach-local-evaluations", opt.from_rest.reach_local_evaluations, 0,
+                   kMaxStageEvaluations);
+    s.reach = opt.from_rest.Reach(opt.bound, opt.alpha);
+    s.reach.max_seconds = SweepReachOptions().max_seconds;  // the budgets bound each point
+  }
   s.phase.rho_max = s.design.rho_max = s.fourier.harmonic.rho_max = opt.rho_max;
   s.design.force_bound = s.fourier.harmonic.force_bound = opt.bound;
   s.fourier.harmonics = opt.harmonics;
   if (opt.starts_option->count() > 0) s.design.starts = s.fourier.search.starts = opt.starts;
+  if (opt.global_evaluations_option->count() > 0) {
+    if (opt.global_algorithm == kMultistart) {
+      throw std::invalid_argument(
+          "--global-evaluations is invalid with --global-algorithm multistart: expected an "
+          "NLopt global algorithm with it (multistart has no evaluation budget)");
+    }
+    RequireInRange("--global-evaluations", opt.global_evaluations, 10, kMaxStageEvaluations);
+    s.design.global_evaluations = s.fourier.search.global_evaluations = opt.global_evaluations;
+  }
   s.design.hops = opt.hops;
   s.design.global_algorithm = s.fourier.search.global_algorithm = opt.global_algorithm;
   s.design.local_algorithm = s.fourier.harmonic.local_algorithm = opt.local_algorithm;
+}
+
+// The comment line: every option that determines the content, with the value this run uses.
+// Left out: how and where the sweep runs, the options this mode does not use, and the
+// defaults of options a grid replaces.
+std::string ProvenanceLine(const SweepCliOptions& opt, const CLI::App& cmd,
+                           std::vector<std::string> exclude) {
+  for (const char* flag : {"--threads", "--output", "--resume", "--checkpoint-seconds",
+                           "--no-header-comment", "--shard"}) {
+    exclude.emplace_back(flag);
+  }
+  for (const GridAxis& axis : opt.sweep.grid.axes) exclude.push_back(FlagOf(axis));
+  Provenance p = CommandProvenance(cmd, exclude);
+  if (opt.sweep.optimize == SweepOptimize::kReach) {
+    for (auto& [name, value] : p.options) {
+      for (const auto& [flag, robust] : kReachDefaults) {
+        if (name == flag && Defaulted(cmd, opt.sweep.grid, flag)) value = FormatNumber(robust);
+      }
+    }
+  }
+  return p.CommandLine();
 }
 
 int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
@@ -168,16 +302,10 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   }
   RejectConflicts(opt, cmd);
   BuildForcing(opt);
-  SetOptimizerOptions(opt);
+  const std::vector<std::string> unused = UnusedOptions(opt, cmd);
+  SetOptimizerOptions(opt, cmd);
   s.comments.clear();
-  if (!opt.no_header_comment) {
-    // Not how or where the sweep runs, and not the defaults of options a grid replaces.
-    std::vector<std::string> exclude = {
-        "--threads",           "--output", "--resume", "--checkpoint-seconds",
-        "--no-header-comment", "--shard"};
-    for (const GridAxis& axis : s.grid.axes) exclude.push_back(FlagOf(axis));
-    s.comments.push_back(CommandProvenance(cmd, exclude).CommandLine());
-  }
+  if (!opt.no_header_comment) s.comments.push_back(ProvenanceLine(opt, cmd, unused));
   s.threads = CapThreads(s.threads, "capsubot sweep");
   const bool tty = StderrIsTerminal();
   ProgressBar bar("points");
@@ -220,8 +348,9 @@ Command AddSweepCommand(CLI::App& app) {
   auto opt = std::make_shared<SweepCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "The orbit and its validity (docs/model.md sections 4-5), or the best gait of problem "
-      "P1, P2 or P3 (section 7), at every point of a grid of parameters, to a CSV file: "
+      "The orbit and its validity (docs/model.md sections 4-5), the best gait of problem "
+      "P1, P2 or P3 (section 7) or the fastest motion from rest (section 13), at every point "
+      "of a grid of parameters, to a CSV file: "
       "comment lines (# capsubot <version> sweep <options>), a header, one row per point "
       "(empty cell: the quantity does not exist). Runs on all cores; the file is "
       "byte-identical for any --threads, written to <output>.partial and renamed at the end; "
@@ -267,8 +396,11 @@ Command AddSweepCommand(CLI::App& app) {
              "--optimize", opt->optimize,
              "the best gait at every point: phi0 (P1: the impact phase for the given force "
              "shape; adds column phi0), forcing (P2: A, c, phi0 with A + c <= --bound; "
-             "adds A, c, phi0) or fourier (P3: a --harmonics K force with max |F| <= "
-             "--bound; adds c, a1..aK, b1..bK); adds a status column")
+             "adds A, c, phi0), fourier (P3: a --harmonics K force with max |F| <= "
+             "--bound; adds c, a1..aK, b1..bK) or reach (the fastest motion from rest, as "
+             "`optimize --problem reach`: A, c, phi0, alpha, mean_velocity, ..., the robust "
+             "seed's seed_v_mean and seed_mean_velocity_from_rest; seconds per point); adds a "
+             "status column")
           ->type_name(modes);
   CLI::Option* rho_max =
       cmd->add_option("--rho-max", opt->rho_max,
@@ -289,26 +421,38 @@ Command AddSweepCommand(CLI::App& app) {
       ->capture_default_str()
       ->needs(optimize);
   cmd->add_option("--bound", opt->bound,
-                  "with --optimize forcing|fourier: the force bound A + c (max |F|) <= bound "
-                  "<= T0 (default: T0)");
+                  "with --optimize forcing|fourier|reach: the force bound A + c (max |F|) <= "
+                  "bound <= T0 (default: T0)");
   cmd->add_option("--harmonics", opt->harmonics,
                   "with --optimize fourier: the number K of harmonics")
       ->capture_default_str();
   opt->starts_option = cmd->add_option(
       "--starts", opt->starts,
-      "with --optimize forcing|fourier: local polishes of the multistart, >= 1 (default: 10 "
-      "for forcing, 20 for fourier)");
+      "with --optimize forcing|fourier|reach: local polishes of the multistart, >= 1 "
+      "(default: 10 for forcing and reach's seed, 20 for fourier)");
   cmd->add_option("--hops", opt->hops,
-                  "with --optimize forcing: basin-hopping restarts after the starts")
+                  "with --optimize forcing|reach: basin-hopping restarts after the starts")
       ->capture_default_str();
   cmd->add_option("--global-algorithm", opt->global_algorithm,
-                  "with --optimize forcing|fourier: multistart or an NLopt global algorithm "
-                  "(GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
+                  "with --optimize forcing|fourier|reach: multistart or an NLopt global "
+                  "algorithm (GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
       ->capture_default_str();
   cmd->add_option("--local-algorithm", opt->local_algorithm,
-                  "with --optimize forcing|fourier: the local polish (LN_COBYLA, LD_SLSQP, "
-                  "LD_MMA, LD_CCSAQ)")
+                  "with --optimize forcing|fourier|reach: the local polish (LN_COBYLA, "
+                  "LD_SLSQP, LD_MMA, LD_CCSAQ)")
       ->capture_default_str();
+  opt->global_evaluations_option = cmd->add_option(
+      "--global-evaluations", opt->global_evaluations,
+      fmt::format("with --optimize forcing|fourier|reach: evaluation budget of an NLopt global "
+                  "algorithm (not multistart), 10 to {}",
+                  kMaxStageEvaluations));
+  cmd->add_option("--alpha", opt->alpha,
+                  "with --optimize reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is "
+                  "optimised too)");
+  // reach: the seed's check from rest and the search's evaluation budgets, which bound each
+  // point (no wall-clock limit: the rows must not depend on the machine's speed).
+  AddFromRestStartsOption(*cmd, opt->from_rest);
+  AddReachBudgetOptions(*cmd, opt->from_rest);
   cmd->add_flag("--no-header-comment", opt->no_header_comment,
                 "write no comment lines before the header (for tools that cannot skip '#' "
                 "lines; pandas: comment='#', gnuplot: skips them by default)");

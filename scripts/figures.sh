@@ -12,6 +12,7 @@
 #   basins_coexisting.{csv,png}: basins of a one-impact orbit and a period-12 motion
 #   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
 #   p2_T0_e.csv, p2_T0_e_stable.csv, p2_T0_e.png: the P2 optimum at every (T0, e)
+#   reach_T0.csv, reach_T0.png: the fastest motion from rest at every T0 (sweep --optimize reach)
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -79,6 +80,8 @@ T0_grid="T0=0.01:1:$n_T0:log" e_grid="e=0:1:11"
   -o "$out/p2_T0_e.csv"
 "$cli" sweep --grid "$T0_grid" --grid "$e_grid" --optimize forcing --stable-only --stability \
   -o "$out/p2_T0_e_stable.csv"
+say "reach per point: the fastest motion from rest at 7 values of T0 (about a minute of CPU)"
+"$cli" sweep --grid T0=0.05:1:7:log --optimize reach -o "$out/reach_T0.csv"
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -151,4 +154,5 @@ say "basins of two coexisting attractors (drawn by capsubot basins through gnupl
   --plot "$out/basins_coexisting.png"
 gnuplot -e "term='$term'; out='$out/p2_T0_e.png'; valid_data='$out/p2_T0_e.csv';
   stable_data='$out/p2_T0_e_stable.csv'; n_T0=$n_T0" "$gp/p2_T0_e.gp"
+gnuplot -e "term='$term'; data='$out/reach_T0.csv'; out='$out/reach_T0.png'" "$gp/reach_T0.gp"
 say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"

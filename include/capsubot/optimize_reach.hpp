@@ -57,7 +57,9 @@ struct ReachOptions {
   int global_evaluations = 150;  ///< from-rest evaluations of the global stage; >= 1
   int local_evaluations = 50;    ///< from-rest evaluations of the local polish; >= 0
   /// Wall-clock limit of the search (global + local stage), seconds; > 0. The re-checks of the
-  /// candidates with the full settings come on top (a handful of from-rest runs).
+  /// candidates with the full settings come on top (a handful of from-rest runs). Infinity:
+  /// none; the evaluation budgets alone bound the search, and the result no longer depends on
+  /// the machine's speed (deterministic: what a sweep needs).
   double max_seconds = 20.0;
   /// Relative tolerance of the local polish on y and on the mean velocity; > 0.
   double rel_tol = 1e-4;

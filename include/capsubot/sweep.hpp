@@ -21,6 +21,11 @@
 //               [, stability columns], status. The variables are phi0 (P1), A, c, phi0 (P2),
 //               c, a1..aK, b1..bK (P3, force seen from the impact); status is the optimiser's
 //               (with no_valid_orbit the row is its point nearest to validity).
+//   reach:      <grid parameters>, A, c, phi0, alpha, mean_velocity, seed_won,
+//               robust_to_settings, max_relative_deviation, evaluations, seed_A, seed_c,
+//               seed_phi0, seed_alpha, seed_I, seed_v_mean, seed_mean_velocity_from_rest,
+//               seed_reached, status: the fastest motion from rest (OptimizeReach) and the
+//               robust gait it was seeded with (ReachResult, the names of its JSON object).
 //   alpha grid (robot mode): <grid parameters>, orbits, orbit, phi0, phi1, ..., violations
 //               [, stability columns]: one row per one-impact orbit of the robot (orbit =
 //               1..orbits, in increasing phi0); a point with no orbit gets one row with
@@ -40,6 +45,7 @@
 #include "capsubot/optimize_forcing.hpp"
 #include "capsubot/optimize_fourier.hpp"
 #include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize_reach.hpp"
 #include "capsubot/params.hpp"
 
 namespace capsubot {
@@ -50,15 +56,19 @@ enum class SweepOptimize {
   kPhase,    ///< P1: the best impact phase phi0 for the force shape (OptimizePhase)
   kForcing,  ///< P2: the best A, c, phi0 (OptimizeForcing)
   kFourier,  ///< P3: the best K-harmonic force (OptimizeFourier)
+  kReach,    ///< the fastest motion from rest (OptimizeReach), seeded by P2 with `design`
 };
 
-/// The mode's name: "none", "phi0", "forcing", "fourier".
+/// The mode's name: "none", "phi0", "forcing", "fourier", "reach".
 const char* SweepOptimizeName(SweepOptimize mode);
 /// Every mode that optimises, in a fixed order (for parsers and messages).
 std::vector<SweepOptimize> SweepOptimizeModes();
 /// The mode called `name` (SweepOptimizeName); throws std::invalid_argument
-/// "optimize = <name> is invalid: expected one of phi0, forcing, fourier".
+/// "optimize = <name> is invalid: expected one of phi0, forcing, fourier, reach".
 SweepOptimize ParseSweepOptimize(const std::string& name);
+
+/// ReachOptions with no wall-clock limit (max_seconds infinite), as a sweep needs them.
+ReachOptions SweepReachOptions();
 
 struct SweepOptions {
   /// The grid; its parameters replace the values of `forcing`, `params` and the optimiser's
@@ -66,7 +76,7 @@ struct SweepOptions {
   Grid grid;
   /// The force at every point, except the gridded parameters; an A grid needs the harmonic
   /// family; a grid over a_k or b_k beyond its K adds harmonics (the others 0). Its phi0 is
-  /// ignored with an optimisation or an alpha grid; the whole force with P2 and P3.
+  /// ignored with an optimisation or an alpha grid; the whole force with P2, P3 and reach.
   Forcing forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
   /// T0, e and the margins at every point, except the gridded ones.
   Params params;
@@ -76,10 +86,17 @@ struct SweepOptions {
   SweepOptimize optimize = SweepOptimize::kNone;
   /// Options of P1 (OptimizePhase); `phase.rho_max` bounds the spectral radius (1: stable).
   PhaseOptions phase;
-  /// Options of P2 (OptimizeForcing); a grid over bound or rho_max sets its fields.
+  /// Options of P2 (OptimizeForcing), also the seed of the reach search (its force bound
+  /// bounds the search too); a grid over bound or rho_max sets its fields.
   ForcingDesignOptions design;
   /// Options of P3 (OptimizeFourier); a grid over bound or rho_max sets those of its `harmonic`.
   FourierOptions fourier;
+  /// Options of the reach search (OptimizeReach). Its force bound is design.force_bound and its
+  /// seed is OptimizeForcing(params, design) at the point (its seed_design and seed margins
+  /// are not used); max_seconds must be infinite (SweepReachOptions): the evaluation budgets
+  /// bound each point, so that the rows do not depend on the machine's speed. Each point runs
+  /// on one thread.
+  ReachOptions reach = SweepReachOptions();
   /// Lines written first, each as `# ` + line (provenance: what made the file); part of the
   /// file's bytes, so a resume must give the same. No line may contain a line break.
   std::vector<std::string> comments;

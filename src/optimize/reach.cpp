@@ -89,7 +89,7 @@ OptimizeStatus RunStage(nlopt::algorithm algorithm, Context& ctx, const std::vec
     opt.set_upper_bounds(upper);
     opt.set_max_objective(Objective, &ctx);
     opt.set_maxeval(evaluations);
-    opt.set_maxtime(seconds);
+    opt.set_maxtime(std::isinf(seconds) ? 0.0 : seconds);  // NLopt: 0 means no limit
     opt.set_xtol_rel(rel_tol);
     opt.set_ftol_rel(rel_tol);
     std::vector<double> step(n);
@@ -198,8 +198,9 @@ void ReachOptions::Validate() const {
       fmt::format("global_evaluations = {} is invalid: expected at least 1", global_evaluations));
   Require(local_evaluations >= 0,
           fmt::format("local_evaluations = {} is invalid: expected at least 0", local_evaluations));
-  Require(std::isfinite(max_seconds) && max_seconds > 0.0,
-          fmt::format("max_seconds = {} is invalid: expected a finite time > 0", max_seconds));
+  Require(max_seconds > 0.0,
+          fmt::format("max_seconds = {} is invalid: expected a time > 0 (infinity: none)",
+                      max_seconds));
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
   Require(std::isfinite(max_spread) && max_spread >= 0.0,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -50,6 +51,8 @@ constexpr ModeRule kModes[] = {
     {SweepOptimize::kForcing, "forcing", "problem P2, the best A, c and phi0",
      kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
     {SweepOptimize::kFourier, "fourier", "problem P3, the best K-harmonic force",
+     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+    {SweepOptimize::kReach, "reach", "the fastest motion from rest, seeded by P2",
      kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
 };
 
@@ -132,6 +135,12 @@ std::vector<SweepOptimize> SweepOptimizeModes() {
   return modes;
 }
 
+ReachOptions SweepReachOptions() {
+  ReachOptions r;
+  r.max_seconds = std::numeric_limits<double>::infinity();
+  return r;
+}
+
 SweepOptimize ParseSweepOptimize(const std::string& name) {
   std::string names;
   for (SweepOptimize mode : SweepOptimizeModes()) {
@@ -205,6 +214,23 @@ void SweepOptions::Validate() const {
       fourier.Validate();
       CheckBoundAgainstT0(*this, fourier.harmonic);
       break;
+    case SweepOptimize::kReach:
+      design.Validate();
+      reach.Validate();
+      if (!std::isinf(reach.max_seconds)) {
+        throw std::invalid_argument(fmt::format(
+            "reach.max_seconds = {} is invalid with optimize = reach: expected infinity (no "
+            "wall-clock limit: the evaluation budgets bound each point, so the rows do not "
+            "depend on the machine's speed)",
+            reach.max_seconds));
+      }
+      if (stability) {
+        throw std::invalid_argument(
+            "stability = true is invalid with optimize = reach: expected no stability columns "
+            "(the motion reached from rest is not one orbit)");
+      }
+      CheckBoundAgainstT0(*this, design);
+      break;
   }
 }
 
@@ -237,6 +263,10 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
         }
       }
       break;
+    case SweepOptimize::kReach:  // its own columns, the status last
+      for (const auto& cell : detail::ReachCells(ReachResult{})) columns.emplace_back(cell.first);
+      columns.emplace_back("status");
+      return columns;
   }
   for (const char* name :
        {"phi1", "alpha", "u", "v_plus", "I", "v_mean", "x_min", "x_max", "valid", "violations"}) {

@@ -7,6 +7,7 @@
 
 #include "capsubot/io.hpp"
 #include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize_reach.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 
@@ -50,6 +51,29 @@ std::string SearchDescription(const SearchOptions& s) {
 std::string DesignDescription(const ForcingDesignOptions& p) {
   return SearchDescription(p) + fmt::format(" grid_points={} hops={} phase_exact_evaluations={}",
                                             p.grid, p.hops, p.phase_exact_evaluations);
+}
+
+// The from-rest settings that change results (not the thread count).
+std::string FromRestDescription(const FromRestOptions& f) {
+  const AttractorOptions& a = f.attractor;
+  const MotionOptions& m = a.motion;
+  return fmt::format(
+      " n_x={} n_psi={} transient={} record={} max_period={} state_tol={} converged_tol={} "
+      "chatter={} events={} velocity_tol={} orbit_tol={}",
+      f.n_x, f.n_psi, m.transient, m.record, m.max_period, Hex(m.state_tolerance),
+      Hex(m.converged_tolerance), Hex(m.chatter_velocity), m.max_events_per_period,
+      Hex(a.velocity_tolerance), Hex(a.orbit_tolerance));
+}
+
+std::string ReachDescription(const ReachOptions& r) {
+  return fmt::format(
+             " reach_alpha={} alpha_box={}:{} reach_global={} reach_local={} "
+             "reach_global_evaluations={} reach_local_evaluations={} reach_rel_tol={} "
+             "candidates={} max_spread={} reach_seed={}",
+             Hex(r.alpha), Hex(r.alpha_min), Hex(r.alpha_max), r.global_algorithm,
+             r.local_algorithm, r.global_evaluations, r.local_evaluations, Hex(r.rel_tol),
+             r.candidates, Hex(r.max_spread), r.seed) +
+         FromRestDescription(r.search) + FromRestDescription(r.check);
 }
 
 }  // namespace
@@ -113,12 +137,17 @@ std::string SweepDescription(const SweepOptions& o) {
       d += DesignDescription(o.fourier.harmonic) + EffortDescription(o.fourier.search) +
            fmt::format(" harmonics={}", o.fourier.harmonics);
       break;
+    case SweepOptimize::kReach:
+      d += DesignDescription(o.design) + ReachDescription(o.reach);
+      break;
   }
   return d;
 }
 
 SweepPoint::SweepPoint(const SweepOptions& o)
-    : params(o.params), phase(o.phase), design(o.design), fourier(o.fourier) {
+    : params(o.params), phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
+  // The sweep's threads work on different points (the result does not depend on this).
+  reach.search.attractor.threads = reach.check.attractor.threads = 1;
   const Forcing& f = o.forcing;
   const int K = SweepHarmonics(o);
   a.assign(static_cast<std::size_t>(K), 0.0);
@@ -166,7 +195,7 @@ void SweepPoint::Set(const GridAxis& axis, double value) {
     case SweepParameter::ksin:
       b[static_cast<std::size_t>(axis.harmonic - 1)] = value;
       break;
-    case SweepParameter::kbound:
+    case SweepParameter::kbound:  // the reach search's bound is design.force_bound
       design.force_bound = value;
       fourier.harmonic.force_bound = value;
       break;
@@ -263,7 +292,48 @@ void SweepRowWriter::AppendVariables(const Forcing& f, bool exists, RowBuffer& o
       for (int k = 1; k <= K; ++k) cell(k <= g.harmonics() ? g.b(k) : 0.0);
       break;
     }
+    case SweepOptimize::kReach:  // AppendReach
+      break;
   }
+}
+
+std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
+  constexpr double kNaN = ReachResult::kNaN;
+  const bool found = !std::isnan(r.mean_velocity);
+  const bool seed = r.seed.from_rest.checked;
+  const Orbit& so = r.seed.gait.solution.orbit;
+  return {{"A", found ? r.forcing.amplitude() : kNaN},
+          {"c", found ? r.forcing.mean() : kNaN},
+          {"phi0", found ? r.forcing.phi0() : kNaN},
+          {"alpha", r.alpha},
+          {"mean_velocity", r.mean_velocity},
+          {"seed_won", r.seed_won ? 1.0 : 0.0},
+          {"robust_to_settings", r.robust_to_settings ? 1.0 : 0.0},
+          {"max_relative_deviation", r.spread.max_relative_deviation},
+          {"evaluations", static_cast<double>(r.evaluations)},
+          {"seed_A", seed ? so.forcing.amplitude() : kNaN},
+          {"seed_c", seed ? so.forcing.mean() : kNaN},
+          {"seed_phi0", seed ? so.forcing.phi0() : kNaN},
+          {"seed_alpha", seed ? so.alpha : kNaN},
+          {"seed_I", seed ? so.I : kNaN},
+          {"seed_v_mean", seed ? so.v_mean : kNaN},
+          {"seed_mean_velocity_from_rest", seed ? r.seed.from_rest.attractors.mean_velocity : kNaN},
+          {"seed_reached", seed ? static_cast<double>(r.seed.from_rest.reached) : kNaN}};
+}
+
+// The fastest motion from rest at the point, seeded by P2 with the sweep's design options (as
+// `capsubot optimize --problem reach` does): the bound is design.force_bound.
+void SweepRowWriter::AppendReach(RowBuffer& out) const {
+  ReachOptions options = point_.reach;
+  options.force_bound = point_.design.force_bound;
+  const ReachResult r =
+      OptimizeReach(point_.params, OptimizeForcing(point_.params, point_.design), options);
+  for (const auto& cell : ReachCells(r)) {
+    AppendNumber(out, cell.second);
+    out.push_back(',');
+  }
+  Append(out, OptimizeStatusName(r.status));
+  out.push_back('\n');
 }
 
 int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
@@ -313,6 +383,10 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
     out.push_back('\n');
     return 1;
   }
+  if (options_.optimize == SweepOptimize::kReach) {
+    AppendReach(out);
+    return 1;
+  }
   OptimizeResult r;
   switch (options_.optimize) {
     case SweepOptimize::kPhase:
@@ -325,6 +399,7 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
       r = OptimizeFourier(point_.params, point_.fourier);
       break;
     case SweepOptimize::kNone:  // handled above
+    case SweepOptimize::kReach:
       break;
   }
   const Solution& s = r.solution;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capsubot/sweep.hpp"
@@ -29,6 +30,11 @@ std::string SweepHeaderLines(const SweepOptions& options);
 /// checkpoint: a resume must match it exactly.
 std::string SweepDescription(const SweepOptions& options);
 
+/// The numeric cells of a reach row, name and value, in column order (the status follows);
+/// the names are those of the reach JSON object (seed.v_mean is seed_v_mean), 0/1 for flags,
+/// NaN (an empty cell) for what was not found.
+std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r);
+
 /// The values a sweep point sets: the force's coefficients, the model parameters, the robot's
 /// mass ratio and the optimisers' options.
 struct SweepPoint {
@@ -39,6 +45,7 @@ struct SweepPoint {
   PhaseOptions phase;
   ForcingDesignOptions design;
   FourierOptions fourier;
+  ReachOptions reach;
 
   /// The sweep's fixed values (the grid not applied yet).
   explicit SweepPoint(const SweepOptions& options);
@@ -59,6 +66,7 @@ class SweepRowWriter {
   void AppendSolution(const Solution& s, RowBuffer& out) const;
   void AppendVariables(const Forcing& f, bool exists, RowBuffer& out) const;
   int AppendRobotPoint(std::int64_t point, RowBuffer& out);
+  void AppendReach(RowBuffer& out) const;
 
   const SweepOptions& options_;
   bool rebuild_force_ = false;  // a force coefficient is gridded: rebuilt at each point

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -58,6 +59,16 @@ struct Outcome {
 Outcome RunCli(const std::string& args, const std::string& log) {
   const int raw = std::system((kCli + " " + args + " > '" + log + "' 2>&1").c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(log)};
+}
+
+// The cells of one CSV line.
+std::vector<std::string> Cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
 }
 
 // Complete grid points recorded in a checkpoint file (0 if absent or unreadable).
@@ -240,8 +251,27 @@ INSTANTIATE_TEST_SUITE_P(
                    "--phi0 = 1 is invalid with --optimize phi0"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --threads -2",
                    "--threads = -2 is invalid: expected 1 <= threads"},
-        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --T0 0",
-                   "friction bound T0 = 0 is invalid"}));
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --T0 0", "friction bound T0 = 0 is invalid"},
+        // An option the sweep would not use is refused, not silently ignored.
+        BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --harmonics 3",
+                   "--harmonics is invalid without --optimize: expected it only with --optimize "
+                   "fourier"},
+        BadCommand{"--grid T0=0.5,1 --optimize forcing --reach-starts 2x2",
+                   "--reach-starts is invalid with --optimize forcing: expected it only with "
+                   "--optimize reach"},
+        BadCommand{"--grid T0=0.5,1 --optimize reach --stability",
+                   "--stability is invalid with --optimize reach: expected it only with no "
+                   "--optimize, --optimize phi0, --optimize forcing, --optimize fourier"},
+        BadCommand{"--grid T0=0.5,1 --optimize reach --A 0.1",
+                   "--A is invalid with --optimize reach: expected no force option"},
+        BadCommand{"--grid T0=0.5,1 --optimize reach --reach-evaluations 0",
+                   "--reach-evaluations = 0 is invalid: expected 1 <= reach-evaluations"},
+        BadCommand{"--grid T0=0.5,1 --optimize reach --alpha 1.5",
+                   "--alpha = 1.5 is invalid: expected 0 < alpha < 1"},
+        BadCommand{"--grid T0=0.5,1 --optimize reach --grid rho_max=0.5,0.9 --stable-only",
+                   "--stable-only (rho_max = 1) is invalid with --grid rho_max=0.5,0.9"},
+        BadCommand{"--grid T0=0.5,1 --optimize forcing --global-evaluations 50",
+                   "--global-evaluations is invalid with --global-algorithm multistart"}));
 
 // The first line records what made the file; it leaves out the thread count and the output,
 // so that the same content carries the same line, and replaying it gives the same bytes.
@@ -258,14 +288,14 @@ TEST(SweepCli, TheProvenanceLineReproducesTheFile) {
   EXPECT_TRUE(a == ReadFile(dir.File("b.csv"))) << "thread count or checkpoints changed the bytes";
   const std::string version = RunCli("--version", dir.File("v")).output;
   const std::string line = a.substr(0, a.find('\n'));
-  EXPECT_EQ(line.rfind("# capsubot " + version.substr(0, version.find('\n')) +
-                           " sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 "
-                           "--T0 1 --margin 0 --margin-stroke 0 --stick-margin 0 --stability ",
-                       0),
-            0u)
-      << line;
+  EXPECT_EQ(line, "# capsubot " + version.substr(0, version.find('\n')) +
+                      " sweep --grid e=0.5,1 --grid c=0.01:0.1:3:log --A 0.2 --phi0 -2.7 "
+                      "--T0 1 --margin 0 --margin-stroke 0 --stick-margin 0 --stability");
+  // Not how or where it ran, nor the options of optimisers this sweep does not run.
   for (const char* left_out :
-       {"--threads", "--output", "-o ", "--checkpoint", "--resume", "--e "}) {
+       {"--threads", "--output", "-o ", "--checkpoint", "--resume", "--e ", "--rho-max",
+        "--scan-points", "--bound", "--harmonics", "--starts", "--hops", "--global-algorithm",
+        "--local-algorithm", "--global-evaluations", "--alpha", "--from-rest-starts", "--reach"}) {
     EXPECT_EQ(line.find(left_out), std::string::npos) << left_out << " in " << line;
   }
   // Replay: the command after "# capsubot <version> " with a new output.
@@ -276,6 +306,91 @@ TEST(SweepCli, TheProvenanceLineReproducesTheFile) {
   ASSERT_EQ(RunCli(args + " --no-header-comment -o " + dir.File("d.csv"), dir.File("log")).status,
             0);
   EXPECT_EQ(ReadFile(dir.File("d.csv")), a.substr(a.find('\n') + 1));
+}
+
+// An optimising sweep records the options of its optimiser (defaults included), and only
+// those: P2 has no harmonics, scan points or reach budgets.
+TEST(SweepCli, TheProvenanceLineOfAnOptimisingSweepHasItsOptimiserOptions) {
+  TempDir dir;
+  const Outcome r =
+      RunCli("sweep --grid T0=0.1,0.2 --optimize forcing --starts 2 --no-header-comment -o " +
+                 dir.File("plain.csv") + " && " + kCli +
+                 " sweep --grid T0=0.1,0.2 --optimize forcing --starts 2 -o " + dir.File("p2.csv"),
+             dir.File("log"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string text = ReadFile(dir.File("p2.csv"));
+  const std::string line = text.substr(0, text.find('\n'));
+  const std::string options = line.substr(line.find(" sweep ") + 1);
+  EXPECT_EQ(options,
+            "sweep --grid T0=0.1,0.2 --e 1 --margin 0 --margin-stroke 0 --stick-margin 0 "
+            "--optimize forcing --rho-max inf --starts 2 --hops 20 --global-algorithm multistart "
+            "--local-algorithm LN_COBYLA");
+  EXPECT_EQ(text.substr(text.find('\n') + 1), ReadFile(dir.File("plain.csv")));
+}
+
+// `sweep --optimize reach` equals `optimize --problem reach` at each point with the same
+// options: the same defaults (the robust seed: rho_max 0.9, d_s = s = 0.02), the same flags.
+TEST(SweepCli, ReachSweepEqualsOptimizeProblemReachAtEachPoint) {
+  TempDir dir;
+  const std::string budget =
+      " --starts 2 --hops 1 --from-rest-starts 2x2 --reach-starts 2x2 --reach-evaluations 8 "
+      "--reach-local-evaluations 4";
+  const Outcome r = RunCli("sweep --grid T0=0.5,1 --optimize reach --threads 2" + budget + " -o " +
+                               dir.File("reach.csv"),
+                           dir.File("log"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string text = ReadFile(dir.File("reach.csv"));
+  std::istringstream lines(text);
+  std::string comment, header;
+  std::getline(lines, comment);
+  std::getline(lines, header);
+  EXPECT_NE(comment.find(" --rho-max 0.9 "), std::string::npos) << comment;
+  EXPECT_NE(comment.find(" --margin-stroke 0.02 --stick-margin 0.02 "), std::string::npos)
+      << comment;
+  EXPECT_NE(comment.find(" --reach-evaluations 8 --reach-local-evaluations 4"), std::string::npos)
+      << comment;
+  const std::vector<std::string> names = Cells(header);
+  ASSERT_EQ(names.size(), 19u) << header;
+  int checked = 0;
+  for (const char* T0 : {"0.5", "1"}) {
+    std::string row;
+    std::getline(lines, row);
+    const std::vector<std::string> cells = Cells(row);
+    ASSERT_EQ(cells.size(), names.size()) << row;
+    EXPECT_EQ(cells[0], T0);
+    const Outcome o = RunCli(std::string("optimize --problem reach --json --T0 ") + T0 + budget,
+                             dir.File("json"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    const nlohmann::json j = nlohmann::json::parse(o.output);
+    const nlohmann::json& seed = j["seed"];
+    const std::vector<std::pair<std::string, nlohmann::json>> expected = {
+        {"A", j["A"]},
+        {"c", j["c"]},
+        {"phi0", j["phi0"]},
+        {"alpha", j["alpha"]},
+        {"mean_velocity", j["mean_velocity"]},
+        {"seed_won", j["seed_won"].get<bool>() ? 1 : 0},
+        {"robust_to_settings", j["robust_to_settings"].get<bool>() ? 1 : 0},
+        {"max_relative_deviation", j["spread"]["max_relative_deviation"]},
+        {"evaluations", j["evaluations"]},
+        {"seed_A", seed["A"]},
+        {"seed_c", seed["c"]},
+        {"seed_phi0", seed["phi0"]},
+        {"seed_alpha", seed["alpha"]},
+        {"seed_I", seed["I"]},
+        {"seed_v_mean", seed["v_mean"]},
+        {"seed_mean_velocity_from_rest", seed["mean_velocity_from_rest"]},
+        {"seed_reached", seed["reached"]}};
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      EXPECT_EQ(names[i + 1], expected[i].first);
+      EXPECT_EQ(std::stod(cells[i + 1]), expected[i].second.get<double>())
+          << expected[i].first << " at T0 = " << T0;
+    }
+    EXPECT_EQ(cells.back(), j["status"].get<std::string>());
+    EXPECT_EQ(cells.back(), "ok");
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
 }
 
 // gnuplot reads the file as it is: it skips the comment line and takes the header's names.

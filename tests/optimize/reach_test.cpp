@@ -106,7 +106,7 @@ TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
       {"evaluations", [](ReachOptions& o) { o.global_evaluations = 0; },
        "global_evaluations = 0 is invalid: expected at least 1"},
       {"time", [](ReachOptions& o) { o.max_seconds = 0.0; },
-       "max_seconds = 0 is invalid: expected a finite time > 0"},
+       "max_seconds = 0 is invalid: expected a time > 0 (infinity: none)"},
       {"search grid", [](ReachOptions& o) { o.search.n_x = 0; },
        "n_x = 0 is invalid: expected 1 <= n_x <= 100000 starting positions"},
   };

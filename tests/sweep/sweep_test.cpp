@@ -27,6 +27,7 @@
 #include "capsubot/optimize_forcing.hpp"
 #include "capsubot/optimize_fourier.hpp"
 #include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize_reach.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
@@ -430,6 +431,20 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
        },
        ""},  // accepted: rho_max is the stability requirement (infinity: none)
       {[](SweepOptions& o) { o.comments = {"two\nlines"}; }, "comments are invalid..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("T0=0.5,1")};
+         o.optimize = SweepOptimize::kReach;
+         o.reach.max_seconds = 20.0;  // a wall-clock limit would make rows machine-dependent
+       },
+       "reach.max_seconds = 20 is invalid with optimize = reach: expected infinity..."},
+      {[](SweepOptions& o) {
+         o.grid.axes = {ParseGridAxis("T0=0.5,1")};
+         o.optimize = SweepOptimize::kReach;
+         o.stability = true;
+       },
+       "stability = true is invalid with optimize = reach..."},
+      {[](SweepOptions& o) { o.optimize = SweepOptimize::kReach; },
+       "grid phi0=-3.141592653589793:3.141592653589793:5 is invalid with optimize = reach..."},
   };
   int checked = 0;
   for (const Bad& bad : cases) {
@@ -447,10 +462,10 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
         << "a library message names a flag: " << message;
     ++checked;
   }
-  EXPECT_EQ(checked, 11);
+  EXPECT_EQ(checked, 14);
   EXPECT_EQ(ParseSweepOptimize("forcing"), SweepOptimize::kForcing);
   EXPECT_EQ(InvalidArgumentMessage([] { ParseSweepOptimize("phi1"); }),
-            "optimize = phi1 is invalid: expected one of phi0, forcing, fourier");
+            "optimize = phi1 is invalid: expected one of phi0, forcing, fourier, reach");
 }
 
 TEST(Sweep, StabilityColumnsEqualComputeStability) {
@@ -660,6 +675,100 @@ TEST(Sweep, FourierPerPointEqualsOptimizeFourier) {
     expected.emplace_back(OptimizeStatusName(r.status));
     EXPECT_EQ(rows[i + 1], expected) << "e = " << p.e;
   }
+}
+
+// The fastest motion from rest at every point of a T0 grid: each row is what OptimizeReach
+// returns there, seeded by OptimizeForcing with the sweep's design options, as `capsubot
+// optimize --problem reach` computes it (small budgets keep the test short; the sweep runs
+// each point on one thread, the reference on all cores: the result must not depend on it).
+TEST(Sweep, ReachPerPointEqualsOptimizeReachSeededByOptimizeForcing) {
+  TempDir dir;
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("T0=0.5,1")};
+  o.optimize = SweepOptimize::kReach;
+  o.params.margin_stroke = kRobustMarginStroke;
+  o.params.stick_margin = kRobustStickMargin;
+  o.design.rho_max = kRobustRhoMax;
+  o.design.starts = 2;
+  o.design.hops = 1;
+  o.reach.global_evaluations = 8;
+  o.reach.local_evaluations = 4;
+  o.reach.search.n_x = o.reach.search.n_psi = 2;
+  o.reach.check.n_x = o.reach.check.n_psi = 2;
+  o.threads = 2;
+  o.output = dir.File("reach.csv");
+  RunSweep(o);
+  const auto rows = ReadCsv(o.output);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], Split("T0,A,c,phi0,alpha,mean_velocity,seed_won,robust_to_settings,"
+                           "max_relative_deviation,evaluations,seed_A,seed_c,seed_phi0,seed_alpha,"
+                           "seed_I,seed_v_mean,seed_mean_velocity_from_rest,seed_reached,status",
+                           ','));
+  int found = 0;
+  for (int i = 0; i < 2; ++i) {
+    Params p = o.params;
+    p.T0 = o.grid.axes[0].Value(i);
+    ReachOptions ro = o.reach;
+    ro.max_seconds = 1e6;  // never reached: the budgets stop the search
+    ro.search.attractor.threads = ro.check.attractor.threads = 0;
+    const ReachResult r = OptimizeReach(p, OptimizeForcing(p, o.design), ro);
+    ASSERT_TRUE(r.seed.from_rest.checked) << "T0 = " << p.T0;
+    const Orbit& so = r.seed.gait.solution.orbit;
+    const std::vector<std::string> expected = {
+        FormatNumber(p.T0),
+        FormatNumber(r.forcing.amplitude()),
+        FormatNumber(r.forcing.mean()),
+        FormatNumber(r.forcing.phi0()),
+        FormatNumber(r.alpha),
+        FormatNumber(r.mean_velocity),
+        r.seed_won ? "1" : "0",
+        r.robust_to_settings ? "1" : "0",
+        FormatNumber(r.spread.max_relative_deviation),
+        std::to_string(r.evaluations),
+        FormatNumber(so.forcing.amplitude()),
+        FormatNumber(so.forcing.mean()),
+        FormatNumber(so.forcing.phi0()),
+        FormatNumber(so.alpha),
+        FormatNumber(so.I),
+        FormatNumber(so.v_mean),
+        FormatNumber(r.seed.from_rest.attractors.mean_velocity),
+        std::to_string(r.seed.from_rest.reached),
+        OptimizeStatusName(r.status)};
+    EXPECT_EQ(rows[i + 1], expected) << "T0 = " << p.T0;
+    found += r.status == OptimizeStatus::kOk;
+  }
+  EXPECT_EQ(found, 2);  // a motion from rest at both T0
+}
+
+// A resume must not mix reach rows of other settings: every reach option that changes the rows
+// is in the checkpoint's description; the thread count of the attractor search is not.
+TEST(SweepCheckpoint, ReachDescriptionHoldsEveryReachOptionThatChangesTheRows) {
+  SweepOptions o;
+  o.grid.axes = {ParseGridAxis("T0=0.5,1")};
+  o.optimize = SweepOptimize::kReach;
+  o.output = "x.csv";
+  const std::string base = detail::SweepDescription(o);
+  const std::vector<std::function<void(SweepOptions&)>> changes = {
+      [](SweepOptions& s) { s.reach.global_evaluations = 151; },
+      [](SweepOptions& s) { s.reach.local_evaluations = 49; },
+      [](SweepOptions& s) { s.reach.alpha = 0.5; },
+      [](SweepOptions& s) { s.reach.search.n_x = 3; },
+      [](SweepOptions& s) { s.reach.check.n_psi = 9; },
+      [](SweepOptions& s) { s.reach.check.attractor.motion.transient = 201; },
+      [](SweepOptions& s) { s.reach.max_spread = 0.02; },
+      [](SweepOptions& s) { s.design.hops = 3; },
+  };
+  int checked = 0;
+  for (const auto& change : changes) {
+    SweepOptions changed = o;
+    change(changed);
+    EXPECT_NE(detail::SweepDescription(changed), base) << "change " << checked;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 8);
+  SweepOptions threads = o;
+  threads.reach.check.attractor.threads = 2;
+  EXPECT_EQ(detail::SweepDescription(threads), base);
 }
 
 TEST(Sweep, CommentLinesComeFirstAndReadersThatSkipThemSeeTheTable) {
