@@ -1,12 +1,30 @@
 #include "simulate/segment_force.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "numerics/trig_roots.hpp"
 
 namespace capsubot::detail {
+namespace {
+
+// Crossings closer than this are one (as TrigRoots merges them); a crossing this close below
+// the start of the interval is its start.
+constexpr double kSameCrossing = 1e-11;
+
+}  // namespace
+
+void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels) {
+  n_levels_ = 0;
+  for (int i = 0; i < n_levels && n_levels_ < kMaxLevels; ++i) {
+    LevelCrossings& entry = table_[n_levels_++];
+    entry.level = levels[i];
+    entry.t = motor.Crossings(levels[i], 0.0, kTau);
+  }
+}
 
 void SegmentForce::Set(const Forcing& motor, double shift) {
+  shift_ = shift;
   // a cos k(s+p) + b sin k(s+p) = (a cos kp + b sin kp) cos ks + (b cos kp - a sin kp) sin ks.
   const double p = motor.phi0() + shift;
   K_ = motor.harmonics();
@@ -65,8 +83,37 @@ ForceValues SegmentForce::Values(double s) const {
   return {c_ + sF, c_ * s + sPi, 0.5 * c_ * s * s + sPhi};
 }
 
-PhaseList SegmentForce::Crossings(double level, double lo, double hi) const {
-  return TrigRoots(c_ - level, a_.data(), b_.data(), K_, lo, hi);
+CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
+  const LevelCrossings* entry = nullptr;
+  for (int i = 0; i < n_levels_; ++i) {
+    if (table_[i].level == level) entry = &table_[i];
+  }
+  CrossingList out;
+  if (entry == nullptr) {
+    const PhaseList roots = TrigRoots(c_ - level, a_.data(), b_.data(), K_, lo, hi);
+    std::copy(roots.phi.begin(), roots.phi.begin() + roots.n, out.phi.begin());
+    out.n = roots.n;
+    return out;
+  }
+  // A motor crossing t is the segment's crossing t - shift, mapped to [lo, lo + tau).
+  for (int i = 0; i < entry->t.n; ++i) {
+    double p = lo + std::fmod(entry->t.phi[i] - shift_ - lo, kTau);
+    if (p < lo) p += kTau;
+    if (lo + kTau - p < kSameCrossing) p = lo;
+    if (p > hi + kSameCrossing) continue;
+    // Insert in order, merging a crossing within kSameCrossing of one already listed.
+    p = std::min(p, hi);
+    int j = out.n;
+    while (j > 0 && out.phi[j - 1] > p) --j;
+    if ((j > 0 && p - out.phi[j - 1] <= kSameCrossing) ||
+        (j < out.n && out.phi[j] - p <= kSameCrossing)) {
+      continue;
+    }
+    for (int m = out.n; m > j; --m) out.phi[m] = out.phi[m - 1];
+    out.phi[j] = p;
+    ++out.n;
+  }
+  return out;
 }
 
 }  // namespace capsubot::detail

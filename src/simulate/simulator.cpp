@@ -185,7 +185,7 @@ struct Reach {
   EventKind kind = EventKind::kStop;
 };
 
-Reach FirstImpact(const Segment& sg, const PhaseList& cuts, double limit) {
+Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double limit) {
   ForceValues w = sg.f.Values(0.0);
   double l = 0.0, xl = sg.X(0.0, w), ul = sg.U(0.0, w);
   const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
@@ -221,7 +221,7 @@ double FirstStop(const Segment& sg, double limit) {
     const ForceValues w = sg.f.Values(s);
     return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
   };
-  const PhaseList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
+  const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
   double l = 0.0, vl = sg.v0;
   int i = 0;
   while (l < limit) {
@@ -253,9 +253,9 @@ double PositiveMotorWork(const Segment& sg, double S) {
   // The sign changes: zeros of F (at most 2K) and of u (at most one per monotone piece).
   std::array<double, 2 * (2 * kMaxHarmonics + 2) + 2> cut{};
   int n = 0;
-  const PhaseList zf = sg.f.Crossings(0.0, 0.0, S);
+  const detail::CrossingList zf = sg.f.Crossings(0.0, 0.0, S);
   for (int i = 0; i < zf.n; ++i) cut[n++] = zf.phi[i];
-  const PhaseList mono = sg.f.Crossings(-sg.b, 0.0, S);
+  const detail::CrossingList mono = sg.f.Crossings(-sg.b, 0.0, S);
   double l = 0.0, ul = u(0.0);
   for (int i = 0; i <= mono.n; ++i) {
     const double r = i < mono.n ? mono.phi[i] : S;
@@ -279,7 +279,7 @@ double PositiveMotorWork(const Segment& sg, double S) {
 
 // The first crossing of `level` after l + kMinCut, with `cuts` = the crossings in [0, tau)
 // repeated with period tau (F is tau-periodic); l + tau if there is none.
-double NextCut(const PhaseList& cuts, double l) {
+double NextCut(const detail::CrossingList& cuts, double l) {
   for (int m = 0; m < 2; ++m) {
     for (int i = 0; i < cuts.n; ++i) {
       const double c = cuts.phi[i] + m * kTau;
@@ -301,7 +301,7 @@ double PieceSign(const detail::SegmentForce& f, double level, double tol, double
 // Sign of F - level right after s = 0: on the first piece after 0 (first_only), or on the
 // first piece within a period where F leaves the level by more than tol (0: none).
 double SignAfterOrigin(const detail::SegmentForce& f, double level, double tol, bool first_only) {
-  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+  const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l < kTau) {
     const double r = NextCut(cuts, l);
@@ -319,7 +319,7 @@ double SignAfterOrigin(const detail::SegmentForce& f, double level, double tol, 
 double FirstCrossing(const detail::SegmentForce& f, double level, bool upwards, double tol,
                      double limit) {
   const double dir = upwards ? 1.0 : -1.0;
-  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+  const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l <= limit) {
     const double r = NextCut(cuts, l);
@@ -645,7 +645,7 @@ Event Simulation::LocateEvent(double window) const {
           fwd <= back ? Slide::kForward : Slide::kBackward};
   }
   const double limit = std::min(window, ev.s);
-  const PhaseList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
+  const detail::CrossingList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
   const Reach impact = FirstImpact(sg_, cuts, limit);
   if (impact.s <= ev.s) ev = {impact.s, impact.kind};
   return ev;
@@ -719,6 +719,11 @@ bool Simulation::StopIfNotFinite() {
 SimResult Simulation::Run() {
   sg_.alpha = opt_.alpha;
   sg_.T0 = params_.T0;
+  // The levels the events look for (docs/model.md section 3): F = +-T0 (break-away, stop),
+  // F = -b = 0, -+alpha T0 (the sign of x'' at rest and while sliding).
+  const double levels[] = {params_.T0, -params_.T0, 0.0, opt_.alpha * params_.T0,
+                           -(opt_.alpha * params_.T0)};
+  sg_.f.Prepare(forcing_, levels, static_cast<int>(std::size(levels)));
   sg_.f.Set(forcing_, 0.0);
   sg_.x0 = opt_.x0;
   sg_.u0 = opt_.u0;
