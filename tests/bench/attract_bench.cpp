@@ -50,7 +50,8 @@ void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
 }
 BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
+// A 1000-value bifurcation diagram in T0, both directions, 2 threads (wanted <= 1 s).
+void Bifurcation1000Values(benchmark::State& state, double converged_tolerance) {
   const Robot r;
   capsubot::BifurcationOptions opt;
   opt.param = capsubot::BifurcationParam::kT0;
@@ -59,11 +60,16 @@ void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
   opt.steps = 1000;
   opt.analytic = false;
   opt.threads = 2;
+  opt.motion.converged_tolerance = converged_tolerance;
   std::size_t rows = 0;
   for (auto _ : state) {
     rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
   }
   benchmark::DoNotOptimize(rows);
+}
+
+void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
+  Bifurcation1000Values(state, capsubot::MotionOptions{}.converged_tolerance);
 }
 BENCHMARK(BM_Bifurcation1000ValuesBothDirections)
     ->Unit(benchmark::kSecond)
@@ -71,20 +77,7 @@ BENCHMARK(BM_Bifurcation1000ValuesBothDirections)
     ->Iterations(1);
 
 void BM_Bifurcation1000ValuesBothDirectionsFull300Periods(benchmark::State& state) {
-  const Robot r;
-  capsubot::BifurcationOptions opt;
-  opt.param = capsubot::BifurcationParam::kT0;
-  opt.from = 0.5;
-  opt.to = 2.0;
-  opt.steps = 1000;
-  opt.analytic = false;
-  opt.threads = 2;
-  opt.motion.converged_tolerance = 0.0;  // 200 + 100 periods at every value
-  std::size_t rows = 0;
-  for (auto _ : state) {
-    rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
-  }
-  benchmark::DoNotOptimize(rows);
+  Bifurcation1000Values(state, 0.0);  // 200 + 100 periods at every value
 }
 BENCHMARK(BM_Bifurcation1000ValuesBothDirectionsFull300Periods)
     ->Unit(benchmark::kSecond)
