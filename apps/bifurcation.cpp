@@ -28,7 +28,7 @@ struct BifurcationCommandOptions {
 int Run(BifurcationCommandOptions& opt) {
   const Forcing forcing = opt.robot.forcing.Build();
   BifurcationOptions o = opt.diagram;
-  o.param = ParseBifurcationParam(opt.param);
+  o.param = ParseBifurcationParam(opt.param, &o.harmonic);
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);
   o.analytic = !opt.no_analytic && !opt.summary.empty();
@@ -95,7 +95,11 @@ Command AddBifurcationCommand(CLI::App& app) {
   AddRobotOptions(*cmd, opt->robot);
   cmd->get_option("--alpha")->required(false)->description(
       "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1 (not needed with --param alpha)");
-  cmd->add_option("--param", opt->param, "the parameter: A, c, alpha, T0, e or phi0")->required();
+  cmd->add_option("--param", opt->param,
+                  "the parameter: A, c, alpha, T0, e, phi0, or a Fourier coefficient a1, b1, "
+                  "a2, ... (a_k, b_k of the force given by --sin/--cos; a1 and b1 of the "
+                  "harmonic force are 0 and A)")
+      ->required();
   cmd->add_option("--from", opt->diagram.from, "first value of the parameter")->required();
   cmd->add_option("--to", opt->diagram.to, "last value of the parameter")->required();
   cmd->add_option("--steps", opt->diagram.steps, "values of the parameter, both ends included")

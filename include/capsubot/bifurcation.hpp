@@ -15,28 +15,34 @@
 
 namespace capsubot {
 
-/// The parameter of a diagram.
-enum class BifurcationParam { kA, kC, kAlpha, kT0, kE, kPhi0 };
+/// The parameter of a diagram. kCos and kSin are the Fourier coefficients a_k and b_k of the
+/// force F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)) (forcing.hpp), with k in
+/// BifurcationOptions::harmonic; the paper's family has a_1 = 0, b_1 = A.
+enum class BifurcationParam { kA, kC, kAlpha, kT0, kE, kPhi0, kCos, kSin };
 
-/// "A", "c", "alpha", "T0", "e", "phi0"; and the parse of such a name (std::invalid_argument
-/// naming the value and the choices).
-const char* BifurcationParamName(BifurcationParam param);
-BifurcationParam ParseBifurcationParam(const std::string& name);
+/// "A", "c", "alpha", "T0", "e", "phi0", and "a3", "b1", ... for kCos and kSin with harmonic k
+/// (as `sweep` names them).
+std::string BifurcationParamName(BifurcationParam param, int harmonic = 0);
+/// The parse of such a name; `harmonic` (if given) receives k of a_k and b_k, else 0. Throws
+/// std::invalid_argument naming the value and the choices.
+BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic = nullptr);
 
 struct BifurcationOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   BifurcationParam param = BifurcationParam::kT0;  ///< the parameter stepped (A: harmonic force)
-  double from = kNaN;                              ///< first value (finite)
-  double to = kNaN;                                ///< last value (finite; may be below `from`)
-  int steps = 101;                                 ///< values, both ends included; >= 2
-  bool up = true;                                  ///< sweep from `from` to `to`
-  bool down = true;                                ///< sweep from `to` back to `from`
-  MotionOptions motion;                            ///< transient, record, max_period, ... per value
-  PhaseState start = RestStart(0.5, 0.0);          ///< state at the first value of each sweep
-  bool multipliers = true;  ///< largest multiplier of each periodic motion (Newton)
-  bool analytic = true;     ///< add the valid one-impact orbits of every value
-  int threads = 0;          ///< the sweeps run in parallel (0: all cores); same result
+  /// k of a_k (kCos) or b_k (kSin): 1 <= k <= the force's harmonics K; 0 for the others.
+  int harmonic = 0;
+  double from = kNaN;                      ///< first value (finite)
+  double to = kNaN;                        ///< last value (finite; may be below `from`)
+  int steps = 101;                         ///< values, both ends included; >= 2
+  bool up = true;                          ///< sweep from `from` to `to`
+  bool down = true;                        ///< sweep from `to` back to `from`
+  MotionOptions motion;                    ///< transient, record, max_period, ... per value
+  PhaseState start = RestStart(0.5, 0.0);  ///< state at the first value of each sweep
+  bool multipliers = true;                 ///< largest multiplier of each periodic motion (Newton)
+  bool analytic = true;                    ///< add the valid one-impact orbits of every value
+  int threads = 0;  ///< the sweeps run in parallel (0: all cores); same result
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
@@ -28,23 +29,31 @@ struct Robot {
   double alpha = 0.0;
 };
 
-Forcing WithMean(const Forcing& f, double c) {
+// The force with its mean c (kC) or one Fourier coefficient a_k (kCos) or b_k (kSin) set to
+// value, the others kept.
+Forcing WithCoefficient(const Forcing& f, BifurcationParam param, int k, double value) {
   std::vector<double> a, b;
-  for (int k = 1; k <= f.harmonics(); ++k) {
-    a.push_back(f.a(k));
-    b.push_back(f.b(k));
+  for (int j = 1; j <= f.harmonics(); ++j) {
+    a.push_back(f.a(j));
+    b.push_back(f.b(j));
   }
+  double c = f.mean();
+  if (param == BifurcationParam::kC) c = value;
+  if (param == BifurcationParam::kCos) a[k - 1] = value;
+  if (param == BifurcationParam::kSin) b[k - 1] = value;
   return Forcing::Fourier(c, a, b, f.phi0());
 }
 
-Robot At(const Robot& base, BifurcationParam param, double value) {
+Robot At(const Robot& base, BifurcationParam param, int harmonic, double value) {
   Robot r = base;
   switch (param) {
     case BifurcationParam::kA:
       r.forcing = Forcing::Harmonic(value, base.forcing.mean(), base.forcing.phi0());
       break;
     case BifurcationParam::kC:
-      r.forcing = WithMean(base.forcing, value);
+    case BifurcationParam::kCos:
+    case BifurcationParam::kSin:
+      r.forcing = WithCoefficient(base.forcing, param, harmonic, value);
       break;
     case BifurcationParam::kAlpha:
       r.alpha = value;
@@ -96,7 +105,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
   for (int n = 0; n < o.steps; ++n) {
     const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
     const double value = Value(o, i);
-    const Robot r = At(base, o.param, value);
+    const Robot r = At(base, o.param, o.harmonic, value);
     BifurcationPoint point;
     point.param = value;
     point.direction = direction;
@@ -134,7 +143,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
 void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram& out) {
   for (int i = 0; i < o.steps; ++i) {
     const double value = Value(o, i);
-    const Robot r = At(base, o.param, value);
+    const Robot r = At(base, o.param, o.harmonic, value);
     for (const Solution& s : FindRobotOrbits(r.forcing, r.params, r.alpha)) {
       if (!s.validity.valid()) continue;
       BifurcationPoint point;
@@ -157,20 +166,33 @@ void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram
 
 }  // namespace
 
-const char* BifurcationParamName(BifurcationParam param) {
-  static constexpr const char* kNames[] = {"A", "c", "alpha", "T0", "e", "phi0"};
-  static_assert(std::size(kNames) == static_cast<std::size_t>(BifurcationParam::kPhi0) + 1);
-  return detail::EnumName(kNames, param);
+std::string BifurcationParamName(BifurcationParam param, int harmonic) {
+  static constexpr const char* kNames[] = {"A", "c", "alpha", "T0", "e", "phi0", "a", "b"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BifurcationParam::kSin) + 1);
+  const std::string name = detail::EnumName(kNames, param);
+  if (param != BifurcationParam::kCos && param != BifurcationParam::kSin) return name;
+  return name + std::to_string(harmonic);
 }
 
-BifurcationParam ParseBifurcationParam(const std::string& name) {
+BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic) {
+  if (harmonic != nullptr) *harmonic = 0;
   for (BifurcationParam p :
        {BifurcationParam::kA, BifurcationParam::kC, BifurcationParam::kAlpha, BifurcationParam::kT0,
         BifurcationParam::kE, BifurcationParam::kPhi0}) {
     if (name == BifurcationParamName(p)) return p;
   }
-  throw std::invalid_argument(
-      fmt::format("parameter = {} is invalid: expected one of A, c, alpha, T0, e, phi0", name));
+  // a1 .. a16, b1 .. b16: the prefix, then k without a leading zero.
+  for (int k = 1; k <= kMaxHarmonics; ++k) {
+    for (BifurcationParam p : {BifurcationParam::kCos, BifurcationParam::kSin}) {
+      if (name != BifurcationParamName(p, k)) continue;
+      if (harmonic != nullptr) *harmonic = k;
+      return p;
+    }
+  }
+  throw std::invalid_argument(fmt::format(
+      "parameter = {} is invalid: expected one of A, c, alpha, T0, e, phi0, or a Fourier "
+      "coefficient a1..a{}, b1..b{}",
+      name, kMaxHarmonics, kMaxHarmonics));
 }
 
 const char* SweepDirectionName(SweepDirection direction) {
@@ -191,6 +213,12 @@ void BifurcationOptions::Validate() const {
   if (!up && !down) {
     throw std::invalid_argument("direction is invalid: expected up, down or both");
   }
+  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
+  if (fourier ? harmonic < 1 || harmonic > kMaxHarmonics : harmonic != 0) {
+    throw std::invalid_argument(
+        fmt::format("harmonic = {} is invalid: expected 1 <= k <= {} for a_k and b_k, else 0",
+                    harmonic, kMaxHarmonics));
+  }
   motion.Validate();
   if (threads < 0 || threads > 1024) {
     throw std::invalid_argument(fmt::format(
@@ -207,16 +235,24 @@ BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& para
     throw std::invalid_argument(
         "parameter = A is invalid for a Fourier force: expected the harmonic family");
   }
+  const bool fourier =
+      options.param == BifurcationParam::kCos || options.param == BifurcationParam::kSin;
+  if (fourier && options.harmonic > forcing.harmonics()) {
+    throw std::invalid_argument(fmt::format(
+        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
+        "its harmonics",
+        BifurcationParamName(options.param, options.harmonic), forcing.harmonics()));
+  }
   // Every robot of the range must be valid: check both ends and name the one that is not.
   for (double value : {options.from, options.to}) {
-    const Robot r = At(base, options.param, value);
+    const Robot r = At(base, options.param, options.harmonic, value);
     try {
       r.params.Validate();
       detail::ValidateStart(r.alpha, options.start);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("{} = {} makes the robot invalid: {}",
-                                              BifurcationParamName(options.param), value,
-                                              e.what()));
+                                              BifurcationParamName(options.param, options.harmonic),
+                                              value, e.what()));
     }
   }
   // Up, down and analytic parts are independent: run them in parallel, join in order.

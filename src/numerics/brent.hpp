@@ -56,19 +56,21 @@ double Brent(const Fn& f, double lo, double hi) {
 
 namespace capsubot::detail {
 
-/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together:
-/// fdf(x) returns {f(x), f'(x)} from one evaluation (when both share their costly part, e.g.
-/// one sincos); f alone is evaluated at the bracket's ends. Newton steps kept inside a
-/// shrinking bracket, bisection whenever a step would leave it or converge too slowly
-/// (Numerical Recipes' rtsafe). Quadratic near the root: the hot path's root finder.
-template <class Fn, class FDfn>
-double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
-  double flo = f(lo);
+/// Root in [lo, hi] of a function whose values at the bracket's ends are known, flo = f(lo)
+/// and fhi = f(hi) of opposite signs (or one of them zero), started from x in the bracket
+/// with fx, dfx = f(x), f'(x) known: fdf(x) returns {f(x), f'(x)} from one evaluation (when
+/// both share their costly part, e.g. one sincos). Newton steps kept inside a shrinking
+/// bracket, bisection whenever a step would leave it or converge too slowly (Numerical
+/// Recipes' rtsafe). Quadratic near the root: the hot path's root finder. Started from an end
+/// where f f'' > 0 (f convex or concave on the bracket), the Newton steps never overshoot.
+template <class FDfn>
+double SafeNewtonFrom(const FDfn& fdf, double lo, double hi, double flo, double fhi, double x,
+                      double fx, double dfx) {
   if (flo == 0.0) return lo;
-  if (f(hi) == 0.0) return hi;
+  if (fhi == 0.0) return hi;
+  if (fx == 0.0) return x;
   if (flo > 0.0) std::swap(lo, hi);  // now f(lo) < 0 < f(hi), lo may exceed hi
-  double x = 0.5 * (lo + hi), dx_old = std::abs(hi - lo), dx = dx_old;
-  auto [fx, dfx] = fdf(x);
+  double dx_old = std::abs(hi - lo), dx = dx_old;
   for (int it = 0; it < kRootMaxIter; ++it) {
     const bool newton_leaves = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
     if (newton_leaves || std::abs(2.0 * fx) > std::abs(dx_old * dfx)) {
@@ -86,6 +88,19 @@ double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
     (fx < 0.0 ? lo : hi) = x;
   }
   return x;
+}
+
+/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together
+/// (SafeNewtonFrom started from the bracket's midpoint); f alone is evaluated at the ends.
+template <class Fn, class FDfn>
+double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
+  const double flo = f(lo);
+  if (flo == 0.0) return lo;
+  const double fhi = f(hi);
+  if (fhi == 0.0) return hi;
+  const double x = 0.5 * (lo + hi);
+  const auto [fx, dfx] = fdf(x);
+  return SafeNewtonFrom(fdf, lo, hi, flo, fhi, x, fx, dfx);
 }
 
 /// SafeNewtonFused with f and f' given as two functions.

@@ -11,6 +11,7 @@
 
 #include "model/enum_names.hpp"
 #include "numerics/brent.hpp"
+#include "simulate/segment_force.hpp"
 
 namespace capsubot {
 namespace {
@@ -61,7 +62,7 @@ EventKind ImpactKind(Wall wall) {
 //                (1-alpha) v' = -(sgn T0 + F) while sliding.
 //   on a wall:   x, u = 0 fixed; the capsule and the inner body move together: v' = -sgn T0.
 struct Segment {
-  Forcing f;
+  detail::SegmentForce f;
   SimMode mode = SimMode::kRest;
   Slide slide = Slide::kNone;
   double alpha = 0.0, T0 = 0.0;
@@ -120,8 +121,10 @@ void SetCoefficients(Segment& sg, Slide slide) {
 // level = Position(wall): where the inner body reaches `wall` moving towards it, on a piece
 // between consecutive crossings of F = -b, where x'' = kx (F + b) keeps its sign, so f is
 // convex or concave and has at most two zeros. Given f, f' at the ends (fl, dl, fr, dr), the
-// sign of f'' on the piece (`curvature`, from its middle) and whether the piece starts with
-// the body on the wall (from_wall: f(0) = 0, leaving it):
+// sign of f'' on the piece (`curvature`: dir (F + b) in its middle when the piece starts with
+// the body on the wall, where its size decides; otherwise f'(r) - f'(l), of the same sign as
+// f' is monotone on the piece) and whether the piece starts with the body on the wall
+// (from_wall: f(0) = 0, leaving it):
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
@@ -131,7 +134,7 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //   - from the wall: concave cannot come back; convex comes back only after its minimum (root
 //     of f'), then as above; a piece with F + b = 0 within rounding (sg.tol) is neither: the
 //     body stays where it is.
-// Root finder: detail::SafeNewtonFused (Newton with the closed-form derivative, kept inside
+// Root finder: detail::SafeNewtonFrom (Newton with the closed-form derivative, kept inside
 // the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
 // state. Returns +inf when there is no zero in (l, r].
 double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
@@ -157,7 +160,10 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
       return l;  // pressed into the wall (the caller settles this case first)
     }
   } else if (fl < 0.0 && fr >= 0.0) {
-    return detail::SafeNewtonFused(f, fdf, l, r);
+    // Newton from the end where f f'' > 0 (convex: the right end, concave: the left one): the
+    // steps approach the crossing from one side, and the ends' values are already known.
+    if (curvature > 0.0) return detail::SafeNewtonFrom(fdf, l, r, fl, fr, r, fr, dr);
+    return detail::SafeNewtonFrom(fdf, l, r, fl, fr, l, fl, dl);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
     // Concave with an interior maximum: bound it by the two tangents first.
     const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
@@ -179,7 +185,7 @@ struct Reach {
   EventKind kind = EventKind::kStop;
 };
 
-Reach FirstImpact(const Segment& sg, const PhaseList& cuts, double limit) {
+Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double limit) {
   ForceValues w = sg.f.Values(0.0);
   double l = 0.0, xl = sg.X(0.0, w), ul = sg.U(0.0, w);
   const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
@@ -189,7 +195,10 @@ Reach FirstImpact(const Segment& sg, const PhaseList& cuts, double limit) {
     const double r = next_cut < cuts.n ? std::min(cuts.phi[next_cut], limit) : limit;
     w = sg.f.Values(r);
     const double xr = sg.X(r, w), ur = sg.U(r, w);
-    const double accel = sg.f.F(0.5 * (l + r)) + sg.b;  // sign of x'' on (l, r)
+    // Sign of x'' on (l, r): exact from the middle where a piece leaves a wall, else from the
+    // monotone u (one sincos less).
+    const double accel =
+        l == 0.0 && (right_from_wall || left_from_wall) ? sg.f.F(0.5 * (l + r)) + sg.b : ur - ul;
     const double right = ReachOnPiece(sg, Wall::kRight, l, r, xl - 1.0, ul, xr - 1.0, ur, accel,
                                       l == 0.0 && right_from_wall);
     const double left =
@@ -212,14 +221,20 @@ double FirstStop(const Segment& sg, double limit) {
     const ForceValues w = sg.f.Values(s);
     return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
   };
-  const PhaseList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
-  double l = 0.0;
+  const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
+  double l = 0.0, vl = sg.v0;
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    if (sg.sgn * v(r) <= 0.0) return detail::SafeNewtonFused(v, vdv, l, r);
+    const double vr = v(r);
+    if (sg.sgn * vr <= 0.0) {
+      const double mid = 0.5 * (l + r);
+      const auto [vm, dvm] = vdv(mid);
+      return detail::SafeNewtonFrom(vdv, l, r, vl, vr, mid, vm, dvm);
+    }
     l = r;
+    vl = vr;
   }
   return kInf;
 }
@@ -238,9 +253,9 @@ double PositiveMotorWork(const Segment& sg, double S) {
   // The sign changes: zeros of F (at most 2K) and of u (at most one per monotone piece).
   std::array<double, 2 * (2 * kMaxHarmonics + 2) + 2> cut{};
   int n = 0;
-  const PhaseList zf = sg.f.Crossings(0.0, 0.0, S);
+  const detail::CrossingList zf = sg.f.Crossings(0.0, 0.0, S);
   for (int i = 0; i < zf.n; ++i) cut[n++] = zf.phi[i];
-  const PhaseList mono = sg.f.Crossings(-sg.b, 0.0, S);
+  const detail::CrossingList mono = sg.f.Crossings(-sg.b, 0.0, S);
   double l = 0.0, ul = u(0.0);
   for (int i = 0; i <= mono.n; ++i) {
     const double r = i < mono.n ? mono.phi[i] : S;
@@ -264,7 +279,7 @@ double PositiveMotorWork(const Segment& sg, double S) {
 
 // The first crossing of `level` after l + kMinCut, with `cuts` = the crossings in [0, tau)
 // repeated with period tau (F is tau-periodic); l + tau if there is none.
-double NextCut(const PhaseList& cuts, double l) {
+double NextCut(const detail::CrossingList& cuts, double l) {
   for (int m = 0; m < 2; ++m) {
     for (int i = 0; i < cuts.n; ++i) {
       const double c = cuts.phi[i] + m * kTau;
@@ -278,15 +293,15 @@ double NextCut(const PhaseList& cuts, double l) {
 // +1 or -1, or 0 when |F - level| <= tol in its middle (a touch, or a piece too short to
 // matter: F stays on the level within rounding). Deciding on the piece, never from dF at a
 // crossing, makes a tangential touch (dF = rounding noise of either sign) no crossing.
-double PieceSign(const Forcing& f, double level, double tol, double l, double r) {
+double PieceSign(const detail::SegmentForce& f, double level, double tol, double l, double r) {
   const double g = f.F(0.5 * (l + r)) - level;
   return g > tol ? 1.0 : g < -tol ? -1.0 : 0.0;
 }
 
 // Sign of F - level right after s = 0: on the first piece after 0 (first_only), or on the
 // first piece within a period where F leaves the level by more than tol (0: none).
-double SignAfterOrigin(const Forcing& f, double level, double tol, bool first_only) {
-  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+double SignAfterOrigin(const detail::SegmentForce& f, double level, double tol, bool first_only) {
+  const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l < kTau) {
     const double r = NextCut(cuts, l);
@@ -301,9 +316,10 @@ double SignAfterOrigin(const Forcing& f, double level, double tol, bool first_on
 // piece between exact crossings (Forcing::Crossings) on which F - level > tol (< -tol). A
 // tangential touch (no sign change across it) does not count; s = 0 when F leaves the level
 // that way right from the start.
-double FirstCrossing(const Forcing& f, double level, bool upwards, double tol, double limit) {
+double FirstCrossing(const detail::SegmentForce& f, double level, bool upwards, double tol,
+                     double limit) {
   const double dir = upwards ? 1.0 : -1.0;
-  const PhaseList cuts = f.Crossings(level, 0.0, kTau);
+  const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l <= limit) {
     const double r = NextCut(cuts, l);
@@ -418,7 +434,7 @@ void Simulation::Rebase(double s, const SimState& st) {
     ++turns_;
   }
   if (observer_ != nullptr && turns_ != turns_before) observer_->OnPeriods(turns_);
-  sg_.f = forcing_.WithPhase(forcing_.phi0() + r_);
+  sg_.f.Set(forcing_, r_);
   sg_.x0 = st.x;
   sg_.u0 = st.u;
   sg_.v0 = st.v;
@@ -629,7 +645,7 @@ Event Simulation::LocateEvent(double window) const {
           fwd <= back ? Slide::kForward : Slide::kBackward};
   }
   const double limit = std::min(window, ev.s);
-  const PhaseList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
+  const detail::CrossingList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
   const Reach impact = FirstImpact(sg_, cuts, limit);
   if (impact.s <= ev.s) ev = {impact.s, impact.kind};
   return ev;
@@ -703,7 +719,12 @@ bool Simulation::StopIfNotFinite() {
 SimResult Simulation::Run() {
   sg_.alpha = opt_.alpha;
   sg_.T0 = params_.T0;
-  sg_.f = forcing_;
+  // The levels the events look for (docs/model.md section 3): F = +-T0 (break-away, stop),
+  // F = -b = 0, -+alpha T0 (the sign of x'' at rest and while sliding).
+  const double levels[] = {params_.T0, -params_.T0, 0.0, opt_.alpha * params_.T0,
+                           -(opt_.alpha * params_.T0)};
+  sg_.f.Prepare(forcing_, levels, static_cast<int>(std::size(levels)));
+  sg_.f.Set(forcing_, 0.0);
   sg_.x0 = opt_.x0;
   sg_.u0 = opt_.u0;
   sg_.v0 = opt_.v0;

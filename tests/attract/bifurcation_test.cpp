@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "test_utils.hpp"
 
@@ -105,6 +106,76 @@ TEST(Bifurcation, AnalyticRowsAreTheValidOneImpactOrbits) {
   EXPECT_EQ(matching, 1);
 }
 
+TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
+  // The paper's family is the series with a_1 = 0, b_1 = A (forcing.hpp): stepping b1 of that
+  // series steps A, so both diagrams must be the same numbers.
+  const double c = kOptimumForce.mean(), phi0 = kOptimumForce.phi0();
+  BifurcationOptions o;
+  o.param = BifurcationParam::kA;
+  o.from = 0.30;
+  o.to = 0.36;
+  o.steps = 4;
+  o.start = RestStart(0.5, 1.0);
+  o.analytic = false;
+  const double alpha = 0.6435592358295166;
+  const BifurcationDiagram by_A = ComputeBifurcation(kOptimumForce, Params{}, alpha, o);
+  o.param = BifurcationParam::kSin;
+  o.harmonic = 1;
+  const BifurcationDiagram by_b1 = ComputeBifurcation(
+      Forcing::Fourier(c, {0.0}, {kOptimumForce.amplitude()}, phi0), Params{}, alpha, o);
+  ASSERT_EQ(by_A.summary.size(), 8U);
+  ASSERT_EQ(by_b1.summary.size(), by_A.summary.size());
+  ASSERT_EQ(by_b1.impacts.size(), by_A.impacts.size());
+  for (std::size_t i = 0; i < by_A.summary.size(); ++i) {
+    const BifurcationPoint &p = by_A.summary[i], &q = by_b1.summary[i];
+    EXPECT_EQ(q.param, p.param);
+    EXPECT_EQ(q.direction, p.direction);
+    EXPECT_EQ(q.motion.period, p.motion.period);
+    EXPECT_EQ(q.motion.impacts_right, p.motion.impacts_right);
+    EXPECT_EQ(q.motion.impacts_left, p.motion.impacts_left);
+    EXPECT_EQ(q.motion.mean_velocity, p.motion.mean_velocity);
+    EXPECT_EQ(q.spectral_radius, p.spectral_radius);
+  }
+}
+
+TEST(Bifurcation, OverACosineCoefficientSimulatesTheForceWithThatCoefficient) {
+  // A two-harmonic force, a_2 stepped: the first value of a sweep starts from `start`, so it
+  // must be the long-run motion of the force built directly with that a_2 (an independent
+  // construction of the series), at three values.
+  const double c = kOptimumForce.mean(), phi0 = kOptimumForce.phi0(), A = kOptimumForce.amplitude();
+  const double alpha = 0.6435592358295166;
+  const Forcing base = Forcing::Fourier(c, {0.0, 0.0}, {A, 0.02}, phi0);
+  BifurcationOptions o;
+  o.param = BifurcationParam::kCos;
+  o.harmonic = 2;
+  o.steps = 2;
+  o.down = false;
+  o.analytic = false;
+  o.multipliers = false;
+  o.start = RestStart(0.5, 1.0);
+  int checked = 0;
+  std::vector<double> velocities;
+  for (double a2 : {-0.03, 0.0, 0.03}) {
+    o.from = o.to = a2;
+    const BifurcationDiagram d = ComputeBifurcation(base, Params{}, alpha, o);
+    ASSERT_EQ(d.summary.size(), 2U);
+    const Motion expected = LongRunMotion(Forcing::Fourier(c, {0.0, a2}, {A, 0.02}, phi0), Params{},
+                                          alpha, o.start, o.motion);
+    const Motion& m = d.summary[0].motion;
+    EXPECT_EQ(m.status, expected.status) << "a2 = " << a2;
+    EXPECT_EQ(m.period, expected.period) << "a2 = " << a2;
+    EXPECT_EQ(m.impacts_right, expected.impacts_right) << "a2 = " << a2;
+    EXPECT_EQ(m.impacts_left, expected.impacts_left) << "a2 = " << a2;
+    EXPECT_EQ(m.mean_velocity, expected.mean_velocity) << "a2 = " << a2;
+    velocities.push_back(m.mean_velocity);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  // The coefficient matters: the three motions differ.
+  EXPECT_NE(velocities[0], velocities[1]);
+  EXPECT_NE(velocities[1], velocities[2]);
+}
+
 TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   const auto message = [](const std::function<void()>& f) -> std::string {
     try {
@@ -114,8 +185,32 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
     }
     return "no exception";
   };
-  EXPECT_EQ(message([] { ParseBifurcationParam("mu"); }),
-            "parameter = mu is invalid: expected one of A, c, alpha, T0, e, phi0");
+  const std::string choices =
+      " is invalid: expected one of A, c, alpha, T0, e, phi0, or a Fourier coefficient "
+      "a1..a16, b1..b16";
+  int checked = 0;
+  for (const char* bad : {"mu", "a0", "b17", "a01", "a", "c1"}) {
+    EXPECT_EQ(message([&] { ParseBifurcationParam(bad); }),
+              std::string("parameter = ") + bad + choices);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+  int k = 0;
+  EXPECT_EQ(ParseBifurcationParam("b12", &k), BifurcationParam::kSin);
+  EXPECT_EQ(k, 12);
+  EXPECT_EQ(ParseBifurcationParam("phi0", &k), BifurcationParam::kPhi0);
+  EXPECT_EQ(k, 0);
+  BifurcationOptions fourier;
+  fourier.param = BifurcationParam::kCos;
+  fourier.harmonic = 2;
+  fourier.from = 0.0;
+  fourier.to = 0.1;
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
+            "parameter = a2 is invalid for this force: expected a_k or b_k with 1 <= k <= K = 1, "
+            "its harmonics");
+  fourier.harmonic = 0;
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
+            "harmonic = 0 is invalid: expected 1 <= k <= 16 for a_k and b_k, else 0");
   BifurcationOptions o;
   o.param = BifurcationParam::kE;
   o.from = 0.5;

@@ -2,6 +2,9 @@
 // 200 + 100 periods (wanted <= 0.5 ms), 64 starts from rest on 2 threads (wanted <= 50 ms), a
 // 256 x 256 basin map on 2 threads (wanted <= 10 s), a 1000-value bifurcation diagram in T0, both
 // directions, 200 + 100 periods per value, with multipliers, on 2 threads (wanted <= 1 s).
+// The default MotionOptions stop a start early once its motion repeats to 1e-11 (what the
+// commands do); the ...Full300Periods variants switch that off (converged_tolerance = 0), so
+// every start or value really simulates its 200 + 100 periods: the targets' worst case.
 // The robot is the exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem
 // forcing --stable --json`), whose starts from rest end in a 3-right/1-left motion.
 
@@ -47,7 +50,8 @@ void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
 }
 BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
+// A 1000-value bifurcation diagram in T0, both directions, 2 threads (wanted <= 1 s).
+void Bifurcation1000Values(benchmark::State& state, double converged_tolerance) {
   const Robot r;
   capsubot::BifurcationOptions opt;
   opt.param = capsubot::BifurcationParam::kT0;
@@ -56,30 +60,56 @@ void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
   opt.steps = 1000;
   opt.analytic = false;
   opt.threads = 2;
+  opt.motion.converged_tolerance = converged_tolerance;
   std::size_t rows = 0;
   for (auto _ : state) {
     rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
   }
   benchmark::DoNotOptimize(rows);
 }
+
+void BM_Bifurcation1000ValuesBothDirections(benchmark::State& state) {
+  Bifurcation1000Values(state, capsubot::MotionOptions{}.converged_tolerance);
+}
 BENCHMARK(BM_Bifurcation1000ValuesBothDirections)
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
 
-}  // namespace
+void BM_Bifurcation1000ValuesBothDirectionsFull300Periods(benchmark::State& state) {
+  Bifurcation1000Values(state, 0.0);  // 200 + 100 periods at every value
+}
+BENCHMARK(BM_Bifurcation1000ValuesBothDirectionsFull300Periods)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 // A 256 x 256 basin map, 200 + 100 periods per start, 2 threads (wanted <= 10 s).
-void BM_Basins256x256TwoThreads(benchmark::State& state) {
+void Basins256x256(benchmark::State& state, double converged_tolerance) {
   const Robot r;
   capsubot::FromRestOptions opt;
   opt.n_x = 256;
   opt.n_psi = 256;
   opt.attractor.threads = 2;
+  opt.attractor.motion.converged_tolerance = converged_tolerance;
   double sum = 0.0;
   for (auto _ : state) {
     sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
   }
   benchmark::DoNotOptimize(sum);
 }
+
+void BM_Basins256x256TwoThreads(benchmark::State& state) {
+  Basins256x256(state, capsubot::MotionOptions{}.converged_tolerance);
+}
 BENCHMARK(BM_Basins256x256TwoThreads)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+void BM_Basins256x256TwoThreadsFull300Periods(benchmark::State& state) {
+  Basins256x256(state, 0.0);  // 200 + 100 periods at every start
+}
+BENCHMARK(BM_Basins256x256TwoThreadsFull300Periods)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+}  // namespace

@@ -168,5 +168,43 @@ TEST(BasinsCli, BadPlaneIsNamedAndNoFileIsWritten) {
   EXPECT_FALSE(std::ifstream(path).good());
 }
 
+TEST(BifurcationCli, StepsAFourierCoefficientAndNamesOneTheForceDoesNotHave) {
+  // The optimum's force as a two-harmonic series (b_1 = A, b_2 = 0.02), a_2 stepped over three
+  // values up and down: one summary row per value and direction, every one a classified motion
+  // (the library test checks such rows against direct simulations of the same force).
+  const std::string force =
+      "--c 0.06410131873607934 --sin 0.34063197373861814,0.02 --cos 0,0 --phi0 "
+      "-3.1181183398453047 --T0 1 --e 1 --alpha 0.6435592358295166";
+  const std::string impacts = testing::TempPath("bifurcation_a2.csv");
+  const std::string summary = testing::TempPath("bifurcation_a2_summary.csv");
+  const auto r =
+      RunCli("bifurcation " + force + " --param a2 --from -0.03 --to 0.03 --steps 3 -o " + impacts +
+             " --summary " + summary + " --no-analytic");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("bifurcation diagram over a2 = -0.03 .. 0.03 (3 values, both)"),
+            std::string::npos)
+      << r.out;
+  std::istringstream lines(ReadFile(summary));
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("param,direction,period,", 0), 0U) << line;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    EXPECT_TRUE(line.rfind("-0.03,", 0) == 0 || line.rfind("0,", 0) == 0 ||
+                line.rfind("0.03,", 0) == 0)
+        << line;
+  }
+  EXPECT_EQ(rows, 6);
+  const std::string bad = testing::TempPath("bifurcation_a3.csv");
+  const auto e =
+      RunCli("bifurcation " + force + " --param a3 --from 0 --to 0.1 -o " + bad + " 2>&1");
+  EXPECT_EQ(e.status, 2);
+  EXPECT_EQ(e.out,
+            "capsubot bifurcation: error: parameter = a3 is invalid for this force: expected a_k "
+            "or b_k with 1 <= k <= K = 2, its harmonics\n");
+  EXPECT_FALSE(std::ifstream(bad).good());
+}
+
 }  // namespace
 }  // namespace capsubot

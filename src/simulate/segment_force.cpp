@@ -1,0 +1,119 @@
+#include "simulate/segment_force.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/trig_roots.hpp"
+
+namespace capsubot::detail {
+namespace {
+
+// Crossings closer than this are one (as TrigRoots merges them); a crossing this close below
+// the start of the interval is its start.
+constexpr double kSameCrossing = 1e-11;
+
+}  // namespace
+
+void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels) {
+  n_levels_ = 0;
+  for (int i = 0; i < n_levels && n_levels_ < kMaxLevels; ++i) {
+    LevelCrossings& entry = table_[n_levels_++];
+    entry.level = levels[i];
+    entry.t = motor.Crossings(levels[i], 0.0, kTau);
+  }
+}
+
+void SegmentForce::Set(const Forcing& motor, double shift) {
+  shift_ = shift;
+  // a cos k(s+p) + b sin k(s+p) = (a cos kp + b sin kp) cos ks + (b cos kp - a sin kp) sin ks.
+  const double p = motor.phi0() + shift;
+  K_ = motor.harmonics();
+  c_ = motor.mean();
+  f0_ = 0.0;
+  for (int k = 1; k <= K_; ++k) {
+    const double ck = std::cos(k * p), sk = std::sin(k * p);
+    const double a = motor.a(k) * ck + motor.b(k) * sk;
+    const double b = motor.b(k) * ck - motor.a(k) * sk;
+    const double inv = 1.0 / k, inv2 = 1.0 / (double(k) * k);
+    a_[k - 1] = a;
+    b_[k - 1] = b;
+    a1_[k - 1] = a * inv;
+    b1_[k - 1] = b * inv;
+    a2_[k - 1] = a * inv2;
+    b2_[k - 1] = b * inv2;
+    f0_ += a;
+  }
+  f0_ = c_ + f0_;
+}
+
+double SegmentForce::F(double s) const {
+  if (s == 0.0) return f0_;
+  const double c1 = std::cos(s), s1 = std::sin(s);
+  if (K_ == 1) return c_ + (a_[0] * c1 + b_[0] * s1);  // the loop below for K = 1
+  double ck = c1, sk = s1, sum = 0.0;
+  for (int k = 0; k < K_; ++k) {
+    sum += a_[k] * ck + b_[k] * sk;
+    const double next = ck * c1 - sk * s1;
+    sk = sk * c1 + ck * s1;
+    ck = next;
+  }
+  return c_ + sum;
+}
+
+ForceValues SegmentForce::Values(double s) const {
+  if (s == 0.0) return {f0_, 0.0, 0.0};
+  // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
+  // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2.
+  const double c1 = std::cos(s), s1 = std::sin(s);
+  if (K_ == 1) {  // the loop below for K = 1, without the recurrence
+    const double one_minus_c = 1.0 - c1;
+    return {c_ + (a_[0] * c1 + b_[0] * s1), c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c),
+            0.5 * c_ * s * s + (a2_[0] * one_minus_c + b2_[0] * (s - s1))};
+  }
+  double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
+  for (int k = 0; k < K_; ++k) {
+    const double one_minus_c = 1.0 - ck;
+    sF += a_[k] * ck + b_[k] * sk;
+    sPi += a1_[k] * sk + b1_[k] * one_minus_c;
+    sPhi += a2_[k] * one_minus_c + b2_[k] * ((k + 1) * s - sk);
+    const double next = ck * c1 - sk * s1;
+    sk = sk * c1 + ck * s1;
+    ck = next;
+  }
+  return {c_ + sF, c_ * s + sPi, 0.5 * c_ * s * s + sPhi};
+}
+
+CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
+  const LevelCrossings* entry = nullptr;
+  for (int i = 0; i < n_levels_; ++i) {
+    if (table_[i].level == level) entry = &table_[i];
+  }
+  CrossingList out;
+  if (entry == nullptr) {
+    const PhaseList roots = TrigRoots(c_ - level, a_.data(), b_.data(), K_, lo, hi);
+    std::copy(roots.phi.begin(), roots.phi.begin() + roots.n, out.phi.begin());
+    out.n = roots.n;
+    return out;
+  }
+  // A motor crossing t is the segment's crossing t - shift, mapped to [lo, lo + tau).
+  for (int i = 0; i < entry->t.n; ++i) {
+    double p = lo + std::fmod(entry->t.phi[i] - shift_ - lo, kTau);
+    if (p < lo) p += kTau;
+    if (lo + kTau - p < kSameCrossing) p = lo;
+    if (p > hi + kSameCrossing) continue;
+    // Insert in order, merging a crossing within kSameCrossing of one already listed.
+    p = std::min(p, hi);
+    int j = out.n;
+    while (j > 0 && out.phi[j - 1] > p) --j;
+    if ((j > 0 && p - out.phi[j - 1] <= kSameCrossing) ||
+        (j < out.n && out.phi[j] - p <= kSameCrossing)) {
+      continue;
+    }
+    for (int m = out.n; m > j; --m) out.phi[m] = out.phi[m - 1];
+    out.phi[j] = p;
+    ++out.n;
+  }
+  return out;
+}
+
+}  // namespace capsubot::detail
