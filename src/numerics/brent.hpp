@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <tuple>
@@ -56,18 +57,28 @@ double Brent(const Fn& f, double lo, double hi) {
 
 namespace capsubot::detail {
 
-/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together:
-/// fdf(x) returns {f(x), f'(x)} from one evaluation (when both share their costly part, e.g.
-/// one sincos); f alone is evaluated at the bracket's ends. Newton steps kept inside a
-/// shrinking bracket, bisection whenever a step would leave it or converge too slowly
+/// How SafeNewtonBracket picks its first iterate.
+enum class NewtonStart {
+  kMidpoint,       ///< the middle of the bracket
+  kFalsePosition,  ///< where the chord through the bracket's ends crosses zero
+};
+
+/// Root of f in [lo, hi] given fdf(x) = {f(x), f'(x)} and the values flo = f(lo), fhi = f(hi)
+/// of opposite signs (or one of them zero), known already to the caller: Newton steps kept
+/// inside a shrinking bracket, bisection whenever a step would leave it or converge too slowly
 /// (Numerical Recipes' rtsafe). Quadratic near the root: the hot path's root finder.
-template <class Fn, class FDfn>
-double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
-  double flo = f(lo);
+template <class FDfn>
+double SafeNewtonBracket(const FDfn& fdf, double lo, double hi, double flo, double fhi,
+                         NewtonStart start = NewtonStart::kMidpoint) {
   if (flo == 0.0) return lo;
-  if (f(hi) == 0.0) return hi;
+  if (fhi == 0.0) return hi;
+  double x = 0.5 * (lo + hi);
+  if (start == NewtonStart::kFalsePosition) {
+    const double chord = lo - flo * (hi - lo) / (fhi - flo);
+    if (chord > std::min(lo, hi) && chord < std::max(lo, hi)) x = chord;
+  }
   if (flo > 0.0) std::swap(lo, hi);  // now f(lo) < 0 < f(hi), lo may exceed hi
-  double x = 0.5 * (lo + hi), dx_old = std::abs(hi - lo), dx = dx_old;
+  double dx_old = std::abs(hi - lo), dx = dx_old;
   auto [fx, dfx] = fdf(x);
   for (int it = 0; it < kRootMaxIter; ++it) {
     const bool newton_leaves = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
@@ -86,6 +97,14 @@ double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
     (fx < 0.0 ? lo : hi) = x;
   }
   return x;
+}
+
+/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together:
+/// fdf(x) returns {f(x), f'(x)} from one evaluation (when both share their costly part, e.g.
+/// one sincos); f alone is evaluated at the bracket's ends.
+template <class Fn, class FDfn>
+double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
+  return SafeNewtonBracket(fdf, lo, hi, f(lo), f(hi));
 }
 
 /// SafeNewtonFused with f and f' given as two functions.
