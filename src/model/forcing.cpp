@@ -155,7 +155,8 @@ Range Forcing::Bounds(double lo, double hi) const {
     db[k] = -(k + 1) * ra_[k];
   }
   const PhaseList critical = detail::TrigRoots(0.0, da.data(), db.data(), K_, lo, hi);
-  Range r{F(lo), F(lo)};
+  const double f_lo = F(lo);
+  Range r{f_lo, f_lo};
   auto include = [&r](double f) {
     r.min = std::min(r.min, f);
     r.max = std::max(r.max, f);

@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <tuple>
@@ -90,17 +91,34 @@ double SafeNewtonFrom(const FDfn& fdf, double lo, double hi, double flo, double 
   return x;
 }
 
-/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together
-/// (SafeNewtonFrom started from the bracket's midpoint); f alone is evaluated at the ends.
-template <class Fn, class FDfn>
-double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
-  const double flo = f(lo);
+/// How SafeNewtonBracket picks its first iterate.
+enum class NewtonStart {
+  kMidpoint,       ///< the middle of the bracket
+  kFalsePosition,  ///< where the chord through the bracket's ends crosses zero
+};
+
+/// SafeNewtonFrom with only the values at the bracket's ends known, flo = f(lo), fhi = f(hi):
+/// started from the bracket's midpoint or from the chord's zero.
+template <class FDfn>
+double SafeNewtonBracket(const FDfn& fdf, double lo, double hi, double flo, double fhi,
+                         NewtonStart start = NewtonStart::kMidpoint) {
   if (flo == 0.0) return lo;
-  const double fhi = f(hi);
   if (fhi == 0.0) return hi;
-  const double x = 0.5 * (lo + hi);
+  double x = 0.5 * (lo + hi);
+  if (start == NewtonStart::kFalsePosition) {
+    const double chord = lo - flo * (hi - lo) / (fhi - flo);
+    if (chord > std::min(lo, hi) && chord < std::max(lo, hi)) x = chord;
+  }
   const auto [fx, dfx] = fdf(x);
   return SafeNewtonFrom(fdf, lo, hi, flo, fhi, x, fx, dfx);
+}
+
+/// Root of f in [lo, hi] with f(lo), f(hi) of opposite signs, given f and f' together:
+/// fdf(x) returns {f(x), f'(x)} from one evaluation (when both share their costly part, e.g.
+/// one sincos); f alone is evaluated at the bracket's ends.
+template <class Fn, class FDfn>
+double SafeNewtonFused(const Fn& f, const FDfn& fdf, double lo, double hi) {
+  return SafeNewtonBracket(fdf, lo, hi, f(lo), f(hi));
 }
 
 /// SafeNewtonFused with f and f' given as two functions.

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <utility>
 
 #include "model/enum_names.hpp"
 #include "numerics/brent.hpp"
+#include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {
 namespace {
@@ -20,15 +22,26 @@ double Wrap(double phi) {
 
 // phi1: the first root in (0, tau) of g = Pi(tau) - T0 phi - Pi(phi) (docs/model.md section 4).
 // g' = -T0 - F, so g is monotone between the crossings of F = -T0: walk those pieces and
-// bracket the first sign change (g(0) = Pi(tau) > 0 and g(tau) = -T0 tau < 0).
+// bracket the first sign change (g(0) = Pi(tau) > 0 and g(tau) = -T0 tau < 0), then Newton's
+// iteration inside the bracket with g and g' from one evaluation of the force per step.
 double StopPhase(const Forcing& f, double T0, double Pi_tau) {
   const auto g = [&](double phi) { return Pi_tau - T0 * phi - f.Pi(phi); };
+  const auto g_dg = [&](double phi) {
+    const ForceValues v = f.Values(phi);  // v.Pi is f.Pi(phi) bit for bit
+    return std::pair<double, double>(Pi_tau - T0 * phi - v.Pi, -T0 - v.F);
+  };
   const PhaseList cuts = f.Crossings(-T0, 0.0, kTau);
-  double lo = 0.0;
+  double lo = 0.0, g_lo = Pi_tau;  // Pi(0) = 0
   for (int i = 0; i <= cuts.n; ++i) {
     const double hi = i < cuts.n ? cuts.phi[i] : kTau;
-    if (hi > lo && g(hi) <= 0.0) return detail::Brent(g, lo, hi);
-    lo = std::max(lo, hi);
+    if (hi > lo) {
+      const double g_hi = g(hi);
+      if (g_hi <= 0.0)
+        return detail::SafeNewtonBracket(g_dg, lo, hi, g_lo, g_hi,
+                                         detail::NewtonStart::kFalsePosition);
+      lo = hi;
+      g_lo = g_hi;
+    }
   }
   return kTau;  // unreachable: g(tau) < 0
 }
@@ -108,16 +121,12 @@ double Orbit::x(double phi) const {
 
 double Orbit::dx(double phi) const {
   phi = Wrap(phi);
-  if (phi <= phi1) {
-    return -e * u + T0 * phi / (1.0 - alpha) + forcing.Pi(phi) / (alpha * (1.0 - alpha));
-  }
-  return v_plus - e * u + forcing.Pi(phi) / alpha;
+  return detail::RelativeVelocity(*this, phi, forcing.Pi(phi));
 }
 
 double Orbit::ddx(double phi) const {
   phi = Wrap(phi);
-  if (phi < phi1) return (forcing.F(phi) + alpha * T0) / (alpha * (1.0 - alpha));
-  return forcing.F(phi) / alpha;
+  return detail::RelativeAcceleration(*this, phi, forcing.F(phi));
 }
 
 double Orbit::v(double phi) const {

@@ -48,9 +48,12 @@ Energy OrbitEnergy(const Orbit& o) {
 
   std::array<double, kMaxBreaks> breaks{};
   int n = 0;
+  double d_next = o.dx(0.0);  // x' at the start of the next piece (the pieces tile [0, tau])
   detail::ForEachMonotonePiece(o, [&](double lo, double hi) {
     breaks[n++] = lo;
-    if (o.dx(lo) * o.dx(hi) < 0.0) breaks[n++] = detail::VelocityZero(o, lo, hi);
+    const double dlo = d_next, dhi = o.dx(hi);
+    d_next = dhi;
+    if (dlo * dhi < 0.0) breaks[n++] = detail::VelocityZero(o, lo, hi, dlo, dhi);
   });
   const PhaseList zeros = o.forcing.Crossings(0.0, 0.0, kTau);
   for (int i = 0; i < zeros.n; ++i) breaks[n++] = zeros.phi[i];

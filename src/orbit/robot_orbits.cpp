@@ -104,9 +104,8 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     if (smooth ? alo + ahi > bound : std::min(alo, ahi) > bound) continue;  // no root here
     if (w <= kMinWidth) {
       const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
-      // Newton with the envelope derivative inside the bracket (bisection fallback). Psi runs
-      // detail::Brent for phi1; nesting another Brent here would be safe too (one GSL solver
-      // per nesting depth, detail::BrentLease), Newton just converges quadratically.
+      // Newton with the envelope derivative inside the bracket (bisection fallback); each
+      // evaluation of psi runs its own bracketed Newton iteration for phi1.
       const double r = crossing
                            ? detail::SafeNewton(
                                  psi, [&psi](double p) { return psi.Derivative(p); }, iv.lo, iv.hi)

@@ -20,10 +20,12 @@ void Set(Validity& v, Condition c, bool violated) {
 void PositionExtrema(const Orbit& o, Validity& v) {
   v.x_min = 1.0;  // x(0) = x(tau) = 1
   v.phi_x_min = 0.0;
+  double d_next = o.dx(0.0);  // x' at the start of the next piece (the pieces tile [0, tau])
   detail::ForEachMonotonePiece(o, [&](double lo, double hi) {
-    const double dlo = o.dx(lo), dhi = o.dx(hi);
+    const double dlo = d_next, dhi = o.dx(hi);
+    d_next = dhi;
     if (!(dlo * dhi < 0.0)) return;
-    const double r = detail::VelocityZero(o, lo, hi);
+    const double r = detail::VelocityZero(o, lo, hi, dlo, dhi);
     const double xr = o.x(r);
     if (dlo < 0.0) {  // x' from - to +: local minimum
       if (xr < v.x_min) {
