@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "model/enum_names.hpp"
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {

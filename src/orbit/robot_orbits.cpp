@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "capsubot/orbit.hpp"
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 
 namespace capsubot {
 namespace {

@@ -5,7 +5,7 @@
 #include <iterator>
 
 #include "model/enum_names.hpp"
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "capsubot/orbit.hpp"
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 
 namespace capsubot::detail {
 

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "model/enum_names.hpp"
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 #include "simulate/segment_force.hpp"
 
 namespace capsubot {

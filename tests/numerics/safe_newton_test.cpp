@@ -1,6 +1,6 @@
-// The private root finders: GSL Brent (re-entrant) and the bracketed Newton iteration.
+// The private root finder: the bracketed (safeguarded) Newton iteration.
 
-#include "numerics/brent.hpp"
+#include "numerics/safe_newton.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,22 +14,7 @@ namespace {
 
 using testing::Near;
 
-constexpr double kTol = 1e-13;  // both stop at 1e-14 in x
-
-TEST(Brent, FindsTheRootOfABracket) {
-  const double r = detail::Brent([](double x) { return std::cos(x) - x; }, 0.0, 1.0);
-  EXPECT_TRUE(Near(r, 0.7390851332151607, kTol));  // Dottie number, to 16 digits
-}
-
-TEST(Brent, SearchesMayNest) {
-  // Outer search over a whose function runs an inner search: y(a) is the root of
-  // y^3 + y - a, and y(a) = 0.5 exactly at a = 0.625.
-  const auto inner = [](double a) {
-    return detail::Brent([a](double y) { return y * y * y + y - a; }, -10.0, 10.0);
-  };
-  const double a = detail::Brent([&](double s) { return inner(s) - 0.5; }, 0.0, 2.0);
-  EXPECT_TRUE(Near(a, 0.625, kTol));
-}
+constexpr double kTol = 1e-13;  // the iteration stops at 1e-14 in x
 
 TEST(SafeNewton, FindsTheRootWithEitherSignOrder) {
   const auto f = [](double x) { return std::exp(x) - 2.0; };

@@ -1,12 +1,8 @@
 #pragma once
-// Bracketed root finding with GSL's Brent solver, allocation-free on the hot path.
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+// Bracketed root finding by safeguarded Newton steps, allocation-free on the hot path.
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <tuple>
 #include <utility>
 
@@ -14,48 +10,6 @@ namespace capsubot::detail {
 
 inline constexpr double kRootAbsTol = 1e-14;  ///< absolute tolerance in phase
 inline constexpr int kRootMaxIter = 200;
-
-/// A GSL Brent solver on loan for one root search. Each thread keeps one solver per nesting
-/// depth, made on first use (so a search may run inside another search's function, and the
-/// hot path allocates nothing); GSL's error handler is switched off before the first one.
-class BrentLease {
- public:
-  BrentLease();
-  ~BrentLease();
-  BrentLease(const BrentLease&) = delete;
-  BrentLease& operator=(const BrentLease&) = delete;
-  gsl_root_fsolver* get() const { return solver_; }
-
- private:
-  gsl_root_fsolver* solver_;
-};
-
-/// Root of f in [lo, hi] where f(lo) and f(hi) have opposite signs (or one is zero).
-/// Returns the bracket's midpoint if GSL stops early (it cannot when the signs differ).
-template <class Fn>
-double Brent(const Fn& f, double lo, double hi) {
-  const double flo = f(lo), fhi = f(hi);
-  if (flo == 0.0) return lo;
-  if (fhi == 0.0) return hi;
-  gsl_function fn;
-  fn.function = [](double x, void* p) { return (*static_cast<const Fn*>(p))(x); };
-  fn.params = const_cast<Fn*>(&f);
-  const BrentLease lease;
-  gsl_root_fsolver* s = lease.get();
-  if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) return 0.5 * (lo + hi);
-  double root = 0.5 * (lo + hi);
-  for (int it = 0; it < kRootMaxIter; ++it) {
-    if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
-    root = gsl_root_fsolver_root(s);
-    const double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
-    if (gsl_root_test_interval(a, b, kRootAbsTol, 0.0) == GSL_SUCCESS) break;
-  }
-  return root;
-}
-
-}  // namespace capsubot::detail
-
-namespace capsubot::detail {
 
 /// Root in [lo, hi] of a function whose values at the bracket's ends are known, flo = f(lo)
 /// and fhi = f(hi) of opposite signs (or one of them zero), started from x in the bracket
