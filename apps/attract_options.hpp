@@ -8,8 +8,13 @@
 
 #include "capsubot/attractors.hpp"
 #include "cli.hpp"
+#include "json/attractors_json.hpp"
 
 namespace capsubot::app {
+
+// The JSON of motions is the shared layer's (src/json/), the same for the Python module.
+using json::AttractorsJson;
+using json::MotionJson;
 
 /// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
 struct RobotOptions {
@@ -31,14 +36,6 @@ PhaseState ParseRestStart(const char* name, const std::string& text);
 
 /// Adds --threads (0: all cores).
 void AddThreadsOption(CLI::App& cmd, int& threads);
-
-/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity"} of a motion (null
-/// for what was not found).
-nlohmann::json MotionJson(const Motion& motion);
-
-/// The attractors object: {"starts", "attractors": [...], "mean_velocity",
-/// "event_limit_starts"}.
-nlohmann::json AttractorsJson(const Attractors& attractors);
 
 /// "3 right + 1 left impacts per 1 period" or "no period found up to 8 (...)".
 std::string MotionWords(const Motion& motion, int max_period);

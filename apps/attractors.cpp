@@ -8,6 +8,7 @@
 
 #include "attract_options.hpp"
 #include "commands.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -20,7 +21,7 @@ struct AttractorsCommandOptions {
   bool json = false;
 };
 
-int Run(const AttractorsCommandOptions& opt) {
+int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   FromRestOptions fr;
   std::tie(fr.n_x, fr.n_psi) = ParseGridSize("--starts", opt.starts);
@@ -29,7 +30,9 @@ int Run(const AttractorsCommandOptions& opt) {
   const Attractors a =
       FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr, TerminalProgress("starts"));
   if (opt.json) {
-    fmt::print("{}\n", AttractorsJson(a).dump());
+    nlohmann::json j = AttractorsJson(a);
+    AddProvenanceJson(j, cmd);
+    fmt::print("{}\n", j.dump());
     return 0;
   }
   const MotionOptions& mo = fr.attractor.motion;
@@ -74,8 +77,9 @@ Command AddAttractorsCommand(CLI::App& app) {
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: starts, attractors (status, period, impacts_right, "
                 "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
-                "one_impact_orbit), mean_velocity (over the starts), event_limit_starts");
-  return {cmd, [opt] { return Run(*opt); }};
+                "one_impact_orbit), mean_velocity (over the starts), event_limit_starts, "
+                "provenance");
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

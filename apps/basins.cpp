@@ -11,6 +11,7 @@
 #include "attract_options.hpp"
 #include "capsubot/io.hpp"
 #include "commands.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -85,7 +86,7 @@ void Plot(const std::string& csv, const std::string& path, const Attractors& a, 
   std::filesystem::rename(temp, path);
 }
 
-int Run(const BasinsCommandOptions& opt) {
+int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   int nx = 0, ny = 0;
   std::tie(nx, ny) = ParseGridSize("--starts", opt.starts);
@@ -139,7 +140,9 @@ int Run(const BasinsCommandOptions& opt) {
     Plot(opt.output, opt.plot, a, x0_u0, opt.u_min, opt.u_max, title, opt.robot.motion.max_period);
   }
   if (opt.json) {
-    fmt::print("{}\n", AttractorsJson(a).dump());
+    nlohmann::json j = AttractorsJson(a);
+    AddProvenanceJson(j, cmd);
+    fmt::print("{}\n", j.dump());
     return 0;
   }
   std::string t = fmt::format("basins: {} starts ({} x {}, plane {}) written to {}\n", a.starts, nx,
@@ -177,8 +180,9 @@ Command AddBasinsCommand(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")->required();
   cmd->add_option("--plot", opt->plot, "also draw the map into this PNG file (needs gnuplot)");
   AddThreadsOption(*cmd, opt->threads);
-  cmd->add_flag("--json", opt->json, "print the attractors object of `attractors --json`");
-  return {cmd, [opt] { return Run(*opt); }};
+  cmd->add_flag("--json", opt->json,
+                "print the attractors object of `attractors --json` with provenance");
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

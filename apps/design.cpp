@@ -21,6 +21,8 @@
 #include "capsubot/io.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
+#include "json/design_json.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -35,60 +37,9 @@ struct DesignCliOptions {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The gait's numbers in the user's units, in the order of the CSV columns and JSON keys.
-std::vector<std::pair<const char*, double>> UserUnits(const Gait& g) {
-  return {{"m2_kg", g.m2_kg},
-          {"frequency_hz", g.frequency_hz},
-          {"speed_mm_s", g.speed_mm_s},
-          {"displacement_mm", g.displacement_mm},
-          {"impact_velocity_m_s", g.impact_velocity_m_s},
-          {"energy_mj", g.energy_mj},
-          {"power_mw", g.power_mw},
-          {"power_positive_mw", g.power_positive_mw},
-          {"friction_loss_mj", g.friction_loss_mj},
-          {"impact_loss_mj", g.impact_loss_mj},
-          {"cot", g.cot},
-          {"efficiency", g.efficiency}};
-}
-
-// The dimensionless orbit of an ok gait (NaN otherwise), for JSON and CSV.
-std::vector<std::pair<const char*, double>> Dimensionless(const Gait& g) {
-  const bool ok = g.ok();
-  const Orbit& o = g.solution.orbit;
-  const Forcing& f = o.forcing;
-  return {{"T0", ok ? o.T0 : kNaN},
-          {"A", ok && f.harmonic() ? f.amplitude() : kNaN},
-          {"c", ok ? f.mean() : kNaN},
-          {"alpha", ok ? o.alpha : kNaN},
-          {"phi0", ok ? f.phi0() : kNaN},
-          {"I", ok ? o.I : kNaN},
-          {"spectral_radius", ok ? g.stability.spectral_radius : kNaN},
-          {"x_min", ok ? g.solution.validity.x_min : kNaN},
-          {"x_max", ok ? g.solution.validity.x_max : kNaN}};
-}
-
-nlohmann::json GaitJson(const Gait& g) {
-  nlohmann::json j;
-  j["status"] = GaitStatusName(g.status);
-  for (const auto& [key, value] : UserUnits(g)) j[key] = value;  // NaN is written as null
-  nlohmann::json d;
-  for (const auto& [key, value] : Dimensionless(g)) d[key] = value;
-  if (g.ok() && !g.solution.orbit.forcing.harmonic()) {
-    const Forcing& f = g.solution.orbit.forcing;
-    std::vector<double> a, b;
-    for (int k = 1; k <= f.harmonics(); ++k) {
-      a.push_back(f.a(k));
-      b.push_back(f.b(k));
-    }
-    d["cos"] = a;
-    d["sin"] = b;
-  }
-  if (g.ok()) AddEnergyJson(d, g.energy);
-  j["dimensionless"] = d;
-  j["orbits"] = g.orbits;
-  j["binding"] = g.binding;
-  return j;
-}
+// The gait's numbers for the table and the CSV are those of its JSON (src/json/).
+using json::Dimensionless;
+using json::UserUnits;
 
 std::string Num(double value, const char* unit) {
   return std::isnan(value) ? "-" : fmt::format("{:.6g}{}", value, unit);
@@ -256,7 +207,7 @@ void WriteSweep(const std::vector<Gait>& rows, const std::string& path) {
   file.Commit();
 }
 
-int Run(const DesignCliOptions& opt) {
+int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   const DesignInput input = BuildDesignInput(opt.config);
   const DesignProgress progress = ProgressLine();
   if (!opt.sweep.empty()) {
@@ -273,12 +224,8 @@ int Run(const DesignCliOptions& opt) {
   const DesignResult r = Design(input, progress);
   EndProgress(progress);
   if (opt.json) {
-    nlohmann::json j;
-    j["status"] = DesignStatusName(r.status);
-    j["message"] = r.message;
-    j["one_impact"] = GaitJson(r.one_impact);
-    j["robots"] = r.robots;
-    j["complete"] = r.complete;
+    nlohmann::json j = json::DesignJson(r);
+    AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", Table(input, r));
@@ -301,7 +248,8 @@ Command AddDesignCommand(CLI::App& app) {
                 "print one JSON object: status, message, one_impact {m2_kg, frequency_hz, "
                 "speed_mm_s, displacement_mm, impact_velocity_m_s, energy_mj, power_mw, "
                 "power_positive_mw, friction_loss_mj, impact_loss_mj, cot, efficiency, "
-                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, robots, complete");
+                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, robots, complete, "
+                "provenance");
   cmd->add_option("--sweep", opt->sweep,
                   "instead of one design, one row per value: m2:M2MIN:M2MAX:N (the gait of each "
                   "m2) or frequency:FMIN:FMAX:N (the best m2 at each frequency), N log-spaced "
@@ -309,7 +257,7 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("VAR:MIN:MAX:N");
   cmd->add_option("-o,--output", opt->output,
                   "CSV file of --sweep (written atomically; - for standard output)");
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

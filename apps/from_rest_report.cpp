@@ -62,53 +62,6 @@ void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
       ->capture_default_str();
 }
 
-nlohmann::json FromRestJson(const GaitFromRest& r) {
-  if (!r.checked) return nullptr;
-  nlohmann::json j = AttractorsJson(r.attractors);
-  j["reached"] = r.reached;
-  j["summary"] = r.summary;
-  return j;
-}
-
-nlohmann::json ReachJson(const ReachResult& r) {
-  const bool found = !std::isnan(r.mean_velocity);
-  nlohmann::json j;
-  j["status"] = OptimizeStatusName(r.status);
-  j["message"] = r.message;
-  j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
-  j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
-  j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
-  j["alpha"] = r.alpha;
-  j["mean_velocity"] = r.mean_velocity;
-  j["attractors"] = found ? AttractorsJson(r.attractors) : nlohmann::json(nullptr);
-  j["summary"] = r.summary;
-  j["spread"] = {{"chatter_small", r.spread.chatter_small},
-                 {"chatter_large", r.spread.chatter_large},
-                 {"e_0999", r.spread.e_0999},
-                 {"max_relative_deviation", r.spread.max_relative_deviation},
-                 {"event_limit_starts", r.spread.event_limit_starts}};
-  j["seed_won"] = r.seed_won;
-  j["robust_to_settings"] = r.robust_to_settings;
-  j["evaluations"] = r.evaluations;
-  j["rejected_evaluations"] = r.rejected_evaluations;
-  j["search_seconds"] = r.search_seconds;
-  j["algorithm"] = r.algorithm;
-  const Orbit& so = r.seed.gait.solution.orbit;
-  if (r.seed.from_rest.checked) {
-    j["seed"] = {{"A", so.forcing.amplitude()},
-                 {"c", so.forcing.mean()},
-                 {"phi0", so.forcing.phi0()},
-                 {"alpha", so.alpha},
-                 {"I", so.I},
-                 {"v_mean", so.v_mean},
-                 {"mean_velocity_from_rest", r.seed.from_rest.attractors.mean_velocity},
-                 {"reached", r.seed.from_rest.reached}};
-  } else {
-    j["seed"] = nullptr;
-  }
-  return j;
-}
-
 void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const ReachResult& reach) {
   auto& out = file.stream();
   out << "gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,one_impact_orbit\n";

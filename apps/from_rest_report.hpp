@@ -11,8 +11,15 @@
 #include "capsubot/io.hpp"
 #include "capsubot/optimize_reach.hpp"
 #include "cli.hpp"
+#include "json/attractors_json.hpp"
+#include "json/optimize_json.hpp"
 
 namespace capsubot::app {
+
+// The `from_rest` and `reach` objects are the shared layer's (src/json/), the same for the
+// Python module.
+using json::FromRestJson;
+using json::ReachJson;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {
@@ -39,15 +46,6 @@ void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& options);
 /// Adds the evaluation budgets of the reach search: --reach-starts, --reach-evaluations,
 /// --reach-local-evaluations (not its wall-clock limit --reach-seconds).
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
-
-/// The `from_rest` object: the attractors object (AttractorsJson) plus "reached" and
-/// "summary"; null when the gait was not checked (no orbit).
-nlohmann::json FromRestJson(const GaitFromRest& report);
-
-/// The `reach` object: A, c, phi0, alpha, mean_velocity, status, message, attractors,
-/// summary, spread, seed_won, evaluations, search_seconds, algorithm, seed {A, c, phi0,
-/// alpha, I, mean_velocity_from_rest, reached}.
-nlohmann::json ReachJson(const ReachResult& reach);
 
 /// CSV for the figure of what the robot reaches (columns gait, row, mean_velocity, fraction,
 /// period, impacts_right, impacts_left, one_impact_orbit): the robust gait's promised speed

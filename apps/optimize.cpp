@@ -23,6 +23,7 @@
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -93,19 +94,36 @@ std::string RunName(const std::string& problem) {
   return problem.empty() ? "the main job (no --problem)" : "--problem " + problem;
 }
 
+bool UsedBy(const OptionUse& use, const std::string& problem) {
+  for (const char* run : use.runs) {
+    if (run == nullptr) break;
+    if (problem == run) return true;
+  }
+  return false;
+}
+
+// The options the chosen run does not use: their defaults do not shape its output (left out
+// of the provenance).
+std::vector<std::string> UnusedOptions(const OptimizeCliOptions& opt) {
+  std::vector<std::string> unused;
+  for (const OptionUse& use : kOptionUses) {
+    if (!UsedBy(use, opt.problem)) unused.emplace_back(use.option);
+  }
+  if (opt.global_algorithm == kMultistart) unused.emplace_back("--global-evaluations");
+  return unused;
+}
+
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
 void RejectUnusedOptions(const OptimizeCliOptions& opt) {
   for (const OptionUse& use : kOptionUses) {
     const CLI::Option* option = opt.cmd->get_option_no_throw(use.option);
     if (option == nullptr || option->count() == 0) continue;
     std::string expected;
-    bool used = false;
     for (const char* run : use.runs) {
       if (run == nullptr) break;
-      used = used || opt.problem == run;
       expected += (expected.empty() ? "" : " or ") + RunName(run);
     }
-    if (!used) {
+    if (!UsedBy(use, opt.problem)) {
       throw std::invalid_argument(fmt::format("{} conflicts with {}: expected {} only with {}",
                                               use.option, RunName(opt.problem), use.option,
                                               expected));
@@ -129,38 +147,6 @@ std::vector<std::string> BindingNames(const OptimizeResult& r) {
   std::vector<std::string> names;
   for (Margin m : r.binding) names.emplace_back(MarginName(m));
   return names;
-}
-
-// The JSON object of one optimisation result: the optimum's orbit as `solve --json` shows it,
-// with the optimiser's status in place of the orbit's.
-nlohmann::json ResultJson(const OptimizeResult& r, const char* problem) {
-  const Forcing& f = r.solution.orbit.forcing;
-  nlohmann::json j = SolutionJson(r.solution);
-  j["problem"] = problem;
-  j["status"] = OptimizeStatusName(r.status);
-  j["message"] = r.message;
-  j["active_constraints"] = r.active_constraints;
-  j["binding"] = BindingNames(r);
-  j["evaluations"] = r.evaluations;
-  j["algorithm"] = r.algorithm;
-  if (!std::isnan(r.spectral_radius)) {
-    j["spectral_radius"] = r.spectral_radius;
-    j["stable"] = r.spectral_radius < 1.0;
-  }
-  if (!f.harmonic()) {
-    j["coefficients"] = {{"c", f.mean()}, {"cos", j["cos"]}, {"sin", j["sin"]}};
-  }
-  return j;
-}
-
-// The model and the requirements every result of a run shares (rho_max null: none).
-void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
-  j["T0"] = p.T0;
-  j["e"] = p.e;
-  j["margin"] = p.margin;
-  j["margin_stroke"] = p.margin_stroke;
-  j["stick_margin"] = p.stick_margin;
-  j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
 }
 
 // The files asked for, opened before any work (a bad path fails at once) and committed
@@ -269,8 +255,9 @@ PhaseOptions PhaseFor(const OptimizeCliOptions& opt) {
   return po;
 }
 
-void Emit(const nlohmann::json& j, const std::string& text, const OptimizeCliOptions& opt,
+void Emit(nlohmann::json j, const std::string& text, const OptimizeCliOptions& opt,
           AtomicFile* json_file) {
+  AddProvenanceJson(j, *opt.cmd, UnusedOptions(opt));
   if (json_file != nullptr) {
     json_file->stream() << j.dump(2) << '\n';
     json_file->Commit();
@@ -346,22 +333,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("");
   const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
 
-  nlohmann::json j;
-  AddRequirementsJson(j, p, opt.rho_max);
-  j["force_bound"] = bound;
-  j["paper"] = ResultJson(paper, "phase");
-  j["paper"]["note"] =
-      "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no margins)";
-  j["robust"] = ResultJson(robust, "forcing");
-  j["robust"]["note"] =
-      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= "
-      "rho_max; checked from rest";
-  j["robust"]["from_rest"] = FromRestJson(reach.seed.from_rest);
-  j["reach"] = ReachJson(reach);
-  j["fastest"] = ResultJson(fastest, "forcing");
-  j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
-  j["fastest_stable"] = ResultJson(stable, "forcing");
-  j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
+  nlohmann::json j =
+      json::MainJobJson(paper, robust, reach, fastest, stable, p, opt.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
@@ -443,8 +416,7 @@ int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach = OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, opt.alpha));
   ShowStage("");
-  nlohmann::json j = ReachJson(reach);
-  AddRequirementsJson(j, p, opt.rho_max);  // those of the seed
+  nlohmann::json j = json::ReachProblemJson(reach, p, opt.rho_max);
   WriteForceCsv(reach.forcing, files.force_csv.get());
   const std::string t = fmt::format(
       "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
@@ -479,13 +451,7 @@ int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, Outp
   ShowStage("optimize: the optimum checked from rest (simulated starts)");
   const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   ShowStage("");
-  nlohmann::json j = ResultJson(r, opt.problem.c_str());
-  j["from_rest"] = FromRestJson(from_rest);
-  AddRequirementsJson(j, p, opt.rho_max);
-  if (opt.problem == "fourier") {
-    j["baseline_I"] = r.baseline_I;
-    j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
-  }
+  nlohmann::json j = json::ProblemJson(r, opt.problem.c_str(), from_rest, p, opt.rho_max);
   WriteForceCsv(r.solution.orbit.forcing, files.force_csv.get());
   std::string t;
   t += fmt::format(

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <memory>
 
-#include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 #include "commands.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -30,22 +30,16 @@ constexpr std::int64_t kMaxEvaluations = 1'000'000'000;
 constexpr const char* kIncompleteNote =
     "the search stopped at its work bound (--max-evaluations): orbits may be missing";
 
-int Run(const OrbitsOptions& opt) {
+int Run(const OrbitsOptions& opt, const CLI::App& cmd) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build(false);
   bool complete = true;
   const std::vector<Solution> found =
       FindRobotOrbits(forcing, opt.params, opt.alpha, &complete, opt.max_evaluations);
   if (opt.json) {
-    nlohmann::json all = nlohmann::json::array();
-    for (const Solution& s : found) {
-      nlohmann::json j = SolutionJson(s);
-      AddEnergyJson(j, OrbitEnergy(s.orbit));
-      AddStabilityJson(j, ComputeStability(s.orbit));
-      j["complete"] = complete;
-      all.push_back(j);
-    }
-    fmt::print("{}\n", all.dump());
+    nlohmann::json j = {{"orbits", json::RobotOrbitsJson(found, complete)}};
+    AddProvenanceJson(j, cmd);
+    fmt::print("{}\n", j.dump());
     if (!complete) fmt::print(stderr, "capsubot orbits: note: {}\n", kIncompleteNote);
     return 0;
   }
@@ -96,10 +90,11 @@ Command AddOrbitsCommand(CLI::App& app) {
           1, kMaxEvaluations)
       ->capture_default_str();
   cmd->add_flag("--json", opt->json,
-                "print a JSON array with one object per orbit, sorted by phi0, with the keys of "
-                "`solve --stability --json` and complete (false: the search hit its work bound "
-                "and orbits may be missing; a note on stderr then says so)");
-  return {cmd, [opt] { return Run(*opt); }};
+                "print one JSON object: orbits (an array with one object per orbit, sorted by "
+                "phi0, with the keys of `solve --stability --json` without from_rest, and "
+                "complete: false when the search hit its work bound and orbits may be missing; a "
+                "note on stderr then says so) and provenance");
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

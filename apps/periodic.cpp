@@ -9,6 +9,8 @@
 
 #include "attract_options.hpp"
 #include "commands.hpp"
+#include "json/periodic_json.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -24,29 +26,7 @@ struct PeriodicCommandOptions {
   CLI::Option* transient_option = nullptr;
 };
 
-nlohmann::json PeriodicJson(const PeriodicMotion& m) {
-  nlohmann::json j;
-  j["status"] = ShootingStatusName(m.status);
-  j["period"] = m.period;
-  j["impacts_right"] = m.impacts_right;
-  j["impacts_left"] = m.impacts_left;
-  j["mean_velocity"] = m.mean_velocity;
-  j["state"] = {{"x", m.state.x}, {"u", m.state.u}, {"v", m.state.v}, {"psi", m.state.psi}};
-  j["mode"] = SimModeName(m.mode);
-  j["dimension"] = m.dimension;
-  j["multipliers"] = nlohmann::json::array();
-  for (const auto& l : m.multipliers) j["multipliers"].push_back({l.real(), l.imag()});
-  j["spectral_radius"] = m.spectral_radius;
-  j["stable"] = m.stable;
-  j["distance_to_plus_one"] = m.distance_to_plus_one;
-  j["distance_to_minus_one"] = m.distance_to_minus_one;
-  j["distance_to_unit_circle"] = m.distance_to_unit_circle;
-  j["residual"] = m.residual;
-  j["iterations"] = m.iterations;
-  return j;
-}
-
-int Run(PeriodicCommandOptions& opt) {
+int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   int given = 0;
   for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
@@ -68,7 +48,9 @@ int Run(PeriodicCommandOptions& opt) {
   const PeriodicMotion m =
       FindPeriodicMotion(forcing, opt.robot.params, opt.robot.alpha, start, so);
   if (opt.json) {
-    fmt::print("{}\n", PeriodicJson(m).dump());
+    nlohmann::json j = json::PeriodicJson(m);
+    AddProvenanceJson(j, cmd);
+    fmt::print("{}\n", j.dump());
     return 0;
   }
   std::string t = "periodic motion by Newton shooting on the stroboscopic map\n";
@@ -135,8 +117,8 @@ Command AddPeriodicCommand(CLI::App& app) {
                 "print one JSON object: status, period, impacts_right, impacts_left, "
                 "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
                 "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
-                "distance_to_unit_circle, residual, iterations");
-  return {cmd, [opt] { return Run(*opt); }};
+                "distance_to_unit_circle, residual, iterations, provenance");
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

@@ -80,4 +80,13 @@ Provenance CommandProvenance(const CLI::App& command, const std::vector<std::str
   return p;
 }
 
+void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
+                       const std::vector<std::string>& unused) {
+  std::vector<std::string> exclude = {
+      "--json",      "--threads",       "--output", "--trajectory",         "--events",
+      "--force-csv", "--from-rest-csv", "--plot",   "--samples-per-period", "--samples"};
+  exclude.insert(exclude.end(), unused.begin(), unused.end());
+  j["provenance"] = CommandProvenance(command, exclude).Json();
+}
+
 }  // namespace capsubot::app

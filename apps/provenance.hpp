@@ -31,4 +31,12 @@ struct Provenance {
 /// order; `exclude` lists long names ("--threads") that do not change the content.
 Provenance CommandProvenance(const CLI::App& command, const std::vector<std::string>& exclude);
 
+/// Adds "provenance" (Provenance::Json) to a JSON output of the parsed subcommand `command`:
+/// every option that determines the content, but not --json, --threads, the paths of output
+/// files (-o/--output, --trajectory, --events, --force-csv, --from-rest-csv, --plot) or what
+/// only shapes those files (--samples, --samples-per-period), nor the options in `unused`
+/// (long names of options the run does not use).
+void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
+                       const std::vector<std::string>& unused = {});
+
 }  // namespace capsubot::app

@@ -5,15 +5,6 @@
 #include <cmath>
 
 namespace capsubot::app {
-namespace {
-
-std::vector<double> Coefficients(const Forcing& f, bool sine) {
-  std::vector<double> out;
-  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
-  return out;
-}
-
-}  // namespace
 
 std::string Num(double value, int digits) {
   return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
@@ -21,37 +12,6 @@ std::string Num(double value, int digits) {
 
 std::string NumFixed(double value, int decimals) {
   return std::isnan(value) ? "-" : fmt::format("{:.{}f}", value, decimals);
-}
-
-nlohmann::json SolutionJson(const Solution& s) {
-  const Orbit& o = s.orbit;
-  const Validity& v = s.validity;
-  const Forcing& f = o.forcing;
-  nlohmann::json j;
-  j["A"] = f.harmonic() ? nlohmann::json(f.amplitude()) : nlohmann::json();
-  j["c"] = f.mean();
-  j["phi0"] = f.phi0();
-  if (!f.harmonic()) {
-    j["cos"] = Coefficients(f, false);
-    j["sin"] = Coefficients(f, true);
-  }
-  j["T0"] = o.T0;
-  j["e"] = o.e;
-  j["status"] = StatusName(o.status);
-  // nlohmann::json writes NaN as null: a quantity that does not exist is null.
-  j["phi1"] = o.phi1;
-  j["alpha"] = o.alpha;
-  j["u"] = o.u;
-  j["v_plus"] = o.v_plus;
-  j["I"] = o.I;
-  j["v_mean"] = o.v_mean;
-  j["x_min"] = v.x_min;
-  j["x_max"] = v.x_max;
-  j["stroke"] = v.stroke;
-  j["clearance"] = v.clearance;
-  j["valid"] = v.valid();
-  j["violations"] = v.ViolationNames();
-  return j;
 }
 
 std::string ForceFormula(const Forcing& f) {
@@ -98,27 +58,6 @@ std::string SolutionTable(const Solution& s, const Params& p) {
     t += fmt::format("  valid            no: violated {}\n", names);
   }
   return t;
-}
-
-void AddStabilityJson(nlohmann::json& j, const Stability& st) {
-  if (!st.computed) {
-    j["multipliers"] = nullptr;
-    j["spectral_radius"] = nullptr;
-    j["stable"] = false;
-    return;
-  }
-  nlohmann::json m = nlohmann::json::array();
-  for (const auto& z : st.multipliers) m.push_back({{"re", z.real()}, {"im", z.imag()}});
-  j["multipliers"] = m;
-  j["spectral_radius"] = st.spectral_radius;
-  j["stable"] = st.stable;
-}
-
-void AddEnergyJson(nlohmann::json& j, const Energy& en) {
-  j["energy"] = {{"motor_work", en.motor_work},
-                 {"motor_work_positive", en.motor_work_positive},
-                 {"friction_loss", en.friction_loss},
-                 {"impact_loss", en.impact_loss}};
 }
 
 std::string EnergyTable(const Energy& en) {

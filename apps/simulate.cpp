@@ -14,7 +14,9 @@
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
+#include "json/simulation_json.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -81,24 +83,7 @@ class CsvObserver : public SimObserver {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// The figures of a span of the run (the record, or the transient) as JSON keys of `j`.
-void AddTallyJson(nlohmann::json& j, const SimTally& t) {
-  j["displacement"] = t.displacement;
-  j["v_mean"] = t.v_mean;
-  j["impacts_right"] = t.impacts_right;
-  j["impacts_left"] = t.impacts_left;
-  j["stops"] = t.stops;
-  j["breakaways"] = t.breakaways;
-  j["sticks"] = t.sticks;
-  j["releases"] = t.releases;
-  j["events"] = t.events;
-  j["energy"] = {{"motor_work", t.energy.motor_work},
-                 {"motor_work_positive", t.energy.motor_work_positive},
-                 {"friction_loss", t.energy.friction_loss},
-                 {"impact_loss", t.energy.impact_loss}};
-}
-
-int Run(SimulateOptions& opt) {
+int Run(SimulateOptions& opt, const CLI::App& cmd) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
   SimOptions sim = opt.sim;
@@ -166,24 +151,8 @@ int Run(SimulateOptions& opt) {
 
   const SimState& f = r.final_state;
   if (opt.json) {
-    nlohmann::json j;
-    j["status"] = SimStatusName(r.status);
-    j["message"] = r.message;
-    j["alpha"] = sim.alpha;
-    j["phi"] = f.phi;
-    j["x"] = f.x;
-    j["u"] = f.u;
-    j["v"] = f.v;
-    j["y"] = f.y;
-    j["mode"] = SimModeName(f.mode);
-    AddTallyJson(j, r);
-    if (sim.transient > 0.0) {
-      nlohmann::json t;
-      t["periods"] = sim.transient;
-      AddTallyJson(t, r.transient);
-      j["transient"] = t;
-    }
-    if (orbit) j["orbit"] = SolutionJson(*orbit);
+    nlohmann::json j = json::SimulationJson(r, sim, orbit ? &*orbit : nullptr);
+    AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
     return 0;
   }
@@ -267,7 +236,8 @@ Command AddSimulateCommand(CLI::App& app) {
                 "recorded periods displacement, v_mean, impacts_right, impacts_left, stops, "
                 "breakaways, sticks, releases, events, energy {motor_work, motor_work_positive, "
                 "friction_loss, impact_loss}; alpha; transient (the same figures over the "
-                "transient, with --transient); orbit (the analytic orbit, with --from-orbit)");
+                "transient, with --transient); orbit (the analytic orbit, with --from-orbit); "
+                "provenance");
   cmd->add_option("--events", opt->events,
                   "write every event to this CSV file: phase, kind, x, u, v, y (state right "
                   "after the event), u_before, v_before, mode");
@@ -289,7 +259,7 @@ Command AddSimulateCommand(CLI::App& app) {
                           "events per period"),
           10, kMaxEventsPerPeriod)
       ->capture_default_str();
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

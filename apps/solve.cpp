@@ -10,6 +10,7 @@
 #include "capsubot/validity.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "provenance.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -38,7 +39,7 @@ void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
   file.Commit();
 }
 
-int Run(const SolveOptions& opt) {
+int Run(const SolveOptions& opt, const CLI::App& cmd) {
   opt.params.Validate();
   const FromRestOptions from_rest_options = opt.from_rest.Check();  // bad grids before any work
   const Forcing forcing = opt.forcing.Build();
@@ -54,10 +55,11 @@ int Run(const SolveOptions& opt) {
   const GaitFromRest from_rest =
       opt.stability ? CheckGaitFromRest(s.orbit, opt.params, from_rest_options) : GaitFromRest{};
   if (opt.json) {
-    nlohmann::json j = SolutionJson(s);
-    AddEnergyJson(j, OrbitEnergy(s.orbit));
-    if (opt.stability) AddStabilityJson(j, ComputeStability(s.orbit));
-    if (opt.stability) j["from_rest"] = FromRestJson(from_rest);
+    nlohmann::json j = json::SolveJson(s, opt.stability, from_rest);
+    // Without --stability the orbit is not checked from rest: its grid does not shape the output.
+    AddProvenanceJson(j, cmd,
+                      opt.stability ? std::vector<std::string>{}
+                                    : std::vector<std::string>{"--from-rest-starts"});
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", SolutionTable(s, opt.params));
@@ -102,7 +104,7 @@ Command AddSolveCommand(CLI::App& app) {
           kMaxTrajectoryRows)
       ->capture_default_str()
       ->needs(trajectory);
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

@@ -8,37 +8,15 @@
 
 #include <cstdint>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "json/attractors_json.hpp"
 
 namespace capsubot::python {
 namespace {
-
-// "8x8" -> n_x = 8, n_psi = 8; the library checks the sizes (1 to 100000).
-void ParseStarts(const std::string& text, FromRestOptions& o) {
-  static const std::regex grid("([0-9]{1,9})[xX]([0-9]{1,9})");
-  std::smatch parts;
-  if (!std::regex_match(text, parts, grid)) {
-    throw std::invalid_argument(fmt::format(
-        "starts = '{}' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')", text));
-  }
-  o.n_x = std::stoi(parts[1].str());
-  o.n_psi = std::stoi(parts[2].str());
-}
-
-py::dict MotionDict(const Motion& m) {
-  py::dict d;
-  d["status"] = MotionStatusName(m.status);
-  d["period"] = m.period;
-  d["impacts_right"] = m.impacts_right;
-  d["impacts_left"] = m.impacts_left;
-  d["mean_velocity"] = Number(m.mean_velocity);
-  return d;
-}
 
 py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<double> phi0,
                             std::optional<std::vector<double>> cos,
@@ -57,7 +35,7 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
           "starts and n_x, n_psi are exclusive: give the grid as starts='NXxNPSI' or as n_x "
           "and n_psi");
     }
-    ParseStarts(*starts, fr);
+    ParseStarts("starts", *starts, fr);
   }
   fr.n_x = n_x.value_or(fr.n_x);
   fr.n_psi = n_psi.value_or(fr.n_psi);
@@ -75,24 +53,7 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
     py::gil_scoped_release release;
     a = FindAttractors(forcing, params, alpha, fr);
   }
-  py::list attractors;
-  for (const Attractor& at : a.attractors) {
-    py::dict x = MotionDict(at.motion);
-    x["fraction"] = Number(at.fraction);
-    x["starts"] = at.starts;
-    py::dict example;
-    example["x0"] = Number(at.example.x);
-    example["psi"] = Number(at.example.psi);
-    x["example_start"] = example;
-    x["one_impact_orbit"] = at.one_impact_orbit;
-    attractors.append(x);
-  }
-  py::dict d;
-  d["starts"] = a.starts;
-  d["attractors"] = attractors;
-  d["mean_velocity"] = Number(a.mean_velocity);
-  d["event_limit_starts"] = a.event_limit_starts;
-  return d;
+  return py::dict(ToPython(json::AttractorsJson(a)));
 }
 
 constexpr const char* kAttractorsDoc =

@@ -1,18 +1,19 @@
 #pragma once
 // The Python module's pieces: one Bind function per library concept (each in its own file,
 // called by module.cpp), and the conversions they share (convert.cpp). The module is thin:
-// it converts Python arguments to the library's inputs, calls the library and converts the
-// results to the dicts that the command line's --json prints (same keys, null -> None).
+// it converts Python arguments to the library's inputs, calls the library, builds the result
+// as the command line's --json does (the shared layer src/json/) and converts that JSON to
+// Python objects (same keys, null -> None).
 
 #include <pybind11/pybind11.h>
 
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
-#include "capsubot/energy.hpp"
+#include "capsubot/attractors.hpp"
 #include "capsubot/forcing.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
 
 namespace capsubot::python {
 
@@ -61,20 +62,29 @@ inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
 
-/// The Fourier coefficients of a force: b_1..b_K with `sine`, else a_1..a_K.
-std::vector<double> Coefficients(const Forcing& f, bool sine);
+/// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
+/// options.n_psi; throws std::invalid_argument naming the argument (the library checks the
+/// sizes).
+void ParseStarts(const char* name, const std::string& text, FromRestOptions& options);
 
-/// A number as the command line's JSON writes it: None for NaN or infinity (JSON null).
-py::object Number(double value);
+/// How the module checks a gait from rest, as the command line's --from-rest-starts and
+/// --threads: the full grid `starts` (argument from_rest_starts), `threads` worker threads.
+FromRestOptions FromRestCheck(const std::string& starts, int threads);
 
-/// The dict of `capsubot solve --json` without the energy: A, c, phi0 (cos, sin for a Fourier
-/// force), T0, e, status, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance,
-/// valid, violations.
-py::dict SolutionDict(const Solution& solution);
+/// The default grid of the check from rest, as the command line's --from-rest-starts.
+inline constexpr const char* kDefaultFromRestStarts = "8x8";
 
-/// Adds the key "energy" of `solve --json`: a dict motor_work, motor_work_positive,
-/// friction_loss, impact_loss (per period; None when not computed).
-void AddEnergy(py::dict& d, const Energy& energy);
+/// The docstring lines of the from-rest check (from_rest_starts, threads).
+inline constexpr const char* kFromRestArgsDoc =
+    "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"
+    "            (docs/model.md section 12; key from_rest)\n"
+    "    threads worker threads of the simulated starts (0: all cores); the result does not\n"
+    "            depend on it\n";
+
+/// A JSON value as Python objects: objects -> dict, arrays -> list, numbers -> int or float
+/// (NaN and infinities, which JSON writes as null, -> None), strings -> str, booleans -> bool,
+/// null -> None.
+py::object ToPython(const nlohmann::json& value);
 
 /// The docstring lines of the margins of a robust gait (docs/model.md section 12).
 inline constexpr const char* kMarginArgsDoc =
@@ -82,9 +92,5 @@ inline constexpr const char* kMarginArgsDoc =
     "    margin_stroke  clearance relative to the stroke d_s: the clearance from both walls is\n"
     "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)\n"
     "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
-
-/// Adds the keys of `solve --stability --json`: multipliers (list of {"re", "im"}),
-/// spectral_radius and stable (None, None, False when not computed).
-void AddStability(py::dict& d, const Stability& stability);
 
 }  // namespace capsubot::python

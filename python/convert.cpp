@@ -1,9 +1,11 @@
-// Conversions shared by the module's functions: the force arguments, numbers, and the
-// solved orbit as the dict of `capsubot solve --json`.
+// Conversions shared by the module's functions: the force arguments, and the JSON of the
+// results (src/json/, as the command line prints it) as Python objects.
 
-#include <pybind11/stl.h>
+#include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
@@ -32,72 +34,52 @@ Forcing ForcingArgs::Build(bool need_phase) const {
   return Forcing::Harmonic(*A, c, phi0.value_or(0.0));
 }
 
-std::vector<double> Coefficients(const Forcing& f, bool sine) {
-  std::vector<double> out;
-  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
-  return out;
-}
-
-py::object Number(double value) {
-  return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
-}
-
-py::dict SolutionDict(const Solution& s) {
-  const Orbit& o = s.orbit;
-  const Validity& v = s.validity;
-  const Forcing& f = o.forcing;
-  py::dict d;
-  d["A"] = f.harmonic() ? Number(f.amplitude()) : py::none();
-  d["c"] = Number(f.mean());
-  d["phi0"] = Number(f.phi0());
-  if (!f.harmonic()) {
-    d["cos"] = Coefficients(f, false);
-    d["sin"] = Coefficients(f, true);
+void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) {
+  static const std::regex grid("([0-9]{1,9})[xX]([0-9]{1,9})");
+  std::smatch parts;
+  if (!std::regex_match(text, parts, grid)) {
+    throw std::invalid_argument(fmt::format(
+        "{} = '{}' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')", name, text));
   }
-  d["T0"] = Number(o.T0);
-  d["e"] = Number(o.e);
-  d["status"] = StatusName(o.status);
-  d["phi1"] = Number(o.phi1);
-  d["alpha"] = Number(o.alpha);
-  d["u"] = Number(o.u);
-  d["v_plus"] = Number(o.v_plus);
-  d["I"] = Number(o.I);
-  d["v_mean"] = Number(o.v_mean);
-  d["x_min"] = Number(v.x_min);
-  d["x_max"] = Number(v.x_max);
-  d["stroke"] = Number(v.stroke);
-  d["clearance"] = Number(v.clearance);
-  d["valid"] = v.valid();
-  d["violations"] = v.ViolationNames();
-  return d;
+  o.n_x = std::stoi(parts[1].str());
+  o.n_psi = std::stoi(parts[2].str());
 }
 
-void AddEnergy(py::dict& d, const Energy& en) {
-  py::dict energy;
-  energy["motor_work"] = Number(en.motor_work);
-  energy["motor_work_positive"] = Number(en.motor_work_positive);
-  energy["friction_loss"] = Number(en.friction_loss);
-  energy["impact_loss"] = Number(en.impact_loss);
-  d["energy"] = energy;
+FromRestOptions FromRestCheck(const std::string& starts, int threads) {
+  FromRestOptions o;
+  ParseStarts("from_rest_starts", starts, o);
+  o.attractor.threads = threads;
+  o.Validate();
+  return o;
 }
 
-void AddStability(py::dict& d, const Stability& st) {
-  if (!st.computed) {
-    d["multipliers"] = py::none();
-    d["spectral_radius"] = py::none();
-    d["stable"] = false;
-    return;
+py::object ToPython(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::object: {
+      py::dict d;
+      for (const auto& [key, item] : value.items()) d[py::str(key)] = ToPython(item);
+      return d;
+    }
+    case nlohmann::json::value_t::array: {
+      py::list l;
+      for (const auto& item : value) l.append(ToPython(item));
+      return l;
+    }
+    case nlohmann::json::value_t::number_float: {
+      const double x = value.get<double>();
+      return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none());
+    }
+    case nlohmann::json::value_t::number_integer:
+      return py::int_(value.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned:
+      return py::int_(value.get<std::uint64_t>());
+    case nlohmann::json::value_t::string:
+      return py::str(value.get_ref<const std::string&>());
+    case nlohmann::json::value_t::boolean:
+      return py::bool_(value.get<bool>());
+    default:  // null, and the binary and discarded values that the results never hold
+      return py::none();
   }
-  py::list multipliers;
-  for (const auto& z : st.multipliers) {
-    py::dict m;
-    m["re"] = Number(z.real());
-    m["im"] = Number(z.imag());
-    multipliers.append(m);
-  }
-  d["multipliers"] = multipliers;
-  d["spectral_radius"] = Number(st.spectral_radius);
-  d["stable"] = st.stable;
 }
 
 }  // namespace capsubot::python

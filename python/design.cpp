@@ -12,53 +12,12 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "json/design_json.hpp"
 
 namespace capsubot::python {
 namespace {
 
 using Range = std::pair<double, double>;
-
-// The key "one_impact" of `design --json`: the gait in the user's units, its dimensionless
-// orbit (null unless ok), the orbits found and the limits it sits on.
-py::dict GaitDict(const Gait& g) {
-  const bool ok = g.ok();
-  const auto when_ok = [ok](double value) { return ok ? Number(value) : py::none(); };
-  const Orbit& o = g.solution.orbit;
-  const Forcing& f = o.forcing;
-  py::dict d;
-  d["status"] = GaitStatusName(g.status);
-  d["m2_kg"] = Number(g.m2_kg);
-  d["frequency_hz"] = Number(g.frequency_hz);
-  d["speed_mm_s"] = Number(g.speed_mm_s);
-  d["displacement_mm"] = Number(g.displacement_mm);
-  d["impact_velocity_m_s"] = Number(g.impact_velocity_m_s);
-  d["energy_mj"] = Number(g.energy_mj);
-  d["power_mw"] = Number(g.power_mw);
-  d["power_positive_mw"] = Number(g.power_positive_mw);
-  d["friction_loss_mj"] = Number(g.friction_loss_mj);
-  d["impact_loss_mj"] = Number(g.impact_loss_mj);
-  d["cot"] = Number(g.cot);
-  d["efficiency"] = Number(g.efficiency);
-  py::dict x;
-  x["T0"] = when_ok(o.T0);
-  x["A"] = ok && f.harmonic() ? Number(f.amplitude()) : py::none();
-  x["c"] = when_ok(f.mean());
-  x["alpha"] = when_ok(o.alpha);
-  x["phi0"] = when_ok(f.phi0());
-  x["I"] = when_ok(o.I);
-  x["spectral_radius"] = when_ok(g.stability.spectral_radius);
-  x["x_min"] = when_ok(g.solution.validity.x_min);
-  x["x_max"] = when_ok(g.solution.validity.x_max);
-  if (ok && !f.harmonic()) {
-    x["cos"] = Coefficients(f, false);
-    x["sin"] = Coefficients(f, true);
-  }
-  if (ok) AddEnergy(x, g.energy);
-  d["dimensionless"] = x;
-  d["orbits"] = g.orbits;
-  d["binding"] = g.binding;
-  return d;
-}
 
 // One of two alternatives must be given, not both (names as the arguments).
 void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
@@ -114,13 +73,7 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
     py::gil_scoped_release release;
     r = Design(in);
   }
-  py::dict d;
-  d["status"] = DesignStatusName(r.status);
-  d["message"] = r.message;
-  d["one_impact"] = GaitDict(r.one_impact);
-  d["robots"] = r.robots;
-  d["complete"] = r.complete;
-  return d;
+  return py::dict(ToPython(json::DesignJson(r)));
 }
 
 constexpr const char* kDesignDoc =

@@ -1,7 +1,7 @@
 // The Python module `capsubot`: the library's computations with keyword arguments named as
-// the command-line options, results as the dicts of the command line's --json (NumPy arrays
-// for tables). pybind11 maps std::invalid_argument to ValueError and std::runtime_error to
-// RuntimeError, with the library's message.
+// the command-line options, results as the dicts of the command line's --json (built by its
+// JSON layer, src/json/; NumPy arrays for tables). pybind11 maps std::invalid_argument to
+// ValueError and std::runtime_error to RuntimeError, with the library's message.
 
 #include <string>
 
@@ -19,7 +19,8 @@ PYBIND11_MODULE(capsubot, m) {
           "periodic motion of any kind by Newton shooting; design: a real robot in SI "
           "units. Keyword arguments are named as the command-line "
           "options; results are the dicts that `capsubot <command> --json` prints (None "
-          "for null). Bad input raises ValueError with the library's message.\n\n") +
+          "for null), without its provenance. Bad input raises ValueError with the "
+          "library's message.\n\n") +
       capsubot::python::kUnits;
   m.attr("__version__") = capsubot::Version();
   capsubot::python::BindSolve(m);

@@ -1,5 +1,6 @@
 // optimize: the fastest gait (docs/model.md section 7) with the margins of a robust gait
-// (section 12), as `capsubot optimize --json`: one problem, or the main job without one.
+// (section 12), every gait checked from rest, as `capsubot optimize --json`: one problem, the
+// fastest motion from rest (reach, section 13), or the main job without one.
 
 #include "capsubot/optimize.hpp"
 
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "json/optimize_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -33,6 +35,11 @@ struct SearchArgs {
   int global_evaluations, hops;
   std::optional<int> starts;
   double rho_max, max_time;
+  // The check from rest of every gait and the reach search.
+  std::string from_rest_starts, reach_starts;
+  int reach_evaluations, reach_local_evaluations;
+  double reach_seconds;
+  int threads;
 };
 
 // The gait asked for: the force bound, stability, time limit and local polish.
@@ -65,6 +72,21 @@ FourierOptions FourierFor(const SearchArgs& a) {
   return fo;
 }
 
+// The reach search (docs/model.md section 13): its grid and budgets, the full check from rest,
+// alpha fixed if given (NaN: free).
+ReachOptions ReachFor(const SearchArgs& a, double alpha) {
+  ReachOptions r;
+  r.force_bound = a.bound.value_or(kNaN);
+  r.alpha = alpha;
+  ParseStarts("reach_starts", a.reach_starts, r.search);
+  r.search.attractor.threads = a.threads;
+  r.check = FromRestCheck(a.from_rest_starts, a.threads);
+  r.global_evaluations = a.reach_evaluations;
+  r.local_evaluations = a.reach_local_evaluations;
+  r.max_seconds = a.reach_seconds;
+  return r;
+}
+
 PhaseOptions PhaseFor(const SearchArgs& a, double rho_max) {
   PhaseOptions po;
   po.rho_max = rho_max;
@@ -72,84 +94,43 @@ PhaseOptions PhaseFor(const SearchArgs& a, double rho_max) {
   return po;
 }
 
-py::list BindingNames(const OptimizeResult& r) {
-  py::list names;
-  for (Margin m : r.binding) names.append(MarginName(m));
-  return names;
-}
-
-// The object of one optimisation result: the optimum's orbit as solve shows it, with the
-// optimiser's status in place of the orbit's.
-py::dict ResultDict(const OptimizeResult& r, const char* problem) {
-  const Forcing& f = r.solution.orbit.forcing;
-  py::dict d = SolutionDict(r.solution);
-  d["problem"] = problem;
-  d["status"] = OptimizeStatusName(r.status);
-  d["message"] = r.message;
-  d["active_constraints"] = r.active_constraints;
-  d["binding"] = BindingNames(r);
-  d["evaluations"] = r.evaluations;
-  d["algorithm"] = r.algorithm;
-  if (!std::isnan(r.spectral_radius)) {
-    d["spectral_radius"] = Number(r.spectral_radius);
-    d["stable"] = r.spectral_radius < 1.0;
-  }
-  if (!f.harmonic()) {
-    py::dict coefficients;
-    coefficients["c"] = Number(f.mean());
-    coefficients["cos"] = d["cos"];
-    coefficients["sin"] = d["sin"];
-    d["coefficients"] = coefficients;
-  }
-  return d;
-}
-
-// The model and the requirements every result of a run shares (rho_max None: none).
-void AddRequirements(py::dict& d, const Params& p, double rho_max) {
-  d["T0"] = Number(p.T0);
-  d["e"] = Number(p.e);
-  d["margin"] = Number(p.margin);
-  d["margin_stroke"] = Number(p.margin_stroke);
-  d["stick_margin"] = Number(p.stick_margin);
-  d["rho_max"] = Number(rho_max);
-}
-
 // The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
-// (P2 with the margins) and the exact optima without margins (valid; stable).
+// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, and the
+// exact optima without margins (valid; stable).
 py::dict MainJob(const Params& p, const SearchArgs& a) {
   Params exact = p;
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
+  const ReachOptions reach_options = ReachFor(a, kNaN);
+  reach_options.Validate();
   OptimizeResult paper, robust, fastest, stable;
+  ReachResult reach;
   {
     py::gil_scoped_release release;
     paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, PhaseFor(a, kInf));
     robust = OptimizeForcing(p, DesignOptions(a, a.rho_max));
+    reach = OptimizeReach(p, robust, reach_options);
     fastest = OptimizeForcing(exact, DesignOptions(a, kInf));
     stable = OptimizeForcing(exact, DesignOptions(a, 1.0));
   }
-  py::dict d;
-  AddRequirements(d, p, a.rho_max);
-  d["force_bound"] = Number(a.bound.value_or(p.T0));
-  const auto add = [&d](const char* key, const OptimizeResult& r, const char* problem,
-                        const char* note) {
-    py::dict result = ResultDict(r, problem);
-    result["note"] = note;
-    d[key] = result;
-  };
-  add("paper", paper, "phase",
-      "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no "
-      "margins)");
-  add("robust", robust, "forcing",
-      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= "
-      "rho_max");
-  add("fastest", fastest, "forcing",
-      "P2 without margins or stability requirement: grazes the walls");
-  add("fastest_stable", stable, "forcing", "P2 without margins, spectral radius <= 1");
-  return d;
+  return py::dict(ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.rho_max,
+                                             a.bound.value_or(p.T0))));
+}
+// The reach problem: the fastest motion from rest, seeded with the robust gait.
+py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
+  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
+  options.Validate();
+  ReachResult reach;
+  {
+    py::gil_scoped_release release;
+    const OptimizeResult robust = OptimizeForcing(p, DesignOptions(a, a.rho_max));
+    reach = OptimizeReach(p, robust, options);
+  }
+  return py::dict(ToPython(json::ReachProblemJson(reach, p, a.rho_max)));
 }
 
 py::dict Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
                  const Params& p, const SearchArgs& a) {
+  const FromRestOptions check = FromRestCheck(a.from_rest_starts, a.threads);
   OptimizeResult r;
   if (problem == "phase") {
     if (!A || !c) {
@@ -166,18 +147,17 @@ py::dict Problem(const std::string& problem, std::optional<double> A, std::optio
     py::gil_scoped_release release;
     r = OptimizeFourier(p, FourierFor(a));
   }
-  py::dict d = ResultDict(r, problem.c_str());
-  AddRequirements(d, p, a.rho_max);
-  if (problem == "fourier") {
-    d["baseline_I"] = Number(r.baseline_I);
-    d["gain"] = Number(r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN);
+  GaitFromRest from_rest;
+  {
+    py::gil_scoped_release release;
+    from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   }
-  return d;
+  return py::dict(ToPython(json::ProblemJson(r, problem.c_str(), from_rest, p, a.rho_max)));
 }
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
 void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                  const SearchArgs& a) {
+                  std::optional<double> alpha, const SearchArgs& a) {
   const auto reject = [&problem](const char* name, const char* runs) {
     throw std::invalid_argument(fmt::format(
         "{} conflicts with {}: expected {} only with {}", name,
@@ -185,8 +165,13 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   };
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
-  if (problem == "phase" && a.bound) reject("bound", "the main job, 'forcing' or 'fourier'");
-  if (problem == "phase" && a.starts) reject("starts", "the main job, 'forcing' or 'fourier'");
+  if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
+  if (problem == "phase" && a.bound) {
+    reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
+  }
+  if (problem == "phase" && a.starts) {
+    reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
+  }
 }
 
 py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
@@ -194,12 +179,16 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   double stick_margin, std::optional<double> bound, std::optional<double> rho_max,
                   bool stable, double max_time, int harmonics, const std::string& global_algorithm,
                   const std::string& local_algorithm, int global_evaluations, int hops,
-                  std::optional<int> starts) {
+                  std::optional<int> starts, std::optional<double> alpha,
+                  const std::string& from_rest_starts, const std::string& reach_starts,
+                  int reach_evaluations, int reach_local_evaluations, double reach_seconds,
+                  int threads) {
   const std::string name = problem.value_or("");
-  if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier") {
+  if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
+      name != "reach") {
     throw std::invalid_argument(fmt::format(
-        "problem = '{}' is invalid: expected 'phase', 'forcing', 'fourier' or None (the main "
-        "job)",
+        "problem = '{}' is invalid: expected 'phase', 'forcing', 'fourier', 'reach' or None "
+        "(the main job)",
         name));
   }
   if (stable && rho_max) {
@@ -219,24 +208,35 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                         hops,
                         starts,
                         stable ? 1.0 : rho_max.value_or(kDefaultRhoMax),
-                        max_time};
-  RejectUnused(name, A, c, args);
+                        max_time,
+                        from_rest_starts,
+                        reach_starts,
+                        reach_evaluations,
+                        reach_local_evaluations,
+                        reach_seconds,
+                        threads};
+  RejectUnused(name, A, c, alpha, args);
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
-  return name.empty() ? MainJob(params, args) : Problem(name, A, c, params, args);
+  if (name.empty()) return MainJob(params, args);
+  return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
 }
 
 constexpr const char* kOptimizeDoc =
     "The fastest one-impact gait (docs/model.md section 7) with the margins of a robust gait "
-    "(section 12): the object `capsubot optimize [--problem <problem>] --json` prints for the "
-    "same arguments (same defaults).\n\n"
+    "(section 12), every gait checked from rest, or the fastest motion from rest (section 13): "
+    "the object `capsubot optimize [--problem <problem>] --json` prints for the same arguments "
+    "(same defaults), without its provenance.\n\n"
     "Arguments (keyword only, named as the options of `capsubot optimize`):\n"
     "    problem 'phase' (P1: the best impact phase phi0 for the force shape A, c), 'forcing'\n"
     "            (P2: the best A, c, phi0 with A + c <= bound), 'fourier' (P3: the best\n"
-    "            K-harmonic force with max |F| <= bound) or None: the main job (P1 at\n"
-    "            c = A = T0/2 without margins, the fastest robust gait, and the exact optima\n"
+    "            K-harmonic force with max |F| <= bound), 'reach' (the fastest motion from rest:\n"
+    "            A, c, alpha with A + c <= bound, simulated, seeded with the robust P2 gait) or\n"
+    "            None: the main job (P1 at c = A = T0/2 without margins, the fastest robust\n"
+    "            gait checked from rest, the fastest motion from rest, and the exact optima\n"
     "            without margins, valid and stable)\n"
-    "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n";
+    "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n"
+    "    alpha   reach: a fixed mass ratio 0 < alpha < 1 (None: alpha is optimised too)\n";
 
 constexpr const char* kOptimizeOptionsDoc =
     "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
@@ -251,27 +251,41 @@ constexpr const char* kOptimizeOptionsDoc =
     "    local_algorithm  the local polish: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ\n"
     "    global_evaluations  budget of an NLopt global algorithm, >= 10\n"
     "    hops    P2: basin-hopping restarts after the starts, >= 0\n"
-    "    starts  local polishes of the multistart, >= 1; None: 10 (forcing), 20 (fourier)\n\n"
+    "    starts  local polishes of the multistart, >= 1; None: 10 (forcing), 20 (fourier)\n"
+    "    reach_starts  grid 'NXxNPSI' of starts from rest inside the reach search (main job,\n"
+    "            reach; the winner is re-checked on from_rest_starts)\n"
+    "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the reach\n"
+    "            search's global stage (DIRECT-L, >= 1) and local polish (Sbplx, >= 0)\n"
+    "    reach_seconds  wall-clock limit of the reach search [s] (the re-checks come on top);\n"
+    "            when it stops the search the result depends on the machine's speed\n"
     "Returns a dict. For a problem: the keys of solve for the optimum (A, c, phi0, phi1, "
     "alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations; cos, sin "
     "and coefficients for fourier), problem, status ('ok', 'no_valid_orbit', "
     "'max_evaluations', 'max_time', ...), message, active_constraints, binding (the margins "
     "the optimum touches), evaluations, algorithm, spectral_radius and stable (when the orbit "
-    "exists), T0, e, margin, margin_stroke, stick_margin, rho_max (None: infinity); for "
-    "fourier also baseline_I (the P2 optimum's I) and gain. With status 'no_valid_orbit' the "
-    "orbit is the point nearest to validity. For the main job: T0, e, the margins, rho_max, "
-    "force_bound and the results paper, robust, fastest, fastest_stable (each with a "
-    "note).\n\n"
+    "exists), T0, e, margin, margin_stroke, stick_margin, rho_max (None: infinity), from_rest "
+    "(the optimum checked from rest: the dict of attractors() plus reached and summary; None "
+    "without an orbit); for fourier also baseline_I (the P2 optimum's I) and gain. With status "
+    "'no_valid_orbit' the orbit is the point nearest to validity. For reach: A, c, phi0, "
+    "alpha, mean_velocity (over the starts from rest), status, message, attractors, summary, "
+    "spread, seed_won, robust_to_settings, evaluations, rejected_evaluations, search_seconds "
+    "(wall-clock), algorithm, seed and the requirements (docs/reach.md). For the main job: T0, "
+    "e, the margins, rho_max, force_bound and the results paper, robust (with from_rest), "
+    "reach, fastest, fastest_stable (each but reach with a note).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL (other Python threads go on).\n\n";
+
+// The command line's defaults of the reach options.
+constexpr const char* kDefaultReachStarts = "4x4";
 
 }  // namespace
 
 void BindOptimize(py::module_& m) {
   const std::string doc = std::string(kOptimizeDoc) + kModelArgsDoc + kMarginArgsDoc +
                           "            (margin_stroke and stick_margin default to 0.02 here)\n" +
-                          kOptimizeOptionsDoc + kUnits;
+                          kFromRestArgsDoc + kOptimizeOptionsDoc + kUnits;
   const ForcingDesignOptions p2;
+  const ReachOptions reach;
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
         py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
@@ -282,7 +296,13 @@ void BindOptimize(py::module_& m) {
         py::arg("global_algorithm") = p2.global_algorithm,
         py::arg("local_algorithm") = p2.local_algorithm,
         py::arg("global_evaluations") = p2.global_evaluations, py::arg("hops") = p2.hops,
-        py::arg("starts") = py::none());
+        py::arg("starts") = py::none(), py::arg("alpha") = py::none(),
+        py::arg("from_rest_starts") = kDefaultFromRestStarts,
+        py::arg("reach_starts") = kDefaultReachStarts,
+        py::arg("reach_evaluations") = reach.global_evaluations,
+        py::arg("reach_local_evaluations") = reach.local_evaluations,
+        py::arg("reach_seconds") = reach.max_seconds,
+        py::arg("threads") = AttractorOptions{}.threads);
 }
 
 }  // namespace capsubot::python

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
+#include "json/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -27,14 +27,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
     py::gil_scoped_release release;
     found = FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations);
   }
-  py::list all;
-  for (const Solution& s : found) {
-    py::dict d = SolutionDict(s);
-    AddEnergy(d, OrbitEnergy(s.orbit));
-    AddStability(d, ComputeStability(s.orbit));
-    d["complete"] = complete;
-    all.append(d);
-  }
+  py::list all(ToPython(json::RobotOrbitsJson(found, complete)));
   if (!complete) {
     // Said as a warning, as the command line says it on stderr.
     if (PyErr_WarnEx(PyExc_RuntimeWarning,
@@ -50,7 +43,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
 constexpr const char* kOrbitsDoc =
     "Every one-impact orbit of a given robot (mass ratio alpha fixed, docs/model.md section 8): "
     "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, each with its validity and "
-    "stability: the array `capsubot orbits --json` prints.\n\n"
+    "stability: the list `orbits` of `capsubot orbits --json`.\n\n"
     "Arguments (keyword only, named as the options of `capsubot orbits`):\n"
     "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
 

@@ -13,45 +13,13 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "json/periodic_json.hpp"
 
 namespace capsubot::python {
 namespace {
 
 // The CLI's default transient with a start from rest (a given state starts near the motion).
 constexpr int kFromRestTransient = 200;
-
-py::dict PeriodicDict(const PeriodicMotion& m) {
-  py::dict d;
-  d["status"] = ShootingStatusName(m.status);
-  d["period"] = m.period;
-  d["impacts_right"] = m.impacts_right;
-  d["impacts_left"] = m.impacts_left;
-  d["mean_velocity"] = Number(m.mean_velocity);
-  py::dict state;
-  state["x"] = Number(m.state.x);
-  state["u"] = Number(m.state.u);
-  state["v"] = Number(m.state.v);
-  state["psi"] = Number(m.state.psi);
-  d["state"] = state;
-  d["mode"] = SimModeName(m.mode);
-  d["dimension"] = m.dimension;
-  py::list multipliers;
-  for (const auto& l : m.multipliers) {
-    py::list pair;
-    pair.append(Number(l.real()));
-    pair.append(Number(l.imag()));
-    multipliers.append(pair);
-  }
-  d["multipliers"] = multipliers;
-  d["spectral_radius"] = Number(m.spectral_radius);
-  d["stable"] = m.stable;
-  d["distance_to_plus_one"] = Number(m.distance_to_plus_one);
-  d["distance_to_minus_one"] = Number(m.distance_to_minus_one);
-  d["distance_to_unit_circle"] = Number(m.distance_to_unit_circle);
-  d["residual"] = Number(m.residual);
-  d["iterations"] = m.iterations;
-  return d;
-}
 
 // The start: a state (x0, u0, v0 at phase psi) or from rest (from_rest = (x0, psi)).
 PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
@@ -102,7 +70,7 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
     m = period ? ShootPeriodicMotion(forcing, params, alpha, start, *period, so)
                : FindPeriodicMotion(forcing, params, alpha, start, so);
   }
-  return PeriodicDict(m);
+  return py::dict(ToPython(json::PeriodicJson(m)));
 }
 
 constexpr const char* kPeriodicDoc =

@@ -15,6 +15,7 @@
 #include "bindings.hpp"
 #include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
+#include "json/simulation_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -99,20 +100,6 @@ py::dict EventTable(const TableObserver& o) {
   return d;
 }
 
-// The figures of a span of the run (the record, or the transient) as keys of `d`.
-void AddTally(py::dict& d, const SimTally& t) {
-  d["displacement"] = Number(t.displacement);
-  d["v_mean"] = Number(t.v_mean);
-  d["impacts_right"] = t.impacts_right;
-  d["impacts_left"] = t.impacts_left;
-  d["stops"] = t.stops;
-  d["breakaways"] = t.breakaways;
-  d["sticks"] = t.sticks;
-  d["releases"] = t.releases;
-  d["events"] = t.events;
-  AddEnergy(d, t.energy);
-}
-
 py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                   double T0, double e, std::optional<double> alpha, std::optional<double> x0,
@@ -176,25 +163,7 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
     r = capsubot::Simulate(forcing, params, sim, events || trajectory ? &observer : nullptr);
   }
   if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
-  const SimState& f = r.final_state;
-  py::dict d;
-  d["status"] = SimStatusName(r.status);
-  d["message"] = r.message;
-  d["alpha"] = Number(sim.alpha);
-  d["phi"] = Number(f.phi);
-  d["x"] = Number(f.x);
-  d["u"] = Number(f.u);
-  d["v"] = Number(f.v);
-  d["y"] = Number(f.y);
-  d["mode"] = SimModeName(f.mode);
-  AddTally(d, r);
-  if (sim.transient > 0.0) {
-    py::dict t;
-    t["periods"] = Number(sim.transient);
-    AddTally(t, r.transient);
-    d["transient"] = t;
-  }
-  if (orbit) d["orbit"] = SolutionDict(*orbit);
+  py::dict d(ToPython(json::SimulationJson(r, sim, orbit ? &*orbit : nullptr)));
   if (events) d["event_table"] = EventTable(observer);
   if (trajectory) d["trajectory"] = StateDict(observer.samples, "phi");
   return d;

@@ -9,7 +9,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/orbit_energy.hpp"
+#include "capsubot/gait_from_rest.hpp"
+#include "json/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -24,8 +25,11 @@ constexpr const char* kPhaseDoc =
     "    phi0    motor phase at the impact [rad]: F(phi) = A sin(phi + phi0) + c with phi = 0\n"
     "            at the impact; required with A, default 0 with sin/cos\n";
 
+constexpr const char* kStabilityArgDoc =
+    "    stability  also the stability of the orbit (docs/model.md section 8) and its check\n"
+    "            from rest (section 12)\n";
+
 constexpr const char* kSolveReturnsDoc =
-    "    stability  also the stability of the orbit (docs/model.md section 8)\n\n"
     "Returns a dict: A, c, phi0 (and cos, sin for a Fourier force, A is then None), T0, e, "
     "status ('ok', 'non_positive_mean_force', 'no_mass_ratio'), phi1 (stop phase, rad), alpha "
     "(mass ratio m2/(m1+m2) that closes the orbit), u (impact velocity, omega L), v_plus "
@@ -36,9 +40,11 @@ constexpr const char* kSolveReturnsDoc =
     "motor_work_positive, friction_loss, impact_loss: per period, in (m1+m2) omega^2 L^2, "
     "docs/model.md section 11); None where a quantity does not exist. With stability: multipliers "
     "(list of {'re', 'im'}: eigenvalues of the impact "
-    "map's Jacobian), spectral_radius and stable (spectral_radius < 1).\n\n"
+    "map's Jacobian), spectral_radius and stable (spectral_radius < 1), and from_rest: the "
+    "orbit checked from rest on from_rest_starts (the dict of attractors() plus reached, the "
+    "starts that end on the orbit, and summary; None without an orbit).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule).\n\n";
+    "rule). The check from rest runs without the GIL.\n\n";
 
 constexpr const char* kTrajectoryDoc =
     "The state along one period of the one-impact orbit, as `capsubot solve --trajectory`: "
@@ -57,15 +63,18 @@ constexpr const char* kTrajectoryReturnsDoc =
 py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
                std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                double T0, double e, double margin, double margin_stroke, double stick_margin,
-               bool stability) {
+               bool stability, const std::string& from_rest_starts, int threads) {
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
+  const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   const Solution s = capsubot::Solve(forcing, params);
-  py::dict d = SolutionDict(s);
-  AddEnergy(d, OrbitEnergy(s.orbit));
-  if (stability) AddStability(d, ComputeStability(s.orbit));
-  return d;
+  GaitFromRest from_rest;
+  if (stability) {
+    py::gil_scoped_release release;
+    from_rest = CheckGaitFromRest(s.orbit, params, check);
+  }
+  return py::dict(ToPython(json::SolveJson(s, stability, from_rest)));
 }
 
 py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi0,
@@ -108,12 +117,15 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
 
 void BindSolve(py::module_& m) {
   const std::string solve_doc = std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc +
-                                kModelArgsDoc + kMarginArgsDoc + kSolveReturnsDoc + kUnits;
+                                kModelArgsDoc + kMarginArgsDoc + kStabilityArgDoc +
+                                kFromRestArgsDoc + "\n" + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false);
+        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false,
+        py::arg("from_rest_starts") = kDefaultFromRestStarts,
+        py::arg("threads") = AttractorOptions{}.threads);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
                                      kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
   m.def("trajectory", &Trajectory, trajectory_doc.c_str(), py::kw_only(), py::arg("A") = py::none(),

@@ -21,6 +21,8 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "capsubot/stability.hpp"
+#include "capsubot/validity.hpp"
 
 namespace capsubot::python {
 namespace {

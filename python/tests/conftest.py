@@ -27,20 +27,21 @@ def run_cli(*args):
 
 
 def cli_json(*args):
-    """The object `capsubot ARGS --json` prints (it must exit 0)."""
+    """The object `capsubot ARGS --json` prints (it must exit 0), without its "provenance": the
+    module's dicts do not carry one (the program records its command line there)."""
     status, out, err = run_cli(*args, "--json")
     assert status == 0, err
-    return json.loads(out)
+    obj = json.loads(out)
+    provenance = obj.pop("provenance")
+    assert provenance["command"] == args[0] and provenance["program"] == "capsubot"
+    return obj
 
 
-def without_from_rest(obj):
-    """`obj` without the simulator's checks from rest that the command line adds to its gaits
-    (the keys "from_rest" at any depth, the main job's "reach" and the words saying so in a
-    "note"): the module's solve and
-    optimize return the analytic gait only; capsubot.attractors gives the check from rest."""
+def without_timing(obj):
+    """`obj` without the keys "search_seconds" at any depth: the reach search's wall-clock time,
+    the one figure that differs between two runs."""
     if isinstance(obj, dict):
-        return {k: (v.removesuffix("; checked from rest") if k == "note" else without_from_rest(v))
-                for k, v in obj.items() if k not in ("from_rest", "reach")}
+        return {k: without_timing(v) for k, v in obj.items() if k != "search_seconds"}
     if isinstance(obj, list):
-        return [without_from_rest(v) for v in obj]
+        return [without_timing(v) for v in obj]
     return obj

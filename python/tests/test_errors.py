@@ -97,8 +97,8 @@ def test_simulate_messages():
 def test_optimize_messages():
     opt = capsubot.optimize
     assert message(opt, problem="speed") == (
-        "problem = 'speed' is invalid: expected 'phase', 'forcing', 'fourier' or None (the main "
-        "job)")
+        "problem = 'speed' is invalid: expected 'phase', 'forcing', 'fourier', 'reach' or None "
+        "(the main job)")
     assert message(opt, problem="phase", A=0.2) == (
         "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)")
     assert message(opt, problem="forcing", bound=math.nan) == (
@@ -119,7 +119,14 @@ def test_optimize_messages():
         "A conflicts with problem 'forcing': expected A only with problem 'phase'")
     assert message(opt, problem="phase", A=0.2, c=0.03, starts=3) == (
         "starts conflicts with problem 'phase': expected starts only with the main job, "
-        "'forcing' or 'fourier'")
+        "'forcing', 'fourier' or 'reach'")
+    assert message(opt, problem="forcing", alpha=0.3) == (
+        "alpha conflicts with problem 'forcing': expected alpha only with problem 'reach'")
+    assert message(opt, problem="phase", A=0.2, c=0.03, from_rest_starts="8by8") == (
+        "from_rest_starts = '8by8' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')")
+    assert message(opt, problem="reach", reach_starts="0x4").startswith("n_x = 0 is invalid")
+    assert message(opt, problem="reach", reach_evaluations=0).startswith(
+        "global_evaluations = 0 is invalid")
     assert message(opt, problem="phase", A=0.2, c=0.03, stick_margin=1.0).startswith(
         "stick margin s = 1 is invalid")
     assert message(opt, problem="forcing", local_algorithm="LN_NOPE") == (

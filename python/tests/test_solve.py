@@ -8,11 +8,7 @@ import numpy as np
 import pytest
 
 import capsubot
-from conftest import cli_json, run_cli, without_from_rest
-
-
-def cli_gait_json(*args):
-    return without_from_rest(cli_json(*args))
+from conftest import cli_json, run_cli
 
 
 PAPER = dict(A=0.5, c=0.5, phi0=-2.944899971002)  # the paper's example (T0 = 1, e = 1)
@@ -68,13 +64,28 @@ def test_paper_example_stop_phase_is_the_closed_form_root():
 @pytest.mark.parametrize("stability", [False, True])
 def test_dict_is_the_command_lines_json(case, stability):
     # Same library call, same keys: the dict equals the parsed --json exactly (JSON numbers
-    # round-trip), None where the JSON has null.
-    expected = cli_gait_json("solve", *cli_args(case), *(["--stability"] if stability else []))
+    # round-trip), None where the JSON has null; with stability also the check from rest.
+    expected = cli_json("solve", *cli_args(case), *(["--stability"] if stability else []))
     d = capsubot.solve(**case, stability=stability)
     assert d == expected
     assert sorted(d["energy"]) == ["friction_loss", "impact_loss", "motor_work",
                                    "motor_work_positive"]
     assert {"stroke", "clearance"} <= set(d)
+
+
+def test_from_rest_equals_the_command_line():
+    # A non-default grid and thread count: the check from rest runs on 3 x 2 starts; the
+    # result does not depend on the threads.
+    d = capsubot.solve(**VALID, stability=True, from_rest_starts="3x2", threads=1)
+    assert d == cli_json("solve", *cli_args(VALID), "--stability", "--from-rest-starts", "3x2")
+    fr = d["from_rest"]
+    assert fr["starts"] == 6 and sum(a["starts"] for a in fr["attractors"]) == 6
+    # The starts that end on the orbit are those of the attractor that is the orbit.
+    assert fr["reached"] == sum(a["starts"] for a in fr["attractors"] if a["one_impact_orbit"])
+    assert fr["summary"].startswith(f"reached from rest in {fr['reached']} of 6 starts")
+    # Without an orbit there is nothing to check: None, as null in the JSON.
+    assert capsubot.solve(A=0.5, c=-0.1, phi0=0.0, stability=True)["from_rest"] is None
+    assert "from_rest" not in capsubot.solve(**VALID)
 
 
 def test_margin_is_checked_as_clearance():
