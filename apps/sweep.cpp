@@ -20,6 +20,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "ranks.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -188,7 +189,12 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
                  static_cast<double>(p.points_resumed));
     };
   }
-  const SweepSummary summary = RunSweep(s, progress);
+  Ranks ranks;
+  if (ranks.worker()) {
+    s.Validate();
+    return ranks.Serve(SweepBlocks(s), s.threads);
+  }
+  const SweepSummary summary = RunSweep(s, progress, ranks.backend());
   if (tty) {
     fmt::print(stderr,
                "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",
