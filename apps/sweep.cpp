@@ -189,11 +189,8 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
                  static_cast<double>(p.points_resumed));
     };
   }
-  Ranks ranks;
-  if (ranks.worker()) {
-    s.Validate();
-    return ranks.Serve(SweepBlocks(s), s.threads);
-  }
+  Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
+  if (ranks.worker()) return ranks.Serve(SweepBlocks(s), s.threads);  // rank 0 validates
   const SweepSummary summary = RunSweep(s, progress, ranks.backend());
   if (tty) {
     fmt::print(stderr,
