@@ -12,6 +12,7 @@
 #include "capsubot/io.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
+#include "ranks.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -115,11 +116,16 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   AttractorOptions ao;
   ao.motion = opt.robot.motion;
   ao.threads = opt.threads;
+  Ranks ranks;  // under mpirun: rank 0 runs the command, the others compute blocks of starts
+  if (ranks.worker()) {
+    return ranks.Serve(MotionBlocks(forcing, opt.robot.params, opt.robot.alpha, starts, ao),
+                       ao.threads);
+  }
   {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
   const Attractors a = ClassifyStarts(forcing, opt.robot.params, opt.robot.alpha, starts, ao,
-                                      TerminalProgress("starts"));
+                                      TerminalProgress("starts"), ranks.backend());
   AtomicFile file(opt.output, "-o");
   auto& out = file.stream();
   out << (x0_u0 ? "x0,u0" : "x0,psi")

@@ -23,6 +23,7 @@
 #include "from_rest_report.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "ranks.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -316,7 +317,9 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
                  static_cast<double>(p.points_resumed));
     };
   }
-  const SweepSummary summary = RunSweep(s, progress);
+  Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
+  if (ranks.worker()) return ranks.Serve(SweepBlocks(s), s.threads);  // rank 0 validates
+  const SweepSummary summary = RunSweep(s, progress, ranks.backend());
   if (tty) {
     fmt::print(stderr,
                "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",

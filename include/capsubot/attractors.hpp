@@ -18,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "capsubot/blocks.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/orbit.hpp"
 #include "capsubot/params.hpp"
@@ -145,11 +146,20 @@ struct Attractors {
   std::int64_t event_limit_starts = 0;  ///< starts that ended in kEventLimit
 };
 
-/// The long-run motion of every start, grouped into attractors. Throws std::invalid_argument
-/// for bad inputs (naming the field).
+/// The long-run motion of every start, grouped into attractors; the motions are computed in
+/// blocks of starts by `backend` (this process's threads by default). Throws
+/// std::invalid_argument for bad inputs (naming the field).
 Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
                           const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          const StartsProgress& progress = {});
+                          const StartsProgress& progress = {},
+                          const BlockBackend& backend = LocalBlocks());
+
+/// The computers of ClassifyStarts' blocks (blocks.hpp): unit i is starts[i], its bytes the
+/// bytes of its Motion (processes of one machine type exchange them). The arguments must
+/// outlive the computers. A distributed backend's workers compute with these.
+BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::vector<PhaseState>& starts,
+                                 const AttractorOptions& options);
 
 /// Most starts of a grid from rest (n_x * n_psi): a 2048 x 2048 map, about 0.5 GB of results.
 inline constexpr std::int64_t kMaxRestStarts = 4194304;

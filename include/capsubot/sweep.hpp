@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/blocks.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/grid.hpp"
 #include "capsubot/io.hpp"
@@ -157,10 +158,15 @@ class SweepResumableError : public WriteError {
 /// Number of grid points this run computes: the grid's, or its shard's.
 std::int64_t ShardPointCount(const SweepOptions& options);
 /// The grid point (row-major index) of this run's i-th point, i < ShardPointCount(options).
-/// The unit of work is a block of consecutive i: a distributed backend (threads here, a
-/// master handing blocks to workers elsewhere) claims blocks and one writer writes them in
-/// order.
 std::int64_t ShardPoint(const SweepOptions& options, std::int64_t i);
+
+/// The computers of the sweep's blocks (blocks.hpp): unit i is this run's i-th point
+/// (ShardPoint), its bytes its CSV rows, the count the rows. `options` must outlive them.
+/// A distributed backend's workers compute with these what RunSweep's writer asks for.
+BlockComputeFactory SweepBlocks(const SweepOptions& options);
+/// Points per block for `points` points on `threads` threads (over all processes):
+/// options.block_points, or automatic (cheap points in larger blocks).
+std::int64_t SweepBlockPoints(const SweepOptions& options, std::int64_t points, int threads);
 
 /// The CSV header's column names for these options.
 std::vector<std::string> SweepColumns(const SweepOptions& options);
@@ -171,6 +177,8 @@ std::vector<std::string> SweepColumns(const SweepOptions& options);
 /// SweepResumableError for a write error part-way. On any exception `<output>` is untouched;
 /// the partial file and checkpoint are kept only when a resume can continue (a write error,
 /// an exception of `progress`) and removed otherwise (a point that cannot be computed).
-SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress = {});
+/// The blocks of rows are computed by `backend` (this process's threads by default).
+SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress = {},
+                      const BlockBackend& backend = LocalBlocks());
 
 }  // namespace capsubot

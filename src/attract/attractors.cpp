@@ -7,8 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
@@ -18,6 +21,9 @@ namespace capsubot {
 namespace {
 
 constexpr int kMaxThreads = 1024;
+// Starts per block of work: a start costs about a millisecond; small blocks balance the threads
+// and the ranks of a distributed run.
+constexpr std::int64_t kStartsPerBlock = 16;
 
 bool SameClass(const Motion& a, const Motion& b, double velocity_tolerance) {
   if (a.status != b.status) return false;
@@ -88,9 +94,28 @@ std::int64_t CountReached(const Attractors& attractors, const Forcing& forcing, 
                        [&](const Motion& m) { return MatchesOrbit(m, forcing, orbit, tolerance); });
 }
 
+BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::vector<PhaseState>& starts,
+                                 const AttractorOptions& options) {
+  static_assert(std::is_trivially_copyable<Motion>::value, "a Motion's bytes are its value");
+  return [&forcing, &params, alpha, &starts, &options]() -> BlockCompute {
+    auto recorder = std::make_shared<detail::Recorder>();
+    return [&forcing, &params, alpha, &starts, &options, recorder](
+               std::int64_t begin, std::int64_t end, std::string& out) {
+      for (std::int64_t i = begin; i < end; ++i) {
+        const Motion m = detail::ClassifyMotion(
+            forcing, params, alpha, options.motion,
+            {starts[static_cast<std::size_t>(i)], SimMode::kRest}, *recorder);
+        out.append(reinterpret_cast<const char*>(&m), sizeof m);
+      }
+      return end - begin;
+    };
+  };
+}
+
 Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
                           const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          const StartsProgress& progress) {
+                          const StartsProgress& progress, const BlockBackend& backend) {
   params.Validate();
   options.Validate();
   for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
@@ -98,18 +123,21 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
   const auto n = static_cast<std::int64_t>(starts.size());
   out.starts = n;
   out.motions.resize(starts.size());
-  const int workers = detail::WorkerCount(options.threads, n);
-  std::vector<detail::Recorder> recorders(static_cast<std::size_t>(workers));
-  detail::ParallelFor(
-      n, workers,
-      [&](std::int64_t i, int w) {
-        const auto k = static_cast<std::size_t>(i);
-        out.motions[k] = detail::ClassifyMotion(forcing, params, alpha, options.motion,
-                                                {starts[k], SimMode::kRest},
-                                                recorders[static_cast<std::size_t>(w)]);
-      },
-      [&](std::int64_t done) {
-        if (progress) progress(done, n);
+  BlockPlan plan;
+  plan.end = n;
+  plan.threads = detail::WorkerCount(options.threads, n);
+  plan.block = BalancedBlock(n, backend.Threads(plan.threads), kStartsPerBlock);
+  backend.Run(
+      plan, MotionBlocks(forcing, params, alpha, starts, options),
+      [&](std::int64_t begin, std::int64_t end, const std::string& bytes, std::int64_t) {
+        if (bytes.size() != static_cast<std::size_t>(end - begin) * sizeof(Motion)) {
+          throw std::runtime_error(fmt::format(
+              "the motions of starts {} to {} came back with {} bytes: expected {}", begin, end - 1,
+              bytes.size(), static_cast<std::size_t>(end - begin) * sizeof(Motion)));
+        }
+        std::memcpy(static_cast<void*>(&out.motions[static_cast<std::size_t>(begin)]), bytes.data(),
+                    bytes.size());
+        if (progress) progress(end, n);
       });
 
   // Group in the order of the starts (deterministic), then sort by size.

@@ -5,10 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <exception>
 #include <limits>
-#include <mutex>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -20,8 +18,7 @@ namespace capsubot {
 namespace {
 
 constexpr int kMaxThreads = 1024;
-constexpr int kBlocksInFlightPerThread = 4;  // bounds memory: blocks computed ahead of the writer
-constexpr int kSolveBlockPoints = 2048;      // ~3 ms of Solve calls: cheap to hand over
+constexpr int kSolveBlockPoints = 2048;  // ~3 ms of Solve calls: cheap to hand over
 constexpr int kRobotBlockPoints = 32;
 constexpr int kPhaseBlockPoints = 2;
 
@@ -61,15 +58,6 @@ const ModeRule& RuleOf(SweepOptimize mode) {
     if (r.mode == mode) return r;
   }
   return kModes[0];  // unreachable: every enumerator has a row
-}
-
-// Points per block: big enough to amortise the hand-over, small enough to balance threads.
-std::int64_t BlockPoints(const SweepOptions& o, std::int64_t todo, int threads) {
-  if (o.block_points > 0) return o.block_points;
-  const std::int64_t base =
-      o.grid.Has(SweepParameter::kalpha) ? kRobotBlockPoints : RuleOf(o.optimize).block_points;
-  const std::int64_t balanced = todo / (8 * static_cast<std::int64_t>(threads));
-  return std::max<std::int64_t>(1, std::min(base, balanced));
 }
 
 int ThreadCount(const SweepOptions& o) {
@@ -281,7 +269,32 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
   return columns;
 }
 
-SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress) {
+BlockComputeFactory SweepBlocks(const SweepOptions& options) {
+  return [&options]() -> BlockCompute {
+    auto writer = std::make_shared<detail::SweepRowWriter>(options);
+    auto rows = std::make_shared<detail::RowBuffer>();
+    return [&options, writer, rows](std::int64_t begin, std::int64_t end, std::string& out) {
+      rows->clear();
+      std::int64_t count = 0;
+      for (std::int64_t i = begin; i < end; ++i) {
+        count += writer->AppendPoint(ShardPoint(options, i), *rows);
+      }
+      out.append(rows->data(), rows->size());
+      return count;
+    };
+  };
+}
+
+std::int64_t SweepBlockPoints(const SweepOptions& options, std::int64_t points, int threads) {
+  if (options.block_points > 0) return options.block_points;
+  const std::int64_t most = options.grid.Has(SweepParameter::kalpha)
+                                ? kRobotBlockPoints
+                                : RuleOf(options.optimize).block_points;
+  return BalancedBlock(points, threads, most);
+}
+
+SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress,
+                      const BlockBackend& backend) {
   using Clock = std::chrono::steady_clock;
   options.Validate();
   const auto start = Clock::now();
@@ -295,124 +308,43 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   SweepSummary summary;
   summary.threads = threads;
   summary.points_resumed = file.points_done();
-  const std::int64_t first = file.points_done();
-  const std::int64_t todo = total - first;
-  const std::int64_t block = BlockPoints(options, todo, threads);
-  const std::int64_t blocks = (todo + block - 1) / block;
-  const auto block_begin = [&](std::int64_t k) { return first + k * block; };
-  const auto block_end = [&](std::int64_t k) { return std::min(total, first + (k + 1) * block); };
+  BlockPlan plan;
+  plan.first = file.points_done();
+  plan.end = total;
+  plan.threads = threads;
+  plan.block = SweepBlockPoints(options, total - plan.first, backend.Threads(threads));
 
-  // Slot k % window holds block k, computed by a worker, written in order by this thread.
-  struct Slot {
-    detail::RowBuffer rows;
-    std::int64_t count = 0;
-    bool ready = false;
-  };
-  const std::int64_t window = static_cast<std::int64_t>(kBlocksInFlightPerThread) * threads;
-  std::vector<Slot> slots(
-      static_cast<std::size_t>(std::min(window, std::max<std::int64_t>(blocks, 1))));
-  const auto slot_of = [&](std::int64_t k) -> Slot& {
-    return slots[static_cast<std::size_t>(k % static_cast<std::int64_t>(slots.size()))];
-  };
-  std::mutex mutex;
-  std::condition_variable work_cv, ready_cv;
-  std::int64_t next_claim = 0, next_write = 0;
-  bool abort = false;
-  std::exception_ptr error;
   // Where the first error came from: a point (deterministic: a resume would fail the same
-  // way) or the file (a write error: a resume can continue once it is mended).
-  enum class Origin { kOther, kPoint, kFile } origin = Origin::kOther;
-  const auto fail = [&](std::exception_ptr e, Origin from) {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!error) {
-      error = e;
-      origin = from;
-    }
-    abort = true;
-    work_cv.notify_all();
-    ready_cv.notify_all();
-  };
-
-  const auto worker = [&] {
+  // way), the file (a write error: a resume can continue once it is mended) or `progress`.
+  enum class Origin { kPoint, kFile, kProgress } origin = Origin::kPoint;
+  const BlockSink sink = [&](std::int64_t begin, std::int64_t end, const std::string& bytes,
+                             std::int64_t rows) {
     try {
-      detail::SweepRowWriter writer(options);
-      const auto in_flight = static_cast<std::int64_t>(slots.size());
-      for (;;) {
-        std::int64_t k = 0;
-        {
-          std::unique_lock<std::mutex> lock(mutex);
-          work_cv.wait(lock, [&] {
-            return abort || next_claim >= blocks || next_claim < next_write + in_flight;
-          });
-          if (abort || next_claim >= blocks) return;
-          k = next_claim++;
-        }
-        Slot& slot = slot_of(k);
-        slot.rows.clear();
-        std::int64_t rows = 0;
-        for (std::int64_t p = block_begin(k); p < block_end(k); ++p) {
-          rows += writer.AppendPoint(ShardPoint(options, p), slot.rows);
-        }
-        {
-          std::lock_guard<std::mutex> lock(mutex);
-          slot.count = rows;
-          slot.ready = true;
-        }
-        ready_cv.notify_all();
-      }
-    } catch (...) {
-      fail(std::current_exception(), Origin::kPoint);
+      file.Append(bytes.data(), bytes.size(), end - begin);
+    } catch (const IoError&) {
+      origin = Origin::kFile;
+      throw;
+    }
+    summary.rows += rows;
+    if (progress) {
+      origin = Origin::kProgress;
+      SweepProgress p;
+      p.points_done = end;
+      p.points_total = total;
+      p.points_resumed = plan.first;
+      p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      progress(p);
+      origin = Origin::kPoint;
     }
   };
-
-  std::vector<std::thread> pool;
-  const int workers =
-      static_cast<int>(std::min<std::int64_t>(threads, std::max<std::int64_t>(blocks, 1)));
-  pool.reserve(static_cast<std::size_t>(workers));
-  for (int i = 0; i < workers; ++i) pool.emplace_back(worker);
-
   try {
-    for (std::int64_t k = 0; k < blocks; ++k) {
-      Slot& slot = slot_of(k);
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        ready_cv.wait(lock, [&] { return abort || slot.ready; });
-        if (abort) break;
-      }
-      try {
-        file.Append(slot.rows.data(), slot.rows.size(), block_end(k) - block_begin(k));
-      } catch (const IoError&) {
-        fail(std::current_exception(), Origin::kFile);
-        break;
-      }
-      summary.rows += slot.count;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        slot.ready = false;
-        next_write = k + 1;
-      }
-      work_cv.notify_all();
-      if (progress) {
-        SweepProgress p;
-        p.points_done = block_end(k);
-        p.points_total = total;
-        p.points_resumed = first;
-        p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        progress(p);
-      }
-    }
+    backend.Run(plan, SweepBlocks(options), sink);
+  } catch (const IoError& e) {
+    if (origin != Origin::kFile || file.direct()) throw;
+    throw SweepResumableError(KeptMessage(e, options.output));
   } catch (...) {
-    fail(std::current_exception(), Origin::kOther);
-  }
-  for (std::thread& t : pool) t.join();
-  if (error) {
     if (origin == Origin::kPoint) file.Discard();  // no resume could get past that point
-    if (origin != Origin::kFile || file.direct()) std::rethrow_exception(error);
-    try {
-      std::rethrow_exception(error);
-    } catch (const IoError& e) {
-      throw SweepResumableError(KeptMessage(e, options.output));
-    }
+    throw;
   }
   try {
     file.Commit();
