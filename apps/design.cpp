@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -33,7 +34,7 @@ namespace {
 struct DesignCliOptions {
   DesignConfigOptions config;
   FromRestCliOptions from_rest;  // the from-rest search (part b): starts, budgets, time limit
-  bool no_from_rest = false;     // --no-from-rest: the one-impact gait only
+  bool part_b = false;           // --from-rest: also part (b), the fastest motion from rest
   bool json = false;
   std::string sweep;
   std::string output;
@@ -338,15 +339,11 @@ SweepSpec ParseSweep(const std::string& text) {
   } else {
     throw bad();
   }
-  try {
-    std::size_t used = 0;
-    s.lo = std::stod(parts[1], &used);
-    if (used != parts[1].size()) throw bad();
-    s.hi = std::stod(parts[2], &used);
-    if (used != parts[2].size()) throw bad();
-    s.n = std::stoi(parts[3], &used);
-    if (used != parts[3].size()) throw bad();
-  } catch (const std::logic_error&) {  // stod/stoi: no number or out of range
+  try {  // the numbers of every option (ParseNumber, ParseInteger); the rule names the spec
+    s.lo = ParseNumber(parts[1], "MIN");
+    s.hi = ParseNumber(parts[2], "MAX");
+    s.n = static_cast<int>(ParseInteger(parts[3], "N", 0, std::numeric_limits<int>::max()));
+  } catch (const std::invalid_argument&) {
     throw bad();
   }
   return s;
@@ -386,9 +383,9 @@ int Run(const DesignCliOptions& opt) {
     WriteSweep(rows, opt.output);
     return 0;
   }
-  const bool with_from_rest = !opt.no_from_rest;
+  const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
-  if (with_from_rest) from_rest_options.Validate();  // bad options fail before any work
+  from_rest_options.Validate();  // bad options fail before any work
   ShowStage("design: 1/2 the fastest robust one-impact gait");
   const DesignResult r = Design(input, progress);
   DesignFromRestResult from_rest;
@@ -399,8 +396,7 @@ int Run(const DesignCliOptions& opt) {
     j["status"] = DesignStatusName(r.status);
     j["message"] = r.message;
     j["one_impact"] = GaitJson(r.one_impact);
-    j["from_rest_best"] =
-        with_from_rest ? FromRestBestJson(input, from_rest) : nlohmann::json(nullptr);
+    if (with_from_rest) j["from_rest_best"] = FromRestBestJson(input, from_rest);
     j["robots"] = r.robots;
     j["complete"] = r.complete;
     fmt::print("{}\n", j.dump());
@@ -429,14 +425,15 @@ Command AddDesignCommand(CLI::App& app) {
   opt->from_rest.reach_local_evaluations = defaults.local_evaluations;
   opt->from_rest.reach_seconds = defaults.max_seconds;
   AddFromRestOptions(*cmd, opt->from_rest, true);
-  cmd->add_flag("--no-from-rest", opt->no_from_rest,
-                "skip the fastest motion from rest (part b, simulated: a few seconds); report "
-                "the one-impact gait only");
+  cmd->add_flag("--from-rest", opt->part_b,
+                "also find the fastest motion reached from rest in each direction (part b, "
+                "simulated: a few seconds; sized by the options below)");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: status, message, one_impact {m2_kg, frequency_hz, "
                 "speed_mm_s, displacement_mm, impact_velocity_m_s, energy_mj, power_mw, "
                 "power_positive_mw, friction_loss_mj, impact_loss_mj, cot, efficiency, "
-                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, from_rest_best {forward, "
+                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, from_rest_best (with "
+                "--from-rest) {forward, "
                 "backward: the same keys, forward_fraction, backward_fraction, attractors}, "
                 "robots, complete");
   cmd->add_option("--sweep", opt->sweep,
