@@ -1,27 +1,32 @@
 // capsubot design: a real robot in SI units; the inner mass (and motor frequency) of its
-// fastest robust one-impact gait, with speed, power and cost of transport (library:
-// capsubot/design.hpp).
+// fastest robust one-impact gait, with speed, power and cost of transport, and of the fastest
+// motion reached from rest in each direction (library: capsubot/design.hpp,
+// capsubot/design_from_rest.hpp).
 
 #include "capsubot/design.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "attract_options.hpp"
+#include "capsubot/design_from_rest.hpp"
+#include "capsubot/gait_from_rest.hpp"
 #include "capsubot/io.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
+#include "from_rest_report.hpp"
 #include "json/design_json.hpp"
+#include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 
@@ -30,6 +35,8 @@ namespace {
 
 struct DesignCliOptions {
   DesignConfigOptions config;
+  FromRestCliOptions from_rest;  // the from-rest search (part b): starts, budgets, time limit
+  bool part_b = false;           // --from-rest: also part (b), the fastest motion from rest
   bool json = false;
   std::string sweep;
   std::string output;
@@ -37,7 +44,8 @@ struct DesignCliOptions {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The gait's numbers for the table and the CSV are those of its JSON (src/json/).
+// The numbers of gaits and motions from rest for the table and the CSV are those of their JSON
+// (src/json/).
 using json::Dimensionless;
 using json::UserUnits;
 
@@ -127,21 +135,91 @@ std::string Table(const DesignInput& in, const DesignResult& r) {
   return t;
 }
 
-// A one-line count of the robots evaluated on stderr, redrawn at most 10 times a second.
-DesignProgress ProgressLine() {
-  if (::isatty(STDERR_FILENO) == 0) return {};
-  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
-  return [last](std::int64_t done, std::int64_t total) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - *last < std::chrono::milliseconds(100)) return;
-    *last = now;
-    fmt::print(stderr, "\rdesign: {} robots evaluated (at most {}) ", done, total);
-    std::fflush(stderr);
-  };
+// Attractors listed one by one in the text (the rest are summed).
+constexpr std::size_t kListedAttractors = 4;
+
+// One direction of the from-rest design in lines of the table.
+std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_period) {
+  std::string t = fmt::format("  {:<17} {}: {}\n", DirectionName(b.direction),
+                              FromRestStatusName(b.status), b.message);
+  if (!b.ok()) return t;
+  const DesignModel& m = b.model;
+  t += fmt::format("    inner mass      m2 = {}   (alpha = {:.6g}), f = {}\n", Num(b.m2_kg, " kg"),
+                   m.alpha, Num(b.frequency_hz, " Hz"));
+  t += fmt::format("    mean speed      {} over the starts, {} per period\n",
+                   Num(b.speed_mm_s, " mm/s"), Num(b.displacement_mm, " mm"));
+  t += fmt::format("    impact velocity {}\n",
+                   std::isnan(b.impact_velocity_m_s)
+                       ? std::string("- (the most common motion has several impacts per period)")
+                       : Num(b.impact_velocity_m_s, " m/s"));
+  t +=
+      fmt::format("    motor           {} per period, {} net, {} positive part\n",
+                  Num(b.energy_mj, " mJ"), Num(b.power_mw, " mW"), Num(b.power_positive_mw, " mW"));
+  t += fmt::format("    losses          friction {}, impacts {} per period\n",
+                   Num(b.friction_loss_mj, " mJ"), Num(b.impact_loss_mj, " mJ"));
+  t += fmt::format("    cost            COT = {}, efficiency mu/COT = {}\n", Num(b.cot, ""),
+                   Num(b.efficiency, ""));
+  t +=
+      fmt::format("    dimensionless   T0 = {}, A = {}, c = {}, alpha = {}\n", Num(m.params.T0, ""),
+                  Num(m.forcing.harmonic() ? m.forcing.amplitude() : kNaN, ""),
+                  Num(m.forcing.mean(), ""), Num(m.alpha, ""));
+  const auto& list = b.attractors.attractors;
+  for (std::size_t k = 0; k < list.size() && k < kListedAttractors; ++k) {
+    const Attractor& a = list[k];
+    t += fmt::format("    attractor {:<5} {:.0f} % of the starts: {}, {}\n", k + 1,
+                     100.0 * a.fraction, MotionWords(a.motion, max_period),
+                     Num(1e3 * m.omega * in.L * a.motion.mean_velocity, " mm/s"));
+  }
+  if (list.size() > kListedAttractors) {
+    double rest = 0.0;
+    for (std::size_t k = kListedAttractors; k < list.size(); ++k) rest += list[k].fraction;
+    t += fmt::format("    and             {} more attractors, {:.0f} % of the starts\n",
+                     list.size() - kListedAttractors, 100.0 * rest);
+  }
+  return t;
 }
 
-void EndProgress(const DesignProgress& progress) {
-  if (progress) fmt::print(stderr, "\r\033[K");
+// Part (b) of the table: the fastest motion from rest in each direction.
+std::string FromRestTable(const DesignInput& in, const FromRestCliOptions& cli,
+                          const DesignFromRestResult& r) {
+  const int max_period = cli.Check().attractor.motion.max_period;
+  std::string t = fmt::format(
+      "robot design: the fastest motion reached from rest, each direction ({} starts from rest)\n",
+      cli.starts);
+  t += FromRestLines(in, r.forward, max_period);
+  t += FromRestLines(in, r.backward, max_period);
+  t += fmt::format(
+      "  search            {} from-rest evaluations ({} rejected: event_limit), "
+      "{:.1f} s{}\n",
+      r.evaluations, r.rejected_evaluations, r.search_seconds,
+      r.max_time ? "; the time limit (--reach-seconds) stopped a search stage" : "");
+  return t;
+}
+
+// The from-rest design's settings from the options shared with `optimize --problem reach`.
+DesignFromRestOptions FromRestDesignOptions(const FromRestCliOptions& cli) {
+  DesignFromRestOptions o;
+  std::tie(o.search.n_x, o.search.n_psi) = ParseGridSize("--reach-starts", cli.reach_starts);
+  o.search.attractor.threads = cli.threads;
+  const FromRestOptions grid = cli.Check();  // the grid and threads; the record stays long
+  o.check.n_x = grid.n_x;
+  o.check.n_psi = grid.n_psi;
+  o.check.attractor.threads = grid.attractor.threads;
+  o.global_evaluations = cli.reach_evaluations;
+  o.local_evaluations = cli.reach_local_evaluations;
+  o.max_seconds = cli.reach_seconds;
+  return o;
+}
+
+// The stage of the from-rest design on the progress line (a terminal only).
+DesignFromRestProgress StageProgress() {
+  if (!StderrIsTerminal()) return {};
+  return [](const std::string& stage, std::int64_t done, std::int64_t total) {
+    ShowStage(
+        fmt::format("design: 2/2 the fastest motion from rest, {} ({} of at most {} "
+                    "from-rest evaluations)",
+                    stage, done, total));
+  };
 }
 
 // "m2:0.01:2:50" -> variable, lo, hi, n.
@@ -173,15 +251,11 @@ SweepSpec ParseSweep(const std::string& text) {
   } else {
     throw bad();
   }
-  try {
-    std::size_t used = 0;
-    s.lo = std::stod(parts[1], &used);
-    if (used != parts[1].size()) throw bad();
-    s.hi = std::stod(parts[2], &used);
-    if (used != parts[2].size()) throw bad();
-    s.n = std::stoi(parts[3], &used);
-    if (used != parts[3].size()) throw bad();
-  } catch (const std::logic_error&) {  // stod/stoi: no number or out of range
+  try {  // the numbers of every option (ParseNumber, ParseInteger); the rule names the spec
+    s.lo = ParseNumber(parts[1], "MIN");
+    s.hi = ParseNumber(parts[2], "MAX");
+    s.n = static_cast<int>(ParseInteger(parts[3], "N", 0, std::numeric_limits<int>::max()));
+  } catch (const std::invalid_argument&) {
     throw bad();
   }
   return s;
@@ -209,7 +283,7 @@ void WriteSweep(const std::vector<Gait>& rows, const std::string& path) {
 
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   const DesignInput input = BuildDesignInput(opt.config);
-  const DesignProgress progress = ProgressLine();
+  const DesignProgress progress = TerminalProgress("robots");
   if (!opt.sweep.empty()) {
     const SweepSpec spec = ParseSweep(opt.sweep);
     if (opt.output.empty()) {
@@ -217,18 +291,26 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
     }
     const std::vector<Gait> rows =
         DesignSweep(input, spec.variable, spec.lo, spec.hi, spec.n, progress);
-    EndProgress(progress);
+    ShowStage("");
     WriteSweep(rows, opt.output);
     return 0;
   }
+  const bool with_from_rest = opt.part_b;
+  const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
+  from_rest_options.Validate();  // bad options fail before any work
+  ShowStage("design: 1/2 the fastest robust one-impact gait");
   const DesignResult r = Design(input, progress);
-  EndProgress(progress);
+  DesignFromRestResult from_rest;
+  if (with_from_rest) from_rest = DesignFromRest(input, from_rest_options, StageProgress());
+  ShowStage("");
   if (opt.json) {
     nlohmann::json j = json::DesignJson(r);
+    if (with_from_rest) j["from_rest_best"] = json::FromRestBestJson(input, from_rest);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", Table(input, r));
+    if (with_from_rest) fmt::print("{}", FromRestTable(input, opt.from_rest, from_rest));
   }
   return 0;
 }
@@ -241,15 +323,26 @@ Command AddDesignCommand(CLI::App& app) {
       "design",
       "Design a real robot in SI units: for the shell (m1, gap L, friction mu) and the motor "
       "force, find the inner mass m2 (and the frequency, with --frequency-range) of the fastest "
-      "robust one-impact gait, with its speed, motor power, losses and cost of transport "
-      "(docs/design.md). Exit status 0 whenever the search ran, gait found or not.");
+      "robust one-impact gait, with its speed, motor power, losses and cost of transport, and "
+      "of the fastest motion reached from rest in each direction (docs/design.md). Exit status 0 "
+      "whenever the search ran, gait found or not.");
   AddDesignConfigOptions(*cmd, opt->config);
+  // The from-rest options of `optimize --problem reach`, with the design's smaller budgets.
+  const DesignFromRestOptions defaults;
+  opt->from_rest.reach_evaluations = defaults.global_evaluations;
+  opt->from_rest.reach_local_evaluations = defaults.local_evaluations;
+  opt->from_rest.reach_seconds = defaults.max_seconds;
+  AddFromRestOptions(*cmd, opt->from_rest, true);
+  cmd->add_flag("--from-rest", opt->part_b,
+                "also find the fastest motion reached from rest in each direction (part b, "
+                "simulated: a few seconds; sized by the options below)");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: status, message, one_impact {m2_kg, frequency_hz, "
                 "speed_mm_s, displacement_mm, impact_velocity_m_s, energy_mj, power_mw, "
                 "power_positive_mw, friction_loss_mj, impact_loss_mj, cot, efficiency, "
-                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, robots, complete, "
-                "provenance");
+                "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, from_rest_best (with "
+                "--from-rest) {forward, backward: the same keys, forward_fraction, "
+                "backward_fraction, attractors}, robots, complete, provenance");
   cmd->add_option("--sweep", opt->sweep,
                   "instead of one design, one row per value: m2:M2MIN:M2MAX:N (the gait of each "
                   "m2) or frequency:FMIN:FMAX:N (the best m2 at each frequency), N log-spaced "

@@ -6,9 +6,9 @@
 
 #include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -18,7 +18,8 @@
 namespace capsubot::app {
 namespace {
 
-enum class Kind { kNumber, kInteger, kList, kRange };
+// kBound: a number, or "inf" for no bound.
+enum class Kind { kNumber, kBound, kInteger, kList, kRange };
 
 // A parsed value; the field used depends on the setting's kind.
 struct Value {
@@ -90,7 +91,7 @@ const Setting kSettings[] = {
     {"stick-margin", Kind::kNumber,
      "stick margin s: |F| <= (1-s) T0 while the shell rests, 0 <= s < 1 (default 0.02)",
      [](DesignInput& in, const Value& v) { in.stick_margin = v.number; }},
-    {"rho-max", Kind::kNumber,
+    {"rho-max", Kind::kBound,
      "largest admissible multiplier modulus of the gait, > 0; inf: no stability requirement "
      "(default 0.9)",
      [](DesignInput& in, const Value& v) { in.rho_max = v.number; }},
@@ -121,18 +122,22 @@ const std::vector<std::pair<const char*, const char*>> kExclusive = {
       fmt::format("{} = {}{} is invalid: expected {}", who, text, where, rule));
 }
 
-// Whole-string number ("0.2", "1e-3", "inf", "nan"): no trailing text.
+// An element of a list or range: a number of capsubot::ParseNumber; false if it is not one.
 bool ToNumber(const std::string& text, double& out) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return false;
-  char* end = nullptr;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size();
+  try {
+    out = ParseNumber(text, "element");
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 const char* Rule(Kind kind) {
   switch (kind) {
     case Kind::kNumber:
       return "a number";
+    case Kind::kBound:
+      return "a number or inf";
     case Kind::kInteger:
       return "an integer";
     case Kind::kList:
@@ -159,20 +164,16 @@ Value FromText(const Setting& s, const std::string& who, const std::string& text
                const std::string& where = "") {
   Value v;
   switch (s.kind) {
+    case Kind::kBound:
+      v.number = text == "inf" ? HUGE_VAL : ParseNumber(text, who);
+      return v;
     case Kind::kNumber:
-      if (!ToNumber(text, v.number)) Bad(who, text, Rule(s.kind), where);
+      v.number = ParseNumber(text, who);
       return v;
-    case Kind::kInteger: {
-      char* end = nullptr;
-      errno = 0;
-      const long n = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || end != text.c_str() + text.size() || errno != 0 || n < INT32_MIN ||
-          n > INT32_MAX) {
-        Bad(who, text, Rule(s.kind), where);
-      }
-      v.number = static_cast<double>(n);
+    case Kind::kInteger:
+      v.number = static_cast<double>(ParseInteger(text, who, std::numeric_limits<int>::min(),
+                                                  std::numeric_limits<int>::max()));
       return v;
-    }
     case Kind::kList: {
       std::size_t start = 0;
       while (true) {
@@ -221,8 +222,8 @@ Value FromToml(const Setting& s, const std::string& where, const toml::node& nod
   if (s.kind == Kind::kRange && node.is_string())
     return FromText(s, who, **node.as_string(), where);
   Value v;
-  if (s.kind == Kind::kNumber || s.kind == Kind::kInteger) {
-    if (!(s.kind == Kind::kNumber ? node.is_number() : node.is_integer()))
+  if (s.kind == Kind::kNumber || s.kind == Kind::kBound || s.kind == Kind::kInteger) {
+    if (!(s.kind == Kind::kInteger ? node.is_integer() : node.is_number()))
       Bad(who, shown, rule, where);
     v.number = node.value<double>().value_or(std::nan(""));
     if (s.kind == Kind::kInteger && std::abs(v.number) > INT32_MAX) Bad(who, shown, rule, where);
@@ -289,6 +290,7 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
     const Setting& s = kSettings[i];
     o.options[i] = cmd.add_option(std::string("--") + s.name, o.values[i], s.help);
     o.options[i]->type_name(s.kind == Kind::kRange     ? "MIN:MAX"
+                            : s.kind == Kind::kBound   ? "NUMBER|inf"
                             : s.kind == Kind::kList    ? "X1,X2,..."
                             : s.kind == Kind::kInteger ? "INT"
                                                        : "NUMBER");

@@ -10,6 +10,7 @@
 #include "capsubot/orbit_energy.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/validity.hpp"
+#include "design/user_units.hpp"
 #include "model/enum_names.hpp"
 
 namespace capsubot {
@@ -19,25 +20,6 @@ namespace {
 // The searches locate the edge of a feasible set to 1e-9 in log(m2) or log(f); slacks vanish
 // there at least like the square root of the distance (a fold), so 1e-4 is well above them.
 constexpr double kBindingTol = 1e-4;
-
-// Fills the physical quantities of an ok gait (docs/model.md sections 9 and 11).
-void ToUserUnits(const DesignInput& in, Gait& gait) {
-  const Orbit& o = gait.solution.orbit;
-  const Energy& en = gait.energy;
-  const double w = gait.model.omega, L = in.L, M = in.m1 + gait.m2_kg;
-  const double energy_unit = M * w * w * L * L;  // (m1+m2) omega^2 L^2 [J]
-  gait.speed_mm_s = 1e3 * w * L * o.v_mean;
-  gait.displacement_mm = 1e3 * L * o.I;
-  gait.impact_velocity_m_s = w * L * o.u;
-  gait.energy_mj = 1e3 * energy_unit * en.motor_work;
-  gait.power_mw = gait.energy_mj * gait.frequency_hz;  // energy per period / period
-  gait.power_positive_mw = 1e3 * energy_unit * en.motor_work_positive * gait.frequency_hz;
-  gait.friction_loss_mj = 1e3 * energy_unit * en.friction_loss;
-  gait.impact_loss_mj = 1e3 * energy_unit * en.impact_loss;
-  // COT = W/((m1+m2) g L I) = mu W/(T0 I); its reciprocal times mu is friction / W.
-  gait.cot = in.mu * en.motor_work / (o.T0 * o.I);
-  gait.efficiency = in.mu / gait.cot;
-}
 
 // The robustness limits of docs/model.md section 12 whose slack at the gait is below
 // kBindingTol, in the order of design.hpp: the walls at the required clearance (validity's
@@ -95,7 +77,8 @@ Gait EvaluateGait(const DesignInput& input, double m2, double frequency) {
   }
   if (!gait.ok()) return gait;
   gait.energy = OrbitEnergy(gait.solution.orbit);
-  ToUserUnits(input, gait);
+  const Orbit& o = gait.solution.orbit;
+  detail::FillUserUnits(input, o.T0, m.omega, o.v_mean, o.I, o.u, gait.energy, gait);
   gait.binding = Binding(input, gait);
   return gait;
 }

@@ -1,23 +1,9 @@
 #include "json/design_json.hpp"
 
+#include "json/attractors_json.hpp"
 #include "json/solution_json.hpp"
 
 namespace capsubot::json {
-
-std::vector<std::pair<const char*, double>> UserUnits(const Gait& g) {
-  return {{"m2_kg", g.m2_kg},
-          {"frequency_hz", g.frequency_hz},
-          {"speed_mm_s", g.speed_mm_s},
-          {"displacement_mm", g.displacement_mm},
-          {"impact_velocity_m_s", g.impact_velocity_m_s},
-          {"energy_mj", g.energy_mj},
-          {"power_mw", g.power_mw},
-          {"power_positive_mw", g.power_positive_mw},
-          {"friction_loss_mj", g.friction_loss_mj},
-          {"impact_loss_mj", g.impact_loss_mj},
-          {"cot", g.cot},
-          {"efficiency", g.efficiency}};
-}
 
 std::vector<std::pair<const char*, double>> Dimensionless(const Gait& g) {
   const bool ok = g.ok();
@@ -66,6 +52,42 @@ nlohmann::json DesignJson(const DesignResult& r) {
   j["robots"] = r.robots;
   j["complete"] = r.complete;
   return j;
+}
+
+nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
+  const double nan = Gait::kNaN;
+  nlohmann::json out;
+  for (const FromRestBest* b : {&r.forward, &r.backward}) {
+    nlohmann::json j;
+    j["status"] = FromRestStatusName(b->status);
+    j["message"] = b->message;
+    for (const auto& [key, value] : UserUnits(*b)) j[key] = value;  // NaN is written as null
+    const DesignModel& m = b->model;
+    const bool ran = b->status != FromRestStatus::kNotRun;
+    nlohmann::json d;
+    d["T0"] = ran ? m.params.T0 : nan;
+    d["A"] = ran && m.forcing.harmonic() ? m.forcing.amplitude() : nan;
+    d["c"] = ran ? m.forcing.mean() : nan;
+    d["alpha"] = ran ? m.alpha : nan;
+    d["phi0"] = nan;  // no single impact phase: the starts cover every motor phase
+    d["mean_velocity"] = b->mean_velocity;
+    if (b->ok()) AddEnergyJson(d, b->energy);
+    j["dimensionless"] = d;
+    j["forward_fraction"] = b->forward_fraction;
+    j["backward_fraction"] = b->backward_fraction;
+    nlohmann::json a = AttractorsJson(b->attractors);
+    for (std::size_t k = 0; k < b->attractors.attractors.size(); ++k) {
+      a["attractors"][k]["speed_mm_s"] =
+          1e3 * m.omega * in.L * b->attractors.attractors[k].motion.mean_velocity;
+    }
+    j["attractors"] = a;
+    out[DirectionName(b->direction)] = j;
+  }
+  out["evaluations"] = r.evaluations;
+  out["rejected_evaluations"] = r.rejected_evaluations;
+  out["seconds"] = r.search_seconds;
+  out["max_time"] = r.max_time;
+  return out;
 }
 
 }  // namespace capsubot::json

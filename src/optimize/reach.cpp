@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "capsubot/optimize_reach.hpp"
+#include "optimize/nlopt_box.hpp"
 #include "optimize/nlopt_status.hpp"
 #include "optimize/optimize_common.hpp"
 
@@ -38,10 +39,7 @@ constexpr double kSamePoint = 1e-6;
 // Search points kept for the re-check, at most (the best by score).
 constexpr std::size_t kMaxCandidates = 64;
 
-struct Point {
-  std::vector<double> y;
-  double score = 0.0;
-};
+using Point = detail::BoxPoint;
 
 // The problem NLopt sees: the box, the robot at y, and the points seen so far.
 struct Context {
@@ -78,48 +76,10 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
   return score;
 }
 
-// One NLopt run on the box, maximising the score; never throws for NLopt's outcomes.
-OptimizeStatus RunStage(nlopt::algorithm algorithm, Context& ctx, const std::vector<double>& lower,
-                        const std::vector<double>& upper, std::vector<double> y0, int evaluations,
-                        double seconds, double rel_tol, std::string& message) {
-  const auto n = static_cast<unsigned>(lower.size());
-  try {
-    nlopt::opt opt(algorithm, n);
-    opt.set_lower_bounds(lower);
-    opt.set_upper_bounds(upper);
-    opt.set_max_objective(Objective, &ctx);
-    opt.set_maxeval(evaluations);
-    opt.set_maxtime(std::isinf(seconds) ? 0.0 : seconds);  // NLopt: 0 means no limit
-    opt.set_xtol_rel(rel_tol);
-    opt.set_ftol_rel(rel_tol);
-    std::vector<double> step(n);
-    for (unsigned i = 0; i < n; ++i) step[i] = kLocalStep * (upper[i] - lower[i]);
-    opt.set_initial_step(step);
-    for (unsigned i = 0; i < n; ++i) y0[i] = std::clamp(y0[i], lower[i], upper[i]);
-    double value = 0.0;
-    return detail::StatusFromNlopt(opt.optimize(y0, value));
-  } catch (...) {
-    return detail::StatusFromCurrentException(message);
-  }
-}
-
 // The best distinct feasible points seen, best first, at most `count`.
 std::vector<Point> BestPoints(std::vector<Point> seen, double penalty, int count) {
-  std::stable_sort(seen.begin(), seen.end(),
-                   [](const Point& a, const Point& b) { return a.score > b.score; });
-  std::vector<Point> best;
-  for (const Point& p : seen) {
-    if (static_cast<int>(best.size()) >= count || best.size() >= kMaxCandidates) break;
-    if (!(p.score > penalty)) break;
-    const bool known = std::any_of(best.begin(), best.end(), [&](const Point& q) {
-      for (std::size_t i = 0; i < p.y.size(); ++i) {
-        if (std::abs(p.y[i] - q.y[i]) > kSamePoint) return false;
-      }
-      return true;
-    });
-    if (!known) best.push_back(p);
-  }
-  return best;
+  return detail::BestDistinctPoints(std::move(seen), penalty,
+                                    std::min(count, static_cast<int>(kMaxCandidates)), kSamePoint);
 }
 
 // Mean velocity of a spread run, NaN if a start hit the work bound (counted in `spread`).
@@ -278,15 +238,17 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   std::string message;
   const nlopt::algorithm global = detail::AlgorithmFromName(
       options.global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
-  OptimizeStatus status = RunStage(global, ctx, lower, upper, y0, options.global_evaluations,
-                                   options.max_seconds, options.rel_tol, message);
+  OptimizeStatus status =
+      detail::MaximizeOnBox(global, Objective, &ctx, lower, upper, y0, options.global_evaluations,
+                            options.max_seconds, options.rel_tol, kLocalStep, message);
   const std::vector<Point> after_global = BestPoints(ctx.seen, ctx.penalty, 1);
   const double left = options.max_seconds - elapsed();
   if (options.local_evaluations > 0 && !after_global.empty() && left > 0.0) {
     const nlopt::algorithm local = detail::AlgorithmFromName(
         options.local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
-    const OptimizeStatus s = RunStage(local, ctx, lower, upper, after_global.front().y,
-                                      options.local_evaluations, left, options.rel_tol, message);
+    const OptimizeStatus s = detail::MaximizeOnBox(
+        local, Objective, &ctx, lower, upper, after_global.front().y, options.local_evaluations,
+        left, options.rel_tol, kLocalStep, message);
     if (s == OptimizeStatus::kMaxTime || status != OptimizeStatus::kMaxTime) status = s;
   }
   out.search_seconds = elapsed();

@@ -87,11 +87,61 @@ TEST(DesignCli, JsonHoldsEveryKeyInTheUsersUnits) {
   EXPECT_GE(g["cot"].get<double>(), 0.3);
 }
 
+// Part (b): the fastest motion from rest in each direction, with the keys of the one-impact
+// gait, the fractions of the starts and the attractors (the library test checks the numbers
+// against the simulator).
+TEST(DesignCli, JsonHoldsTheFastestMotionFromRestInEachDirection) {
+  const auto r = RunCli("design --config " + ExampleConfig() + " --from-rest --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out).at("from_rest_best");
+  int directions = 0;
+  for (const char* direction : {"forward", "backward"}) {
+    const auto& b = j.at(direction);
+    EXPECT_EQ(b["status"], "ok") << direction;
+    for (const char* key : {"m2_kg", "frequency_hz", "speed_mm_s", "displacement_mm", "energy_mj",
+                            "power_mw", "power_positive_mw", "friction_loss_mj", "impact_loss_mj",
+                            "cot", "efficiency", "forward_fraction", "backward_fraction"}) {
+      EXPECT_TRUE(b.at(key).is_number()) << direction << " " << key;
+    }
+    EXPECT_TRUE(b.contains("impact_velocity_m_s")) << direction;  // null: several impacts
+    for (const char* key : {"T0", "A", "c", "alpha"}) {
+      EXPECT_TRUE(b.at("dimensionless").at(key).is_number()) << direction << " " << key;
+    }
+    EXPECT_TRUE(b.at("dimensionless").at("phi0").is_null());  // the starts cover every phase
+    double fractions = 0.0;
+    for (const auto& a : b.at("attractors").at("attractors")) {
+      for (const char* key :
+           {"period", "impacts_right", "impacts_left", "mean_velocity", "speed_mm_s", "fraction"}) {
+        EXPECT_TRUE(a.contains(key)) << direction << " " << key;
+      }
+      fractions += a["fraction"].get<double>();
+    }
+    EXPECT_NEAR(fractions, 1.0, 1e-12) << direction;
+    ++directions;
+  }
+  EXPECT_EQ(directions, 2);
+  // The example's light inner body drives the shell backward, faster than its forward gait.
+  EXPECT_LT(j["backward"]["speed_mm_s"].get<double>(), -10.0);
+  EXPECT_LT(j["backward"]["m2_kg"].get<double>(), 0.03);
+  EXPECT_GT(j["forward"]["speed_mm_s"].get<double>(), 0.0);
+  EXPECT_GT(j["evaluations"].get<int>(), 0);
+}
+
+// Part (b) is asked for with --from-rest; without it the JSON is that of part (a) alone.
+TEST(DesignCli, WithoutFromRestTheJsonHasNoFromRestBestAndRhoMaxTakesInf) {
+  const auto r = RunCli("design --config " + ExampleConfig() + " --rho-max inf --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.contains("from_rest_best"));
+  EXPECT_EQ(j["one_impact"]["status"], "ok");
+}
+
 TEST(DesignCli, TableShowsTheGaitAndHowToCheckIt) {
-  const auto r = RunCli("design --config " + ExampleConfig());
+  const auto r = RunCli("design --config " + ExampleConfig() + " --from-rest");
   ASSERT_EQ(r.status, 0) << r.out;
   for (const char* text : {"inner mass", "mean speed", "mean motor power", "cost of transport",
-                           "binding", "capsubot solve"}) {
+                           "binding", "capsubot solve", "the fastest motion reached from rest",
+                           "forward", "backward", "attractor 1", "from-rest evaluations"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
   }
 }
@@ -157,12 +207,20 @@ std::vector<BadCase> BadCases() {
       {"mu", "--mu 0" + cfg, "friction coefficient mu = 0 is invalid: expected a finite mu > 0"},
       {"g", "--g -9.81" + cfg, "gravity g = -9.81 is invalid: expected a finite g > 0 [m/s^2]"},
       {"e", "--e 2" + cfg, "restitution e = 2 is invalid: expected 0 <= e <= 1"},
-      {"nan", "--m1 nan" + cfg, "shell mass m1 = nan is invalid"},
+      {"nan", "--m1 nan" + cfg, "--m1 = nan is invalid: expected a finite number"},
       {"amplitude", "--force-amplitude -0.5" + cfg,
        "motor force amplitude = -0.5 is invalid: expected a finite amplitude >= 0 [N]"},
       {"bias", "--force-bias -1" + cfg,
        "motor force bias = -1 is invalid: expected a finite bias >= 0 [N]"},
-      {"not_a_number", "--m1 0.2kg" + cfg, "--m1 = 0.2kg is invalid: expected a number"},
+      {"not_a_number", "--m1 0.2kg" + cfg,
+       "--m1 = 0.2kg is invalid: expected a decimal number such as 0.5, -2 or 1e-3"},
+      {"not_an_integer", "--scan-points 3.5" + cfg,
+       "--scan-points = 3.5 is invalid: expected an integer"},
+      {"range_element", "--m2-range 0.1:x" + cfg,
+       "--m2-range = 0.1:x is invalid: expected MIN:MAX with MIN < MAX"},
+      {"reach_starts", "--reach-starts 0x4" + cfg, "--reach-starts = 0x4 is invalid"},
+      {"reach_evaluations", "--reach-evaluations 0" + cfg,
+       "global_evaluations = 0 is invalid: expected 1 <= global_evaluations <= 100000"},
       {"frequency_range_inverted", "--frequency-range 30:20" + cfg,
        "--frequency-range = 30:20 is invalid: expected MIN:MAX with MIN < MAX"},
       {"frequency_range_empty", "--frequency-range 20:20" + cfg,
@@ -181,6 +239,8 @@ std::vector<BadCase> BadCases() {
       {"sweep_spec", "--sweep mass:1:2:3 -o x.csv" + cfg,
        "--sweep = mass:1:2:3 is invalid: expected m2:M2MIN:M2MAX:N [kg] or "
        "frequency:FMIN:FMAX:N [Hz]"},
+      {"sweep_number", "--sweep m2:0x1p-3:0.3:5 -o x.csv" + cfg,
+       "--sweep = m2:0x1p-3:0.3:5 is invalid: expected m2:M2MIN:M2MAX:N [kg]"},
       {"sweep_range", "--sweep m2:0.3:0.1:5 -o x.csv" + cfg,
        "sweep range m2 = 0.3:0.1 is invalid: expected finite 0 < MIN < MAX"},
       {"sweep_output", "--sweep m2:0.1:0.3:5" + cfg,
@@ -199,7 +259,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << c.name << ": " << r.out;
     ++checked;
   }
-  EXPECT_EQ(checked, 20);
+  EXPECT_EQ(checked, 25);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
@@ -236,12 +296,15 @@ TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
 
 TEST(DesignCli, AMotorThatSlidesTheShellIsReportedNotAnError) {
   const auto r = RunCli("design --config " + ExampleConfig() +
-                        " --force-amplitude 5 --m2-range 0.01:1 --json");
+                        " --force-amplitude 5 --m2-range 0.01:1 --from-rest --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["status"], "motor_slides_shell");
   EXPECT_EQ(j["one_impact"]["status"], "motor_slides_shell");
   EXPECT_TRUE(j["one_impact"]["speed_mm_s"].is_null());
+  // The search from rest still runs: the shell slides, the design says where it goes fastest.
+  EXPECT_TRUE(j["from_rest_best"]["forward"]["status"] == "ok" ||
+              j["from_rest_best"]["backward"]["status"] == "ok");
 }
 
 TEST(DesignCli, AFailedSweepLeavesNoFile) {

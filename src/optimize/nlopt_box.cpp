@@ -1,0 +1,54 @@
+#include "optimize/nlopt_box.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "optimize/nlopt_status.hpp"
+
+namespace capsubot::detail {
+
+OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, void* data,
+                             const std::vector<double>& lower, const std::vector<double>& upper,
+                             std::vector<double> y0, int evaluations, double seconds,
+                             double rel_tol, double step_fraction, std::string& message) {
+  const auto n = static_cast<unsigned>(lower.size());
+  try {
+    nlopt::opt opt(algorithm, n);
+    opt.set_lower_bounds(lower);
+    opt.set_upper_bounds(upper);
+    opt.set_max_objective(objective, data);
+    opt.set_maxeval(evaluations);
+    opt.set_maxtime(seconds);
+    opt.set_xtol_rel(rel_tol);
+    opt.set_ftol_rel(rel_tol);
+    std::vector<double> step(n);
+    for (unsigned i = 0; i < n; ++i) step[i] = step_fraction * (upper[i] - lower[i]);
+    opt.set_initial_step(step);
+    for (unsigned i = 0; i < n; ++i) y0[i] = std::clamp(y0[i], lower[i], upper[i]);
+    double value = 0.0;
+    return StatusFromNlopt(opt.optimize(y0, value));
+  } catch (...) {
+    return StatusFromCurrentException(message);
+  }
+}
+
+std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floor, int count,
+                                         double same) {
+  std::stable_sort(seen.begin(), seen.end(),
+                   [](const BoxPoint& a, const BoxPoint& b) { return a.score > b.score; });
+  std::vector<BoxPoint> best;
+  for (const BoxPoint& p : seen) {
+    if (static_cast<int>(best.size()) >= count) break;
+    if (!(p.score > floor)) break;
+    const bool known = std::any_of(best.begin(), best.end(), [&](const BoxPoint& q) {
+      for (std::size_t i = 0; i < p.y.size(); ++i) {
+        if (std::abs(p.y[i] - q.y[i]) > same) return false;
+      }
+      return true;
+    });
+    if (!known) best.push_back(p);
+  }
+  return best;
+}
+
+}  // namespace capsubot::detail
