@@ -74,6 +74,9 @@ FromRestOptions FromRestCheck(const std::string& starts, int threads);
 /// The default grid of the check from rest, as the command line's --from-rest-starts.
 inline constexpr const char* kDefaultFromRestStarts = "8x8";
 
+/// The default grid of starts inside a reach search, as the command line's --reach-starts.
+inline constexpr const char* kDefaultReachStarts = "4x4";
+
 /// The docstring lines of the from-rest check (from_rest_starts, threads).
 inline constexpr const char* kFromRestArgsDoc =
     "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"

@@ -2,6 +2,7 @@
 // one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
 
 #include "capsubot/design.hpp"
+#include "capsubot/design_from_rest.hpp"
 
 #include <pybind11/stl.h>
 
@@ -37,7 +38,9 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
                     std::optional<std::vector<double>> force_sin, std::optional<double> frequency,
                     std::optional<Range> frequency_range, std::optional<Range> m2_range,
                     double margin, double margin_stroke, double stick_margin, double rho_max,
-                    int scan_points) {
+                    int scan_points, bool from_rest, const std::string& from_rest_starts,
+                    const std::string& reach_starts, int reach_evaluations,
+                    int reach_local_evaluations, double reach_seconds, int threads) {
   RequireOne(force_amplitude.has_value(), force_sin.has_value(), "force_amplitude", "force_sin");
   if (force_cos && force_amplitude) {
     throw std::invalid_argument(
@@ -68,12 +71,27 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   in.rho_max = rho_max;
   in.scan_points = scan_points;
   in.Validate();
+  DesignFromRestOptions rest;
+  ParseStarts("reach_starts", reach_starts, rest.search);
+  rest.search.attractor.threads = threads;
+  const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
+  rest.check.n_x = check.n_x;  // the grid and threads; the record stays long
+  rest.check.n_psi = check.n_psi;
+  rest.check.attractor.threads = check.attractor.threads;
+  rest.global_evaluations = reach_evaluations;
+  rest.local_evaluations = reach_local_evaluations;
+  rest.max_seconds = reach_seconds;
+  rest.Validate();
   DesignResult r;
+  DesignFromRestResult best;
   {
     py::gil_scoped_release release;
     r = Design(in);
+    if (from_rest) best = DesignFromRest(in, rest);
   }
-  return py::dict(ToPython(json::DesignJson(r)));
+  nlohmann::json j = json::DesignJson(r);
+  if (from_rest) j["from_rest_best"] = json::FromRestBestJson(in, best);
+  return py::dict(ToPython(j));
 }
 
 constexpr const char* kDesignDoc =
@@ -97,12 +115,23 @@ constexpr const char* kDesignDoc =
     "    margin, margin_stroke, stick_margin  the robust gait's clearances and stick margin\n"
     "            (docs/model.md section 12)\n"
     "    rho_max  largest admissible multiplier modulus, > 0 (inf: no stability requirement)\n"
-    "    scan_points  log-spaced samples of each searched variable, >= 3\n\n"
+    "    scan_points  log-spaced samples of each searched variable, >= 3\n"
+    "    from_rest  also find the fastest motion reached from rest in each direction\n"
+    "            (key from_rest_best; simulated, a few seconds)\n"
+    "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
+    "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
+    "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
+    "            search and of the local polish, per direction\n"
+    "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
+    "    threads worker threads of the simulated starts (0: all cores); the result does not\n"
+    "            depend on it\n\n"
     "Returns a dict: status ('ok', 'motor_slides_shell', 'no_gait'), message, one_impact "
     "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
     "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
     "efficiency, dimensionless {T0, A, c, alpha, phi0, I, spectral_radius, x_min, x_max, "
-    "cos, sin (Fourier), energy}, orbits, binding}, robots, complete.\n\n"
+    "cos, sin (Fourier), energy}, orbits, binding}, robots, complete; with from_rest, "
+    "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
+    "attractors}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL.";
 
@@ -110,13 +139,20 @@ constexpr const char* kDesignDoc =
 
 void BindDesign(py::module_& m) {
   const DesignInput in;
+  const DesignFromRestOptions rest;
   m.def("design", &DesignDict, kDesignDoc, py::kw_only(), py::arg("m1"), py::arg("L"),
         py::arg("mu"), py::arg("g") = in.g, py::arg("e"), py::arg("force_amplitude") = py::none(),
         py::arg("force_bias"), py::arg("force_cos") = py::none(), py::arg("force_sin") = py::none(),
         py::arg("frequency") = py::none(), py::arg("frequency_range") = py::none(),
         py::arg("m2_range") = py::none(), py::arg("margin") = in.margin,
         py::arg("margin_stroke") = in.margin_stroke, py::arg("stick_margin") = in.stick_margin,
-        py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points);
+        py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points,
+        py::arg("from_rest") = false, py::arg("from_rest_starts") = kDefaultFromRestStarts,
+        py::arg("reach_starts") = kDefaultReachStarts,
+        py::arg("reach_evaluations") = rest.global_evaluations,
+        py::arg("reach_local_evaluations") = rest.local_evaluations,
+        py::arg("reach_seconds") = rest.max_seconds,
+        py::arg("threads") = AttractorOptions{}.threads);
 }
 
 }  // namespace capsubot::python

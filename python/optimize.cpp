@@ -275,8 +275,6 @@ constexpr const char* kOptimizeOptionsDoc =
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL (other Python threads go on).\n\n";
 
-// The command line's defaults of the reach options.
-constexpr const char* kDefaultReachStarts = "4x4";
 
 }  // namespace
 

@@ -38,3 +38,20 @@ def test_bad_input_names_the_parameter():
     with pytest.raises(ValueError) as err:
         capsubot.design(**ROBOT, frequency=20, frequency_range=(10, 30))
     assert str(err.value) == "frequency and frequency_range are exclusive: give one of them"
+
+
+def test_from_rest_equals_the_command_line():
+    # Small budgets so that the search ends on its evaluation budget, not on the clock (the
+    # result is then deterministic); only the search's wall-clock seconds differ.
+    budget = dict(from_rest_starts="3x3", reach_starts="2x2", reach_evaluations=6,
+                  reach_local_evaluations=2, threads=1)
+    found = capsubot.design(**ROBOT, frequency=20, from_rest=True, **budget)
+    expected = cli_json("design", *CLI_ROBOT, "--frequency", 20, "--from-rest",
+                        "--from-rest-starts", "3x3", "--reach-starts", "2x2",
+                        "--reach-evaluations", 6, "--reach-local-evaluations", 2,
+                        "--threads", 1)
+    for d in (found, expected):
+        del d["from_rest_best"]["seconds"]
+    assert found == expected
+    assert set(found["from_rest_best"]) >= {"forward", "backward", "evaluations"}
+    assert "from_rest_best" not in capsubot.design(**ROBOT, frequency=20)
