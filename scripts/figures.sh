@@ -13,6 +13,10 @@
 #   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
 #   p2_T0_e.csv, p2_T0_e_stable.csv, p2_T0_e.png: the P2 optimum at every (T0, e)
 #   reach_T0.csv, reach_T0.png: the fastest motion from rest at every T0 (sweep --optimize reach)
+#   loss_map.csv, loss_map_zoom.csv, loss_map.png: how the orbit loses stability over (phi0, A)
+#   p3_vs_p2_forcing.csv, p3_vs_p2_fourier{2,3}.csv, p3_vs_p2.png: P2 against P3 over T0
+#   three_axis_e_T0_phi0.csv, three_axis_e_T0_phi0.png: a 3-axis sweep (list, log, linear)
+#   fourier_a2_b2.csv, fourier_a2_b2.png: P1 over a grid of second-harmonic coefficients
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -82,6 +86,24 @@ T0_grid="T0=0.01:1:$n_T0:log" e_grid="e=0:1:11"
   -o "$out/p2_T0_e_stable.csv"
 say "reach per point: the fastest motion from rest at 7 values of T0 (about a minute of CPU)"
 "$cli" sweep --grid T0=0.05:1:7:log --optimize reach -o "$out/reach_T0.csv"
+
+# The other kinds of sweep (docs/sweep.md, "Figures"): a few seconds of CPU together.
+say "stability loss (stable, fold, flip, torus) over (phi0, A): all, and the torus corner"
+loss="--c 0.002 --T0 0.1 --e 1 --stability"
+"$cli" sweep --grid A=0.001:0.098:41:log --grid phi0=-pi:pi:181 $loss -o "$out/loss_map.csv"
+"$cli" sweep --grid A=0.086:0.098:25 --grid phi0=-2.6:-2.0:61 $loss -o "$out/loss_map_zoom.csv"
+say "P2 against P3 with 2 and 3 harmonics at 13 values of T0"
+"$cli" sweep --grid T0=0.01:1:13:log --optimize forcing -o "$out/p3_vs_p2_forcing.csv"
+for k in 2 3; do
+  "$cli" sweep --grid T0=0.01:1:13:log --optimize fourier --harmonics $k \
+    -o "$out/p3_vs_p2_fourier$k.csv"
+done
+say "a 3-axis sweep: a list of e, a log grid of T0, a linear grid of phi0"
+"$cli" sweep --grid e=0.5,0.75,1 --grid T0=0.07:1:21:log --grid phi0=-pi:pi:121 --A 0.05 \
+  --c 0.02 -o "$out/three_axis_e_T0_phi0.csv"
+say "P1 over a grid of second-harmonic coefficients (a2, b2)"
+"$cli" sweep --grid a2=-0.03:0.03:31 --grid b2=-0.03:0.03:31 --A 0.05 --c 0.02 --T0 0.1 \
+  --optimize phi0 --stability -o "$out/fourier_a2_b2.csv"
 
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
@@ -155,4 +177,15 @@ say "basins of two coexisting attractors (drawn by capsubot basins through gnupl
 gnuplot -e "term='$term'; out='$out/p2_T0_e.png'; valid_data='$out/p2_T0_e.csv';
   stable_data='$out/p2_T0_e_stable.csv'; n_T0=$n_T0" "$gp/p2_T0_e.gp"
 gnuplot -e "term='$term'; data='$out/reach_T0.csv'; out='$out/reach_T0.png'" "$gp/reach_T0.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; out='$out/loss_map.png'; data='$out/loss_map.csv';
+  zoom='$out/loss_map_zoom.csv'; c=0.002; T0=0.1; e=1; dphi=pi/180; A_lo=0.001; A_hi=0.098;
+  rA=$(awk 'BEGIN { print exp(log(98) / 40) }'); phi_lo=-2.6; phi_hi=-2.0; zphi=0.005;
+  zA_lo=0.086; zA_hi=0.098; zA=0.00025" "$gp/loss_map.gp"
+gnuplot -e "term='$term'; out='$out/p3_vs_p2.png'; p2='$out/p3_vs_p2_forcing.csv';
+  p3_2='$out/p3_vs_p2_fourier2.csv'; p3_3='$out/p3_vs_p2_fourier3.csv'" "$gp/p3_vs_p2.gp"
+gnuplot -e "term='$term'; out='$out/three_axis_e_T0_phi0.png'; data='$out/three_axis_e_T0_phi0.csv';
+  A=0.05; c=0.02; dphi=pi/120; rT=$(awk 'BEGIN { print exp(log(1 / 0.07) / 20) }'); T_lo=0.07;
+  T_hi=1; e1=0.5; e2=0.75; e3=1" "$gp/three_axis.gp"
+gnuplot -e "term='$term'; out='$out/fourier_a2_b2.png'; data='$out/fourier_a2_b2.csv';
+  A=0.05; c=0.02; T0=0.1; e=1; d=0.001" "$gp/fourier_a2_b2.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* loss_* p3_* three_* fourier_* | tr '\n' ' ')"
