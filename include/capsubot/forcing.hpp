@@ -86,6 +86,9 @@ class Forcing {
   int K_ = 0;
   std::array<double, kMaxHarmonics> a_{}, b_{};    // base series, motor phase s
   std::array<double, kMaxHarmonics> ra_{}, rb_{};  // F(phi) = c + sum ra cos k phi + rb sin k phi
+  // One harmonic (K = 1): F = c + R sin(phi + delta) and F' = R sin(phi + delta_dF), kept for
+  // the closed-form crossings of every level.
+  double R_ = 0.0, delta_ = 0.0, delta_dF_ = 0.0;
 };
 
 }  // namespace capsubot

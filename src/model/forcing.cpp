@@ -79,24 +79,50 @@ void Forcing::Rotate() {
     ra_[k - 1] = a_[k - 1] * ck + b_[k - 1] * sk;
     rb_[k - 1] = b_[k - 1] * ck - a_[k - 1] * sk;
   }
+  if (K_ == 1) {
+    // ra cos phi + rb sin phi = R sin(phi + atan2(ra, rb)); its derivative
+    // rb cos phi - ra sin phi = R sin(phi + atan2(rb, -ra)). The same numbers as TrigRoots'
+    // closed form computes from these coefficients.
+    R_ = std::hypot(ra_[0], rb_[0]);
+    delta_ = std::atan2(ra_[0], rb_[0]);
+    delta_dF_ = std::atan2(rb_[0], -ra_[0]);
+  }
 }
 
 double Forcing::amplitude() const { return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]); }
 
 namespace {
 
-// sum_{k=1..K} term(k, cos k phi, sin k phi), with cos k phi and sin k phi from one sincos by
-// the angle-addition recurrence.
-template <class Term>
-double SumHarmonics(int K, double phi, const Term& term) {
-  const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, sum = 0.0;
+// Calls visit(k, cos k phi, sin k phi) for k = 1..K, with cos k phi and sin k phi from one
+// sincos by the angle-addition recurrence. One harmonic (the hot path of the analytic solve)
+// takes the loop's first step alone: with k a constant 1 the callers' divisions by k fold
+// away, and the numbers are the loop's bit for bit.
+// cos tau and sin tau of the rounded period, as std::cos and std::sin return them (the force
+// is evaluated at phi = tau several times in every solve of the orbit).
+constexpr double kCosTau = 1.0, kSinTau = -0x1.1a62633145c07p-52;
+
+template <class Visit>
+void ForEachHarmonic(int K, double phi, const Visit& visit) {
+  const bool at_tau = phi == kTau;
+  const double c1 = at_tau ? kCosTau : std::cos(phi), s1 = at_tau ? kSinTau : std::sin(phi);
+  if (K == 1) {
+    visit(1, c1, s1);
+    return;
+  }
+  double ck = c1, sk = s1;
   for (int k = 1; k <= K; ++k) {
-    sum += term(k, ck, sk);
+    visit(k, ck, sk);
     const double next = ck * c1 - sk * s1;
     sk = sk * c1 + ck * s1;
     ck = next;
   }
+}
+
+// sum_{k=1..K} term(k, cos k phi, sin k phi).
+template <class Term>
+double SumHarmonics(int K, double phi, const Term& term) {
+  double sum = 0.0;
+  ForEachHarmonic(K, phi, [&](int k, double ck, double sk) { sum += term(k, ck, sk); });
   return sum;
 }
 
@@ -130,31 +156,40 @@ double Forcing::Phi(double phi) const {
 
 ForceValues Forcing::Values(double phi) const {
   // The three sums of F, Pi and Phi above, term by term in the same order.
-  const double c1 = std::cos(phi), s1 = std::sin(phi);
-  double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
-  for (int k = 1; k <= K_; ++k) {
+  double sF = 0.0, sPi = 0.0, sPhi = 0.0;
+  ForEachHarmonic(K_, phi, [&](int k, double ck, double sk) {
     const double a = ra_[k - 1], b = rb_[k - 1];
     sF += a * ck + b * sk;
     sPi += (a * sk + b * (1.0 - ck)) / k;
     sPhi += (a * (1.0 - ck) + b * (k * phi - sk)) / (double(k) * k);
-    const double next = ck * c1 - sk * s1;
-    sk = sk * c1 + ck * s1;
-    ck = next;
-  }
+  });
   return {c_ + sF, c_ * phi + sPi, 0.5 * c_ * phi * phi + sPhi};
 }
 
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {
+  if (K_ == 1) return detail::HarmonicRoots(c_ - level, R_, delta_, lo, hi);
   return detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi);
 }
 
-Range Forcing::Bounds(double lo, double hi) const {
-  std::array<double, kMaxHarmonics> da{}, db{};  // dF = sum k rb_k cos k phi - k ra_k sin k phi
-  for (int k = 0; k < K_; ++k) {
-    da[k] = (k + 1) * rb_[k];
-    db[k] = -(k + 1) * ra_[k];
+namespace {
+
+// The critical points of F in [lo, hi]: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi.
+PhaseList CriticalPoints(int K, const std::array<double, kMaxHarmonics>& ra,
+                         const std::array<double, kMaxHarmonics>& rb, double R, double delta_dF,
+                         double lo, double hi) {
+  if (K == 1) return detail::HarmonicRoots(0.0, R, delta_dF, lo, hi);
+  std::array<double, kMaxHarmonics> da{}, db{};
+  for (int k = 0; k < K; ++k) {
+    da[k] = (k + 1) * rb[k];
+    db[k] = -(k + 1) * ra[k];
   }
-  const PhaseList critical = detail::TrigRoots(0.0, da.data(), db.data(), K_, lo, hi);
+  return detail::TrigRoots(0.0, da.data(), db.data(), K, lo, hi);
+}
+
+}  // namespace
+
+Range Forcing::Bounds(double lo, double hi) const {
+  const PhaseList critical = CriticalPoints(K_, ra_, rb_, R_, delta_dF_, lo, hi);
   const double f_lo = F(lo);
   Range r{f_lo, f_lo};
   auto include = [&r](double f) {

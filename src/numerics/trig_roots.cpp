@@ -120,16 +120,6 @@ void SortUnique(PhaseList& out) {
   out.n = m;
 }
 
-void ClosedFormK1(const Series& s, double lo, double hi, PhaseList& out) {
-  // c0 + a cos phi + b sin phi = c0 + R sin(phi + delta), R = hypot(a, b), delta = atan2(a, b).
-  const double R = std::hypot(s.a[0], s.b[0]);
-  if (R == 0.0 || std::abs(s.c0) > R) return;
-  const double delta = std::atan2(s.a[0], s.b[0]);
-  const double q = std::asin(std::clamp(-s.c0 / R, -1.0, 1.0));
-  AddIfInside(q - delta, lo, hi, out);
-  AddIfInside(M_PI - q - delta, lo, hi, out);
-}
-
 // Bernstein coefficients of degree n on one piece of a chart.
 using Bernstein = std::array<double, kMaxDegree + 1>;
 
@@ -399,11 +389,19 @@ PhaseList TrigRoots(double c0, const double* a, const double* b, int K, double l
   PhaseList out;
   const Series s{c0, a, b, K};
   if (K == 0 || hi < lo) return out;
-  if (K == 1) {
-    ClosedFormK1(s, lo, hi, out);
-  } else {
-    Subdivided(s, lo, hi, out);
-  }
+  // c0 + a cos phi + b sin phi = c0 + R sin(phi + delta), R = hypot(a, b), delta = atan2(a, b).
+  if (K == 1) return HarmonicRoots(c0, std::hypot(a[0], b[0]), std::atan2(a[0], b[0]), lo, hi);
+  Subdivided(s, lo, hi, out);
+  SortUnique(out);
+  return out;
+}
+
+PhaseList HarmonicRoots(double c0, double R, double delta, double lo, double hi) {
+  PhaseList out;
+  if (hi < lo || R == 0.0 || std::abs(c0) > R) return out;
+  const double q = std::asin(std::clamp(-c0 / R, -1.0, 1.0));
+  AddIfInside(q - delta, lo, hi, out);
+  AddIfInside(M_PI - q - delta, lo, hi, out);
   SortUnique(out);
   return out;
 }

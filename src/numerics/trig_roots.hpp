@@ -16,4 +16,9 @@ namespace capsubot::detail {
 /// beyond the rounding noise is missed; no allocation.
 PhaseList TrigRoots(double c0, const double* a, const double* b, int K, double lo, double hi);
 
+/// Zeros in [lo, hi] (hi - lo <= tau) of c0 + R sin(phi + delta), R >= 0, sorted: TrigRoots'
+/// closed form for one harmonic a cos phi + b sin phi (R = hypot(a, b), delta = atan2(a, b)),
+/// for callers that keep R and delta across the levels c0 they cross.
+PhaseList HarmonicRoots(double c0, double R, double delta, double lo, double hi);
+
 }  // namespace capsubot::detail

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include "test_utils.hpp"
@@ -153,6 +154,48 @@ TEST(Forcing, HarmonicIsTheOneTermFourierSeries) {
   EXPECT_TRUE(h.harmonic());
   EXPECT_DOUBLE_EQ(h.amplitude(), 0.7);
   EXPECT_FALSE(Forcing::Fourier(0.2, {0.1}, {0.7}, 0.0).harmonic());
+}
+
+// One harmonic takes a fast path (no loop over harmonics, the crossings' R and phase kept from
+// the construction, cos tau and sin tau as constants). The same force written as a two-term
+// series with a zero second harmonic takes the general path: every number must agree bit for
+// bit, and the values at phi = tau must be those of std::cos and std::sin.
+TEST(Forcing, OneHarmonicFastPathIsTheGeneralSeriesBitForBit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coef(-1.0, 1.0), phase(-kTau, kTau);
+  int checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double c = coef(rng), a = coef(rng), b = coef(rng), phi0 = phase(rng);
+    const Forcing fast = Forcing::Fourier(c, {a}, {b}, phi0);
+    const Forcing general = Forcing::Fourier(c, {a, 0.0}, {b, 0.0}, phi0);
+    for (int j = 0; j <= 64; ++j) {
+      const double phi = kTau * j / 64.0;
+      ASSERT_EQ(fast.F(phi), general.F(phi)) << phi;
+      ASSERT_EQ(fast.dF(phi), general.dF(phi)) << phi;
+      ASSERT_EQ(fast.Pi(phi), general.Pi(phi)) << phi;
+      ASSERT_EQ(fast.Phi(phi), general.Phi(phi)) << phi;
+      const ForceValues v = fast.Values(phi), w = general.Values(phi);
+      ASSERT_EQ(v.F, w.F);
+      ASSERT_EQ(v.Pi, w.Pi);
+      ASSERT_EQ(v.Phi, w.Phi);
+    }
+    for (double level : {-0.5, 0.0, c, 0.3}) {
+      const double lo = 0.25 * kTau * coef(rng) + 0.25 * kTau, hi = kTau;
+      const PhaseList p = fast.Crossings(level, lo, hi), q = general.Crossings(level, lo, hi);
+      ASSERT_EQ(p.n, q.n);
+      for (int k = 0; k < p.n; ++k) ASSERT_EQ(p.phi[k], q.phi[k]);
+      const Range r = fast.Bounds(lo, hi), s = general.Bounds(lo, hi);
+      ASSERT_EQ(r.min, s.min);
+      ASSERT_EQ(r.max, s.max);
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 200);
+  // phi = tau from the library's sine and cosine (volatile: evaluated at run time).
+  volatile double tau = kTau;
+  const Forcing h = Forcing::Harmonic(0.7, 0.2, 0.0);  // F = 0.2 + 0.7 sin phi
+  EXPECT_EQ(h.F(kTau), 0.2 + (0.0 * std::cos(tau) + 0.7 * std::sin(tau)));
+  EXPECT_EQ(h.Pi(kTau), 0.2 * kTau + (0.0 * std::sin(tau) + 0.7 * (1.0 - std::cos(tau))));
 }
 
 TEST(Forcing, TangentLevelIsOneCrossing) {
