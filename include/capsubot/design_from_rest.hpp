@@ -43,7 +43,7 @@ struct DesignFromRestOptions {
   std::string local_algorithm = "LN_SBPLX";
   /// From-rest evaluations of the global stage per direction (the two directions share the
   /// robots they both visit); >= 1.
-  int global_evaluations = 60;
+  int global_evaluations = 100;
   int local_evaluations = 30;  ///< evaluations of the local polish per direction; >= 0
   /// Wall-clock limit of the search stages of both directions together, seconds; > 0. The
   /// re-checks come on top (at most 2 candidates robots per direction).
