@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <thread>
@@ -145,6 +147,16 @@ void RequireInRange(const std::string& option, long long value, long long lo, lo
     throw std::invalid_argument(
         fmt::format("{} = {} is invalid: expected {} <= {} <= {}", option, value, lo, name, hi));
   }
+}
+
+std::pair<int, int> ParseShard(const std::string& text) {
+  int k = 0, n = 0, used = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%n", &k, &n, &used) != 2 ||
+      static_cast<std::size_t>(used) != text.size() || !std::isdigit(text[0])) {
+    throw std::invalid_argument(fmt::format(
+        "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", text));
+  }
+  return {k, n};
 }
 
 void UseStrictNumbers(CLI::App& app) {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capsubot/forcing.hpp"
@@ -70,5 +71,9 @@ int CapThreads(int requested, const char* who);
 /// A size option given on the command line must lie in [lo, hi], checked before any work:
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
 void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
+
+/// --shard "K/N" -> (K, N) (the library checks 0 <= K < N); throws std::invalid_argument
+/// naming the option and the syntax.
+std::pair<int, int> ParseShard(const std::string& text);
 
 }  // namespace capsubot::app

@@ -1,5 +1,6 @@
-// capsubot merge: joins the shard files of `capsubot sweep --shard K/N` into the file of the
-// whole sweep (library: capsubot/sweep_merge.hpp).
+// capsubot merge: joins the shard files of `capsubot sweep --shard K/N` or `capsubot basins
+// --shard K/N` into the file of the whole run (library: capsubot/sweep_merge.hpp,
+// capsubot/basin_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -8,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/sweep_merge.hpp"
+#include "capsubot/basin_shards.hpp"
 #include "commands.hpp"
 
 namespace capsubot::app {
@@ -20,9 +21,9 @@ struct MergeCliOptions {
 };
 
 int Run(const MergeCliOptions& opt) {
-  const MergeSummary summary = MergeSweepShards(opt.shards, opt.output);
+  const MergeSummary summary = MergeShards(opt.shards, opt.output);
   if (::isatty(STDERR_FILENO) != 0) {
-    fmt::print(stderr, "capsubot merge: {} shards, {} points, {} rows written to {}\n",
+    fmt::print(stderr, "capsubot merge: {} shards, {} points or starts, {} rows written to {}\n",
                summary.shards, summary.points, summary.rows, opt.output);
   }
   return 0;
@@ -34,8 +35,9 @@ Command AddMergeCommand(CLI::App& app) {
   auto opt = std::make_shared<MergeCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "merge",
-      "Joins the N shard files of one `capsubot sweep --shard K/N` run (any order) into OUT, "
-      "byte-identical to the sweep run on one machine; refuses shards of different runs, a "
+      "Joins the N shard files of one `capsubot sweep --shard K/N` or `capsubot basins --shard "
+      "K/N` run (any order) into OUT, byte-identical to the run on one machine (a basin map: "
+      "the attractors are labelled over the whole map); refuses shards of different runs, a "
       "missing or duplicated shard and a truncated one (docs/cluster.md).");
   cmd->add_option("OUT", opt->output, "the CSV file to write (atomically; - : standard output)")
       ->required();

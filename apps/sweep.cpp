@@ -16,6 +16,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -293,14 +294,7 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   for (const std::string& spec : opt.grids) s.grid.axes.push_back(ParseGridAxis(spec));
   s.grid.Validate();
   if (!opt.optimize.empty()) s.optimize = ParseSweepOptimize(opt.optimize);
-  if (!opt.shard.empty()) {
-    int used = 0;
-    if (std::sscanf(opt.shard.c_str(), "%d/%d%n", &s.shard, &s.shards, &used) != 2 ||
-        static_cast<std::size_t>(used) != opt.shard.size() || !std::isdigit(opt.shard[0])) {
-      throw std::invalid_argument(fmt::format(
-          "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", opt.shard));
-    }
-  }
+  if (!opt.shard.empty()) std::tie(s.shard, s.shards) = ParseShard(opt.shard);
   RejectConflicts(opt, cmd);
   BuildForcing(opt);
   const std::vector<std::string> unused = UnusedOptions(opt, cmd);

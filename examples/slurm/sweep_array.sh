@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# A sweep split over a Slurm job array: task K of N computes shard K/N, a last job that
-# depends on the array merges the N files into the file the sweep gives on one machine.
+# A sweep (or, with KIND=basins, a basin map) split over a Slurm job array: task K of N
+# computes shard K/N, a last job that depends on the array merges the N files into the file
+# the command gives on one machine.
 #
 #   sbatch --array=0-15 examples/slurm/sweep_array.sh          # the 16 shards
 #   sbatch --dependency=afterok:<array job id> --export=ALL,MERGE=1 examples/slurm/sweep_array.sh
 #
 # or both at once:  examples/slurm/sweep_array.sh submit
-# A killed or requeued task continues from its checkpoint (--resume). Edit SWEEP, OUT, N.
+#   KIND=basins OUT=basins.csv examples/slurm/sweep_array.sh submit    # a basin map
+# A killed or requeued sweep task continues from its checkpoint (--resume); a basin task
+# starts its shard again. Edit SWEEP or BASINS, OUT, N.
 #SBATCH --job-name=capsubot-sweep
 #SBATCH --cpus-per-task=2
 #SBATCH --time=02:00:00
@@ -16,11 +19,15 @@ set -euo pipefail
 CAPSUBOT=${CAPSUBOT:-capsubot}
 N=${N:-16}
 OUT=${OUT:-p2_T0_e.csv}
-SWEEP=(sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize forcing --stability)
+KIND=${KIND:-sweep}
+SWEEP=(sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize forcing --stability --resume)
+BASINS=(basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278
+  --starts 512x512)
+if [[ "$KIND" == basins ]]; then RUN=("${BASINS[@]}"); else RUN=("${SWEEP[@]}"); fi
 
 if [[ "${1:-}" == "submit" ]]; then
-  array=$(sbatch --parsable --array=0-$((N - 1)) "$0")
-  sbatch --dependency=afterok:"$array" --export=ALL,MERGE=1,N="$N",OUT="$OUT" "$0"
+  array=$(sbatch --parsable --array=0-$((N - 1)) --export=ALL,N="$N",OUT="$OUT",KIND="$KIND" "$0")
+  sbatch --dependency=afterok:"$array" --export=ALL,MERGE=1,N="$N",OUT="$OUT",KIND="$KIND" "$0"
   exit 0
 fi
 
@@ -34,5 +41,5 @@ if [[ "${MERGE:-0}" == 1 ]]; then
 fi
 
 K=${SLURM_ARRAY_TASK_ID:?run as a job array (sbatch --array=0-$((N - 1)))}
-"$CAPSUBOT" "${SWEEP[@]}" --shard "$K/$N" --threads "${SLURM_CPUS_PER_TASK:-1}" \
-  --resume -o "$(shard_file "$K")"
+"$CAPSUBOT" "${RUN[@]}" --shard "$K/$N" --threads "${SLURM_CPUS_PER_TASK:-1}" \
+  -o "$(shard_file "$K")"

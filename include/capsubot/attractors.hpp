@@ -146,8 +146,25 @@ struct Attractors {
   std::int64_t event_limit_starts = 0;  ///< starts that ended in kEventLimit
 };
 
-/// The long-run motion of every start, grouped into attractors; the motions are computed in
-/// blocks of starts by `backend` (this process's threads by default). Throws
+/// The long-run motion of every start, in the order given, computed in blocks of starts by
+/// `backend` (this process's threads by default). Throws std::invalid_argument for bad inputs
+/// (naming the field).
+std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::vector<PhaseState>& starts,
+                                   const AttractorOptions& options,
+                                   const StartsProgress& progress = {},
+                                   const BlockBackend& backend = LocalBlocks());
+
+/// The motions of `starts` (one each, in the same order) grouped into attractors, as
+/// ClassifyStarts groups them: in the order of the starts, two motions in one class when
+/// their status, period and impact counts agree and their mean velocities are within
+/// `velocity_tolerance` (relative); classes sorted by starts, most first. The attractors'
+/// one_impact_orbit is left false. Throws std::invalid_argument when the sizes differ.
+Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motion> motions,
+                        double velocity_tolerance);
+
+/// The long-run motion of every start (LongRunMotions) grouped into attractors (GroupMotions),
+/// the one-impact orbits recognised. Throws
 /// std::invalid_argument for bad inputs (naming the field).
 Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
                           const std::vector<PhaseState>& starts, const AttractorOptions& options,

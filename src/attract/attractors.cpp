@@ -12,6 +12,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
@@ -113,16 +114,15 @@ BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, d
   };
 }
 
-Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
-                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          const StartsProgress& progress, const BlockBackend& backend) {
+std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::vector<PhaseState>& starts,
+                                   const AttractorOptions& options, const StartsProgress& progress,
+                                   const BlockBackend& backend) {
   params.Validate();
   options.Validate();
   for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
-  Attractors out;
   const auto n = static_cast<std::int64_t>(starts.size());
-  out.starts = n;
-  out.motions.resize(starts.size());
+  std::vector<Motion> motions(starts.size());
   BlockPlan plan;
   plan.end = n;
   plan.threads = detail::WorkerCount(options.threads, n);
@@ -135,11 +135,23 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
               "the motions of starts {} to {} came back with {} bytes: expected {}", begin, end - 1,
               bytes.size(), static_cast<std::size_t>(end - begin) * sizeof(Motion)));
         }
-        std::memcpy(static_cast<void*>(&out.motions[static_cast<std::size_t>(begin)]), bytes.data(),
+        std::memcpy(static_cast<void*>(&motions[static_cast<std::size_t>(begin)]), bytes.data(),
                     bytes.size());
         if (progress) progress(end, n);
       });
+  return motions;
+}
 
+Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motion> motions,
+                        double velocity_tolerance) {
+  if (motions.size() != starts.size()) {
+    throw std::invalid_argument(fmt::format("motions: {} given: expected one per start ({})",
+                                            motions.size(), starts.size()));
+  }
+  Attractors out;
+  const auto n = static_cast<std::int64_t>(starts.size());
+  out.starts = n;
+  out.motions = std::move(motions);
   // Group in the order of the starts (deterministic), then sort by size.
   std::vector<int> label(starts.size(), -1);
   std::vector<Attractor> found;
@@ -152,7 +164,7 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
       sum += m.mean_velocity;
     }
     for (std::size_t a = 0; a < found.size() && label[k] < 0; ++a) {
-      if (SameClass(found[a].motion, m, options.velocity_tolerance)) label[k] = static_cast<int>(a);
+      if (SameClass(found[a].motion, m, velocity_tolerance)) label[k] = static_cast<int>(a);
     }
     if (label[k] < 0) {
       label[k] = static_cast<int>(found.size());
@@ -181,7 +193,15 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
   for (std::size_t k = 0; k < starts.size(); ++k) {
     out.labels[k] = rank[static_cast<std::size_t>(label[k])];
   }
+  return out;
+}
 
+Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
+                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
+                          const StartsProgress& progress, const BlockBackend& backend) {
+  Attractors out = GroupMotions(
+      starts, LongRunMotions(forcing, params, alpha, starts, options, progress, backend),
+      options.velocity_tolerance);
   // The analytic one-impact orbits are needed only if a motion has their shape.
   const bool any = std::any_of(out.attractors.begin(), out.attractors.end(),
                                [](const Attractor& a) { return OneImpactShape(a.motion); });
