@@ -2,7 +2,6 @@
 // one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
 
 #include "capsubot/design.hpp"
-#include "capsubot/design_from_rest.hpp"
 
 #include <pybind11/stl.h>
 
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/design_from_rest.hpp"
 #include "json/design_json.hpp"
 
 namespace capsubot::python {

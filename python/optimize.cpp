@@ -275,7 +275,6 @@ constexpr const char* kOptimizeOptionsDoc =
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL (other Python threads go on).\n\n";
 
-
 }  // namespace
 
 void BindOptimize(py::module_& m) {
