@@ -21,11 +21,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The robust defaults of `capsubot optimize` (docs/model.md section 12); the library's are 0
-// and infinity.
-constexpr double kDefaultMarginStroke = 0.02;
-constexpr double kDefaultStickMargin = 0.02;
-constexpr double kDefaultRhoMax = 0.9;
 
 // The search options the caller gives, as the command line's options.
 struct SearchArgs {
@@ -207,7 +202,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                         global_evaluations,
                         hops,
                         starts,
-                        stable ? 1.0 : rho_max.value_or(kDefaultRhoMax),
+                        stable ? 1.0 : rho_max.value_or(kRobustRhoMax),
                         max_time,
                         from_rest_starts,
                         reach_starts,
@@ -286,8 +281,8 @@ void BindOptimize(py::module_& m) {
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
         py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("margin_stroke") = kDefaultMarginStroke,
-        py::arg("stick_margin") = kDefaultStickMargin, py::arg("bound") = py::none(),
+        py::arg("margin_stroke") = kRobustMarginStroke,
+        py::arg("stick_margin") = kRobustStickMargin, py::arg("bound") = py::none(),
         py::arg("rho_max") = py::none(), py::arg("stable") = false,
         py::arg("max_time") = p2.max_time, py::arg("harmonics") = FourierOptions{}.harmonics,
         py::arg("global_algorithm") = p2.global_algorithm,

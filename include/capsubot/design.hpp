@@ -17,6 +17,7 @@
 
 #include "capsubot/energy.hpp"
 #include "capsubot/forcing.hpp"
+#include "capsubot/optimize_options.hpp"
 #include "capsubot/params.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
@@ -57,13 +58,16 @@ struct DesignInput {
   double m2_min = kNaN;
   double m2_max = kNaN;  ///< see m2_min
 
-  // Robust gaits (docs/model.md section 12): what a gait must keep.
-  double margin = 0.0;          ///< clearance d from both walls [units of L], 0 <= d < 0.5
-  double margin_stroke = 0.02;  ///< clearance d_s [units of the stroke x_max - x_min], >= 0
-  double stick_margin = 0.02;   ///< stick margin s: |F| <= (1-s) T0 at rest, 0 <= s < 1
+  // Robust gaits (docs/model.md section 12): what a gait must keep; by default the robust gait
+  // of the optimiser.
+  double margin = 0.0;  ///< clearance d from both walls [units of L], 0 <= d < 0.5
+  /// Clearance d_s [units of the stroke x_max - x_min], >= 0.
+  double margin_stroke = kRobustMarginStroke;
+  double stick_margin =
+      kRobustStickMargin;  ///< stick margin s: |F| <= (1-s) T0 at rest, 0 <= s < 1
   /// Largest admissible modulus of a multiplier (docs/model.md section 8), > 0; infinity means
   /// no stability requirement.
-  double rho_max = 0.9;
+  double rho_max = kRobustRhoMax;
 
   /// Samples of each variable's scan (log-spaced) before the golden-section refinement, >= 3.
   int scan_points = 64;
