@@ -2,6 +2,7 @@
 // Pieces shared by the subcommands: the command record, the force and model options.
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -75,5 +76,22 @@ void RequireInRange(const std::string& option, long long value, long long lo, lo
 /// --shard "K/N" -> (K, N) (the library checks 0 <= K < N); throws std::invalid_argument
 /// naming the option and the syntax.
 std::pair<int, int> ParseShard(const std::string& text);
+
+/// Which runs of a command use an option (a run is what the command's mode option selects,
+/// e.g. `optimize --problem`); an option not listed determines the content of every run.
+struct OptionUse {
+  const char* option;               ///< long name, "--hops"
+  std::array<const char*, 4> runs;  ///< the runs that use it; unused entries are nullptr
+  bool UsedBy(const std::string& run) const;
+};
+
+/// The long names of the options of `uses` that `run` does not use: their defaults do not
+/// shape its output (left out of the provenance).
+std::vector<std::string> UnusedOptions(const std::vector<OptionUse>& uses, const std::string& run);
+
+/// The first option of `uses` given on `command` that `run` does not use (it would be
+/// silently ignored: the caller refuses it), nullptr if none.
+const OptionUse* GivenUnusedOption(const CLI::App& command, const std::vector<OptionUse>& uses,
+                                   const std::string& run);
 
 }  // namespace capsubot::app

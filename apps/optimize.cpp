@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -20,6 +19,7 @@
 
 #include "capsubot/io.hpp"
 #include "capsubot/scaling.hpp"
+#include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "progress.hpp"
@@ -66,13 +66,9 @@ struct OptimizeCliOptions {
   CLI::App* cmd = nullptr;
 };
 
-// The runs that use an option: "" is the main job (no --problem), else a problem name.
-struct OptionUse {
-  const char* option;
-  std::array<const char*, 4> runs;
-};
-// The P2 options apply to reach through its seed, the robust gait.
-const OptionUse kOptionUses[] = {
+// The runs that use an option: "" is the main job (no --problem), else a problem name. The P2
+// options apply to reach through its seed, the robust gait.
+const std::vector<OptionUse> kOptionUses = {
     {"--A", {"phase"}},
     {"--c", {"phase"}},
     {"--harmonics", {"fourier"}},
@@ -94,40 +90,25 @@ std::string RunName(const std::string& problem) {
   return problem.empty() ? "the main job (no --problem)" : "--problem " + problem;
 }
 
-bool UsedBy(const OptionUse& use, const std::string& problem) {
-  for (const char* run : use.runs) {
-    if (run == nullptr) break;
-    if (problem == run) return true;
-  }
-  return false;
-}
-
 // The options the chosen run does not use: their defaults do not shape its output (left out
 // of the provenance).
-std::vector<std::string> UnusedOptions(const OptimizeCliOptions& opt) {
-  std::vector<std::string> unused;
-  for (const OptionUse& use : kOptionUses) {
-    if (!UsedBy(use, opt.problem)) unused.emplace_back(use.option);
-  }
+std::vector<std::string> UnusedOptionsOf(const OptimizeCliOptions& opt) {
+  std::vector<std::string> unused = UnusedOptions(kOptionUses, opt.problem);
   if (opt.global_algorithm == kMultistart) unused.emplace_back("--global-evaluations");
   return unused;
 }
 
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
 void RejectUnusedOptions(const OptimizeCliOptions& opt) {
-  for (const OptionUse& use : kOptionUses) {
-    const CLI::Option* option = opt.cmd->get_option_no_throw(use.option);
-    if (option == nullptr || option->count() == 0) continue;
+  if (const OptionUse* use = GivenUnusedOption(*opt.cmd, kOptionUses, opt.problem)) {
     std::string expected;
-    for (const char* run : use.runs) {
+    for (const char* run : use->runs) {
       if (run == nullptr) break;
       expected += (expected.empty() ? "" : " or ") + RunName(run);
     }
-    if (!UsedBy(use, opt.problem)) {
-      throw std::invalid_argument(fmt::format("{} conflicts with {}: expected {} only with {}",
-                                              use.option, RunName(opt.problem), use.option,
-                                              expected));
-    }
+    throw std::invalid_argument(fmt::format("{} conflicts with {}: expected {} only with {}",
+                                            use->option, RunName(opt.problem), use->option,
+                                            expected));
   }
   const CLI::Option* evaluations = opt.cmd->get_option_no_throw("--global-evaluations");
   if (evaluations != nullptr && evaluations->count() > 0 && opt.global_algorithm == kMultistart) {
@@ -257,7 +238,7 @@ PhaseOptions PhaseFor(const OptimizeCliOptions& opt) {
 
 void Emit(nlohmann::json j, const std::string& text, const OptimizeCliOptions& opt,
           AtomicFile* json_file) {
-  AddProvenanceJson(j, *opt.cmd, UnusedOptions(opt));
+  AddProvenanceJson(j, *opt.cmd, UnusedOptionsOf(opt));
   if (json_file != nullptr) {
     json_file->stream() << j.dump(2) << '\n';
     json_file->Commit();

@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "progress.hpp"
@@ -90,12 +90,8 @@ bool ChoosesTheForce(SweepOptimize mode) {
          mode == SweepOptimize::kReach;
 }
 
-// The modes that use an option; an option not listed determines the content in every mode.
-struct OptionUse {
-  const char* option;
-  std::array<const char*, 4> modes;
-};
-const OptionUse kOptionUses[] = {
+// The modes that use an option ("none": no --optimize).
+const std::vector<OptionUse> kOptionUses = {
     {"--A", {"none", "phi0"}},
     {"--c", {"none", "phi0"}},
     {"--phi0", {"none"}},
@@ -119,36 +115,24 @@ const OptionUse kOptionUses[] = {
     {"--reach-local-evaluations", {"reach"}},
 };
 
-bool UsedBy(const OptionUse& use, const char* mode) {
-  for (const char* m : use.modes) {
-    if (m != nullptr && std::strcmp(m, mode) == 0) return true;
-  }
-  return false;
-}
-
 // The options this mode does not use; one of them given would be silently ignored: refused.
-std::vector<std::string> UnusedOptions(const SweepCliOptions& opt, const CLI::App& cmd) {
+std::vector<std::string> ModeUnusedOptions(const SweepCliOptions& opt, const CLI::App& cmd) {
   const char* mode = SweepOptimizeName(opt.sweep.optimize);
-  std::vector<std::string> unused;
-  for (const OptionUse& use : kOptionUses) {
-    if (UsedBy(use, mode)) continue;
-    unused.emplace_back(use.option);
-    const CLI::Option* option = cmd.get_option_no_throw(use.option);
-    if (option == nullptr || option->count() == 0) continue;
+  if (const OptionUse* use = GivenUnusedOption(cmd, kOptionUses, mode)) {
     std::string modes;
-    for (const char* m : use.modes) {
+    for (const char* m : use->runs) {
       if (m == nullptr) continue;
       modes += (modes.empty() ? "" : ", ") + (std::strcmp(m, "none") == 0
                                                   ? std::string("no --optimize")
                                                   : std::string("--optimize ") + m);
     }
     throw std::invalid_argument(fmt::format(
-        "{} is invalid {}: expected it only with {}", use.option,
+        "{} is invalid {}: expected it only with {}", use->option,
         opt.sweep.optimize == SweepOptimize::kNone ? std::string("without --optimize")
                                                    : std::string("with --optimize ") + mode,
         modes));
   }
-  return unused;
+  return UnusedOptions(kOptionUses, mode);
 }
 
 // An option that gives a value the grid also gives, or that the optimiser chooses itself.
@@ -297,7 +281,7 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   if (!opt.shard.empty()) std::tie(s.shard, s.shards) = ParseShard(opt.shard);
   RejectConflicts(opt, cmd);
   BuildForcing(opt);
-  const std::vector<std::string> unused = UnusedOptions(opt, cmd);
+  const std::vector<std::string> unused = ModeUnusedOptions(opt, cmd);
   SetOptimizerOptions(opt, cmd);
   s.comments.clear();
   if (!opt.no_header_comment) s.comments.push_back(ProvenanceLine(opt, cmd, unused));
