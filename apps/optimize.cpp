@@ -33,12 +33,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kForceCsvRows = 1001;
 
-// P2's library defaults (one instance: the defaults of the options below).
-const ForcingDesignOptions& P2Defaults() {
-  static const ForcingDesignOptions defaults;
-  return defaults;
-}
-
 struct OptimizeCliOptions {
   std::string problem;  // "", phase, forcing, fourier, reach
   double A = kNaN;      // NaN: not given
@@ -46,17 +40,10 @@ struct OptimizeCliOptions {
   CLI::Option* A_option = nullptr;
   CLI::Option* c_option = nullptr;
   Params params;
-  double bound = kNaN;  // NaN: T0
+  SearchRequest search;  // the bound, stability, time limit and search effort
   CLI::Option* bound_option = nullptr;
-  int harmonics = 3;
-  std::string global_algorithm = kMultistart;
-  std::string local_algorithm = "LN_COBYLA";
   int starts = 0;  // used only when given: else the problem's default
   CLI::Option* starts_option = nullptr;
-  int global_evaluations = P2Defaults().global_evaluations;
-  int hops = P2Defaults().hops;
-  double rho_max = kRobustRhoMax;  // the robust default; the library's is inf
-  double max_time = P2Defaults().max_time;
   bool json = false;
   std::string output;  // empty: no file
   std::string force_csv;
@@ -94,7 +81,7 @@ std::string RunName(const std::string& problem) {
 // of the provenance).
 std::vector<std::string> UnusedOptionsOf(const OptimizeCliOptions& opt) {
   std::vector<std::string> unused = UnusedOptions(kOptionUses, opt.problem);
-  if (opt.global_algorithm == kMultistart) unused.emplace_back("--global-evaluations");
+  if (opt.search.global_algorithm == kMultistart) unused.emplace_back("--global-evaluations");
   return unused;
 }
 
@@ -111,7 +98,8 @@ void RejectUnusedOptions(const OptimizeCliOptions& opt) {
                                             expected));
   }
   const CLI::Option* evaluations = opt.cmd->get_option_no_throw("--global-evaluations");
-  if (evaluations != nullptr && evaluations->count() > 0 && opt.global_algorithm == kMultistart) {
+  if (evaluations != nullptr && evaluations->count() > 0 &&
+      opt.search.global_algorithm == kMultistart) {
     throw std::invalid_argument(
         "--global-evaluations conflicts with --global-algorithm multistart: expected an NLopt "
         "global algorithm with it (multistart has no evaluation budget)");
@@ -209,31 +197,11 @@ std::string GaitText(const OptimizeResult& r, double rho_max) {
   return t;
 }
 
-// The gait asked for, with P2's default search: what P3 asks and starts from.
-ForcingDesignOptions GaitOptions(const OptimizeCliOptions& opt, double rho_max) {
-  ForcingDesignOptions d;
-  d.force_bound = opt.bound;
-  d.local_algorithm = opt.local_algorithm;
-  d.rho_max = rho_max;
-  d.max_time = opt.max_time;
-  return d;
-}
-
-// P2: the gait asked for, searched as the command line says.
-ForcingDesignOptions DesignOptions(const OptimizeCliOptions& opt, double rho_max) {
-  ForcingDesignOptions d = GaitOptions(opt, rho_max);
-  d.global_algorithm = opt.global_algorithm;
-  if (opt.starts_option->count() > 0) d.starts = opt.starts;
-  d.global_evaluations = opt.global_evaluations;
-  d.hops = opt.hops;
-  return d;
-}
-
-PhaseOptions PhaseFor(const OptimizeCliOptions& opt) {
-  PhaseOptions po;
-  po.rho_max = opt.rho_max;
-  po.max_time = opt.max_time;
-  return po;
+// The search the command line asks for.
+SearchRequest Request(const OptimizeCliOptions& opt) {
+  SearchRequest r = opt.search;
+  if (opt.starts_option->count() > 0) r.starts = opt.starts;
+  return r;
 }
 
 void Emit(nlohmann::json j, const std::string& text, const OptimizeCliOptions& opt,
@@ -296,26 +264,26 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2,
   // best phase. Its force sits on the friction bound, so any stick margin would exclude it.
-  PhaseOptions paper_options = PhaseFor(opt);
-  paper_options.rho_max = kInf;
   ShowStage("optimize: 1/4 the paper's problem (P1)");
-  const OptimizeResult paper =
-      OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, paper_options);
+  const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
+                                             PhaseOptionsFor(Request(opt).WithRhoMax(kInf)));
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. the exact optima, valid and stable, for comparison.
   ShowStage("optimize: 2/4 the fastest robust gait (P2)");
-  const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
   ShowStage("optimize: 3/4 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach =
-      OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, ReachOptions::kNaN));
+      OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, ReachOptions::kNaN));
   ShowStage("optimize: 4/4 the exact optima without margins");
-  const OptimizeResult fastest = OptimizeForcing(exact, DesignOptions(opt, kInf));
-  const OptimizeResult stable = OptimizeForcing(exact, DesignOptions(opt, 1.0));
+  const OptimizeResult fastest =
+      OptimizeForcing(exact, ForcingOptionsFor(Request(opt).WithRhoMax(kInf)));
+  const OptimizeResult stable =
+      OptimizeForcing(exact, ForcingOptionsFor(Request(opt).WithRhoMax(1.0)));
   ShowStage("");
-  const double bound = std::isnan(opt.bound) ? p.T0 : opt.bound;
+  const double bound = std::isnan(opt.search.force_bound) ? p.T0 : opt.search.force_bound;
 
   nlohmann::json j =
-      json::MainJobJson(paper, robust, reach, fastest, stable, p, opt.rho_max, bound);
+      json::MainJobJson(paper, robust, reach, fastest, stable, p, opt.search.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
@@ -329,7 +297,7 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
       "omega L\n"
       "(change them with --T0, --e, --margin, --margin-stroke, --stick-margin, --rho-max)\n\n",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max);
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max);
   t += fmt::format(
       "1. The paper's problem (P1): force F = A sin(phi + phi0) + c with c = A = T0/2 = {:g},\n"
       "   best impact phase phi0 over the whole circle, valid orbits as the paper asks (no\n"
@@ -361,7 +329,7 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
       "   above; checked from rest on {} starts.\n",
       bound, reach.seed.from_rest.attractors.starts);
-  t += robust.found() ? GaitText(robust, opt.rho_max) + FromRestText(reach.seed.from_rest)
+  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest)
                       : fmt::format("   Result: none found ({})\n", robust.message);
   t += fmt::format(
       "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
@@ -393,16 +361,17 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
 int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
   const Params& p = opt.params;
   ShowStage("optimize: 1/2 the robust gait that seeds the search (P2)");
-  const OptimizeResult robust = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
   ShowStage("optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
-  const ReachResult reach = OptimizeReach(p, robust, opt.from_rest.Reach(opt.bound, opt.alpha));
+  const ReachResult reach =
+      OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, opt.alpha));
   ShowStage("");
-  nlohmann::json j = json::ReachProblemJson(reach, p, opt.rho_max);
+  nlohmann::json j = json::ReachProblemJson(reach, p, opt.search.rho_max);
   WriteForceCsv(reach.forcing, files.force_csv.get());
   const std::string t = fmt::format(
       "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
       "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  {}\n{}",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max,
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max,
       OptimizeStatusName(reach.status), reach.message, ReachText(reach));
   Emit(j, t, opt, files.json.get());
   return 0;
@@ -417,30 +386,24 @@ int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, Outp
       throw std::invalid_argument(
           "--problem phase needs the force shape: give --A and --c (F = A sin(phi + phi0) + c)");
     }
-    r = OptimizePhase(Forcing::Harmonic(opt.A, opt.c, 0.0), p, PhaseFor(opt));
+    r = OptimizePhase(Forcing::Harmonic(opt.A, opt.c, 0.0), p, PhaseOptionsFor(Request(opt)));
   } else if (opt.problem == "forcing") {
-    r = OptimizeForcing(p, DesignOptions(opt, opt.rho_max));
+    r = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
   } else {  // fourier (CLI11 checks the name)
-    FourierOptions fo;
-    fo.harmonic = GaitOptions(opt, opt.rho_max);
-    fo.harmonics = opt.harmonics;
-    fo.search.global_algorithm = opt.global_algorithm;
-    if (opt.starts_option->count() > 0) fo.search.starts = opt.starts;
-    fo.search.global_evaluations = opt.global_evaluations;
-    r = OptimizeFourier(p, fo);
+    r = OptimizeFourier(p, FourierOptionsFor(Request(opt)));
   }
   ShowStage("optimize: the optimum checked from rest (simulated starts)");
   const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   ShowStage("");
-  nlohmann::json j = json::ProblemJson(r, opt.problem.c_str(), from_rest, p, opt.rho_max);
+  nlohmann::json j = json::ProblemJson(r, opt.problem.c_str(), from_rest, p, opt.search.rho_max);
   WriteForceCsv(r.solution.orbit.forcing, files.force_csv.get());
   std::string t;
   t += fmt::format(
       "capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, "
       "s = {:g}, spectral radius <= {:g}\n",
-      opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.rho_max);
+      opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max);
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r, opt.rho_max) + FromRestText(from_rest);
+  t += GaitText(r, opt.search.rho_max) + FromRestText(from_rest);
   if (opt.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",
@@ -467,29 +430,31 @@ int Run(const OptimizeCliOptions& opt) {
                "a finite amplitude A >= 0");
   RequireGiven(opt.c_option, std::isfinite(opt.c), fmt::format("{}", opt.c),
                "a finite mean force c");
-  RequireGiven(opt.bound_option, std::isfinite(opt.bound) && opt.bound > 0.0,
-               fmt::format("{}", opt.bound), "a finite bound > 0 (at most T0)");
+  RequireGiven(opt.bound_option,
+               std::isfinite(opt.search.force_bound) && opt.search.force_bound > 0.0,
+               fmt::format("{}", opt.search.force_bound), "a finite bound > 0 (at most T0)");
   // Every size is bounded before any work starts.
   if (opt.starts_option->count() > 0) RequireInRange("--starts", opt.starts, 1, kMaxStarts);
-  RequireInRange("--hops", opt.hops, 0, kMaxStarts);
-  RequireInRange("--global-evaluations", opt.global_evaluations, 10, kMaxStageEvaluations);
-  if (!(opt.rho_max > 0.0)) {
+  RequireInRange("--hops", opt.search.hops, 0, kMaxStarts);
+  RequireInRange("--global-evaluations", opt.search.global_evaluations, 10, kMaxStageEvaluations);
+  if (!(opt.search.rho_max > 0.0)) {
     throw std::invalid_argument(fmt::format(
         "--rho-max = {} is invalid: expected rho_max > 0 (inf: no stability requirement)",
-        opt.rho_max));
+        opt.search.rho_max));
   }
-  if (!(opt.max_time > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "--max-time = {} is invalid: expected a time limit > 0 seconds (inf: none)", opt.max_time));
+  if (!(opt.search.max_time > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--max-time = {} is invalid: expected a time limit > 0 seconds (inf: none)",
+                    opt.search.max_time));
   }
   opt.params.Validate();
   // The options of the work to come, checked before any of it starts.
   const FromRestOptions check = opt.from_rest.Check();
   if (opt.problem.empty() || opt.problem == "reach") {
-    opt.from_rest.Reach(opt.bound, opt.alpha).Validate();
+    opt.from_rest.Reach(opt.search.force_bound, opt.alpha).Validate();
   }
   if (opt.problem != "phase") {
-    const ForcingDesignOptions design = DesignOptions(opt, opt.rho_max);
+    const ForcingDesignOptions design = ForcingOptionsFor(Request(opt));
     design.Validate();
     design.BoundFor(opt.params);
   }
@@ -507,6 +472,7 @@ Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
   opt->params.margin_stroke = kRobustMarginStroke;
   opt->params.stick_margin = kRobustStickMargin;
+  opt->search.rho_max = kRobustRhoMax;  // the robust default; the library's is inf
   CLI::App* cmd = app.add_subcommand(
       "optimize",
       "The fastest gait (docs/model.md section 7) with the margins of a robust gait (section "
@@ -538,39 +504,40 @@ Command AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
-      cmd->add_option("--bound", opt->bound,
+      cmd->add_option("--bound", opt->search.force_bound,
                       "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
                       "same unit as A (default: T0)");
   CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt->rho_max,
+      cmd->add_option("--rho-max", opt->search.rho_max,
                       "largest spectral radius of the impact map (docs/model.md sections 8, 12); "
                       "inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf);
   cmd->add_flag_callback(
-         "--stable", [opt] { opt->rho_max = 1.0; },
+         "--stable", [opt] { opt->search.rho_max = 1.0; },
          "the same as --rho-max 1: stable orbits, up to marginal stability")
       ->excludes(rho_max);
-  cmd->add_option("--max-time", opt->max_time,
+  cmd->add_option("--max-time", opt->search.max_time,
                   "time limit [s] of each optimisation; when reached, the best point so far is "
                   "reported with status max_time (inf: none)")
       ->capture_default_str();
-  cmd->add_option("--harmonics", opt->harmonics, "number K of harmonics of the Fourier force")
+  cmd->add_option("--harmonics", opt->search.harmonics,
+                  "number K of harmonics of the Fourier force")
       ->capture_default_str();
-  cmd->add_option("--global-algorithm", opt->global_algorithm,
+  cmd->add_option("--global-algorithm", opt->search.global_algorithm,
                   "global stage of forcing/fourier: multistart (scan + local polishes) or an "
                   "NLopt algorithm: GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS")
       ->capture_default_str();
-  cmd->add_option("--local-algorithm", opt->local_algorithm,
+  cmd->add_option("--local-algorithm", opt->search.local_algorithm,
                   "local constrained polish, NLopt name: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ "
                   "(LD_*: gradients by central differences)")
       ->capture_default_str();
-  cmd->add_option("--global-evaluations", opt->global_evaluations,
+  cmd->add_option("--global-evaluations", opt->search.global_evaluations,
                   fmt::format("evaluation budget of an NLopt global algorithm (not used by "
                               "multistart), 10 to {}",
                               kMaxStageEvaluations))
       ->capture_default_str();
-  cmd->add_option("--hops", opt->hops,
+  cmd->add_option("--hops", opt->search.hops,
                   fmt::format("forcing: basin-hopping restarts from random perturbations of the "
                               "best point after the starts, 0 to {}",
                               kMaxStarts))

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "capsubot/optimize_request.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
@@ -34,18 +35,12 @@ struct SweepCliOptions {
   ForcingOptions forcing;
   SweepOptions sweep;
   std::string optimize;
-  double rho_max = OptimizeOptions::kInf;                   // --stable-only: 1
-  double bound = std::numeric_limits<double>::quiet_NaN();  // NaN: T0
-  int harmonics = FourierOptions{}.harmonics;
-  int starts = 0;  // used only when given: else the problem's default
+  SearchRequest search;  // --optimize: the bound, stability and search effort
+  int starts = 0;        // used only when given: else the problem's default
   CLI::Option* starts_option = nullptr;
-  int hops = ForcingDesignOptions{}.hops;
-  int global_evaluations = ForcingDesignOptions{}.global_evaluations;  // used only when given
   CLI::Option* global_evaluations_option = nullptr;
   double alpha = std::numeric_limits<double>::quiet_NaN();  // reach: NaN: alpha is optimised
   FromRestCliOptions from_rest;                             // reach: starts and budgets
-  std::string global_algorithm = kMultistart;
-  std::string local_algorithm = SearchOptions{}.local_algorithm;
   bool no_header_comment = false;
   std::string shard;  // "K/N", empty: the whole grid
 };
@@ -222,32 +217,29 @@ void SetOptimizerOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   if (s.optimize == SweepOptimize::kReach) {
     for (const auto& [flag, value] : kReachDefaults) {
       if (!Defaulted(cmd, s.grid, flag)) continue;
-      if (std::strcmp(flag, "--rho-max") == 0) opt.rho_max = value;
+      if (std::strcmp(flag, "--rho-max") == 0) opt.search.rho_max = value;
       if (std::strcmp(flag, "--margin-stroke") == 0) s.params.margin_stroke = value;
       if (std::strcmp(flag, "--stick-margin") == 0) s.params.stick_margin = value;
     }
     RequireInRange("--reach-evaluations", opt.from_rest.reach_evaluations, 1, kMaxStageEvaluations);
     RequireInRange("--reach-local-evaluations", opt.from_rest.reach_local_evaluations, 0,
                    kMaxStageEvaluations);
-    s.reach = opt.from_rest.Reach(opt.bound, opt.alpha);
+    s.reach = opt.from_rest.Reach(opt.search.force_bound, opt.alpha);
     s.reach.max_seconds = SweepReachOptions().max_seconds;  // the budgets bound each point
   }
-  s.phase.rho_max = s.design.rho_max = s.fourier.harmonic.rho_max = opt.rho_max;
-  s.design.force_bound = s.fourier.harmonic.force_bound = opt.bound;
-  s.fourier.harmonics = opt.harmonics;
-  if (opt.starts_option->count() > 0) s.design.starts = s.fourier.search.starts = opt.starts;
   if (opt.global_evaluations_option->count() > 0) {
-    if (opt.global_algorithm == kMultistart) {
+    if (opt.search.global_algorithm == kMultistart) {
       throw std::invalid_argument(
           "--global-evaluations is invalid with --global-algorithm multistart: expected an "
           "NLopt global algorithm with it (multistart has no evaluation budget)");
     }
-    RequireInRange("--global-evaluations", opt.global_evaluations, 10, kMaxStageEvaluations);
-    s.design.global_evaluations = s.fourier.search.global_evaluations = opt.global_evaluations;
+    RequireInRange("--global-evaluations", opt.search.global_evaluations, 10, kMaxStageEvaluations);
   }
-  s.design.hops = opt.hops;
-  s.design.global_algorithm = s.fourier.search.global_algorithm = opt.global_algorithm;
-  s.design.local_algorithm = s.fourier.harmonic.local_algorithm = opt.local_algorithm;
+  SearchRequest search = opt.search;
+  if (opt.starts_option->count() > 0) search.starts = opt.starts;
+  s.phase.rho_max = search.rho_max;
+  s.design = ForcingOptionsFor(search);
+  s.fourier = FourierOptionsFor(search);
 }
 
 // The comment line: every option that determines the content, with the value this run uses.
@@ -384,14 +376,14 @@ Command AddSweepCommand(CLI::App& app) {
              "status column")
           ->type_name(modes);
   CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt->rho_max,
+      cmd->add_option("--rho-max", opt->search.rho_max,
                       "with --optimize: maximise over orbits whose spectral radius is at most "
                       "rho_max > 0 (docs/model.md sections 8, 12); inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf)
           ->needs(optimize);
   cmd->add_flag_callback(
-         "--stable-only", [opt] { opt->rho_max = 1.0; },
+         "--stable-only", [opt] { opt->search.rho_max = 1.0; },
          "with --optimize: the same as --rho-max 1 (valid and stable orbits only)")
       ->excludes(rho_max)
       ->needs(optimize);
@@ -401,29 +393,29 @@ Command AddSweepCommand(CLI::App& app) {
                               kMinScanPoints, kMaxScanPoints))
       ->capture_default_str()
       ->needs(optimize);
-  cmd->add_option("--bound", opt->bound,
+  cmd->add_option("--bound", opt->search.force_bound,
                   "with --optimize forcing|fourier|reach: the force bound A + c (max |F|) <= "
                   "bound <= T0 (default: T0)");
-  cmd->add_option("--harmonics", opt->harmonics,
+  cmd->add_option("--harmonics", opt->search.harmonics,
                   "with --optimize fourier: the number K of harmonics")
       ->capture_default_str();
   opt->starts_option = cmd->add_option(
       "--starts", opt->starts,
       "with --optimize forcing|fourier|reach: local polishes of the multistart, >= 1 "
       "(default: 10 for forcing and reach's seed, 20 for fourier)");
-  cmd->add_option("--hops", opt->hops,
+  cmd->add_option("--hops", opt->search.hops,
                   "with --optimize forcing|reach: basin-hopping restarts after the starts")
       ->capture_default_str();
-  cmd->add_option("--global-algorithm", opt->global_algorithm,
+  cmd->add_option("--global-algorithm", opt->search.global_algorithm,
                   "with --optimize forcing|fourier|reach: multistart or an NLopt global "
                   "algorithm (GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
       ->capture_default_str();
-  cmd->add_option("--local-algorithm", opt->local_algorithm,
+  cmd->add_option("--local-algorithm", opt->search.local_algorithm,
                   "with --optimize forcing|fourier|reach: the local polish (LN_COBYLA, "
                   "LD_SLSQP, LD_MMA, LD_CCSAQ)")
       ->capture_default_str();
   opt->global_evaluations_option = cmd->add_option(
-      "--global-evaluations", opt->global_evaluations,
+      "--global-evaluations", opt->search.global_evaluations,
       fmt::format("with --optimize forcing|fourier|reach: evaluation budget of an NLopt global "
                   "algorithm (not multistart), 10 to {}",
                   kMaxStageEvaluations));

@@ -22,56 +22,20 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The search options the caller gives, as the command line's options.
+// The search the caller asks for, and the check from rest of every gait and the reach search.
 struct SearchArgs {
-  std::optional<double> bound;
-  int harmonics;
-  std::string global_algorithm, local_algorithm;
-  int global_evaluations, hops;
-  std::optional<int> starts;
-  double rho_max, max_time;
-  // The check from rest of every gait and the reach search.
+  SearchRequest search;
   std::string from_rest_starts, reach_starts;
   int reach_evaluations, reach_local_evaluations;
   double reach_seconds;
   int threads;
 };
 
-// The gait asked for: the force bound, stability, time limit and local polish.
-ForcingDesignOptions GaitOptions(const SearchArgs& a, double rho_max) {
-  ForcingDesignOptions d;
-  d.force_bound = a.bound.value_or(kNaN);
-  d.local_algorithm = a.local_algorithm;
-  d.rho_max = rho_max;
-  d.max_time = a.max_time;
-  return d;
-}
-
-// P2: the gait asked for, searched as the arguments say.
-ForcingDesignOptions DesignOptions(const SearchArgs& a, double rho_max) {
-  ForcingDesignOptions d = GaitOptions(a, rho_max);
-  d.global_algorithm = a.global_algorithm;
-  if (a.starts) d.starts = *a.starts;
-  d.global_evaluations = a.global_evaluations;
-  d.hops = a.hops;
-  return d;
-}
-
-FourierOptions FourierFor(const SearchArgs& a) {
-  FourierOptions fo;
-  fo.harmonic = GaitOptions(a, a.rho_max);
-  fo.harmonics = a.harmonics;
-  fo.search.global_algorithm = a.global_algorithm;
-  if (a.starts) fo.search.starts = *a.starts;
-  fo.search.global_evaluations = a.global_evaluations;
-  return fo;
-}
-
 // The reach search (docs/model.md section 13): its grid and budgets, the full check from rest,
 // alpha fixed if given (NaN: free).
 ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   ReachOptions r;
-  r.force_bound = a.bound.value_or(kNaN);
+  r.force_bound = a.search.force_bound;
   r.alpha = alpha;
   ParseStarts("reach_starts", a.reach_starts, r.search);
   r.search.attractor.threads = a.threads;
@@ -80,13 +44,6 @@ ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   r.local_evaluations = a.reach_local_evaluations;
   r.max_seconds = a.reach_seconds;
   return r;
-}
-
-PhaseOptions PhaseFor(const SearchArgs& a, double rho_max) {
-  PhaseOptions po;
-  po.rho_max = rho_max;
-  po.max_time = a.max_time;
-  return po;
 }
 
 // The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
@@ -101,14 +58,16 @@ py::dict MainJob(const Params& p, const SearchArgs& a) {
   ReachResult reach;
   {
     py::gil_scoped_release release;
-    paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact, PhaseFor(a, kInf));
-    robust = OptimizeForcing(p, DesignOptions(a, a.rho_max));
+    paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
+                          PhaseOptionsFor(a.search.WithRhoMax(kInf)));
+    robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
     reach = OptimizeReach(p, robust, reach_options);
-    fastest = OptimizeForcing(exact, DesignOptions(a, kInf));
-    stable = OptimizeForcing(exact, DesignOptions(a, 1.0));
+    fastest = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
+    stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
   }
-  return py::dict(ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.rho_max,
-                                             a.bound.value_or(p.T0))));
+  return py::dict(
+      ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.search.rho_max,
+                                 std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
 }
 // The reach problem: the fastest motion from rest, seeded with the robust gait.
 py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
@@ -117,10 +76,10 @@ py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha
   ReachResult reach;
   {
     py::gil_scoped_release release;
-    const OptimizeResult robust = OptimizeForcing(p, DesignOptions(a, a.rho_max));
+    const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
     reach = OptimizeReach(p, robust, options);
   }
-  return py::dict(ToPython(json::ReachProblemJson(reach, p, a.rho_max)));
+  return py::dict(ToPython(json::ReachProblemJson(reach, p, a.search.rho_max)));
 }
 
 py::dict Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
@@ -134,20 +93,20 @@ py::dict Problem(const std::string& problem, std::optional<double> A, std::optio
     }
     const Forcing shape = Forcing::Harmonic(*A, *c, 0.0);
     py::gil_scoped_release release;
-    r = OptimizePhase(shape, p, PhaseFor(a, a.rho_max));
+    r = OptimizePhase(shape, p, PhaseOptionsFor(a.search));
   } else if (problem == "forcing") {
     py::gil_scoped_release release;
-    r = OptimizeForcing(p, DesignOptions(a, a.rho_max));
+    r = OptimizeForcing(p, ForcingOptionsFor(a.search));
   } else {
     py::gil_scoped_release release;
-    r = OptimizeFourier(p, FourierFor(a));
+    r = OptimizeFourier(p, FourierOptionsFor(a.search));
   }
   GaitFromRest from_rest;
   {
     py::gil_scoped_release release;
     from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   }
-  return py::dict(ToPython(json::ProblemJson(r, problem.c_str(), from_rest, p, a.rho_max)));
+  return py::dict(ToPython(json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max)));
 }
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
@@ -161,10 +120,10 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
   if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
-  if (problem == "phase" && a.bound) {
+  if (problem == "phase" && !std::isnan(a.search.force_bound)) {
     reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
   }
-  if (problem == "phase" && a.starts) {
+  if (problem == "phase" && a.search.starts) {
     reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
   }
 }
@@ -195,21 +154,22 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
     throw std::invalid_argument(
         fmt::format("bound = {} is invalid: expected a finite bound > 0 (at most T0)", *bound));
   }
-  const SearchArgs args{bound,
-                        harmonics,
-                        global_algorithm,
-                        local_algorithm,
-                        global_evaluations,
-                        hops,
-                        starts,
-                        stable ? 1.0 : rho_max.value_or(kRobustRhoMax),
-                        max_time,
-                        from_rest_starts,
-                        reach_starts,
-                        reach_evaluations,
-                        reach_local_evaluations,
-                        reach_seconds,
-                        threads};
+  SearchArgs args{{},
+                  from_rest_starts,
+                  reach_starts,
+                  reach_evaluations,
+                  reach_local_evaluations,
+                  reach_seconds,
+                  threads};
+  args.search.force_bound = bound.value_or(kNaN);
+  args.search.rho_max = stable ? 1.0 : rho_max.value_or(kRobustRhoMax);
+  args.search.max_time = max_time;
+  args.search.global_algorithm = global_algorithm;
+  args.search.local_algorithm = local_algorithm;
+  args.search.starts = starts;
+  args.search.global_evaluations = global_evaluations;
+  args.search.hops = hops;
+  args.search.harmonics = harmonics;
   RejectUnused(name, A, c, alpha, args);
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();

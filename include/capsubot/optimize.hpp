@@ -6,4 +6,5 @@
 #include "capsubot/optimize_fourier.hpp"
 #include "capsubot/optimize_phase.hpp"
 #include "capsubot/optimize_reach.hpp"
+#include "capsubot/optimize_request.hpp"
 #include "capsubot/optimize_result.hpp"

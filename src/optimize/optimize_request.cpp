@@ -1,0 +1,47 @@
+// Each problem's options from the user's search settings (capsubot/optimize_request.hpp).
+
+#include "capsubot/optimize_request.hpp"
+
+namespace capsubot {
+namespace {
+
+// The gait asked for: force bound, stability, time limit and local polish, with P2's default
+// search. P3 asks it too, for the P2 optimum it starts from.
+ForcingDesignOptions GaitOptionsFor(const SearchRequest& request) {
+  ForcingDesignOptions d;
+  d.force_bound = request.force_bound;
+  d.local_algorithm = request.local_algorithm;
+  d.rho_max = request.rho_max;
+  d.max_time = request.max_time;
+  return d;
+}
+
+}  // namespace
+
+PhaseOptions PhaseOptionsFor(const SearchRequest& request) {
+  PhaseOptions p;
+  p.rho_max = request.rho_max;
+  p.max_time = request.max_time;
+  return p;
+}
+
+ForcingDesignOptions ForcingOptionsFor(const SearchRequest& request) {
+  ForcingDesignOptions d = GaitOptionsFor(request);
+  d.global_algorithm = request.global_algorithm;
+  if (request.starts) d.starts = *request.starts;
+  d.global_evaluations = request.global_evaluations;
+  d.hops = request.hops;
+  return d;
+}
+
+FourierOptions FourierOptionsFor(const SearchRequest& request) {
+  FourierOptions f;
+  f.harmonic = GaitOptionsFor(request);
+  f.harmonics = request.harmonics;
+  f.search.global_algorithm = request.global_algorithm;
+  if (request.starts) f.search.starts = *request.starts;
+  f.search.global_evaluations = request.global_evaluations;
+  return f;
+}
+
+}  // namespace capsubot
