@@ -46,10 +46,7 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
   f0_ = c_ + f0_;
 }
 
-double SegmentForce::F(double s) const {
-  if (s == 0.0) return f0_;
-  const double c1 = std::cos(s), s1 = std::sin(s);
-  if (K_ == 1) return c_ + (a_[0] * c1 + b_[0] * s1);  // the loop below for K = 1
+double SegmentForce::SumF(double c1, double s1) const {
   double ck = c1, sk = s1, sum = 0.0;
   for (int k = 0; k < K_; ++k) {
     sum += a_[k] * ck + b_[k] * sk;
@@ -57,19 +54,10 @@ double SegmentForce::F(double s) const {
     sk = sk * c1 + ck * s1;
     ck = next;
   }
-  return c_ + sum;
+  return sum;
 }
 
-ForceValues SegmentForce::Values(double s) const {
-  if (s == 0.0) return {f0_, 0.0, 0.0};
-  // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
-  // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2.
-  const double c1 = std::cos(s), s1 = std::sin(s);
-  if (K_ == 1) {  // the loop below for K = 1, without the recurrence
-    const double one_minus_c = 1.0 - c1;
-    return {c_ + (a_[0] * c1 + b_[0] * s1), c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c),
-            0.5 * c_ * s * s + (a2_[0] * one_minus_c + b2_[0] * (s - s1))};
-  }
+ForceValues SegmentForce::SumValues(double s, double c1, double s1) const {
   double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
   for (int k = 0; k < K_; ++k) {
     const double one_minus_c = 1.0 - ck;

@@ -128,35 +128,54 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
-//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else the root of f'
-//     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
-//     gives the first crossing;
+//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply; where they meet
+//     (st, the maximum itself for a parabola) f is evaluated once: f(st) >= 0 brackets the
+//     first crossing in (l, st] at once, else the root of f' from st gives the maximum
+//     exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max] gives the
+//     first crossing;
 //   - from the wall: concave cannot come back; convex comes back only after its minimum (root
-//     of f'), then as above; a piece with F + b = 0 within rounding (sg.tol) is neither: the
-//     body stays where it is.
+//     of f'): where the tangents at the ends meet, f(st) < 0 already brackets the return in
+//     (st, r], else the minimum is found from st and then as above; a piece with F + b = 0
+//     within rounding (sg.tol) is neither: the body stays where it is.
 // Root finder: detail::SafeNewtonFrom (Newton with the closed-form derivative, kept inside
 // the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
-// state. Returns +inf when there is no zero in (l, r].
+// state. Every root search starts from a point whose f and f' are known (an end of the
+// bracket on the side where f f'' > 0, or st), so no value is computed twice. Returns +inf
+// when there is no zero in (l, r].
 double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
                     double fr, double dr, double curvature, bool from_wall) {
   const double level = Position(wall), dir = Sign(wall);
-  // f = dir (x - level), f' = dir u, f'' = dir x'': value and derivative from one sincos.
-  const auto f = [&](double s) { return dir * (sg.X(s, sg.f.Values(s)) - level); };
-  const auto df = [&](double s) { return dir * sg.U(s, sg.f.Values(s)); };
-  const auto fdf = [&](double s) {
+  // f = dir (x - level), f' = dir u, f'' = dir x'': all three from one sincos.
+  struct Point {
+    double f, df, ddf;
+  };
+  const auto at = [&](double s) {
     const ForceValues w = sg.f.Values(s);
-    return std::pair<double, double>(dir * (sg.X(s, w) - level), dir * sg.U(s, w));
+    return Point{dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
+  };
+  const auto fdf = [&](double s) {
+    const Point p = at(s);
+    return std::pair<double, double>(p.f, p.df);
   };
   const auto dfddf = [&](double s) {
-    const ForceValues w = sg.f.Values(s);
-    return std::pair<double, double>(dir * sg.U(s, w), dir * sg.Accel(w));
+    const Point p = at(s);
+    return std::pair<double, double>(p.df, p.ddf);
+  };
+  // Where the tangents at l and r meet (inside (l, r) when dl and dr have opposite signs;
+  // kept there against rounding).
+  const auto tangents_meet = [&] {
+    return std::clamp((fr - fl - dr * r + dl * l) / (dl - dr), l, r);
   };
   if (from_wall) {
     if (curvature > sg.tol && fr >= 0.0) {
       // Convex, leaving the wall: it returns after its minimum.
-      double lo = 0.0;
-      if (dl < 0.0 && dr > 0.0) lo = detail::SafeNewtonFused(df, dfddf, 0.0, r);
-      if (f(lo) < 0.0) return detail::SafeNewtonFused(f, fdf, lo, r);
+      if (!(dl < 0.0 && dr > 0.0)) return l;  // pressed into the wall (settled first)
+      const double st = tangents_meet();
+      const Point pt = at(st);
+      if (pt.f < 0.0) return detail::SafeNewtonFrom(fdf, st, r, pt.f, fr, r, fr, dr);
+      const double lo = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
+      const Point pm = at(lo);
+      if (pm.f < 0.0) return detail::SafeNewtonFrom(fdf, lo, r, pm.f, fr, r, fr, dr);
       return l;  // pressed into the wall (the caller settles this case first)
     }
   } else if (fl < 0.0 && fr >= 0.0) {
@@ -166,11 +185,14 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
     return detail::SafeNewtonFrom(fdf, l, r, fl, fr, l, fl, dl);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
     // Concave with an interior maximum: bound it by the two tangents first.
-    const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
+    const double st = tangents_meet();
     const double bound = fl + dl * (st - l);
     if (bound >= 0.0) {
-      const double smax = detail::SafeNewtonFused(df, dfddf, l, r);
-      if (f(smax) >= 0.0) return detail::SafeNewtonFused(f, fdf, l, smax);
+      const Point pt = at(st);
+      if (pt.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, st, fl, pt.f, l, fl, dl);
+      const double smax = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
+      const Point pm = at(smax);
+      if (pm.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, smax, fl, pm.f, l, fl, dl);
     }
   }
   return kInf;
