@@ -31,7 +31,7 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
   c_ = motor.mean();
   f0_ = 0.0;
   for (int k = 1; k <= K_; ++k) {
-    const double ck = std::cos(k * p), sk = std::sin(k * p);
+    const auto [ck, sk] = LocalCosSin(k * p);
     const double a = motor.a(k) * ck + motor.b(k) * sk;
     const double b = motor.b(k) * ck - motor.a(k) * sk;
     const double inv = 1.0 / k, inv2 = 1.0 / (double(k) * k);
@@ -85,7 +85,9 @@ CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
   }
   // A motor crossing t is the segment's crossing t - shift, mapped to [lo, lo + tau).
   for (int i = 0; i < entry->t.n; ++i) {
-    double p = lo + std::fmod(entry->t.phi[i] - shift_ - lo, kTau);
+    // (fmod returns a dividend smaller than tau unchanged: the usual case costs no call.)
+    const double d = entry->t.phi[i] - shift_ - lo;
+    double p = lo + (std::abs(d) < kTau ? d : std::fmod(d, kTau));
     if (p < lo) p += kTau;
     if (lo + kTau - p < kSameCrossing) p = lo;
     if (p > hi + kSameCrossing) continue;

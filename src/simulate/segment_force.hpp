@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "capsubot/forcing.hpp"
+#include "simulate/local_sincos.hpp"
 
 namespace capsubot::detail {
 
@@ -27,13 +28,14 @@ class SegmentForce {
   /// (at most kMaxLevels); Crossings of these levels then only shift them to the segment.
   void Prepare(const Forcing& motor, const double* levels, int n_levels);
   /// F(s) = G(origin + s) with G the motor force and origin = motor.phi0() + shift: the same
-  /// series as motor.WithPhase(motor.phi0() + shift). shift in [0, tau).
+  /// series as motor.WithPhase(motor.phi0() + shift) to rounding (LocalCosSin of k origin).
+  /// shift in [0, tau).
   void Set(const Forcing& motor, double shift);
 
   /// F(s).
   double F(double s) const {
     if (s == 0.0) return f0_;
-    const double c1 = std::cos(s), s1 = std::sin(s);
+    const auto [c1, s1] = LocalCosSin(s);
     if (K_ == 1) return c_ + (a_[0] * c1 + b_[0] * s1);  // SumF for K = 1
     return c_ + SumF(c1, s1);
   }
@@ -44,7 +46,7 @@ class SegmentForce {
     if (s == 0.0) return {f0_, 0.0, 0.0};
     // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
     // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2.
-    const double c1 = std::cos(s), s1 = std::sin(s);
+    const auto [c1, s1] = LocalCosSin(s);
     if (K_ == 1) {  // SumValues for K = 1, without the recurrence
       const double one_minus_c = 1.0 - c1;
       return {c_ + (a_[0] * c1 + b_[0] * s1), c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c),

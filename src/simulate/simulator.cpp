@@ -28,6 +28,9 @@ constexpr double kLevelTol = 1e-12;
 // kChatterSpan in phase of the previous one, end in the body resting on the wall.
 constexpr int kMaxChatterImpacts = 10000;
 constexpr double kChatterSpan = 1e-3;
+// Points at which ReachOnPiece evaluates a concave piece while it bounds its maximum (Newton
+// steps on f', a few near a smooth maximum; this many only guard against rounding loops).
+constexpr int kMaxTangentCuts = 100;
 // More consecutive events than this without any progress in phase: report, never hang.
 constexpr int kMaxStalledEvents = 1000;
 
@@ -184,15 +187,33 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
     if (curvature > 0.0) return detail::SafeNewtonFrom(fdf, l, r, fl, fr, r, fr, dr);
     return detail::SafeNewtonFrom(fdf, l, r, fl, fr, l, fl, dl);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
-    // Concave with an interior maximum: bound it by the two tangents first.
-    const double st = tangents_meet();
-    const double bound = fl + dl * (st - l);
-    if (bound >= 0.0) {
-      const Point pt = at(st);
-      if (pt.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, st, fl, pt.f, l, fl, dl);
-      const double smax = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
-      const Point pm = at(smax);
-      if (pm.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, smax, fl, pm.f, l, fl, dl);
+    // Concave with its maximum inside [a, b] (f'(a) > 0 > f'(b)): f lies below its tangents,
+    // so the height where the tangents at a and b meet bounds the maximum; below 0: no zero.
+    // Otherwise f is evaluated at a point x (first where the tangents meet, then Newton steps
+    // on f' towards the maximum): f(x) >= 0 brackets the first crossing in (l, x]; else the
+    // sign of f'(x) shrinks [a, b] to the side of the maximum, and once the Newton step is
+    // below the root tolerance x is the maximum, below 0: no zero (a grazing touch, f = 0
+    // at the maximum, counts as an impact).
+    double a = l, fa = fl, da = dl, b = r, fb = fr, db = dr;
+    const auto meet = [&] { return std::clamp((fb - fa - db * b + da * a) / (da - db), a, b); };
+    double x = meet();
+    if (fa + da * (x - a) < 0.0) return kInf;
+    for (int cut = 0; cut < kMaxTangentCuts; ++cut) {
+      const Point p = at(x);
+      if (p.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, x, fl, p.f, l, fl, dl);
+      if (p.df > 0.0) {
+        a = x, fa = p.f, da = p.df;
+      } else if (p.df < 0.0) {
+        b = x, fb = p.f, db = p.df;
+      } else {
+        break;  // x is the maximum
+      }
+      const double step = p.df / p.ddf;
+      if (std::abs(step) < detail::kRootAbsTol || b - a < detail::kRootAbsTol) break;
+      const double newton = x - step;
+      const double st = meet();
+      if (fa + da * (st - a) < 0.0) break;  // the bound of the smaller bracket
+      x = newton > a && newton < b ? newton : st;
     }
   }
   return kInf;
