@@ -12,6 +12,21 @@ namespace {
 // the start of the interval is its start.
 constexpr double kSameCrossing = 1e-11;
 
+// 1/k and 1/k^2 for k = 1..kMaxHarmonics (the same correctly rounded quotients as dividing
+// per segment).
+struct Inverse {
+  double k1, k2;
+};
+constexpr std::array<Inverse, kMaxHarmonics> Inverses() {
+  std::array<Inverse, kMaxHarmonics> inv{};
+  for (int k = 1; k <= kMaxHarmonics; ++k) {
+    inv[k - 1].k1 = 1.0 / k;
+    inv[k - 1].k2 = 1.0 / (double(k) * k);
+  }
+  return inv;
+}
+constexpr std::array<Inverse, kMaxHarmonics> kInverse = Inverses();
+
 }  // namespace
 
 void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels) {
@@ -34,7 +49,7 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
     const auto [ck, sk] = LocalCosSin(k * p);
     const double a = motor.a(k) * ck + motor.b(k) * sk;
     const double b = motor.b(k) * ck - motor.a(k) * sk;
-    const double inv = 1.0 / k, inv2 = 1.0 / (double(k) * k);
+    const double inv = kInverse[k - 1].k1, inv2 = kInverse[k - 1].k2;
     a_[k - 1] = a;
     b_[k - 1] = b;
     a1_[k - 1] = a * inv;

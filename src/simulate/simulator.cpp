@@ -259,25 +259,34 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
 // piece whose end has sgn v <= 0 brackets the unique stop.
 double FirstStop(const Segment& sg, double limit) {
-  const auto v = [&](double s) { return sg.V(s, sg.f.Values(s)); };
   const auto vdv = [&](double s) {
     const ForceValues w = sg.f.Values(s);
     return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
   };
   const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
-  double l = 0.0, vl = sg.v0;
+  double l = 0.0;
+  auto [vl, dvl] = vdv(0.0);
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    const double vr = v(r);
+    const auto [vr, dvr] = vdv(r);
     if (sg.sgn * vr <= 0.0) {
+      // Newton from the end nearer the stop whose tangent reaches inside the piece (no value
+      // to compute first), else from the middle.
+      const double tl = l - vl / dvl, tr = r - vr / dvr;
+      const bool from_l = tl > l && tl<r, from_r = tr> l && tr < r;
+      if (from_l && (!from_r || std::abs(vl) < std::abs(vr))) {
+        return detail::SafeNewtonFrom(vdv, l, r, vl, vr, l, vl, dvl);
+      }
+      if (from_r) return detail::SafeNewtonFrom(vdv, l, r, vl, vr, r, vr, dvr);
       const double mid = 0.5 * (l + r);
       const auto [vm, dvm] = vdv(mid);
       return detail::SafeNewtonFrom(vdv, l, r, vl, vr, mid, vm, dvm);
     }
     l = r;
     vl = vr;
+    dvl = dvr;
   }
   return kInf;
 }
