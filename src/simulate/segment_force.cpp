@@ -12,6 +12,21 @@ namespace {
 // the start of the interval is its start.
 constexpr double kSameCrossing = 1e-11;
 
+// 1/k and 1/k^2 for k = 1..kMaxHarmonics (the same correctly rounded quotients as dividing
+// per segment).
+struct Inverse {
+  double k1, k2;
+};
+constexpr std::array<Inverse, kMaxHarmonics> Inverses() {
+  std::array<Inverse, kMaxHarmonics> inv{};
+  for (int k = 1; k <= kMaxHarmonics; ++k) {
+    inv[k - 1].k1 = 1.0 / k;
+    inv[k - 1].k2 = 1.0 / (double(k) * k);
+  }
+  return inv;
+}
+constexpr std::array<Inverse, kMaxHarmonics> kInverse = Inverses();
+
 }  // namespace
 
 void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels) {
@@ -31,10 +46,10 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
   c_ = motor.mean();
   f0_ = 0.0;
   for (int k = 1; k <= K_; ++k) {
-    const double ck = std::cos(k * p), sk = std::sin(k * p);
+    const auto [ck, sk] = LocalCosSin(k * p);
     const double a = motor.a(k) * ck + motor.b(k) * sk;
     const double b = motor.b(k) * ck - motor.a(k) * sk;
-    const double inv = 1.0 / k, inv2 = 1.0 / (double(k) * k);
+    const double inv = kInverse[k - 1].k1, inv2 = kInverse[k - 1].k2;
     a_[k - 1] = a;
     b_[k - 1] = b;
     a1_[k - 1] = a * inv;
@@ -46,10 +61,7 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
   f0_ = c_ + f0_;
 }
 
-double SegmentForce::F(double s) const {
-  if (s == 0.0) return f0_;
-  const double c1 = std::cos(s), s1 = std::sin(s);
-  if (K_ == 1) return c_ + (a_[0] * c1 + b_[0] * s1);  // the loop below for K = 1
+double SegmentForce::SumF(double c1, double s1) const {
   double ck = c1, sk = s1, sum = 0.0;
   for (int k = 0; k < K_; ++k) {
     sum += a_[k] * ck + b_[k] * sk;
@@ -57,19 +69,10 @@ double SegmentForce::F(double s) const {
     sk = sk * c1 + ck * s1;
     ck = next;
   }
-  return c_ + sum;
+  return sum;
 }
 
-ForceValues SegmentForce::Values(double s) const {
-  if (s == 0.0) return {f0_, 0.0, 0.0};
-  // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
-  // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2.
-  const double c1 = std::cos(s), s1 = std::sin(s);
-  if (K_ == 1) {  // the loop below for K = 1, without the recurrence
-    const double one_minus_c = 1.0 - c1;
-    return {c_ + (a_[0] * c1 + b_[0] * s1), c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c),
-            0.5 * c_ * s * s + (a2_[0] * one_minus_c + b2_[0] * (s - s1))};
-  }
+ForceValues SegmentForce::SumValues(double s, double c1, double s1) const {
   double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
   for (int k = 0; k < K_; ++k) {
     const double one_minus_c = 1.0 - ck;
@@ -97,7 +100,9 @@ CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
   }
   // A motor crossing t is the segment's crossing t - shift, mapped to [lo, lo + tau).
   for (int i = 0; i < entry->t.n; ++i) {
-    double p = lo + std::fmod(entry->t.phi[i] - shift_ - lo, kTau);
+    // (fmod returns a dividend smaller than tau unchanged: the usual case costs no call.)
+    const double d = entry->t.phi[i] - shift_ - lo;
+    double p = lo + (std::abs(d) < kTau ? d : std::fmod(d, kTau));
     if (p < lo) p += kTau;
     if (lo + kTau - p < kSameCrossing) p = lo;
     if (p > hi + kSameCrossing) continue;

@@ -28,6 +28,9 @@ constexpr double kLevelTol = 1e-12;
 // kChatterSpan in phase of the previous one, end in the body resting on the wall.
 constexpr int kMaxChatterImpacts = 10000;
 constexpr double kChatterSpan = 1e-3;
+// Points at which ReachOnPiece evaluates a concave piece while it bounds its maximum (Newton
+// steps on f', a few near a smooth maximum; this many only guard against rounding loops).
+constexpr int kMaxTangentCuts = 100;
 // More consecutive events than this without any progress in phase: report, never hang.
 constexpr int kMaxStalledEvents = 1000;
 
@@ -128,35 +131,54 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
-//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply, else the root of f'
-//     gives it exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max]
-//     gives the first crossing;
+//     f' = dir u) reaches 0; two tangent lines bound the maximum cheaply; where they meet
+//     (st, the maximum itself for a parabola) f is evaluated once: f(st) >= 0 brackets the
+//     first crossing in (l, st] at once, else the root of f' from st gives the maximum
+//     exactly, and if f(max) >= 0 (including a grazing touch) the root on [l, max] gives the
+//     first crossing;
 //   - from the wall: concave cannot come back; convex comes back only after its minimum (root
-//     of f'), then as above; a piece with F + b = 0 within rounding (sg.tol) is neither: the
-//     body stays where it is.
+//     of f'): where the tangents at the ends meet, f(st) < 0 already brackets the return in
+//     (st, r], else the minimum is found from st and then as above; a piece with F + b = 0
+//     within rounding (sg.tol) is neither: the body stays where it is.
 // Root finder: detail::SafeNewtonFrom (Newton with the closed-form derivative, kept inside
 // the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
-// state. Returns +inf when there is no zero in (l, r].
+// state. Every root search starts from a point whose f and f' are known (an end of the
+// bracket on the side where f f'' > 0, or st), so no value is computed twice. Returns +inf
+// when there is no zero in (l, r].
 double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
                     double fr, double dr, double curvature, bool from_wall) {
   const double level = Position(wall), dir = Sign(wall);
-  // f = dir (x - level), f' = dir u, f'' = dir x'': value and derivative from one sincos.
-  const auto f = [&](double s) { return dir * (sg.X(s, sg.f.Values(s)) - level); };
-  const auto df = [&](double s) { return dir * sg.U(s, sg.f.Values(s)); };
-  const auto fdf = [&](double s) {
+  // f = dir (x - level), f' = dir u, f'' = dir x'': all three from one sincos.
+  struct Point {
+    double f, df, ddf;
+  };
+  const auto at = [&](double s) {
     const ForceValues w = sg.f.Values(s);
-    return std::pair<double, double>(dir * (sg.X(s, w) - level), dir * sg.U(s, w));
+    return Point{dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
+  };
+  const auto fdf = [&](double s) {
+    const Point p = at(s);
+    return std::pair<double, double>(p.f, p.df);
   };
   const auto dfddf = [&](double s) {
-    const ForceValues w = sg.f.Values(s);
-    return std::pair<double, double>(dir * sg.U(s, w), dir * sg.Accel(w));
+    const Point p = at(s);
+    return std::pair<double, double>(p.df, p.ddf);
+  };
+  // Where the tangents at l and r meet (inside (l, r) when dl and dr have opposite signs;
+  // kept there against rounding).
+  const auto tangents_meet = [&] {
+    return std::clamp((fr - fl - dr * r + dl * l) / (dl - dr), l, r);
   };
   if (from_wall) {
     if (curvature > sg.tol && fr >= 0.0) {
       // Convex, leaving the wall: it returns after its minimum.
-      double lo = 0.0;
-      if (dl < 0.0 && dr > 0.0) lo = detail::SafeNewtonFused(df, dfddf, 0.0, r);
-      if (f(lo) < 0.0) return detail::SafeNewtonFused(f, fdf, lo, r);
+      if (!(dl < 0.0 && dr > 0.0)) return l;  // pressed into the wall (settled first)
+      const double st = tangents_meet();
+      const Point pt = at(st);
+      if (pt.f < 0.0) return detail::SafeNewtonFrom(fdf, st, r, pt.f, fr, r, fr, dr);
+      const double lo = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
+      const Point pm = at(lo);
+      if (pm.f < 0.0) return detail::SafeNewtonFrom(fdf, lo, r, pm.f, fr, r, fr, dr);
       return l;  // pressed into the wall (the caller settles this case first)
     }
   } else if (fl < 0.0 && fr >= 0.0) {
@@ -165,12 +187,33 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
     if (curvature > 0.0) return detail::SafeNewtonFrom(fdf, l, r, fl, fr, r, fr, dr);
     return detail::SafeNewtonFrom(fdf, l, r, fl, fr, l, fl, dl);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
-    // Concave with an interior maximum: bound it by the two tangents first.
-    const double st = (fr - fl - dr * r + dl * l) / (dl - dr);
-    const double bound = fl + dl * (st - l);
-    if (bound >= 0.0) {
-      const double smax = detail::SafeNewtonFused(df, dfddf, l, r);
-      if (f(smax) >= 0.0) return detail::SafeNewtonFused(f, fdf, l, smax);
+    // Concave with its maximum inside [a, b] (f'(a) > 0 > f'(b)): f lies below its tangents,
+    // so the height where the tangents at a and b meet bounds the maximum; below 0: no zero.
+    // Otherwise f is evaluated at a point x (first where the tangents meet, then Newton steps
+    // on f' towards the maximum): f(x) >= 0 brackets the first crossing in (l, x]; else the
+    // sign of f'(x) shrinks [a, b] to the side of the maximum, and once the Newton step is
+    // below the root tolerance x is the maximum, below 0: no zero (a grazing touch, f = 0
+    // at the maximum, counts as an impact).
+    double a = l, fa = fl, da = dl, b = r, fb = fr, db = dr;
+    const auto meet = [&] { return std::clamp((fb - fa - db * b + da * a) / (da - db), a, b); };
+    double x = meet();
+    if (fa + da * (x - a) < 0.0) return kInf;
+    for (int cut = 0; cut < kMaxTangentCuts; ++cut) {
+      const Point p = at(x);
+      if (p.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, x, fl, p.f, l, fl, dl);
+      if (p.df > 0.0) {
+        a = x, fa = p.f, da = p.df;
+      } else if (p.df < 0.0) {
+        b = x, fb = p.f, db = p.df;
+      } else {
+        break;  // x is the maximum
+      }
+      const double step = p.df / p.ddf;
+      if (std::abs(step) < detail::kRootAbsTol || b - a < detail::kRootAbsTol) break;
+      const double newton = x - step;
+      const double st = meet();
+      if (fa + da * (st - a) < 0.0) break;  // the bound of the smaller bracket
+      x = newton > a && newton < b ? newton : st;
     }
   }
   return kInf;
@@ -216,25 +259,34 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
 // piece whose end has sgn v <= 0 brackets the unique stop.
 double FirstStop(const Segment& sg, double limit) {
-  const auto v = [&](double s) { return sg.V(s, sg.f.Values(s)); };
   const auto vdv = [&](double s) {
     const ForceValues w = sg.f.Values(s);
     return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
   };
   const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
-  double l = 0.0, vl = sg.v0;
+  double l = 0.0;
+  auto [vl, dvl] = vdv(0.0);
   int i = 0;
   while (l < limit) {
     while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
     const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    const double vr = v(r);
+    const auto [vr, dvr] = vdv(r);
     if (sg.sgn * vr <= 0.0) {
+      // Newton from the end nearer the stop whose tangent reaches inside the piece (no value
+      // to compute first), else from the middle.
+      const double tl = l - vl / dvl, tr = r - vr / dvr;
+      const bool from_l = tl > l && tl<r, from_r = tr> l && tr < r;
+      if (from_l && (!from_r || std::abs(vl) < std::abs(vr))) {
+        return detail::SafeNewtonFrom(vdv, l, r, vl, vr, l, vl, dvl);
+      }
+      if (from_r) return detail::SafeNewtonFrom(vdv, l, r, vl, vr, r, vr, dvr);
       const double mid = 0.5 * (l + r);
       const auto [vm, dvm] = vdv(mid);
       return detail::SafeNewtonFrom(vdv, l, r, vl, vr, mid, vm, dvm);
     }
     l = r;
     vl = vr;
+    dvl = dvr;
   }
   return kInf;
 }
