@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,8 @@
 
 namespace capsubot {
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The message of the std::invalid_argument thrown by f ("" if none).
 template <class Fn>
@@ -126,7 +129,22 @@ INSTANTIATE_TEST_SUITE_P(
                       BadSpec{"T0=0:1:3", "expected friction bounds T0 > 0"},
                       BadSpec{"e=0:1.5:3", "expected restitutions 0 <= e <= 1"},
                       BadSpec{"margin=0:0.5:3", "expected margins 0 <= margin < 0.5"},
-                      BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"}));
+                      BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"},
+                      // Infinity is a value of rho_max only (no bound), spelled inf, in a list.
+                      BadSpec{"bound=1,inf", "expected finite values (not NaN or infinite)"},
+                      BadSpec{"rho_max=0.5,Infinity", "value 2 = 'Infinity' is not a number"},
+                      BadSpec{"rho_max=0.5,-inf", "value 2 = '-inf' is not a number"},
+                      BadSpec{"rho_max=0.5,nan", "expected finite values or inf"},
+                      BadSpec{"rho_max=0.5:inf:3", "expected finite bounds"}));
+
+TEST(Grid, RhoMaxListAcceptsInfinityAsNoBoundAndWritesItAsInf) {
+  const GridAxis axis = ParseGridAxis("rho_max=0.9,inf");
+  ASSERT_EQ(axis.size(), 2);
+  EXPECT_EQ(axis.Value(0), 0.9);
+  EXPECT_EQ(axis.Value(1), kInfinity);
+  EXPECT_EQ(axis.ToString(), "rho_max=0.9,inf");  // as the CSV writes it (WriteNumber)
+  EXPECT_NO_THROW(axis.Validate());
+}
 
 TEST(GridRejects, TheSpecItselfIsQuotedInTheMessage) {
   EXPECT_EQ(Message([] { ParseGridAxis("phi0=0:1:0"); }),
@@ -256,7 +274,8 @@ TEST(Grid, ThreeAxesRunRowMajorWithTheFirstSlowest) {
 
 // Bounded random test of the parser: specs generated from the grammar (names, numbers, counts,
 // spacings), half of them then mutated by random character edits, either parse to an axis
-// that validates, whose values are finite and inside its range, or are rejected with a
+// that validates, whose values are finite (or inf for rho_max) and inside its range, or are
+// rejected with a
 // message that quotes them; nothing else (no crash, no other exception). 20,000 specs: well
 // under a second.
 TEST(GridFuzz, EveryStringParsesToAValidAxisOrIsRejectedWithItsMessage) {
@@ -306,7 +325,8 @@ TEST(GridFuzz, EveryStringParsesToAValidAxisOrIsRejectedWithItsMessage) {
       ASSERT_LE(axis.size(), kMaxGridPoints) << spec;
       for (std::int64_t k : {std::int64_t{0}, axis.size() / 2, axis.size() - 1}) {
         const double v = axis.Value(k);
-        ASSERT_TRUE(std::isfinite(v)) << spec << " value " << k;
+        const bool no_bound = axis.parameter == SweepParameter::krho_max && v == kInfinity;
+        ASSERT_TRUE(std::isfinite(v) || no_bound) << spec << " value " << k;
         ASSERT_GE(v, axis.Min()) << spec;
         ASSERT_LE(v, axis.Max()) << spec;
       }
