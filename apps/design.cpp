@@ -286,13 +286,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   o.threads = CapThreads(opt.from_rest.threads, "capsubot design");
   const bool tty = StderrIsTerminal();
   ProgressBar bar("points");
-  SweepProgressCallback progress;
-  if (tty) {
-    progress = [&bar](const SweepProgress& p) {
-      bar.Update(static_cast<double>(p.points_done), static_cast<double>(p.points_total), p.seconds,
-                 static_cast<double>(p.points_resumed));
-    };
-  }
+  const SweepProgressCallback progress = GridProgress(bar);
   SweepSummary summary;
   try {
     summary = RunDesignGrid(o, progress);

@@ -187,17 +187,6 @@ TEST(DesignGrid, AResumedRunIsByteIdenticalToAnUninterruptedOne) {
   }
 }
 
-// The message of the std::invalid_argument thrown by f ("" if none).
-template <class Fn>
-std::string Message(const Fn& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(DesignGrid, BadGridsAreRefusedNamingTheParameterItsValueAndTheRule) {
   const struct {
     const char* spec;
@@ -217,23 +206,24 @@ TEST(DesignGrid, BadGridsAreRefusedNamingTheParameterItsValueAndTheRule) {
   };
   int checked = 0;
   for (const auto& c : parse_cases) {
-    const std::string message = Message([&] { ParseDesignGridAxis(c.spec); });
+    const std::string message =
+        testing::InvalidArgumentMessage([&] { ParseDesignGridAxis(c.spec); });
     EXPECT_NE(message.find(c.message), std::string::npos) << c.spec << ": " << message;
     ++checked;
   }
   EXPECT_EQ(checked, 8);
 
   DesignGridOptions o = Options(testing::TempPath("design_grid_bad.csv").string());
-  EXPECT_EQ(Message([&] { o.Validate(); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "grid is missing: expected at least one axis (name=lo:hi:n, name=lo:hi:n:log or "
             "name=v1,v2,...)");
   o.axes = {ParseDesignGridAxis("e=0.5"), ParseDesignGridAxis("e=0.6")};
-  EXPECT_EQ(Message([&] { o.Validate(); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "grid e=0.6 is invalid: parameter e already has a grid (e=0.5): expected each "
             "parameter at most once");
   o.axes = {ParseDesignGridAxis("force-amplitude=0.4,0.5")};
   o.input.force.sin = {0.5};
-  EXPECT_NE(Message([&] {
+  EXPECT_NE(testing::InvalidArgumentMessage([&] {
               o.Validate();
             }).find("grid force-amplitude=0.4,0.5 is invalid with a Fourier motor force"),
             std::string::npos);
@@ -242,12 +232,12 @@ TEST(DesignGrid, BadGridsAreRefusedNamingTheParameterItsValueAndTheRule) {
   o.input.m2_max = 0.3;
   o.axes = {ParseDesignGridAxis("m2=0.2")};
   o.threads = -1;
-  EXPECT_EQ(Message([&] { o.Validate(); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "threads = -1 is invalid: expected 1 <= threads <= 1024 (0: all cores)");
   o.threads = 1;
   o.shards = 2;
   o.shard = 0;
-  EXPECT_EQ(Message([&] { o.Validate(); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "shard = 0/2 is invalid: the grid has only 1 points: expected at most as many shards "
             "as points");
   EXPECT_FALSE(std::filesystem::exists(o.output));
