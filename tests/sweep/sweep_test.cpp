@@ -34,6 +34,7 @@
 #include "capsubot/validity.hpp"
 #include "sweep/sweep_file.hpp"
 #include "sweep/sweep_rows.hpp"
+#include "test_utils.hpp"
 
 namespace capsubot {
 namespace {
@@ -375,16 +376,6 @@ TEST(Sweep, RefusesAnOutputAnotherSweepIsWriting) {
   EXPECT_TRUE(Exists(o.output));
 }
 
-template <class Fn>
-std::string InvalidArgumentMessage(const Fn& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
   struct Bad {
     std::function<void(SweepOptions&)> change;
@@ -451,7 +442,7 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
   for (const Bad& bad : cases) {
     SweepOptions o = PaperPhaseSweep("x.csv", 5);
     bad.change(o);
-    const std::string message = InvalidArgumentMessage([&] { o.Validate(); });
+    const std::string message = testing::InvalidArgumentMessage([&] { o.Validate(); });
     const bool prefix =
         bad.message.size() > 3 && bad.message.compare(bad.message.size() - 3, 3, "...") == 0;
     if (prefix) {
@@ -465,7 +456,7 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
   }
   EXPECT_EQ(checked, 14);
   EXPECT_EQ(ParseSweepOptimize("forcing"), SweepOptimize::kForcing);
-  EXPECT_EQ(InvalidArgumentMessage([] { ParseSweepOptimize("phi1"); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([] { ParseSweepOptimize("phi1"); }),
             "optimize = phi1 is invalid: expected one of phi0, forcing, fourier, reach");
 }
 
