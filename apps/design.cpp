@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -20,8 +21,10 @@
 
 #include "attract_options.hpp"
 #include "capsubot/design_from_rest.hpp"
+#include "capsubot/design_grid.hpp"
 #include "capsubot/gait_from_rest.hpp"
 #include "capsubot/io.hpp"
+#include "cli.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
 #include "from_rest_report.hpp"
@@ -38,8 +41,10 @@ struct DesignCliOptions {
   FromRestCliOptions from_rest;  // the from-rest search (part b): starts, budgets, time limit
   bool part_b = false;           // --from-rest: also part (b), the fastest motion from rest
   bool json = false;
-  std::string sweep;
+  std::vector<std::string> grids;  // --grid NAME=SPEC: one design a point, to the CSV -o
   std::string output;
+  std::string shard;  // "K/N", empty: the whole grid
+  bool resume = false;
 };
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -222,79 +227,83 @@ DesignFromRestProgress StageProgress() {
   };
 }
 
-// "m2:0.01:2:50" -> variable, lo, hi, n.
-struct SweepSpec {
-  DesignSweepVariable variable = DesignSweepVariable::kM2;
-  double lo = kNaN, hi = kNaN;
-  int n = 0;
-};
-
-SweepSpec ParseSweep(const std::string& text) {
-  const auto bad = [&text]() {
-    return std::invalid_argument(fmt::format(
-        "--sweep = {} is invalid: expected m2:M2MIN:M2MAX:N [kg] or frequency:FMIN:FMAX:N [Hz]",
-        text));
-  };
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (int i = 0; i < 4; ++i) {
-    const std::size_t end = i < 3 ? text.find(':', start) : text.size();
-    if (end == std::string::npos) throw bad();
-    parts.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  SweepSpec s;
-  if (parts[0] == "m2") {
-    s.variable = DesignSweepVariable::kM2;
-  } else if (parts[0] == "frequency") {
-    s.variable = DesignSweepVariable::kFrequency;
-  } else {
-    throw bad();
-  }
-  try {  // the numbers of every option (ParseNumber, ParseInteger); the rule names the spec
-    s.lo = ParseNumber(parts[1], "MIN");
-    s.hi = ParseNumber(parts[2], "MAX");
-    s.n = static_cast<int>(ParseInteger(parts[3], "N", 0, std::numeric_limits<int>::max()));
-  } catch (const std::invalid_argument&) {
-    throw bad();
-  }
-  return s;
+// The result columns of a design grid, after the grid's: the gait's status, its numbers in
+// the user's units and dimensionless (those of its JSON), its orbits and binding limits.
+std::vector<std::string> GaitColumns() {
+  std::vector<std::string> columns = {"status"};
+  for (const auto& [key, value] : UserUnits(Gait{})) columns.emplace_back(key);
+  for (const auto& [key, value] : Dimensionless(Gait{})) columns.emplace_back(key);
+  columns.emplace_back("orbits");
+  columns.emplace_back("binding");
+  return columns;
 }
 
-void WriteSweep(const std::vector<Gait>& rows, const std::string& path) {
-  AtomicFile file(path, "-o");
-  auto& out = file.stream();
-  std::vector<std::string> header = {"status"};
-  for (const auto& [key, value] : UserUnits(Gait{})) header.emplace_back(key);
-  for (const auto& [key, value] : Dimensionless(Gait{})) header.emplace_back(key);
-  header.emplace_back("orbits");
-  header.emplace_back("binding");
-  out << fmt::format("{}\n", fmt::join(header, ","));
-  for (const Gait& g : rows) {
-    std::vector<std::string> cells = {GaitStatusName(g.status)};
-    for (const auto& [key, value] : UserUnits(g)) cells.push_back(FormatNumber(value));
-    for (const auto& [key, value] : Dimensionless(g)) cells.push_back(FormatNumber(value));
-    cells.push_back(std::to_string(g.orbits));
-    cells.push_back(fmt::format("{}", fmt::join(g.binding, ";")));
-    out << fmt::format("{}\n", fmt::join(cells, ","));
+std::string GaitCells(const Gait& g) {
+  std::vector<std::string> cells = {GaitStatusName(g.status)};
+  for (const auto& [key, value] : UserUnits(g)) cells.push_back(FormatNumber(value));
+  for (const auto& [key, value] : Dimensionless(g)) cells.push_back(FormatNumber(value));
+  cells.push_back(std::to_string(g.orbits));
+  cells.push_back(fmt::format("{}", fmt::join(g.binding, ";")));
+  return fmt::format("{}", fmt::join(cells, ","));
+}
+
+// The provenance of a grid: the robot's settings, --config and the grids; not the options of
+// the from-rest search (a grid does not run it) nor those of how or where the file is
+// computed (--threads, -o, --shard, --resume).
+std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd) {
+  std::vector<std::string> exclude;
+  for (const CLI::Option* option : cmd.get_options()) {
+    if (option->get_lnames().empty()) continue;
+    const std::string name = "--" + option->get_lnames().front();
+    const bool setting = std::find(opt.config.options.begin(), opt.config.options.end(), option) !=
+                         opt.config.options.end();
+    if (!setting && name != "--config" && name != "--grid") exclude.push_back(name);
   }
-  file.Commit();
+  return CommandProvenance(cmd, exclude).CommandLine();
+}
+
+int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
+  DesignGridOptions o;
+  for (const std::string& spec : opt.grids) o.axes.push_back(ParseDesignGridAxis(spec));
+  o.input = BuildDesignInput(opt.config, o.axes);
+  if (opt.output.empty()) {
+    throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
+  }
+  for (const char* flag : {"--from-rest", "--json"}) {
+    if (cmd.count(flag) > 0) {
+      throw std::invalid_argument(fmt::format(
+          "{} is invalid with --grid: expected one of them (a grid writes the one-impact gait "
+          "of each point to the CSV -o)",
+          flag));
+    }
+  }
+  o.columns = GaitColumns();
+  o.row = GaitCells;
+  o.comments.push_back(GridProvenance(opt, cmd));
+  o.output = opt.output;
+  if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
+  o.resume = opt.resume;
+  o.threads = CapThreads(opt.from_rest.threads, "capsubot design");
+  const bool tty = StderrIsTerminal();
+  ProgressBar bar("points");
+  const SweepProgressCallback progress = GridProgress(bar);
+  SweepSummary summary;
+  try {
+    summary = RunDesignGrid(o, progress);
+  } catch (const SweepResumableError& e) {
+    throw WriteError(std::string(e.what()) + ": run the same command with --resume to continue");
+  }
+  if (tty) {
+    fmt::print(stderr, "capsubot design: {} points written to {} in {:.3f} s on {} threads\n",
+               summary.points, o.output, summary.seconds, summary.threads);
+  }
+  return 0;
 }
 
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
+  if (!opt.grids.empty()) return RunGrid(opt, cmd);
   const DesignInput input = BuildDesignInput(opt.config);
   const DesignProgress progress = TerminalProgress("robots");
-  if (!opt.sweep.empty()) {
-    const SweepSpec spec = ParseSweep(opt.sweep);
-    if (opt.output.empty()) {
-      throw std::invalid_argument("option -o is missing: --sweep writes its CSV to -o FILE");
-    }
-    const std::vector<Gait> rows =
-        DesignSweep(input, spec.variable, spec.lo, spec.hi, spec.n, progress);
-    ShowStage("");
-    WriteSweep(rows, opt.output);
-    return 0;
-  }
   const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
   from_rest_options.Validate();  // bad options fail before any work
@@ -343,13 +352,23 @@ Command AddDesignCommand(CLI::App& app) {
                 "dimensionless {T0, A, c, alpha, phi0, ...}, binding}, from_rest_best (with "
                 "--from-rest) {forward, backward: the same keys, forward_fraction, "
                 "backward_fraction, attractors}, robots, complete, provenance");
-  cmd->add_option("--sweep", opt->sweep,
-                  "instead of one design, one row per value: m2:M2MIN:M2MAX:N (the gait of each "
-                  "m2) or frequency:FMIN:FMAX:N (the best m2 at each frequency), N log-spaced "
-                  "values, to the CSV file -o")
-      ->type_name("VAR:MIN:MAX:N");
+  cmd->add_option("--grid", opt->grids,
+                  "instead of one design, one CSV row per point of a grid over the robot's "
+                  "inputs (repeatable: the product, the first slowest): NAME=LO:HI:N, "
+                  "NAME=LO:HI:N:log or NAME=V1,V2,... with NAME one of m1, L, mu, g, e, "
+                  "force-amplitude, force-bias, frequency (fixed at each point), m2 (fixed at "
+                  "each point; else searched over m2-range), margin, margin-stroke, stick-margin, "
+                  "rho-max (inf: no stability requirement); to the CSV file -o")
+      ->type_name("NAME=SPEC");
   cmd->add_option("-o,--output", opt->output,
-                  "CSV file of --sweep (written atomically; - for standard output)");
+                  "CSV file of --grid (built as FILE.partial with a checkpoint, renamed at the "
+                  "end; - for standard output)");
+  cmd->add_option("--shard", opt->shard,
+                  "with --grid: compute only shard K of N (0 <= K < N), the points p with "
+                  "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files")
+      ->type_name("K/N");
+  cmd->add_flag("--resume", opt->resume,
+                "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 

@@ -297,7 +297,8 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
   }
 }
 
-DesignInput BuildDesignInput(const DesignConfigOptions& o) {
+DesignInput BuildDesignInput(const DesignConfigOptions& o,
+                             const std::vector<DesignGridAxis>& grid) {
   DesignInput in;
   std::set<std::string> given;
   if (!o.config.empty()) {
@@ -334,6 +335,25 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o) {
   }
   CheckExclusive(from_flags, "as flags");
   given.insert(from_flags.begin(), from_flags.end());
+  for (const DesignGridAxis& axis : grid) {
+    const int i = Find(axis.name());
+    if (i < 0) continue;  // m2: not a setting (the grid fixes what m2-range searches)
+    std::vector<std::string> flags = {axis.name()};  // the setting, or an alternative of it
+    for (const auto& [a, b] : kExclusive) {
+      if (axis.name() == a) flags.emplace_back(b);
+      if (axis.name() == b) flags.emplace_back(a);
+    }
+    for (const std::string& flag : flags) {
+      if (from_flags.count(flag) == 0) continue;
+      throw std::invalid_argument(fmt::format(
+          "--{} = {} is invalid with --grid {}: expected the value from only one of them", flag,
+          o.values[Find(flag)], axis.ToString()));
+    }
+    Value v;
+    v.number = axis.Value(0);  // a valid value: the run sets each point's (DesignGridOptions)
+    kSettings[i].set(in, v);
+    given.insert(axis.name());
+  }
   for (const auto& group : kRequired) {
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "capsubot/design.hpp"
+#include "capsubot/design_grid.hpp"
 
 namespace capsubot::app {
 
@@ -21,10 +22,12 @@ struct DesignConfigOptions {
 /// Adds --config and one flag per setting to `cmd`.
 void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& options);
 
-/// The input: defaults, then the config file, then the flags given. Throws
-/// std::invalid_argument (unknown key, wrong type, bad text, a missing or doubly given
-/// setting; the message names the setting, its value and the rule) or IoError (unreadable
-/// file). The input is validated (DesignInput::Validate).
-DesignInput BuildDesignInput(const DesignConfigOptions& options);
+/// The input: defaults, then the config file, then the flags given, then the first value of
+/// each axis of `grid` (a gridded setting counts as given; the file's value is replaced, a
+/// flag for it is an error). Throws std::invalid_argument (unknown key, wrong type, bad
+/// text, a missing or doubly given setting; the message names the setting, its value and the
+/// rule) or IoError (unreadable file). The input is validated (DesignInput::Validate).
+DesignInput BuildDesignInput(const DesignConfigOptions& options,
+                             const std::vector<DesignGridAxis>& grid = {});
 
 }  // namespace capsubot::app

@@ -48,4 +48,12 @@ void ShowStage(const std::string& text) {
   std::fflush(stderr);
 }
 
+SweepProgressCallback GridProgress(ProgressBar& bar) {
+  if (!StderrIsTerminal()) return {};
+  return [&bar](const SweepProgress& p) {
+    bar.Update(static_cast<double>(p.points_done), static_cast<double>(p.points_total), p.seconds,
+               static_cast<double>(p.points_resumed));
+  };
+}
+
 }  // namespace capsubot::app

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "capsubot/sweep.hpp"
+
 namespace capsubot::app {
 
 /// True when standard error is a terminal (progress is shown only then).
@@ -27,5 +29,10 @@ class ProgressBar {
   std::string unit_;
   double drawn_ = -1.0;  // time of the last redraw
 };
+
+/// The progress of a grid run (sweep, design --grid) drawn on `bar`: points done of total,
+/// the points resumed from a checkpoint left out of the rate; none (empty) when standard
+/// error is not a terminal. `bar` must outlive the run.
+SweepProgressCallback GridProgress(ProgressBar& bar);
 
 }  // namespace capsubot::app

@@ -280,13 +280,7 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   s.threads = CapThreads(s.threads, "capsubot sweep");
   const bool tty = StderrIsTerminal();
   ProgressBar bar("points");
-  SweepProgressCallback progress;
-  if (tty) {
-    progress = [&bar](const SweepProgress& p) {
-      bar.Update(static_cast<double>(p.points_done), static_cast<double>(p.points_total), p.seconds,
-                 static_cast<double>(p.points_resumed));
-    };
-  }
+  const SweepProgressCallback progress = GridProgress(bar);
   Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
   if (ranks.worker()) return ranks.Serve(SweepBlocks(s), s.threads);  // rank 0 validates
   const SweepSummary summary = RunSweep(s, progress, ranks.backend());

@@ -61,9 +61,10 @@ c_grid="c=$(awk -v t=$T0 -v v=$lo 'BEGIN{print t*v}'):$(awk -v t=$T0 -v v=$hi 'B
   --stability -o "$out/map_stable.csv"
 
 say "design: speed and power of the example robot (examples/robot.toml) against m2"
-"$cli" design --config examples/robot.toml --rho-max inf --sweep m2:0.002:0.5:400 \
+"$cli" design --config examples/robot.toml --rho-max inf --grid m2=0.002:0.5:400:log \
   -o "$out/design_m2_valid.csv"
-"$cli" design --config examples/robot.toml --sweep m2:0.002:0.5:400 -o "$out/design_m2_robust.csv"
+"$cli" design --config examples/robot.toml --grid m2=0.002:0.5:400:log \
+  -o "$out/design_m2_robust.csv"
 "$cli" design --config examples/robot.toml --json > "$out/design_example.json.tmp"
 mv "$out/design_example.json.tmp" "$out/design_example.json"
 # Long-run motions (docs/attractors.md). The robot of the stable optimum at T0 = 1, e = 1

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "capsubot/params.hpp"
@@ -20,6 +21,17 @@
 namespace capsubot::testing {
 
 /// |actual - expected| <= tol, printing both values and the difference on failure.
+/// The message of the std::invalid_argument thrown by f ("" if none).
+template <class Fn>
+std::string InvalidArgumentMessage(const Fn& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
 inline ::testing::AssertionResult Near(double actual, double expected, double tol) {
   const double diff = std::abs(actual - expected);
   if (diff <= tol) return ::testing::AssertionSuccess();

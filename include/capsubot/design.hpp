@@ -134,7 +134,7 @@ struct Gait {
   /// Robustness limits the gait sits on (slack below the search's resolution), in a fixed
   /// order: left_wall, right_wall, stick, force_bound, stability (constraint_names of
   /// optimize_result.hpp) and the ends of a searched range: m2_min, m2_max, frequency_min,
-  /// frequency_max. Filled by Design and DesignSweep.
+  /// frequency_max. Filled by Design and DesignGait.
   std::vector<std::string> binding;
 
   bool ok() const { return status == GaitStatus::kOk; }
@@ -176,14 +176,11 @@ using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)
 /// (scan_points + 100)^2 robots. Throws std::invalid_argument for invalid input.
 DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});
 
-/// What a design sweep varies.
-enum class DesignSweepVariable { kM2, kFrequency };
-
-/// One design per value of the swept variable: n log-spaced values from lo to hi inclusive
-/// (m2 [kg] or frequency [Hz]); at each, the other variable is the input's (frequency fixed)
-/// or optimised over its range as in Design. Each gait's `binding` lists the limits it sits on.
-/// Throws std::invalid_argument for invalid input or a bad range (0 < lo < hi, 2 <= n <= 100000).
-std::vector<Gait> DesignSweep(const DesignInput& input, DesignSweepVariable variable, double lo,
-                              double hi, int n, const DesignProgress& progress = {});
+/// The gait the design finds for a robot whose inner mass is m2 [kg], or is searched over the
+/// range when m2 is NaN (then Design(input).one_impact): at a fixed frequency the robot's own
+/// gait (EvaluateGait), with a frequency range the fastest over it as in Design. The gait's
+/// `binding` lists the limits it sits on. Throws std::invalid_argument for invalid input or
+/// an m2 that is not NaN and not finite > 0.
+Gait DesignGait(const DesignInput& input, double m2);
 
 }  // namespace capsubot

@@ -49,15 +49,25 @@ enum class GridSpacing {
   kList,    ///< v1,v2,...: the listed values
 };
 
-/// One axis of a grid.
-struct GridAxis {
-  SweepParameter parameter = SweepParameter::kphi0;  ///< what varies
-  int harmonic = 0;                                  ///< k of a_k or b_k (1..kMaxHarmonics), else 0
-  GridSpacing spacing = GridSpacing::kLinear;        ///< how the values are spaced
-  double lo = 0.0;                                   ///< first value (linear and log spacing)
-  double hi = 0.0;                                   ///< last value (ignored when n = 1)
-  std::int64_t n = 1;                                ///< number of values (linear, log), n >= 1
-  std::vector<double> values;                        ///< the values of a list (kList), at least one
+/// Where a parameter's values may lie: [min, max], open ends excluded, and the rule a message
+/// states ("" when every finite value is admissible); `infinite`: +infinity is a value too
+/// (written `inf` in a list: a bound that is no bound, as rho_max = inf).
+struct GridDomain {
+  double min = 0.0;
+  bool min_open = false;
+  double max = 0.0;
+  bool max_open = false;
+  const char* rule = "";
+  bool infinite = false;
+};
+
+/// The values of one axis, whatever parameter it varies.
+struct GridValues {
+  GridSpacing spacing = GridSpacing::kLinear;  ///< how the values are spaced
+  double lo = 0.0;                             ///< first value (linear and log spacing)
+  double hi = 0.0;                             ///< last value (ignored when n = 1)
+  std::int64_t n = 1;                          ///< number of values (linear, log), n >= 1
+  std::vector<double> values;                  ///< the values of a list (kList), at least one
 
   /// Number of values.
   std::int64_t size() const;
@@ -66,16 +76,52 @@ struct GridAxis {
   /// Smallest and largest value.
   double Min() const;
   double Max() const;
+  /// The values as written after `name=` (`lo:hi:n`, `lo:hi:n:log`, `v1,v2`) with shortest
+  /// round-trip numbers (infinity as `inf`).
+  std::string ValuesText() const;
+  /// Throws std::invalid_argument "grid <spec> is invalid: ..." naming the broken rule:
+  /// 1 <= n <= kMaxGridPoints, finite values (or inf in a list, when the domain admits it) that
+  /// do not overflow the spacing, lo, hi > 0 for a log axis, values inside `domain`.
+  void Check(const std::string& spec, const GridDomain& domain) const;
+};
+
+/// One axis of a sweep's grid.
+struct GridAxis : GridValues {
+  SweepParameter parameter = SweepParameter::kphi0;  ///< what varies
+  int harmonic = 0;                                  ///< k of a_k or b_k (1..kMaxHarmonics), else 0
+
   /// The parameter's name ("phi0", "a2").
   std::string name() const { return SweepParameterName(parameter, harmonic); }
-  /// Throws std::invalid_argument "grid <axis> is invalid: ..." naming the broken rule:
-  /// 1 <= n <= kMaxGridPoints, finite values that do not overflow the spacing, lo, hi > 0
-  /// for a log axis, values inside the parameter's domain (A >= 0, T0 > 0, 0 <= e <= 1, ...).
+  /// Throws std::invalid_argument "grid <axis> is invalid: ..." naming the broken rule
+  /// (GridValues::Check with the parameter's domain: A >= 0, T0 > 0, 0 <= e <= 1, ...; inf
+  /// only for rho_max).
   void Validate() const;
   /// The axis as written (`name=lo:hi:n`, `name=lo:hi:n:log`, `name=v1,v2`) with
   /// shortest round-trip numbers.
-  std::string ToString() const;
+  std::string ToString() const { return name() + "=" + ValuesText(); }
 };
+
+/// The name of a grid spec `name=...`; throws std::invalid_argument "grid <spec> is invalid:
+/// expected name=lo:hi:n, ..." when it has no '='.
+std::string GridSpecName(const std::string& spec);
+
+/// The values of a grid spec `name=lo:hi:n`, `name=lo:hi:n:log` or `name=v1,v2,...` for a
+/// parameter of `domain` (the caller knows the name): the syntax and rules of ParseGridAxis.
+/// Throws std::invalid_argument "grid <spec> is invalid: ...".
+GridValues ParseGridValues(const std::string& spec, const GridDomain& domain);
+
+/// The value of axis `axis` at point index `point` of the row-major product of `axes` (the
+/// first slowest).
+template <class Axis>
+double RowMajorValue(const std::vector<Axis>& axes, std::int64_t point, std::size_t axis) {
+  std::int64_t stride = 1;
+  for (std::size_t i = axis + 1; i < axes.size(); ++i) stride *= axes[i].size();
+  return axes[axis].Value(point / stride % axes[axis].size());
+}
+
+/// Throws std::invalid_argument "grid <specs> is invalid: more than kMaxGridPoints points"
+/// when the product of the axes' sizes exceeds kMaxGridPoints.
+void CheckGridPoints(const std::vector<std::int64_t>& sizes, const std::string& specs);
 
 /// Parses one axis. Throws std::invalid_argument "grid <spec> is invalid: ..." for an unknown
 /// name, a malformed spec or a bad value. Numbers are decimal; lo and hi may also be pi, -pi.

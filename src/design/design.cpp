@@ -1,5 +1,5 @@
 // The design searches: the fastest robust one-impact gait over the inner mass (and the motor
-// frequency), and sweeps of one of them (docs/model.md sections 9 and 12).
+// frequency), and the gait of a robot of given inner mass (docs/model.md sections 9 and 12).
 
 #include "capsubot/design.hpp"
 
@@ -17,7 +17,6 @@ namespace {
 
 // Resolution of the refinement in log(m2) and log(f): 1e-9 relative.
 constexpr double kLogTol = 1e-9;
-constexpr int kMaxSweepPoints = 100000;
 
 // Counts the robots evaluated and reports progress.
 struct Tally {
@@ -159,42 +158,21 @@ DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
   return r;
 }
 
-std::vector<Gait> DesignSweep(const DesignInput& in, DesignSweepVariable variable, double lo,
-                              double hi, int n, const DesignProgress& progress) {
+Gait DesignGait(const DesignInput& in, double m2) {
+  if (std::isnan(m2)) return Design(in).one_impact;
   in.Validate();
-  const char* name = variable == DesignSweepVariable::kM2 ? "m2" : "frequency";
-  if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && lo < hi)) {
-    throw std::invalid_argument(fmt::format(
-        "sweep range {} = {}:{} is invalid: expected finite 0 < MIN < MAX", name, lo, hi));
-  }
-  if (n < 2 || n > kMaxSweepPoints) {
+  if (!(std::isfinite(m2) && m2 > 0.0)) {
     throw std::invalid_argument(
-        fmt::format("sweep points n = {} is invalid: expected 2 <= n <= {}", n, kMaxSweepPoints));
+        fmt::format("inner mass m2 = {} is invalid: expected a finite m2 > 0 [kg]", m2));
   }
-  Tally tally{progress};
-  const bool m2_swept = variable == DesignSweepVariable::kM2;
-  const bool one_robot = m2_swept && FixedFrequency(in);
-  tally.total = n * (one_robot ? 1 : SearchBound(in));
-  std::vector<Gait> rows;
-  rows.reserve(n);
-  for (int i = 0; i < n; ++i) {
-    const double value = i == 0       ? lo
-                         : i == n - 1 ? hi
-                                      : std::exp(std::log(lo) + std::log(hi / lo) * i / (n - 1));
-    Gait g;
-    if (one_robot) {
-      g = tally.Evaluate(in, value, in.frequency_min);
-    } else if (m2_swept) {
-      g = Maximise(
-          in.frequency_min, in.frequency_max, in.scan_points,
-          [&](double f) { return tally.Evaluate(in, value, f); }, "frequency_min", "frequency_max");
-      g.m2_kg = value;
-    } else {
-      g = BestOverM2(in, value, tally);
-    }
-    rows.push_back(std::move(g));
-  }
-  return rows;
+  const DesignProgress none;
+  Tally tally{none};
+  if (FixedFrequency(in)) return tally.Evaluate(in, m2, in.frequency_min);
+  Gait g = Maximise(
+      in.frequency_min, in.frequency_max, in.scan_points,
+      [&](double f) { return tally.Evaluate(in, m2, f); }, "frequency_min", "frequency_max");
+  g.m2_kg = m2;
+  return g;
 }
 
 }  // namespace capsubot

@@ -1,7 +1,7 @@
 #pragma once
 // A robot designed in SI units (docs/design.md) as JSON: the object of `capsubot design
 // --json`, as the Python module's design returns it, and the gait's numbers in the order of
-// the columns of `capsubot design --sweep`.
+// the result columns of `capsubot design --grid`.
 
 #include <nlohmann/json.hpp>
 #include <utility>

@@ -22,30 +22,36 @@ struct ParameterRule {
   SweepParameter parameter;
   const char* name;  // with `indexed`, the prefix of a1, a2, ...
   bool indexed;      // one parameter per harmonic k = 1..kMaxHarmonics
-  double min;
-  bool min_open;
-  double max;
-  bool max_open;
-  const char* rule;  // "" when every finite value is admissible
+  GridDomain domain;
 };
 
 constexpr ParameterRule kParameters[] = {
-    {SweepParameter::kA, "A", false, 0.0, false, kInf, false, "amplitudes A >= 0"},
-    {SweepParameter::kc, "c", false, -kInf, false, kInf, false, ""},
-    {SweepParameter::kphi0, "phi0", false, -kInf, false, kInf, false, ""},
-    {SweepParameter::kT0, "T0", false, 0.0, true, kInf, false, "friction bounds T0 > 0"},
-    {SweepParameter::ke, "e", false, 0.0, false, 1.0, false, "restitutions 0 <= e <= 1"},
-    {SweepParameter::kmargin, "margin", false, 0.0, false, 0.5, true, "margins 0 <= margin < 0.5"},
-    {SweepParameter::kalpha, "alpha", false, 0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"},
-    {SweepParameter::kcos, "a", true, -kInf, false, kInf, false, ""},
-    {SweepParameter::ksin, "b", true, -kInf, false, kInf, false, ""},
-    {SweepParameter::kbound, "bound", false, 0.0, true, kInf, false, "force bounds bound > 0"},
-    {SweepParameter::krho_max, "rho_max", false, 0.0, true, kInf, false,
-     "spectral radius bounds rho_max > 0"},
-    {SweepParameter::kmargin_stroke, "margin_stroke", false, 0.0, false, 0.5, true,
-     "stroke margins 0 <= margin_stroke < 0.5"},
-    {SweepParameter::kstick_margin, "stick_margin", false, 0.0, false, 1.0, true,
-     "stick margins 0 <= stick_margin < 1"},
+    {SweepParameter::kA, "A", false, {0.0, false, kInf, false, "amplitudes A >= 0"}},
+    {SweepParameter::kc, "c", false, {-kInf, false, kInf, false, ""}},
+    {SweepParameter::kphi0, "phi0", false, {-kInf, false, kInf, false, ""}},
+    {SweepParameter::kT0, "T0", false, {0.0, true, kInf, false, "friction bounds T0 > 0"}},
+    {SweepParameter::ke, "e", false, {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"}},
+    {SweepParameter::kmargin,
+     "margin",
+     false,
+     {0.0, false, 0.5, true, "margins 0 <= margin < 0.5"}},
+    {SweepParameter::kalpha, "alpha", false, {0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"}},
+    {SweepParameter::kcos, "a", true, {-kInf, false, kInf, false, ""}},
+    {SweepParameter::ksin, "b", true, {-kInf, false, kInf, false, ""}},
+    {SweepParameter::kbound, "bound", false, {0.0, true, kInf, false, "force bounds bound > 0"}},
+    // Infinity: no stability requirement (the optimisers' default).
+    {SweepParameter::krho_max,
+     "rho_max",
+     false,
+     {0.0, true, kInf, false, "spectral radius bounds rho_max > 0 (inf: no bound)", true}},
+    {SweepParameter::kmargin_stroke,
+     "margin_stroke",
+     false,
+     {0.0, false, 0.5, true, "stroke margins 0 <= margin_stroke < 0.5"}},
+    {SweepParameter::kstick_margin,
+     "stick_margin",
+     false,
+     {0.0, false, 1.0, true, "stick margins 0 <= stick_margin < 1"}},
 };
 
 const ParameterRule& RuleOf(SweepParameter parameter) {
@@ -73,10 +79,10 @@ bool ParseNumber(const std::string& text, double& value) {
   const char* last = first + text.size();
   if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
   const std::from_chars_result r = std::from_chars(first, last, value);
+  // Infinity only as "inf", the way the CSV writes it (not "Infinity", "-inf", "INF").
+  if (std::isinf(value) && text != "inf") return false;
   return first != last && r.ec == std::errc() && r.ptr == last;
 }
-
-void CheckAxis(const GridAxis& axis, const std::string& spec);
 
 // A name of the table: "phi0" -> kphi0; "a3" -> kcos with harmonic 3.
 bool ParseName(const std::string& name, GridAxis& axis) {
@@ -132,11 +138,11 @@ std::string SweepParameterNames() {
   return names;
 }
 
-std::int64_t GridAxis::size() const {
+std::int64_t GridValues::size() const {
   return spacing == GridSpacing::kList ? static_cast<std::int64_t>(values.size()) : n;
 }
 
-double GridAxis::Value(std::int64_t i) const {
+double GridValues::Value(std::int64_t i) const {
   if (spacing == GridSpacing::kList) return values[static_cast<std::size_t>(i)];
   if (n <= 1 || i <= 0) return lo;
   if (i >= n - 1) return hi;
@@ -155,38 +161,41 @@ double GridAxis::Value(std::int64_t i) const {
   return std::clamp(value, std::min(lo, hi), std::max(lo, hi));
 }
 
-double GridAxis::Min() const {
+double GridValues::Min() const {
   if (spacing == GridSpacing::kList) return *std::min_element(values.begin(), values.end());
   return n == 1 ? lo : std::min(lo, hi);
 }
 
-double GridAxis::Max() const {
+double GridValues::Max() const {
   if (spacing == GridSpacing::kList) return *std::max_element(values.begin(), values.end());
   return n == 1 ? lo : std::max(lo, hi);
 }
 
-std::string GridAxis::ToString() const {
-  if (spacing == GridSpacing::kList) return fmt::format("{}={}", name(), fmt::join(values, ","));
-  return fmt::format("{}={}:{}:{}{}", name(), lo, hi, n,
-                     spacing == GridSpacing::kLog ? ":log" : "");
+std::string GridValues::ValuesText() const {
+  if (spacing == GridSpacing::kList) return fmt::format("{}", fmt::join(values, ","));
+  return fmt::format("{}:{}:{}{}", lo, hi, n, spacing == GridSpacing::kLog ? ":log" : "");
 }
 
-void GridAxis::Validate() const { CheckAxis(*this, ToString()); }
+void GridAxis::Validate() const {
+  const std::string spec = ToString();
+  const ParameterRule& r = RuleOf(parameter);
+  if (r.indexed && (harmonic < 1 || harmonic > kMaxHarmonics)) {
+    Fail(spec, fmt::format("harmonic k = {}: expected 1 <= k <= {}", harmonic, kMaxHarmonics));
+  }
+  Check(spec, r.domain);
+}
 
-namespace {
-
-// The rules of GridAxis::Validate, with `spec` quoted in the message.
-void CheckAxis(const GridAxis& axis, const std::string& spec) {
-  const GridSpacing spacing = axis.spacing;
-  const std::int64_t n = axis.n;
-  const double lo = axis.lo, hi = axis.hi;
+void GridValues::Check(const std::string& spec, const GridDomain& domain) const {
   if (spacing == GridSpacing::kList) {
-    if (axis.values.empty()) Fail(spec, "expected at least one value");
-    if (axis.size() > kMaxGridPoints) {
-      Fail(spec, fmt::format("{} values: expected at most {}", axis.size(), kMaxGridPoints));
+    if (values.empty()) Fail(spec, "expected at least one value");
+    if (size() > kMaxGridPoints) {
+      Fail(spec, fmt::format("{} values: expected at most {}", size(), kMaxGridPoints));
     }
-    for (double v : axis.values) {
-      if (!std::isfinite(v)) Fail(spec, "expected finite values (not NaN or infinite)");
+    for (double v : values) {
+      if (std::isnan(v) || (std::isinf(v) && !(domain.infinite && v > 0.0))) {
+        Fail(spec, domain.infinite ? "expected finite values or inf (not NaN or -inf)"
+                                   : "expected finite values (not NaN or infinite)");
+      }
     }
   } else {
     if (n < 1) Fail(spec, fmt::format("n = {}: expected n >= 1 points", n));
@@ -206,29 +215,23 @@ void CheckAxis(const GridAxis& axis, const std::string& spec) {
       Fail(spec, "expected lo > 0 and hi > 0 for a log grid (geometric spacing)");
     }
   }
-  const ParameterRule& r = RuleOf(axis.parameter);
-  if (r.indexed && (axis.harmonic < 1 || axis.harmonic > kMaxHarmonics)) {
-    Fail(spec, fmt::format("harmonic k = {}: expected 1 <= k <= {}", axis.harmonic, kMaxHarmonics));
-  }
-  const double a = axis.Min(), b = axis.Max();
-  if ((r.min_open ? a <= r.min : a < r.min) || (r.max_open ? b >= r.max : b > r.max)) {
-    Fail(spec, fmt::format("expected {}", r.rule));
+  const double a = Min(), b = Max();
+  const GridDomain& d = domain;
+  if ((d.min_open ? a <= d.min : a < d.min) || (d.max_open ? b >= d.max : b > d.max)) {
+    Fail(spec, fmt::format("expected {}", d.rule));
   }
 }
 
-}  // namespace
-
-GridAxis ParseGridAxis(const std::string& spec) {
+std::string GridSpecName(const std::string& spec) {
   const auto eq = spec.find('=');
   if (eq == std::string::npos)
     Fail(spec, "expected name=lo:hi:n, name=lo:hi:n:log or name=v1,v2,...");
-  GridAxis axis;
-  const std::string name = spec.substr(0, eq);
-  if (!ParseName(name, axis)) {
-    Fail(spec,
-         fmt::format("unknown parameter '{}': expected one of {}", name, SweepParameterNames()));
-  }
-  const std::string rest = spec.substr(eq + 1);
+  return spec.substr(0, eq);
+}
+
+GridValues ParseGridValues(const std::string& spec, const GridDomain& domain) {
+  GridValues axis;
+  const std::string rest = spec.substr(GridSpecName(spec).size() + 1);
   if (rest.find(':') == std::string::npos) {  // a list (one value is a list of one)
     axis.spacing = GridSpacing::kList;
     const std::vector<std::string> items = Split(rest, ',');
@@ -263,7 +266,19 @@ GridAxis ParseGridAxis(const std::string& spec) {
            fmt::format("n = '{}' is not an integer number of points (1 to {})", n, kMaxGridPoints));
     }
   }
-  CheckAxis(axis, spec);  // quotes the spec as written
+  axis.Check(spec, domain);  // quotes the spec as written
+  return axis;
+}
+
+GridAxis ParseGridAxis(const std::string& spec) {
+  GridAxis axis;
+  const std::string name = GridSpecName(spec);
+  if (!ParseName(name, axis)) {
+    Fail(spec,
+         fmt::format("unknown parameter '{}': expected one of {}", name, SweepParameterNames()));
+  }
+  const ParameterRule& r = RuleOf(axis.parameter);
+  static_cast<GridValues&>(axis) = ParseGridValues(spec, r.domain);
   return axis;
 }
 
@@ -294,16 +309,24 @@ void Grid::Validate() const {
         "grid A together with grid b1 is invalid: A is the sine coefficient b1 of the "
         "harmonic force: expected a grid over only one of them");
   }
+  std::vector<std::int64_t> sizes;
+  std::string specs;
+  for (const GridAxis& a : axes) {
+    sizes.push_back(a.size());
+    specs += (specs.empty() ? "" : " ") + a.ToString();
+  }
+  CheckGridPoints(sizes, specs);
+}
+
+void CheckGridPoints(const std::vector<std::int64_t>& sizes, const std::string& specs) {
   std::int64_t points = 1;
-  for (const GridAxis& axis : axes) {
-    if (points > kMaxGridPoints / axis.size()) {
-      std::string specs;
-      for (const GridAxis& a : axes) specs += (specs.empty() ? "" : " ") + a.ToString();
+  for (const std::int64_t size : sizes) {
+    if (points > kMaxGridPoints / size) {
       throw std::invalid_argument(
           fmt::format("grid {} is invalid: more than {} points: expected at most {} points", specs,
                       kMaxGridPoints, kMaxGridPoints));
     }
-    points *= axis.size();
+    points *= size;
   }
 }
 
@@ -321,9 +344,7 @@ bool Grid::Has(SweepParameter parameter, int harmonic) const {
 }
 
 double Grid::Value(std::int64_t point, std::size_t axis) const {
-  std::int64_t stride = 1;
-  for (std::size_t i = axis + 1; i < axes.size(); ++i) stride *= axes[i].size();
-  return axes[axis].Value(point / stride % axes[axis].size());
+  return RowMajorValue(axes, point, axis);
 }
 
 }  // namespace capsubot

@@ -3,21 +3,18 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
-#include "sweep/sweep_file.hpp"
+#include "sweep/grid_run.hpp"
 #include "sweep/sweep_rows.hpp"
 
 namespace capsubot {
 namespace {
 
-constexpr int kMaxThreads = 1024;
 constexpr int kSolveBlockPoints = 2048;  // ~3 ms of Solve calls: cheap to hand over
 constexpr int kRobotBlockPoints = 32;
 constexpr int kPhaseBlockPoints = 2;
@@ -60,11 +57,6 @@ const ModeRule& RuleOf(SweepOptimize mode) {
   return kModes[0];  // unreachable: every enumerator has a row
 }
 
-int ThreadCount(const SweepOptions& o) {
-  if (o.threads > 0) return o.threads;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 // The names of the parameters in `set`, for messages.
 std::string ParameterList(unsigned set) {
   std::string names;
@@ -95,18 +87,10 @@ void CheckBoundAgainstT0(const SweepOptions& o, const SearchOptions& search) {
   worst.BoundFor(params);
 }
 
-// The message of a write error after which the partial file and its checkpoint are kept.
-std::string KeptMessage(const IoError& e, const std::string& output) {
-  return fmt::format("{}; the rows done are kept in {} with its checkpoint {} for a resume",
-                     e.what(), detail::SweepFile::PartialPath(output),
-                     detail::SweepFile::CheckpointPath(output));
-}
-
 }  // namespace
 
 std::int64_t ShardPointCount(const SweepOptions& o) {
-  const std::int64_t total = o.grid.size();
-  return o.shards <= 1 ? total : (total - o.shard + o.shards - 1) / o.shards;
+  return detail::ShardCount(o.grid.size(), o.shard, o.shards);
 }
 
 std::int64_t ShardPoint(const SweepOptions& o, std::int64_t i) {
@@ -145,34 +129,10 @@ void SweepOptions::Validate() const {
   if (output.empty()) {
     throw std::invalid_argument("output is missing: expected the path of the CSV file to write");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    throw std::invalid_argument(
-        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
-                    kMaxThreads));
-  }
-  if (shards < 1 || shard < 0 || shard >= shards) {
-    throw std::invalid_argument(fmt::format(
-        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
-  }
-  if (shards > 1 && grid.size() < shards) {
-    throw std::invalid_argument(fmt::format(
-        "shard = {}/{} is invalid: the grid has only {} points: expected at most as many shards "
-        "as points",
-        shard, shards, grid.size()));
-  }
+  detail::CheckGridRun(threads, shard, shards, grid.size(), checkpoint_seconds, comments);
   if (block_points < 0) {
     throw std::invalid_argument(
         fmt::format("block_points = {} is invalid: expected >= 1 (0: automatic)", block_points));
-  }
-  if (!(checkpoint_seconds >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
-  }
-  for (const std::string& line : comments) {
-    if (line.find_first_of("\r\n") != std::string::npos) {
-      throw std::invalid_argument(
-          "comments are invalid: a comment line contains a line break: expected one line each");
-    }
   }
   const ModeRule& mode = RuleOf(optimize);
   for (const GridAxis& axis : grid.axes) {
@@ -295,66 +255,19 @@ std::int64_t SweepBlockPoints(const SweepOptions& options, std::int64_t points, 
 
 SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& progress,
                       const BlockBackend& backend) {
-  using Clock = std::chrono::steady_clock;
   options.Validate();
-  const auto start = Clock::now();
-  // This run's points: every grid point, or those of one shard (ShardPoint).
-  const std::int64_t total = ShardPointCount(options);
-  const int threads = ThreadCount(options);
-
-  detail::SweepFile file(options.output, detail::SweepDescription(options),
-                         detail::SweepHeaderLines(options), options.resume,
-                         options.checkpoint_seconds);
-  SweepSummary summary;
-  summary.threads = threads;
-  summary.points_resumed = file.points_done();
-  BlockPlan plan;
-  plan.first = file.points_done();
-  plan.end = total;
-  plan.threads = threads;
-  plan.block = SweepBlockPoints(options, total - plan.first, backend.Threads(threads));
-
-  // Where the first error came from: a point (deterministic: a resume would fail the same
-  // way), the file (a write error: a resume can continue once it is mended) or `progress`.
-  enum class Origin { kPoint, kFile, kProgress } origin = Origin::kPoint;
-  const BlockSink sink = [&](std::int64_t begin, std::int64_t end, const std::string& bytes,
-                             std::int64_t rows) {
-    try {
-      file.Append(bytes.data(), bytes.size(), end - begin);
-    } catch (const IoError&) {
-      origin = Origin::kFile;
-      throw;
-    }
-    summary.rows += rows;
-    if (progress) {
-      origin = Origin::kProgress;
-      SweepProgress p;
-      p.points_done = end;
-      p.points_total = total;
-      p.points_resumed = plan.first;
-      p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      progress(p);
-      origin = Origin::kPoint;
-    }
+  detail::GridRun run;
+  run.output = options.output;
+  run.description = detail::SweepDescription(options);
+  run.header = detail::SweepHeaderLines(options);
+  run.resume = options.resume;
+  run.checkpoint_seconds = options.checkpoint_seconds;
+  run.points = ShardPointCount(options);  // every grid point, or those of one shard
+  run.threads = detail::GridThreads(options.threads);
+  run.block_points = [&options](std::int64_t points, int threads) {
+    return SweepBlockPoints(options, points, threads);
   };
-  try {
-    backend.Run(plan, SweepBlocks(options), sink);
-  } catch (const IoError& e) {
-    if (origin != Origin::kFile || file.direct()) throw;
-    throw SweepResumableError(KeptMessage(e, options.output));
-  } catch (...) {
-    if (origin == Origin::kPoint) file.Discard();  // no resume could get past that point
-    throw;
-  }
-  try {
-    file.Commit();
-  } catch (const IoError& e) {
-    if (file.direct()) throw;
-    throw SweepResumableError(KeptMessage(e, options.output));
-  }
-  summary.points = total;
-  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return summary;
+  return detail::RunGridRows(run, SweepBlocks(options), progress, backend);
 }
 
 }  // namespace capsubot

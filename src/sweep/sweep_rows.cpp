@@ -10,6 +10,7 @@
 #include "capsubot/optimize_reach.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
+#include "sweep/grid_run.hpp"
 
 namespace capsubot::detail {
 namespace {
@@ -90,14 +91,8 @@ void AppendNumber(RowBuffer& out, double value) {
 }
 
 std::string SweepHeaderLines(const SweepOptions& options) {
-  std::string text;
-  for (const std::string& line : options.comments) text += "# " + line + '\n';
-  if (options.shards > 1) text += ShardLine(options.shard, options.shards, options.grid.size());
-  std::string header;
-  for (const std::string& name : SweepColumns(options)) {
-    header += (header.empty() ? "" : ",") + name;
-  }
-  return text + header + '\n';
+  return GridHeader(options.comments, options.shard, options.shards, options.grid.size(),
+                    SweepColumns(options));
 }
 
 std::string SweepDescription(const SweepOptions& o) {

@@ -1,6 +1,6 @@
 // `capsubot design` end to end: the TOML file and the flags give the same design, the JSON keys,
-// the sweep CSV (and `solve` reproducing a row), and every bad-input path (one line naming the
-// parameter, its value and the rule; exit status 2; no file left).
+// the grid CSV (and `solve` reproducing a row, shards merged), and every bad-input path (one line
+// naming the parameter, its value and the rule; exit status 2; no file left).
 
 #include <gtest/gtest.h>
 
@@ -146,18 +146,22 @@ TEST(DesignCli, TableShowsTheGaitAndHowToCheckIt) {
   }
 }
 
-// One CSV row of the sweep, solved again by `capsubot solve` from its dimensionless numbers:
-// the design's orbit is exactly the orbit of the mapped parameters.
-TEST(DesignCli, SweepRowsAreReproducedBySolve) {
+// One CSV row of a grid over m2, solved again by `capsubot solve` from its dimensionless
+// numbers: the design's orbit is exactly the orbit of the mapped parameters.
+TEST(DesignCli, GridRowsAreReproducedBySolve) {
   const auto csv = TempPath("design_sweep.csv");
   const auto r = RunCli("design --config " + ExampleConfig() + kMarginsOff +
-                        " --sweep m2:0.18:0.3:7 -o " + csv.string());
+                        " --grid m2=0.18:0.3:7:log -o " + csv.string());
   ASSERT_EQ(r.status, 0) << r.out;
   std::ifstream in(csv);
-  std::string header;
+  std::string comment, header;
+  std::getline(in, comment);
+  EXPECT_EQ(comment.rfind("# capsubot ", 0), 0U) << comment;
+  EXPECT_NE(comment.find(" design --config "), std::string::npos) << comment;
+  EXPECT_NE(comment.find(" --grid m2=0.18:0.3:7:log"), std::string::npos) << comment;
   std::getline(in, header);
   EXPECT_EQ(header,
-            "status,m2_kg,frequency_hz,speed_mm_s,displacement_mm,impact_velocity_m_s,energy_mj,"
+            "m2,status,m2_kg,frequency_hz,speed_mm_s,displacement_mm,impact_velocity_m_s,energy_mj,"
             "power_mw,power_positive_mw,friction_loss_mj,impact_loss_mj,cot,efficiency,T0,A,c,"
             "alpha,phi0,I,spectral_radius,x_min,x_max,orbits,binding");
   std::vector<std::vector<std::string>> rows;
@@ -166,6 +170,7 @@ TEST(DesignCli, SweepRowsAreReproducedBySolve) {
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
     if (!line.empty() && line.back() == ',') cells.emplace_back();
+    cells.erase(cells.begin());  // the grid's m2, also in m2_kg
     rows.push_back(cells);
   }
   ASSERT_EQ(rows.size(), 7U);
@@ -236,15 +241,35 @@ std::vector<BadCase> BadCases() {
        "--frequency 20",
        "setting e is missing: give --e (or e in the --config file)"},
       {"rho_max", "--rho-max 0" + cfg, "rho_max = 0 is invalid: expected rho_max > 0"},
-      {"sweep_spec", "--sweep mass:1:2:3 -o x.csv" + cfg,
-       "--sweep = mass:1:2:3 is invalid: expected m2:M2MIN:M2MAX:N [kg] or "
-       "frequency:FMIN:FMAX:N [Hz]"},
-      {"sweep_number", "--sweep m2:0x1p-3:0.3:5 -o x.csv" + cfg,
-       "--sweep = m2:0x1p-3:0.3:5 is invalid: expected m2:M2MIN:M2MAX:N [kg]"},
-      {"sweep_range", "--sweep m2:0.3:0.1:5 -o x.csv" + cfg,
-       "sweep range m2 = 0.3:0.1 is invalid: expected finite 0 < MIN < MAX"},
-      {"sweep_output", "--sweep m2:0.1:0.3:5" + cfg,
-       "option -o is missing: --sweep writes its CSV to -o FILE"},
+      {"grid_name", "--grid mass=1:2:3 -o x.csv" + cfg,
+       "grid mass=1:2:3 is invalid: unknown parameter 'mass': expected one of m1, L, mu, g, e, "
+       "force-amplitude, force-bias, frequency, m2, margin, margin-stroke, stick-margin, "
+       "rho-max"},
+      {"grid_number", "--grid m2=0x1p-3:0.3:5 -o x.csv" + cfg,
+       "grid m2=0x1p-3:0.3:5 is invalid: lo = '0x1p-3' is not a number"},
+      {"grid_domain", "--grid e=0.5,1.5 -o x.csv" + cfg,
+       "grid e=0.5,1.5 is invalid: expected restitutions 0 <= e <= 1"},
+      {"grid_log", "--grid m2=0:0.3:5:log -o x.csv" + cfg,
+       "grid m2=0:0.3:5:log is invalid: expected lo > 0 and hi > 0 for a log grid"},
+      {"grid_infinite", "--grid m1=0.2,inf -o x.csv" + cfg,
+       "grid m1=0.2,inf is invalid: expected finite values (not NaN or infinite)"},
+      {"grid_rho_max", "--grid rho-max=0,inf -o x.csv" + cfg,
+       "grid rho-max=0,inf is invalid: expected spectral radius bounds rho-max > 0 (inf: no "
+       "bound)"},
+      {"grid_twice", "--grid e=0.5 --grid e=0.6 -o x.csv" + cfg,
+       "grid e=0.6 is invalid: parameter e already has a grid (e=0.5): expected each parameter "
+       "at most once"},
+      {"grid_and_flag", "--grid e=0.5 --e 0.3 -o x.csv" + cfg,
+       "--e = 0.3 is invalid with --grid e=0.5: expected the value from only one of them"},
+      {"grid_and_alternative", "--grid force-amplitude=0.4,0.5 --force-sin 0.5 -o x.csv" + cfg,
+       "--force-sin = 0.5 is invalid with --grid force-amplitude=0.4,0.5: expected the value "
+       "from only one of them"},
+      {"grid_output", "--grid m2=0.1:0.3:5" + cfg,
+       "output is missing: --grid writes its CSV to -o FILE"},
+      {"grid_shard", "--grid m2=0.1:0.3:5 --shard 1/1 -o x.csv" + cfg,
+       "shard = 1/1 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
+      {"grid_json", "--grid m2=0.1:0.3:5 --json -o x.csv" + cfg,
+       "--json is invalid with --grid: expected one of them"},
       {"unreadable_config", "--config /nonexistent/robot.toml",
        "config file /nonexistent/robot.toml cannot be read: No such file or directory"},
   };
@@ -257,9 +282,10 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.out;
     EXPECT_NE(r.out.find(c.message), std::string::npos) << c.name << ": " << r.out;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << c.name << ": " << r.out;
+    EXPECT_FALSE(std::filesystem::exists("x.csv")) << c.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 25);
+  EXPECT_EQ(checked, 33);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
@@ -307,12 +333,54 @@ TEST(DesignCli, AMotorThatSlidesTheShellIsReportedNotAnError) {
               j["from_rest_best"]["backward"]["status"] == "ok");
 }
 
-TEST(DesignCli, AFailedSweepLeavesNoFile) {
+TEST(DesignCli, AFailedGridLeavesNoFile) {
   const auto csv = TempPath("design_failed.csv");
-  const auto r = RunCli("design --config " + ExampleConfig() + " --sweep m2:0.3:0.1:5 -o " +
+  const auto r = RunCli("design --config " + ExampleConfig() + " --grid m2=0.3:-0.1:5 -o " +
                         csv.string() + " 2>&1");
   EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("grid m2=0.3:-0.1:5 is invalid: expected inner masses m2 > 0 [kg]"),
+            std::string::npos)
+      << r.out;
   EXPECT_FALSE(std::filesystem::exists(csv));
+  EXPECT_FALSE(std::filesystem::exists(csv.string() + ".partial"));
+}
+
+std::string ReadAll(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A grid of 2 axes (a log grid over m2, a list over rho-max with inf: no stability
+// requirement) in 3 shards merged is the file of one run, byte for byte, on any thread count.
+TEST(DesignCli, GridShardsMergedAreByteIdenticalToOneRun) {
+  const std::string run =
+      "design --config " + ExampleConfig() + " --grid m2=0.18:0.3:5:log --grid rho-max=0.9,inf";
+  const auto whole = TempPath("design_grid_whole.csv");
+  ASSERT_EQ(RunCli(run + " --threads 1 -o " + whole.string()).status, 0);
+  const auto threaded = TempPath("design_grid_threaded.csv");
+  ASSERT_EQ(RunCli(run + " --threads 2 -o " + threaded.string()).status, 0);
+  EXPECT_EQ(ReadAll(threaded), ReadAll(whole));
+  constexpr int kShards = 3;
+  std::string shards;
+  for (int k = 0; k < kShards; ++k) {
+    const auto shard = TempPath("design_grid_shard" + std::to_string(k) + ".csv");
+    const auto r = RunCli(run + " --shard " + std::to_string(k) + "/3 -o " + shard.string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(ReadAll(shard).find("# shard " + std::to_string(k) + "/3 of 10 points\n"),
+              std::string::npos);
+    shards = " " + shard.string() + shards;  // merge takes them in any order
+  }
+  const auto merged = TempPath("design_grid_merged.csv");
+  const auto m = RunCli("merge " + merged.string() + shards);
+  ASSERT_EQ(m.status, 0) << m.out;
+  const std::string text = ReadAll(whole);
+  EXPECT_EQ(ReadAll(merged), text);
+  // 1 comment line, the header, 10 rows; inf written in the rows as in the comment line.
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 12);
+  EXPECT_NE(text.find("--grid rho-max=0.9,inf"), std::string::npos);
+  EXPECT_NE(text.find("\n0.3,inf,"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -7,24 +7,18 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "test_utils.hpp"
+
 namespace capsubot {
 namespace {
 
-// The message of the std::invalid_argument thrown by f ("" if none).
-template <class Fn>
-std::string Message(const Fn& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 TEST(Grid, ParsesNameBoundsAndCount) {
   const GridAxis axis = ParseGridAxis("c=0.01:0.5:50");
@@ -82,7 +76,7 @@ class GridRejects : public ::testing::TestWithParam<BadSpec> {};
 
 TEST_P(GridRejects, WithAMessageNamingTheOptionValueAndRule) {
   const BadSpec& bad = GetParam();
-  const std::string message = Message([&] { ParseGridAxis(bad.spec); });
+  const std::string message = testing::InvalidArgumentMessage([&] { ParseGridAxis(bad.spec); });
   EXPECT_EQ(message.rfind(std::string("grid ") + bad.spec + " is invalid: ", 0), 0u) << message;
   EXPECT_NE(message.find("is invalid"), std::string::npos) << message;
   EXPECT_NE(message.find(bad.message), std::string::npos) << message;
@@ -126,17 +120,32 @@ INSTANTIATE_TEST_SUITE_P(
                       BadSpec{"T0=0:1:3", "expected friction bounds T0 > 0"},
                       BadSpec{"e=0:1.5:3", "expected restitutions 0 <= e <= 1"},
                       BadSpec{"margin=0:0.5:3", "expected margins 0 <= margin < 0.5"},
-                      BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"}));
+                      BadSpec{"alpha=0:0.5:3", "expected mass ratios 0 < alpha < 1"},
+                      // Infinity is a value of rho_max only (no bound), spelled inf, in a list.
+                      BadSpec{"bound=1,inf", "expected finite values (not NaN or infinite)"},
+                      BadSpec{"rho_max=0.5,Infinity", "value 2 = 'Infinity' is not a number"},
+                      BadSpec{"rho_max=0.5,-inf", "value 2 = '-inf' is not a number"},
+                      BadSpec{"rho_max=0.5,nan", "expected finite values or inf"},
+                      BadSpec{"rho_max=0.5:inf:3", "expected finite bounds"}));
+
+TEST(Grid, RhoMaxListAcceptsInfinityAsNoBoundAndWritesItAsInf) {
+  const GridAxis axis = ParseGridAxis("rho_max=0.9,inf");
+  ASSERT_EQ(axis.size(), 2);
+  EXPECT_EQ(axis.Value(0), 0.9);
+  EXPECT_EQ(axis.Value(1), kInfinity);
+  EXPECT_EQ(axis.ToString(), "rho_max=0.9,inf");  // as the CSV writes it (WriteNumber)
+  EXPECT_NO_THROW(axis.Validate());
+}
 
 TEST(GridRejects, TheSpecItselfIsQuotedInTheMessage) {
-  EXPECT_EQ(Message([] { ParseGridAxis("phi0=0:1:0"); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([] { ParseGridAxis("phi0=0:1:0"); }),
             "grid phi0=0:1:0 is invalid: n = 0: expected n >= 1 points");
 }
 
 TEST(GridRejects, TheSameParameterTwice) {
   Grid g;
   g.axes = {ParseGridAxis("c=0:1:3"), ParseGridAxis("c=0:2:3")};
-  const std::string message = Message([&] { g.Validate(); });
+  const std::string message = testing::InvalidArgumentMessage([&] { g.Validate(); });
   EXPECT_NE(message.find("grid c=0:2:3 is invalid: parameter c already has a grid"),
             std::string::npos)
       << message;
@@ -145,31 +154,36 @@ TEST(GridRejects, TheSameParameterTwice) {
 TEST(GridRejects, AlphaTogetherWithPhi0) {
   Grid g;
   g.axes = {ParseGridAxis("alpha=0.1:0.9:3"), ParseGridAxis("phi0=-pi:pi:3")};
-  const std::string message = Message([&] { g.Validate(); });
+  const std::string message = testing::InvalidArgumentMessage([&] { g.Validate(); });
   EXPECT_EQ(message.rfind("grid alpha together with grid phi0 is invalid", 0), 0u) << message;
 }
 
 TEST(GridRejects, NoAxis) {
   Grid g;
-  EXPECT_EQ(Message([&] { g.Validate(); }).rfind("grid is missing: expected at least one axis", 0),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] {
+              g.Validate();
+            }).rfind("grid is missing: expected at least one axis", 0),
             0u);
 }
 
 TEST(GridRejects, AAndB1Together) {
   Grid g;
   g.axes = {ParseGridAxis("A=0:1:3"), ParseGridAxis("b1=0:2:3")};
-  EXPECT_EQ(Message([&] { g.Validate(); }).rfind("grid A together with grid b1 is invalid", 0), 0u);
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] {
+              g.Validate();
+            }).rfind("grid A together with grid b1 is invalid", 0),
+            0u);
 }
 
 TEST(GridRejects, MoreThanTheMaximumNumberOfPoints) {
   Grid g;
   g.axes = {ParseGridAxis("c=0:1:100000"), ParseGridAxis("A=0:1:100000")};
-  EXPECT_NE(Message([&] {
+  EXPECT_NE(testing::InvalidArgumentMessage([&] {
               g.Validate();
             }).find("more than 1000000000 points: expected at most 1000000000 points"),
             std::string::npos);
   g.axes = {ParseGridAxis("c=0:1:1000"), ParseGridAxis("A=0:1:1000"), ParseGridAxis("e=0:1:1000")};
-  EXPECT_EQ(Message([&] { g.Validate(); }), "");  // exactly the maximum
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { g.Validate(); }), "");  // exactly the maximum
   EXPECT_EQ(g.size(), kMaxGridPoints);
 }
 
@@ -202,7 +216,7 @@ TEST(Grid, ListAxisKeepsItsOrderAndValues) {
   EXPECT_EQ(axis.Value(3), 0.5);
   EXPECT_EQ(axis.Min(), 0.2);
   EXPECT_EQ(axis.Max(), M_PI);
-  EXPECT_EQ(Message([] { ParseGridAxis("e=1,0.2,pi,0.5"); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([] { ParseGridAxis("e=1,0.2,pi,0.5"); }),
             "grid e=1,0.2,pi,0.5 is invalid: expected restitutions 0 <= e <= 1");
   const GridAxis one = ParseGridAxis("A=0.25");  // one value: a list of one
   EXPECT_EQ(one.size(), 1);
@@ -228,7 +242,8 @@ TEST(Grid, FourierCoefficientsBoundAndRhoMaxAreParameters) {
   EXPECT_EQ(ParseGridAxis("rho_max=0.9,1").parameter, SweepParameter::krho_max);
   Grid g;
   g.axes = {ParseGridAxis("a1=0:1:2"), ParseGridAxis("a2=0:1:2"), ParseGridAxis("b1=0:1:2")};
-  EXPECT_EQ(Message([&] { g.Validate(); }), "");  // different harmonics are different parameters
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { g.Validate(); }),
+            "");  // different harmonics are different parameters
   EXPECT_TRUE(g.Has(SweepParameter::kcos));
   EXPECT_TRUE(g.Has(SweepParameter::kcos, 2));
   EXPECT_FALSE(g.Has(SweepParameter::ksin, 2));
@@ -256,7 +271,8 @@ TEST(Grid, ThreeAxesRunRowMajorWithTheFirstSlowest) {
 
 // Bounded random test of the parser: specs generated from the grammar (names, numbers, counts,
 // spacings), half of them then mutated by random character edits, either parse to an axis
-// that validates, whose values are finite and inside its range, or are rejected with a
+// that validates, whose values are finite (or inf for rho_max) and inside its range, or are
+// rejected with a
 // message that quotes them; nothing else (no crash, no other exception). 20,000 specs: well
 // under a second.
 TEST(GridFuzz, EveryStringParsesToAValidAxisOrIsRejectedWithItsMessage) {
@@ -306,7 +322,8 @@ TEST(GridFuzz, EveryStringParsesToAValidAxisOrIsRejectedWithItsMessage) {
       ASSERT_LE(axis.size(), kMaxGridPoints) << spec;
       for (std::int64_t k : {std::int64_t{0}, axis.size() / 2, axis.size() - 1}) {
         const double v = axis.Value(k);
-        ASSERT_TRUE(std::isfinite(v)) << spec << " value " << k;
+        const bool no_bound = axis.parameter == SweepParameter::krho_max && v == kInfinity;
+        ASSERT_TRUE(std::isfinite(v) || no_bound) << spec << " value " << k;
         ASSERT_GE(v, axis.Min()) << spec;
         ASSERT_LE(v, axis.Max()) << spec;
       }

@@ -1,0 +1,132 @@
+#include "sweep/grid_run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "sweep/sweep_file.hpp"
+#include "sweep/sweep_rows.hpp"
+
+namespace capsubot::detail {
+namespace {
+
+constexpr int kMaxThreads = 1024;
+
+// The message of a write error after which the partial file and its checkpoint are kept.
+std::string KeptMessage(const IoError& e, const std::string& output) {
+  return fmt::format("{}; the rows done are kept in {} with its checkpoint {} for a resume",
+                     e.what(), SweepFile::PartialPath(output), SweepFile::CheckpointPath(output));
+}
+
+}  // namespace
+
+int GridThreads(int threads) {
+  if (threads > 0) return threads;
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void CheckGridRun(int threads, int shard, int shards, std::int64_t points,
+                  double checkpoint_seconds, const std::vector<std::string>& comments) {
+  if (threads < 0 || threads > kMaxThreads) {
+    throw std::invalid_argument(
+        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
+                    kMaxThreads));
+  }
+  if (shards < 1 || shard < 0 || shard >= shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
+  }
+  if (shards > 1 && points < shards) {
+    throw std::invalid_argument(fmt::format(
+        "shard = {}/{} is invalid: the grid has only {} points: expected at most as many shards "
+        "as points",
+        shard, shards, points));
+  }
+  if (!(checkpoint_seconds >= 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
+  }
+  for (const std::string& line : comments) {
+    if (line.find_first_of("\r\n") != std::string::npos) {
+      throw std::invalid_argument(
+          "comments are invalid: a comment line contains a line break: expected one line each");
+    }
+  }
+}
+
+std::int64_t ShardCount(std::int64_t total, int shard, int shards) {
+  return shards <= 1 ? total : (total - shard + shards - 1) / shards;
+}
+
+std::string GridHeader(const std::vector<std::string>& comments, int shard, int shards,
+                       std::int64_t total, const std::vector<std::string>& columns) {
+  std::string text;
+  for (const std::string& line : comments) text += "# " + line + '\n';
+  if (shards > 1) text += ShardLine(shard, shards, total);
+  std::string header;
+  for (const std::string& name : columns) header += (header.empty() ? "" : ",") + name;
+  return text + header + '\n';
+}
+
+SweepSummary RunGridRows(const GridRun& run, const BlockComputeFactory& blocks,
+                         const SweepProgressCallback& progress, const BlockBackend& backend) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const std::int64_t total = run.points;
+  SweepFile file(run.output, run.description, run.header, run.resume, run.checkpoint_seconds);
+  SweepSummary summary;
+  summary.threads = run.threads;
+  summary.points_resumed = file.points_done();
+  BlockPlan plan;
+  plan.first = file.points_done();
+  plan.end = total;
+  plan.threads = run.threads;
+  plan.block = run.block_points(total - plan.first, backend.Threads(run.threads));
+
+  // Where the first error came from: a point (deterministic: a resume would fail the same
+  // way), the file (a write error: a resume can continue once it is mended) or `progress`.
+  enum class Origin { kPoint, kFile, kProgress } origin = Origin::kPoint;
+  const BlockSink sink = [&](std::int64_t begin, std::int64_t end, const std::string& bytes,
+                             std::int64_t rows) {
+    try {
+      file.Append(bytes.data(), bytes.size(), end - begin);
+    } catch (const IoError&) {
+      origin = Origin::kFile;
+      throw;
+    }
+    summary.rows += rows;
+    if (progress) {
+      origin = Origin::kProgress;
+      SweepProgress p;
+      p.points_done = end;
+      p.points_total = total;
+      p.points_resumed = plan.first;
+      p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      progress(p);
+      origin = Origin::kPoint;
+    }
+  };
+  try {
+    backend.Run(plan, blocks, sink);
+  } catch (const IoError& e) {
+    if (origin != Origin::kFile || file.direct()) throw;
+    throw SweepResumableError(KeptMessage(e, run.output));
+  } catch (...) {
+    if (origin == Origin::kPoint) file.Discard();  // no resume could get past that point
+    throw;
+  }
+  try {
+    file.Commit();
+  } catch (const IoError& e) {
+    if (file.direct()) throw;
+    throw SweepResumableError(KeptMessage(e, run.output));
+  }
+  summary.points = total;
+  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace capsubot::detail
