@@ -49,6 +49,48 @@ struct DesignCliOptions {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point.
+const std::vector<OptionUse> kOptionUses = {
+    {"--from-rest-starts", {"from-rest"}},
+    {"--reach-starts", {"from-rest"}},
+    {"--reach-evaluations", {"from-rest"}},
+    {"--reach-local-evaluations", {"from-rest"}},
+    {"--reach-seconds", {"from-rest"}},
+    {"--threads", {"from-rest", "grid"}},
+    {"--json", {"", "from-rest"}},
+    {"--output", {"grid"}},
+    {"--shard", {"grid"}},
+    {"--resume", {"grid"}},
+};
+
+std::string RunOf(const DesignCliOptions& opt) {
+  if (!opt.grids.empty()) return "grid";
+  return opt.part_b ? "from-rest" : "";
+}
+
+std::string RunName(const std::string& run) {
+  if (run == "grid") return "--grid";
+  return run.empty() ? "one design (no --from-rest, no --grid)" : "--from-rest";
+}
+
+// An option the chosen run does not use would be silently ignored: refuse it, naming both.
+void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
+  const std::string run = RunOf(opt);
+  if (!opt.grids.empty() && opt.part_b) {
+    throw std::invalid_argument(
+        "--from-rest is invalid with --grid: expected one of them (a grid writes the "
+        "one-impact gait of each point to the CSV -o)");
+  }
+  if (const OptionUse* use = GivenUnusedOption(cmd, kOptionUses, run)) {
+    std::string expected;
+    for (const char* r : use->runs) {
+      if (r != nullptr) expected += (expected.empty() ? "" : " or ") + RunName(r);
+    }
+    throw std::invalid_argument(fmt::format("{} is invalid with {}: expected {} only with {}",
+                                            use->option, RunName(run), use->option, expected));
+  }
+}
+
 // The numbers of gaits and motions from rest for the table and the CSV are those of their JSON
 // (src/json/).
 using json::Dimensionless;
@@ -269,14 +311,6 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.output.empty()) {
     throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
   }
-  for (const char* flag : {"--from-rest", "--json"}) {
-    if (cmd.count(flag) > 0) {
-      throw std::invalid_argument(fmt::format(
-          "{} is invalid with --grid: expected one of them (a grid writes the one-impact gait "
-          "of each point to the CSV -o)",
-          flag));
-    }
-  }
   o.columns = GaitColumns();
   o.row = GaitCells;
   o.comments.push_back(GridProvenance(opt, cmd));
@@ -301,6 +335,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
 }
 
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
+  RejectUnusedOptions(opt, cmd);
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
   const DesignInput input = BuildDesignInput(opt.config);
   const DesignProgress progress = TerminalProgress("robots");
@@ -315,7 +350,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.json) {
     nlohmann::json j = json::DesignJson(r);
     if (with_from_rest) j["from_rest_best"] = json::FromRestBestJson(input, from_rest);
-    AddProvenanceJson(j, cmd);
+    AddProvenanceJson(j, cmd, UnusedOptions(kOptionUses, RunOf(opt)));
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", Table(input, r));

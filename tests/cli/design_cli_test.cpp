@@ -223,8 +223,8 @@ std::vector<BadCase> BadCases() {
        "--scan-points = 3.5 is invalid: expected an integer"},
       {"range_element", "--m2-range 0.1:x" + cfg,
        "--m2-range = 0.1:x is invalid: expected MIN:MAX with MIN < MAX"},
-      {"reach_starts", "--reach-starts 0x4" + cfg, "--reach-starts = 0x4 is invalid"},
-      {"reach_evaluations", "--reach-evaluations 0" + cfg,
+      {"reach_starts", "--from-rest --reach-starts 0x4" + cfg, "--reach-starts = 0x4 is invalid"},
+      {"reach_evaluations", "--from-rest --reach-evaluations 0" + cfg,
        "global_evaluations = 0 is invalid: expected 1 <= global_evaluations <= 100000"},
       {"frequency_range_inverted", "--frequency-range 30:20" + cfg,
        "--frequency-range = 30:20 is invalid: expected MIN:MAX with MIN < MAX"},
@@ -269,7 +269,20 @@ std::vector<BadCase> BadCases() {
       {"grid_shard", "--grid m2=0.1:0.3:5 --shard 1/1 -o x.csv" + cfg,
        "shard = 1/1 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
       {"grid_json", "--grid m2=0.1:0.3:5 --json -o x.csv" + cfg,
-       "--json is invalid with --grid: expected one of them"},
+       "--json is invalid with --grid: expected --json only with one design (no --from-rest, "
+       "no --grid) or --from-rest"},
+      // Options of another run would be silently ignored.
+      {"reach_without_from_rest", "--reach-starts 2x2" + cfg,
+       "--reach-starts is invalid with one design (no --from-rest, no --grid): expected "
+       "--reach-starts only with --from-rest"},
+      {"output_without_grid", "-o x.csv" + cfg,
+       "--output is invalid with one design (no --from-rest, no --grid): expected --output only "
+       "with --grid"},
+      {"from_rest_starts_with_grid", "--grid m2=0.1:0.3:5 --from-rest-starts 2x2 -o x.csv" + cfg,
+       "--from-rest-starts is invalid with --grid: expected --from-rest-starts only with "
+       "--from-rest"},
+      {"grid_from_rest", "--grid m2=0.1:0.3:5 --from-rest -o x.csv" + cfg,
+       "--from-rest is invalid with --grid: expected one of them"},
       {"unreadable_config", "--config /nonexistent/robot.toml",
        "config file /nonexistent/robot.toml cannot be read: No such file or directory"},
   };
@@ -285,7 +298,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists("x.csv")) << c.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 33);
+  EXPECT_EQ(checked, 37);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
