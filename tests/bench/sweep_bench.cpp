@@ -54,7 +54,8 @@ BENCHMARK(BM_SweepSolveOnly);
 void BM_SweepRowsOnly(benchmark::State& state) {
   const capsubot::SweepOptions o = PhaseSweep(1000000);
   capsubot::detail::SweepRowWriter writer(o);
-  capsubot::detail::RowBuffer buffer;
+  std::string bytes;
+  capsubot::detail::RowBuffer buffer(bytes);
   std::int64_t point = 0;
   for (auto _ : state) {
     buffer.clear();
@@ -72,7 +73,8 @@ void BM_SweepFormat(benchmark::State& state) {
       capsubot::Solve(o.forcing.WithPhase(-3.0), o.params);  // every cell of the row exists
   const double cells[] = {-3.0,      s.orbit.phi1,   s.orbit.alpha,    s.orbit.u, s.orbit.v_plus,
                           s.orbit.I, s.orbit.v_mean, s.validity.x_min, s.orbit.T0};
-  capsubot::detail::RowBuffer buffer;
+  std::string bytes;
+  capsubot::detail::RowBuffer buffer(bytes);
   const bool shortest = state.range(0) == 0;
   for (auto _ : state) {
     buffer.clear();
@@ -82,7 +84,7 @@ void BM_SweepFormat(benchmark::State& state) {
       } else {
         char text[32];
         const auto r = std::to_chars(text, text + sizeof text, x, std::chars_format::general, 17);
-        buffer.append(text, r.ptr);
+        buffer.append(std::string_view(text, static_cast<std::size_t>(r.ptr - text)));
       }
       buffer.push_back(',');
     }
