@@ -169,14 +169,15 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     errno = err;
     Fail("lock", partial_);
   }
+  last_checkpoint_ = std::chrono::steady_clock::now();
   try {
     Open(header, resume);
   } catch (...) {  // no destructor runs: release the file and its lock here
+    if (pending_checkpoint_.valid()) pending_checkpoint_.wait();
     ::close(fd_);
     fd_ = -1;
     throw;
   }
-  last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
 void SweepFile::Open(const std::string& header, bool resume) {
@@ -227,7 +228,7 @@ void SweepFile::Open(const std::string& header, bool resume) {
   if (::lseek(fd_, bytes_, SEEK_SET) < 0) Fail("seek in", partial_);
   if (!record.exists) {
     Append(header.data(), header.size(), 0);
-    Checkpoint();
+    StartCheckpoint();
   }
 }
 
@@ -258,13 +259,17 @@ void SweepFile::Append(const char* data, std::size_t size, std::int64_t points) 
   }
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_checkpoint_).count() >= checkpoint_seconds_) {
-    FinishCheckpoint();
-    pending_checkpoint_ =
-        std::async(std::launch::async, [this, points = points_, bytes = bytes_, crc = crc_] {
-          WriteCheckpoint(points, bytes, crc);
-        });
-    last_checkpoint_ = now;
+    StartCheckpoint();
   }
+}
+
+void SweepFile::StartCheckpoint() {
+  FinishCheckpoint();
+  pending_checkpoint_ =
+      std::async(std::launch::async, [this, points = points_, bytes = bytes_, crc = crc_] {
+        WriteCheckpoint(points, bytes, crc);
+      });
+  last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
 void SweepFile::FinishCheckpoint() {

@@ -59,6 +59,9 @@ class SweepFile {
   // the partial file, then the checkpoint written, fsynced and renamed into place. Reads only
   // what stays constant once the file is open: safe beside Append.
   void WriteCheckpoint(std::int64_t points, std::int64_t bytes, std::uint32_t crc) const;
+  // Starts a checkpoint of every row appended, written beside the next Append calls (after
+  // the one being written).
+  void StartCheckpoint();
   // Waits for the checkpoint being written, if any; rethrows its error.
   void FinishCheckpoint();
 

@@ -5,6 +5,8 @@
 // BM_SweepPhaseMillion/threads: the whole sweep to a file in /tmp (items/s = grid points per
 // second); BM_SweepSolveOnly: the Solve calls of the same grid, one thread;
 // BM_SweepRowsOnly: Solve + the row into a reused buffer (SweepRowWriter), one thread, no file;
+// BM_SweepBlock: what a computing thread does, blocks of 2048 points (SweepBlocks) into the
+// reused bytes of a block (items/s = points per second);
 // BM_SweepFormat/0 and /1: the 9 numbers of a row formatted as the sweep does (shortest
 // round-trip) and with 17 significant digits (the former format), for comparison.
 
@@ -66,6 +68,22 @@ void BM_SweepRowsOnly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_SweepRowsOnly);
+
+void BM_SweepBlock(benchmark::State& state) {
+  constexpr std::int64_t kPoints = 1000000, kBlock = 2048;
+  const capsubot::SweepOptions o = PhaseSweep(kPoints);
+  const capsubot::BlockCompute compute = capsubot::SweepBlocks(o)();
+  std::string bytes;
+  std::int64_t begin = 0;
+  for (auto _ : state) {
+    bytes.clear();
+    compute(begin, begin + kBlock, bytes);
+    benchmark::DoNotOptimize(bytes.data());
+    begin = (begin + 7 * kBlock) % (kPoints - kBlock);
+  }
+  state.SetItemsProcessed(state.iterations() * kBlock);
+}
+BENCHMARK(BM_SweepBlock)->Unit(benchmark::kMillisecond);
 
 void BM_SweepFormat(benchmark::State& state) {
   const capsubot::SweepOptions o = PhaseSweep(1000000);

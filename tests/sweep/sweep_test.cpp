@@ -137,6 +137,28 @@ TEST(SweepColumns, FollowTheDocumentedLayout) {
             "violations\n");
 }
 
+// The rows go into the block's bytes: after what is there, through growths of the string
+// (far past its first step of 4096 characters), and the string ends where the text does.
+TEST(SweepRowBuffer, AppendsAfterTheBytesAndCutsThemToTheText) {
+  std::string bytes = "kept,";
+  std::string expected = bytes;
+  constexpr int kRows = 2000;  // about 32,000 characters
+  {
+    detail::RowBuffer rows(bytes);
+    for (int i = 0; i < kRows; ++i) {
+      const double x = 0.1 * i;
+      detail::AppendNumber(rows, x);
+      rows.append(",cell,");
+      rows.push_back('\n');
+      expected += FormatNumber(x) + ",cell,\n";
+    }
+    EXPECT_EQ(rows.size(), expected.size());
+    EXPECT_EQ(std::string(rows.data(), rows.size()), expected);
+  }
+  EXPECT_GT(expected.size(), 7u * 4096u);
+  EXPECT_TRUE(bytes == expected) << "the string must end where the text ends";
+}
+
 TEST(SweepNumbers, AreShortestRoundTripAndEqualToFormatNumber) {
   const std::pair<double, const char*> exact[] = {
       {0.0, "0"},
