@@ -232,14 +232,12 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
 BlockComputeFactory SweepBlocks(const SweepOptions& options) {
   return [&options]() -> BlockCompute {
     auto writer = std::make_shared<detail::SweepRowWriter>(options);
-    auto rows = std::make_shared<detail::RowBuffer>();
-    return [&options, writer, rows](std::int64_t begin, std::int64_t end, std::string& out) {
-      rows->clear();
+    return [&options, writer](std::int64_t begin, std::int64_t end, std::string& out) {
+      detail::RowBuffer rows(out);  // the rows go straight into `out`
       std::int64_t count = 0;
       for (std::int64_t i = begin; i < end; ++i) {
-        count += writer->AppendPoint(ShardPoint(options, i), *rows);
+        count += writer->AppendPoint(ShardPoint(options, i), rows);
       }
-      out.append(rows->data(), rows->size());
       return count;
     };
   };

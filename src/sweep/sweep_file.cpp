@@ -23,6 +23,10 @@ constexpr const char* kMagic = "capsubot sweep checkpoint 2";
 // A checkpoint is its description plus a few short lines: anything much longer is not one.
 constexpr std::size_t kCheckpointOverhead = 4096;
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;  // reads of the partial file
+// Rows written since the disk last started writing them: once this many, it starts, so
+// that a checkpoint's fsync only waits for the last ones (the computing threads wait on
+// the writing thread while it waits in fsync).
+constexpr std::int64_t kWritebackBytes = std::int64_t{4} << 20;
 
 std::uint32_t Crc32(std::uint32_t crc, const char* data, std::size_t size) {
   while (size > 0) {  // zlib takes at most 4 GB per call
@@ -165,14 +169,15 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     errno = err;
     Fail("lock", partial_);
   }
+  last_checkpoint_ = std::chrono::steady_clock::now();
   try {
     Open(header, resume);
   } catch (...) {  // no destructor runs: release the file and its lock here
+    if (pending_checkpoint_.valid()) pending_checkpoint_.wait();
     ::close(fd_);
     fd_ = -1;
     throw;
   }
-  last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
 void SweepFile::Open(const std::string& header, bool resume) {
@@ -215,7 +220,7 @@ void SweepFile::Open(const std::string& header, bool resume) {
     // Rows after the checkpoint may be partial: drop them, they are computed again.
     if (::ftruncate(fd_, record.bytes) != 0) Fail("truncate", partial_);
     points_ = record.points;
-    bytes_ = record.bytes;
+    bytes_ = writeback_ = record.bytes;
     crc_ = record.data_crc;
   } else if (::ftruncate(fd_, 0) != 0) {
     Fail("truncate", partial_);
@@ -223,11 +228,13 @@ void SweepFile::Open(const std::string& header, bool resume) {
   if (::lseek(fd_, bytes_, SEEK_SET) < 0) Fail("seek in", partial_);
   if (!record.exists) {
     Append(header.data(), header.size(), 0);
-    Checkpoint();
+    StartCheckpoint();
   }
 }
 
 SweepFile::~SweepFile() {
+  // Its error is not reported: the run stopped with another one, or never read it (Commit).
+  if (pending_checkpoint_.valid()) pending_checkpoint_.wait();
   if (fd_ >= 0) ::close(fd_);
 }
 
@@ -245,17 +252,42 @@ void SweepFile::Append(const char* data, std::size_t size, std::int64_t points) 
   points_ += points;
   if (direct_) return;
   crc_ = Crc32(crc_, data, size);
+  if (bytes_ - writeback_ >= kWritebackBytes) {
+    // Only starts the writing, without waiting: a failure shows in the next fsync.
+    ::sync_file_range(fd_, writeback_, bytes_ - writeback_, SYNC_FILE_RANGE_WRITE);
+    writeback_ = bytes_;
+  }
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_checkpoint_).count() >= checkpoint_seconds_) {
-    Checkpoint();
+    StartCheckpoint();
   }
+}
+
+void SweepFile::StartCheckpoint() {
+  FinishCheckpoint();
+  pending_checkpoint_ =
+      std::async(std::launch::async, [this, points = points_, bytes = bytes_, crc = crc_] {
+        WriteCheckpoint(points, bytes, crc);
+      });
+  last_checkpoint_ = std::chrono::steady_clock::now();
+}
+
+void SweepFile::FinishCheckpoint() {
+  if (pending_checkpoint_.valid()) pending_checkpoint_.get();
 }
 
 void SweepFile::Checkpoint() {
   if (direct_) return;
-  // Data first: the checkpoint never claims bytes that are not on disk.
+  FinishCheckpoint();
+  WriteCheckpoint(points_, bytes_, crc_);
+  last_checkpoint_ = std::chrono::steady_clock::now();
+}
+
+void SweepFile::WriteCheckpoint(std::int64_t points, std::int64_t bytes, std::uint32_t crc) const {
+  // Data first: the checkpoint never claims bytes that are not on disk (the fsync also
+  // covers rows appended since `bytes`: harmless).
   if (::fsync(fd_) != 0) Fail("sync", partial_);
-  const std::string text = CheckpointText(points_, bytes_, crc_, description_);
+  const std::string text = CheckpointText(points, bytes, crc, description_);
   const std::string temp = checkpoint_ + ".tmp";
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) Fail("create", temp);
@@ -270,7 +302,6 @@ void SweepFile::Checkpoint() {
     Fail("write", temp);
   }
   if (std::rename(temp.c_str(), checkpoint_.c_str()) != 0) Fail("rename", temp);
-  last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
 void SweepFile::Commit() {
@@ -279,6 +310,7 @@ void SweepFile::Commit() {
     fd_ = -1;
     return;
   }
+  FinishCheckpoint();
   if (::fsync(fd_) != 0) Fail("sync", partial_);
   // Checkpoint first: killed in between, a partial file without checkpoint starts over.
   std::remove(checkpoint_.c_str());
@@ -294,6 +326,8 @@ void SweepFile::Commit() {
 
 void SweepFile::Discard() {
   if (direct_) return;
+  if (pending_checkpoint_.valid())
+    pending_checkpoint_.wait();  // not to have it put back; its error is moot
   std::remove(checkpoint_.c_str());
   std::remove(partial_.c_str());
 }

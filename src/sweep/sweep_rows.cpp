@@ -1,5 +1,7 @@
 #include "sweep/sweep_rows.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -20,7 +22,7 @@ constexpr int kFormatVersion = 3;
 
 bool RobotMode(const SweepOptions& o) { return o.grid.Has(SweepParameter::kalpha); }
 
-void Append(RowBuffer& out, const char* text) { out.append(fmt::string_view(text)); }
+void Append(RowBuffer& out, const char* text) { out.append(text); }
 
 // Exact text of a double for the description (hexadecimal: no rounding at all).
 std::string Hex(double value) { return fmt::format("{:a}", value); }
@@ -84,10 +86,7 @@ std::string ShardLine(int shard, int shards, std::int64_t points) {
 }
 
 void AppendNumber(RowBuffer& out, double value) {
-  const std::size_t size = out.size();
-  out.try_resize(size + kMaxNumberChars);  // grows the capacity once, then never allocates
-  char* end = WriteNumber(out.data() + size, value);
-  out.try_resize(static_cast<std::size_t>(end - out.data()));
+  out.Advance(WriteNumber(out.Room(kMaxNumberChars), value));
 }
 
 std::string SweepHeaderLines(const SweepOptions& options) {
@@ -203,7 +202,10 @@ void SweepPoint::Set(const GridAxis& axis, double value) {
 }
 
 SweepRowWriter::SweepRowWriter(const SweepOptions& options)
-    : options_(options), point_(options), forcing_(options.forcing) {
+    : options_(options),
+      point_(options),
+      forcing_(options.forcing),
+      values_(options.grid.axes.size()) {
   for (const GridAxis& axis : options.grid.axes) {
     const SweepParameter p = axis.parameter;
     rebuild_force_ = rebuild_force_ || p == SweepParameter::kA || p == SweepParameter::kc ||
@@ -219,13 +221,21 @@ void SweepRowWriter::SetPoint(std::int64_t point) {
   const Grid& g = options_.grid;
   bool phase_changed = false;
   for (std::size_t i = 0; i < g.axes.size(); ++i) {
-    point_.Set(g.axes[i], g.Value(point, i));
+    values_[i] = g.Value(point, i);
+    point_.Set(g.axes[i], values_[i]);
     phase_changed = phase_changed || g.axes[i].parameter == SweepParameter::kphi0;
   }
   if (rebuild_force_) {
     forcing_ = Forcing::Fourier(point_.c, point_.a, point_.b, point_.phi0);  // no allocation
   } else if (phase_changed) {
     forcing_ = options_.forcing.WithPhase(point_.phi0);
+  }
+}
+
+void SweepRowWriter::AppendGridValues(RowBuffer& out) const {
+  for (double value : values_) {
+    AppendNumber(out, value);
+    out.push_back(',');
   }
 }
 
@@ -332,13 +342,6 @@ void SweepRowWriter::AppendReach(RowBuffer& out) const {
 }
 
 int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
-  const Grid& g = options_.grid;
-  const auto append_axes = [&] {
-    for (std::size_t i = 0; i < g.axes.size(); ++i) {
-      AppendNumber(out, g.Value(point, i));
-      out.push_back(',');
-    }
-  };
   bool complete = true;
   const std::vector<Solution> orbits =
       FindRobotOrbits(forcing_, point_.params, point_.alpha, &complete);
@@ -349,14 +352,15 @@ int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
         point, point_.alpha));
   }
   if (orbits.empty()) {
-    append_axes();
-    Append(out, no_orbit_cells_.c_str());
+    AppendGridValues(out);
+    out.append(no_orbit_cells_);
     return 1;
   }
   int index = 0;
   for (const Solution& s : orbits) {
-    append_axes();
-    fmt::format_to(fmt::appender(out), "{},{},", orbits.size(), ++index);
+    AppendGridValues(out);
+    constexpr std::size_t kCountsChars = 2 * 20 + 2;  // two 64-bit counts and their commas
+    out.Advance(fmt::format_to(out.Room(kCountsChars), "{},{},", orbits.size(), ++index));
     AppendNumber(out, s.orbit.forcing.phi0());
     out.push_back(',');
     AppendSolution(s, out);
@@ -368,11 +372,7 @@ int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
 int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
   SetPoint(point);
   if (RobotMode(options_)) return AppendRobotPoint(point, out);
-  const Grid& g = options_.grid;
-  for (std::size_t i = 0; i < g.axes.size(); ++i) {
-    AppendNumber(out, g.Value(point, i));
-    out.push_back(',');
-  }
+  AppendGridValues(out);
   if (options_.optimize == SweepOptimize::kNone) {
     AppendSolution(Solve(forcing_, point_.params), out);
     out.push_back('\n');

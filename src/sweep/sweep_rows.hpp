@@ -2,10 +2,11 @@
 // The rows of one sweep point, formatted into a caller's buffer (no allocation once the
 // buffer has grown), and the text that identifies a sweep in its checkpoint.
 
-#include <fmt/format.h>
-
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -14,7 +15,46 @@
 
 namespace capsubot::detail {
 
-using RowBuffer = fmt::memory_buffer;
+/// Text appended to a string at the cost of writes to a raw buffer (a std::string's own
+/// append is a library call for every cell): the string is grown in large zero-filled steps
+/// past the text, and cut to the text when the RowBuffer goes. The rows of a block are
+/// written so straight into the bytes the block hands over.
+class RowBuffer {
+ public:
+  /// Appends after the current end of `bytes`.
+  explicit RowBuffer(std::string& bytes) : bytes_(bytes), size_(bytes.size()) {}
+  ~RowBuffer() { bytes_.resize(size_); }  ///< cuts `bytes` to the text appended
+  RowBuffer(const RowBuffer&) = delete;
+  RowBuffer& operator=(const RowBuffer&) = delete;
+
+  const char* data() const { return bytes_.data(); }
+  std::size_t size() const { return size_; }  ///< the text's length
+  void clear() { size_ = 0; }
+
+  /// Room for `n` characters at the end of the text; Advance(end) then takes them.
+  char* Room(std::size_t n) {
+    if (bytes_.size() - size_ < n) Grow(n);
+    return &bytes_[size_];
+  }
+  void Advance(const char* end) { size_ = static_cast<std::size_t>(end - bytes_.data()); }
+  void push_back(char c) {
+    *Room(1) = c;
+    ++size_;
+  }
+  void append(std::string_view text) {
+    std::memcpy(Room(text.size()), text.data(), text.size());
+    size_ += text.size();
+  }
+
+ private:
+  static constexpr std::size_t kMinGrowth = 4096;
+  void Grow(std::size_t n) {
+    bytes_.resize(std::max({bytes_.capacity(), 2 * bytes_.size(), size_ + n + kMinGrowth}));
+  }
+
+  std::string& bytes_;
+  std::size_t size_;
+};
 
 /// Appends `value` as capsubot::WriteNumber writes it (nothing for NaN: an empty cell).
 void AppendNumber(RowBuffer& out, double value);
@@ -62,7 +102,9 @@ class SweepRowWriter {
   int AppendPoint(std::int64_t point, RowBuffer& out);
 
  private:
+  // Sets point_ and forcing_ to grid point `point` and values_ to its grid values.
   void SetPoint(std::int64_t point);
+  void AppendGridValues(RowBuffer& out) const;
   void AppendSolution(const Solution& s, RowBuffer& out) const;
   void AppendVariables(const Forcing& f, bool exists, RowBuffer& out) const;
   int AppendRobotPoint(std::int64_t point, RowBuffer& out);
@@ -72,6 +114,7 @@ class SweepRowWriter {
   bool rebuild_force_ = false;  // a force coefficient is gridded: rebuilt at each point
   SweepPoint point_;
   Forcing forcing_;
+  std::vector<double> values_;  // the grid values of the point, one per axis
   std::string no_orbit_cells_;  // robot mode: the cells after the axes of a point without orbit
 };
 

@@ -5,6 +5,8 @@
 // BM_SweepPhaseMillion/threads: the whole sweep to a file in /tmp (items/s = grid points per
 // second); BM_SweepSolveOnly: the Solve calls of the same grid, one thread;
 // BM_SweepRowsOnly: Solve + the row into a reused buffer (SweepRowWriter), one thread, no file;
+// BM_SweepBlock: what a computing thread does, blocks of 2048 points (SweepBlocks) into the
+// reused bytes of a block (items/s = points per second);
 // BM_SweepFormat/0 and /1: the 9 numbers of a row formatted as the sweep does (shortest
 // round-trip) and with 17 significant digits (the former format), for comparison.
 
@@ -54,7 +56,8 @@ BENCHMARK(BM_SweepSolveOnly);
 void BM_SweepRowsOnly(benchmark::State& state) {
   const capsubot::SweepOptions o = PhaseSweep(1000000);
   capsubot::detail::SweepRowWriter writer(o);
-  capsubot::detail::RowBuffer buffer;
+  std::string bytes;
+  capsubot::detail::RowBuffer buffer(bytes);
   std::int64_t point = 0;
   for (auto _ : state) {
     buffer.clear();
@@ -66,13 +69,30 @@ void BM_SweepRowsOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_SweepRowsOnly);
 
+void BM_SweepBlock(benchmark::State& state) {
+  constexpr std::int64_t kPoints = 1000000, kBlock = 2048;
+  const capsubot::SweepOptions o = PhaseSweep(kPoints);
+  const capsubot::BlockCompute compute = capsubot::SweepBlocks(o)();
+  std::string bytes;
+  std::int64_t begin = 0;
+  for (auto _ : state) {
+    bytes.clear();
+    compute(begin, begin + kBlock, bytes);
+    benchmark::DoNotOptimize(bytes.data());
+    begin = (begin + 7 * kBlock) % (kPoints - kBlock);
+  }
+  state.SetItemsProcessed(state.iterations() * kBlock);
+}
+BENCHMARK(BM_SweepBlock)->Unit(benchmark::kMillisecond);
+
 void BM_SweepFormat(benchmark::State& state) {
   const capsubot::SweepOptions o = PhaseSweep(1000000);
   const capsubot::Solution s =
       capsubot::Solve(o.forcing.WithPhase(-3.0), o.params);  // every cell of the row exists
   const double cells[] = {-3.0,      s.orbit.phi1,   s.orbit.alpha,    s.orbit.u, s.orbit.v_plus,
                           s.orbit.I, s.orbit.v_mean, s.validity.x_min, s.orbit.T0};
-  capsubot::detail::RowBuffer buffer;
+  std::string bytes;
+  capsubot::detail::RowBuffer buffer(bytes);
   const bool shortest = state.range(0) == 0;
   for (auto _ : state) {
     buffer.clear();
@@ -82,7 +102,7 @@ void BM_SweepFormat(benchmark::State& state) {
       } else {
         char text[32];
         const auto r = std::to_chars(text, text + sizeof text, x, std::chars_format::general, 17);
-        buffer.append(text, r.ptr);
+        buffer.append(std::string_view(text, static_cast<std::size_t>(r.ptr - text)));
       }
       buffer.push_back(',');
     }

@@ -5,6 +5,7 @@
 #include "capsubot/sweep.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -138,6 +139,28 @@ TEST(SweepColumns, FollowTheDocumentedLayout) {
             "violations\n");
 }
 
+// The rows go into the block's bytes: after what is there, through growths of the string
+// (far past its first step of 4096 characters), and the string ends where the text does.
+TEST(SweepRowBuffer, AppendsAfterTheBytesAndCutsThemToTheText) {
+  std::string bytes = "kept,";
+  std::string expected = bytes;
+  constexpr int kRows = 2000;  // about 32,000 characters
+  {
+    detail::RowBuffer rows(bytes);
+    for (int i = 0; i < kRows; ++i) {
+      const double x = 0.1 * i;
+      detail::AppendNumber(rows, x);
+      rows.append(",cell,");
+      rows.push_back('\n');
+      expected += FormatNumber(x) + ",cell,\n";
+    }
+    EXPECT_EQ(rows.size(), expected.size());
+    EXPECT_EQ(std::string(rows.data(), rows.size()), expected);
+  }
+  EXPECT_GT(expected.size(), 7u * 4096u);
+  EXPECT_TRUE(bytes == expected) << "the string must end where the text ends";
+}
+
 TEST(SweepNumbers, AreShortestRoundTripAndEqualToFormatNumber) {
   const std::pair<double, const char*> exact[] = {
       {0.0, "0"},
@@ -152,7 +175,8 @@ TEST(SweepNumbers, AreShortestRoundTripAndEqualToFormatNumber) {
       {std::numeric_limits<double>::infinity(), "inf"},
       {std::nan(""), ""}};
   for (const auto& [x, text] : exact) {
-    detail::RowBuffer buffer;
+    std::string bytes;
+    detail::RowBuffer buffer(bytes);
     detail::AppendNumber(buffer, x);
     EXPECT_EQ(std::string(buffer.data(), buffer.size()), text);
     EXPECT_EQ(FormatNumber(x), text);
@@ -162,7 +186,8 @@ TEST(SweepNumbers, AreShortestRoundTripAndEqualToFormatNumber) {
   // implementation of shortest round-trip, Dragonbox).
   std::mt19937_64 rng(20211);
   int checked = 0;
-  detail::RowBuffer buffer;  // one buffer, reused as the sweep does
+  std::string bytes;
+  detail::RowBuffer buffer(bytes);  // one buffer, reused as the sweep does
   for (int i = 0; i < 100000; ++i) {
     std::uint64_t bits = rng();
     double x = 0.0;
