@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 
 #include "sweep/grid_run.hpp"
@@ -238,18 +237,18 @@ SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallba
     return BalancedBlock(points, threads, 1);
   };
   const BlockComputeFactory blocks = [&o]() -> BlockCompute {
-    auto row = std::make_shared<detail::RowBuffer>();
-    return [&o, row](std::int64_t begin, std::int64_t end, std::string& out) {
+    return [&o](std::int64_t begin, std::int64_t end, std::string& out) {
       for (std::int64_t i = begin; i < end; ++i) {
         const std::int64_t point = o.shard + i * o.shards;
         double m2 = kNaN;
         const DesignInput in = o.PointInput(point, m2);
-        row->clear();
-        for (std::size_t a = 0; a < o.axes.size(); ++a) {
-          detail::AppendNumber(*row, RowMajorValue(o.axes, point, a));
-          row->push_back(',');
+        {
+          detail::RowBuffer cells(out);  // the grid's values straight into `out`
+          for (std::size_t a = 0; a < o.axes.size(); ++a) {
+            detail::AppendNumber(cells, RowMajorValue(o.axes, point, a));
+            cells.push_back(',');
+          }
         }
-        out.append(row->data(), row->size());
         out += o.row(DesignGait(in, m2));
         out += '\n';
       }
