@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# A sweep (or, with KIND=basins, a basin map) split over a Slurm job array: task K of N
+# A sweep (or, with KIND=basins, a basin map; KIND=attractors, the per-start motions of the
+# starts from rest) split over a Slurm job array: task K of N
 # computes shard K/N, a last job that depends on the array merges the N files into the file
 # the command gives on one machine.
 #
@@ -8,8 +9,9 @@
 #
 # or both at once:  examples/slurm/sweep_array.sh submit
 #   KIND=basins OUT=basins.csv examples/slurm/sweep_array.sh submit    # a basin map
-# A killed or requeued sweep task continues from its checkpoint (--resume); a basin task
-# starts its shard again. Edit SWEEP or BASINS, OUT, N.
+#   KIND=attractors OUT=starts.csv examples/slurm/sweep_array.sh submit
+# A killed or requeued task continues its shard from its checkpoint (--resume). Edit SWEEP,
+# BASINS or ATTRACTORS, OUT, N.
 #SBATCH --job-name=capsubot-sweep
 #SBATCH --cpus-per-task=2
 #SBATCH --time=02:00:00
@@ -22,8 +24,15 @@ OUT=${OUT:-p2_T0_e.csv}
 KIND=${KIND:-sweep}
 SWEEP=(sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize forcing --stability --resume)
 BASINS=(basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278
-  --starts 512x512)
-if [[ "$KIND" == basins ]]; then RUN=("${BASINS[@]}"); else RUN=("${SWEEP[@]}"); fi
+  --starts 512x512 --resume)
+ATTRACTORS=(attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5
+  --alpha 0.2792869076315278 --starts 256x256 --resume)
+case "$KIND" in
+  sweep) RUN=("${SWEEP[@]}") ;;
+  basins) RUN=("${BASINS[@]}") ;;
+  attractors) RUN=("${ATTRACTORS[@]}") ;;
+  *) echo "KIND = $KIND is invalid: expected sweep, basins or attractors" >&2; exit 2 ;;
+esac
 
 if [[ "${1:-}" == "submit" ]]; then
   array=$(sbatch --parsable --array=0-$((N - 1)) --export=ALL,N="$N",OUT="$OUT",KIND="$KIND" "$0")
