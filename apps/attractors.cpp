@@ -4,12 +4,16 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <stdexcept>
 #include <tuple>
 
 #include "attract_options.hpp"
+#include "capsubot/io.hpp"
+#include "capsubot/start_map.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
+#include "start_shard.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -17,6 +21,8 @@ namespace {
 struct AttractorsCommandOptions {
   RobotOptions robot;
   std::string starts = "8x8";
+  std::string output;  // the per-start CSV; empty: none
+  StartShardCliOptions shard;
   int threads = 0;
   bool json = false;
 };
@@ -27,11 +33,24 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   std::tie(fr.n_x, fr.n_psi) = ParseGridSize("--starts", opt.starts);
   fr.attractor.motion = opt.robot.motion;
   fr.attractor.threads = opt.threads;
+  RequireShardForResume(cmd, opt.shard);
+  if (!opt.shard.shard.empty()) {
+    if (opt.output.empty()) {
+      throw std::invalid_argument(
+          "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
+    }
+    return RunStartShard(opt.shard, cmd, opt.robot, forcing, GridStarts(fr.n_x, fr.n_psi),
+                         fr.attractor, false, opt.output, {{"--json", opt.json}});
+  }
+  if (!opt.output.empty()) {
+    AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
+  }
   const Attractors a =
       FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr, TerminalProgress("starts"));
+  if (!opt.output.empty()) WriteStartMap(opt.output, GridStarts(fr.n_x, fr.n_psi), a, false);
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd);
+    AddProvenanceJson(j, cmd, {"--checkpoint-seconds"});
     fmt::print("{}\n", j.dump());
     return 0;
   }
@@ -55,6 +74,8 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
     t += fmt::format(", {} starts hit the work bound and are left out", a.event_limit_starts);
   }
   t += "\n";
+  if (!opt.output.empty())
+    t += fmt::format("  the motion of every start written to {}\n", opt.output);
   fmt::print("{}", t);
   return 0;
 }
@@ -73,6 +94,11 @@ Command AddAttractorsCommand(CLI::App& app) {
   AddRobotOptions(*cmd, opt->robot);
   cmd->add_option("--starts", opt->starts, "grid of starts NXxNPSI (positions x phases)")
       ->capture_default_str();
+  cmd->add_option("-o,--output", opt->output,
+                  "also write the motion of every start to this CSV (x0, psi, attractor, period, "
+                  "impacts_right, impacts_left, mean_velocity, status: the map of `basins`; "
+                  "written atomically)");
+  AddStartShardOptions(*cmd, opt->shard, "attractors");
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: starts, attractors (status, period, impacts_right, "

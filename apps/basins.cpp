@@ -13,10 +13,12 @@
 
 #include "attract_options.hpp"
 #include "capsubot/io.hpp"
+#include "capsubot/start_map.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
 #include "report.hpp"
+#include "start_shard.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -33,7 +35,7 @@ struct BasinsCommandOptions {
   double u_min = -1.0, u_max = 1.0;
   std::string output;
   std::string plot;
-  std::string shard;  // "K/N", empty: every start
+  StartShardCliOptions shard;
   int threads = 0;
   bool json = false;
 };
@@ -91,75 +93,6 @@ void Plot(const std::string& csv, const std::string& path, const Attractors& a, 
   std::filesystem::rename(temp, path);
 }
 
-// One row of the map; `attractor` empty in a shard file (the label needs the whole map).
-void WriteRow(std::ostream& out, const PhaseState& start, const Motion& m, bool x0_u0,
-              const std::string& attractor) {
-  out << FormatNumber(start.x) << ',' << FormatNumber(x0_u0 ? start.u : start.psi) << ','
-      << attractor << ',' << m.period << ',' << m.impacts_right << ',' << m.impacts_left << ','
-      << FormatNumber(m.mean_velocity) << ',' << MotionStatusName(m.status) << '\n';
-}
-
-const char* Header(bool x0_u0) {
-  return x0_u0 ? "x0,u0,attractor,period,impacts_right,impacts_left,mean_velocity,status\n"
-               : "x0,psi,attractor,period,impacts_right,impacts_left,mean_velocity,status\n";
-}
-
-// Shard k of n: the starts s with s % n = k, their motions written with an empty attractor
-// cell after a comment line naming the run and the line "# shard K/N of T starts"
-// (`capsubot merge` joins the shards: capsubot/basin_shards.hpp).
-int RunShard(const BasinsCommandOptions& opt, const CLI::App& cmd, const Forcing& forcing,
-             const std::vector<PhaseState>& starts, const AttractorOptions& ao, bool x0_u0) {
-  int k = 0, n = 0;
-  std::tie(k, n) = ParseShard(opt.shard);
-  if (n < 1 || k < 0 || k >= n) {
-    throw std::invalid_argument(fmt::format(
-        "--shard = {} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", opt.shard));
-  }
-  if (static_cast<std::size_t>(n) > starts.size()) {
-    throw std::invalid_argument(
-        fmt::format("--shard = {} is invalid: the map has only {} starts: expected at most as "
-                    "many shards as starts",
-                    opt.shard, starts.size()));
-  }
-  for (const auto& [flag, set] : {std::pair<const char*, bool>{"--plot", !opt.plot.empty()},
-                                  std::pair<const char*, bool>{"--json", opt.json}}) {
-    if (set) {
-      throw std::invalid_argument(fmt::format(
-          "{} is invalid with --shard: expected it only on a whole map (draw the merged CSV: "
-          "docs/cluster.md)",
-          flag));
-    }
-  }
-  std::vector<PhaseState> mine;
-  for (std::size_t s = static_cast<std::size_t>(k); s < starts.size();
-       s += static_cast<std::size_t>(n)) {
-    mine.push_back(starts[s]);
-  }
-  Ranks ranks;
-  if (ranks.worker()) {
-    return ranks.Serve(MotionBlocks(forcing, opt.robot.params, opt.robot.alpha, mine, ao),
-                       ao.threads);
-  }
-  {
-    AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
-  }
-  const std::vector<Motion> motions =
-      LongRunMotions(forcing, opt.robot.params, opt.robot.alpha, mine, ao,
-                     TerminalProgress("starts"), ranks.backend());
-  AtomicFile file(opt.output, "-o");
-  auto& out = file.stream();
-  out << "# "
-      << CommandProvenance(cmd, {"--threads", "--output", "--shard", "--plot", "--json"})
-             .CommandLine()
-      << '\n'
-      << fmt::format("# shard {}/{} of {} starts\n", k, n, starts.size()) << Header(x0_u0);
-  for (std::size_t i = 0; i < mine.size(); ++i) WriteRow(out, mine[i], motions[i], x0_u0, "");
-  file.Commit();
-  fmt::print("basins: shard {}/{}: {} of {} starts written to {}\n", k, n, mine.size(),
-             starts.size(), opt.output);
-  return 0;
-}
-
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   int nx = 0, ny = 0;
@@ -173,23 +106,25 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
     throw std::invalid_argument(fmt::format(
         "--u-min = {} and --u-max = {} are invalid: expected u-min < u-max", opt.u_min, opt.u_max));
   }
-  std::vector<PhaseState> starts;
-  starts.reserve(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-  for (int i = 0; i < nx; ++i) {
-    for (int j = 0; j < ny; ++j) {
-      if (x0_u0) {
-        PhaseState s = RestStart((i + 0.5) / nx, opt.psi);
+  std::vector<PhaseState> starts = GridStarts(nx, ny);
+  if (x0_u0) {
+    for (int i = 0; i < nx; ++i) {
+      for (int j = 0; j < ny; ++j) {
+        PhaseState& s = starts[static_cast<std::size_t>(i) * static_cast<std::size_t>(ny) +
+                               static_cast<std::size_t>(j)];
+        s = RestStart((i + 0.5) / nx, opt.psi);
         s.u = opt.u_min + (j + 0.5) * (opt.u_max - opt.u_min) / ny;
-        starts.push_back(s);
-      } else {
-        starts.push_back(GridStart(i, j, nx, ny));
       }
     }
   }
   AttractorOptions ao;
   ao.motion = opt.robot.motion;
   ao.threads = opt.threads;
-  if (!opt.shard.empty()) return RunShard(opt, cmd, forcing, starts, ao, x0_u0);
+  RequireShardForResume(cmd, opt.shard);
+  if (!opt.shard.shard.empty()) {
+    return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, x0_u0, opt.output,
+                         {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});
+  }
   Ranks ranks;  // under mpirun: rank 0 runs the command, the others compute blocks of starts
   if (ranks.worker()) {
     return ranks.Serve(MotionBlocks(forcing, opt.robot.params, opt.robot.alpha, starts, ao),
@@ -200,13 +135,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   }
   const Attractors a = ClassifyStarts(forcing, opt.robot.params, opt.robot.alpha, starts, ao,
                                       TerminalProgress("starts"), ranks.backend());
-  AtomicFile file(opt.output, "-o");
-  auto& out = file.stream();
-  out << Header(x0_u0);
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    WriteRow(out, starts[k], a.motions[k], x0_u0, std::to_string(a.labels[k] + 1));
-  }
-  file.Commit();
+  WriteStartMap(opt.output, starts, a, x0_u0);
   if (!opt.plot.empty()) {
     const std::string title =
         fmt::format("Basins of attraction: {}, T0 = {:g}, e = {:g}, alpha = {:.6g}{}",
@@ -216,7 +145,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   }
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd);
+    AddProvenanceJson(j, cmd, {"--checkpoint-seconds"});
     fmt::print("{}\n", j.dump());
     return 0;
   }
@@ -254,11 +183,7 @@ Command AddBasinsCommand(CLI::App& app) {
   cmd->add_option("--u-max", opt->u_max, "largest u0 of the x0-u0 plane")->capture_default_str();
   cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")->required();
   cmd->add_option("--plot", opt->plot, "also draw the map into this PNG file (needs gnuplot)");
-  cmd->add_option("--shard", opt->shard,
-                  "compute only shard K of N (0 <= K < N): the starts s with s % N = K (in the "
-                  "order x0 major); the CSV gets a comment line naming the run, a line '# shard "
-                  "K/N of T starts' and empty attractor cells; `capsubot merge OUT SHARDS...` "
-                  "joins the N files into the map's CSV (docs/cluster.md)");
+  AddStartShardOptions(*cmd, opt->shard, "basins");
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
                 "print the attractors object of `attractors --json` with provenance");

@@ -7,10 +7,16 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "attract_options.hpp"
+#include "capsubot/bifurcation_shards.hpp"
+#include "capsubot/grid.hpp"
 #include "capsubot/io.hpp"
 #include "commands.hpp"
+#include "provenance.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -21,11 +27,48 @@ struct BifurcationCommandOptions {
   std::string param;
   std::string direction = "both";
   std::string start = "0.5,0";
+  std::string over;   // "NAME=lo:hi:n" (the sweep's axis syntax), empty: one diagram
+  std::string shard;  // "K/N", empty: the whole study
   std::string output, summary;
   bool no_analytic = false;
 };
 
-int Run(BifurcationCommandOptions& opt) {
+// The cell of the second parameter before a row ("" without it).
+std::string OverCell(bool two, double over) { return two ? FormatNumber(over) + ',' : ""; }
+
+std::string ImpactRow(const ImpactPoint& p, bool two) {
+  return fmt::format("{}{},{},{},{},{},{}\n", OverCell(two, p.over), FormatNumber(p.param),
+                     SweepDirectionName(p.direction), p.period_index, p.right ? "right" : "left",
+                     FormatNumber(p.phase), FormatNumber(p.velocity));
+}
+
+std::string SummaryRow(const BifurcationPoint& p, bool two) {
+  return fmt::format("{}{},{},{},{},{},{},{},{},{},{}\n", OverCell(two, p.over),
+                     FormatNumber(p.param), SweepDirectionName(p.direction), p.motion.period,
+                     p.motion.impacts_right, p.motion.impacts_left,
+                     FormatNumber(p.motion.mean_velocity), FormatNumber(p.multiplier_re),
+                     FormatNumber(p.multiplier_im), FormatNumber(p.spectral_radius),
+                     MotionStatusName(p.motion.status));
+}
+
+// Writes `header` and the rows of `points` (part after part, as d.parts) to `file`; in a
+// shard (`head` not empty: its comment lines) each part after its part line.
+template <class Point, class Row>
+void WriteRows(AtomicFile& file, const std::string& head, const std::string& header,
+               const BifurcationDiagram& d, const std::vector<Point>& points, Row row) {
+  auto& out = file.stream();
+  out << head << header;
+  std::size_t k = 0;
+  for (const int part : d.parts) {
+    std::string rows;
+    std::int64_t count = 0;
+    for (; k < points.size() && points[k].part == part; ++k, ++count) rows += row(points[k]);
+    if (!head.empty()) out << BifurcationPartLine(part, d.total_parts, count);
+    out << rows;
+  }
+}
+
+int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   BifurcationOptions o = opt.diagram;
   o.param = ParseBifurcationParam(opt.param, &o.harmonic);
@@ -38,43 +81,61 @@ int Run(BifurcationCommandOptions& opt) {
   }
   o.up = opt.direction != "down";
   o.down = opt.direction != "up";
+  const bool two = !opt.over.empty();
+  std::string over_name;
+  if (two) {
+    const GridAxis axis = ParseGridAxis(opt.over);
+    over_name = axis.name();
+    o.over = ParseBifurcationParam(over_name, &o.over_harmonic);
+    for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
+  }
+  if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   double alpha = opt.robot.alpha;
   if (o.param == BifurcationParam::kAlpha) alpha = o.from;  // the swept value decides
+  if (two && o.over == BifurcationParam::kAlpha) alpha = o.over_values.front();
   if (std::isnan(alpha)) {
     throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
   }
+  o.Validate();  // a bad --shard fails here, before any file is touched
   {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
   const BifurcationDiagram d =
       ComputeBifurcation(forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"));
+  // A shard's files: the run's name (without --shard and the paths), the shard line.
+  const std::string head =
+      opt.shard.empty()
+          ? std::string()
+          : "# " +
+                CommandProvenance(cmd, {"--threads", "--output", "--summary", "--shard"})
+                    .CommandLine() +
+                '\n' +
+                fmt::format("# shard {}/{} of {} continuations\n", o.shard, o.shards,
+                            BifurcationContinuations(o));
+  const std::string over_column = two ? over_name + ',' : "";
   AtomicFile impacts(opt.output, "-o");
-  impacts.stream() << "param,direction,period_index,wall,phase,velocity\n";
-  for (const ImpactPoint& p : d.impacts) {
-    impacts.stream() << FormatNumber(p.param) << ',' << SweepDirectionName(p.direction) << ','
-                     << p.period_index << ',' << (p.right ? "right" : "left") << ','
-                     << FormatNumber(p.phase) << ',' << FormatNumber(p.velocity) << '\n';
-  }
+  WriteRows(impacts, head, over_column + "param,direction,period_index,wall,phase,velocity\n", d,
+            d.impacts, [two](const ImpactPoint& p) { return ImpactRow(p, two); });
   std::unique_ptr<AtomicFile> summary;
   if (!opt.summary.empty()) {
     summary = std::make_unique<AtomicFile>(opt.summary, "--summary");
-    auto& s = summary->stream();
-    s << "param,direction,period,impacts_right,impacts_left,mean_velocity,largest_multiplier,"
-         "largest_multiplier_im,spectral_radius,status\n";
-    for (const BifurcationPoint& p : d.summary) {
-      s << FormatNumber(p.param) << ',' << SweepDirectionName(p.direction) << ',' << p.motion.period
-        << ',' << p.motion.impacts_right << ',' << p.motion.impacts_left << ','
-        << FormatNumber(p.motion.mean_velocity) << ',' << FormatNumber(p.multiplier_re) << ','
-        << FormatNumber(p.multiplier_im) << ',' << FormatNumber(p.spectral_radius) << ','
-        << MotionStatusName(p.motion.status) << '\n';
-    }
+    WriteRows(*summary, head,
+              over_column +
+                  "param,direction,period,impacts_right,impacts_left,mean_velocity,"
+                  "largest_multiplier,largest_multiplier_im,spectral_radius,status\n",
+              d, d.summary, [two](const BifurcationPoint& p) { return SummaryRow(p, two); });
   }
   impacts.Commit();
   if (summary) summary->Commit();
   fmt::print(
-      "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}): {} impacts written to "
+      "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}){}{}: {} impacts written to "
       "{}{}\n",
-      opt.param, o.from, o.to, o.steps, opt.direction, d.impacts.size(), opt.output,
+      opt.param, o.from, o.to, o.steps, opt.direction,
+      two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string(),
+      opt.shard.empty() ? std::string()
+                        : fmt::format(", shard {}/{} of {} continuations", o.shard, o.shards,
+                                      BifurcationContinuations(o)),
+      d.impacts.size(), opt.output,
       summary ? fmt::format(", {} summary rows to {}", d.summary.size(), opt.summary)
               : std::string());
   return 0;
@@ -91,7 +152,8 @@ Command AddBifurcationCommand(CLI::App& app) {
       "coexisting attractors show as hysteresis. At each value: a transient, then the impacts of "
       "the record (-o) and a summary row (--summary) with the period, impacts, mean velocity and "
       "largest multiplier (Newton shooting), plus the valid analytic one-impact orbits "
-      "(direction = analytic).");
+      "(direction = analytic). --over: one diagram per value of a second parameter; --shard "
+      "K/N: some of the continuations, joined by `capsubot merge` (docs/cluster.md).");
   AddRobotOptions(*cmd, opt->robot);
   cmd->get_option("--alpha")->required(false)->description(
       "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1 (not needed with --param alpha)");
@@ -120,8 +182,20 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "largest_multiplier_im, spectral_radius, status; plus the analytic orbits");
   cmd->add_flag("--no-analytic", opt->no_analytic,
                 "leave the analytic one-impact orbits out of the summary");
+  cmd->add_option("--over", opt->over,
+                  "a two-parameter study: one diagram per value of this second parameter, "
+                  "NAME=lo:hi:n, NAME=lo:hi:n:log or NAME=v1,v2,... (the syntax of `sweep "
+                  "--grid`; NAME one of the --param choices); both CSVs get a first column NAME")
+      ->type_name("NAME=LO:HI:N");
+  cmd->add_option("--shard", opt->shard,
+                  "compute only shard K of N (0 <= K < N <= the continuations, one per "
+                  "direction and value of --over): the continuations q with q % N = K (q = "
+                  "value index x directions + direction); the files get a comment line naming "
+                  "the run, a line '# shard K/N of T continuations' and a line '# part P of Q: "
+                  "R rows' before each part; `capsubot merge OUT SHARDS...` joins the N files "
+                  "of -o (or of --summary) into the file of the whole study (docs/cluster.md)");
   AddThreadsOption(*cmd, opt->diagram.threads);
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }
 
 }  // namespace capsubot::app

@@ -1,6 +1,5 @@
-// capsubot merge: joins the shard files of `capsubot sweep --shard K/N` or `capsubot basins
-// --shard K/N` into the file of the whole run (library: capsubot/sweep_merge.hpp,
-// capsubot/basin_shards.hpp).
+// capsubot merge: joins the shard files of `capsubot sweep|basins|attractors --shard K/N` into
+// the file of the whole run (library: capsubot/sweep_merge.hpp, capsubot/basin_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -35,10 +34,10 @@ Command AddMergeCommand(CLI::App& app) {
   auto opt = std::make_shared<MergeCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "merge",
-      "Joins the N shard files of one `capsubot sweep --shard K/N` or `capsubot basins --shard "
-      "K/N` run (any order) into OUT, byte-identical to the run on one machine (a basin map: "
-      "the attractors are labelled over the whole map); refuses shards of different runs, a "
-      "missing or duplicated shard and a truncated one (docs/cluster.md).");
+      "Joins the N shard files of one `capsubot sweep|basins|attractors --shard K/N` run (any "
+      "order) into OUT, byte-identical to the -o file of the run on one machine (a map of "
+      "starts: the attractors are labelled over the whole map); refuses shards of different "
+      "runs, a missing or duplicated shard and a truncated one (docs/cluster.md).");
   cmd->add_option("OUT", opt->output, "the CSV file to write (atomically; - : standard output)")
       ->required();
   cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();

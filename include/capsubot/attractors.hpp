@@ -104,6 +104,10 @@ PhaseState RestStart(double x0, double psi);
 /// psi = tau j / n_psi.
 PhaseState GridStart(int i, int j, int n_x, int n_psi);
 
+/// Every cell of that grid, i = 0..n_x-1 (outer), j = 0..n_psi-1 (inner); none when a size is
+/// below 1.
+std::vector<PhaseState> GridStarts(int n_x, int n_psi);
+
 /// Progress of a classification of many starts: starts done of total. Called from worker
 /// threads under a lock, in increasing order of `done`; must be cheap.
 using StartsProgress = std::function<void(std::int64_t done, std::int64_t total)>;
@@ -154,6 +158,19 @@ std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params,
                                    const AttractorOptions& options,
                                    const StartsProgress& progress = {},
                                    const BlockBackend& backend = LocalBlocks());
+
+/// Receives the motions of starts [begin, end) (end - begin of them), block after block in
+/// the order of the starts, on the calling thread.
+using MotionSink = std::function<void(std::int64_t begin, std::int64_t end, const Motion* motions)>;
+
+/// LongRunMotions of starts [first, starts.size()) handed to `sink` block by block as they are
+/// done (a writer streams them to a file; what `sink` throws stops the run and is rethrown).
+/// The motions do not depend on `first`, the backend or the threads. Throws
+/// std::invalid_argument for bad inputs (naming the field) before any call of `sink`.
+void StreamLongRunMotions(const Forcing& forcing, const Params& params, double alpha,
+                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
+                          std::int64_t first, const MotionSink& sink,
+                          const BlockBackend& backend = LocalBlocks());
 
 /// The motions of `starts` (one each, in the same order) grouped into attractors, as
 /// ClassifyStarts groups them: in the order of the starts, two motions in one class when

@@ -1,5 +1,6 @@
 #pragma once
-// Joining the shards of a basin map (`capsubot basins --shard K/N`): each shard file holds the
+// Joining the shards of a basin map (`capsubot basins --shard K/N`, and the map of the starts
+// from rest of `capsubot attractors --shard K/N`, start_map.hpp): each shard file holds the
 // rows of the starts s with s % N = K, their attractor cells empty (a label depends on the
 // whole map); the join regroups every start's motion as ClassifyStarts does and writes the
 // map's CSV byte for byte (docs/cluster.md).
@@ -23,7 +24,7 @@ MergeSummary MergeBasinShards(const std::vector<std::string>& shards, const std:
                               double velocity_tolerance = AttractorOptions{}.velocity_tolerance);
 
 /// MergeBasinShards when the first file is a basin shard (its shard line counts "starts"),
-/// else MergeSweepShards.
+/// MergeBifurcationShards when it counts "continuations", else MergeSweepShards.
 MergeSummary MergeShards(const std::vector<std::string>& shards, const std::string& output);
 
 }  // namespace capsubot

@@ -43,10 +43,25 @@ struct BifurcationOptions {
   bool multipliers = true;                 ///< largest multiplier of each periodic motion (Newton)
   bool analytic = true;                    ///< add the valid one-impact orbits of every value
   int threads = 0;  ///< the sweeps run in parallel (0: all cores); same result
+  /// A two-parameter study: one diagram per value of a second parameter `over` (set to each
+  /// of over_values in turn, the other inputs kept); empty: one diagram, no second parameter.
+  std::vector<double> over_values;
+  BifurcationParam over = BifurcationParam::kC;  ///< the second parameter (not `param`)
+  int over_harmonic = 0;                         ///< k of a_k, b_k when `over` is one, else 0
+  /// Compute only shard `shard` of `shards` (0 <= shard < shards <= the continuations): the
+  /// continuations q with q % shards = shard, q = i * D + d for over value i and direction d
+  /// (D = 2 up and down, else 1; d = 0 up), with the analytic orbits of the values i whose
+  /// continuation i * D it holds.
+  int shard = 0;
+  int shards = 1;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
 };
+
+/// The continuations of a diagram (up and down sweeps over every value of the second
+/// parameter): the independent units of its work, hence of its shards.
+int BifurcationContinuations(const BifurcationOptions& options);
 
 enum class SweepDirection { kUp, kDown, kAnalytic };
 /// "up", "down", "analytic".
@@ -60,6 +75,8 @@ struct ImpactPoint {
   bool right = true;      ///< right wall (else left)
   double phase = 0.0;     ///< forcing phase psi at the impact, in [0, tau)
   double velocity = 0.0;  ///< relative velocity just before it
+  double over = std::numeric_limits<double>::quiet_NaN();  ///< second parameter (NaN: none)
+  int part = 0;  ///< the part it belongs to (BifurcationDiagram::parts)
 };
 
 /// The long-run motion at one parameter value (or an analytic orbit).
@@ -74,6 +91,8 @@ struct BifurcationPoint {
   double multiplier_re = kNaN;
   double multiplier_im = kNaN;
   double spectral_radius = kNaN;  ///< its modulus
+  double over = kNaN;             ///< value of the second parameter (NaN: none)
+  int part = 0;                   ///< the part it belongs to (BifurcationDiagram::parts)
 };
 
 struct BifurcationDiagram {
@@ -81,9 +100,15 @@ struct BifurcationDiagram {
   /// periodic motion found by the early stop (the others would repeat them).
   std::vector<ImpactPoint> impacts;
   std::vector<BifurcationPoint> summary;  ///< per value: up sweep, down sweep, analytic orbits
+  /// The parts computed, in order: per value of the second parameter, its up sweep, down
+  /// sweep and analytic orbits (those asked for), numbered 0 .. total_parts - 1 over the whole
+  /// study; a shard holds some of them. Rows come part after part.
+  std::vector<int> parts;
+  int total_parts = 0;
 };
 
-/// The diagram for the robot (forcing, params, alpha) with options.param stepped. Throws
+/// The diagram for the robot (forcing, params, alpha) with options.param stepped (one per
+/// value of options.over; the parts of shard options.shard only). Throws
 /// std::invalid_argument for bad inputs (a value of the range that makes the robot invalid
 /// names the parameter and the value).
 /// `progress` (optional) is told the parameter values simulated so far (up and down sweeps

@@ -114,31 +114,50 @@ BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, d
   };
 }
 
-std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
-                                   const std::vector<PhaseState>& starts,
-                                   const AttractorOptions& options, const StartsProgress& progress,
-                                   const BlockBackend& backend) {
+void StreamLongRunMotions(const Forcing& forcing, const Params& params, double alpha,
+                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
+                          std::int64_t first, const MotionSink& sink, const BlockBackend& backend) {
   params.Validate();
   options.Validate();
   for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
   const auto n = static_cast<std::int64_t>(starts.size());
-  std::vector<Motion> motions(starts.size());
+  if (first < 0 || first > n) {
+    throw std::invalid_argument(fmt::format(
+        "first start = {} is invalid: expected 0 <= first <= {} (the starts)", first, n));
+  }
   BlockPlan plan;
+  plan.first = first;
   plan.end = n;
-  plan.threads = detail::WorkerCount(options.threads, n);
-  plan.block = BalancedBlock(n, backend.Threads(plan.threads), kStartsPerBlock);
-  backend.Run(
-      plan, MotionBlocks(forcing, params, alpha, starts, options),
-      [&](std::int64_t begin, std::int64_t end, const std::string& bytes, std::int64_t) {
-        if (bytes.size() != static_cast<std::size_t>(end - begin) * sizeof(Motion)) {
-          throw std::runtime_error(fmt::format(
-              "the motions of starts {} to {} came back with {} bytes: expected {}", begin, end - 1,
-              bytes.size(), static_cast<std::size_t>(end - begin) * sizeof(Motion)));
-        }
-        std::memcpy(static_cast<void*>(&motions[static_cast<std::size_t>(begin)]), bytes.data(),
-                    bytes.size());
+  plan.threads = detail::WorkerCount(options.threads, std::max<std::int64_t>(1, n - first));
+  plan.block = BalancedBlock(n - first, backend.Threads(plan.threads), kStartsPerBlock);
+  std::vector<Motion> block;
+  backend.Run(plan, MotionBlocks(forcing, params, alpha, starts, options),
+              [&](std::int64_t begin, std::int64_t end, const std::string& bytes, std::int64_t) {
+                const auto count = static_cast<std::size_t>(end - begin);
+                if (bytes.size() != count * sizeof(Motion)) {
+                  throw std::runtime_error(fmt::format(
+                      "the motions of starts {} to {} came back with {} bytes: expected {}", begin,
+                      end - 1, bytes.size(), count * sizeof(Motion)));
+                }
+                block.resize(count);
+                std::memcpy(static_cast<void*>(block.data()), bytes.data(), bytes.size());
+                sink(begin, end, block.data());
+              });
+}
+
+std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::vector<PhaseState>& starts,
+                                   const AttractorOptions& options, const StartsProgress& progress,
+                                   const BlockBackend& backend) {
+  std::vector<Motion> motions(starts.size());
+  const auto n = static_cast<std::int64_t>(starts.size());
+  StreamLongRunMotions(
+      forcing, params, alpha, starts, options, 0,
+      [&](std::int64_t begin, std::int64_t end, const Motion* block) {
+        std::copy(block, block + (end - begin), motions.begin() + begin);
         if (progress) progress(end, n);
-      });
+      },
+      backend);
   return motions;
 }
 
@@ -218,17 +237,21 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
   return out;
 }
 
+std::vector<PhaseState> GridStarts(int n_x, int n_psi) {
+  std::vector<PhaseState> starts;
+  if (n_x < 1 || n_psi < 1) return starts;
+  starts.reserve(static_cast<std::size_t>(n_x) * static_cast<std::size_t>(n_psi));
+  for (int i = 0; i < n_x; ++i) {
+    for (int j = 0; j < n_psi; ++j) starts.push_back(GridStart(i, j, n_x, n_psi));
+  }
+  return starts;
+}
+
 Attractors FindAttractors(const Forcing& forcing, const Params& params, double alpha,
                           const FromRestOptions& options, const StartsProgress& progress) {
   options.Validate();
-  std::vector<PhaseState> starts;
-  starts.reserve(static_cast<std::size_t>(options.n_x) * static_cast<std::size_t>(options.n_psi));
-  for (int i = 0; i < options.n_x; ++i) {
-    for (int j = 0; j < options.n_psi; ++j) {
-      starts.push_back(GridStart(i, j, options.n_x, options.n_psi));
-    }
-  }
-  return ClassifyStarts(forcing, params, alpha, starts, options.attractor, progress);
+  return ClassifyStarts(forcing, params, alpha, GridStarts(options.n_x, options.n_psi),
+                        options.attractor, progress);
 }
 
 }  // namespace capsubot

@@ -4,8 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -21,6 +23,7 @@ namespace capsubot {
 namespace {
 
 constexpr int kMaxSteps = 10000000;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The robot at one value of the parameter.
 struct Robot {
@@ -69,6 +72,22 @@ Robot At(const Robot& base, BifurcationParam param, int harmonic, double value) 
       break;
   }
   return r;
+}
+
+// Checks that `param` can be set on `forcing`: A needs the harmonic family, a_k and b_k a
+// force with k harmonics.
+void CheckParam(const Forcing& forcing, BifurcationParam param, int harmonic) {
+  if (param == BifurcationParam::kA && !forcing.harmonic()) {
+    throw std::invalid_argument(
+        "parameter = A is invalid for a Fourier force: expected the harmonic family");
+  }
+  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
+  if (fourier && harmonic > forcing.harmonics()) {
+    throw std::invalid_argument(fmt::format(
+        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
+        "its harmonics",
+        BifurcationParamName(param, harmonic), forcing.harmonics()));
+  }
 }
 
 double Value(const BifurcationOptions& o, int i) {
@@ -220,65 +239,131 @@ void BifurcationOptions::Validate() const {
                     harmonic, kMaxHarmonics));
   }
   motion.Validate();
+  const bool over_fourier = over == BifurcationParam::kCos || over == BifurcationParam::kSin;
+  if (!over_values.empty()) {
+    if (over_fourier ? over_harmonic < 1 || over_harmonic > kMaxHarmonics : over_harmonic != 0) {
+      throw std::invalid_argument(fmt::format(
+          "over harmonic = {} is invalid: expected 1 <= k <= {} for a_k and b_k, else 0",
+          over_harmonic, kMaxHarmonics));
+    }
+    if (over == param && over_harmonic == harmonic) {
+      throw std::invalid_argument(fmt::format(
+          "second parameter = {} is invalid: expected a parameter other than the diagram's",
+          BifurcationParamName(over, over_harmonic)));
+    }
+    for (double v : over_values) {
+      if (!std::isfinite(v)) {
+        throw std::invalid_argument(
+            fmt::format("second parameter {} = {} is invalid: expected finite values",
+                        BifurcationParamName(over, over_harmonic), v));
+      }
+    }
+  }
+  const int continuations = BifurcationContinuations(*this);
+  if (shards < 1 || shards > continuations) {
+    throw std::invalid_argument(fmt::format(
+        "shard count N = {} is invalid: the study has {} continuations ({} values of the "
+        "second parameter x {} directions): expected 1 <= N <= {}",
+        shards, continuations, std::max<std::size_t>(1, over_values.size()),
+        (up ? 1 : 0) + (down ? 1 : 0), continuations));
+  }
+  if (shard < 0 || shard >= shards) {
+    throw std::invalid_argument(
+        fmt::format("shard K = {} is invalid: expected 0 <= K < N = {}", shard, shards));
+  }
   if (threads < 0 || threads > 1024) {
     throw std::invalid_argument(fmt::format(
         "threads = {} is invalid: expected 1 <= threads <= 1024 (0: all cores)", threads));
   }
 }
 
+int BifurcationContinuations(const BifurcationOptions& options) {
+  const auto values = static_cast<int>(std::max<std::size_t>(1, options.over_values.size()));
+  return values * ((options.up ? 1 : 0) + (options.down ? 1 : 0));
+}
+
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
                                       const BifurcationOptions& options,
                                       const StartsProgress& progress) {
   options.Validate();
-  const Robot base{forcing, params, alpha};
-  if (options.param == BifurcationParam::kA && !forcing.harmonic()) {
-    throw std::invalid_argument(
-        "parameter = A is invalid for a Fourier force: expected the harmonic family");
-  }
-  const bool fourier =
-      options.param == BifurcationParam::kCos || options.param == BifurcationParam::kSin;
-  if (fourier && options.harmonic > forcing.harmonics()) {
-    throw std::invalid_argument(fmt::format(
-        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
-        "its harmonics",
-        BifurcationParamName(options.param, options.harmonic), forcing.harmonics()));
-  }
-  // Every robot of the range must be valid: check both ends and name the one that is not.
-  for (double value : {options.from, options.to}) {
-    const Robot r = At(base, options.param, options.harmonic, value);
-    try {
-      r.params.Validate();
-      detail::ValidateStart(r.alpha, options.start);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(fmt::format("{} = {} makes the robot invalid: {}",
-                                              BifurcationParamName(options.param, options.harmonic),
-                                              value, e.what()));
+  const bool two = !options.over_values.empty();
+  CheckParam(forcing, options.param, options.harmonic);
+  if (two) CheckParam(forcing, options.over, options.over_harmonic);
+  // One robot per value of the second parameter (the given one without it).
+  std::vector<Robot> bases;
+  const std::vector<double> overs = two ? options.over_values : std::vector<double>{kNaN};
+  for (double over : overs) {
+    const Robot base{forcing, params, alpha};
+    bases.push_back(two ? At(base, options.over, options.over_harmonic, over) : base);
+    // Every robot of the range must be valid: check both ends and name the one that is not.
+    for (double value : {options.from, options.to}) {
+      const Robot r = At(bases.back(), options.param, options.harmonic, value);
+      try {
+        r.params.Validate();
+        detail::ValidateStart(r.alpha, options.start);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format(
+            "{} = {}{} makes the robot invalid: {}",
+            BifurcationParamName(options.param, options.harmonic), value,
+            two ? fmt::format(" at {} = {}",
+                              BifurcationParamName(options.over, options.over_harmonic), over)
+                : std::string(),
+            e.what()));
+      }
     }
   }
-  // Up, down and analytic parts are independent: run them in parallel, join in order.
-  std::vector<SweepDirection> parts;
-  if (options.up) parts.push_back(SweepDirection::kUp);
-  if (options.down) parts.push_back(SweepDirection::kDown);
-  if (options.analytic) parts.push_back(SweepDirection::kAnalytic);
+  // The parts of each value: up, down, analytic (those asked for); continuation q of each
+  // sweep, the analytic orbits with the value's first continuation.
+  std::vector<SweepDirection> kinds;
+  if (options.up) kinds.push_back(SweepDirection::kUp);
+  if (options.down) kinds.push_back(SweepDirection::kDown);
+  const int directions = static_cast<int>(kinds.size());
+  if (options.analytic) kinds.push_back(SweepDirection::kAnalytic);
+  struct Part {
+    int id = 0;
+    std::size_t value = 0;
+    SweepDirection kind = SweepDirection::kUp;
+  };
+  std::vector<Part> parts;
+  for (std::size_t i = 0; i < bases.size(); ++i) {
+    for (std::size_t j = 0; j < kinds.size(); ++j) {
+      const int q = static_cast<int>(i) * directions +
+                    (kinds[j] == SweepDirection::kAnalytic ? 0 : static_cast<int>(j));
+      if (q % options.shards != options.shard) continue;
+      parts.push_back({static_cast<int>(i * kinds.size() + j), i, kinds[j]});
+    }
+  }
   std::vector<BifurcationDiagram> results(parts.size());
-  ValuesDone done(progress, static_cast<std::int64_t>(options.steps) *
-                                ((options.up ? 1 : 0) + (options.down ? 1 : 0)));
+  std::int64_t sweeps = 0;
+  for (const Part& p : parts) sweeps += p.kind == SweepDirection::kAnalytic ? 0 : 1;
+  ValuesDone done(progress, static_cast<std::int64_t>(options.steps) * sweeps);
   detail::ParallelFor(
       static_cast<std::int64_t>(parts.size()),
       detail::WorkerCount(options.threads, static_cast<std::int64_t>(parts.size())),
       [&](std::int64_t k, int) {
-        const auto i = static_cast<std::size_t>(k);
-        if (parts[i] == SweepDirection::kAnalytic) {
-          Analytic(base, options, results[i]);
+        const Part& p = parts[static_cast<std::size_t>(k)];
+        BifurcationDiagram& r = results[static_cast<std::size_t>(k)];
+        if (p.kind == SweepDirection::kAnalytic) {
+          Analytic(bases[p.value], options, r);
         } else {
-          Sweep(base, options, parts[i], results[i], done);
+          Sweep(bases[p.value], options, p.kind, r, done);
+        }
+        for (ImpactPoint& im : r.impacts) {
+          im.over = overs[p.value];
+          im.part = p.id;
+        }
+        for (BifurcationPoint& point : r.summary) {
+          point.over = overs[p.value];
+          point.part = p.id;
         }
       },
       [](std::int64_t) {});
   BifurcationDiagram out;
-  for (BifurcationDiagram& r : results) {
-    out.impacts.insert(out.impacts.end(), r.impacts.begin(), r.impacts.end());
-    out.summary.insert(out.summary.end(), r.summary.begin(), r.summary.end());
+  out.total_parts = static_cast<int>(bases.size() * kinds.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    out.parts.push_back(parts[k].id);
+    out.impacts.insert(out.impacts.end(), results[k].impacts.begin(), results[k].impacts.end());
+    out.summary.insert(out.summary.end(), results[k].summary.begin(), results[k].summary.end());
   }
   return out;
 }

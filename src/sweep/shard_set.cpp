@@ -14,9 +14,28 @@
 namespace capsubot::detail {
 namespace {
 
-constexpr int kMaxUnitChars = 15;  // "points", "starts"
+constexpr int kMaxUnitChars = 15;  // "points", "starts", "continuations"
 
-bool Basins(const std::string& unit) { return unit == "starts"; }
+// How the messages name the runs of a unit.
+struct RunKind {
+  const char* unit;      // of the shard line
+  const char* commands;  // the commands that write such shards
+  const char* runs;      // "sweeps"
+  const char* run;       // "sweep"
+  const char* one_unit;  // "point"
+};
+
+constexpr RunKind kKinds[] = {
+    {"points", "sweep", "sweeps", "sweep", "point"},
+    {"starts", "basins|attractors", "basin maps", "basin map", "start"},
+    {"continuations", "bifurcation", "bifurcation studies", "bifurcation study", "continuation"}};
+
+const RunKind& KindOf(const std::string& unit) {
+  for (const RunKind& k : kKinds) {
+    if (unit == k.unit) return k;
+  }
+  return kKinds[0];
+}
 
 // Reads the shard line "# shard K/N of T <unit>" into `s`; false for any other line.
 bool ReadShardLine(const std::string& line, ShardFile& s) {
@@ -51,7 +70,7 @@ ShardFile OpenShard(const std::string& path, const std::string& unit) {
     throw std::invalid_argument(fmt::format(
         "shard file {} is invalid: expected a file of `capsubot {} --shard K/N` (a line "
         "'# shard K/N of T {}' with 0 <= K < N, N >= 2, N <= T)",
-        path, Basins(unit) ? "basins" : "sweep", unit));
+        path, KindOf(unit).commands, unit));
   }
   if (s.in->eof()) {
     throw std::invalid_argument(fmt::format("shard file {} is truncated: no header line", path));
@@ -87,8 +106,7 @@ std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths,
       throw std::invalid_argument(
           fmt::format("shard files {} and {} are of different {}: expected the same comment lines, "
                       "header, shard count N and {} count T",
-                      first.path, s.path, Basins(unit) ? "basin maps" : "sweeps",
-                      Basins(unit) ? "start" : "point"));
+                      first.path, s.path, KindOf(unit).runs, KindOf(unit).one_unit));
     }
   }
   std::sort(shards.begin(), shards.end(),
@@ -127,7 +145,7 @@ void RequireShardsConsumed(const std::vector<ShardFile>& shards) {
     if (s.has_next) {
       throw std::invalid_argument(
           fmt::format("shard file {} holds more rows than its {} {}: expected a shard of this {}",
-                      s.path, s.units_read, s.unit, Basins(s.unit) ? "basin map" : "sweep"));
+                      s.path, s.units_read, s.unit, KindOf(s.unit).run));
     }
   }
 }

@@ -134,8 +134,10 @@ void SweepFile::Fail(const std::string& what, const std::string& path) const {
 }
 
 SweepFile::SweepFile(const std::string& output, const std::string& description,
-                     const std::string& header, bool resume, double checkpoint_seconds)
+                     const std::string& header, bool resume, double checkpoint_seconds,
+                     const std::string& run)
     : output_(output),
+      run_(run),
       target_(ResolveOutput(output, "output")),
       partial_(PartialPath(target_.path)),
       checkpoint_(CheckpointPath(target_.path)),
@@ -164,7 +166,7 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     fd_ = -1;
     if (err == EWOULDBLOCK) {
       throw IoError(
-          fmt::format("output {}: another capsubot sweep is writing {}", output_, partial_));
+          fmt::format("output {}: another capsubot {} is writing {}", output_, run_, partial_));
     }
     errno = err;
     Fail("lock", partial_);
@@ -185,19 +187,19 @@ void SweepFile::Open(const std::string& header, bool resume) {
       resume ? ReadCheckpoint(checkpoint_, description_.size()) : CheckpointRecord{};
   if (record.exists) {
     if (record.description != description_) {
-      throw std::invalid_argument(fmt::format(
-          "resume: checkpoint {} is invalid for this sweep: it was written by a sweep with "
-          "other options or another capsubot version: expected the same options as the "
-          "interrupted run, or a run without resuming to start again",
-          checkpoint_));
+      throw std::invalid_argument(
+          fmt::format("resume: checkpoint {} is invalid for this {}: it was written by a {} with "
+                      "other options or another capsubot version: expected the same options as the "
+                      "interrupted run, or a run without resuming to start again",
+                      checkpoint_, run_, run_));
     }
     struct stat st {};
     if (::fstat(fd_, &st) != 0) Fail("read", partial_);
     if (st.st_size < record.bytes) {
       throw IoError(fmt::format(
           "resume: {} holds {} bytes but its checkpoint {} says {}: delete both to start the "
-          "sweep again",
-          partial_, static_cast<long long>(st.st_size), checkpoint_, record.bytes));
+          "{} again",
+          partial_, static_cast<long long>(st.st_size), checkpoint_, record.bytes, run_));
     }
     // The rows the checkpoint vouches for must be those written: check their CRC-32.
     std::vector<char> chunk(kChunkBytes);
@@ -214,8 +216,8 @@ void SweepFile::Open(const std::string& header, bool resume) {
     if (crc != record.data_crc) {
       throw IoError(fmt::format(
           "resume: {} does not hold the rows its checkpoint {} vouches for (checksum "
-          "mismatch: the file was changed or damaged): delete both to start the sweep again",
-          partial_, checkpoint_));
+          "mismatch: the file was changed or damaged): delete both to start the {} again",
+          partial_, checkpoint_, run_));
     }
     // Rows after the checkpoint may be partial: drop them, they are computed again.
     if (::ftruncate(fd_, record.bytes) != 0) Fail("truncate", partial_);

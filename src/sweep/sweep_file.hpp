@@ -26,8 +26,9 @@ class SweepFile {
   /// of another sweep or `resume` with an output written in place, IoError for a file that
   /// cannot be used (one locked by another running sweep, a corrupted checkpoint or partial
   /// file, a checkpoint that is not a small regular file).
+  /// `run` names what is written in the messages ("sweep", "shard").
   SweepFile(const std::string& output, const std::string& description, const std::string& header,
-            bool resume, double checkpoint_seconds);
+            bool resume, double checkpoint_seconds, const std::string& run = "sweep");
   ~SweepFile();  ///< waits for a checkpoint being written; the partial file stays for a resume
   SweepFile(const SweepFile&) = delete;
   SweepFile& operator=(const SweepFile&) = delete;
@@ -66,6 +67,7 @@ class SweepFile {
   void FinishCheckpoint();
 
   std::string output_;
+  std::string run_;      // "sweep", "shard": for the messages
   OutputTarget target_;  // the file renamed over at the end (symlinks followed)
   std::string partial_, checkpoint_, description_;
   std::string written_;  // the file written: partial_, or the output itself when direct

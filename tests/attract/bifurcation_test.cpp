@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -104,6 +105,74 @@ TEST(Bifurcation, AnalyticRowsAreTheValidOneImpactOrbits) {
   }
   EXPECT_GE(analytic, 1);
   EXPECT_EQ(matching, 1);
+}
+
+// Summary rows compared field by field (exact: the same computation, however it is split).
+void ExpectSameRows(const std::vector<BifurcationPoint>& a, const std::vector<BifurcationPoint>& b,
+                    const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].param, b[k].param) << what << " row " << k;
+    EXPECT_EQ(a[k].direction, b[k].direction) << what << " row " << k;
+    EXPECT_EQ(a[k].motion.period, b[k].motion.period) << what << " row " << k;
+    EXPECT_EQ(a[k].motion.impacts_right, b[k].motion.impacts_right) << what << " row " << k;
+    EXPECT_TRUE(a[k].motion.mean_velocity == b[k].motion.mean_velocity ||
+                (std::isnan(a[k].motion.mean_velocity) && std::isnan(b[k].motion.mean_velocity)))
+        << what << " row " << k;
+  }
+}
+
+TEST(Bifurcation, StudyOverASecondParameterIsTheDiagramAtEachValueAndItsShardsPartitionIt) {
+  // The small stable orbit's robot, T0 stepped, at 3 restitutions: each diagram of the study
+  // is the diagram computed alone with that e; 3 shards hold every part exactly once.
+  Params params;
+  params.T0 = 0.1;
+  params.e = 0.5;
+  const Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
+  const double alpha = 0.2792869076315278;
+  BifurcationOptions o;
+  o.param = BifurcationParam::kT0;
+  o.from = 0.08;
+  o.to = 0.12;
+  o.steps = 3;
+  o.motion.transient = 40;
+  o.motion.record = 20;
+  o.over = BifurcationParam::kE;
+  o.over_values = {0.4, 0.5, 0.6};
+  const BifurcationDiagram study = ComputeBifurcation(force, params, alpha, o);
+  ASSERT_EQ(study.total_parts, 9);  // 3 values x (up, down, analytic)
+  EXPECT_EQ(BifurcationContinuations(o), 6);
+  int values = 0;
+  for (double e : o.over_values) {
+    BifurcationOptions alone = o;
+    alone.over_values.clear();
+    Params p = params;
+    p.e = e;
+    const BifurcationDiagram d = ComputeBifurcation(force, p, alpha, alone);
+    std::vector<BifurcationPoint> rows;
+    for (const BifurcationPoint& r : study.summary) {
+      if (r.over == e) rows.push_back(r);
+    }
+    ExpectSameRows(rows, d.summary, "e = " + std::to_string(e));
+    ++values;
+  }
+  EXPECT_EQ(values, 3);
+
+  std::vector<int> seen(9, 0);
+  std::vector<BifurcationPoint> joined(0);
+  for (int k = 0; k < 3; ++k) {
+    BifurcationOptions shard = o;
+    shard.shard = k;
+    shard.shards = 3;
+    const BifurcationDiagram d = ComputeBifurcation(force, params, alpha, shard);
+    for (int part : d.parts) ++seen[static_cast<std::size_t>(part)];
+    joined.insert(joined.end(), d.summary.begin(), d.summary.end());
+  }
+  EXPECT_EQ(seen, std::vector<int>(9, 1));
+  std::stable_sort(
+      joined.begin(), joined.end(),
+      [](const BifurcationPoint& a, const BifurcationPoint& b) { return a.part < b.part; });
+  ExpectSameRows(joined, study.summary, "3 shards joined");
 }
 
 TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
@@ -222,6 +291,30 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   o.steps = 1;
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
             "steps = 1 is invalid: expected 2 <= steps <= 10000000");
+  // The second parameter of a study and the shards.
+  o.steps = 3;
+  o.over = o.param;
+  o.over_values = {0.5};
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+            "second parameter = e is invalid: expected a parameter other than the diagram's");
+  o.over = BifurcationParam::kT0;
+  o.over_values = {0.5, std::nan("")};
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+            "second parameter T0 = nan is invalid: expected finite values");
+  o.over_values = {0.5, -1.0};
+  EXPECT_NE(message([&] {
+              ComputeBifurcation(kOptimumForce, Params{}, 0.5, o);
+            }).find(" at T0 = -1 makes the robot invalid: "),
+            std::string::npos);
+  o.over_values = {0.5, 1.0};
+  o.shards = 5;
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+            "shard count N = 5 is invalid: the study has 4 continuations (2 values of the second "
+            "parameter x 2 directions): expected 1 <= N <= 4");
+  o.shards = 2;
+  o.shard = 2;
+  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+            "shard K = 2 is invalid: expected 0 <= K < N = 2");
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 // Runs split over processes give the bytes of the run on one machine (docs/cluster.md): a
 // sweep threaded, in 3 shards merged and under `mpirun -n 2` (and 3 ranks, oversubscribed);
-// a basin map threaded, in 3 shards merged and under mpirun; bad input under mpirun fails with
-// no file written. The merge errors of basin shards (another run, missing, duplicated,
-// truncated) are tested here, those of sweep shards in sweep_cli_test.cpp. The mpirun tests are
-// skipped only when capsubot is built without MPI.
+// a basin map threaded, in 3 shards merged and under mpirun; the starts from rest of
+// `attractors -o` threaded and in 3 shards merged; a two-parameter bifurcation study
+// threaded and in 3 shards merged (both CSVs); a killed basin shard resumed; bad input under
+// mpirun fails with no file written. The merge errors of basin shards (another run, missing,
+// duplicated, truncated) are tested here, those of sweep shards in sweep_cli_test.cpp. The mpirun
+// tests are skipped only when capsubot is built without MPI.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -232,6 +234,236 @@ TEST(Cluster, BadBasinShardOptionsAreRefused) {
     ++checked;
   }
   EXPECT_EQ(checked, 4);
+}
+
+// The same robot and starts from rest as kBasins (its x0-psi plane is the from-rest grid).
+constexpr const char* kAttractors =
+    "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278 "
+    "--starts 8x6 --transient 100 --record 40";
+
+std::vector<std::string> AttractorShards(const Dir& dir, const std::string& name = "attr") {
+  std::vector<std::string> files;
+  for (int k = 0; k < 3; ++k) {
+    files.push_back(dir.File(name + std::to_string(k) + ".csv"));
+    const CommandResult r = RunCli(std::string(kAttractors) + " --shard " + std::to_string(k) +
+                                   "/3 -o " + files.back());
+    EXPECT_EQ(r.status, 0) << r.out;
+  }
+  return files;
+}
+
+TEST(Cluster, AttractorsThreadedAndInShardsMergedIsTheSameFile) {
+  Dir dir;
+  const CommandResult one =
+      RunCli(std::string(kAttractors) + " --threads 2 -o " + dir.File("one.csv"));
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("the motion of every start written to"), std::string::npos) << one.out;
+  const std::string bytes = ReadFile(dir.File("one.csv"));
+  ASSERT_GT(bytes.size(), 1000u);
+  // The from-rest grid of `attractors` is the x0-psi map of `basins`: the same file.
+  ASSERT_EQ(RunCli(std::string(kBasins) + " --threads 2 -o " + dir.File("map.csv")).status, 0);
+  EXPECT_TRUE(ReadFile(dir.File("map.csv")) == bytes);
+
+  const std::vector<std::string> shards = AttractorShards(dir);
+  EXPECT_NE(ReadFile(shards[1]).find("\n# shard 1/3 of 48 starts\nx0,psi,attractor,"),
+            std::string::npos);
+  int orders = 0;
+  for (const std::vector<std::string>& order :
+       {shards, std::vector<std::string>{shards[2], shards[0], shards[1]}}) {
+    const std::string out = dir.File("merged" + std::to_string(orders) + ".csv");
+    const CommandResult merged = Merge(out, order);
+    ASSERT_EQ(merged.status, 0) << merged.out;
+    EXPECT_TRUE(ReadFile(out) == bytes) << "order " << orders;
+    ++orders;
+  }
+  EXPECT_EQ(orders, 2);
+}
+
+TEST(Cluster, AttractorShardMergeErrorsAndBadOptionsWriteNothing) {
+  Dir dir;
+  const std::vector<std::string> s = AttractorShards(dir);
+  const std::string basin = BasinShards(dir)[1];
+  const std::string cut_row = dir.File("cut_row.csv");
+  {
+    std::string text = ReadFile(s[1]);
+    text.erase(text.rfind('\n', text.size() - 2) + 1);  // drop the last row
+    std::ofstream(cut_row, std::ios::binary) << text;
+  }
+  const std::string out = dir.File("merged.csv");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> merges = {
+      {{s[0], basin, s[2]},
+       "capsubot merge: error: shard files " + s[0] + " and " + basin +
+           " are of different basin maps: expected the same comment lines, header, shard count "
+           "N and start count T\n"},
+      {{s[1], s[2]},
+       "capsubot merge: error: shard files: shard 0/3 missing: expected all 3 shards\n"},
+      {{s[0], s[1], s[2], s[2]},
+       "capsubot merge: error: shard files " + s[2] + " and " + s[2] + " are both shard 2/3\n"},
+      {{s[0], cut_row, s[2]},
+       "capsubot merge: error: shard file " + cut_row +
+           " is truncated: it ends after 15 of its 16 starts\n"}};
+  int checked = 0;
+  for (const auto& [files, message] : merges) {
+    const CommandResult r = Merge(out, files);
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_EQ(r.out, message);
+    EXPECT_FALSE(std::filesystem::exists(out)) << "a refused merge wrote " << out;
+    ++checked;
+  }
+  const std::vector<std::pair<std::string, std::string>> options = {
+      {"--shard 0/3", "--shard is invalid without -o: expected the shard file to write"},
+      {"--shard 0/3 --json -o " + out, "--json is invalid with --shard"},
+      {"--shard 0/49 -o " + out, "--shard = 0/49 is invalid: the map has only 48 starts"},
+      {"--resume -o " + out, "--resume is invalid without --shard"}};
+  for (const auto& [args, message] : options) {
+    const CommandResult r = RunCli(std::string(kAttractors) + " " + args + " 2>&1");
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.out.find("capsubot attractors: error: " + message), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 8);
+}
+
+// A basin shard slow enough to be killed mid-way (100 starts of about 10 ms each on one
+// thread), checkpointed after every block of starts.
+std::string SlowBasinShard(const std::string& shard, const std::string& out) {
+  return "basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278 "
+         "--starts 20x15 --transient 6000 --record 40 --checkpoint-seconds 0 --shard " +
+         shard + " -o " + out;
+}
+
+TEST(Cluster, KilledBasinShardResumesToTheBytesOfAnUninterruptedOne) {
+  Dir dir;
+  const std::string reference = dir.File("reference.csv"), killed = dir.File("killed.csv");
+  ASSERT_EQ(RunCli(SlowBasinShard("1/3", reference) + " --threads 2").status, 0);
+  // Started in the background, killed (SIGKILL) once a checkpoint records some starts (the
+  // shell waits at most 60 s).
+  const CommandResult kill = Shell(
+      std::string(CAPSUBOT_CLI) + " " + SlowBasinShard("1/3", killed) +
+      " --threads 1 > /dev/null & pid=$!; for i in $(seq 6000); do grep -qs '^points [1-9]' " +
+      killed + ".checkpoint && break; sleep 0.01; done; kill -9 $pid; wait $pid; echo status $?");
+  ASSERT_NE(kill.out.find("status 137"), std::string::npos)
+      << "the shard ended before it could be killed: " << kill.out;
+  EXPECT_FALSE(std::filesystem::exists(killed));
+  ASSERT_TRUE(std::filesystem::exists(killed + ".partial"));
+  ASSERT_TRUE(std::filesystem::exists(killed + ".checkpoint"));
+
+  // The checkpoint of shard 1 does not resume shard 2, nor another map.
+  for (const std::string& other : {SlowBasinShard("2/3", killed) + " --resume",
+                                   SlowBasinShard("1/3", killed) + " --resume --max-period 7"}) {
+    const CommandResult r = RunCli(other + " 2>&1");
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(
+        r.out.find(
+            ".checkpoint is invalid for this shard: it was written by a shard with other options"),
+        std::string::npos)
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(killed));
+  }
+  const CommandResult resumed = RunCli(SlowBasinShard("1/3", killed) + " --resume --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.out;
+  EXPECT_NE(resumed.out.find("resumed from the checkpoint"), std::string::npos) << resumed.out;
+  EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed shard differs";
+  EXPECT_FALSE(std::filesystem::exists(killed + ".partial"));
+  EXPECT_FALSE(std::filesystem::exists(killed + ".checkpoint"));
+}
+
+// A two-parameter bifurcation study: T0 stepped up and down at 3 values of e (6
+// continuations, 9 parts with the analytic orbits).
+constexpr const char* kBifurcation =
+    "bifurcation --A 0.05 --c 0.02 --phi0 -2.842 --e 0.5 --alpha 0.2792869076315278 --param T0 "
+    "--from 0.08 --to 0.12 --steps 4 --transient 40 --record 20 --over e=0.4:0.6:3";
+
+// The 3 shards of kBifurcation (`extra` options): their impacts and summary files.
+std::pair<std::vector<std::string>, std::vector<std::string>> BifurcationShards(
+    const Dir& dir, const std::string& name = "bif", const std::string& extra = "") {
+  std::vector<std::string> impacts, summaries;
+  for (int k = 0; k < 3; ++k) {
+    impacts.push_back(dir.File(name + "_i" + std::to_string(k) + ".csv"));
+    summaries.push_back(dir.File(name + "_s" + std::to_string(k) + ".csv"));
+    const CommandResult r =
+        RunCli(std::string(kBifurcation) + extra + " --shard " + std::to_string(k) + "/3 -o " +
+               impacts.back() + " --summary " + summaries.back());
+    EXPECT_EQ(r.status, 0) << r.out;
+  }
+  return {impacts, summaries};
+}
+
+TEST(Cluster, BifurcationStudyThreadedAndInShardsMergedIsTheSameFiles) {
+  Dir dir;
+  const CommandResult one =
+      RunCli(std::string(kBifurcation) + " --threads 2 -o " + dir.File("impacts.csv") +
+             " --summary " + dir.File("summary.csv"));
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("(4 values, both) for 3 values of e: "), std::string::npos) << one.out;
+  const std::string impacts = ReadFile(dir.File("impacts.csv"));
+  const std::string summary = ReadFile(dir.File("summary.csv"));
+  // 3 values of e x 4 of T0 x (up, down) rows, plus the analytic orbits.
+  ASSERT_EQ(summary.rfind("e,param,direction,period,", 0), 0u) << summary;
+  EXPECT_NE(summary.find("\n0.6,0.12,analytic,1,1,0,"), std::string::npos) << summary;
+  ASSERT_GT(impacts.size(), 1000u);
+
+  const auto [i, s] = BifurcationShards(dir);
+  EXPECT_NE(ReadFile(s[1]).find("\n# shard 1/3 of 6 continuations\ne,param,direction,"),
+            std::string::npos);
+  int checked = 0;
+  for (const auto& [files, bytes] :
+       {std::pair{std::vector<std::string>{i[2], i[0], i[1]}, impacts},
+        std::pair{std::vector<std::string>{s[1], s[2], s[0]}, summary}, std::pair{s, summary}}) {
+    const std::string out = dir.File("merged" + std::to_string(checked) + ".csv");
+    const CommandResult merged = Merge(out, files);
+    ASSERT_EQ(merged.status, 0) << merged.out;
+    EXPECT_TRUE(ReadFile(out) == bytes) << "merge " << checked;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
+  Dir dir;
+  const auto [i, s] = BifurcationShards(dir);
+  const std::string other = BifurcationShards(dir, "other", " --max-period 7").second[1];
+  const std::string cut = dir.File("cut.csv");
+  {
+    std::string text = ReadFile(s[1]);
+    text.erase(text.rfind('\n', text.size() - 2) + 1);  // drop the last row
+    std::ofstream(cut, std::ios::binary) << text;
+  }
+  const std::string out = dir.File("merged.csv");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> merges = {
+      {{s[0], other, s[2]},
+       "shard files " + s[0] + " and " + other +
+           " are of different bifurcation studies: expected the same comment lines, header, "
+           "shard count N and continuation count T"},
+      {{s[0], i[1], s[2]}, "shard files " + s[0] + " and " + i[1] + " are of different"},
+      {{s[0], s[2]}, "shard files: shard 1/3 missing: expected all 3 shards"},
+      {{s[0], s[1], s[1], s[2]}, "shard files " + s[1] + " and " + s[1] + " are both shard 1/3"},
+      {{s[0], cut, s[2]},
+       "shard file " + cut + " is truncated: part 8 ends after 7 of its 8 rows"}};
+  int checked = 0;
+  for (const auto& [files, message] : merges) {
+    const CommandResult r = Merge(out, files);
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find("capsubot merge: error: " + message), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out)) << "a refused merge wrote " << out;
+    ++checked;
+  }
+  const std::vector<std::pair<std::string, std::string>> shards = {
+      {" --shard 0/7",
+       "shard count N = 7 is invalid: the study has 6 continuations (3 values of the second "
+       "parameter x 2 directions): expected 1 <= N <= 6"},
+      {" --direction up --shard 0/4",
+       "shard count N = 4 is invalid: the study has 3 continuations"},
+      {" --shard 3/3", "shard K = 3 is invalid: expected 0 <= K < N = 3"}};
+  for (const auto& [args, message] : shards) {
+    const CommandResult r = RunCli(std::string(kBifurcation) + args + " -o " + out + " 2>&1");
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.out.find("capsubot bifurcation: error: " + message), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 8);
 }
 
 TEST(Cluster, BadInputUnderMpirunFailsAndWritesNoFile) {

@@ -10,7 +10,9 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "capsubot/bifurcation_shards.hpp"
 #include "capsubot/io.hpp"
+#include "capsubot/start_map.hpp"
 #include "sweep/shard_set.hpp"
 
 namespace capsubot {
@@ -18,7 +20,6 @@ namespace {
 
 // x0, psi or u0, attractor, period, impacts_right, impacts_left, mean_velocity, status.
 constexpr std::size_t kColumns = 8;
-constexpr const char* kTail = ",attractor,period,impacts_right,impacts_left,mean_velocity,status\n";
 
 MotionStatus ParseStatus(std::string_view name, const std::string& what) {
   for (MotionStatus s : {MotionStatus::kPeriodic, MotionStatus::kNoPeriod,
@@ -64,11 +65,12 @@ MergeSummary MergeBasinShards(const std::vector<std::string>& paths, const std::
                               double velocity_tolerance) {
   std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "starts");
   const detail::ShardFile& first = shards.front();
-  const bool u0 = first.header == std::string("x0,u0") + kTail;
-  if (!u0 && first.header != std::string("x0,psi") + kTail) {
-    throw std::invalid_argument(fmt::format(
-        "shard file {} is invalid: expected the header of a basin map, x0,psi{}", first.path,
-        std::string_view(kTail).substr(0, std::string_view(kTail).size() - 1)));
+  const bool u0 = first.header == StartMapHeader(true);
+  if (!u0 && first.header != StartMapHeader(false)) {
+    const std::string_view header = StartMapHeader(false);
+    throw std::invalid_argument(
+        fmt::format("shard file {} is invalid: expected the header of a basin map, {}", first.path,
+                    header.substr(0, header.size() - 1)));
   }
   const auto n = static_cast<std::size_t>(first.units);
   std::vector<PhaseState> starts(n);
@@ -103,9 +105,9 @@ MergeSummary MergeBasinShards(const std::vector<std::string>& paths, const std::
 }
 
 MergeSummary MergeShards(const std::vector<std::string>& paths, const std::string& output) {
-  if (!paths.empty() && detail::ShardUnit(paths.front()) == "starts") {
-    return MergeBasinShards(paths, output);
-  }
+  const std::string unit = paths.empty() ? "" : detail::ShardUnit(paths.front());
+  if (unit == "starts") return MergeBasinShards(paths, output);
+  if (unit == "continuations") return MergeBifurcationShards(paths, output);
   return MergeSweepShards(paths, output);
 }
 

@@ -1,0 +1,100 @@
+// Joining the shards of a bifurcation study: their parts put back in order.
+
+#include "capsubot/bifurcation_shards.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "capsubot/io.hpp"
+#include "sweep/shard_set.hpp"
+
+namespace capsubot {
+namespace {
+
+// The part line a shard file is positioned on: part `part` of `parts` with `rows` rows; part
+// -1 when the file is done.
+struct PartLine {
+  int part = -1;
+  int parts = 0;
+  long long rows = 0;
+};
+
+// Reads the part line of `s` (or its end) and moves past it.
+PartLine ReadPart(detail::ShardFile& s) {
+  PartLine p;
+  if (!s.has_next) return p;
+  int used = 0;
+  if (std::sscanf(s.next.c_str(), "# part %d of %d: %lld rows%n", &p.part, &p.parts, &p.rows,
+                  &used) != 3 ||
+      static_cast<std::size_t>(used) != s.next.size() || p.part < 0 || p.part >= p.parts ||
+      p.rows < 0) {
+    throw std::invalid_argument(
+        fmt::format("shard file {} line '{}' is invalid: expected '# part P of Q: R rows' with 0 "
+                    "<= P < Q, R >= 0",
+                    s.path, s.next));
+  }
+  s.Advance();
+  return p;
+}
+
+}  // namespace
+
+std::string BifurcationPartLine(int part, int parts, std::int64_t rows) {
+  return fmt::format("# part {} of {}: {} rows\n", part, parts, rows);
+}
+
+MergeSummary MergeBifurcationShards(const std::vector<std::string>& paths,
+                                    const std::string& output) {
+  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "continuations");
+  std::vector<PartLine> at(shards.size());
+  for (std::size_t k = 0; k < shards.size(); ++k) at[k] = ReadPart(shards[k]);
+  const int parts = at.front().parts;
+  AtomicFile file(output, "output");
+  std::ostream& out = file.stream();
+  out << shards.front().header;
+  MergeSummary summary;
+  summary.shards = static_cast<int>(shards.size());
+  summary.points = shards.front().units;
+  for (int part = 0; part < parts; ++part) {
+    std::size_t k = 0;
+    while (k < shards.size() && at[k].part != part) ++k;
+    if (k == shards.size()) {
+      throw std::invalid_argument(fmt::format(
+          "shard files: part {} of {} is in none of them: expected every part in one file (a "
+          "file truncated, or of another study)",
+          part, parts));
+    }
+    detail::ShardFile& s = shards[k];
+    if (at[k].parts != parts) {
+      throw std::invalid_argument(fmt::format(
+          "shard files {} and {} are of different bifurcation studies: expected the same part "
+          "count Q ({} and {})",
+          shards.front().path, s.path, parts, at[k].parts));
+    }
+    for (long long row = 0; row < at[k].rows; ++row) {
+      if (!s.has_next || s.next.rfind("# part ", 0) == 0) {
+        throw std::invalid_argument(
+            fmt::format("shard file {} is truncated: part {} ends after {} of its {} rows", s.path,
+                        part, row, at[k].rows));
+      }
+      out << s.next << '\n';
+      s.Advance();
+      ++summary.rows;
+    }
+    at[k] = ReadPart(s);
+  }
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    if (at[k].part >= 0) {
+      throw std::invalid_argument(fmt::format(
+          "shard file {} holds part {} of {} out of order or twice: expected each part once, in "
+          "increasing order",
+          shards[k].path, at[k].part, at[k].parts));
+    }
+  }
+  file.Commit();
+  return summary;
+}
+
+}  // namespace capsubot
