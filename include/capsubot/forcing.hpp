@@ -8,6 +8,7 @@
 // One value type serves both families: the orbit, simulator and optimiser never ask which.
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace capsubot {
@@ -19,6 +20,54 @@ inline constexpr int kMaxHarmonics = 16;  ///< largest K a Forcing holds (no all
 struct PhaseList {
   std::array<double, 2 * kMaxHarmonics + 2> phi{};  ///< the phases, phi[0..n)
   int n = 0;                                        ///< how many were found
+};
+
+/// cos tau and sin tau of the rounded period, as std::cos and std::sin return them (the force
+/// is evaluated at phi = tau several times in every solve of the orbit).
+inline constexpr double kCosTau = 1.0, kSinTau = -0x1.1a62633145c07p-52;
+
+/// A phase with its cosine and sine. The force and its integrals at a phase need only these,
+/// so a phase found in closed form (a crossing of a level by one harmonic) or reached by a
+/// short step from a known one costs no sincos. Make one with Of (no default values: lists of
+/// angles are filled without zeroing the unused entries).
+struct Angle {
+  double phi;
+  double cos;  ///< cos phi
+  double sin;  ///< sin phi
+
+  /// phi with its cosine and sine from one sincos (none at 0 and tau).
+  static Angle Of(double phi) {
+    if (phi == 0.0) return {0.0, 1.0, 0.0};
+    if (phi == kTau) return {kTau, kCosTau, kSinTau};
+    return {phi, std::cos(phi), std::sin(phi)};
+  }
+
+  /// The angle at `to`: by angle addition from this one when the step is short (a
+  /// polynomial in the step instead of a sincos; within a few ulp of Of(to)), else Of(to).
+  Angle Toward(double to) const {
+    // For |d| <= 1/8 the first terms the series below omit, d^13/13! and d^12/12!, are below
+    // a hundredth of an ulp of sin d and of 1 - cos d.
+    constexpr double kShortStep = 0.125;
+    const double d = to - phi;
+    if (!(std::abs(d) <= kShortStep)) return Of(to);
+    // sin d and 1 - cos d by their Taylor series (Horner form in d^2, multiplications only),
+    // then cos(phi + d) = cos phi - (cos phi (1 - cos d) + sin phi sin d) and likewise for sin.
+    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880,
+                     s11 = -1.0 / 39916800;
+    constexpr double v2 = 1.0 / 2, v4 = -1.0 / 24, v6 = 1.0 / 720, v8 = -1.0 / 40320,
+                     v10 = 1.0 / 3628800;
+    const double d2 = d * d;
+    const double sin_d = d + d * d2 * (s3 + d2 * (s5 + d2 * (s7 + d2 * (s9 + d2 * s11))));
+    const double vers_d = d2 * (v2 + d2 * (v4 + d2 * (v6 + d2 * (v8 + d2 * v10))));
+    return {to, cos - (cos * vers_d + sin * sin_d), sin - (sin * vers_d - cos * sin_d)};
+  }
+};
+
+/// Angles found in an interval, in increasing order of phi, angle[0..n) (fixed size: no
+/// allocation; the unused entries are not zeroed).
+struct AngleList {
+  std::array<Angle, 2 * kMaxHarmonics + 2> angle;
+  int n = 0;  ///< how many were found
 };
 
 /// F and its integrals at one phase.
@@ -69,26 +118,36 @@ class Forcing {
   /// F, Pi and Phi at phi together (one sincos for all three; the same numbers, bit for bit,
   /// as F(phi), Pi(phi), Phi(phi)).
   ForceValues Values(double phi) const;
+  /// Values at a phase whose cosine and sine are known (no sincos).
+  ForceValues Values(const Angle& at) const;
 
   /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
   /// hi - lo <= tau. Exact (closed form for K = 1, a certified subdivision otherwise).
   PhaseList Crossings(double level, double lo, double hi) const;
+  /// Crossings with the cosine and sine of each phase (for one harmonic in closed form, with
+  /// no sincos; otherwise one sincos per crossing).
+  AngleList CrossingAngles(double level, double lo, double hi) const;
   /// Exact min and max of F on [lo, hi] (hi - lo <= tau), from the zeros of dF.
   Range Bounds(double lo, double hi) const;
+  /// Bounds with the cosine and sine of the ends known.
+  Range Bounds(const Angle& lo, const Angle& hi) const;
   /// max |F| over a whole period.
   double MaxAbs() const;
 
  private:
-  void Rotate();  // fill the coefficients seen from the impact phase
+  void SetBase();  // R and the phase of one harmonic of the base series
+  void Rotate();   // fill the coefficients seen from the impact phase
+  double F(const Angle& at) const;
 
   double c_ = 0.0;
   double phi0_ = 0.0;
   int K_ = 0;
   std::array<double, kMaxHarmonics> a_{}, b_{};    // base series, motor phase s
   std::array<double, kMaxHarmonics> ra_{}, rb_{};  // F(phi) = c + sum ra cos k phi + rb sin k phi
-  // One harmonic (K = 1): F = c + R sin(phi + delta) and F' = R sin(phi + delta_dF), kept for
-  // the closed-form crossings of every level.
-  double R_ = 0.0, delta_ = 0.0, delta_dF_ = 0.0;
+  // One harmonic (K = 1): a cos s + b sin s = R sin(s + base_delta) in the motor phase s, so
+  // F = c + R sin(phi + delta) with delta = base_delta + phi0 and F' = R cos(phi + delta),
+  // kept for the closed-form crossings of every level.
+  double R_ = 0.0, base_delta_ = 0.0, delta_ = 0.0;
 };
 
 }  // namespace capsubot

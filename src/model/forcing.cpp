@@ -51,6 +51,7 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
     f.a_[k] = a[k];
     f.b_[k] = b[k];
   }
+  f.SetBase();
   f.Rotate();
   return f;
 }
@@ -67,8 +68,18 @@ Forcing Forcing::InImpactFrame() const {
   f.a_ = ra_;
   f.b_ = rb_;
   f.phi0_ = 0.0;
+  f.SetBase();
   f.Rotate();
   return f;
+}
+
+void Forcing::SetBase() {
+  // a cos s + b sin s = R sin(s + atan2(a, b)) in the motor phase s: kept across the impact
+  // phases (Rotate only adds phi0 to the phase).
+  if (K_ == 1) {
+    R_ = std::hypot(a_[0], b_[0]);
+    base_delta_ = std::atan2(a_[0], b_[0]);
+  }
 }
 
 void Forcing::Rotate() {
@@ -79,32 +90,23 @@ void Forcing::Rotate() {
     ra_[k - 1] = a_[k - 1] * ck + b_[k - 1] * sk;
     rb_[k - 1] = b_[k - 1] * ck - a_[k - 1] * sk;
   }
-  if (K_ == 1) {
-    // ra cos phi + rb sin phi = R sin(phi + atan2(ra, rb)); its derivative
-    // rb cos phi - ra sin phi = R sin(phi + atan2(rb, -ra)). The same numbers as TrigRoots'
-    // closed form computes from these coefficients.
-    R_ = std::hypot(ra_[0], rb_[0]);
-    delta_ = std::atan2(ra_[0], rb_[0]);
-    delta_dF_ = std::atan2(rb_[0], -ra_[0]);
-  }
+  delta_ = base_delta_ + phi0_;  // ra cos phi + rb sin phi = R sin(phi + delta)
 }
 
-double Forcing::amplitude() const { return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]); }
+double Forcing::amplitude() const {
+  if (K_ == 1) return R_;  // hypot(a_1, b_1)
+  return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]);
+}
 
 namespace {
 
-// Calls visit(k, cos k phi, sin k phi) for k = 1..K, with cos k phi and sin k phi from one
-// sincos by the angle-addition recurrence. One harmonic (the hot path of the analytic solve)
-// takes the loop's first step alone: with k a constant 1 the callers' divisions by k fold
-// away, and the numbers are the loop's bit for bit.
-// cos tau and sin tau of the rounded period, as std::cos and std::sin return them (the force
-// is evaluated at phi = tau several times in every solve of the orbit).
-constexpr double kCosTau = 1.0, kSinTau = -0x1.1a62633145c07p-52;
-
+// Calls visit(k, cos k phi, sin k phi) for k = 1..K, with cos k phi and sin k phi from the
+// angle's cosine and sine by the angle-addition recurrence. One harmonic (the hot path of the
+// analytic solve) takes the loop's first step alone: with k a constant 1 the callers'
+// divisions by k fold away, and the numbers are the loop's bit for bit.
 template <class Visit>
-void ForEachHarmonic(int K, double phi, const Visit& visit) {
-  const bool at_tau = phi == kTau;
-  const double c1 = at_tau ? kCosTau : std::cos(phi), s1 = at_tau ? kSinTau : std::sin(phi);
+void ForEachHarmonic(int K, const Angle& at, const Visit& visit) {
+  const double c1 = at.cos, s1 = at.sin;
   if (K == 1) {
     visit(1, c1, s1);
     return;
@@ -120,44 +122,50 @@ void ForEachHarmonic(int K, double phi, const Visit& visit) {
 
 // sum_{k=1..K} term(k, cos k phi, sin k phi).
 template <class Term>
-double SumHarmonics(int K, double phi, const Term& term) {
+double SumHarmonics(int K, const Angle& at, const Term& term) {
   double sum = 0.0;
-  ForEachHarmonic(K, phi, [&](int k, double ck, double sk) { sum += term(k, ck, sk); });
+  ForEachHarmonic(K, at, [&](int k, double ck, double sk) { sum += term(k, ck, sk); });
   return sum;
 }
 
 }  // namespace
 
-double Forcing::F(double phi) const {
-  return c_ + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+double Forcing::F(double phi) const { return F(Angle::Of(phi)); }
+
+double Forcing::F(const Angle& at) const {
+  return c_ + SumHarmonics(K_, at, [this](int k, double ck, double sk) {
            return ra_[k - 1] * ck + rb_[k - 1] * sk;
          });
 }
 
 double Forcing::dF(double phi) const {
-  return SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+  return SumHarmonics(K_, Angle::Of(phi), [this](int k, double ck, double sk) {
     return k * (rb_[k - 1] * ck - ra_[k - 1] * sk);
   });
 }
 
 double Forcing::Pi(double phi) const {
   // Pi = c phi + sum_k (ra_k sin k phi + rb_k (1 - cos k phi)) / k
-  return c_ * phi + SumHarmonics(K_, phi, [this](int k, double ck, double sk) {
+  return c_ * phi + SumHarmonics(K_, Angle::Of(phi), [this](int k, double ck, double sk) {
            return (ra_[k - 1] * sk + rb_[k - 1] * (1.0 - ck)) / k;
          });
 }
 
 double Forcing::Phi(double phi) const {
   // Phi = c phi^2/2 + sum_k (ra_k (1 - cos k phi) / k^2 + rb_k (phi/k - sin k phi / k^2))
-  return 0.5 * c_ * phi * phi + SumHarmonics(K_, phi, [this, phi](int k, double ck, double sk) {
+  return 0.5 * c_ * phi * phi +
+         SumHarmonics(K_, Angle::Of(phi), [this, phi](int k, double ck, double sk) {
            return (ra_[k - 1] * (1.0 - ck) + rb_[k - 1] * (k * phi - sk)) / (double(k) * k);
          });
 }
 
-ForceValues Forcing::Values(double phi) const {
+ForceValues Forcing::Values(double phi) const { return Values(Angle::Of(phi)); }
+
+ForceValues Forcing::Values(const Angle& at) const {
   // The three sums of F, Pi and Phi above, term by term in the same order.
+  const double phi = at.phi;
   double sF = 0.0, sPi = 0.0, sPhi = 0.0;
-  ForEachHarmonic(K_, phi, [&](int k, double ck, double sk) {
+  ForEachHarmonic(K_, at, [&](int k, double ck, double sk) {
     const double a = ra_[k - 1], b = rb_[k - 1];
     sF += a * ck + b * sk;
     sPi += (a * sk + b * (1.0 - ck)) / k;
@@ -167,29 +175,44 @@ ForceValues Forcing::Values(double phi) const {
 }
 
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {
-  if (K_ == 1) return detail::HarmonicRoots(c_ - level, R_, delta_, lo, hi);
+  if (K_ == 1) return detail::HarmonicRoots(c_ - level, ra_[0], rb_[0], R_, delta_, lo, hi);
   return detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi);
 }
 
 namespace {
 
-// The critical points of F in [lo, hi]: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi.
-PhaseList CriticalPoints(int K, const std::array<double, kMaxHarmonics>& ra,
-                         const std::array<double, kMaxHarmonics>& rb, double R, double delta_dF,
-                         double lo, double hi) {
-  if (K == 1) return detail::HarmonicRoots(0.0, R, delta_dF, lo, hi);
-  std::array<double, kMaxHarmonics> da{}, db{};
-  for (int k = 0; k < K; ++k) {
-    da[k] = (k + 1) * rb[k];
-    db[k] = -(k + 1) * ra[k];
-  }
-  return detail::TrigRoots(0.0, da.data(), db.data(), K, lo, hi);
+// The angles of the phases of a list (one sincos each).
+AngleList AnglesOf(const PhaseList& phases) {
+  AngleList out;
+  out.n = phases.n;
+  for (int i = 0; i < phases.n; ++i) out.angle[i] = Angle::Of(phases.phi[i]);
+  return out;
 }
 
 }  // namespace
 
-Range Forcing::Bounds(double lo, double hi) const {
-  const PhaseList critical = CriticalPoints(K_, ra_, rb_, R_, delta_dF_, lo, hi);
+AngleList Forcing::CrossingAngles(double level, double lo, double hi) const {
+  if (K_ == 1) return detail::HarmonicRootAngles(c_ - level, ra_[0], rb_[0], R_, delta_, lo, hi);
+  return AnglesOf(detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi));
+}
+
+Range Forcing::Bounds(double lo, double hi) const { return Bounds(Angle::Of(lo), Angle::Of(hi)); }
+
+Range Forcing::Bounds(const Angle& lo, const Angle& hi) const {
+  // The critical points of F: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi; for one
+  // harmonic rb cos phi - ra sin phi = R sin(phi + delta + pi/2).
+  AngleList critical;
+  if (K_ == 1) {
+    critical =
+        detail::HarmonicRootAngles(0.0, rb_[0], -ra_[0], R_, delta_ + M_PI / 2.0, lo.phi, hi.phi);
+  } else {
+    std::array<double, kMaxHarmonics> da{}, db{};
+    for (int k = 0; k < K_; ++k) {
+      da[k] = (k + 1) * rb_[k];
+      db[k] = -(k + 1) * ra_[k];
+    }
+    critical = AnglesOf(detail::TrigRoots(0.0, da.data(), db.data(), K_, lo.phi, hi.phi));
+  }
   const double f_lo = F(lo);
   Range r{f_lo, f_lo};
   auto include = [&r](double f) {
@@ -197,7 +220,7 @@ Range Forcing::Bounds(double lo, double hi) const {
     r.max = std::max(r.max, f);
   };
   include(F(hi));
-  for (int i = 0; i < critical.n; ++i) include(F(critical.phi[i]));
+  for (int i = 0; i < critical.n; ++i) include(F(critical.angle[i]));
   return r;
 }
 

@@ -100,14 +100,24 @@ struct Series {
   }
 };
 
-// Maps phi to its representative in [lo, lo + tau) and appends it if it lies in [lo, hi].
-void AddIfInside(double phi, double lo, double hi, PhaseList& out) {
-  double p = lo + std::fmod(phi - lo, kTau);
-  if (p < lo) p += kTau;
+// Maps phi to its representative in [lo, lo + tau); true if it lies in [lo, hi]. Then p is it,
+// or the end of [lo, hi] it lies just outside of (moved is set).
+bool Inside(double phi, double lo, double hi, double& p, bool& moved) {
+  const double d = phi - lo;  // fmod(d, tau) is d itself for d in [0, tau)
+  double r = lo + (d >= 0.0 && d < kTau ? d : std::fmod(d, kTau));
+  if (r < lo) r += kTau;
   // A zero just below lo (rounding) is lo itself.
-  if (lo + kTau - p < kDuplicateTol) p = lo;
-  if (p <= hi + kDuplicateTol && out.n < static_cast<int>(out.phi.size())) {
-    out.phi[out.n++] = std::min(p, hi);
+  p = lo + kTau - r < kDuplicateTol ? lo : std::min(r, hi);
+  moved = p != r;
+  return r <= hi + kDuplicateTol || p == lo;
+}
+
+// Appends phi's representative if it lies in [lo, hi].
+void AddIfInside(double phi, double lo, double hi, PhaseList& out) {
+  double p = 0.0;
+  bool moved = false;
+  if (Inside(phi, lo, hi, p, moved) && out.n < static_cast<int>(out.phi.size())) {
+    out.phi[out.n++] = p;
   }
 }
 
@@ -389,20 +399,46 @@ PhaseList TrigRoots(double c0, const double* a, const double* b, int K, double l
   PhaseList out;
   const Series s{c0, a, b, K};
   if (K == 0 || hi < lo) return out;
-  // c0 + a cos phi + b sin phi = c0 + R sin(phi + delta), R = hypot(a, b), delta = atan2(a, b).
-  if (K == 1) return HarmonicRoots(c0, std::hypot(a[0], b[0]), std::atan2(a[0], b[0]), lo, hi);
+  if (K == 1) {
+    return HarmonicRoots(c0, a[0], b[0], std::hypot(a[0], b[0]), std::atan2(a[0], b[0]), lo, hi);
+  }
   Subdivided(s, lo, hi, out);
   SortUnique(out);
   return out;
 }
 
-PhaseList HarmonicRoots(double c0, double R, double delta, double lo, double hi) {
-  PhaseList out;
+AngleList HarmonicRootAngles(double c0, double a, double b, double R, double delta, double lo,
+                             double hi) {
+  AngleList out;
   if (hi < lo || R == 0.0 || std::abs(c0) > R) return out;
-  const double q = std::asin(std::clamp(-c0 / R, -1.0, 1.0));
-  AddIfInside(q - delta, lo, hi, out);
-  AddIfInside(M_PI - q - delta, lo, hi, out);
-  SortUnique(out);
+  // The zeros are phi = theta - delta with sin theta = -c0/R: theta = q (cos theta >= 0) and
+  // pi - q (cos theta <= 0). With sin delta = a/R and cos delta = b/R,
+  //   cos phi = (b cos theta + a sin theta)/R,  sin phi = (b sin theta - a cos theta)/R.
+  const double sin_theta = std::clamp(-c0 / R, -1.0, 1.0), q = std::asin(sin_theta);
+  const double cos_q = std::sqrt((1.0 - sin_theta) * (1.0 + sin_theta));
+  const double theta[2] = {q, M_PI - q}, cos_theta[2] = {cos_q, -cos_q};
+  for (int i = 0; i < 2; ++i) {
+    double p = 0.0;
+    bool moved = false;
+    if (!Inside(theta[i] - delta, lo, hi, p, moved)) continue;
+    // A zero moved onto an end of [lo, hi] takes that end's cosine and sine.
+    out.angle[out.n++] = moved ? Angle::Of(p)
+                               : Angle{p, (b * cos_theta[i] + a * sin_theta) / R,
+                                       (b * sin_theta - a * cos_theta[i]) / R};
+  }
+  if (out.n == 2) {  // sorted, a touch (two equal zeros) once
+    if (out.angle[1].phi < out.angle[0].phi) std::swap(out.angle[0], out.angle[1]);
+    if (!(out.angle[1].phi - out.angle[0].phi > kDuplicateTol)) out.n = 1;
+  }
+  return out;
+}
+
+PhaseList HarmonicRoots(double c0, double a, double b, double R, double delta, double lo,
+                        double hi) {
+  const AngleList angles = HarmonicRootAngles(c0, a, b, R, delta, lo, hi);
+  PhaseList out;
+  out.n = angles.n;
+  for (int i = 0; i < angles.n; ++i) out.phi[i] = angles.angle[i].phi;
   return out;
 }
 

@@ -16,9 +16,15 @@ namespace capsubot::detail {
 /// beyond the rounding noise is missed; no allocation.
 PhaseList TrigRoots(double c0, const double* a, const double* b, int K, double lo, double hi);
 
-/// Zeros in [lo, hi] (hi - lo <= tau) of c0 + R sin(phi + delta), R >= 0, sorted: TrigRoots'
-/// closed form for one harmonic a cos phi + b sin phi (R = hypot(a, b), delta = atan2(a, b)),
-/// for callers that keep R and delta across the levels c0 they cross.
-PhaseList HarmonicRoots(double c0, double R, double delta, double lo, double hi);
+/// Zeros in [lo, hi] (hi - lo <= tau) of c0 + a cos phi + b sin phi = c0 + R sin(phi + delta),
+/// R = hypot(a, b) > 0 or 0, delta = atan2(a, b) up to a multiple of tau, sorted, with the
+/// cosine and sine of each zero in closed form (no sincos): TrigRoots' closed form for one
+/// harmonic, for callers that keep R and delta across the levels c0 they cross.
+AngleList HarmonicRootAngles(double c0, double a, double b, double R, double delta, double lo,
+                             double hi);
+
+/// The phases of HarmonicRootAngles.
+PhaseList HarmonicRoots(double c0, double a, double b, double R, double delta, double lo,
+                        double hi);
 
 }  // namespace capsubot::detail

@@ -34,6 +34,11 @@ Condition ConditionOf(int index) {
   }
 }
 
+// rho <= rho_max, up to setup.rho_rel_tol relative.
+bool WithinRhoMax(const Evaluation& ev, const ConstraintSetup& setup) {
+  return ev.g[kRhoMaxIndex] <= setup.rho_rel_tol * setup.rho_max;
+}
+
 }  // namespace
 
 const char* ConstraintName(int index) {
@@ -104,7 +109,7 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double
   if (!std::isfinite(ev.I)) ev.I = -std::numeric_limits<double>::infinity();
   ev.valid = v.valid() && ev.I > -std::numeric_limits<double>::infinity() &&
              WithinForceBound(ev.force, setup.force_bound) &&
-             (!stability_required || ev.g[kRhoMaxIndex] <= 0.0);
+             (!stability_required || WithinRhoMax(ev, setup));
   // CheckValidity and the g_i agree on the orbit conditions; a valid orbit has no violation.
   if (ev.valid) ev.violation = 0.0;
   return ev;
@@ -200,7 +205,7 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
       !v.violated(Condition::kForceBelowFriction)) {
     add(fmt::format("{} (max |F| = {:.6g} > {:g})", kForceBoundName, ev.force, setup.force_bound));
   }
-  if (setup.Applies(kRhoMaxIndex) && v.valid() && !(ev.g[kRhoMaxIndex] <= 0.0)) {
+  if (setup.Applies(kRhoMaxIndex) && v.valid() && !WithinRhoMax(ev, setup)) {
     add(fmt::format("{} (spectral radius = {:.6g} > {:g})", MarginName(Margin::kRhoMax), ev.rho,
                     setup.rho_max));
   }

@@ -51,6 +51,9 @@ struct ConstraintSetup {
   double force_bound = std::numeric_limits<double>::infinity();
   /// Largest admissible spectral radius; infinity: no stability requirement.
   double rho_max = std::numeric_limits<double>::infinity();
+  /// Relative rounding allowed rho_max when a result found at another T0 is checked after
+  /// scaling (docs/model.md section 6): 0 in the search itself.
+  double rho_rel_tol = 0.0;
 
   /// Whether row i is part of the problem: the walls without a clearance margin, the
   /// clearance rows with one (they imply the walls), the force bound and rho_max when set.

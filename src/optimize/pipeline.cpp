@@ -131,7 +131,9 @@ OptimizeResult AtReferenceScale(
   reference.T0 = kReferenceT0;
   OptimizeResult r = solve(reference, bound / k);
   if (r.solution.orbit.status == OrbitStatus::kNotRun) return r;
-  const ConstraintSetup setup{params, bound, options.rho_max};
+  // The optimum at the reference may lie on rho = rho_max: scaled, its spectral radius holds
+  // the bound to rounding, as the force bound does (kForceBoundRelTol).
+  const ConstraintSetup setup{params, bound, options.rho_max, kForceBoundRelTol};
   const ConstraintSetup reference_setup{reference, bound / k, options.rho_max};
   // Whether a scale-dependent condition binds at the reference: then T0 may do better.
   const Evaluation at_reference = Evaluate(r.solution.orbit.forcing, reference_setup);

@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "model/enum_names.hpp"
-#include "numerics/safe_newton.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {
@@ -20,30 +19,27 @@ double Wrap(double phi) {
   return p == 0.0 ? kTau : p;
 }
 
-// phi1: the first root in (0, tau) of g = Pi(tau) - T0 phi - Pi(phi) (docs/model.md section 4).
-// g' = -T0 - F, so g is monotone between the crossings of F = -T0: walk those pieces and
-// bracket the first sign change (g(0) = Pi(tau) > 0 and g(tau) = -T0 tau < 0), then Newton's
-// iteration inside the bracket with g and g' from one evaluation of the force per step.
-double StopPhase(const Forcing& f, double T0, double Pi_tau) {
-  const auto g = [&](double phi) { return Pi_tau - T0 * phi - f.Pi(phi); };
-  const auto g_dg = [&](double phi) {
-    const ForceValues v = f.Values(phi);  // v.Pi is f.Pi(phi) bit for bit
-    return std::pair<double, double>(Pi_tau - T0 * phi - v.Pi, -T0 - v.F);
+// phi1: the first root in (0, tau) of g = Pi(tau) - T0 phi - Pi(phi) (docs/model.md section 4),
+// with its cosine and sine. g' = -T0 - F, so g is monotone between the crossings of F = -T0:
+// walk those pieces and bracket the first sign change (g(0) = Pi(tau) > 0 and
+// g(tau) = -T0 tau < 0), then Newton's iteration inside the bracket (PhaseRoot).
+Angle StopPhase(const Forcing& f, double T0, double Pi_tau) {
+  const auto g_dg = [&](const Angle& at, const ForceValues& v) {
+    return std::pair<double, double>(Pi_tau - T0 * at.phi - v.Pi, -T0 - v.F);
   };
-  const PhaseList cuts = f.Crossings(-T0, 0.0, kTau);
-  double lo = 0.0, g_lo = Pi_tau;  // Pi(0) = 0
+  const AngleList cuts = f.CrossingAngles(-T0, 0.0, kTau);
+  Angle lo = Angle::Of(0.0);
+  double g_lo = Pi_tau;  // Pi(0) = 0
   for (int i = 0; i <= cuts.n; ++i) {
-    const double hi = i < cuts.n ? cuts.phi[i] : kTau;
-    if (hi > lo) {
-      const double g_hi = g(hi);
-      if (g_hi <= 0.0)
-        return detail::SafeNewtonBracket(g_dg, lo, hi, g_lo, g_hi,
-                                         detail::NewtonStart::kFalsePosition);
+    const Angle hi = i < cuts.n ? cuts.angle[i] : Angle::Of(kTau);
+    if (hi.phi > lo.phi) {
+      const double g_hi = g_dg(hi, f.Values(hi)).first;
+      if (g_hi <= 0.0) return detail::PhaseRoot(f, g_dg, lo, hi, g_lo, g_hi);
       lo = hi;
       g_lo = g_hi;
     }
   }
-  return kTau;  // unreachable: g(tau) < 0
+  return Angle::Of(kTau);  // unreachable: g(tau) < 0
 }
 
 }  // namespace
@@ -72,8 +68,9 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
     o.status = OrbitStatus::kNonPositiveMeanForce;
     return o;
   }
-  o.phi1 = StopPhase(forcing, T0, o.Pi_tau);
-  const double phi1 = o.phi1, Phi1 = forcing.Phi(phi1);
+  const Angle stop = StopPhase(forcing, T0, o.Pi_tau);
+  o.phi1 = stop.phi;
+  const double phi1 = o.phi1, Phi1 = forcing.Values(stop).Phi;
   // psi(alpha) = e tau Pi(tau)/(1+e) - (1-alpha) Phi(tau)
   //              - alpha (T0 phi1^2/2 + (tau - phi1) Pi(tau) + Phi(phi1))
   const double head = e * tau * o.Pi_tau / (1.0 + e);
@@ -111,12 +108,8 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
 
 double Orbit::x(double phi) const {
   phi = Wrap(phi);
-  const Forcing& f = forcing;
-  if (phi <= phi1) {
-    return 1.0 - e * u * phi + T0 * phi * phi / (2.0 * (1.0 - alpha)) +
-           f.Phi(phi) / (alpha * (1.0 - alpha));
-  }
-  return x1 + (phi - phi1) * (v_plus - e * u) + (f.Phi(phi) - f.Phi(phi1)) / alpha;
+  return detail::RelativePosition(*this, phi, forcing.Phi(phi),
+                                  phi <= phi1 ? 0.0 : forcing.Phi(phi1));  // Phi1 on the rest
 }
 
 double Orbit::dx(double phi) const {

@@ -48,13 +48,12 @@ Energy OrbitEnergy(const Orbit& o) {
 
   std::array<double, kMaxBreaks> breaks{};
   int n = 0;
-  double d_next = o.dx(0.0);  // x' at the start of the next piece (the pieces tile [0, tau])
-  detail::ForEachMonotonePiece(o, [&](double lo, double hi) {
-    breaks[n++] = lo;
-    const double dlo = d_next, dhi = o.dx(hi);
-    d_next = dhi;
-    if (dlo * dhi < 0.0) breaks[n++] = detail::VelocityZero(o, lo, hi, dlo, dhi);
-  });
+  detail::ForEachMonotonePiece(o, Angle::Of(o.phi1),
+                               [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
+                                 breaks[n++] = lo.phi;
+                                 if (dlo * dhi < 0.0)
+                                   breaks[n++] = detail::VelocityZero(o, lo, hi, dlo, dhi).phi;
+                               });
   const PhaseList zeros = o.forcing.Crossings(0.0, 0.0, kTau);
   for (int i = 0; i < zeros.n; ++i) breaks[n++] = zeros.phi[i];
   breaks[n++] = o.phi1;

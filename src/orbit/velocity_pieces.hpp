@@ -9,27 +9,18 @@
 #include <utility>
 
 #include "capsubot/orbit.hpp"
-#include "numerics/safe_newton.hpp"
+#include "orbit/phase_root.hpp"
 
 namespace capsubot::detail {
 
-/// Calls visit(lo, hi) for each piece [lo, hi] of [0, tau] on which x' is monotone, in
-/// increasing order; the pieces tile [0, tau] and phi1 is always a piece boundary. Needs o.ok().
-template <class Visit>
-void ForEachMonotonePiece(const Orbit& o, Visit&& visit) {
-  auto walk = [&](double level, double lo, double hi) {
-    const PhaseList cuts = o.forcing.Crossings(level, lo, hi);
-    double a = lo;
-    for (int i = 0; i < cuts.n; ++i) {
-      if (cuts.phi[i] > a && cuts.phi[i] < hi) {
-        visit(a, cuts.phi[i]);
-        a = cuts.phi[i];
-      }
-    }
-    visit(a, hi);
-  };
-  walk(-o.alpha * o.T0, 0.0, o.phi1);
-  walk(0.0, o.phi1, kTau);
+/// x at phi in [0, tau] given Phi(phi) and Phi1 = Phi(phi1) (docs/model.md section 4; Phi1 is
+/// used only on the rest, phi > phi1): the one formula behind Orbit::x and the extrema of x.
+inline double RelativePosition(const Orbit& o, double phi, double Phi, double Phi1) {
+  if (phi <= o.phi1) {
+    return 1.0 - o.e * o.u * phi + o.T0 * phi * phi / (2.0 * (1.0 - o.alpha)) +
+           Phi / (o.alpha * (1.0 - o.alpha));
+  }
+  return o.x1 + (phi - o.phi1) * (o.v_plus - o.e * o.u) + (Phi - Phi1) / o.alpha;
 }
 
 /// x' at phi in [0, tau] given Pi(phi) (docs/model.md section 4): the one formula behind
@@ -48,15 +39,40 @@ inline double RelativeAcceleration(const Orbit& o, double phi, double F) {
   return F / o.alpha;
 }
 
-/// The zero of x' in a monotone piece [lo, hi] whose ends have x' of opposite signs, dlo and
-/// dhi (known to the caller): a bracketed Newton iteration, x' and x'' from one evaluation of
-/// the force (one sincos) per step; the same numbers as Orbit::dx and Orbit::ddx.
-inline double VelocityZero(const Orbit& o, double lo, double hi, double dlo, double dhi) {
-  const auto dx_ddx = [&o](double p) {
-    const ForceValues f = o.forcing.Values(p);
-    return std::pair<double, double>(RelativeVelocity(o, p, f.Pi), RelativeAcceleration(o, p, f.F));
+/// Calls visit(lo, hi, dlo, dhi) for each piece [lo, hi] of [0, tau] on which x' is monotone,
+/// in increasing order, with x' at its ends, dlo and dhi; the pieces tile [0, tau] and phi1
+/// (given with its cosine and sine) is always a piece boundary. Needs o.ok().
+template <class Visit>
+void ForEachMonotonePiece(const Orbit& o, const Angle& phi1, Visit&& visit) {
+  Angle a = Angle::Of(0.0);                    // where Pi = 0
+  double d_a = RelativeVelocity(o, 0.0, 0.0);  // x' at a
+  const auto piece = [&](const Angle& b) {
+    const double d_b = RelativeVelocity(o, b.phi, o.forcing.Values(b).Pi);
+    visit(a, b, d_a, d_b);
+    a = b;
+    d_a = d_b;
   };
-  return SafeNewtonBracket(dx_ddx, lo, hi, dlo, dhi, NewtonStart::kFalsePosition);
+  const auto walk = [&](double level, const Angle& end) {
+    const AngleList cuts = o.forcing.CrossingAngles(level, a.phi, end.phi);
+    for (int i = 0; i < cuts.n; ++i) {
+      if (cuts.angle[i].phi > a.phi && cuts.angle[i].phi < end.phi) piece(cuts.angle[i]);
+    }
+    piece(end);
+  };
+  walk(-o.alpha * o.T0, phi1);
+  walk(0.0, Angle::Of(kTau));
+}
+
+/// The zero of x' in a monotone piece [lo, hi] whose ends have x' of opposite signs, dlo and
+/// dhi (known to the caller), with its cosine and sine: PhaseRoot with x' and x'' from one
+/// evaluation of the force per step; the same formulas as Orbit::dx and Orbit::ddx.
+inline Angle VelocityZero(const Orbit& o, const Angle& lo, const Angle& hi, double dlo,
+                          double dhi) {
+  const auto dx_ddx = [&o](const Angle& at, const ForceValues& f) {
+    return std::pair<double, double>(RelativeVelocity(o, at.phi, f.Pi),
+                                     RelativeAcceleration(o, at.phi, f.F));
+  };
+  return PhaseRoot(o.forcing, dx_ddx, lo, hi, dlo, dhi);
 }
 
 }  // namespace capsubot::detail

@@ -19,7 +19,9 @@ using testing::Quadrature;
 
 constexpr double kQuadratureTol = 1e-11;  // QAGS asked for 1e-13 relative; values are O(1..10)
 constexpr double kRootTol = 1e-10;        // |F - level| at a returned crossing
-constexpr int kScan = 200000;             // dense scan used as the independent reference
+// Two roundings of one closed form (crossing phases and force values of size 1): a few ulp.
+constexpr double kRoundingTol = 1e-14;
+constexpr int kScan = 200000;  // dense scan used as the independent reference
 
 struct Case {
   const char* name;
@@ -156,10 +158,12 @@ TEST(Forcing, HarmonicIsTheOneTermFourierSeries) {
   EXPECT_FALSE(Forcing::Fourier(0.2, {0.1}, {0.7}, 0.0).harmonic());
 }
 
-// One harmonic takes a fast path (no loop over harmonics, the crossings' R and phase kept from
-// the construction, cos tau and sin tau as constants). The same force written as a two-term
-// series with a zero second harmonic takes the general path: every number must agree bit for
-// bit, and the values at phi = tau must be those of std::cos and std::sin.
+// One harmonic takes a fast path (no loop over harmonics, cos tau and sin tau as constants,
+// the crossings in closed form from R and the phase of the base harmonic, which the impact
+// phase only shifts). The same force written as a two-term series with a zero second harmonic
+// takes the general path: F and its integrals must agree bit for bit, the crossings and bounds
+// to rounding (the general path takes the phase of the rotated coefficients), and the values
+// at phi = tau must be those of std::cos and std::sin.
 TEST(Forcing, OneHarmonicFastPathIsTheGeneralSeriesBitForBit) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coef(-1.0, 1.0), phase(-kTau, kTau);
@@ -183,10 +187,10 @@ TEST(Forcing, OneHarmonicFastPathIsTheGeneralSeriesBitForBit) {
       const double lo = 0.25 * kTau * coef(rng) + 0.25 * kTau, hi = kTau;
       const PhaseList p = fast.Crossings(level, lo, hi), q = general.Crossings(level, lo, hi);
       ASSERT_EQ(p.n, q.n);
-      for (int k = 0; k < p.n; ++k) ASSERT_EQ(p.phi[k], q.phi[k]);
+      for (int k = 0; k < p.n; ++k) ASSERT_NEAR(p.phi[k], q.phi[k], kRoundingTol);
       const Range r = fast.Bounds(lo, hi), s = general.Bounds(lo, hi);
-      ASSERT_EQ(r.min, s.min);
-      ASSERT_EQ(r.max, s.max);
+      ASSERT_NEAR(r.min, s.min, kRoundingTol);
+      ASSERT_NEAR(r.max, s.max, kRoundingTol);
     }
     ++checked;
   }
@@ -261,6 +265,37 @@ TEST(Forcing, RejectsMismatchedOrTooManyCoefficients) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "harmonics K = 17 is invalid: expected K <= 16");
   }
+}
+
+// Angles without sincos: a short step by angle addition and the closed-form crossings of one
+// harmonic give the cosine and sine of their phase to a few ulp of std::cos and std::sin.
+TEST(Forcing, AnglesWithoutSincosMatchTheLibrary) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> phase(-kTau, kTau), step(-0.2, 0.2);
+  int steps = 0, crossings = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Angle from = Angle::Of(phase(rng));
+    const Angle to = from.Toward(from.phi + step(rng));  // beyond 1/8: a fresh sincos
+    ASSERT_NEAR(to.cos, std::cos(to.phi), kRoundingTol);
+    ASSERT_NEAR(to.sin, std::sin(to.phi), kRoundingTol);
+    ++steps;
+  }
+  const Forcing f = Forcing::Fourier(0.1, {0.3}, {-0.4}, 1.1);
+  for (double level : {-0.35, 0.0, 0.2, 0.55}) {
+    const AngleList a = f.CrossingAngles(level, 0.5, 0.5 + kTau);
+    const PhaseList p = f.Crossings(level, 0.5, 0.5 + kTau);
+    ASSERT_EQ(a.n, 2);
+    ASSERT_EQ(p.n, 2);
+    for (int k = 0; k < a.n; ++k) {
+      EXPECT_EQ(a.angle[k].phi, p.phi[k]);
+      EXPECT_NEAR(a.angle[k].cos, std::cos(p.phi[k]), kRoundingTol);
+      EXPECT_NEAR(a.angle[k].sin, std::sin(p.phi[k]), kRoundingTol);
+      EXPECT_NEAR(f.F(p.phi[k]), level, kRootTol);
+      ++crossings;
+    }
+  }
+  EXPECT_EQ(steps, 1000);
+  EXPECT_EQ(crossings, 8);
 }
 
 }  // namespace
