@@ -18,6 +18,7 @@
 #include "capsubot/blocks.hpp"
 #include "capsubot/design.hpp"
 #include "capsubot/grid.hpp"
+#include "capsubot/grid_file.hpp"
 #include "capsubot/sweep.hpp"
 
 namespace capsubot {
@@ -62,7 +63,8 @@ DesignGridAxis ParseDesignGridAxis(const std::string& spec);
 /// The cells after the grid's of a point's row, joined by ',' (no line break).
 using DesignGridRow = std::function<std::string(const Gait& gait)>;
 
-struct DesignGridOptions {
+/// The file options (comments, output, shard, resume, threads, checkpoints) are GridFileOptions.
+struct DesignGridOptions : GridFileOptions {
   /// The robot at every point, except the gridded inputs (validated: DesignInput::Validate).
   DesignInput input;
   /// The axes, first slowest; each parameter at most once, at least one axis.
@@ -70,20 +72,6 @@ struct DesignGridOptions {
   /// The names of the columns after the grid's, and their cells (required).
   std::vector<std::string> columns;
   DesignGridRow row;
-  /// Lines written first, each as `# ` + line (provenance); part of the file's bytes.
-  std::vector<std::string> comments;
-  /// The CSV file to write (required); "-" writes to standard output (no resume).
-  std::string output;
-  /// Compute only shard `shard` of `shards`: the points p with p % shards == shard (as
-  /// SweepOptions::shard).
-  int shard = 0;
-  int shards = 1;
-  /// Continue from `<output>.checkpoint` if it exists and belongs to this same run.
-  bool resume = false;
-  /// Worker threads; 0 means std::thread::hardware_concurrency().
-  int threads = 0;
-  /// Minimum time between two checkpoints [s]; 0 checkpoints after every block.
-  double checkpoint_seconds = 0.5;
 
   /// Throws std::invalid_argument naming the bad field (grid, output, threads, shard, ...),
   /// its value and the rule. Every point's input is valid once this passes.

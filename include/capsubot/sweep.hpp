@@ -42,6 +42,7 @@
 #include "capsubot/blocks.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/grid.hpp"
+#include "capsubot/grid_file.hpp"
 #include "capsubot/io.hpp"
 #include "capsubot/optimize_forcing.hpp"
 #include "capsubot/optimize_fourier.hpp"
@@ -71,7 +72,8 @@ SweepOptimize ParseSweepOptimize(const std::string& name);
 /// ReachOptions with no wall-clock limit (max_seconds infinite), as a sweep needs them.
 ReachOptions SweepReachOptions();
 
-struct SweepOptions {
+/// The file options (comments, output, shard, resume, threads, checkpoints) are GridFileOptions.
+struct SweepOptions : GridFileOptions {
   /// The grid; its parameters replace the values of `forcing`, `params` and the optimiser's
   /// options at every point.
   Grid grid;
@@ -98,28 +100,8 @@ struct SweepOptions {
   /// bound each point, so that the rows do not depend on the machine's speed. Each point runs
   /// on one thread.
   ReachOptions reach = SweepReachOptions();
-  /// Lines written first, each as `# ` + line (provenance: what made the file); part of the
-  /// file's bytes, so a resume must give the same. No line may contain a line break.
-  std::vector<std::string> comments;
-  /// The CSV file to write (required); "-" (standard output) or a path that is not a regular
-  /// file (/dev/stdout, a pipe) is written in place, without checkpoint or resume.
-  std::string output;
-  /// Compute only shard `shard` of `shards` (0 <= shard < shards): the grid points p with
-  /// p % shards == shard, in grid order (interleaved: neighbouring points, of similar cost,
-  /// go to different shards). A shard's file has the same comment and header lines plus the
-  /// line `# shard K/N of T points`; MergeSweepShards joins the N files into the file of the
-  /// whole grid, byte for byte. 1 shard: the whole grid.
-  int shard = 0;
-  int shards = 1;
-  /// Continue from `<output>.checkpoint` if it exists and belongs to this same sweep.
-  bool resume = false;
-  /// Worker threads; 0 means std::thread::hardware_concurrency().
-  int threads = 0;
   /// Grid points per block of rows (the unit of work and of checkpointing); 0: automatic.
   int block_points = 0;
-  /// Minimum time between two checkpoints (fsync of the partial file, then of the
-  /// checkpoint), in seconds; 0 checkpoints after every block.
-  double checkpoint_seconds = 0.5;
 
   /// Throws std::invalid_argument naming the bad field (grid, optimize, threads, ...), its
   /// value and the rule. Checks the gridded values against the other parameters too (a

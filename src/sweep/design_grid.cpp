@@ -209,13 +209,10 @@ void DesignGridOptions::Validate() const {
       }
     }
   }
-  if (output.empty()) {
-    throw std::invalid_argument("output is missing: expected the path of the CSV file to write");
-  }
   if (columns.empty() || !row) {
     throw std::invalid_argument("columns are missing: expected the result columns and their row");
   }
-  detail::CheckGridRun(threads, shard, shards, Points(), checkpoint_seconds, comments);
+  ValidateFile(Points());
 }
 
 SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallback& progress,

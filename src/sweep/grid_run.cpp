@@ -13,8 +13,6 @@
 namespace capsubot::detail {
 namespace {
 
-constexpr int kMaxThreads = 1024;
-
 // The message of a write error after which the partial file and its checkpoint are kept.
 std::string KeptMessage(const IoError& e, const std::string& output) {
   return fmt::format("{}; the rows done are kept in {} with its checkpoint {} for a resume",
@@ -26,35 +24,6 @@ std::string KeptMessage(const IoError& e, const std::string& output) {
 int GridThreads(int threads) {
   if (threads > 0) return threads;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
-void CheckGridRun(int threads, int shard, int shards, std::int64_t points,
-                  double checkpoint_seconds, const std::vector<std::string>& comments) {
-  if (threads < 0 || threads > kMaxThreads) {
-    throw std::invalid_argument(
-        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
-                    kMaxThreads));
-  }
-  if (shards < 1 || shard < 0 || shard >= shards) {
-    throw std::invalid_argument(fmt::format(
-        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
-  }
-  if (shards > 1 && points < shards) {
-    throw std::invalid_argument(fmt::format(
-        "shard = {}/{} is invalid: the grid has only {} points: expected at most as many shards "
-        "as points",
-        shard, shards, points));
-  }
-  if (!(checkpoint_seconds >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("checkpoint_seconds = {} is invalid: expected >= 0", checkpoint_seconds));
-  }
-  for (const std::string& line : comments) {
-    if (line.find_first_of("\r\n") != std::string::npos) {
-      throw std::invalid_argument(
-          "comments are invalid: a comment line contains a line break: expected one line each");
-    }
-  }
 }
 
 std::int64_t ShardCount(std::int64_t total, int shard, int shards) {

@@ -30,11 +30,6 @@ struct GridRun {
 /// Worker threads: `threads`, or std::thread::hardware_concurrency() for 0.
 int GridThreads(int threads);
 
-/// Throws std::invalid_argument naming the bad field (threads, shard, checkpoint_seconds,
-/// comments), its value and the rule, for a grid of `points` points.
-void CheckGridRun(int threads, int shard, int shards, std::int64_t points,
-                  double checkpoint_seconds, const std::vector<std::string>& comments);
-
 /// Points of shard `shard` of `shards` of a grid of `total` points (p % shards == shard).
 std::int64_t ShardCount(std::int64_t total, int shard, int shards);
 

@@ -126,10 +126,7 @@ SweepOptimize ParseSweepOptimize(const std::string& name) {
 void SweepOptions::Validate() const {
   grid.Validate();
   params.Validate();
-  if (output.empty()) {
-    throw std::invalid_argument("output is missing: expected the path of the CSV file to write");
-  }
-  detail::CheckGridRun(threads, shard, shards, grid.size(), checkpoint_seconds, comments);
+  ValidateFile(grid.size());
   if (block_points < 0) {
     throw std::invalid_argument(
         fmt::format("block_points = {} is invalid: expected >= 1 (0: automatic)", block_points));
