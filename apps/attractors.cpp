@@ -4,16 +4,18 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/io.hpp"
 #include "capsubot/start_map.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 #include "start_shard.hpp"
+#include "whole_map.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -29,35 +31,37 @@ struct AttractorsCommandOptions {
 
 int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
-  FromRestOptions fr;
-  std::tie(fr.n_x, fr.n_psi) = ParseGridSize("--starts", opt.starts);
-  fr.attractor.motion = opt.robot.motion;
-  fr.attractor.threads = opt.threads;
+  int n_x = 0, n_psi = 0;
+  std::tie(n_x, n_psi) = ParseGridSize("--starts", opt.starts);  // the rules of FromRestOptions
+  const std::vector<PhaseState> starts = GridStarts(n_x, n_psi);
+  AttractorOptions ao;
+  ao.motion = opt.robot.motion;
+  ao.threads = opt.threads;
   RequireShardForResume(cmd, opt.shard);
   if (!opt.shard.shard.empty()) {
     if (opt.output.empty()) {
       throw std::invalid_argument(
           "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
     }
-    return RunStartShard(opt.shard, cmd, opt.robot, forcing, GridStarts(fr.n_x, fr.n_psi),
-                         fr.attractor, false, opt.output, {{"--json", opt.json}});
+    return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, false, opt.output,
+                         {{"--json", opt.json}});
   }
-  if (!opt.output.empty()) {
-    AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
-  }
-  const Attractors a =
-      FindAttractors(forcing, opt.robot.params, opt.robot.alpha, fr, TerminalProgress("starts"));
-  if (!opt.output.empty()) WriteStartMap(opt.output, GridStarts(fr.n_x, fr.n_psi), a, false);
+  // The starts from rest of FindAttractors, classified on the ranks under mpirun.
+  const std::optional<Attractors> map =
+      ClassifyWholeMap(opt.robot, forcing, starts, ao, opt.output);
+  if (!map) return 0;  // a worker of an MPI job: rank 0 writes and prints
+  const Attractors& a = *map;
+  if (!opt.output.empty()) WriteStartMap(opt.output, starts, a, false);
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
     AddProvenanceJson(j, cmd, {"--checkpoint-seconds"});
     fmt::print("{}\n", j.dump());
     return 0;
   }
-  const MotionOptions& mo = fr.attractor.motion;
+  const MotionOptions& mo = ao.motion;
   std::string t =
       fmt::format("attractors from rest: {} starts ({} x0 x {} phases), {} + {} periods\n",
-                  a.starts, fr.n_x, fr.n_psi, mo.transient, mo.record);
+                  a.starts, n_x, n_psi, mo.transient, mo.record);
   t += fmt::format("  force          {}\n", ForceFormula(forcing));
   t += fmt::format("  model          T0 = {:g}, e = {:g}, alpha = {:.10g}\n", opt.robot.params.T0,
                    opt.robot.params.e, opt.robot.alpha);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -16,9 +17,9 @@
 #include "capsubot/start_map.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
-#include "ranks.hpp"
 #include "report.hpp"
 #include "start_shard.hpp"
+#include "whole_map.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -125,16 +126,10 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
     return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, x0_u0, opt.output,
                          {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});
   }
-  Ranks ranks;  // under mpirun: rank 0 runs the command, the others compute blocks of starts
-  if (ranks.worker()) {
-    return ranks.Serve(MotionBlocks(forcing, opt.robot.params, opt.robot.alpha, starts, ao),
-                       ao.threads);
-  }
-  {
-    AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
-  }
-  const Attractors a = ClassifyStarts(forcing, opt.robot.params, opt.robot.alpha, starts, ao,
-                                      TerminalProgress("starts"), ranks.backend());
+  const std::optional<Attractors> map =
+      ClassifyWholeMap(opt.robot, forcing, starts, ao, opt.output);
+  if (!map) return 0;  // a worker of an MPI job: rank 0 writes and prints
+  const Attractors& a = *map;
   WriteStartMap(opt.output, starts, a, x0_u0);
   if (!opt.plot.empty()) {
     const std::string title =

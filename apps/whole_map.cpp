@@ -1,0 +1,27 @@
+// The whole map of starts of `basins` and `attractors`, classified on the ranks.
+
+#include "whole_map.hpp"
+
+#include "capsubot/io.hpp"
+#include "ranks.hpp"
+
+namespace capsubot::app {
+
+std::optional<Attractors> ClassifyWholeMap(const RobotOptions& robot, const Forcing& forcing,
+                                           const std::vector<PhaseState>& starts,
+                                           const AttractorOptions& attractor,
+                                           const std::string& output) {
+  Ranks ranks;  // under mpirun: rank 0 runs the command, the others compute blocks of starts
+  if (ranks.worker()) {
+    ranks.Serve(MotionBlocks(forcing, robot.params, robot.alpha, starts, attractor),
+                attractor.threads);
+    return std::nullopt;
+  }
+  if (!output.empty()) {
+    AtomicFile probe(output, "-o");  // fail on an unwritable path before the long run
+  }
+  return ClassifyStarts(forcing, robot.params, robot.alpha, starts, attractor,
+                        TerminalProgress("starts"), ranks.backend());
+}
+
+}  // namespace capsubot::app
