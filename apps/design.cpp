@@ -31,6 +31,7 @@
 #include "json/design_json.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "ranks.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {
@@ -321,9 +322,11 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   const bool tty = StderrIsTerminal();
   ProgressBar bar("points");
   const SweepProgressCallback progress = GridProgress(bar);
+  Ranks ranks;  // under mpirun: rank 0 runs the grid, the others compute blocks of points
+  if (ranks.worker()) return ranks.Serve(DesignGridBlocks(o), o.threads);  // rank 0 validates
   SweepSummary summary;
   try {
-    summary = RunDesignGrid(o, progress);
+    summary = RunDesignGrid(o, progress, ranks.backend());
   } catch (const SweepResumableError& e) {
     throw WriteError(std::string(e.what()) + ": run the same command with --resume to continue");
   }

@@ -82,10 +82,17 @@ struct DesignGridOptions : GridFileOptions {
   DesignInput PointInput(std::int64_t point, double& m2) const;
 };
 
+/// The computers of the grid's blocks (blocks.hpp): unit i is this run's i-th point (grid
+/// point options.shard + i * options.shards), its bytes its CSV row, the count 1 a point.
+/// `options` must outlive them. A distributed backend's workers compute with these what
+/// RunDesignGrid's writer asks for.
+BlockComputeFactory DesignGridBlocks(const DesignGridOptions& options);
+
 /// Runs the grid and writes options.output: `# ` comments, the shard line of a shard, the
 /// header (the axes' names, then options.columns), one row a point (the axes' values, then
 /// options.row(DesignGait(PointInput))). Errors as RunSweep: std::invalid_argument for bad
-/// options (before any file is touched), IoError, SweepResumableError.
+/// options (before any file is touched), IoError, SweepResumableError. The blocks of rows are
+/// computed by `backend` (this process's threads by default).
 SweepSummary RunDesignGrid(const DesignGridOptions& options,
                            const SweepProgressCallback& progress = {},
                            const BlockBackend& backend = LocalBlocks());

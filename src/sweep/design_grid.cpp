@@ -215,25 +215,8 @@ void DesignGridOptions::Validate() const {
   ValidateFile(Points());
 }
 
-SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallback& progress,
-                           const BlockBackend& backend) {
-  o.Validate();
-  std::vector<std::string> columns;
-  for (const DesignGridAxis& axis : o.axes) columns.push_back(axis.name());
-  columns.insert(columns.end(), o.columns.begin(), o.columns.end());
-  detail::GridRun run;
-  run.output = o.output;
-  run.header = detail::GridHeader(o.comments, o.shard, o.shards, o.Points(), columns);
-  run.description = Description(o, run.header);
-  run.resume = o.resume;
-  run.checkpoint_seconds = o.checkpoint_seconds;
-  run.points = detail::ShardCount(o.Points(), o.shard, o.shards);
-  run.threads = detail::GridThreads(o.threads);
-  // A point is one design (a robot: ~1 ms; a search over m2 or f: ~0.1 s): one per block.
-  run.block_points = [](std::int64_t points, int threads) {
-    return BalancedBlock(points, threads, 1);
-  };
-  const BlockComputeFactory blocks = [&o]() -> BlockCompute {
+BlockComputeFactory DesignGridBlocks(const DesignGridOptions& o) {
+  return [&o]() -> BlockCompute {
     return [&o](std::int64_t begin, std::int64_t end, std::string& out) {
       for (std::int64_t i = begin; i < end; ++i) {
         const std::int64_t point = o.shard + i * o.shards;
@@ -252,7 +235,27 @@ SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallba
       return end - begin;
     };
   };
-  return detail::RunGridRows(run, blocks, progress, backend);
+}
+
+SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallback& progress,
+                           const BlockBackend& backend) {
+  o.Validate();
+  std::vector<std::string> columns;
+  for (const DesignGridAxis& axis : o.axes) columns.push_back(axis.name());
+  columns.insert(columns.end(), o.columns.begin(), o.columns.end());
+  detail::GridRun run;
+  run.output = o.output;
+  run.header = detail::GridHeader(o.comments, o.shard, o.shards, o.Points(), columns);
+  run.description = Description(o, run.header);
+  run.resume = o.resume;
+  run.checkpoint_seconds = o.checkpoint_seconds;
+  run.points = detail::ShardCount(o.Points(), o.shard, o.shards);
+  run.threads = detail::GridThreads(o.threads);
+  // A point is one design (a robot: ~1 ms; a search over m2 or f: ~0.1 s): one per block.
+  run.block_points = [](std::int64_t points, int threads) {
+    return BalancedBlock(points, threads, 1);
+  };
+  return detail::RunGridRows(run, DesignGridBlocks(o), progress, backend);
 }
 
 }  // namespace capsubot
