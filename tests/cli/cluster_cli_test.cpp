@@ -1,7 +1,8 @@
 // Runs split over processes give the bytes of the run on one machine (docs/cluster.md): a
 // sweep threaded, in 3 shards merged and under `mpirun -n 2` (and 3 ranks, oversubscribed);
 // a basin map threaded, in 3 shards merged and under mpirun; the starts from rest of
-// `attractors -o` threaded and in 3 shards merged; a two-parameter bifurcation study
+// `attractors -o` threaded, in 3 shards merged and under mpirun (the same report); a design
+// grid and its shard threaded and under mpirun; a two-parameter bifurcation study
 // threaded and in 3 shards merged (both CSVs); a killed basin shard resumed; bad input under
 // mpirun fails with no file written. The merge errors of basin shards (another run, missing,
 // duplicated, truncated) are tested here, those of sweep shards in sweep_cli_test.cpp. The mpirun
@@ -76,6 +77,16 @@ constexpr const char* kSweep = "sweep --grid phi0=-pi:pi:400 --grid c=0.2,0.5 --
 constexpr const char* kBasins =
     "basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278 "
     "--starts 8x6 --transient 100 --record 40";
+// The same robot and starts from rest as kBasins (its x0-psi plane is the from-rest grid).
+constexpr const char* kAttractors =
+    "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278 "
+    "--starts 8x6 --transient 100 --record 40";
+// A 3 x 3 design grid whose every point has a gait (m2 searched: about 20 ms a point); the
+// robot of design_cli_test.cpp, margins off.
+constexpr const char* kDesignGrid =
+    "design --m1 0.2 --L 0.02 --mu 0.3 --force-bias 0.1 --frequency 20 --margin 0 "
+    "--margin-stroke 0 --stick-margin 0 --rho-max 1 --grid e=0.5,0.7,0.9 "
+    "--grid force-amplitude=0.4,0.5,0.6";
 
 TEST(Cluster, SweepThreadedShardedAndUnderMpirunIsTheSameFile) {
   Dir dir;
@@ -126,6 +137,49 @@ TEST(Cluster, BasinMapThreadedAndUnderMpirunIsTheSameFile) {
       << two.out;
   // Printed once: by rank 0 only.
   EXPECT_EQ(two.out.find("basins: 48 starts"), two.out.rfind("basins: 48 starts")) << two.out;
+}
+
+TEST(Cluster, AttractorsAndDesignGridUnderMpirunAreTheThreadedRun) {
+  if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
+  Dir dir;
+  // The same -o path for every run: the report names it.
+  const std::string map = dir.File("map.csv");
+  const CommandResult one = RunCli(std::string(kAttractors) + " --threads 2 -o " + map + " 2>&1");
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("attractors from rest: 48 starts"), std::string::npos) << one.out;
+  const std::string bytes = ReadFile(map);
+  ASSERT_GT(bytes.size(), 1000u);
+  int runs = 0;
+  for (const char* ranks_threads : {"2 1", "3 2"}) {
+    int ranks = 0, threads = 0;
+    std::sscanf(ranks_threads, "%d %d", &ranks, &threads);
+    std::filesystem::remove(map);
+    const CommandResult r = Mpirun(
+        ranks, std::string(kAttractors) + " --threads " + std::to_string(threads) + " -o " + map);
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(r.out, one.out) << ranks << " ranks";  // printed once, by rank 0
+    EXPECT_TRUE(ReadFile(map) == bytes) << ranks << " ranks";
+    ++runs;
+  }
+  EXPECT_EQ(runs, 2);
+
+  const std::string grid = dir.File("grid.csv");
+  ASSERT_EQ(RunCli(std::string(kDesignGrid) + " --threads 2 -o " + grid).status, 0);
+  const std::string rows = ReadFile(grid);
+  EXPECT_NE(rows.find("\n0.9,0.6,ok,"), std::string::npos) << rows;
+  const CommandResult two =
+      Mpirun(2, std::string(kDesignGrid) + " --threads 1 -o " + dir.File("grid_mpi.csv"));
+  ASSERT_EQ(two.status, 0) << two.out;
+  EXPECT_TRUE(ReadFile(dir.File("grid_mpi.csv")) == rows);
+  EXPECT_FALSE(std::filesystem::exists(dir.File("grid_mpi.csv.partial")));
+  // A shard to standard output: printed once, by rank 0 (the workers write nothing).
+  const CommandResult shard = RunCli(std::string(kDesignGrid) + " --shard 1/2 -o - 2>&1");
+  ASSERT_EQ(shard.status, 0) << shard.out;
+  EXPECT_NE(shard.out.find("\n# shard 1/2 of 9 points\n"), std::string::npos) << shard.out;
+  const CommandResult sharded =
+      Mpirun(3, std::string(kDesignGrid) + " --threads 1 --shard 1/2 -o -");
+  ASSERT_EQ(sharded.status, 0) << sharded.out;
+  EXPECT_EQ(sharded.out, shard.out);
 }
 
 // The 3 shard files of kBasins (with `extra` options) in `dir`, as <name>0.csv, <name>1.csv,
@@ -235,11 +289,6 @@ TEST(Cluster, BadBasinShardOptionsAreRefused) {
   }
   EXPECT_EQ(checked, 4);
 }
-
-// The same robot and starts from rest as kBasins (its x0-psi plane is the from-rest grid).
-constexpr const char* kAttractors =
-    "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278 "
-    "--starts 8x6 --transient 100 --record 40";
 
 std::vector<std::string> AttractorShards(const Dir& dir, const std::string& name = "attr") {
   std::vector<std::string> files;
