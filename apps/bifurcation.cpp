@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/bifurcation_shards.hpp"
+#include "capsubot/bifurcation_csv.hpp"
 #include "capsubot/grid.hpp"
 #include "capsubot/io.hpp"
 #include "commands.hpp"
@@ -31,42 +31,9 @@ struct BifurcationCommandOptions {
   std::string shard;  // "K/N", empty: the whole study
   std::string output, summary;
   bool no_analytic = false;
+  bool resume = false;
+  double checkpoint_seconds = 0.5;
 };
-
-// The cell of the second parameter before a row ("" without it).
-std::string OverCell(bool two, double over) { return two ? FormatNumber(over) + ',' : ""; }
-
-std::string ImpactRow(const ImpactPoint& p, bool two) {
-  return fmt::format("{}{},{},{},{},{},{}\n", OverCell(two, p.over), FormatNumber(p.param),
-                     SweepDirectionName(p.direction), p.period_index, p.right ? "right" : "left",
-                     FormatNumber(p.phase), FormatNumber(p.velocity));
-}
-
-std::string SummaryRow(const BifurcationPoint& p, bool two) {
-  return fmt::format("{}{},{},{},{},{},{},{},{},{},{}\n", OverCell(two, p.over),
-                     FormatNumber(p.param), SweepDirectionName(p.direction), p.motion.period,
-                     p.motion.impacts_right, p.motion.impacts_left,
-                     FormatNumber(p.motion.mean_velocity), FormatNumber(p.multiplier_re),
-                     FormatNumber(p.multiplier_im), FormatNumber(p.spectral_radius),
-                     MotionStatusName(p.motion.status));
-}
-
-// Writes `header` and the rows of `points` (part after part, as d.parts) to `file`; in a
-// shard (`head` not empty: its comment lines) each part after its part line.
-template <class Point, class Row>
-void WriteRows(AtomicFile& file, const std::string& head, const std::string& header,
-               const BifurcationDiagram& d, const std::vector<Point>& points, Row row) {
-  auto& out = file.stream();
-  out << head << header;
-  std::size_t k = 0;
-  for (const int part : d.parts) {
-    std::string rows;
-    std::int64_t count = 0;
-    for (; k < points.size() && points[k].part == part; ++k, ++count) rows += row(points[k]);
-    if (!head.empty()) out << BifurcationPartLine(part, d.total_parts, count);
-    out << rows;
-  }
-}
 
 int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
@@ -89,7 +56,17 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     o.over = ParseBifurcationParam(over_name, &o.over_harmonic);
     for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
   }
+  if (opt.summary == opt.output) {
+    throw std::invalid_argument(
+        fmt::format("--summary = {} is invalid: expected a file other than -o's", opt.summary));
+  }
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
+  RequireShardForResume(cmd, !opt.shard.empty(), "study");
+  if (!(opt.checkpoint_seconds >= 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds",
+                    opt.checkpoint_seconds));
+  }
   double alpha = opt.robot.alpha;
   if (o.param == BifurcationParam::kAlpha) alpha = o.from;  // the swept value decides
   if (two && o.over == BifurcationParam::kAlpha) alpha = o.over_values.front();
@@ -97,47 +74,57 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
   }
   o.Validate();  // a bad --shard fails here, before any file is touched
+  const std::string study = fmt::format(
+      "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}){}", opt.param, o.from, o.to,
+      o.steps, opt.direction,
+      two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string());
+  const auto summary_note = [&](std::int64_t rows) {
+    return opt.summary.empty() ? std::string()
+                               : fmt::format(", {} summary rows to {}", rows, opt.summary);
+  };
+  if (!opt.shard.empty()) {
+    BifurcationShardFiles files;
+    files.impacts = opt.output;
+    files.summary = opt.summary;
+    // The run's name: without --shard, the paths and how it runs.
+    files.comments = "# " +
+                     CommandProvenance(cmd, {"--threads", "--output", "--summary", "--shard",
+                                             "--resume", "--checkpoint-seconds"})
+                         .CommandLine() +
+                     '\n';
+    files.resume = opt.resume;
+    files.checkpoint_seconds = opt.checkpoint_seconds;
+    const BifurcationShardSummary s = WriteBifurcationShard(
+        forcing, opt.robot.params, alpha, o, files, TerminalProgress("parameter values"));
+    fmt::print(
+        "{}, shard {}/{} of {} continuations: {} impacts written to {}{}{}\n", study, o.shard,
+        o.shards, BifurcationContinuations(o), s.impacts, opt.output, summary_note(s.summary_rows),
+        s.resumed > 0 ? fmt::format(" ({} of the shard's {} parts computed, {} resumed from the "
+                                    "checkpoint)",
+                                    s.parts - s.resumed, s.parts, s.resumed)
+                      : std::string());
+    return 0;
+  }
   {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
   const BifurcationDiagram d =
       ComputeBifurcation(forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"));
-  // A shard's files: the run's name (without --shard and the paths), the shard line.
-  const std::string head =
-      opt.shard.empty()
-          ? std::string()
-          : "# " +
-                CommandProvenance(cmd, {"--threads", "--output", "--summary", "--shard"})
-                    .CommandLine() +
-                '\n' +
-                fmt::format("# shard {}/{} of {} continuations\n", o.shard, o.shards,
-                            BifurcationContinuations(o));
-  const std::string over_column = two ? over_name + ',' : "";
+  std::string rows = BifurcationImpactsHeader(o);
+  AppendImpactRows(rows, d, two);
   AtomicFile impacts(opt.output, "-o");
-  WriteRows(impacts, head, over_column + "param,direction,period_index,wall,phase,velocity\n", d,
-            d.impacts, [two](const ImpactPoint& p) { return ImpactRow(p, two); });
+  impacts.stream() << rows;
   std::unique_ptr<AtomicFile> summary;
   if (!opt.summary.empty()) {
+    rows = BifurcationSummaryHeader(o);
+    AppendSummaryRows(rows, d, two);
     summary = std::make_unique<AtomicFile>(opt.summary, "--summary");
-    WriteRows(*summary, head,
-              over_column +
-                  "param,direction,period,impacts_right,impacts_left,mean_velocity,"
-                  "largest_multiplier,largest_multiplier_im,spectral_radius,status\n",
-              d, d.summary, [two](const BifurcationPoint& p) { return SummaryRow(p, two); });
+    summary->stream() << rows;
   }
   impacts.Commit();
   if (summary) summary->Commit();
-  fmt::print(
-      "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}){}{}: {} impacts written to "
-      "{}{}\n",
-      opt.param, o.from, o.to, o.steps, opt.direction,
-      two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string(),
-      opt.shard.empty() ? std::string()
-                        : fmt::format(", shard {}/{} of {} continuations", o.shard, o.shards,
-                                      BifurcationContinuations(o)),
-      d.impacts.size(), opt.output,
-      summary ? fmt::format(", {} summary rows to {}", d.summary.size(), opt.summary)
-              : std::string());
+  fmt::print("{}: {} impacts written to {}{}\n", study, d.impacts.size(), opt.output,
+             summary_note(static_cast<std::int64_t>(d.summary.size())));
   return 0;
 }
 
@@ -193,7 +180,15 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "value index x directions + direction); the files get a comment line naming "
                   "the run, a line '# shard K/N of T continuations' and a line '# part P of Q: "
                   "R rows' before each part; `capsubot merge OUT SHARDS...` joins the N files "
-                  "of -o (or of --summary) into the file of the whole study (docs/cluster.md)");
+                  "of -o (or of --summary) into the file of the whole study (docs/cluster.md); a "
+                  "shard's files are written as FILE.partial with checkpoints (--resume)");
+  cmd->add_flag("--resume", opt->resume,
+                "with --shard: continue a killed shard from the checkpoints FILE.checkpoint of "
+                "-o and --summary (same options required; their checksums are verified)");
+  cmd->add_option("--checkpoint-seconds", opt->checkpoint_seconds,
+                  "with --shard: minimum time [s] between two checkpoints of each shard file "
+                  "(written as FILE.partial, renamed at the end); 0: after every part")
+      ->capture_default_str();
   AddThreadsOption(*cmd, opt->diagram.threads);
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
 }

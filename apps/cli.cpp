@@ -159,6 +159,17 @@ std::pair<int, int> ParseShard(const std::string& text) {
   return {k, n};
 }
 
+void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) {
+  for (const char* flag : {"--resume", "--checkpoint-seconds"}) {
+    if (cmd.count(flag) > 0 && !sharded) {
+      throw std::invalid_argument(fmt::format(
+          "{} is invalid without --shard: expected it only for a shard of the {} (a whole {} "
+          "is not checkpointed)",
+          flag, what, what));
+    }
+  }
+}
+
 void UseStrictNumbers(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();

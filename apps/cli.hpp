@@ -77,6 +77,10 @@ void RequireInRange(const std::string& option, long long value, long long lo, lo
 /// naming the option and the syntax.
 std::pair<int, int> ParseShard(const std::string& text);
 
+/// Refuses --resume or a given --checkpoint-seconds of `cmd` when not `sharded`
+/// (std::invalid_argument): only a shard is checkpointed, not the whole `what` ("map").
+void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what);
+
 /// Which runs of a command use an option (a run is what the command's mode option selects,
 /// e.g. `optimize --problem`); an option not listed determines the content of every run.
 struct OptionUse {

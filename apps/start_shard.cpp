@@ -36,14 +36,7 @@ std::vector<std::string> ShardExcludedOptions() {
 }
 
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options) {
-  for (const char* flag : {"--resume", "--checkpoint-seconds"}) {
-    if (cmd.count(flag) > 0 && options.shard.empty()) {
-      throw std::invalid_argument(fmt::format(
-          "{} is invalid without --shard: expected it only for a shard of the map (a whole map "
-          "is not checkpointed)",
-          flag));
-    }
-  }
+  RequireShardForResume(cmd, !options.shard.empty(), "map");
 }
 
 int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,

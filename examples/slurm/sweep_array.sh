@@ -12,9 +12,9 @@
 #   KIND=basins OUT=basins.csv examples/slurm/sweep_array.sh submit    # a basin map
 #   KIND=attractors OUT=starts.csv examples/slurm/sweep_array.sh submit
 #   KIND=bifurcation OUT=impacts.csv N=8 examples/slurm/sweep_array.sh submit  # + summary_<OUT>
-# A killed or requeued task continues its shard from its checkpoint (--resume); a bifurcation
-# task computes its shard again. Edit SWEEP, BASINS, ATTRACTORS or BIFURCATION, OUT, N (a
-# bifurcation study: N <= its continuations, 2 per value of --over).
+# A killed or requeued task continues its shard from its checkpoint (--resume; a bifurcation
+# task from the checkpoints of both its files). Edit SWEEP, BASINS, ATTRACTORS or BIFURCATION,
+# OUT, N (a bifurcation study: N <= its continuations, 2 per value of --over).
 #SBATCH --job-name=capsubot-sweep
 #SBATCH --cpus-per-task=2
 #SBATCH --time=02:00:00
@@ -31,7 +31,7 @@ BASINS=(basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.279286
 ATTRACTORS=(attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5
   --alpha 0.2792869076315278 --starts 256x256 --resume)
 BIFURCATION=(bifurcation --A 0.05 --c 0.02 --phi0 -2.842 --e 0.5 --alpha 0.2792869076315278
-  --param T0 --from 0.05 --to 0.2 --steps 301 --over e=0.2:0.9:8)
+  --param T0 --from 0.05 --to 0.2 --steps 301 --over e=0.2:0.9:8 --resume)
 SUMMARY="$(dirname "$OUT")/summary_$(basename "$OUT")"
 case "$KIND" in
   sweep) RUN=("${SWEEP[@]}") ;;

@@ -7,6 +7,7 @@
 // same robots (robot_orbits.hpp) can be added for comparison.
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -63,6 +64,10 @@ struct BifurcationOptions {
 /// parameter): the independent units of its work, hence of its shards.
 int BifurcationContinuations(const BifurcationOptions& options);
 
+/// The parts of the whole study (BifurcationDiagram::total_parts): per value of the second
+/// parameter, its up sweep, down sweep and analytic orbits, those asked for.
+int BifurcationParts(const BifurcationOptions& options);
+
 enum class SweepDirection { kUp, kDown, kAnalytic };
 /// "up", "down", "analytic".
 const char* SweepDirectionName(SweepDirection direction);
@@ -116,5 +121,23 @@ struct BifurcationDiagram {
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
                                       const BifurcationOptions& options,
                                       const StartsProgress& progress = {});
+
+/// Throws what ComputeBifurcation throws for bad inputs, without computing anything (a writer
+/// checks its inputs before it opens a file).
+void ValidateBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                         const BifurcationOptions& options);
+
+/// Receives one part of a diagram: its rows, parts = {its id}, total_parts.
+using BifurcationPartSink = std::function<void(const BifurcationDiagram& part)>;
+
+/// The parts of ComputeBifurcation from the `first`-th part of the shard on (0 <= first <= its
+/// parts; the parts before are not computed: a resumed shard), each handed to `sink` as soon
+/// as it and those before it are done, in order, one call at a time (on a computing thread);
+/// the rows do not depend on `first` or the threads. `progress` counts the values of these
+/// parts. Throws std::invalid_argument for bad inputs before any call of `sink`; what `sink`
+/// throws stops the run (no further call) and is rethrown once the parts being computed end.
+void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                       const BifurcationOptions& options, int first,
+                       const BifurcationPartSink& sink, const StartsProgress& progress = {});
 
 }  // namespace capsubot

@@ -183,6 +183,67 @@ void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram
   }
 }
 
+// The robots and parts of a study, checked: one robot per value of the second parameter (the
+// given one without it); the parts of the shard, in order (BifurcationDiagram::parts).
+struct Part {
+  int id = 0;
+  std::size_t value = 0;
+  SweepDirection kind = SweepDirection::kUp;
+};
+struct Study {
+  std::vector<Robot> bases;
+  std::vector<double> overs;
+  std::vector<Part> parts;
+  int total_parts = 0;
+};
+
+Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
+                const BifurcationOptions& options) {
+  options.Validate();
+  const bool two = !options.over_values.empty();
+  CheckParam(forcing, options.param, options.harmonic);
+  if (two) CheckParam(forcing, options.over, options.over_harmonic);
+  Study study;
+  study.overs = two ? options.over_values : std::vector<double>{kNaN};
+  for (double over : study.overs) {
+    const Robot base{forcing, params, alpha};
+    study.bases.push_back(two ? At(base, options.over, options.over_harmonic, over) : base);
+    // Every robot of the range must be valid: check both ends and name the one that is not.
+    for (double value : {options.from, options.to}) {
+      const Robot r = At(study.bases.back(), options.param, options.harmonic, value);
+      try {
+        r.params.Validate();
+        detail::ValidateStart(r.alpha, options.start);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format(
+            "{} = {}{} makes the robot invalid: {}",
+            BifurcationParamName(options.param, options.harmonic), value,
+            two ? fmt::format(" at {} = {}",
+                              BifurcationParamName(options.over, options.over_harmonic), over)
+                : std::string(),
+            e.what()));
+      }
+    }
+  }
+  // The parts of each value: up, down, analytic (those asked for); continuation q of each
+  // sweep, the analytic orbits with the value's first continuation.
+  std::vector<SweepDirection> kinds;
+  if (options.up) kinds.push_back(SweepDirection::kUp);
+  if (options.down) kinds.push_back(SweepDirection::kDown);
+  const int directions = static_cast<int>(kinds.size());
+  if (options.analytic) kinds.push_back(SweepDirection::kAnalytic);
+  for (std::size_t i = 0; i < study.bases.size(); ++i) {
+    for (std::size_t j = 0; j < kinds.size(); ++j) {
+      const int q = static_cast<int>(i) * directions +
+                    (kinds[j] == SweepDirection::kAnalytic ? 0 : static_cast<int>(j));
+      if (q % options.shards != options.shard) continue;
+      study.parts.push_back({static_cast<int>(i * kinds.size() + j), i, kinds[j]});
+    }
+  }
+  study.total_parts = BifurcationParts(options);
+  return study;
+}
+
 }  // namespace
 
 std::string BifurcationParamName(BifurcationParam param, int harmonic) {
@@ -282,89 +343,90 @@ int BifurcationContinuations(const BifurcationOptions& options) {
   return values * ((options.up ? 1 : 0) + (options.down ? 1 : 0));
 }
 
-BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options,
-                                      const StartsProgress& progress) {
-  options.Validate();
-  const bool two = !options.over_values.empty();
-  CheckParam(forcing, options.param, options.harmonic);
-  if (two) CheckParam(forcing, options.over, options.over_harmonic);
-  // One robot per value of the second parameter (the given one without it).
-  std::vector<Robot> bases;
-  const std::vector<double> overs = two ? options.over_values : std::vector<double>{kNaN};
-  for (double over : overs) {
-    const Robot base{forcing, params, alpha};
-    bases.push_back(two ? At(base, options.over, options.over_harmonic, over) : base);
-    // Every robot of the range must be valid: check both ends and name the one that is not.
-    for (double value : {options.from, options.to}) {
-      const Robot r = At(bases.back(), options.param, options.harmonic, value);
-      try {
-        r.params.Validate();
-        detail::ValidateStart(r.alpha, options.start);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format(
-            "{} = {}{} makes the robot invalid: {}",
-            BifurcationParamName(options.param, options.harmonic), value,
-            two ? fmt::format(" at {} = {}",
-                              BifurcationParamName(options.over, options.over_harmonic), over)
-                : std::string(),
-            e.what()));
-      }
-    }
+int BifurcationParts(const BifurcationOptions& options) {
+  const auto values = static_cast<int>(std::max<std::size_t>(1, options.over_values.size()));
+  return values * ((options.up ? 1 : 0) + (options.down ? 1 : 0) + (options.analytic ? 1 : 0));
+}
+
+void ValidateBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                         const BifurcationOptions& options) {
+  PlanStudy(forcing, params, alpha, options);
+}
+
+void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                       const BifurcationOptions& options, int first,
+                       const BifurcationPartSink& sink, const StartsProgress& progress) {
+  const Study study = PlanStudy(forcing, params, alpha, options);
+  const auto parts = static_cast<int>(study.parts.size());
+  if (first < 0 || first > parts) {
+    throw std::invalid_argument(fmt::format(
+        "first part = {} is invalid: expected 0 <= first <= {} (the parts of the shard)", first,
+        parts));
   }
-  // The parts of each value: up, down, analytic (those asked for); continuation q of each
-  // sweep, the analytic orbits with the value's first continuation.
-  std::vector<SweepDirection> kinds;
-  if (options.up) kinds.push_back(SweepDirection::kUp);
-  if (options.down) kinds.push_back(SweepDirection::kDown);
-  const int directions = static_cast<int>(kinds.size());
-  if (options.analytic) kinds.push_back(SweepDirection::kAnalytic);
-  struct Part {
-    int id = 0;
-    std::size_t value = 0;
-    SweepDirection kind = SweepDirection::kUp;
-  };
-  std::vector<Part> parts;
-  for (std::size_t i = 0; i < bases.size(); ++i) {
-    for (std::size_t j = 0; j < kinds.size(); ++j) {
-      const int q = static_cast<int>(i) * directions +
-                    (kinds[j] == SweepDirection::kAnalytic ? 0 : static_cast<int>(j));
-      if (q % options.shards != options.shard) continue;
-      parts.push_back({static_cast<int>(i * kinds.size() + j), i, kinds[j]});
-    }
-  }
-  std::vector<BifurcationDiagram> results(parts.size());
+  const auto skip = static_cast<std::size_t>(first);  // parts done before (a resume)
+  const std::size_t todo = study.parts.size() - skip;
   std::int64_t sweeps = 0;
-  for (const Part& p : parts) sweeps += p.kind == SweepDirection::kAnalytic ? 0 : 1;
+  for (std::size_t k = skip; k < study.parts.size(); ++k) {
+    sweeps += study.parts[k].kind == SweepDirection::kAnalytic ? 0 : 1;
+  }
   ValuesDone done(progress, static_cast<std::int64_t>(options.steps) * sweeps);
+  // Parts finish in any order; each one waits in `results` until those before it went to
+  // the sink. After a failure of the sink, no part goes to it any more.
+  std::vector<BifurcationDiagram> results(todo);
+  std::vector<char> ready(todo, 0);
+  std::size_t next = 0;
+  bool stopped = false;
+  std::mutex mutex;
   detail::ParallelFor(
-      static_cast<std::int64_t>(parts.size()),
-      detail::WorkerCount(options.threads, static_cast<std::int64_t>(parts.size())),
+      static_cast<std::int64_t>(todo),
+      detail::WorkerCount(options.threads, static_cast<std::int64_t>(todo)),
       [&](std::int64_t k, int) {
-        const Part& p = parts[static_cast<std::size_t>(k)];
-        BifurcationDiagram& r = results[static_cast<std::size_t>(k)];
+        const Part& p = study.parts[skip + static_cast<std::size_t>(k)];
+        BifurcationDiagram r;
         if (p.kind == SweepDirection::kAnalytic) {
-          Analytic(bases[p.value], options, r);
+          Analytic(study.bases[p.value], options, r);
         } else {
-          Sweep(bases[p.value], options, p.kind, r, done);
+          Sweep(study.bases[p.value], options, p.kind, r, done);
         }
         for (ImpactPoint& im : r.impacts) {
-          im.over = overs[p.value];
+          im.over = study.overs[p.value];
           im.part = p.id;
         }
         for (BifurcationPoint& point : r.summary) {
-          point.over = overs[p.value];
+          point.over = study.overs[p.value];
           point.part = p.id;
+        }
+        r.parts = {p.id};
+        r.total_parts = study.total_parts;
+        const std::lock_guard<std::mutex> lock(mutex);
+        results[static_cast<std::size_t>(k)] = std::move(r);
+        ready[static_cast<std::size_t>(k)] = 1;
+        for (; !stopped && next < todo && ready[next] != 0; ++next) {
+          try {
+            sink(results[next]);
+          } catch (...) {
+            stopped = true;
+            throw;
+          }
+          results[next] = BifurcationDiagram();  // its memory back
         }
       },
       [](std::int64_t) {});
+}
+
+BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
+                                      const BifurcationOptions& options,
+                                      const StartsProgress& progress) {
   BifurcationDiagram out;
-  out.total_parts = static_cast<int>(bases.size() * kinds.size());
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    out.parts.push_back(parts[k].id);
-    out.impacts.insert(out.impacts.end(), results[k].impacts.begin(), results[k].impacts.end());
-    out.summary.insert(out.summary.end(), results[k].summary.begin(), results[k].summary.end());
-  }
+  StreamBifurcation(
+      forcing, params, alpha, options, 0,
+      [&out](const BifurcationDiagram& part) {
+        out.parts.push_back(part.parts.front());
+        out.impacts.insert(out.impacts.end(), part.impacts.begin(), part.impacts.end());
+        out.summary.insert(out.summary.end(), part.summary.begin(), part.summary.end());
+      },
+      progress);
+  out.total_parts = BifurcationParts(options);
   return out;
 }
 

@@ -123,7 +123,37 @@ CheckpointRecord ReadCheckpoint(const std::string& path, std::size_t description
   return r;
 }
 
+// The checkpoint a resume continues from (exists false: none), refused when it is of
+// another run.
+CheckpointRecord ResumeRecord(const std::string& path, const std::string& description,
+                              const std::string& run) {
+  const CheckpointRecord record = ReadCheckpoint(path, description.size());
+  if (record.exists && record.description != description) {
+    throw std::invalid_argument(
+        fmt::format("resume: checkpoint {} is invalid for this {}: it was written by a {} with "
+                    "other options or another capsubot version: expected the same options as the "
+                    "interrupted run, or a run without resuming to start again",
+                    path, run, run));
+  }
+  return record;
+}
+
+// The refusal of a resume of an output written in place (it has no checkpoint).
+std::invalid_argument ResumeInPlace(const std::string& output) {
+  return std::invalid_argument(
+      fmt::format("resume with output {} is invalid: expected a regular file to resume (standard "
+                  "output, pipes and devices are written in place, without checkpoint)",
+                  output));
+}
+
 }  // namespace
+
+void SweepFile::CheckResume(const std::string& output, const std::string& description,
+                            const std::string& run) {
+  const OutputTarget target = ResolveOutput(output, "output");
+  if (target.in_place) throw ResumeInPlace(output);
+  ResumeRecord(CheckpointPath(target.path), description, run);
+}
 
 void SweepFile::Fail(const std::string& what, const std::string& path) const {
   const std::string message =
@@ -145,12 +175,7 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
       checkpoint_seconds_(checkpoint_seconds) {
   direct_ = target_.in_place;
   if (direct_) {
-    if (resume) {
-      throw std::invalid_argument(fmt::format(
-          "resume with output {} is invalid: expected a regular file to resume (standard "
-          "output, pipes and devices are written in place, without checkpoint)",
-          output_));
-    }
+    if (resume) throw ResumeInPlace(output_);
     written_ = output_ == "-" ? std::string("standard output") : output_;
     fd_ = output_ == "-" ? ::dup(STDOUT_FILENO) : ::open(output_.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd_ < 0) Fail("open", written_);
@@ -184,15 +209,8 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
 
 void SweepFile::Open(const std::string& header, bool resume) {
   const CheckpointRecord record =
-      resume ? ReadCheckpoint(checkpoint_, description_.size()) : CheckpointRecord{};
+      resume ? ResumeRecord(checkpoint_, description_, run_) : CheckpointRecord{};
   if (record.exists) {
-    if (record.description != description_) {
-      throw std::invalid_argument(
-          fmt::format("resume: checkpoint {} is invalid for this {}: it was written by a {} with "
-                      "other options or another capsubot version: expected the same options as the "
-                      "interrupted run, or a run without resuming to start again",
-                      checkpoint_, run_, run_));
-    }
     struct stat st {};
     if (::fstat(fd_, &st) != 0) Fail("read", partial_);
     if (st.st_size < record.bytes) {

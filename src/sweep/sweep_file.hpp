@@ -30,6 +30,11 @@ class SweepFile {
   SweepFile(const std::string& output, const std::string& description, const std::string& header,
             bool resume, double checkpoint_seconds, const std::string& run = "sweep");
   ~SweepFile();  ///< waits for a checkpoint being written; the partial file stays for a resume
+  /// Throws what the constructor with `resume` would throw for an output written in place or
+  /// for the checkpoint (damaged, or of another run), touching no file: a run that writes
+  /// several files checks them all before it opens the first.
+  static void CheckResume(const std::string& output, const std::string& description,
+                          const std::string& run = "sweep");
   SweepFile(const SweepFile&) = delete;
   SweepFile& operator=(const SweepFile&) = delete;
 

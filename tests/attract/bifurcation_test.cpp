@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -173,6 +175,64 @@ TEST(Bifurcation, StudyOverASecondParameterIsTheDiagramAtEachValueAndItsShardsPa
       joined.begin(), joined.end(),
       [](const BifurcationPoint& a, const BifurcationPoint& b) { return a.part < b.part; });
   ExpectSameRows(joined, study.summary, "3 shards joined");
+}
+
+TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
+  // Shard 0 of 2 of a study over 2 values of e: parts 0 (e = 0.4 up), 2 (its analytic
+  // orbits), 3 (e = 0.6 up), 5 (its analytic orbits). Streamed from its second part (a
+  // resumed shard), the parts after it come in order with the rows ComputeBifurcation gives
+  // them, and only the values of the one sweep left are simulated (the progress total).
+  Params params;
+  params.T0 = 0.1;
+  params.e = 0.5;
+  const Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
+  const double alpha = 0.2792869076315278;
+  BifurcationOptions o;
+  o.param = BifurcationParam::kT0;
+  o.from = 0.08;
+  o.to = 0.12;
+  o.steps = 3;
+  o.motion.transient = 40;
+  o.motion.record = 20;
+  o.over = BifurcationParam::kE;
+  o.over_values = {0.4, 0.6};
+  o.shards = 2;
+  o.threads = 3;
+  const BifurcationDiagram whole = ComputeBifurcation(force, params, alpha, o);
+  ASSERT_EQ(whole.parts, (std::vector<int>{0, 2, 3, 5}));
+  EXPECT_EQ(BifurcationParts(o), 6);
+  std::vector<int> parts;
+  std::vector<BifurcationPoint> rows;
+  std::int64_t total = 0;
+  StreamBifurcation(
+      force, params, alpha, o, 1,
+      [&](const BifurcationDiagram& part) {
+        ASSERT_EQ(part.parts.size(), 1u);
+        EXPECT_EQ(part.total_parts, 6);
+        parts.push_back(part.parts.front());
+        rows.insert(rows.end(), part.summary.begin(), part.summary.end());
+      },
+      [&](std::int64_t, std::int64_t of) { total = of; });
+  EXPECT_EQ(parts, (std::vector<int>{2, 3, 5}));
+  EXPECT_EQ(total, 3);  // the 3 values of the e = 0.6 up sweep
+  const auto later = std::find_if(whole.summary.begin(), whole.summary.end(),
+                                  [](const BifurcationPoint& p) { return p.part >= 2; });
+  ExpectSameRows(rows, std::vector<BifurcationPoint>(later, whole.summary.end()), "from part 1");
+  const auto message = [&](int first) {
+    try {
+      StreamBifurcation(force, params, alpha, o, first, [](const BifurcationDiagram&) {});
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(5),
+            "first part = 5 is invalid: expected 0 <= first <= 4 (the parts of the shard)");
+  EXPECT_EQ(message(-1),
+            "first part = -1 is invalid: expected 0 <= first <= 4 (the parts of the shard)");
+  int calls = 0;
+  StreamBifurcation(force, params, alpha, o, 4, [&](const BifurcationDiagram&) { ++calls; });
+  EXPECT_EQ(calls, 0);  // every part done: nothing computed
 }
 
 TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {

@@ -3,10 +3,10 @@
 // a basin map threaded, in 3 shards merged and under mpirun; the starts from rest of
 // `attractors -o` threaded, in 3 shards merged and under mpirun (the same report); a design
 // grid and its shard threaded and under mpirun; a two-parameter bifurcation study
-// threaded and in 3 shards merged (both CSVs); a killed basin shard resumed; bad input under
-// mpirun fails with no file written. The merge errors of basin shards (another run, missing,
-// duplicated, truncated) are tested here, those of sweep shards in sweep_cli_test.cpp. The mpirun
-// tests are skipped only when capsubot is built without MPI.
+// threaded and in 3 shards merged (both CSVs); a killed basin shard and a killed bifurcation
+// shard resumed; bad input under mpirun fails with no file written. The merge errors of basin
+// shards (another run, missing, duplicated, truncated) are tested here, those of sweep shards in
+// sweep_cli_test.cpp. The mpirun tests are skipped only when capsubot is built without MPI.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -504,15 +504,107 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
        "parameter x 2 directions): expected 1 <= N <= 6"},
       {" --direction up --shard 0/4",
        "shard count N = 4 is invalid: the study has 3 continuations"},
-      {" --shard 3/3", "shard K = 3 is invalid: expected 0 <= K < N = 3"}};
+      {" --shard 3/3", "shard K = 3 is invalid: expected 0 <= K < N = 3"},
+      {" --shard 0/3 --summary " + out,
+       "--summary = " + out + " is invalid: expected a file other than -o's"}};
   for (const auto& [args, message] : shards) {
     const CommandResult r = RunCli(std::string(kBifurcation) + args + " -o " + out + " 2>&1");
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_NE(r.out.find("capsubot bifurcation: error: " + message), std::string::npos) << r.out;
     EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
     ++checked;
   }
-  EXPECT_EQ(checked, 8);
+  EXPECT_EQ(checked, 9);
+}
+
+// Shard 1/3 of the study of kBifurcation with a long transient, slow enough to be killed
+// mid-way: parts 1 (e = 0.4 down), 6 (e = 0.6 up) and 8 (its analytic orbits), every period
+// simulated, a sweep part about 1.3 s on one thread; checkpointed after every part. `extra`:
+// more options.
+std::string SlowBifurcationShard(const std::string& shard, const std::string& out,
+                                 const std::string& extra = "") {
+  return "bifurcation --A 0.05 --c 0.02 --phi0 -2.842 --e 0.5 --alpha 0.2792869076315278 "
+         "--param T0 --from 0.08 --to 0.12 --steps 4 --transient 300000 --record 20 "
+         "--converged-tolerance 0 --over e=0.4:0.6:3 --checkpoint-seconds 0 --shard " +
+         shard + " -o " + out + " --summary " + out + ".summary" + extra;
+}
+
+TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
+  Dir dir;
+  const std::string reference = dir.File("reference.csv"), killed = dir.File("killed.csv");
+  const std::string summary = killed + ".summary";
+  ASSERT_EQ(RunCli(SlowBifurcationShard("1/3", reference, " --threads 2")).status, 0);
+  // Started in the background, killed (SIGKILL) once the checkpoint of -o records a part (the
+  // shell waits at most 60 s).
+  const CommandResult kill =
+      Shell(std::string(CAPSUBOT_CLI) + " " + SlowBifurcationShard("1/3", killed, " --threads 1") +
+            " > /dev/null & pid=$!; for i in $(seq 6000); do grep -qs '^points [1-9]' " + killed +
+            ".checkpoint && break; sleep 0.01; done; kill -9 $pid; wait $pid; echo status $?");
+  ASSERT_NE(kill.out.find("status 137"), std::string::npos)
+      << "the shard ended before it could be killed: " << kill.out;
+  for (const std::string& file : {killed, summary}) {
+    EXPECT_FALSE(std::filesystem::exists(file)) << file;
+    ASSERT_TRUE(std::filesystem::exists(file + ".partial")) << file;
+    ASSERT_TRUE(std::filesystem::exists(file + ".checkpoint")) << file;
+  }
+  const std::string partial = ReadFile(killed + ".partial");
+  EXPECT_NE(partial.find("\n# part 1 of 9: "), std::string::npos) << partial;
+
+  // The checkpoint of shard 1 does not resume shard 2, nor another study; resume and
+  // checkpoints are for shards only. Each refusal leaves the files as they were.
+  const std::string checkpoint = ReadFile(killed + ".checkpoint");
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {SlowBifurcationShard("2/3", killed, " --resume"),
+       "resume: checkpoint " + killed +
+           ".checkpoint is invalid for this shard: it was written by a shard with other "
+           "options"},
+      {SlowBifurcationShard("1/3", killed, " --resume --max-period 7"),
+       "resume: checkpoint " + killed + ".checkpoint is invalid for this shard"},
+      {std::string(kBifurcation) + " --resume -o " + killed,
+       "--resume is invalid without --shard: expected it only for a shard of the study (a "
+       "whole study is not checkpointed)"},
+      {std::string(kBifurcation) + " --checkpoint-seconds 1 -o " + killed,
+       "--checkpoint-seconds is invalid without --shard"}};
+  int checked = 0;
+  for (const auto& [args, message] : refused) {
+    const CommandResult r = RunCli(args + " 2>&1");
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.out.find("capsubot bifurcation: error: " + message), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(killed));
+    EXPECT_TRUE(ReadFile(killed + ".partial") == partial) << args;
+    EXPECT_TRUE(ReadFile(killed + ".checkpoint") == checkpoint) << args;
+    ++checked;
+  }
+  // A damaged checkpoint of --summary is refused before either file is touched.
+  const std::string summary_checkpoint = ReadFile(summary + ".checkpoint");
+  {
+    std::string damaged = summary_checkpoint;
+    damaged[damaged.find("points ") + 7] ^= 1;
+    std::ofstream(summary + ".checkpoint", std::ios::binary) << damaged;
+  }
+  const CommandResult r = RunCli(SlowBifurcationShard("1/3", killed, " --resume") + " 2>&1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("capsubot bifurcation: error: resume: checkpoint " + summary +
+                       ".checkpoint is not a valid capsubot sweep checkpoint (checksum mismatch)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_TRUE(ReadFile(killed + ".partial") == partial);
+  EXPECT_TRUE(ReadFile(killed + ".checkpoint") == checkpoint);
+  std::ofstream(summary + ".checkpoint", std::ios::binary) << summary_checkpoint;
+  ++checked;
+  EXPECT_EQ(checked, 5);
+  const CommandResult resumed =
+      RunCli(SlowBifurcationShard("1/3", killed, " --resume --threads 2"));
+  ASSERT_EQ(resumed.status, 0) << resumed.out;
+  EXPECT_NE(resumed.out.find(" resumed from the checkpoint)"), std::string::npos)
+      << resumed.out;
+  EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed impacts differ";
+  EXPECT_TRUE(ReadFile(summary) == ReadFile(reference + ".summary")) << "resumed summary differs";
+  for (const std::string& file : {killed, summary}) {
+    EXPECT_FALSE(std::filesystem::exists(file + ".partial")) << file;
+    EXPECT_FALSE(std::filesystem::exists(file + ".checkpoint")) << file;
+  }
 }
 
 TEST(Cluster, BadInputUnderMpirunFailsAndWritesNoFile) {
