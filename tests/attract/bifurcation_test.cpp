@@ -12,6 +12,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "test_utils.hpp"
@@ -124,23 +125,34 @@ void ExpectSameRows(const std::vector<BifurcationPoint>& a, const std::vector<Bi
   }
 }
 
+// The small stable orbit's robot (the robot of `capsubot bifurcation`'s examples), T0 stepped
+// over 3 values, one diagram per value of the restitution in `over_e`.
+struct StudyOverE {
+  Params params{0.1, 0.5};
+  Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
+  double alpha = 0.2792869076315278;
+  BifurcationOptions o;
+
+  explicit StudyOverE(std::vector<double> over_e) {
+    o.param = BifurcationParam::kT0;
+    o.from = 0.08;
+    o.to = 0.12;
+    o.steps = 3;
+    o.motion.transient = 40;
+    o.motion.record = 20;
+    o.over = BifurcationParam::kE;
+    o.over_values = std::move(over_e);
+  }
+};
+
 TEST(Bifurcation, StudyOverASecondParameterIsTheDiagramAtEachValueAndItsShardsPartitionIt) {
   // The small stable orbit's robot, T0 stepped, at 3 restitutions: each diagram of the study
   // is the diagram computed alone with that e; 3 shards hold every part exactly once.
-  Params params;
-  params.T0 = 0.1;
-  params.e = 0.5;
-  const Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
-  const double alpha = 0.2792869076315278;
-  BifurcationOptions o;
-  o.param = BifurcationParam::kT0;
-  o.from = 0.08;
-  o.to = 0.12;
-  o.steps = 3;
-  o.motion.transient = 40;
-  o.motion.record = 20;
-  o.over = BifurcationParam::kE;
-  o.over_values = {0.4, 0.5, 0.6};
+  StudyOverE study_e({0.4, 0.5, 0.6});
+  const Params& params = study_e.params;
+  const Forcing& force = study_e.force;
+  const double alpha = study_e.alpha;
+  const BifurcationOptions& o = study_e.o;
   const BifurcationDiagram study = ComputeBifurcation(force, params, alpha, o);
   ASSERT_EQ(study.total_parts, 9);  // 3 values x (up, down, analytic)
   EXPECT_EQ(BifurcationContinuations(o), 6);
@@ -182,20 +194,11 @@ TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
   // orbits), 3 (e = 0.6 up), 5 (its analytic orbits). Streamed from its second part (a
   // resumed shard), the parts after it come in order with the rows ComputeBifurcation gives
   // them, and only the values of the one sweep left are simulated (the progress total).
-  Params params;
-  params.T0 = 0.1;
-  params.e = 0.5;
-  const Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
-  const double alpha = 0.2792869076315278;
-  BifurcationOptions o;
-  o.param = BifurcationParam::kT0;
-  o.from = 0.08;
-  o.to = 0.12;
-  o.steps = 3;
-  o.motion.transient = 40;
-  o.motion.record = 20;
-  o.over = BifurcationParam::kE;
-  o.over_values = {0.4, 0.6};
+  StudyOverE study_e({0.4, 0.6});
+  const Params& params = study_e.params;
+  const Forcing& force = study_e.force;
+  const double alpha = study_e.alpha;
+  BifurcationOptions& o = study_e.o;
   o.shards = 2;
   o.threads = 3;
   const BifurcationDiagram whole = ComputeBifurcation(force, params, alpha, o);
