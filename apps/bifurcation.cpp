@@ -1,5 +1,6 @@
 // capsubot bifurcation: brute-force bifurcation diagram with the state carried along, up and
-// down, plus the analytic one-impact orbits (docs/model.md section 13).
+// down, plus the analytic one-impact orbits (docs/model.md section 13); under mpirun its parts
+// are computed on the ranks (ranks.hpp).
 
 #include "capsubot/bifurcation.hpp"
 
@@ -17,6 +18,7 @@
 #include "capsubot/io.hpp"
 #include "commands.hpp"
 #include "provenance.hpp"
+#include "ranks.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -73,6 +75,10 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   if (std::isnan(alpha)) {
     throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
   }
+  Ranks ranks;           // under mpirun: rank 0 runs the study, the others compute its parts
+  if (ranks.worker()) {  // rank 0 validates
+    return ranks.Serve(BifurcationBlocks(forcing, opt.robot.params, alpha, o), o.threads);
+  }
   o.Validate();  // a bad --shard fails here, before any file is touched
   const std::string study = fmt::format(
       "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}){}", opt.param, o.from, o.to,
@@ -94,8 +100,9 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
                      '\n';
     files.resume = opt.resume;
     files.checkpoint_seconds = opt.checkpoint_seconds;
-    const BifurcationShardSummary s = WriteBifurcationShard(
-        forcing, opt.robot.params, alpha, o, files, TerminalProgress("parameter values"));
+    const BifurcationShardSummary s =
+        WriteBifurcationShard(forcing, opt.robot.params, alpha, o, files,
+                              TerminalProgress("parameter values"), ranks.backend());
     fmt::print(
         "{}, shard {}/{} of {} continuations: {} impacts written to {}{}{}\n", study, o.shard,
         o.shards, BifurcationContinuations(o), s.impacts, opt.output, summary_note(s.summary_rows),
@@ -108,8 +115,8 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   {
     AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
   }
-  const BifurcationDiagram d =
-      ComputeBifurcation(forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"));
+  const BifurcationDiagram d = ComputeBifurcation(
+      forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"), ranks.backend());
   std::string rows = BifurcationImpactsHeader(o);
   AppendImpactRows(rows, d, two);
   AtomicFile impacts(opt.output, "-o");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "capsubot/attractors.hpp"
+#include "capsubot/blocks.hpp"
 
 namespace capsubot {
 
@@ -43,7 +44,7 @@ struct BifurcationOptions {
   PhaseState start = RestStart(0.5, 0.0);  ///< state at the first value of each sweep
   bool multipliers = true;                 ///< largest multiplier of each periodic motion (Newton)
   bool analytic = true;                    ///< add the valid one-impact orbits of every value
-  int threads = 0;  ///< the sweeps run in parallel (0: all cores); same result
+  int threads = 0;  ///< the parts run in parallel (0: all cores); same result
   /// A two-parameter study: one diagram per value of a second parameter `over` (set to each
   /// of over_values in turn, the other inputs kept); empty: one diagram, no second parameter.
   std::vector<double> over_values;
@@ -113,14 +114,16 @@ struct BifurcationDiagram {
 };
 
 /// The diagram for the robot (forcing, params, alpha) with options.param stepped (one per
-/// value of options.over; the parts of shard options.shard only). Throws
+/// value of options.over; the parts of shard options.shard only), its parts computed by
+/// `backend` (this process's threads by default; the same rows). Throws
 /// std::invalid_argument for bad inputs (a value of the range that makes the robot invalid
 /// names the parameter and the value).
 /// `progress` (optional) is told the parameter values simulated so far (up and down sweeps
 /// together) of their total, in increasing order.
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
                                       const BifurcationOptions& options,
-                                      const StartsProgress& progress = {});
+                                      const StartsProgress& progress = {},
+                                      const BlockBackend& backend = LocalBlocks());
 
 /// Throws what ComputeBifurcation throws for bad inputs, without computing anything (a writer
 /// checks its inputs before it opens a file).
@@ -131,13 +134,24 @@ void ValidateBifurcation(const Forcing& forcing, const Params& params, double al
 using BifurcationPartSink = std::function<void(const BifurcationDiagram& part)>;
 
 /// The parts of ComputeBifurcation from the `first`-th part of the shard on (0 <= first <= its
-/// parts; the parts before are not computed: a resumed shard), each handed to `sink` as soon
-/// as it and those before it are done, in order, one call at a time (on a computing thread);
-/// the rows do not depend on `first` or the threads. `progress` counts the values of these
-/// parts. Throws std::invalid_argument for bad inputs before any call of `sink`; what `sink`
-/// throws stops the run (no further call) and is rethrown once the parts being computed end.
+/// parts; the parts before are not computed: a resumed shard), computed by `backend` (one
+/// part a block: this process's threads by default, or the ranks of an MPI job as well) and
+/// each handed to `sink` as soon as it and those before it are done, in order, on the
+/// calling thread; the rows do not depend on `first`, the backend or the threads.
+/// `progress` counts the values of these parts (those of a part computed by another process
+/// when it arrives). Throws std::invalid_argument for bad inputs before any call of `sink`;
+/// what `sink` throws stops the run (no further call) and is rethrown once the parts being
+/// computed end.
 void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
                        const BifurcationOptions& options, int first,
-                       const BifurcationPartSink& sink, const StartsProgress& progress = {});
+                       const BifurcationPartSink& sink, const StartsProgress& progress = {},
+                       const BlockBackend& backend = LocalBlocks());
+
+/// The computers of StreamBifurcation's blocks (blocks.hpp): unit k is the k-th part of the
+/// shard, its bytes the values of its ImpactPoint and BifurcationPoint rows (processes of one
+/// machine type exchange them). The arguments must outlive the computers; the study is
+/// planned (and checked) by each computer. A distributed backend's workers compute with these.
+BlockComputeFactory BifurcationBlocks(const Forcing& forcing, const Params& params, double alpha,
+                                      const BifurcationOptions& options);
 
 }  // namespace capsubot

@@ -51,7 +51,8 @@ struct BifurcationShardSummary {
   std::int64_t summary_rows = 0;  ///< summary rows of the parts computed by this run
 };
 
-/// Computes shard options.shard of the study (StreamBifurcation) and writes its files: the
+/// Computes shard options.shard of the study (StreamBifurcation, its parts computed by
+/// `backend`: this process's threads by default) and writes its files: the
 /// comment lines, the line "# shard K/N of T continuations", the header, then part after part
 /// its part line and rows. Each file goes to `<file>.partial` with its checkpoint (at most
 /// one every checkpoint_seconds, after a complete part) and both are renamed to their names
@@ -63,6 +64,7 @@ struct BifurcationShardSummary {
 BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Params& params,
                                               double alpha, const BifurcationOptions& options,
                                               const BifurcationShardFiles& files,
-                                              const StartsProgress& progress = {});
+                                              const StartsProgress& progress = {},
+                                              const BlockBackend& backend = LocalBlocks());
 
 }  // namespace capsubot

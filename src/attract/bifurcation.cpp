@@ -6,11 +6,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <functional>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
@@ -95,27 +100,43 @@ double Value(const BifurcationOptions& o, int i) {
   return o.from + (o.to - o.from) * static_cast<double>(i) / (o.steps - 1);
 }
 
-// Counts the parameter values done by every part and reports them in increasing order.
+// Counts the parameter values simulated by the parts and reports them in increasing order: a
+// part computed by this process's threads ticks each value as it is done, one computed by
+// another process counts its values when it arrives.
 class ValuesDone {
  public:
-  ValuesDone(const StartsProgress& progress, std::int64_t total)
-      : progress_(progress), total_(total) {}
-  void Tick() {
+  ValuesDone(const StartsProgress& progress, std::size_t parts, std::int64_t total)
+      : progress_(progress), ticked_(parts, 0), total_(total) {}
+  // One value of the sweep of part k simulated here.
+  void Tick(std::int64_t k) {
     if (!progress_) return;
     const std::lock_guard<std::mutex> lock(mutex_);
+    ++ticked_[static_cast<std::size_t>(k)];
     progress_(++done_, total_);
+  }
+  // Part k with `values` values simulated has arrived: counts those not ticked.
+  void Arrived(std::int64_t k, std::int64_t values) {
+    if (!progress_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const std::int64_t rest = values - ticked_[static_cast<std::size_t>(k)];
+    if (rest <= 0) return;
+    ticked_[static_cast<std::size_t>(k)] = values;
+    done_ += rest;
+    progress_(done_, total_);
   }
 
  private:
   const StartsProgress& progress_;
+  std::vector<std::int64_t> ticked_;
   std::int64_t total_;
   std::int64_t done_ = 0;
   std::mutex mutex_;
 };
 
 // One sweep in `direction`, the state carried from each value to the next.
+// `tick` is told each value done.
 void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direction,
-           BifurcationDiagram& out, ValuesDone& done) {
+           BifurcationDiagram& out, const std::function<void()>& tick) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
   ShootingOptions shooting;
@@ -155,7 +176,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
       }
     }
     out.summary.push_back(point);
-    done.Tick();
+    tick();
   }
 }
 
@@ -242,6 +263,90 @@ Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
   }
   study.total_parts = BifurcationParts(options);
   return study;
+}
+
+// Parameter values simulated by a part: a sweep's values; none for the analytic orbits.
+std::int64_t SimulatedValues(const Part& p, const BifurcationOptions& o) {
+  return p.kind == SweepDirection::kAnalytic ? 0 : o.steps;
+}
+
+// The rows of the k-th part of the shard, with the value of the second parameter and the
+// part's id. `done` (if any) is told each value simulated.
+BifurcationDiagram ComputePart(const Study& study, const BifurcationOptions& o, std::int64_t k,
+                               ValuesDone* done) {
+  const Part& p = study.parts[static_cast<std::size_t>(k)];
+  BifurcationDiagram r;
+  if (p.kind == SweepDirection::kAnalytic) {
+    Analytic(study.bases[p.value], o, r);
+  } else {
+    Sweep(study.bases[p.value], o, p.kind, r, [done, k] {
+      if (done != nullptr) done->Tick(k);
+    });
+  }
+  for (ImpactPoint& im : r.impacts) {
+    im.over = study.overs[p.value];
+    im.part = p.id;
+  }
+  for (BifurcationPoint& point : r.summary) {
+    point.over = study.overs[p.value];
+    point.part = p.id;
+  }
+  return r;
+}
+
+// The bytes of a part's rows (the unit of a block): the count of its impacts (int64), the
+// values of its ImpactPoint rows, then those of its BifurcationPoint rows.
+static_assert(std::is_trivially_copyable<ImpactPoint>::value, "an impact's bytes are its value");
+static_assert(std::is_trivially_copyable<BifurcationPoint>::value, "a row's bytes are its value");
+
+void AppendPartBytes(const BifurcationDiagram& part, std::string& out) {
+  const auto impacts = static_cast<std::int64_t>(part.impacts.size());
+  out.append(reinterpret_cast<const char*>(&impacts), sizeof impacts);
+  out.append(reinterpret_cast<const char*>(part.impacts.data()),
+             part.impacts.size() * sizeof(ImpactPoint));
+  out.append(reinterpret_cast<const char*>(part.summary.data()),
+             part.summary.size() * sizeof(BifurcationPoint));
+}
+
+// The k-th part of the study's shard read back from AppendPartBytes: its rows, parts = {id},
+// total_parts.
+BifurcationDiagram ReadPartBytes(const std::string& bytes, const Study& study, std::int64_t k) {
+  std::int64_t impacts = -1;
+  if (bytes.size() >= sizeof impacts) std::memcpy(&impacts, bytes.data(), sizeof impacts);
+  const std::size_t rest = bytes.size() - std::min(bytes.size(), sizeof impacts);
+  if (impacts < 0 || rest < static_cast<std::size_t>(impacts) * sizeof(ImpactPoint) ||
+      (rest - static_cast<std::size_t>(impacts) * sizeof(ImpactPoint)) % sizeof(BifurcationPoint) !=
+          0) {
+    throw std::runtime_error(
+        fmt::format("part {} of the study came back with {} bytes: expected its rows",
+                    study.parts[static_cast<std::size_t>(k)].id, bytes.size()));
+  }
+  BifurcationDiagram r;
+  r.impacts.resize(static_cast<std::size_t>(impacts));
+  r.summary.resize((rest - r.impacts.size() * sizeof(ImpactPoint)) / sizeof(BifurcationPoint));
+  const char* at = bytes.data() + sizeof impacts;
+  std::memcpy(static_cast<void*>(r.impacts.data()), at, r.impacts.size() * sizeof(ImpactPoint));
+  at += r.impacts.size() * sizeof(ImpactPoint);
+  std::memcpy(static_cast<void*>(r.summary.data()), at,
+              r.summary.size() * sizeof(BifurcationPoint));
+  r.parts = {study.parts[static_cast<std::size_t>(k)].id};
+  r.total_parts = study.total_parts;
+  return r;
+}
+
+// The computers of the parts (BifurcationBlocks); `done` (if any) is told each value they
+// simulate.
+BlockComputeFactory PartBlocks(const Forcing& forcing, const Params& params, double alpha,
+                               const BifurcationOptions& options, ValuesDone* done) {
+  return [&forcing, &params, alpha, &options, done]() -> BlockCompute {
+    auto study = std::make_shared<const Study>(PlanStudy(forcing, params, alpha, options));
+    return [study, &options, done](std::int64_t begin, std::int64_t end, std::string& out) {
+      for (std::int64_t k = begin; k < end; ++k) {
+        AppendPartBytes(ComputePart(*study, options, k, done), out);
+      }
+      return end - begin;
+    };
+  };
 }
 
 }  // namespace
@@ -355,68 +460,42 @@ void ValidateBifurcation(const Forcing& forcing, const Params& params, double al
 
 void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
                        const BifurcationOptions& options, int first,
-                       const BifurcationPartSink& sink, const StartsProgress& progress) {
+                       const BifurcationPartSink& sink, const StartsProgress& progress,
+                       const BlockBackend& backend) {
   const Study study = PlanStudy(forcing, params, alpha, options);
-  const auto parts = static_cast<int>(study.parts.size());
+  const auto parts = static_cast<std::int64_t>(study.parts.size());
   if (first < 0 || first > parts) {
     throw std::invalid_argument(fmt::format(
         "first part = {} is invalid: expected 0 <= first <= {} (the parts of the shard)", first,
         parts));
   }
-  const auto skip = static_cast<std::size_t>(first);  // parts done before (a resume)
-  const std::size_t todo = study.parts.size() - skip;
-  std::int64_t sweeps = 0;
-  for (std::size_t k = skip; k < study.parts.size(); ++k) {
-    sweeps += study.parts[k].kind == SweepDirection::kAnalytic ? 0 : 1;
+  std::int64_t values = 0;  // those of the parts computed (not those done before: a resume)
+  for (std::int64_t k = first; k < parts; ++k) {
+    values += SimulatedValues(study.parts[static_cast<std::size_t>(k)], options);
   }
-  ValuesDone done(progress, static_cast<std::int64_t>(options.steps) * sweeps);
-  // Parts finish in any order; each one waits in `results` until those before it went to
-  // the sink. After a failure of the sink, no part goes to it any more.
-  std::vector<BifurcationDiagram> results(todo);
-  std::vector<char> ready(todo, 0);
-  std::size_t next = 0;
-  bool stopped = false;
-  std::mutex mutex;
-  detail::ParallelFor(
-      static_cast<std::int64_t>(todo),
-      detail::WorkerCount(options.threads, static_cast<std::int64_t>(todo)),
-      [&](std::int64_t k, int) {
-        const Part& p = study.parts[skip + static_cast<std::size_t>(k)];
-        BifurcationDiagram r;
-        if (p.kind == SweepDirection::kAnalytic) {
-          Analytic(study.bases[p.value], options, r);
-        } else {
-          Sweep(study.bases[p.value], options, p.kind, r, done);
-        }
-        for (ImpactPoint& im : r.impacts) {
-          im.over = study.overs[p.value];
-          im.part = p.id;
-        }
-        for (BifurcationPoint& point : r.summary) {
-          point.over = study.overs[p.value];
-          point.part = p.id;
-        }
-        r.parts = {p.id};
-        r.total_parts = study.total_parts;
-        const std::lock_guard<std::mutex> lock(mutex);
-        results[static_cast<std::size_t>(k)] = std::move(r);
-        ready[static_cast<std::size_t>(k)] = 1;
-        for (; !stopped && next < todo && ready[next] != 0; ++next) {
-          try {
-            sink(results[next]);
-          } catch (...) {
-            stopped = true;
-            throw;
-          }
-          results[next] = BifurcationDiagram();  // its memory back
-        }
-      },
-      [](std::int64_t) {});
+  ValuesDone done(progress, study.parts.size(), values);
+  BlockPlan plan;
+  plan.first = first;
+  plan.end = parts;
+  plan.block = 1;  // a part a block: the parts are few and long
+  plan.threads = detail::WorkerCount(options.threads, std::max<std::int64_t>(1, parts - first));
+  backend.Run(plan, PartBlocks(forcing, params, alpha, options, &done),
+              [&](std::int64_t k, std::int64_t, const std::string& bytes, std::int64_t) {
+                // Block k is part k alone (plan.block = 1).
+                const BifurcationDiagram part = ReadPartBytes(bytes, study, k);
+                done.Arrived(k, SimulatedValues(study.parts[static_cast<std::size_t>(k)], options));
+                sink(part);
+              });
+}
+
+BlockComputeFactory BifurcationBlocks(const Forcing& forcing, const Params& params, double alpha,
+                                      const BifurcationOptions& options) {
+  return PartBlocks(forcing, params, alpha, options, nullptr);
 }
 
 BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
                                       const BifurcationOptions& options,
-                                      const StartsProgress& progress) {
+                                      const StartsProgress& progress, const BlockBackend& backend) {
   BifurcationDiagram out;
   StreamBifurcation(
       forcing, params, alpha, options, 0,
@@ -425,7 +504,7 @@ BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& para
         out.impacts.insert(out.impacts.end(), part.impacts.begin(), part.impacts.end());
         out.summary.insert(out.summary.end(), part.summary.begin(), part.summary.end());
       },
-      progress);
+      progress, backend);
   out.total_parts = BifurcationParts(options);
   return out;
 }

@@ -83,7 +83,8 @@ void BifurcationShardFiles::Validate() const {
 BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Params& params,
                                               double alpha, const BifurcationOptions& options,
                                               const BifurcationShardFiles& files,
-                                              const StartsProgress& progress) {
+                                              const StartsProgress& progress,
+                                              const BlockBackend& backend) {
   files.Validate();
   ValidateBifurcation(forcing, params, alpha, options);
   const bool over = !options.over_values.empty();
@@ -141,7 +142,7 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
         summary.impacts += static_cast<std::int64_t>(part.impacts.size());
         summary.summary_rows += static_cast<std::int64_t>(part.summary.size());
       },
-      progress);
+      progress, backend);
   for (const auto& file : open) file->Commit();
   return summary;
 }

@@ -3,10 +3,11 @@
 // a basin map threaded, in 3 shards merged and under mpirun; the starts from rest of
 // `attractors -o` threaded, in 3 shards merged and under mpirun (the same report); a design
 // grid and its shard threaded and under mpirun; a two-parameter bifurcation study
-// threaded and in 3 shards merged (both CSVs); a killed basin shard and a killed bifurcation
-// shard resumed; bad input under mpirun fails with no file written. The merge errors of basin
-// shards (another run, missing, duplicated, truncated) are tested here, those of sweep shards in
-// sweep_cli_test.cpp. The mpirun tests are skipped only when capsubot is built without MPI.
+// threaded, in 3 shards merged (both CSVs) and under mpirun (whole and one shard); a killed
+// basin shard and a killed bifurcation shard resumed; bad input under mpirun fails with no
+// file written. The merge errors of
+// basin shards (another run, missing, duplicated, truncated) are tested here, those of sweep shards
+// in sweep_cli_test.cpp. The mpirun tests are skipped only when capsubot is built without MPI.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -518,6 +519,41 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
   EXPECT_EQ(checked, 9);
 }
 
+TEST(Cluster, BifurcationUnderMpirunIsTheThreadedRun) {
+  if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
+  // The 9 parts of kBifurcation (3 values of e x up, down, analytic) computed on the ranks:
+  // the same printed summary (once, by rank 0) and the same bytes of both files as the
+  // threaded run; one shard too. The same paths in every run: the summary names them.
+  Dir dir;
+  const std::string impacts = dir.File("impacts.csv"), summary = dir.File("summary.csv");
+  const std::string files = " -o " + impacts + " --summary " + summary;
+  int runs = 0;
+  for (const std::string& shard : {std::string(), std::string(" --shard 1/3")}) {
+    const CommandResult one =
+        RunCli(std::string(kBifurcation) + shard + " --threads 2" + files + " 2>&1");
+    ASSERT_EQ(one.status, 0) << one.out;
+    EXPECT_NE(one.out.find("(4 values, both) for 3 values of e"), std::string::npos) << one.out;
+    const std::string impact_bytes = ReadFile(impacts), summary_bytes = ReadFile(summary);
+    ASSERT_GT(impact_bytes.size(), 1000u);
+    ASSERT_GT(summary_bytes.size(), 500u);
+    for (const char* ranks_threads : {"2 1", "3 2"}) {
+      int ranks = 0, threads = 0;
+      std::sscanf(ranks_threads, "%d %d", &ranks, &threads);
+      std::filesystem::remove(impacts);
+      std::filesystem::remove(summary);
+      const CommandResult r = Mpirun(ranks, std::string(kBifurcation) + shard + " --threads " +
+                                                std::to_string(threads) + files);
+      ASSERT_EQ(r.status, 0) << r.out;
+      EXPECT_EQ(r.out, one.out) << ranks << " ranks" << shard;  // printed once, by rank 0
+      EXPECT_TRUE(ReadFile(impacts) == impact_bytes) << ranks << " ranks" << shard;
+      EXPECT_TRUE(ReadFile(summary) == summary_bytes) << ranks << " ranks" << shard;
+      EXPECT_FALSE(std::filesystem::exists(impacts + ".partial"));
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 4);
+}
+
 // Shard 1/3 of the study of kBifurcation with a long transient, slow enough to be killed
 // mid-way: parts 1 (e = 0.4 down), 6 (e = 0.6 up) and 8 (its analytic orbits), every period
 // simulated, a sweep part about 1.3 s on one thread; checkpointed after every part. `extra`:
@@ -597,8 +633,7 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
   const CommandResult resumed =
       RunCli(SlowBifurcationShard("1/3", killed, " --resume --threads 2"));
   ASSERT_EQ(resumed.status, 0) << resumed.out;
-  EXPECT_NE(resumed.out.find(" resumed from the checkpoint)"), std::string::npos)
-      << resumed.out;
+  EXPECT_NE(resumed.out.find(" resumed from the checkpoint)"), std::string::npos) << resumed.out;
   EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed impacts differ";
   EXPECT_TRUE(ReadFile(summary) == ReadFile(reference + ".summary")) << "resumed summary differs";
   for (const std::string& file : {killed, summary}) {
