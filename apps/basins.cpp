@@ -182,7 +182,7 @@ Command AddBasinsCommand(CLI::App& app) {
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
                 "print the attractors object of `attractors --json` with provenance");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 
 }  // namespace capsubot::app

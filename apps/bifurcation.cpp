@@ -197,7 +197,7 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "(written as FILE.partial, renamed at the end); 0: after every part")
       ->capture_default_str();
   AddThreadsOption(*cmd, opt->diagram.threads);
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 
 }  // namespace capsubot::app

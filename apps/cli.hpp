@@ -20,6 +20,9 @@ namespace capsubot::app {
 struct Command {
   CLI::App* parser = nullptr;
   std::function<int()> run;
+  /// Whether the command as parsed distributes its work over the ranks of an MPI job
+  /// (ranks.hpp); empty: it never does, and main refuses it under mpirun with P > 1.
+  std::function<bool()> distributed;
 };
 
 /// The force: the paper's A sin(phi + phi0) + c, or a Fourier series c + sum (a_k cos + b_k sin).

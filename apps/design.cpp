@@ -407,7 +407,8 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("K/N");
   cmd->add_flag("--resume", opt->resume,
                 "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  // A grid is distributed under mpirun; one design runs on one process.
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [opt] { return !opt->grids.empty(); }};
 }
 
 }  // namespace capsubot::app

@@ -1,7 +1,8 @@
 // capsubot: the command-line program. Parses, runs one subcommand, maps errors to exit codes:
 // 0 done, 2 bad input (one line on stderr naming the parameter, its value and the rule),
 // 1 a computation that could not be completed (one line saying why: also a failed write, on
-// standard output too) or an unexpected failure. SIGINT/SIGTERM remove temporary files.
+// standard output too) or an unexpected failure. SIGINT/SIGTERM remove temporary files. Under
+// mpirun with several processes, only the commands that distribute their work run.
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "capsubot/io.hpp"
 #include "capsubot/version.hpp"
 #include "commands.hpp"
+#include "ranks.hpp"
 
 namespace {
 
@@ -40,6 +42,19 @@ std::string ParseErrorMessage(const CLI::ParseError& e) {
     return text.substr(colon + 2);
   }
   return text;
+}
+
+// Under mpirun with P > 1 processes, a command that does not distribute its work would run P
+// times over: refused (exit 2), said once, by the process of rank 0.
+int RefuseOneProcessCommand(const std::string& who, const std::string& name, int processes) {
+  if (capsubot::app::LaunchedRank() == 0) {
+    fmt::print(stderr,
+               "{}: error: mpirun -n {} is invalid for {}: it runs on one process; expected "
+               "mpirun only for sweep, basins, attractors, bifurcation and design --grid "
+               "(docs/cluster.md)\n",
+               who, processes, name);
+  }
+  return 2;
 }
 
 // Output that did not reach standard output (a full disk, /dev/full) is a failed run.
@@ -93,6 +108,10 @@ int main(int argc, char** argv) {
   for (const Command& command : commands) {
     if (!command.parser->parsed()) continue;
     const std::string who = "capsubot " + command.parser->get_name();
+    const int processes = LaunchedProcesses();
+    if (processes > 1 && !(command.distributed && command.distributed())) {
+      return RefuseOneProcessCommand(who, command.parser->get_name(), processes);
+    }
     try {
       return CheckStdout(who, command.run());
     } catch (const std::invalid_argument& e) {

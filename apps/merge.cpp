@@ -41,7 +41,7 @@ Command AddMergeCommand(CLI::App& app) {
   cmd->add_option("OUT", opt->output, "the CSV file to write (atomically; - : standard output)")
       ->required();
   cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt] { return Run(*opt); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -563,7 +563,7 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "columns phi,F) to this CSV file (main job: the robust gait's force; reach: the "
                   "winner's)");
   opt->cmd = cmd;
-  return {cmd, [opt] { return Run(*opt); }};
+  return {cmd, [opt] { return Run(*opt); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -94,7 +94,7 @@ Command AddOrbitsCommand(CLI::App& app) {
                 "phi0, with the keys of `solve --stability --json` without from_rest, and "
                 "complete: false when the search hit its work bound and orbits may be missing; a "
                 "note on stderr then says so) and provenance");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -16,6 +16,9 @@ namespace capsubot::app {
 /// Processes of the job this process was started in, as its launcher says (mpirun, srun:
 /// OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_SIZE); 1 when started alone.
 int LaunchedProcesses();
+/// Rank of this process in that job, as its launcher says (OMPI_COMM_WORLD_RANK, PMI_RANK or
+/// PMIX_RANK), known before MPI is started; 0 when started alone.
+int LaunchedRank();
 
 class Ranks {
  public:

@@ -259,7 +259,7 @@ Command AddSimulateCommand(CLI::App& app) {
                           "events per period"),
           10, kMaxEventsPerPeriod)
       ->capture_default_str();
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -104,7 +104,7 @@ Command AddSolveCommand(CLI::App& app) {
           kMaxTrajectoryRows)
       ->capture_default_str()
       ->needs(trajectory);
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 
 }  // namespace capsubot::app

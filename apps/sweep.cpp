@@ -441,7 +441,7 @@ Command AddSweepCommand(CLI::App& app) {
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
                   "more than 4 per core is lowered to that, with a note")
       ->capture_default_str();
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }};
+  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 
 }  // namespace capsubot::app

@@ -4,8 +4,8 @@
 // `attractors -o` threaded, in 3 shards merged and under mpirun (the same report); a design
 // grid and its shard threaded and under mpirun; a two-parameter bifurcation study
 // threaded, in 3 shards merged (both CSVs) and under mpirun (whole and one shard); a killed
-// basin shard and a killed bifurcation shard resumed; bad input under mpirun fails with no
-// file written. The merge errors of
+// basin shard and a killed bifurcation shard resumed; the commands that run on one process
+// refused under mpirun; bad input under mpirun fails with no file written. The merge errors of
 // basin shards (another run, missing, duplicated, truncated) are tested here, those of sweep shards
 // in sweep_cli_test.cpp. The mpirun tests are skipped only when capsubot is built without MPI.
 
@@ -640,6 +640,42 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
     EXPECT_FALSE(std::filesystem::exists(file + ".partial")) << file;
     EXPECT_FALSE(std::filesystem::exists(file + ".checkpoint")) << file;
   }
+}
+
+TEST(Cluster, CommandsThatRunOnOneProcessRefuseMpirun) {
+  if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
+  // Run P times over, these commands would print P times and write one file P times: each is
+  // refused before any work, said once (by rank 0), no file written.
+  Dir dir;
+  const std::string out = dir.File("out.csv");
+  const std::string robot = " --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5";
+  const std::vector<std::pair<std::string, std::string>> commands = {
+      {"solve", "solve" + robot},
+      {"simulate", "simulate" + robot + " --from-orbit --periods 4 --events " + out},
+      {"design",  // one design (of a point of kDesignGrid): not a grid
+       "design --m1 0.2 --L 0.02 --mu 0.3 --force-bias 0.1 --frequency 20 --margin 0 "
+       "--margin-stroke 0 --stick-margin 0 --rho-max 1 --e 0.7 --force-amplitude 0.5"}};
+  int checked = 0;
+  for (const auto& [name, args] : commands) {
+    const CommandResult r = Mpirun(2, args);
+    EXPECT_NE(r.status, 0) << r.out;
+    const std::string message = "capsubot " + name + ": error: mpirun -n 2 is invalid for " + name +
+                                ": it runs on one process; expected mpirun only for sweep, "
+                                "basins, attractors, bifurcation and design --grid "
+                                "(docs/cluster.md)\n";
+    const std::size_t at = r.out.find(message);
+    EXPECT_NE(at, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("capsubot " + name + ": error:", at + 1), std::string::npos)
+        << "said more than once: " << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out)) << name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  // Alone (one process), the same command runs.
+  const CommandResult alone =
+      Mpirun(1, "simulate" + robot + " --from-orbit --periods 4 --events " + out);
+  EXPECT_EQ(alone.status, 0) << alone.out;
+  EXPECT_TRUE(std::filesystem::exists(out));
 }
 
 TEST(Cluster, BadInputUnderMpirunFailsAndWritesNoFile) {
