@@ -147,7 +147,8 @@ Command AddBifurcationCommand(CLI::App& app) {
       "the record (-o) and a summary row (--summary) with the period, impacts, mean velocity and "
       "largest multiplier (Newton shooting), plus the valid analytic one-impact orbits "
       "(direction = analytic). --over: one diagram per value of a second parameter; --shard "
-      "K/N: some of the continuations, joined by `capsubot merge` (docs/cluster.md).");
+      "K/N: some of the continuations, joined by `capsubot merge`; under mpirun the parts "
+      "(up, down, analytic per value) run on the ranks (docs/cluster.md).");
   AddRobotOptions(*cmd, opt->robot);
   cmd->get_option("--alpha")->required(false)->description(
       "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1 (not needed with --param alpha)");

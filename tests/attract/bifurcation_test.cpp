@@ -238,6 +238,74 @@ TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
   EXPECT_EQ(calls, 0);  // every part done: nothing computed
 }
 
+// A backend standing in for the worker ranks of an MPI job: every block computed by a
+// computer of `make` (BifurcationBlocks, as a worker makes it: not the caller's computers,
+// which tick its progress), the blocks in reverse order, then handed to the sink in order.
+class ElsewhereBackend : public BlockBackend {
+ public:
+  explicit ElsewhereBackend(BlockComputeFactory make) : make_(std::move(make)) {}
+  int Threads(int local) const override { return local; }
+  void Run(const BlockPlan& plan, const BlockComputeFactory&,
+           const BlockSink& sink) const override {
+    const BlockCompute compute = make_();
+    std::vector<std::pair<std::string, std::int64_t>> blocks(
+        static_cast<std::size_t>(plan.Blocks()));
+    for (std::int64_t k = plan.Blocks() - 1; k >= 0; --k) {
+      auto& [bytes, count] = blocks[static_cast<std::size_t>(k)];
+      count = compute(plan.Begin(k), plan.End(k), bytes);
+    }
+    for (std::int64_t k = 0; k < plan.Blocks(); ++k) {
+      const auto& [bytes, count] = blocks[static_cast<std::size_t>(k)];
+      sink(plan.Begin(k), plan.End(k), bytes, count);
+    }
+  }
+
+ private:
+  BlockComputeFactory make_;
+};
+
+TEST(Bifurcation, PartsComputedElsewhereGiveTheThreadedDiagram) {
+  // The bytes of a part (BifurcationBlocks) carry all its rows: a study whose parts are
+  // computed by another backend (out of order) is the threaded one, row for row, impacts and
+  // summary, with their second parameter and part; the progress counts the values of each
+  // sweep part when it arrives (the analytic parts simulate none).
+  StudyOverE study_e({0.4, 0.6});
+  const Params& params = study_e.params;
+  const Forcing& force = study_e.force;
+  const double alpha = study_e.alpha;
+  const BifurcationOptions& o = study_e.o;
+  const BifurcationDiagram threaded = ComputeBifurcation(force, params, alpha, o);
+  ASSERT_EQ(threaded.parts, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  const ElsewhereBackend elsewhere(BifurcationBlocks(force, params, alpha, o));
+  std::vector<std::int64_t> done;
+  std::int64_t total = 0;
+  const BifurcationDiagram d = ComputeBifurcation(
+      force, params, alpha, o,
+      [&](std::int64_t n, std::int64_t of) {
+        done.push_back(n);
+        total = of;
+      },
+      elsewhere);
+  EXPECT_EQ(d.parts, threaded.parts);
+  EXPECT_EQ(d.total_parts, 6);
+  ExpectSameRows(d.summary, threaded.summary, "parts computed elsewhere");
+  for (std::size_t k = 0; k < d.summary.size() && k < threaded.summary.size(); ++k) {
+    EXPECT_EQ(d.summary[k].over, threaded.summary[k].over) << "row " << k;
+    EXPECT_EQ(d.summary[k].part, threaded.summary[k].part) << "row " << k;
+  }
+  ASSERT_EQ(d.impacts.size(), threaded.impacts.size());
+  ASSERT_GT(d.impacts.size(), 10u);
+  for (std::size_t k = 0; k < d.impacts.size(); ++k) {
+    const ImpactPoint &a = d.impacts[k], &b = threaded.impacts[k];
+    EXPECT_TRUE(a.param == b.param && a.direction == b.direction &&
+                a.period_index == b.period_index && a.right == b.right && a.phase == b.phase &&
+                a.velocity == b.velocity && a.over == b.over && a.part == b.part)
+        << "impact " << k;
+  }
+  EXPECT_EQ(done, (std::vector<std::int64_t>{3, 6, 9, 12}));  // 4 sweeps of 3 values
+  EXPECT_EQ(total, 12);
+}
+
 TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
   // The paper's family is the series with a_1 = 0, b_1 = A (forcing.hpp): stepping b1 of that
   // series steps A, so both diagrams must be the same numbers.
