@@ -44,17 +44,27 @@ std::string ParseErrorMessage(const CLI::ParseError& e) {
   return text;
 }
 
+// Prints `who: error: text` and returns `status`. Under mpirun every process parses the same
+// command line, so bad input (status 2) is said once, by the process of rank 0; a failure of
+// the computation (status 1) is said by the process it happens on, with its rank.
+int Fail(const std::string& who, const std::string& text, int status) {
+  const int rank = capsubot::app::LaunchedRank();
+  if (status == 2 && rank != 0) return status;
+  const std::string where =
+      rank > 0 ? fmt::format(" (process of rank {} of an MPI job)", rank) : std::string();
+  fmt::print(stderr, "{}: error{}: {}\n", who, where, text);
+  return status;
+}
+
 // Under mpirun with P > 1 processes, a command that does not distribute its work would run P
-// times over: refused (exit 2), said once, by the process of rank 0.
+// times over: refused (exit 2).
 int RefuseOneProcessCommand(const std::string& who, const std::string& name, int processes) {
-  if (capsubot::app::LaunchedRank() == 0) {
-    fmt::print(stderr,
-               "{}: error: mpirun -n {} is invalid for {}: it runs on one process; expected "
-               "mpirun only for sweep, basins, attractors, bifurcation and design --grid "
-               "(docs/cluster.md)\n",
-               who, processes, name);
-  }
-  return 2;
+  return Fail(who,
+              fmt::format("mpirun -n {} is invalid for {}: it runs on one process; expected "
+                          "mpirun only for sweep, basins, attractors, bifurcation and design "
+                          "--grid (docs/cluster.md)",
+                          processes, name),
+              2);
 }
 
 // Output that did not reach standard output (a full disk, /dev/full) is a failed run.
@@ -62,8 +72,7 @@ int CheckStdout(const std::string& who, int status) {
   errno = 0;
   if (std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return status;
   const int err = errno != 0 ? errno : EIO;
-  fmt::print(stderr, "{}: error: standard output cannot be written: {}\n", who, std::strerror(err));
-  return 1;
+  return Fail(who, fmt::format("standard output cannot be written: {}", std::strerror(err)), 1);
 }
 
 }  // namespace
@@ -99,11 +108,9 @@ int main(int argc, char** argv) {
     const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
     if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr ||
         dynamic_cast<const CLI::ValidationError*>(&e) != nullptr) {
-      fmt::print(stderr, "{}: error: {}\n", who, ParseErrorMessage(e));
-    } else {
-      fmt::print(stderr, "{}: error: {} (see {} --help)\n", who, ParseErrorMessage(e), who);
+      return Fail(who, ParseErrorMessage(e), 2);
     }
-    return 2;
+    return Fail(who, fmt::format("{} (see {} --help)", ParseErrorMessage(e), who), 2);
   }
   for (const Command& command : commands) {
     if (!command.parser->parsed()) continue;
@@ -115,17 +122,13 @@ int main(int argc, char** argv) {
     try {
       return CheckStdout(who, command.run());
     } catch (const std::invalid_argument& e) {
-      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
-      return 2;
+      return Fail(who, OneLine(e.what()), 2);
     } catch (const capsubot::WriteError& e) {  // the file could be opened: not bad input
-      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
-      return 1;
+      return Fail(who, OneLine(e.what()), 1);
     } catch (const capsubot::IoError& e) {
-      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
-      return 2;
+      return Fail(who, OneLine(e.what()), 2);
     } catch (const std::runtime_error& e) {  // a computation that could not be completed
-      fmt::print(stderr, "{}: error: {}\n", who, OneLine(e.what()));
-      return 1;
+      return Fail(who, OneLine(e.what()), 1);
     } catch (const std::exception& e) {
       fmt::print(stderr, "{}: internal error: {}\n", who, OneLine(e.what()));
       return 1;

@@ -678,18 +678,34 @@ TEST(Cluster, CommandsThatRunOnOneProcessRefuseMpirun) {
   EXPECT_TRUE(std::filesystem::exists(out));
 }
 
-TEST(Cluster, BadInputUnderMpirunFailsAndWritesNoFile) {
+TEST(Cluster, BadInputUnderMpirunFailsOnceAndWritesNoFile) {
   if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
   Dir dir;
   const std::string out = dir.File("bad.csv");
-  // Rank 0 finds the bad value; the workers are told to stop.
-  const CommandResult r =
-      Mpirun(2, "sweep --grid phi0=-pi:pi:100 --A 0.5 --c 0.5 --e 1.3 -o " + out);
-  EXPECT_NE(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("capsubot sweep: error: restitution e = 1.3 is invalid"), std::string::npos)
-      << r.out;
-  EXPECT_FALSE(std::filesystem::exists(out));
-  EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
+  // Every process parses the same command line: bad input is said once, by rank 0, whether
+  // it is found by the parser (an unknown option, a bad --grid) or by the run (rank 0 finds
+  // the bad value; the workers are told to stop).
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"sweep --grid phi0=-pi:pi:100 --A 0.5 --c 0.5 --e 1.3 -o " + out,
+       "capsubot sweep: error: restitution e = 1.3 is invalid"},
+      {"sweep --grid phi0=-pi:pi:100 --A 0.5 --c 0.5 --no-such-option -o " + out,
+       "capsubot sweep: error: "},
+      {"bifurcation --A 0.05 --c 0.02 --phi0 -2.842 --e 0.5 --alpha 0.3 --param T0 --from 0.08 "
+       "--to 0.12 --steps 4 --over e=0.4:0.6:0 -o " +
+           out,
+       "capsubot bifurcation: error: "}};
+  int checked = 0;
+  for (const auto& [args, message] : cases) {
+    const CommandResult r = Mpirun(2, args);
+    EXPECT_EQ(r.status, 2) << r.out;
+    const std::size_t at = r.out.find(message);
+    EXPECT_NE(at, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(message, at + 1), std::string::npos) << "said more than once: " << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+    EXPECT_FALSE(std::filesystem::exists(out + ".partial")) << args;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
 }
 
 }  // namespace
