@@ -122,6 +122,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   ao.motion = opt.robot.motion;
   ao.threads = opt.threads;
   RequireShardForResume(cmd, opt.shard);
+  RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
   if (!opt.shard.shard.empty()) {
     return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, x0_u0, opt.output,
                          {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});

@@ -56,12 +56,14 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     const GridAxis axis = ParseGridAxis(opt.over);
     over_name = axis.name();
     o.over = ParseBifurcationParam(over_name, &o.over_harmonic);
+    if (axis.size() > kMaxOverValues) {  // before the values are held
+      throw std::invalid_argument(
+          fmt::format("--over = {} is invalid: {} values: expected at most {} values", opt.over,
+                      axis.size(), kMaxOverValues));
+    }
     for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
   }
-  if (opt.summary == opt.output) {
-    throw std::invalid_argument(
-        fmt::format("--summary = {} is invalid: expected a file other than -o's", opt.summary));
-  }
+  RequireDistinctOutputs({{opt.output, "-o"}, {opt.summary, "--summary"}});
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   RequireShardForResume(cmd, !opt.shard.empty(), "study");
   if (!(opt.checkpoint_seconds >= 0.0)) {
@@ -112,9 +114,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
                       : std::string());
     return 0;
   }
-  {
-    AtomicFile probe(opt.output, "-o");  // fail on an unwritable path before the long run
-  }
+  CheckWritable(opt.output, "-o");  // fail on an unwritable path before the long run
   const BifurcationDiagram d = ComputeBifurcation(
       forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"), ranks.backend());
   std::string rows = BifurcationImpactsHeader(o);

@@ -77,6 +77,16 @@ bool HasValidator(CLI::Option* option, const char* name) {
   }
 }
 
+// A value of a text option (a path, --shard, --starts, ...) that is empty.
+CLI::Validator NonEmptyText(const std::string& name) {
+  return CLI::Validator(
+      [name](std::string& text) {
+        return text.empty() ? fmt::format("{} = '' is invalid: expected a value", name)
+                            : std::string();
+      },
+      "", "non-empty");
+}
+
 }  // namespace
 
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
@@ -170,17 +180,19 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
   }
 }
 
-void UseStrictNumbers(CLI::App& app) {
+void UseStrictValues(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
     if (type == "FLOAT" || type == kFloatOrInf) {
       option->transform(NumberText(option->get_name(), type == kFloatOrInf));
     } else if ((type == "INT" || type == "UINT") && !HasValidator(option, kIntegerValidator)) {
       option->transform(IntegerText(option->get_name(), type == "UINT" ? 0 : INT_MIN, INT_MAX, ""));
+    } else if (option->get_items_expected_min() > 0) {
+      option->check(NonEmptyText(option->get_name()));
     }
   }
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-    UseStrictNumbers(*sub);
+    UseStrictValues(*sub);
   }
 }
 

@@ -51,8 +51,9 @@ void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
 /// capsubot::ParseNumber (floating-point options) or ParseInteger (integer options: the
 /// range of Bounded, else that of int). Call once, after every option is added. An option
 /// is numeric by its CLI11 type name (FLOAT, INT, UINT): keep those names on numeric options.
-/// Options of type kFloatOrInf also accept "inf" (e.g. --rho-max inf: no bound).
-void UseStrictNumbers(CLI::App& app);
+/// Options of type kFloatOrInf also accept "inf" (e.g. --rho-max inf: no bound). Every other
+/// option that takes a value refuses an empty one (`-o ""`, `--shard ""`): never read as absent.
+void UseStrictValues(CLI::App& app);
 
 /// CLI11 type name of a floating-point option that also accepts "inf".
 inline constexpr const char* kFloatOrInf = "FLOAT|inf";

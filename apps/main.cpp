@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
       AddSweepCommand(app),  AddMergeCommand(app),      AddOptimizeCommand(app),
       AddDesignCommand(app), AddAttractorsCommand(app), AddPeriodicCommand(app),
       AddBasinsCommand(app), AddBifurcationCommand(app)};
-  UseStrictNumbers(app);
+  UseStrictValues(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -458,6 +458,8 @@ int Run(const OptimizeCliOptions& opt) {
     design.Validate();
     design.BoundFor(opt.params);
   }
+  RequireDistinctOutputs(
+      {{opt.output, "-o"}, {opt.force_csv, "--force-csv"}, {opt.from_rest_csv, "--from-rest-csv"}});
   OutputFiles files;
   files.json = OpenIfAsked(opt.output, "-o");
   files.force_csv = OpenIfAsked(opt.force_csv, "--force-csv");

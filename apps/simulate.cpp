@@ -130,6 +130,7 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
     sim.sample_step = kTau / opt.samples_per_period;
   }
 
+  RequireDistinctOutputs({{opt.events, "--events"}, {opt.trajectory, "--trajectory"}});
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
   if (!opt.events.empty()) events_file = std::make_unique<AtomicFile>(opt.events, "--events");
   if (!opt.trajectory.empty()) {

@@ -17,9 +17,7 @@ std::optional<Attractors> ClassifyWholeMap(const RobotOptions& robot, const Forc
                 attractor.threads);
     return std::nullopt;
   }
-  if (!output.empty()) {
-    AtomicFile probe(output, "-o");  // fail on an unwritable path before the long run
-  }
+  if (!output.empty()) CheckWritable(output, "-o");  // before the long run
   return ClassifyStarts(forcing, robot.params, robot.alpha, starts, attractor,
                         TerminalProgress("starts"), ranks.backend());
 }

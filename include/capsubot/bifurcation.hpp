@@ -29,6 +29,10 @@ std::string BifurcationParamName(BifurcationParam param, int harmonic = 0);
 /// std::invalid_argument naming the value and the choices.
 BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic = nullptr);
 
+/// The most values of the second parameter of a study (BifurcationOptions::over_values): its
+/// plan holds a few hundred bytes per value before the first row.
+inline constexpr std::int64_t kMaxOverValues = 100000;
+
 struct BifurcationOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -47,6 +51,7 @@ struct BifurcationOptions {
   int threads = 0;  ///< the parts run in parallel (0: all cores); same result
   /// A two-parameter study: one diagram per value of a second parameter `over` (set to each
   /// of over_values in turn, the other inputs kept); empty: one diagram, no second parameter.
+  /// At most kMaxOverValues values.
   std::vector<double> over_values;
   BifurcationParam over = BifurcationParam::kC;  ///< the second parameter (not `param`)
   int over_harmonic = 0;                         ///< k of a_k, b_k when `over` is one, else 0

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace capsubot {
 
@@ -40,6 +42,18 @@ OutputTarget ResolveOutput(const std::string& path, const std::string& what);
 
 /// Symlinks followed by ResolveOutput before it reports a loop (Linux's own limit).
 inline constexpr int kMaxSymlinks = 40;
+
+/// Throws IoError (naming `what` and `path`) if `path` cannot be written, before a long run:
+/// a regular file (new or existing) by creating its temporary file and removing it, untouched;
+/// standard output, a device or a pipe by its permission only, without opening it (a pipe's
+/// reader would see the end of the file).
+void CheckWritable(const std::string& path, const std::string& what);
+
+/// Throws std::invalid_argument when two of `outputs` (pairs of path and option; empty paths
+/// are skipped) are the same file under other spellings ("./a.csv", "dir/../a.csv", an
+/// absolute path, a symlink, a hard link): one would overwrite the other. Standard output,
+/// devices and pipes (written in place) may be named twice.
+void RequireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 /// Writes to `path` atomically: the text goes to a temporary file `<target>.tmp.<pid>` beside
 /// the target (ResolveOutput), which Commit() renames over the target; destroyed without

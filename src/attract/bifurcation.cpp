@@ -407,6 +407,11 @@ void BifurcationOptions::Validate() const {
   motion.Validate();
   const bool over_fourier = over == BifurcationParam::kCos || over == BifurcationParam::kSin;
   if (!over_values.empty()) {
+    if (static_cast<std::int64_t>(over_values.size()) > kMaxOverValues) {
+      throw std::invalid_argument(fmt::format(
+          "second parameter {} is invalid: {} values: expected at most {} values",
+          BifurcationParamName(over, over_harmonic), over_values.size(), kMaxOverValues));
+    }
     if (over_fourier ? over_harmonic < 1 || over_harmonic > kMaxHarmonics : over_harmonic != 0) {
       throw std::invalid_argument(fmt::format(
           "over harmonic = {} is invalid: expected 1 <= k <= {} for a_k and b_k, else 0",

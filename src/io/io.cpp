@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -52,6 +53,51 @@ OutputTarget ResolveOutput(const std::string& path, const std::string& what) {
     }
     const std::string target(buffer.data(), static_cast<std::size_t>(n));
     p = !target.empty() && target[0] == '/' ? target : Folder(p) + target;
+  }
+}
+
+void CheckWritable(const std::string& path, const std::string& what) {
+  const OutputTarget target = ResolveOutput(path, what);
+  if (!target.in_place) {
+    AtomicFile probe(path, what);  // removed unused by its destructor
+    return;
+  }
+  if (::access(target.path.c_str(), W_OK) != 0) {
+    throw IoError(fmt::format("{} {} cannot be written: {}", what, path, std::strerror(errno)));
+  }
+}
+
+namespace {
+
+// The file a path names, for comparing two spellings: symlinks resolved where the path exists,
+// "." and ".." removed lexically where it does not yet.
+std::filesystem::path Spelled(const std::string& path) {
+  std::error_code error;
+  std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
+  return error ? std::filesystem::absolute(path, error).lexically_normal() : p;
+}
+
+// Standard output, a device or a pipe: written in place, so naming it twice replaces nothing.
+bool InPlace(const std::string& path) {
+  struct stat st {};
+  return path == "-" || (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode));
+}
+
+}  // namespace
+
+void RequireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+      const auto& [a, a_option] = outputs[i];
+      const auto& [b, b_option] = outputs[j];
+      if (a.empty() || b.empty() || InPlace(a) || InPlace(b)) continue;
+      std::error_code error;
+      if (a == b || Spelled(a) == Spelled(b) || std::filesystem::equivalent(a, b, error)) {
+        throw std::invalid_argument(
+            fmt::format("{} = {} is invalid: it is the file of {} = {}: expected another file",
+                        b_option, QuoteForMessage(b), a_option, QuoteForMessage(a)));
+      }
+    }
   }
 }
 

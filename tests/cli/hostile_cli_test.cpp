@@ -37,6 +37,12 @@ const std::string kSolve = "solve --A 0.05 --c 0.02 --phi0 -2.5 --T0 0.1 --e 0.5
 const std::string kSim = "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 --v0 0";
 const std::string kSweep = "sweep --grid A=0:1:3 --c 0.5 --phi0 0";
 const std::string kOrbits = "orbits --A 0.5 --c 0.5 --alpha 0.5";
+// A short bifurcation diagram and a small map of starts of the small stable orbit's robot.
+const std::string kRobot =
+    "--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278";
+const std::string kBifurcation = "bifurcation " + kRobot +
+                                 " --param T0 --from 0.08 --to 0.12 --steps 3 --transient 20 "
+                                 "--record 20";
 
 std::string ReadFile(const fs::path& p) {
   std::ifstream in(p);
@@ -120,6 +126,43 @@ std::vector<Case> Cases() {
        "more than 40 symbolic links",
        {"a", "b"},
        "ln -s b a && ln -s a b"},
+      // One file named twice under other spellings: refused before anything is written.
+      {"BifurcationSummaryIsOutputThroughSymlink",
+       kBifurcation + " -o i.csv --summary il.csv",
+       2,
+       "--summary = il.csv is invalid: it is the file of -o = i.csv: expected another file",
+       {"i.csv", "il.csv"},
+       "printf 'old\\n' > i.csv && ln -s i.csv il.csv",
+       "",
+       "",
+       [](const fs::path& d) { EXPECT_EQ(ReadFile(d / "i.csv"), "old\n"); }},
+      {"BifurcationSummaryIsOutputDotSlash",
+       kBifurcation + " -o i.csv --summary ./i.csv",
+       2,
+       "--summary = ./i.csv is invalid: it is the file of -o = i.csv",
+       {"i.csv"},
+       "printf 'old\\n' > i.csv",
+       "",
+       "",
+       [](const fs::path& d) { EXPECT_EQ(ReadFile(d / "i.csv"), "old\n"); }},
+      {"SimulateTrajectoryIsEventsThroughParent",
+       kSim + " --events e.csv --trajectory sub/../e.csv", 2,
+       "--trajectory = sub/../e.csv is invalid: it is the file of --events = e.csv", none},
+      {"OptimizeForceCsvIsOutputAbsolute",
+       "optimize --problem phase --A 0.5 --c 0.5 -o o.json --force-csv \"$PWD/o.json\"", 2,
+       "is invalid: it is the file of -o = o.json: expected another file", none},
+      {"BifurcationOverIsBoundedBeforeItsValuesAreHeld",
+       kBifurcation + " --over e=0.4:0.6:1000000000 -o o.csv", 2,
+       "--over = e=0.4:0.6:1000000000 is invalid: 1000000000 values: expected at most 100000 "
+       "values",
+       none},
+      // An empty value is refused, never read as an absent option.
+      {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
+       "--shard = '' is invalid: expected a value", none},
+      {"EmptyOutputIsRefused", kBifurcation + " -o '' --summary s.csv", 2,
+       "--output = '' is invalid: expected a value", none},
+      {"EmptyConfigIsRefused", "design --config ''", 2,
+       "--config = '' is invalid: expected a value", none},
       // Non-finite orbits are a status, never valid.
       {"TinyMeanForceIsNonFinite", "solve --A 0.5 --c 1e-19 --phi0 -2.9 --json", 0, "", none, "",
        "",
@@ -261,7 +304,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 66;
+constexpr int kCaseCount = 74;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
@@ -306,6 +349,33 @@ TEST(HostileCliTable, EveryRowRuns) {
   std::set<std::string> names;
   for (const Case& c : Cases()) names.insert(c.name);
   EXPECT_EQ(static_cast<int>(names.size()), kCaseCount);  // unique test names
+}
+
+// A pipe (FIFO) given as the output of a long run is checked without being opened, then
+// written once: its reader gets the whole file (a check that opened it would end the reader's
+// file early and leave the real write waiting for a reader forever).
+TEST(HostileCliFifo, WholeRunsWriteAPipeOnce) {
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"attractors " + kRobot + " --transient 20 --record 20 --starts 4x3 -o ff", "x0,psi,"},
+      {"basins " + kRobot + " --transient 20 --record 20 --starts 4x3 -o ff", "x0,psi,"},
+      {kBifurcation + " -o ff", "param,direction,"}};
+  int checked = 0;
+  for (const auto& [args, header] : runs) {
+    Sandbox box("fifo");
+    const std::string command = "cd '" + box.work.string() +
+                                "' && mkfifo ff && { timeout 60 cat ff > got & } && timeout 60 " +
+                                std::string(CAPSUBOT_CLI) + " " + args +
+                                " > /dev/null; s=$?; wait; exit $s";
+    const int raw = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(raw)) << command;
+    EXPECT_EQ(WEXITSTATUS(raw), 0) << command;
+    const std::string got = ReadFile(box.work / "got");
+    EXPECT_NE(got.find(header), std::string::npos) << args << ": " << got;
+    EXPECT_GT(std::count(got.begin(), got.end(), '\n'), 4) << args << ": " << got;
+    EXPECT_EQ(Listing(box.work), (std::set<std::string>{"ff", "got"})) << args;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
 }
 
 // Starts `capsubot args...` with stdout and stderr to files (or stderr to `stderr_path`).
