@@ -62,8 +62,9 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     throw std::invalid_argument(
         fmt::format("--summary = {} is invalid: expected a file other than -o's", opt.summary));
   }
-  if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
-  RequireShardForResume(cmd, !opt.shard.empty(), "study");
+  const bool sharded = SplitsRun(opt.shard);  // --shard 0/1: the files of the whole study
+  if (sharded) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
+  RequireShardForResume(cmd, sharded, "study");
   if (!(opt.checkpoint_seconds >= 0.0)) {
     throw std::invalid_argument(
         fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds",
@@ -88,7 +89,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     return opt.summary.empty() ? std::string()
                                : fmt::format(", {} summary rows to {}", rows, opt.summary);
   };
-  if (!opt.shard.empty()) {
+  if (sharded) {
     BifurcationShardFiles files;
     files.impacts = opt.output;
     files.summary = opt.summary;

@@ -36,7 +36,7 @@ std::vector<std::string> ShardExcludedOptions() {
 }
 
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options) {
-  RequireShardForResume(cmd, !options.shard.empty(), "map");
+  RequireShardForResume(cmd, SplitsRun(options.shard), "map");
 }
 
 int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
