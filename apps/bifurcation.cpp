@@ -190,7 +190,8 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "the run, a line '# shard K/N of T continuations' and a line '# part P of Q: "
                   "R rows' before each part; `capsubot merge OUT SHARDS...` joins the N files "
                   "of -o (or of --summary) into the file of the whole study (docs/cluster.md); a "
-                  "shard's files are written as FILE.partial with checkpoints (--resume)");
+                  "shard's files are written as FILE.partial with checkpoints (--resume); 0/1 "
+                  "writes the files of the whole study");
   cmd->add_flag("--resume", opt->resume,
                 "with --shard: continue a killed shard from the checkpoints FILE.checkpoint of "
                 "-o and --summary (same options required; their checksums are verified)");

@@ -433,7 +433,8 @@ Command AddDesignCommand(CLI::App& app) {
                   "end; - for standard output)");
   cmd->add_option("--shard", opt->shard,
                   "with --grid: compute only shard K of N (0 <= K < N), the points p with "
-                  "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files")
+                  "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files; 0/1 "
+                  "writes the file of the whole grid")
       ->type_name("K/N");
   cmd->add_flag("--resume", opt->resume,
                 "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");
