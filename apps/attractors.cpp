@@ -38,7 +38,7 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   ao.motion = opt.robot.motion;
   ao.threads = opt.threads;
   RequireShardForResume(cmd, opt.shard);
-  if (!opt.shard.shard.empty()) {
+  if (SplitsRun(opt.shard.shard)) {
     if (opt.output.empty()) {
       throw std::invalid_argument(
           "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
@@ -54,7 +54,7 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   if (!opt.output.empty()) WriteStartMap(opt.output, starts, a, false);
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd, {"--checkpoint-seconds"});
+    AddProvenanceJson(j, cmd, {"--checkpoint-seconds", "--shard"});
     fmt::print("{}\n", j.dump());
     return 0;
   }

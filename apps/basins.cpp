@@ -123,7 +123,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   ao.threads = opt.threads;
   RequireShardForResume(cmd, opt.shard);
   RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
-  if (!opt.shard.shard.empty()) {
+  if (SplitsRun(opt.shard.shard)) {
     return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, x0_u0, opt.output,
                          {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});
   }
@@ -141,7 +141,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   }
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd, {"--checkpoint-seconds"});
+    AddProvenanceJson(j, cmd, {"--checkpoint-seconds", "--shard"});
     fmt::print("{}\n", j.dump());
     return 0;
   }

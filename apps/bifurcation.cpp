@@ -64,8 +64,9 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
   }
   RequireDistinctOutputs({{opt.output, "-o"}, {opt.summary, "--summary"}});
-  if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
-  RequireShardForResume(cmd, !opt.shard.empty(), "study");
+  const bool sharded = SplitsRun(opt.shard);  // --shard 0/1: the files of the whole study
+  if (sharded) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
+  RequireShardForResume(cmd, sharded, "study");
   if (!(opt.checkpoint_seconds >= 0.0)) {
     throw std::invalid_argument(
         fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds",
@@ -90,7 +91,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     return opt.summary.empty() ? std::string()
                                : fmt::format(", {} summary rows to {}", rows, opt.summary);
   };
-  if (!opt.shard.empty()) {
+  if (sharded) {
     BifurcationShardFiles files;
     files.impacts = opt.output;
     files.summary = opt.summary;
@@ -189,7 +190,8 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "the run, a line '# shard K/N of T continuations' and a line '# part P of Q: "
                   "R rows' before each part; `capsubot merge OUT SHARDS...` joins the N files "
                   "of -o (or of --summary) into the file of the whole study (docs/cluster.md); a "
-                  "shard's files are written as FILE.partial with checkpoints (--resume)");
+                  "shard's files are written as FILE.partial with checkpoints (--resume); 0/1 "
+                  "writes the files of the whole study");
   cmd->add_flag("--resume", opt->resume,
                 "with --shard: continue a killed shard from the checkpoints FILE.checkpoint of "
                 "-o and --summary (same options required; their checksums are verified)");

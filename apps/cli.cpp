@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <climits>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "capsubot/io.hpp"
@@ -160,21 +161,31 @@ void RequireInRange(const std::string& option, long long value, long long lo, lo
 }
 
 std::pair<int, int> ParseShard(const std::string& text) {
-  int k = 0, n = 0, used = 0;
-  if (std::sscanf(text.c_str(), "%d/%d%n", &k, &n, &used) != 2 ||
-      static_cast<std::size_t>(used) != text.size() || !std::isdigit(text[0])) {
+  const std::size_t slash = text.find('/');
+  // One count: digits only, no sign and no wrap-around.
+  const auto count = [&text](std::size_t begin, std::size_t end, int& value) {
+    const auto [stop, error] = std::from_chars(text.data() + begin, text.data() + end, value);
+    return begin < end && std::isdigit(static_cast<unsigned char>(text[begin])) != 0 &&
+           error == std::errc() && stop == text.data() + end;
+  };
+  int k = 0, n = 0;
+  if (slash == std::string::npos || !count(0, slash, k) || !count(slash + 1, text.size(), n)) {
     throw std::invalid_argument(fmt::format(
         "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", text));
   }
   return {k, n};
 }
 
+bool SplitsRun(const std::string& text) {
+  return !text.empty() && ParseShard(text) != std::pair<int, int>(0, 1);
+}
+
 void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) {
   for (const char* flag : {"--resume", "--checkpoint-seconds"}) {
     if (cmd.count(flag) > 0 && !sharded) {
       throw std::invalid_argument(fmt::format(
-          "{} is invalid without --shard: expected it only for a shard of the {} (a whole {} "
-          "is not checkpointed)",
+          "{} is invalid without --shard K/N, N >= 2: expected it only for a shard of the {} (a "
+          "whole {} is not checkpointed)",
           flag, what, what));
     }
   }

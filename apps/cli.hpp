@@ -77,11 +77,16 @@ int CapThreads(int requested, const char* who);
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
 void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
 
-/// --shard "K/N" -> (K, N) (the library checks 0 <= K < N); throws std::invalid_argument
-/// naming the option and the syntax.
+/// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX (the library checks
+/// 0 <= K < N); throws std::invalid_argument naming the option and the syntax.
 std::pair<int, int> ParseShard(const std::string& text);
 
-/// Refuses --resume or a given --checkpoint-seconds of `cmd` when not `sharded`
+/// Whether --shard `text` splits the run into N >= 2 shards: false when not given ("") and
+/// for 0/1, the one shard of the whole run, which writes the files of the run without
+/// --shard. Throws ParseShard's errors.
+bool SplitsRun(const std::string& text);
+
+/// Refuses --resume or a given --checkpoint-seconds of `cmd` when not `sharded` (N >= 2)
 /// (std::invalid_argument): only a shard is checkpointed, not the whole `what` ("map").
 void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what);
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -290,10 +291,35 @@ std::string GaitCells(const Gait& g) {
   return fmt::format("{}", fmt::join(cells, ","));
 }
 
-// The provenance of a grid: the robot's settings, --config and the grids; not the options of
-// the from-rest search (a grid does not run it) nor those of how or where the file is
-// computed (--threads, -o, --shard, --resume).
-std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd) {
+// `p` (a provenance of `cmd`) with --config FILE replaced by the settings the file supplied,
+// as flags in their place among the others (declaration order): the provenance names the
+// robot itself (two contents of one file differ), and it is the provenance of the same
+// command given without the file.
+Provenance WithConfigValues(Provenance p, const CLI::App& cmd,
+                            const std::vector<std::pair<std::string, std::string>>& config_flags) {
+  const auto config = std::find_if(p.options.begin(), p.options.end(),
+                                   [](const auto& option) { return option.first == "--config"; });
+  if (config == p.options.end()) return p;
+  p.options.erase(config);
+  std::map<std::string, std::size_t> rank;  // long name -> declaration index
+  for (const CLI::Option* option : cmd.get_options()) {
+    if (!option->get_lnames().empty())
+      rank.emplace("--" + option->get_lnames().front(), rank.size());
+  }
+  for (const auto& flag : config_flags) {
+    const auto at = std::upper_bound(
+        p.options.begin(), p.options.end(), rank.at(flag.first),
+        [&rank](std::size_t r, const auto& option) { return r < rank.at(option.first); });
+    p.options.insert(at, flag);
+  }
+  return p;
+}
+
+// The provenance of a grid: the robot's settings (those of --config as flags) and the grids;
+// not the options of the from-rest search (a grid does not run it) nor those of how or where
+// the file is computed (--threads, -o, --shard, --resume).
+std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd,
+                           const std::vector<std::pair<std::string, std::string>>& config_flags) {
   std::vector<std::string> exclude;
   for (const CLI::Option* option : cmd.get_options()) {
     if (option->get_lnames().empty()) continue;
@@ -302,19 +328,20 @@ std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd) {
                          opt.config.options.end();
     if (!setting && name != "--config" && name != "--grid") exclude.push_back(name);
   }
-  return CommandProvenance(cmd, exclude).CommandLine();
+  return WithConfigValues(CommandProvenance(cmd, exclude), cmd, config_flags).CommandLine();
 }
 
 int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   DesignGridOptions o;
   for (const std::string& spec : opt.grids) o.axes.push_back(ParseDesignGridAxis(spec));
-  o.input = BuildDesignInput(opt.config, o.axes);
+  std::vector<std::pair<std::string, std::string>> config_flags;
+  o.input = BuildDesignInput(opt.config, o.axes, &config_flags);
   if (opt.output.empty()) {
     throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
   }
   o.columns = GaitColumns();
   o.row = GaitCells;
-  o.comments.push_back(GridProvenance(opt, cmd));
+  o.comments.push_back(GridProvenance(opt, cmd, config_flags));
   o.output = opt.output;
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   o.resume = opt.resume;
@@ -340,7 +367,8 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   RejectUnusedOptions(opt, cmd);
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
-  const DesignInput input = BuildDesignInput(opt.config);
+  std::vector<std::pair<std::string, std::string>> config_flags;
+  const DesignInput input = BuildDesignInput(opt.config, {}, &config_flags);
   const DesignProgress progress = TerminalProgress("robots");
   const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
@@ -353,7 +381,9 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.json) {
     nlohmann::json j = json::DesignJson(r);
     if (with_from_rest) j["from_rest_best"] = json::FromRestBestJson(input, from_rest);
-    AddProvenanceJson(j, cmd, UnusedOptions(kOptionUses, RunOf(opt)));
+    j["provenance"] = WithConfigValues(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))),
+                                       cmd, config_flags)
+                          .Json();
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", Table(input, r));
@@ -403,7 +433,8 @@ Command AddDesignCommand(CLI::App& app) {
                   "end; - for standard output)");
   cmd->add_option("--shard", opt->shard,
                   "with --grid: compute only shard K of N (0 <= K < N), the points p with "
-                  "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files")
+                  "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files; 0/1 "
+                  "writes the file of the whole grid")
       ->type_name("K/N");
   cmd->add_flag("--resume", opt->resume,
                 "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");

@@ -4,10 +4,8 @@
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
 
-#include <cerrno>
+#include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -243,15 +241,33 @@ Value FromToml(const Setting& s, const std::string& where, const toml::node& nod
   return Range(who, shown, v.list[0], v.list[1], where);
 }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw IoError(fmt::format("config file {} cannot be read: {}", path, std::strerror(errno)));
+// A value as the text of its flag, read back by FromText to the same value.
+std::string FlagText(const Setting& s, const Value& v) {
+  switch (s.kind) {
+    case Kind::kBound:
+      return std::isinf(v.number) ? "inf" : FormatNumber(v.number);
+    case Kind::kInteger:
+      return fmt::format("{}", static_cast<long long>(v.number));
+    case Kind::kList: {
+      std::vector<std::string> items;
+      for (double x : v.list) items.push_back(FormatNumber(x));
+      return fmt::format("{}", fmt::join(items, ","));
+    }
+    case Kind::kRange:
+      return FormatNumber(v.lo) + ":" + FormatNumber(v.hi);
+    case Kind::kNumber:
+      break;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw IoError(fmt::format("config file {} cannot be read", path));
-  return text.str();
+  return FormatNumber(v.number);
+}
+
+// Whether setting `name` or an alternative of it (kExclusive) is among `names`.
+bool NamedOrAlternative(const std::set<std::string>& names, const std::string& name) {
+  if (names.count(name) > 0) return true;
+  for (const auto& [a, b] : kExclusive) {
+    if ((name == a && names.count(b) > 0) || (name == b && names.count(a) > 0)) return true;
+  }
+  return false;
 }
 
 // No two alternatives (kExclusive) from one source: `given` holds the names it set.
@@ -297,12 +313,13 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
   }
 }
 
-DesignInput BuildDesignInput(const DesignConfigOptions& o,
-                             const std::vector<DesignGridAxis>& grid) {
+DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<DesignGridAxis>& grid,
+                             std::vector<std::pair<std::string, std::string>>* config_flags) {
   DesignInput in;
   std::set<std::string> given;
+  std::vector<std::pair<int, Value>> file_values;  // the settings of the file, as read
   if (!o.config.empty()) {
-    const std::string text = ReadFile(o.config);
+    const std::string text = ReadTextFile(o.config, "--config");
     toml::table table;
     try {
       table = toml::parse(text, o.config);
@@ -320,7 +337,8 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o,
                         Show(node), o.config, Names()));
       }
       const Setting& s = kSettings[i];
-      s.set(in, FromToml(s, " in " + o.config, node));
+      file_values.emplace_back(i, FromToml(s, " in " + o.config, node));
+      s.set(in, file_values.back().second);
       from_file.insert(name);
     }
     CheckExclusive(from_file, "in " + o.config);
@@ -353,6 +371,18 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o,
     v.number = axis.Value(0);  // a valid value: the run sets each point's (DesignGridOptions)
     kSettings[i].set(in, v);
     given.insert(axis.name());
+  }
+  if (config_flags != nullptr) {
+    std::set<std::string> replaced = from_flags;
+    for (const DesignGridAxis& axis : grid) replaced.insert(axis.name());
+    std::sort(file_values.begin(), file_values.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    config_flags->clear();
+    for (const auto& [i, value] : file_values) {
+      const Setting& s = kSettings[i];
+      if (NamedOrAlternative(replaced, s.name)) continue;
+      config_flags->emplace_back(std::string("--") + s.name, FlagText(s, value));
+    }
   }
   for (const auto& group : kRequired) {
     bool any = false;

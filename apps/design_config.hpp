@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capsubot/design.hpp"
@@ -27,7 +28,12 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& options);
 /// flag for it is an error). Throws std::invalid_argument (unknown key, wrong type, bad
 /// text, a missing or doubly given setting; the message names the setting, its value and the
 /// rule) or IoError (unreadable file). The input is validated (DesignInput::Validate).
-DesignInput BuildDesignInput(const DesignConfigOptions& options,
-                             const std::vector<DesignGridAxis>& grid = {});
+/// `config_flags` (if given) receives the settings the config file supplied as the flags that
+/// give them ({"--m1", "0.2"}, in the table's order, numbers in shortest round-trip form),
+/// without those a flag or a grid axis replaced (itself or an alternative of it): with the
+/// flags given, they make the same input without the file.
+DesignInput BuildDesignInput(
+    const DesignConfigOptions& options, const std::vector<DesignGridAxis>& grid = {},
+    std::vector<std::pair<std::string, std::string>>* config_flags = nullptr);
 
 }  // namespace capsubot::app

@@ -1,5 +1,6 @@
-// capsubot merge: joins the shard files of `capsubot sweep|basins|attractors --shard K/N` into
-// the file of the whole run (library: capsubot/sweep_merge.hpp, capsubot/basin_shards.hpp).
+// capsubot merge: joins the shard files of `capsubot sweep|basins|attractors|bifurcation --shard
+// K/N` and `capsubot design --grid ... --shard K/N` into the file of the whole run (library:
+// capsubot/sweep_merge.hpp, capsubot/basin_shards.hpp, capsubot/bifurcation_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -34,11 +35,14 @@ Command AddMergeCommand(CLI::App& app) {
   auto opt = std::make_shared<MergeCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "merge",
-      "Joins the N shard files of one `capsubot sweep|basins|attractors --shard K/N` run (any "
-      "order) into OUT, byte-identical to the -o file of the run on one machine (a map of "
-      "starts: the attractors are labelled over the whole map); refuses shards of different "
-      "runs, a missing or duplicated shard and a truncated one (docs/cluster.md).");
-  cmd->add_option("OUT", opt->output, "the CSV file to write (atomically; - : standard output)")
+      "Joins the N >= 2 shard files of one `capsubot sweep|basins|attractors|bifurcation "
+      "--shard K/N` or `capsubot design --grid ... --shard K/N` run (any order) into OUT, "
+      "byte-identical to the -o file of the run on one machine (a map of starts: the attractors "
+      "are labelled over the whole map); refuses shards of different runs, a missing or "
+      "duplicated shard, a truncated one, a line longer than 1 MiB and an OUT that is one of "
+      "the shard files (docs/cluster.md).");
+  cmd->add_option("OUT", opt->output,
+                  "the CSV file to write (atomically; - : standard output), not a shard file")
       ->required();
   cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();
   return {cmd, [opt] { return Run(*opt); }, {}};

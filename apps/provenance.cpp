@@ -80,13 +80,17 @@ Provenance CommandProvenance(const CLI::App& command, const std::vector<std::str
   return p;
 }
 
-void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
-                       const std::vector<std::string>& unused) {
+Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused) {
   std::vector<std::string> exclude = {
       "--json",      "--threads",       "--output", "--trajectory",         "--events",
       "--force-csv", "--from-rest-csv", "--plot",   "--samples-per-period", "--samples"};
   exclude.insert(exclude.end(), unused.begin(), unused.end());
-  j["provenance"] = CommandProvenance(command, exclude).Json();
+  return CommandProvenance(command, exclude);
+}
+
+void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
+                       const std::vector<std::string>& unused) {
+  j["provenance"] = JsonProvenance(command, unused).Json();
 }
 
 }  // namespace capsubot::app

@@ -31,6 +31,9 @@ struct Provenance {
 /// order; `exclude` lists long names ("--threads") that do not change the content.
 Provenance CommandProvenance(const CLI::App& command, const std::vector<std::string>& exclude);
 
+/// The provenance AddProvenanceJson adds (its options: see there).
+Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
+
 /// Adds "provenance" (Provenance::Json) to a JSON output of the parsed subcommand `command`:
 /// every option that determines the content, but not --json, --threads, the paths of output
 /// files (-o/--output, --trajectory, --events, --force-csv, --from-rest-csv, --plot) or what

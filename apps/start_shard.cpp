@@ -19,7 +19,7 @@ void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const ch
                              "K (in the order x0 major); the CSV gets a comment line naming the "
                              "run, a line '# shard K/N of T starts' and empty attractor cells; "
                              "`capsubot merge OUT SHARDS...` joins the N files into the CSV of "
-                             "`capsubot {}` without --shard (docs/cluster.md)",
+                             "`capsubot {}` without --shard, which 0/1 writes (docs/cluster.md)",
                              name));
   cmd.add_flag("--resume", options.resume,
                "with --shard: continue a killed shard from <output>.checkpoint (same options "
@@ -36,7 +36,7 @@ std::vector<std::string> ShardExcludedOptions() {
 }
 
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options) {
-  RequireShardForResume(cmd, !options.shard.empty(), "map");
+  RequireShardForResume(cmd, SplitsRun(options.shard), "map");
 }
 
 int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,

@@ -12,7 +12,7 @@
 namespace capsubot::app {
 
 struct StartShardCliOptions {
-  std::string shard;  ///< "K/N"; empty: the whole map
+  std::string shard;  ///< "K/N"; empty or 0/1: the whole map
   bool resume = false;
   double checkpoint_seconds = 0.5;
 };
@@ -23,7 +23,8 @@ void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const ch
 /// The options a shard file's provenance line leaves out (besides those of no content).
 std::vector<std::string> ShardExcludedOptions();
 
-/// Refuses --resume or a changed --checkpoint-seconds without --shard (std::invalid_argument).
+/// Refuses --resume or a changed --checkpoint-seconds without --shard K/N, N >= 2
+/// (std::invalid_argument).
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options);
 
 /// Runs shard options.shard of the map `starts` of command `cmd` (output `output`, second

@@ -434,8 +434,8 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option("--shard", opt->shard,
                   "compute only shard K of N (0 <= K < N): the grid points p with p % N = K; "
                   "the file gets a line '# shard K/N of T points'; `capsubot merge OUT "
-                  "SHARD_FILES...` joins the N files into the file of the whole sweep "
-                  "(docs/cluster.md)")
+                  "SHARD_FILES...` joins the N files into the file of the whole sweep; 0/1 "
+                  "writes the file of the whole sweep (docs/cluster.md)")
       ->type_name("K/N");
   cmd->add_option("--threads", opt->sweep.threads,
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency); "

@@ -1,9 +1,12 @@
 #pragma once
 // Files and numbers as text: atomic writes that follow symlinks, removal of temporary files
-// on SIGINT/SIGTERM, round-trip number formatting and strict number parsing.
+// on SIGINT/SIGTERM, bounded reads of text files, round-trip number formatting and strict
+// number parsing.
 
+#include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <istream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -94,6 +97,27 @@ void UnregisterTempFile(int slot);
 /// then re-raise the signal with its default action (the exit status is 128 + signal).
 /// For programs (the library never installs it by itself); idempotent.
 void InstallTempFileCleanup();
+
+/// Longest line ReadLine accepts by default, and the largest file ReadTextFile reads by
+/// default (1 MiB): far above any line or input file capsubot writes or reads (a CSV row is
+/// a few hundred bytes, a --config file a few), far below what a device such as /dev/zero
+/// would make the reader hold in memory.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxTextFileBytes = std::size_t{1} << 20;
+
+/// Reads the next line of `in` into `line` without its '\n', as std::getline does (false
+/// when nothing is left; eof set when the last line has no line break), but holds at most
+/// `limit` bytes: a longer line throws std::invalid_argument "<what> is invalid: a line
+/// longer than <limit> bytes".
+bool ReadLine(std::istream& in, std::string& line, const std::string& what,
+              std::size_t limit = kMaxLineBytes);
+
+/// The whole file at `path`, read only if it holds at most `limit` bytes (at most limit + 1
+/// bytes are read: a device or an endless pipe is refused too). Throws IoError "<what> <path>
+/// cannot be read: <reason>" and std::invalid_argument "<what> <path> is invalid: expected a
+/// file of at most <limit> bytes".
+std::string ReadTextFile(const std::string& path, const std::string& what,
+                         std::size_t limit = kMaxTextFileBytes);
 
 /// Most characters WriteNumber writes ("-2.2250738585072014e-308").
 inline constexpr int kMaxNumberChars = 24;

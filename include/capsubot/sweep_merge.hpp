@@ -20,9 +20,11 @@ struct MergeSummary {
 /// the rows in grid order (point p from shard p % N) - the bytes the sweep of the whole grid
 /// writes. Checks first that every file is a shard ("# shard K/N of T points"), that all
 /// belong to the same sweep (same comment and header lines, same N and T), that none is
-/// missing or given twice, and, while joining, that none is truncated or holds extra rows.
-/// Throws std::invalid_argument naming the file(s) and the broken rule, IoError for a file
-/// that cannot be read or written; `output` is then untouched.
+/// missing or given twice, that `output` is none of them (also through a symlink or a hard
+/// link), and, while joining, that none is truncated, holds extra rows or a line longer than
+/// kMaxLineBytes; the numbers of the shard line are range-checked, never wrapped. Throws
+/// std::invalid_argument naming the file(s) and the broken rule, IoError for a file that cannot be
+/// read or written; `output` is then untouched.
 MergeSummary MergeSweepShards(const std::vector<std::string>& shards, const std::string& output);
 
 }  // namespace capsubot

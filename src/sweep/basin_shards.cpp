@@ -63,7 +63,7 @@ std::size_t ParseRow(const detail::ShardFile& s, bool u0, PhaseState& start, Mot
 
 MergeSummary MergeBasinShards(const std::vector<std::string>& paths, const std::string& output,
                               double velocity_tolerance) {
-  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "starts");
+  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "starts", output);
   const detail::ShardFile& first = shards.front();
   const bool u0 = first.header == StartMapHeader(true);
   if (!u0 && first.header != StartMapHeader(false)) {

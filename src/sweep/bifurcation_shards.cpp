@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include <cstdio>
+#include <cstdint>
 #include <stdexcept>
 
 #include "capsubot/io.hpp"
@@ -16,24 +16,32 @@ namespace {
 // The part line a shard file is positioned on: part `part` of `parts` with `rows` rows; part
 // -1 when the file is done.
 struct PartLine {
-  int part = -1;
-  int parts = 0;
-  long long rows = 0;
+  std::int64_t part = -1;
+  std::int64_t parts = 0;
+  std::int64_t rows = 0;
 };
+
+// Most parts of a study: BifurcationOptions counts them in an int.
+constexpr std::int64_t kMaxParts = INT32_MAX;
 
 // Reads the part line of `s` (or its end) and moves past it.
 PartLine ReadPart(detail::ShardFile& s) {
   PartLine p;
   if (!s.has_next) return p;
-  int used = 0;
-  if (std::sscanf(s.next.c_str(), "# part %d of %d: %lld rows%n", &p.part, &p.parts, &p.rows,
-                  &used) != 3 ||
-      static_cast<std::size_t>(used) != s.next.size() || p.part < 0 || p.part >= p.parts ||
-      p.rows < 0) {
+  if (!detail::LineReader(s.next)
+           .Word("# part ")
+           .Number(p.part)
+           .Word(" of ")
+           .Number(p.parts)
+           .Word(": ")
+           .Number(p.rows)
+           .Word(" rows")
+           .Done() ||
+      p.part >= p.parts || p.parts > kMaxParts) {
     throw std::invalid_argument(
         fmt::format("shard file {} line '{}' is invalid: expected '# part P of Q: R rows' with 0 "
-                    "<= P < Q, R >= 0",
-                    s.path, s.next));
+                    "<= P < Q <= {}, R >= 0",
+                    s.path, s.next, kMaxParts));
   }
   s.Advance();
   return p;
@@ -47,17 +55,17 @@ std::string BifurcationPartLine(int part, int parts, std::int64_t rows) {
 
 MergeSummary MergeBifurcationShards(const std::vector<std::string>& paths,
                                     const std::string& output) {
-  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "continuations");
+  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "continuations", output);
   std::vector<PartLine> at(shards.size());
   for (std::size_t k = 0; k < shards.size(); ++k) at[k] = ReadPart(shards[k]);
-  const int parts = at.front().parts;
+  const std::int64_t parts = at.front().parts;
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();
   out << shards.front().header;
   MergeSummary summary;
   summary.shards = static_cast<int>(shards.size());
   summary.points = shards.front().units;
-  for (int part = 0; part < parts; ++part) {
+  for (std::int64_t part = 0; part < parts; ++part) {
     std::size_t k = 0;
     while (k < shards.size() && at[k].part != part) ++k;
     if (k == shards.size()) {
@@ -73,7 +81,7 @@ MergeSummary MergeBifurcationShards(const std::vector<std::string>& paths,
           "count Q ({} and {})",
           shards.front().path, s.path, parts, at[k].parts));
     }
-    for (long long row = 0; row < at[k].rows; ++row) {
+    for (std::int64_t row = 0; row < at[k].rows; ++row) {
       if (!s.has_next || s.next.rfind("# part ", 0) == 0) {
         throw std::invalid_argument(
             fmt::format("shard file {} is truncated: part {} ends after {} of its {} rows", s.path,

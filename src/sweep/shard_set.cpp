@@ -3,18 +3,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
-#include <cstdio>
+#include <charconv>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include "capsubot/grid.hpp"
 #include "capsubot/io.hpp"
 
 namespace capsubot::detail {
 namespace {
-
-constexpr int kMaxUnitChars = 15;  // "points", "starts", "continuations"
 
 // How the messages name the runs of a unit.
 struct RunKind {
@@ -39,15 +40,30 @@ const RunKind& KindOf(const std::string& unit) {
 
 // Reads the shard line "# shard K/N of T <unit>" into `s`; false for any other line.
 bool ReadShardLine(const std::string& line, ShardFile& s) {
-  char unit[kMaxUnitChars + 1] = {};
-  int used = 0;
-  if (std::sscanf(line.c_str(), "# shard %d/%d of %lld %15[a-z]%n", &s.k, &s.n, &s.units, unit,
-                  &used) != 4 ||
-      static_cast<std::size_t>(used) != line.size()) {
-    return false;
-  }
-  s.unit = unit;
+  LineReader reader(line);
+  reader.Word("# shard ").Number(s.k).Word("/").Number(s.n).Word(" of ").Number(s.units).Word(" ");
+  const std::size_t unit = line.find_last_of(' ') + 1;
+  const bool letters =
+      unit < line.size() &&
+      std::all_of(line.begin() + unit, line.end(), [](char c) { return c >= 'a' && c <= 'z'; });
+  if (!letters || !reader.Word(std::string_view(line).substr(unit)).Done()) return false;
+  s.unit = line.substr(unit);
   return true;
+}
+
+// Refuses `output` when it is the file of one of the shards (also through a symlink or
+// another hard link): writing it would destroy that shard. An output that does not exist yet
+// cannot be one.
+void RequireOutputNotAShard(const std::vector<std::string>& paths, const std::string& output) {
+  std::error_code error;
+  if (output == "-" || !std::filesystem::exists(output, error)) return;
+  for (const std::string& path : paths) {
+    if (std::filesystem::equivalent(output, path, error)) {
+      throw std::invalid_argument(fmt::format(
+          "output {} is invalid: it is the shard file {}: expected a file other than the shards",
+          output, path));
+    }
+  }
 }
 
 ShardFile OpenShard(const std::string& path, const std::string& unit) {
@@ -58,7 +74,8 @@ ShardFile OpenShard(const std::string& path, const std::string& unit) {
     throw IoError(fmt::format("shard file {} cannot be read: {}", path, std::strerror(errno)));
   std::string line;
   bool marked = false;
-  while (std::getline(*s.in, line) && !line.empty() && line[0] == '#') {
+  const std::string what = "shard file " + path;
+  while (ReadLine(*s.in, line, what) && !line.empty() && line[0] == '#') {
     if (!marked && ReadShardLine(line, s)) {
       marked = true;
     } else {
@@ -83,19 +100,35 @@ ShardFile OpenShard(const std::string& path, const std::string& unit) {
 }  // namespace
 
 void ShardFile::Advance() {
-  has_next = static_cast<bool>(std::getline(*in, next));
+  has_next = ReadLine(*in, next, "shard file " + path);
   if (has_next && in->eof()) {
     throw std::invalid_argument(
         fmt::format("shard file {} is truncated: its last line has no line break", path));
   }
 }
 
-std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths,
-                                    const std::string& unit) {
+LineReader& LineReader::Word(std::string_view text) {
+  ok_ = ok_ && rest_.substr(0, text.size()) == text;
+  if (ok_) rest_.remove_prefix(text.size());
+  return *this;
+}
+
+LineReader& LineReader::Number(std::int64_t& value) {
+  ok_ = ok_ && !rest_.empty() && std::isdigit(static_cast<unsigned char>(rest_.front())) != 0;
+  if (!ok_) return *this;
+  const auto [end, error] = std::from_chars(rest_.data(), rest_.data() + rest_.size(), value);
+  ok_ = error == std::errc();
+  rest_.remove_prefix(static_cast<std::size_t>(end - rest_.data()));
+  return *this;
+}
+
+std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths, const std::string& unit,
+                                    const std::string& output) {
   if (paths.size() < 2) {
     throw std::invalid_argument(fmt::format(
         "shard files: {} given: expected the N >= 2 files of one sharded run", paths.size()));
   }
+  RequireOutputNotAShard(paths, output);
   std::vector<ShardFile> shards;
   shards.reserve(paths.size());
   for (const std::string& path : paths) shards.push_back(OpenShard(path, unit));
@@ -118,14 +151,20 @@ std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths,
                                               shards[i].n));
     }
   }
-  const int n = shards.front().n;
-  if (static_cast<int>(shards.size()) != n) {
+  const std::int64_t n = shards.front().n;
+  if (static_cast<std::int64_t>(shards.size()) != n) {
+    // The first few missing shards (N may be large: the list is not).
+    constexpr int kListed = 10;
     std::string missing;
-    for (int k = 0, i = 0; k < n; ++k) {
-      if (i < static_cast<int>(shards.size()) && shards[static_cast<std::size_t>(i)].k == k) {
+    int listed = 0;
+    for (std::int64_t k = 0, i = 0; k < n && listed <= kListed; ++k) {
+      if (i < static_cast<std::int64_t>(shards.size()) &&
+          shards[static_cast<std::size_t>(i)].k == k) {
         ++i;
-      } else {
+      } else if (++listed <= kListed) {
         missing += (missing.empty() ? "" : ", ") + fmt::format("{}/{}", k, n);
+      } else {
+        missing += ", ...";
       }
     }
     throw std::invalid_argument(
@@ -156,7 +195,7 @@ std::string ShardUnit(const std::string& path) {
     throw IoError(fmt::format("shard file {} cannot be read: {}", path, std::strerror(errno)));
   std::string line;
   ShardFile s;
-  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+  while (ReadLine(in, line, "shard file " + path) && !line.empty() && line[0] == '#') {
     if (ReadShardLine(line, s)) return s.unit;
   }
   return "";

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace capsubot::detail {
@@ -20,25 +21,41 @@ struct ShardFile {
   std::string comments;  ///< the comment lines other than the shard line
   std::string header;    ///< the header line, with its line break
   std::string unit;      ///< "points" or "starts"
-  int k = -1, n = 0;
-  long long units = 0;  ///< T: the units of the whole run
-  std::string next;     ///< the next row (valid when has_next)
+  std::int64_t k = -1, n = 0;
+  std::int64_t units = 0;  ///< T: the units of the whole run
+  std::string next;        ///< the next row (valid when has_next)
   bool has_next = false;
   std::int64_t units_read = 0;  ///< kept by the joiner
 
   /// Reads the next row into `next`; throws std::invalid_argument for a last line without its
-  /// line break (a truncated file).
+  /// line break (a truncated file) or a line longer than kMaxLineBytes.
   void Advance();
   /// Units [0, T) of shard K of N: unit u belongs to shard u % N.
   std::int64_t OwnUnits() const { return (units - k + n - 1) / n; }
 };
 
+/// Reads a line of fixed words and decimal numbers ("# shard 1/3 of 14 points"): Word
+/// matches text, Number reads digits into an int64 (no sign, no wrap-around: a number beyond
+/// int64 fails the line), Done says whether all of it matched.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view line) : rest_(line) {}
+  LineReader& Word(std::string_view text);
+  LineReader& Number(std::int64_t& value);
+  bool Done() const { return ok_ && rest_.empty(); }
+
+ private:
+  std::string_view rest_;
+  bool ok_ = true;
+};
+
 /// Opens the files, checks that each is a shard of `unit` ("points" or "starts"), that all
 /// belong to the same run (same comment lines, header, N and T), that none is missing or
-/// given twice, and returns them sorted by K (positioned on their first row). Throws
-/// std::invalid_argument naming the file(s) and the rule, IoError for a file that cannot be
-/// read.
-std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths, const std::string& unit);
+/// given twice, that `output` (the file the join writes) is none of them, and returns them
+/// sorted by K (positioned on their first row). Throws std::invalid_argument naming the
+/// file(s) and the rule, IoError for a file that cannot be read.
+std::vector<ShardFile> OpenShardSet(const std::vector<std::string>& paths, const std::string& unit,
+                                    const std::string& output);
 
 /// Checks after joining that no shard holds rows beyond its units; throws
 /// std::invalid_argument naming the file.

@@ -35,9 +35,9 @@ std::string Cell(const std::string& row, int column) {
 }  // namespace
 
 MergeSummary MergeSweepShards(const std::vector<std::string>& paths, const std::string& output) {
-  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "points");
+  std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "points", output);
   const detail::ShardFile& first = shards.front();
-  const int n = first.n;
+  const std::int64_t n = first.n;
   const int orbit = OrbitColumn(first.header);
   const auto starts_point = [orbit](const std::string& row) {
     if (orbit < 0) return true;
@@ -49,7 +49,7 @@ MergeSummary MergeSweepShards(const std::vector<std::string>& paths, const std::
   std::ostream& out = file.stream();
   out << first.comments << first.header;
   MergeSummary summary;
-  summary.shards = n;
+  summary.shards = static_cast<int>(n);
   summary.points = first.units;
   for (std::int64_t p = 0; p < first.units; ++p) {
     detail::ShardFile& s = shards[static_cast<std::size_t>(p % n)];

@@ -219,6 +219,28 @@ TEST(Cluster, BasinMapThreadedAndInShardsMergedIsTheSameFile) {
   EXPECT_TRUE(ReadFile(dir.File("merged.csv")) == bytes);
 }
 
+// --shard 0/1, the one shard of the whole run, writes the file of the run without --shard
+// (as sweep and design --grid do), which `merge` need not join.
+TEST(Cluster, BasinsAndAttractorsShardZeroOfOneIsTheWholeMap) {
+  Dir dir;
+  int checked = 0;
+  for (const char* command : {kBasins, kAttractors}) {
+    const std::string whole = dir.File("whole.csv"), one = dir.File("one.csv");
+    ASSERT_EQ(RunCli(std::string(command) + " -o " + whole).status, 0);
+    const CommandResult r = RunCli(std::string(command) + " --shard 0/1 -o " + one + " 2>&1");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_GT(ReadFile(whole).size(), 1000u);
+    EXPECT_TRUE(ReadFile(one) == ReadFile(whole)) << command;
+    const CommandResult resume =
+        RunCli(std::string(command) + " --shard 0/1 --resume -o " + one + " 2>&1");
+    EXPECT_EQ(resume.status, 2);
+    EXPECT_NE(resume.out.find("--resume is invalid without --shard K/N, N >= 2"), std::string::npos)
+        << resume.out;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 TEST(Cluster, BasinShardMergeErrorsWriteNothing) {
   Dir dir;
   const std::vector<std::string> s = BasinShards(dir);
@@ -506,8 +528,9 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
       {" --direction up --shard 0/4",
        "shard count N = 4 is invalid: the study has 3 continuations"},
       {" --shard 3/3", "shard K = 3 is invalid: expected 0 <= K < N = 3"},
-      {" --shard 0/3 --summary " + out,
-       "--summary = " + out + " is invalid: expected a file other than -o's"}};
+      {" --shard 0/3 --summary " + out, "--summary = " + out +
+                                            " is invalid: it is the file of -o = " + out +
+                                            ": expected another file"}};
   for (const auto& [args, message] : shards) {
     const CommandResult r = RunCli(std::string(kBifurcation) + args + " -o " + out + " 2>&1");
     EXPECT_EQ(r.status, 2) << args;
@@ -517,6 +540,53 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
     ++checked;
   }
   EXPECT_EQ(checked, 9);
+}
+
+TEST(Cluster, BifurcationShardZeroOfOneIsTheWholeStudy) {
+  Dir dir;
+  ASSERT_EQ(RunCli(std::string(kBifurcation) + " -o " + dir.File("i.csv") + " --summary " +
+                   dir.File("s.csv"))
+                .status,
+            0);
+  const CommandResult r = RunCli(std::string(kBifurcation) + " --shard 0/1 -o " +
+                                 dir.File("i1.csv") + " --summary " + dir.File("s1.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_GT(ReadFile(dir.File("i.csv")).size(), 1000u);
+  EXPECT_TRUE(ReadFile(dir.File("i1.csv")) == ReadFile(dir.File("i.csv")));
+  EXPECT_TRUE(ReadFile(dir.File("s1.csv")) == ReadFile(dir.File("s.csv")));
+}
+
+// Part numbers beyond an int (a 32-bit parse wraps 4294967305 to 9, 4294967297 to 1) are
+// refused with the line as written.
+TEST(Cluster, BifurcationMergeRefusesPartNumbersBeyondRange) {
+  Dir dir;
+  const auto [i, s] = BifurcationShards(dir);
+  const std::string text = ReadFile(s[1]);
+  const std::size_t part = text.find("# part 1 of ");
+  ASSERT_NE(part, std::string::npos) << text;
+  const std::size_t end = text.find('\n', part);
+  const std::string line = text.substr(part, end - part);  // "# part 1 of Q: R rows"
+  const std::string rows = line.substr(line.find(':'));
+  const std::string out = dir.File("merged.csv");
+  int checked = 0;
+  for (const std::string& forged :
+       {"# part 1 of 4294967305" + rows, "# part 4294967297 of 9" + rows,
+        "# part 1 of 99999999999" + rows}) {
+    std::string bad = text;
+    bad.replace(part, line.size(), forged);
+    const std::string file = dir.File("forged.csv");
+    std::ofstream(file, std::ios::binary) << bad;
+    const CommandResult r = Merge(out, {s[0], file, s[2]});
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find("capsubot merge: error: shard file " + file + " line '" + forged +
+                         "' is invalid: expected '# part P of Q: R rows' with 0 <= P < Q <= "
+                         "2147483647, R >= 0"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
 }
 
 TEST(Cluster, BifurcationUnderMpirunIsTheThreadedRun) {
@@ -598,7 +668,8 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
       {SlowBifurcationShard("1/3", killed, " --resume --max-period 7"),
        "resume: checkpoint " + killed + ".checkpoint is invalid for this shard"},
       {std::string(kBifurcation) + " --resume -o " + killed,
-       "--resume is invalid without --shard: expected it only for a shard of the study (a "
+       "--resume is invalid without --shard K/N, N >= 2: expected it only for a shard of the study "
+       "(a "
        "whole study is not checkpointed)"},
       {std::string(kBifurcation) + " --checkpoint-seconds 1 -o " + killed,
        "--checkpoint-seconds is invalid without --shard"}};

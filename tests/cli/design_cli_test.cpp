@@ -40,14 +40,47 @@ TEST(DesignCli, ConfigFileAndFlagsGiveTheSameDesign) {
   const auto from_flags = RunCli("design " + kFlags + kMarginsOff + " --json");
   ASSERT_EQ(from_file.status, 0) << from_file.out;
   ASSERT_EQ(from_flags.status, 0) << from_flags.out;
-  // The same design; only the provenance (the command line) differs.
-  auto file_json = nlohmann::json::parse(from_file.out);
-  auto flags_json = nlohmann::json::parse(from_flags.out);
-  EXPECT_EQ(file_json["provenance"]["options"]["--config"][0], ExampleConfig());
-  EXPECT_FALSE(flags_json["provenance"]["options"].contains("--config"));
-  file_json.erase("provenance");
-  flags_json.erase("provenance");
+  // The same design and the same provenance: the settings of the file are recorded as the
+  // flags that give them, not as the file's name (whose content may change).
+  const auto file_json = nlohmann::json::parse(from_file.out);
+  const auto flags_json = nlohmann::json::parse(from_flags.out);
+  EXPECT_FALSE(file_json["provenance"]["options"].contains("--config"));
+  EXPECT_EQ(file_json["provenance"]["options"]["--m1"], nlohmann::json::array({"0.2"}));
   EXPECT_EQ(file_json, flags_json);
+}
+
+// Shards of one grid made from two contents of one --config file are of different runs: the
+// provenance line holds the file's values (m1 = 0.4 in one of them), so merge refuses them.
+TEST(DesignCli, GridShardsOfDifferentConfigContentsDoNotMerge) {
+  const std::string grid =
+      " --margin 0 --margin-stroke 0 --stick-margin 0 --rho-max 1 "
+      "--grid e=0.5,0.7,0.9";
+  std::vector<std::string> shards;
+  for (int k = 0; k < 3; ++k) {
+    const auto config = WriteConfig(
+        "robot" + std::to_string(k) + ".toml",
+        std::string("m1 = ") + (k == 1 ? "0.4" : "0.2") +
+            "\nL = 0.02\nmu = 0.3\nforce-amplitude = 0.5\nforce-bias = 0.1\nfrequency = 20\n");
+    shards.push_back(TempPath("config_shard" + std::to_string(k) + ".csv").string());
+    const auto r = RunCli("design --config " + config.string() + grid + " --shard " +
+                          std::to_string(k) + "/3 -o " + shards.back());
+    ASSERT_EQ(r.status, 0) << r.out;
+  }
+  std::string first_line;
+  std::ifstream shard(shards[1]);
+  std::getline(shard, first_line);
+  EXPECT_NE(first_line.find(" design --m1 0.4 --L 0.02 --mu 0.3 --force-amplitude 0.5 "),
+            std::string::npos)
+      << first_line;
+  const std::string out = TempPath("config_merged.csv").string();
+  std::filesystem::remove(out);
+  const auto r =
+      RunCli("merge " + out + " " + shards[0] + " " + shards[1] + " " + shards[2] + " 2>&1");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("shard files " + shards[0] + " and " + shards[1] + " are of different"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST(DesignCli, FlagsOverrideTheConfigFile) {
@@ -157,7 +190,7 @@ TEST(DesignCli, GridRowsAreReproducedBySolve) {
   std::string comment, header;
   std::getline(in, comment);
   EXPECT_EQ(comment.rfind("# capsubot ", 0), 0U) << comment;
-  EXPECT_NE(comment.find(" design --config "), std::string::npos) << comment;
+  EXPECT_NE(comment.find(" design --m1 0.2 --L 0.02 "), std::string::npos) << comment;
   EXPECT_NE(comment.find(" --grid m2=0.18:0.3:7:log"), std::string::npos) << comment;
   std::getline(in, header);
   EXPECT_EQ(header,
@@ -284,7 +317,9 @@ std::vector<BadCase> BadCases() {
       {"grid_from_rest", "--grid m2=0.1:0.3:5 --from-rest -o x.csv" + cfg,
        "--from-rest is invalid with --grid: expected one of them"},
       {"unreadable_config", "--config /nonexistent/robot.toml",
-       "config file /nonexistent/robot.toml cannot be read: No such file or directory"},
+       "--config /nonexistent/robot.toml cannot be read: No such file or directory"},
+      {"endless_config", "--config /dev/zero",
+       "--config /dev/zero is invalid: expected a file of at most 1048576 bytes"},
   };
 }
 
@@ -298,7 +333,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists("x.csv")) << c.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 37);
+  EXPECT_EQ(checked, 38);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {

@@ -190,6 +190,29 @@ std::vector<Case> Cases() {
        "--max-events-per-period = 2e9 is invalid: expected an integer 10 <= n <= 1000000000", none},
       {"OrbitsEvaluationBound", kOrbits + " --max-evaluations 0", 2,
        "--max-evaluations = 0 is invalid: expected an integer 1 <= n <= 1000000000", none},
+      // Input files are read with bounds: a device is refused, not read forever.
+      {"DesignConfigDeviceIsRefused", "design --config /dev/zero", 2,
+       "--config /dev/zero is invalid: expected a file of at most 1048576 bytes", none},
+      {"MergeShardDeviceIsRefused",
+       "merge m.csv s0.csv /dev/zero",
+       2,
+       "shard file /dev/zero is invalid: a line longer than 1048576 bytes",
+       {"s0.csv"},
+       "printf '# shard 0/2 of 2 points\\nphi0\\n1\\n' > s0.csv"},
+      // A merge never writes over one of its shards, by any name.
+      {"MergeOutputIsAShardThroughSymlink",
+       "merge link.csv s0.csv s1.csv",
+       2,
+       "output link.csv is invalid: it is the shard file s0.csv: expected a file other than the "
+       "shards",
+       {"s0.csv", "s1.csv", "link.csv"},
+       "printf '# shard 0/2 of 2 points\\nphi0\\n1\\n' > s0.csv && printf '# shard 1/2 of 2 "
+       "points\\nphi0\\n2\\n' > s1.csv && ln -s s0.csv link.csv",
+       "",
+       "",
+       [](const fs::path& d) {
+         EXPECT_EQ(ReadFile(d / "s0.csv"), "# shard 0/2 of 2 points\nphi0\n1\n");
+       }},
       // A state beyond double precision ends the simulation with an error, no file.
       {"SimulateHugeU0",
        "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 1.7e308 "
@@ -304,7 +327,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 74;
+constexpr int kCaseCount = 77;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 

@@ -601,6 +601,65 @@ TEST(MergeRefuses, ShardsOfAnotherRunMissingDuplicatedTruncatedOrLonger) {
   EXPECT_EQ(checked, 7);
 }
 
+TEST(MergeRefuses, AnOutputThatIsOneOfTheShardsByAnyName) {
+  TempDir dir;
+  const std::vector<std::string> s =
+      RunShards("sweep --grid phi0=-pi:pi:14 --A 0.5 --c 0.5", 3, dir);
+  const std::string bytes = ReadFile(s[0]);
+  const std::string link = dir.File("link.csv"), hard = dir.File("hard.csv");
+  ASSERT_EQ(::symlink(s[0].c_str(), link.c_str()), 0);
+  ASSERT_EQ(::link(s[0].c_str(), hard.c_str()), 0);
+  int checked = 0;
+  for (const std::string& out : {s[0], link, hard}) {
+    int status = -1;
+    EXPECT_EQ(Merge(out, s, dir, &status), "capsubot merge: error: output " + out +
+                                               " is invalid: it is the shard file " + s[0] +
+                                               ": expected a file other than the shards\n");
+    EXPECT_EQ(status, 2);
+    EXPECT_TRUE(ReadFile(s[0]) == bytes) << "the shard was overwritten through " << out;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+TEST(MergeRefuses, ForgedShardNumbersAndEndlessLines) {
+  TempDir dir;
+  const std::vector<std::string> s =
+      RunShards("sweep --grid phi0=-pi:pi:14 --A 0.5 --c 0.5", 3, dir);
+  const std::string text = ReadFile(s[1]);
+  const std::string line = "# shard 1/3 of 14 points";
+  ASSERT_NE(text.find(line), std::string::npos) << text;
+  const std::string out = dir.File("merged.csv");
+  int checked = 0;
+  // Numbers that a 32-bit parse would wrap to 1/3 or 1/3: refused, not merged.
+  for (const char* forged :
+       {"# shard 1/4294967299 of 14 points", "# shard 4294967297/3 of 14 points",
+        "# shard 1/3 of 99999999999999999999 points"}) {
+    std::string bad = text;
+    bad.replace(bad.find(line), line.size(), forged);
+    const std::string file = dir.File("forged" + std::to_string(checked) + ".csv");
+    std::ofstream(file) << bad;
+    int status = -1;
+    EXPECT_NE(Merge(out, {s[0], file, s[2]}, dir, &status)
+                  .find("capsubot merge: error: shard file " + file +
+                        " is invalid: expected a "
+                        "file of `capsubot sweep --shard K/N`"),
+              std::string::npos)
+        << forged;
+    EXPECT_EQ(status, 2);
+    EXPECT_NE(::access(out.c_str(), F_OK), 0);
+    ++checked;
+  }
+  // A device that never ends a line: refused at the line limit (1 MiB), not read forever.
+  int status = -1;
+  EXPECT_EQ(Merge(out, {s[0], "/dev/zero", s[2]}, dir, &status),
+            "capsubot merge: error: shard file /dev/zero is invalid: a line longer than 1048576 "
+            "bytes\n");
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(::access(out.c_str(), F_OK), 0);
+  EXPECT_EQ(checked, 3);
+}
+
 TEST(SweepShard, BadShardSpecsAreRefused) {
   TempDir dir;
   const std::string sweep = "sweep --grid phi0=-pi:pi:5 --A 0.5 --c 0.5 -o " + dir.File("x.csv");
@@ -608,6 +667,8 @@ TEST(SweepShard, BadShardSpecsAreRefused) {
       {"3/3", "--shard = 3/3 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
       {"-1/3", "--shard -1/3 is invalid: expected K/N"},
       {"1/2/3", "--shard 1/2/3 is invalid: expected K/N"},
+      {"0/4294967297", "--shard 0/4294967297 is invalid: expected K/N"},  // not 0/1
+      {"4294967297/3", "--shard 4294967297/3 is invalid: expected K/N"},
       {"1/6", "--shard = 1/6 is invalid: the grid has only 5 points"}};
   for (const auto& [spec, message] : cases) {
     const Outcome r = RunCli(sweep + " --shard " + spec, dir.File("log"));

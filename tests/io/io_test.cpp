@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -160,6 +161,39 @@ TEST(FormatNumber, RoundTripsEveryDouble) {
 }
 
 TEST(FormatNumber, NaNIsAnEmptyCell) { EXPECT_EQ(FormatNumber(std::nan("")), ""); }
+
+TEST(ReadLine, ReadsLinesAsGetlineDoesUpToItsLimit) {
+  std::istringstream in("ab\n\ncdef\nlast");
+  std::string line;
+  std::vector<std::string> lines;
+  while (ReadLine(in, line, "test", 4)) lines.push_back(line);
+  EXPECT_EQ(lines, (std::vector<std::string>{"ab", "", "cdef", "last"}));
+  EXPECT_TRUE(in.eof());  // the last line had no line break
+  std::istringstream longer("abcde\n");
+  try {
+    ReadLine(longer, line, "shard file x.csv", 4);
+    ADD_FAILURE() << "a line of 5 bytes was read with a limit of 4";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "shard file x.csv is invalid: a line longer than 4 bytes");
+  }
+}
+
+TEST(ReadTextFile, ReadsAFileUpToItsLimitAndRefusesMore) {
+  const fs::path path = fs::temp_directory_path() / "capsubot_read_text_file.txt";
+  std::ofstream(path) << "12345";
+  EXPECT_EQ(ReadTextFile(path.string(), "--config", 5), "12345");
+  try {
+    ReadTextFile(path.string(), "--config", 4);
+    ADD_FAILURE() << "a file of 5 bytes was read with a limit of 4";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--config " + path.string() + " is invalid: expected a file of at most 4 bytes");
+  }
+  fs::remove(path);
+  // A device without end is refused after limit + 1 bytes, not read forever.
+  EXPECT_THROW(ReadTextFile("/dev/zero", "--config"), std::invalid_argument);
+  EXPECT_THROW(ReadTextFile(path.string(), "--config"), IoError);
+}
 
 }  // namespace
 }  // namespace capsubot

@@ -1,0 +1,49 @@
+// Bounded reads of text files: a line or a file longer than its limit is refused, so that a
+// device (/dev/zero) or a damaged file cannot make a reader hold unbounded memory.
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "capsubot/io.hpp"
+
+namespace capsubot {
+
+bool ReadLine(std::istream& in, std::string& line, const std::string& what, std::size_t limit) {
+  line.clear();
+  const std::istream::sentry ok(in, true);
+  if (!ok) return false;
+  std::streambuf& buffer = *in.rdbuf();
+  for (;;) {
+    const std::streambuf::int_type ch = buffer.sbumpc();
+    if (std::streambuf::traits_type::eq_int_type(ch, std::streambuf::traits_type::eof())) {
+      // As std::getline: the last line without its line break sets eof, nothing at all fails.
+      in.setstate(line.empty() ? std::ios::eofbit | std::ios::failbit : std::ios::eofbit);
+      return !line.empty();
+    }
+    if (ch == '\n') return true;
+    if (line.size() == limit) {
+      throw std::invalid_argument(
+          fmt::format("{} is invalid: a line longer than {} bytes", what, limit));
+    }
+    line.push_back(std::streambuf::traits_type::to_char_type(ch));
+  }
+}
+
+std::string ReadTextFile(const std::string& path, const std::string& what, std::size_t limit) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(fmt::format("{} {} cannot be read: {}", what, path, std::strerror(errno)));
+  std::string text(limit + 1, '\0');
+  in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw IoError(fmt::format("{} {} cannot be read", what, path));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > limit) {
+    throw std::invalid_argument(
+        fmt::format("{} {} is invalid: expected a file of at most {} bytes", what, path, limit));
+  }
+  return text;
+}
+
+}  // namespace capsubot
