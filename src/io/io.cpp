@@ -73,8 +73,9 @@ namespace {
 // "." and ".." removed lexically where it does not yet.
 std::filesystem::path Spelled(const std::string& path) {
   std::error_code error;
-  std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
-  return error ? std::filesystem::absolute(path, error).lexically_normal() : p;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error).lexically_normal();
+  std::filesystem::path p = std::filesystem::weakly_canonical(absolute, error);
+  return error ? absolute : p;
 }
 
 // Standard output, a device or a pipe: written in place, so naming it twice replaces nothing.
