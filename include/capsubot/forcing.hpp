@@ -77,6 +77,16 @@ struct ForceValues {
   double Phi = 0.0;
 };
 
+/// F with its first two derivatives and its integrals at one phase (what a root search in the
+/// phase needs).
+struct ForceJet {
+  double F = 0.0;
+  double dF = 0.0;   ///< F'
+  double ddF = 0.0;  ///< F''
+  double Pi = 0.0;
+  double Phi = 0.0;
+};
+
 /// Smallest and largest value of F on an interval.
 struct Range {
   double min = 0.0;
@@ -120,6 +130,8 @@ class Forcing {
   ForceValues Values(double phi) const;
   /// Values at a phase whose cosine and sine are known (no sincos).
   ForceValues Values(const Angle& at) const;
+  /// Values with F' and F'' at a phase whose cosine and sine are known (no sincos).
+  ForceJet Jet(const Angle& at) const;
 
   /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
   /// hi - lo <= tau. Exact (closed form for K = 1, a certified subdivision otherwise).
@@ -138,6 +150,8 @@ class Forcing {
   void SetBase();  // R and the phase of one harmonic of the base series
   void Rotate();   // fill the coefficients seen from the impact phase
   double F(const Angle& at) const;
+  template <bool kWithDerivatives>
+  ForceJet Sums(const Angle& at) const;  // Jet, or only its F, Pi and Phi
 
   double c_ = 0.0;
   double phi0_ = 0.0;

@@ -61,6 +61,22 @@ TEST_P(ForcingFamilies, DerivativeMatchesCentralDifference) {
   }
 }
 
+// Jet: the values bit for bit as Values and dF, and F'' against a central difference of F'.
+TEST_P(ForcingFamilies, JetAddsTheFirstTwoDerivativesToTheValues) {
+  const Forcing& f = GetParam().forcing;
+  constexpr double h = 1e-5;  // central difference error ~ h^2 |F''''| ~ 1e-9
+  for (double phi : {0.1, 2.2, 5.0, kTau}) {
+    const Angle at = Angle::Of(phi);
+    const ForceJet j = f.Jet(at);
+    const ForceValues v = f.Values(at);
+    EXPECT_EQ(j.F, v.F);
+    EXPECT_EQ(j.Pi, v.Pi);
+    EXPECT_EQ(j.Phi, v.Phi);
+    EXPECT_EQ(j.dF, f.dF(phi));
+    EXPECT_TRUE(Near(j.ddF, (f.dF(phi + h) - f.dF(phi - h)) / (2 * h), 1e-8)) << "phi " << phi;
+  }
+}
+
 TEST_P(ForcingFamilies, CrossingsAreExactlyTheSignChangesOfADenseScan) {
   const Forcing& f = GetParam().forcing;
   const Range r = f.Bounds(0.0, kTau);
