@@ -214,18 +214,18 @@ Range Forcing::Bounds(double lo, double hi) const { return Bounds(Angle::Of(lo),
 Range Forcing::Bounds(const Angle& lo, const Angle& hi) const {
   // The critical points of F: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi; for one
   // harmonic rb cos phi - ra sin phi = R sin(phi + delta + pi/2).
-  AngleList critical;
-  if (K_ == 1) {
-    critical =
-        detail::HarmonicRootAngles(0.0, rb_[0], -ra_[0], R_, delta_ + M_PI / 2.0, lo.phi, hi.phi);
-  } else {
+  const AngleList critical = [&] {  // built in place (the list is 800 bytes)
+    if (K_ == 1) {
+      return detail::HarmonicRootAngles(0.0, rb_[0], -ra_[0], R_, delta_ + M_PI / 2.0, lo.phi,
+                                        hi.phi);
+    }
     std::array<double, kMaxHarmonics> da{}, db{};
     for (int k = 0; k < K_; ++k) {
       da[k] = (k + 1) * rb_[k];
       db[k] = -(k + 1) * ra_[k];
     }
-    critical = AnglesOf(detail::TrigRoots(0.0, da.data(), db.data(), K_, lo.phi, hi.phi));
-  }
+    return AnglesOf(detail::TrigRoots(0.0, da.data(), db.data(), K_, lo.phi, hi.phi));
+  }();
   const double f_lo = F(lo);
   Range r{f_lo, f_lo};
   auto include = [&r](double f) {

@@ -96,8 +96,9 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
 }
 
 Solution Solve(const Forcing& forcing, const Params& params) {
-  Solution s{ComputeOrbit(forcing, params), Validity{}};  // validates params
-  s.validity = CheckValidity(s.orbit, params);
+  // The members are initialized in order, so the check sees the finished orbit (and the
+  // solution is not cleared first, as it is when the validity starts as Validity{}).
+  Solution s{ComputeOrbit(forcing, params), CheckValidity(s.orbit, params)};  // validates params
   return s;
 }
 
