@@ -34,7 +34,7 @@ detail::PhaseZero StopPhase(const Forcing& f, double T0, double Pi_tau) {
   for (int i = 0; i <= cuts.n; ++i) {
     const Angle hi = i < cuts.n ? cuts.angle[i] : Angle::Of(kTau);
     if (hi.phi > lo.phi) {
-      const double g_hi = g(hi, f.Values(hi).Pi);
+      const double g_hi = i < cuts.n ? g(hi, f.Values(hi).Pi) : -T0 * kTau;  // Pi(tau) = Pi_tau
       if (g_hi <= 0.0) return detail::PhaseRoot(f, jet, lo, hi, g_lo, g_hi);
       lo = hi;
       g_lo = g_hi;
