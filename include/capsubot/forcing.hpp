@@ -28,7 +28,7 @@ inline constexpr double kCosTau = 1.0, kSinTau = -0x1.1a62633145c07p-52;
 
 /// A phase with its cosine and sine. The force and its integrals at a phase need only these,
 /// so a phase found in closed form (a crossing of a level by one harmonic) or reached by a
-/// short step from a known one costs no sincos. Make one with Of (no default values: lists of
+/// step from a known one costs no sincos. Make one with Of (no default values: lists of
 /// angles are filled without zeroing the unused entries).
 struct Angle {
   double phi;
@@ -42,23 +42,63 @@ struct Angle {
     return {phi, std::cos(phi), std::sin(phi)};
   }
 
-  /// The angle at `to`: by angle addition from this one when the step is short (a
+  /// The angle at `to`: by angle addition from this one when the step is at most 3/2 (a
   /// polynomial in the step instead of a sincos; within a few ulp of Of(to)), else Of(to).
   Angle Toward(double to) const {
-    // For |d| <= 1/8 the first terms the series below omit, d^13/13! and d^12/12!, are below
-    // a hundredth of an ulp of sin d and of 1 - cos d.
-    constexpr double kShortStep = 0.125;
+    // Terms of the series below: for |d| <= 1/8 the first ones omitted, d^13/13! and
+    // d^12/12!, are below a hundredth of an ulp of sin d and of 1 - cos d; for |d| <= 3/2,
+    // d^25/25! and d^24/24! are.
+    constexpr double kShortStep = 0.125, kLongStep = 1.5;
     const double d = to - phi;
-    if (!(std::abs(d) <= kShortStep)) return Of(to);
-    // sin d and 1 - cos d by their Taylor series (Horner form in d^2, multiplications only),
-    // then cos(phi + d) = cos phi - (cos phi (1 - cos d) + sin phi sin d) and likewise for sin.
-    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880,
-                     s11 = -1.0 / 39916800;
-    constexpr double v2 = 1.0 / 2, v4 = -1.0 / 24, v6 = 1.0 / 720, v8 = -1.0 / 40320,
-                     v10 = 1.0 / 3628800;
-    const double d2 = d * d;
-    const double sin_d = d + d * d2 * (s3 + d2 * (s5 + d2 * (s7 + d2 * (s9 + d2 * s11))));
-    const double vers_d = d2 * (v2 + d2 * (v4 + d2 * (v6 + d2 * (v8 + d2 * v10))));
+    if (std::abs(d) <= kShortStep) return Rotated(to, d, Series<5>(d * d));
+    if (std::abs(d) <= kLongStep) return Rotated(to, d, Series<11>(d * d));
+    return Of(to);
+  }
+
+ private:
+  // (sin d - d)/(d^3) and (1 - cos d)/d^2 by their Taylor series to n terms each, in Horner
+  // form in d2 = d^2 (multiplications only).
+  struct SinVers {
+    double sin_tail;
+    double vers;
+  };
+  template <int n>
+  static SinVers Series(double d2) {
+    // s[i] = (-1)^(i+1)/(2i+3)!, v[i] = (-1)^i/(2i+2)!
+    constexpr double s[] = {-1.0 / 6,
+                            1.0 / 120,
+                            -1.0 / 5040,
+                            1.0 / 362880,
+                            -1.0 / 39916800,
+                            1.0 / 6227020800.0,
+                            -1.0 / 1307674368000.0,
+                            1.0 / 355687428096000.0,
+                            -1.0 / 121645100408832000.0,
+                            1.0 / 51090942171709440000.0,
+                            -1.0 / 25852016738884976640000.0};
+    constexpr double v[] = {1.0 / 2,
+                            -1.0 / 24,
+                            1.0 / 720,
+                            -1.0 / 40320,
+                            1.0 / 3628800,
+                            -1.0 / 479001600.0,
+                            1.0 / 87178291200.0,
+                            -1.0 / 20922789888000.0,
+                            1.0 / 6402373705728000.0,
+                            -1.0 / 2432902008176640000.0,
+                            1.0 / 1124000727777607680000.0};
+    static_assert(n <= static_cast<int>(sizeof(s) / sizeof(s[0])));
+    double ps = s[n - 1], pv = v[n - 1];
+    for (int i = n - 2; i >= 0; --i) {
+      ps = s[i] + d2 * ps;
+      pv = v[i] + d2 * pv;
+    }
+    return {ps, pv};
+  }
+  // The angle at `to` = phi + d: cos(phi + d) = cos phi - (cos phi (1 - cos d) + sin phi sin d)
+  // and likewise for the sine.
+  Angle Rotated(double to, double d, const SinVers& t) const {
+    const double d2 = d * d, sin_d = d + d * d2 * t.sin_tail, vers_d = d2 * t.vers;
     return {to, cos - (cos * vers_d + sin * sin_d), sin - (sin * vers_d - cos * sin_d)};
   }
 };
@@ -73,6 +113,16 @@ struct AngleList {
 /// F and its integrals at one phase.
 struct ForceValues {
   double F = 0.0;
+  double Pi = 0.0;
+  double Phi = 0.0;
+};
+
+/// F with its first two derivatives and its integrals at one phase (what a root search in the
+/// phase needs).
+struct ForceJet {
+  double F = 0.0;
+  double dF = 0.0;   ///< F'
+  double ddF = 0.0;  ///< F''
   double Pi = 0.0;
   double Phi = 0.0;
 };
@@ -120,6 +170,8 @@ class Forcing {
   ForceValues Values(double phi) const;
   /// Values at a phase whose cosine and sine are known (no sincos).
   ForceValues Values(const Angle& at) const;
+  /// Values with F' and F'' at a phase whose cosine and sine are known (no sincos).
+  ForceJet Jet(const Angle& at) const;
 
   /// Every phase in [lo, hi] where F crosses or touches `level`, sorted; needs
   /// hi - lo <= tau. Exact (closed form for K = 1, a certified subdivision otherwise).
@@ -138,6 +190,8 @@ class Forcing {
   void SetBase();  // R and the phase of one harmonic of the base series
   void Rotate();   // fill the coefficients seen from the impact phase
   double F(const Angle& at) const;
+  template <bool kWithDerivatives>
+  ForceJet Sums(const Angle& at) const;  // Jet, or only its F, Pi and Phi
 
   double c_ = 0.0;
   double phi0_ = 0.0;

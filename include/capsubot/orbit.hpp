@@ -33,17 +33,20 @@ struct Orbit {
   double e = kNaN;   ///< restitution
   OrbitStatus status = OrbitStatus::kNotRun;
 
-  double Pi_tau = kNaN;   ///< Pi(tau) = mean force * tau
-  double Phi_tau = kNaN;  ///< Phi(tau)
-  double phi1 = kNaN;     ///< stop phase: first root of g = Pi(tau) - T0 phi - Pi(phi) in (0, tau)
-  double psi0 = kNaN;     ///< psi(0) of the position periodicity condition
-  double psi1 = kNaN;     ///< psi(1)
-  double alpha = kNaN;    ///< mass ratio m2/(m1+m2) = psi0/(psi0 - psi1)
-  double u = kNaN;        ///< relative velocity just before the impact
-  double v_plus = kNaN;   ///< capsule velocity just after the impact
-  double x1 = kNaN;       ///< x(phi1), where the capsule stops
-  double I = kNaN;        ///< displacement per period, integral_0^phi1 v (units of L)
-  double v_mean = kNaN;   ///< mean capsule velocity I/tau (units of omega*L)
+  double Pi_tau = kNaN;    ///< Pi(tau) = mean force * tau
+  double Phi_tau = kNaN;   ///< Phi(tau)
+  double phi1 = kNaN;      ///< stop phase: first root of g = Pi(tau) - T0 phi - Pi(phi) in (0, tau)
+  double cos_phi1 = kNaN;  ///< cos phi1 (the force at phi1 needs only its cosine and sine)
+  double sin_phi1 = kNaN;  ///< sin phi1
+  double Phi1 = kNaN;      ///< Phi(phi1)
+  double psi0 = kNaN;      ///< psi(0) of the position periodicity condition
+  double psi1 = kNaN;      ///< psi(1)
+  double alpha = kNaN;     ///< mass ratio m2/(m1+m2) = psi0/(psi0 - psi1)
+  double u = kNaN;         ///< relative velocity just before the impact
+  double v_plus = kNaN;    ///< capsule velocity just after the impact
+  double x1 = kNaN;        ///< x(phi1), where the capsule stops
+  double I = kNaN;         ///< displacement per period, integral_0^phi1 v (units of L)
+  double v_mean = kNaN;    ///< mean capsule velocity I/tau (units of omega*L)
 
   bool ok() const { return status == OrbitStatus::kOk; }
   /// State along the period (needs ok()); phi is taken modulo tau into [0, tau], phi = 0

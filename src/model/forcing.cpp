@@ -161,18 +161,31 @@ double Forcing::Phi(double phi) const {
 
 ForceValues Forcing::Values(double phi) const { return Values(Angle::Of(phi)); }
 
-ForceValues Forcing::Values(const Angle& at) const {
-  // The three sums of F, Pi and Phi above, term by term in the same order.
+template <bool kWithDerivatives>
+ForceJet Forcing::Sums(const Angle& at) const {
+  // The sums of F, Pi and Phi above (and of dF), term by term in the same order, and of
+  // F'' = -sum_k k^2 (ra_k cos k phi + rb_k sin k phi).
   const double phi = at.phi;
-  double sF = 0.0, sPi = 0.0, sPhi = 0.0;
+  double sF = 0.0, sdF = 0.0, sddF = 0.0, sPi = 0.0, sPhi = 0.0;
   ForEachHarmonic(K_, at, [&](int k, double ck, double sk) {
-    const double a = ra_[k - 1], b = rb_[k - 1];
-    sF += a * ck + b * sk;
+    const double a = ra_[k - 1], b = rb_[k - 1], f = a * ck + b * sk;
+    sF += f;
+    if (kWithDerivatives) {
+      sdF += k * (b * ck - a * sk);
+      sddF -= double(k) * k * f;
+    }
     sPi += (a * sk + b * (1.0 - ck)) / k;
     sPhi += (a * (1.0 - ck) + b * (k * phi - sk)) / (double(k) * k);
   });
-  return {c_ + sF, c_ * phi + sPi, 0.5 * c_ * phi * phi + sPhi};
+  return {c_ + sF, sdF, sddF, c_ * phi + sPi, 0.5 * c_ * phi * phi + sPhi};
 }
+
+ForceValues Forcing::Values(const Angle& at) const {
+  const ForceJet j = Sums<false>(at);
+  return {j.F, j.Pi, j.Phi};
+}
+
+ForceJet Forcing::Jet(const Angle& at) const { return Sums<true>(at); }
 
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {
   if (K_ == 1) return detail::HarmonicRoots(c_ - level, ra_[0], rb_[0], R_, delta_, lo, hi);
@@ -201,18 +214,18 @@ Range Forcing::Bounds(double lo, double hi) const { return Bounds(Angle::Of(lo),
 Range Forcing::Bounds(const Angle& lo, const Angle& hi) const {
   // The critical points of F: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi; for one
   // harmonic rb cos phi - ra sin phi = R sin(phi + delta + pi/2).
-  AngleList critical;
-  if (K_ == 1) {
-    critical =
-        detail::HarmonicRootAngles(0.0, rb_[0], -ra_[0], R_, delta_ + M_PI / 2.0, lo.phi, hi.phi);
-  } else {
+  const AngleList critical = [&] {  // built in place (the list is 800 bytes)
+    if (K_ == 1) {
+      return detail::HarmonicRootAngles(0.0, rb_[0], -ra_[0], R_, delta_ + M_PI / 2.0, lo.phi,
+                                        hi.phi);
+    }
     std::array<double, kMaxHarmonics> da{}, db{};
     for (int k = 0; k < K_; ++k) {
       da[k] = (k + 1) * rb_[k];
       db[k] = -(k + 1) * ra_[k];
     }
-    critical = AnglesOf(detail::TrigRoots(0.0, da.data(), db.data(), K_, lo.phi, hi.phi));
-  }
+    return AnglesOf(detail::TrigRoots(0.0, da.data(), db.data(), K_, lo.phi, hi.phi));
+  }();
   const double f_lo = F(lo);
   Range r{f_lo, f_lo};
   auto include = [&r](double f) {

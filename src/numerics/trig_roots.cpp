@@ -100,11 +100,20 @@ struct Series {
   }
 };
 
+// fmod(d, tau) for |d| >= tau, by one subtraction of tau where that is exact (tau <= |d| <= 2 tau,
+// Sterbenz's lemma: the phases of the crossings lie within a few periods of the interval), so
+// without the library call: the same number, bit for bit. Out of line: Inside stays small.
+[[gnu::noinline]] double RemainderTau(double d) {
+  if (d >= kTau && d < 2.0 * kTau) return d - kTau;
+  if (d < -kTau && d > -2.0 * kTau) return d + kTau;
+  return std::fmod(d, kTau);
+}
+
 // Maps phi to its representative in [lo, lo + tau); true if it lies in [lo, hi]. Then p is it,
 // or the end of [lo, hi] it lies just outside of (moved is set).
 bool Inside(double phi, double lo, double hi, double& p, bool& moved) {
-  const double d = phi - lo;  // fmod(d, tau) is d itself for d in [0, tau)
-  double r = lo + (d >= 0.0 && d < kTau ? d : std::fmod(d, kTau));
+  const double d = phi - lo;  // fmod(d, tau) is d itself for |d| < tau
+  double r = lo + (std::abs(d) < kTau ? d : RemainderTau(d));
   if (r < lo) r += kTau;
   // A zero just below lo (rounding) is lo itself.
   p = lo + kTau - r < kDuplicateTol ? lo : std::min(r, hi);

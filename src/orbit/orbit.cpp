@@ -20,12 +20,13 @@ double Wrap(double phi) {
 }
 
 // phi1: the first root in (0, tau) of g = Pi(tau) - T0 phi - Pi(phi) (docs/model.md section 4),
-// with its cosine and sine. g' = -T0 - F, so g is monotone between the crossings of F = -T0:
-// walk those pieces and bracket the first sign change (g(0) = Pi(tau) > 0 and
-// g(tau) = -T0 tau < 0), then Newton's iteration inside the bracket (PhaseRoot).
-Angle StopPhase(const Forcing& f, double T0, double Pi_tau) {
-  const auto g_dg = [&](const Angle& at, const ForceValues& v) {
-    return std::pair<double, double>(Pi_tau - T0 * at.phi - v.Pi, -T0 - v.F);
+// with its cosine and sine and Phi(phi1). g' = -T0 - F, so g is monotone between the crossings
+// of F = -T0: walk those pieces and bracket the first sign change (g(0) = Pi(tau) > 0 and
+// g(tau) = -T0 tau < 0), then Halley's iteration inside the bracket (PhaseRoot).
+detail::PhaseZero StopPhase(const Forcing& f, double T0, double Pi_tau) {
+  const auto g = [&](const Angle& at, double Pi) { return Pi_tau - T0 * at.phi - Pi; };
+  const auto jet = [&](const Angle& at, const ForceJet& v) {
+    return detail::PhaseJet{g(at, v.Pi), -T0 - v.F, -v.dF, -v.ddF};
   };
   const AngleList cuts = f.CrossingAngles(-T0, 0.0, kTau);
   Angle lo = Angle::Of(0.0);
@@ -33,13 +34,13 @@ Angle StopPhase(const Forcing& f, double T0, double Pi_tau) {
   for (int i = 0; i <= cuts.n; ++i) {
     const Angle hi = i < cuts.n ? cuts.angle[i] : Angle::Of(kTau);
     if (hi.phi > lo.phi) {
-      const double g_hi = g_dg(hi, f.Values(hi)).first;
-      if (g_hi <= 0.0) return detail::PhaseRoot(f, g_dg, lo, hi, g_lo, g_hi);
+      const double g_hi = i < cuts.n ? g(hi, f.Values(hi).Pi) : -T0 * kTau;  // Pi(tau) = Pi_tau
+      if (g_hi <= 0.0) return detail::PhaseRoot(f, jet, lo, hi, g_lo, g_hi);
       lo = hi;
       g_lo = g_hi;
     }
   }
-  return Angle::Of(kTau);  // unreachable: g(tau) < 0
+  return {Angle::Of(kTau), f.Phi(kTau)};  // unreachable: g(tau) < 0
 }
 
 }  // namespace
@@ -68,9 +69,12 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
     o.status = OrbitStatus::kNonPositiveMeanForce;
     return o;
   }
-  const Angle stop = StopPhase(forcing, T0, o.Pi_tau);
-  o.phi1 = stop.phi;
-  const double phi1 = o.phi1, Phi1 = forcing.Values(stop).Phi;
+  const detail::PhaseZero stop = StopPhase(forcing, T0, o.Pi_tau);
+  o.phi1 = stop.at.phi;
+  o.cos_phi1 = stop.at.cos;
+  o.sin_phi1 = stop.at.sin;
+  o.Phi1 = stop.Phi;
+  const double phi1 = o.phi1, Phi1 = o.Phi1;
   // psi(alpha) = e tau Pi(tau)/(1+e) - (1-alpha) Phi(tau)
   //              - alpha (T0 phi1^2/2 + (tau - phi1) Pi(tau) + Phi(phi1))
   const double head = e * tau * o.Pi_tau / (1.0 + e);
@@ -108,8 +112,7 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
 
 double Orbit::x(double phi) const {
   phi = Wrap(phi);
-  return detail::RelativePosition(*this, phi, forcing.Phi(phi),
-                                  phi <= phi1 ? 0.0 : forcing.Phi(phi1));  // Phi1 on the rest
+  return detail::RelativePosition(*this, phi, forcing.Phi(phi), Phi1);
 }
 
 double Orbit::dx(double phi) const {

@@ -48,12 +48,10 @@ Energy OrbitEnergy(const Orbit& o) {
 
   std::array<double, kMaxBreaks> breaks{};
   int n = 0;
-  detail::ForEachMonotonePiece(o, Angle::Of(o.phi1),
-                               [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
-                                 breaks[n++] = lo.phi;
-                                 if (dlo * dhi < 0.0)
-                                   breaks[n++] = detail::VelocityZero(o, lo, hi, dlo, dhi).phi;
-                               });
+  detail::ForEachMonotonePiece(o, [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
+    breaks[n++] = lo.phi;
+    if (dlo * dhi < 0.0) breaks[n++] = detail::VelocityZero(o, lo, hi, dlo, dhi).at.phi;
+  });
   const PhaseList zeros = o.forcing.Crossings(0.0, 0.0, kTau);
   for (int i = 0; i < zeros.n; ++i) breaks[n++] = zeros.phi[i];
   breaks[n++] = o.phi1;

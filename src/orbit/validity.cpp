@@ -16,25 +16,23 @@ void Set(Validity& v, Condition c, bool violated) {
 
 // Exact extrema of x: x' is monotone on each piece of detail::ForEachMonotonePiece, so each
 // piece holds at most one zero of x', a minimum where x' rises through it, else a maximum.
-void PositionExtrema(const Orbit& o, const Angle& phi1, Validity& v) {
+void PositionExtrema(const Orbit& o, Validity& v) {
   v.x_min = 1.0;  // x(0) = x(tau) = 1
   v.phi_x_min = 0.0;
-  const double Phi1 = o.forcing.Values(phi1).Phi;
-  detail::ForEachMonotonePiece(
-      o, phi1, [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
-        if (!(dlo * dhi < 0.0)) return;
-        const Angle r = detail::VelocityZero(o, lo, hi, dlo, dhi);
-        const double xr = detail::RelativePosition(o, r.phi, o.forcing.Values(r).Phi, Phi1);
-        if (dlo < 0.0) {  // x' from - to +: local minimum
-          if (xr < v.x_min) {
-            v.x_min = xr;
-            v.phi_x_min = r.phi;
-          }
-        } else if (!(xr <= v.x_max)) {  // local maximum (x_max starts as NaN)
-          v.x_max = xr;
-          v.phi_x_max = r.phi;
-        }
-      });
+  detail::ForEachMonotonePiece(o, [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
+    if (!(dlo * dhi < 0.0)) return;
+    const detail::PhaseZero r = detail::VelocityZero(o, lo, hi, dlo, dhi);
+    const double xr = detail::RelativePosition(o, r.at.phi, r.Phi, o.Phi1);
+    if (dlo < 0.0) {  // x' from - to +: local minimum
+      if (xr < v.x_min) {
+        v.x_min = xr;
+        v.phi_x_min = r.at.phi;
+      }
+    } else if (!(xr <= v.x_max)) {  // local maximum (x_max starts as NaN)
+      v.x_max = xr;
+      v.phi_x_max = r.at.phi;
+    }
+  });
 }
 
 }  // namespace
@@ -74,15 +72,14 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
     Set(v, Condition::kPositiveMeanForce, true);
     return v;
   }
-  const Angle phi1 = Angle::Of(o.phi1);
-  const Range rest = o.forcing.Bounds(phi1, Angle::Of(kTau));
+  const Range rest = o.forcing.Bounds(detail::StopAngle(o), Angle::Of(kTau));
   v.rest_force = std::max(std::abs(rest.min), std::abs(rest.max));
   Set(v, Condition::kStick, !WithinForceBound(v.rest_force, (1.0 - params.stick_margin) * o.T0));
   if (!o.ok()) {
     Set(v, Condition::kMassRatio, true);
     return v;
   }
-  PositionExtrema(o, phi1, v);
+  PositionExtrema(o, v);
   Set(v, Condition::kLeftWall, !(v.x_min >= 0.0));
   Set(v, Condition::kRightWall, v.x_max > 1.0);
   // After the impact x' = -e u < 0; for e = 0 the inner body must accelerate away: x''(0+) < 0.
@@ -99,8 +96,9 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
 }
 
 Solution Solve(const Forcing& forcing, const Params& params) {
-  Solution s{ComputeOrbit(forcing, params), Validity{}};  // validates params
-  s.validity = CheckValidity(s.orbit, params);
+  // The members are initialized in order, so the check sees the finished orbit (and the
+  // solution is not cleared first, as it is when the validity starts as Validity{}).
+  Solution s{ComputeOrbit(forcing, params), CheckValidity(s.orbit, params)};  // validates params
   return s;
 }
 

@@ -6,8 +6,6 @@
 // of F on the rest [phi1, tau] (docs/model.md sections 3 and 4). Cut at the crossings of those
 // levels, each piece has a monotone x' and so at most one zero of x'.
 
-#include <utility>
-
 #include "capsubot/orbit.hpp"
 #include "orbit/phase_root.hpp"
 
@@ -39,40 +37,53 @@ inline double RelativeAcceleration(const Orbit& o, double phi, double F) {
   return F / o.alpha;
 }
 
+/// x''' or x'''' at phi in [0, tau] given F' or F'' there: the derivatives of
+/// RelativeAcceleration on its piece.
+inline double RelativeHigherDerivative(const Orbit& o, double phi, double dF) {
+  if (phi < o.phi1) return dF / (o.alpha * (1.0 - o.alpha));
+  return dF / o.alpha;
+}
+
+/// phi1 with the cosine and sine ComputeOrbit found it with.
+inline Angle StopAngle(const Orbit& o) { return {o.phi1, o.cos_phi1, o.sin_phi1}; }
+
 /// Calls visit(lo, hi, dlo, dhi) for each piece [lo, hi] of [0, tau] on which x' is monotone,
-/// in increasing order, with x' at its ends, dlo and dhi; the pieces tile [0, tau] and phi1
-/// (given with its cosine and sine) is always a piece boundary. Needs o.ok().
+/// in increasing order, with x' at its ends, dlo and dhi; the pieces tile [0, tau] and phi1 is
+/// always a piece boundary. Needs o.ok().
 template <class Visit>
-void ForEachMonotonePiece(const Orbit& o, const Angle& phi1, Visit&& visit) {
+void ForEachMonotonePiece(const Orbit& o, Visit&& visit) {
   Angle a = Angle::Of(0.0);                    // where Pi = 0
   double d_a = RelativeVelocity(o, 0.0, 0.0);  // x' at a
-  const auto piece = [&](const Angle& b) {
-    const double d_b = RelativeVelocity(o, b.phi, o.forcing.Values(b).Pi);
+  const auto piece = [&](const Angle& b, double Pi_b) {
+    const double d_b = RelativeVelocity(o, b.phi, Pi_b);
     visit(a, b, d_a, d_b);
     a = b;
     d_a = d_b;
   };
-  const auto walk = [&](double level, const Angle& end) {
+  // The pieces from a to `end`, cut where F crosses `level`; Pi at `end` is known.
+  const auto walk = [&](double level, const Angle& end, double Pi_end) {
     const AngleList cuts = o.forcing.CrossingAngles(level, a.phi, end.phi);
     for (int i = 0; i < cuts.n; ++i) {
-      if (cuts.angle[i].phi > a.phi && cuts.angle[i].phi < end.phi) piece(cuts.angle[i]);
+      const Angle& cut = cuts.angle[i];
+      if (cut.phi > a.phi && cut.phi < end.phi) piece(cut, o.forcing.Values(cut).Pi);
     }
-    piece(end);
+    piece(end, Pi_end);
   };
-  walk(-o.alpha * o.T0, phi1);
-  walk(0.0, Angle::Of(kTau));
+  walk(-o.alpha * o.T0, StopAngle(o), o.Pi_tau - o.T0 * o.phi1);  // g(phi1) = 0
+  walk(0.0, Angle::Of(kTau), o.Pi_tau);
 }
 
 /// The zero of x' in a monotone piece [lo, hi] whose ends have x' of opposite signs, dlo and
-/// dhi (known to the caller), with its cosine and sine: PhaseRoot with x' and x'' from one
+/// dhi (known to the caller), with Phi there: PhaseRoot with x' and its derivatives from one
 /// evaluation of the force per step; the same formulas as Orbit::dx and Orbit::ddx.
-inline Angle VelocityZero(const Orbit& o, const Angle& lo, const Angle& hi, double dlo,
-                          double dhi) {
-  const auto dx_ddx = [&o](const Angle& at, const ForceValues& f) {
-    return std::pair<double, double>(RelativeVelocity(o, at.phi, f.Pi),
-                                     RelativeAcceleration(o, at.phi, f.F));
+inline PhaseZero VelocityZero(const Orbit& o, const Angle& lo, const Angle& hi, double dlo,
+                              double dhi) {
+  const auto jet = [&o](const Angle& at, const ForceJet& f) {
+    return PhaseJet{RelativeVelocity(o, at.phi, f.Pi), RelativeAcceleration(o, at.phi, f.F),
+                    RelativeHigherDerivative(o, at.phi, f.dF),
+                    RelativeHigherDerivative(o, at.phi, f.ddF)};
   };
-  return PhaseRoot(o.forcing, dx_ddx, lo, hi, dlo, dhi);
+  return PhaseRoot(o.forcing, jet, lo, hi, dlo, dhi);
 }
 
 }  // namespace capsubot::detail

@@ -19,7 +19,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Bumped whenever the bytes of a design grid change for the same options (invalidates
 // checkpoints).
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
 // What a design grid may vary: the name (the design's setting), the domain and where the value
 // goes. A new input is one row here and one enumerator.

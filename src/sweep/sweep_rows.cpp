@@ -18,7 +18,7 @@ namespace capsubot::detail {
 namespace {
 
 // Bumped whenever the bytes of a sweep change for the same options (invalidates checkpoints).
-constexpr int kFormatVersion = 4;
+constexpr int kFormatVersion = 5;
 
 bool RobotMode(const SweepOptions& o) { return o.grid.Has(SweepParameter::kalpha); }
 

@@ -61,6 +61,22 @@ TEST_P(ForcingFamilies, DerivativeMatchesCentralDifference) {
   }
 }
 
+// Jet: the values bit for bit as Values and dF, and F'' against a central difference of F'.
+TEST_P(ForcingFamilies, JetAddsTheFirstTwoDerivativesToTheValues) {
+  const Forcing& f = GetParam().forcing;
+  constexpr double h = 1e-5;  // central difference error ~ h^2 |F''''| ~ 1e-9
+  for (double phi : {0.1, 2.2, 5.0, kTau}) {
+    const Angle at = Angle::Of(phi);
+    const ForceJet j = f.Jet(at);
+    const ForceValues v = f.Values(at);
+    EXPECT_EQ(j.F, v.F);
+    EXPECT_EQ(j.Pi, v.Pi);
+    EXPECT_EQ(j.Phi, v.Phi);
+    EXPECT_EQ(j.dF, f.dF(phi));
+    EXPECT_TRUE(Near(j.ddF, (f.dF(phi + h) - f.dF(phi - h)) / (2 * h), 1e-8)) << "phi " << phi;
+  }
+}
+
 TEST_P(ForcingFamilies, CrossingsAreExactlyTheSignChangesOfADenseScan) {
   const Forcing& f = GetParam().forcing;
   const Range r = f.Bounds(0.0, kTau);
@@ -267,19 +283,26 @@ TEST(Forcing, RejectsMismatchedOrTooManyCoefficients) {
   }
 }
 
-// Angles without sincos: a short step by angle addition and the closed-form crossings of one
-// harmonic give the cosine and sine of their phase to a few ulp of std::cos and std::sin.
+// Angles without sincos: a step by angle addition (the short and the long series, and beyond
+// 3/2 a fresh sincos), a chain of such steps as in a root search, and the closed-form
+// crossings of one harmonic give the cosine and sine of their phase to a few ulp of std::cos
+// and std::sin.
 TEST(Forcing, AnglesWithoutSincosMatchTheLibrary) {
+  constexpr double kStepTol = 1e-15;  // one step: a few ulp of 1 (measured: at most 2)
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> phase(-kTau, kTau), step(-0.2, 0.2);
+  std::uniform_real_distribution<double> phase(-kTau, kTau), step(-2.0, 2.0);
   int steps = 0, crossings = 0;
-  for (int i = 0; i < 1000; ++i) {
+  for (int i = 0; i < 4000; ++i) {
     const Angle from = Angle::Of(phase(rng));
-    const Angle to = from.Toward(from.phi + step(rng));  // beyond 1/8: a fresh sincos
-    ASSERT_NEAR(to.cos, std::cos(to.phi), kRoundingTol);
-    ASSERT_NEAR(to.sin, std::sin(to.phi), kRoundingTol);
+    const Angle to = from.Toward(from.phi + step(rng));
+    ASSERT_NEAR(to.cos, std::cos(to.phi), kStepTol) << "step " << to.phi - from.phi;
+    ASSERT_NEAR(to.sin, std::sin(to.phi), kStepTol) << "step " << to.phi - from.phi;
     ++steps;
   }
+  Angle chain = Angle::Of(0.3);  // 100 steps of up to 3/2, none with a sincos
+  for (int i = 0; i < 100; ++i) chain = chain.Toward(chain.phi + 0.75 * step(rng));
+  EXPECT_NEAR(chain.cos, std::cos(chain.phi), kRoundingTol);
+  EXPECT_NEAR(chain.sin, std::sin(chain.phi), kRoundingTol);
   const Forcing f = Forcing::Fourier(0.1, {0.3}, {-0.4}, 1.1);
   for (double level : {-0.35, 0.0, 0.2, 0.55}) {
     const AngleList a = f.CrossingAngles(level, 0.5, 0.5 + kTau);
@@ -294,7 +317,7 @@ TEST(Forcing, AnglesWithoutSincosMatchTheLibrary) {
       ++crossings;
     }
   }
-  EXPECT_EQ(steps, 1000);
+  EXPECT_EQ(steps, 4000);
   EXPECT_EQ(crossings, 8);
 }
 

@@ -262,5 +262,30 @@ TEST(TrigRoots, ReportsATouchOnceAndNothingJustBelowIt) {
   }
 }
 
+// The closed form for one harmonic reduces theta - delta into [lo, lo + tau) (by one
+// subtraction of tau where that is exact, else by fmod): the same zeros whatever multiple of
+// the period delta carries, from k = 0 (no reduction) to 4 periods either way.
+TEST(HarmonicRoots, FindsTheSameZerosWhateverPeriodsThePhaseCarries) {
+  constexpr double kShiftTol = 1e-12;  // delta + k tau rounds to a few ulp of 4 tau
+  const double delta0 = 0.7, R = 0.05, c0 = 0.02;
+  const double a = R * std::sin(delta0), b = R * std::cos(delta0);
+  int found = 0;
+  for (double lo : {-3.0, -0.5, 0.0, 1.0, 2.5, 5.0}) {
+    const double hi = lo + 0.9 * kTau;
+    const PhaseList ref = detail::HarmonicRoots(c0, a, b, R, delta0, lo, hi);
+    for (int k = -4; k <= 4; ++k) {
+      const PhaseList x = detail::HarmonicRoots(c0, a, b, R, delta0 + k * kTau, lo, hi);
+      ASSERT_EQ(x.n, ref.n) << "lo " << lo << ", k " << k;
+      for (int i = 0; i < x.n; ++i) {
+        EXPECT_TRUE(testing::Near(x.phi[i], ref.phi[i], kShiftTol)) << "lo " << lo << ", k " << k;
+        EXPECT_TRUE(
+            testing::Near(c0 + a * std::cos(x.phi[i]) + b * std::sin(x.phi[i]), 0.0, kShiftTol));
+      }
+    }
+    found += ref.n;
+  }
+  EXPECT_GE(found, 10);  // two zeros a period, 0.9 of a period searched from each lo
+}
+
 }  // namespace
 }  // namespace capsubot
