@@ -641,11 +641,12 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
   const std::string reference = dir.File("reference.csv"), killed = dir.File("killed.csv");
   const std::string summary = killed + ".summary";
   ASSERT_EQ(RunCli(SlowBifurcationShard("1/3", reference, " --threads 2")).status, 0);
-  // Started in the background, killed (SIGKILL) once the checkpoint of -o records a part (the
-  // shell waits at most 60 s).
+  // Started in the background, killed (SIGKILL) once the checkpoints of both files record a
+  // part (-o's is written first; the shell waits at most 60 s).
   const CommandResult kill =
       Shell(std::string(CAPSUBOT_CLI) + " " + SlowBifurcationShard("1/3", killed, " --threads 1") +
             " > /dev/null & pid=$!; for i in $(seq 6000); do grep -qs '^points [1-9]' " + killed +
+            ".checkpoint && grep -qs '^points [1-9]' " + summary +
             ".checkpoint && break; sleep 0.01; done; kill -9 $pid; wait $pid; echo status $?");
   ASSERT_NE(kill.out.find("status 137"), std::string::npos)
       << "the shard ended before it could be killed: " << kill.out;
