@@ -11,24 +11,42 @@
 
 namespace capsubot {
 
+namespace {
+
+// The bytes a stream buffer already holds, scanned in place (as std::getline does inside the
+// library): its get area's pointers are protected members of std::streambuf, reached through
+// this derived type.
+struct GetArea : std::streambuf {
+  static const char* Begin(std::streambuf& b) { return (b.*&GetArea::gptr)(); }
+  static const char* End(std::streambuf& b) { return (b.*&GetArea::egptr)(); }
+  static void Skip(std::streambuf& b, std::size_t n) { (b.*&GetArea::gbump)(static_cast<int>(n)); }
+};
+
+}  // namespace
+
 bool ReadLine(std::istream& in, std::string& line, const std::string& what, std::size_t limit) {
   line.clear();
   const std::istream::sentry ok(in, true);
   if (!ok) return false;
   std::streambuf& buffer = *in.rdbuf();
   for (;;) {
-    const std::streambuf::int_type ch = buffer.sbumpc();
-    if (std::streambuf::traits_type::eq_int_type(ch, std::streambuf::traits_type::eof())) {
+    if (std::streambuf::traits_type::eq_int_type(buffer.sgetc(),
+                                                 std::streambuf::traits_type::eof())) {
       // As std::getline: the last line without its line break sets eof, nothing at all fails.
       in.setstate(line.empty() ? std::ios::eofbit | std::ios::failbit : std::ios::eofbit);
       return !line.empty();
     }
-    if (ch == '\n') return true;
-    if (line.size() == limit) {
+    const char* begin = GetArea::Begin(buffer);  // sgetc() filled the get area
+    const auto held = static_cast<std::size_t>(GetArea::End(buffer) - begin);
+    const void* found = std::memchr(begin, '\n', held);
+    const std::size_t n = found != nullptr ? static_cast<const char*>(found) - begin : held;
+    if (line.size() + n > limit) {
       throw std::invalid_argument(
           fmt::format("{} is invalid: a line longer than {} bytes", what, limit));
     }
-    line.push_back(std::streambuf::traits_type::to_char_type(ch));
+    line.append(begin, n);
+    GetArea::Skip(buffer, found != nullptr ? n + 1 : n);
+    if (found != nullptr) return true;
   }
 }
 

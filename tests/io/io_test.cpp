@@ -178,6 +178,31 @@ TEST(ReadLine, ReadsLinesAsGetlineDoesUpToItsLimit) {
   }
 }
 
+TEST(ReadLine, ReadsAFileWhoseLinesCrossItsBufferAsGetlineDoes) {
+  // Lines of 1 to 40,000 bytes from a file: many cross the file buffer's refills (a few KiB),
+  // and the last one has no line break; std::getline reading the same file is the reference.
+  const fs::path path = fs::temp_directory_path() / "capsubot_read_line.txt";
+  {
+    std::ofstream out(path, std::ios::binary);
+    for (int i = 0; i < 200; ++i) {
+      out << std::string(static_cast<std::size_t>(1 + (i * 7919) % 40000),
+                         static_cast<char>('a' + i % 26));
+      if (i < 199) out << '\n';
+    }
+  }
+  std::ifstream ours(path, std::ios::binary), reference(path, std::ios::binary);
+  std::string line, expected;
+  int lines = 0;
+  while (ReadLine(ours, line, "test", 40000)) {
+    ASSERT_TRUE(std::getline(reference, expected));
+    EXPECT_EQ(line, expected) << "line " << lines;
+    ++lines;
+  }
+  EXPECT_FALSE(std::getline(reference, expected));
+  EXPECT_EQ(lines, 200);
+  fs::remove(path);
+}
+
 TEST(ReadTextFile, ReadsAFileUpToItsLimitAndRefusesMore) {
   const fs::path path = fs::temp_directory_path() / "capsubot_read_text_file.txt";
   std::ofstream(path) << "12345";
