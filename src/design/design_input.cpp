@@ -82,6 +82,24 @@ void DesignInput::Validate() const {
   Require(scan_points >= 3 && scan_points <= kMaxScanPoints,
           fmt::format("scan_points = {} is invalid: expected 3 <= scan_points <= {}", scan_points,
                       kMaxScanPoints));
+  // The dimensionless model (MapToModel) at the corners of the searched ranges must exist in
+  // double precision: extreme SI inputs (f = 1e300 Hz, m2 = 1e300 kg) would round T0, the
+  // force or alpha to 0, 1 or infinity.
+  double force_bound = force.bias + (force.fourier() ? 0.0 : force.amplitude);  // [N]
+  for (const double c : force.cos) force_bound += std::abs(c);
+  for (const double c : force.sin) force_bound += std::abs(c);
+  for (const double m2 : {lo, hi}) {
+    for (const double f : {frequency_min, frequency_max}) {
+      const double w2L = (kTau * f) * (kTau * f) * L, T0 = mu * g / w2L;
+      const double largest = force_bound / ((m1 + m2) * w2L), alpha = m2 / (m1 + m2);
+      Require(std::isfinite(T0) && T0 > 0.0 && std::isfinite(largest) && alpha > 0.0 && alpha < 1.0,
+              fmt::format("inputs m2 = {} kg, f = {} Hz are invalid: with m1 = {} kg, L = {} m, "
+                          "mu = {}, g = {} m/s^2 they give T0 = {}, a force up to {} and alpha = "
+                          "{} (dimensionless): expected T0 > 0, a finite force and 0 < alpha < 1 "
+                          "in double precision (inputs of realistic size)",
+                          m2, f, m1, L, mu, g, T0, largest, alpha));
+    }
+  }
 }
 
 DesignModel MapToModel(const DesignInput& in, double m2, double frequency) {

@@ -156,6 +156,15 @@ std::vector<Case> Cases() {
        "--over = e=0.4:0.6:1000000000 is invalid: 1000000000 values: expected at most 100000 "
        "values",
        none},
+      // SI inputs whose dimensionless model leaves double precision: named, with what they give.
+      {"DesignFrequencyBeyondDoublePrecision",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 1e300",
+       2, "inputs m2 = 0.002 kg, f = 1e+300 Hz are invalid: with m1 = 0.2 kg, L = 0.02 m", none},
+      {"DesignInnerMassBeyondDoublePrecision",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --m2-range 1:1e300",
+       2, "inputs m2 = 1e+300 kg, f = 20 Hz are invalid", none},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},
@@ -328,7 +337,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 77;
+constexpr int kCaseCount = 79;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
