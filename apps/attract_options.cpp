@@ -21,8 +21,10 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   cmd.add_option("--transient", o.motion.transient,
                  "forcing periods simulated before the motion is recorded, >= 0")
       ->capture_default_str();
-  cmd.add_option("--record", o.motion.record,
-                 "forcing periods recorded (period, impacts, mean velocity), >= 2 max-period")
+  cmd.add_option(
+         "--record", o.motion.record,
+         "forcing periods recorded (period, impacts, mean velocity), 2 max-period <= N <= 1e7 "
+         "(about 50 bytes a period per thread)")
       ->capture_default_str();
   cmd.add_option("--max-period", o.motion.max_period,
                  "largest period searched, in forcing periods (0 is reported when none is found)")

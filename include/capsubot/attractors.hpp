@@ -38,10 +38,14 @@ struct PhaseState {
   double psi = kNaN;  ///< forcing phase, in [0, tau)
 };
 
+/// The most periods a long run records (MotionOptions::record): the record holds about 50
+/// bytes a period per thread (its section states and impacts), 0.5 GB at this bound.
+inline constexpr int kMaxRecord = 10000000;
+
 /// How a long-run motion is simulated and classified.
 struct MotionOptions {
   int transient = 200;  ///< periods simulated before the record; >= 0
-  int record = 100;     ///< periods recorded; >= 2 * max_period
+  int record = 100;     ///< periods recorded; 2 * max_period <= record <= kMaxRecord
   int max_period = 8;   ///< largest period searched, in forcing periods; 1 <= p <= 64
   /// Two section states are the same when their modes agree and x, u and v differ by at most
   /// this (units of L and omega L); > 0.

@@ -28,6 +28,9 @@ namespace capsubot {
 namespace {
 
 constexpr int kMaxSteps = 10000000;
+// Periods recorded along one continuation (steps x record): an impact row holds about 50
+// bytes and a period a few impacts, so about 10 GB at this bound.
+constexpr std::int64_t kMaxRecordedPeriods = 100000000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The robot at one value of the parameter.
@@ -394,6 +397,14 @@ void BifurcationOptions::Validate() const {
   if (steps < 2 || steps > kMaxSteps) {
     throw std::invalid_argument(
         fmt::format("steps = {} is invalid: expected 2 <= steps <= {}", steps, kMaxSteps));
+  }
+  // A continuation's rows are held until it is written: bound its recorded periods.
+  if (static_cast<std::int64_t>(steps) * motion.record > kMaxRecordedPeriods) {
+    throw std::invalid_argument(fmt::format(
+        "steps = {} with record = {} is invalid: {} recorded periods a continuation: expected "
+        "steps x record <= {} (its impacts are held in memory until written)",
+        steps, motion.record, static_cast<std::int64_t>(steps) * motion.record,
+        kMaxRecordedPeriods));
   }
   if (!up && !down) {
     throw std::invalid_argument("direction is invalid: expected up, down or both");

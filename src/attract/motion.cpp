@@ -37,9 +37,9 @@ void MotionOptions::Validate() const {
     throw std::invalid_argument(fmt::format(
         "max_period = {} is invalid: expected 1 <= max_period <= {}", max_period, kMaxPeriodLimit));
   }
-  if (record < 2 * max_period || record > 100000000) {
+  if (record < 2 * max_period || record > kMaxRecord) {
     throw std::invalid_argument(
-        fmt::format("record = {} is invalid: expected 2 * max_period = {} <= record <= 1e8 periods",
+        fmt::format("record = {} is invalid: expected 2 * max_period = {} <= record <= 1e7 periods",
                     record, 2 * max_period));
   }
   if (!(state_tolerance > 0.0) || !std::isfinite(state_tolerance)) {

@@ -257,7 +257,7 @@ TEST(AttractorsInput, BadOptionsAreNamedWithTheirValueAndRule) {
   o = FromRestOptions{};
   o.attractor.motion.record = 10;
   EXPECT_EQ(message(o, 0.5),
-            "record = 10 is invalid: expected 2 * max_period = 16 <= record <= 1e8 periods");
+            "record = 10 is invalid: expected 2 * max_period = 16 <= record <= 1e7 periods");
   o = FromRestOptions{};
   o.attractor.motion.max_period = 0;
   EXPECT_EQ(message(o, 0.5), "max_period = 0 is invalid: expected 1 <= max_period <= 64");

@@ -82,7 +82,7 @@ TEST(AttractorsCli, BadInputIsOneLineNamingTheParameter) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out,
             "capsubot attractors: error: record = 3 is invalid: expected 2 * max_period = 16 <= "
-            "record <= 1e8 periods\n");
+            "record <= 1e7 periods\n");
 }
 
 TEST(PeriodicCli, FromRestFindsTheThreeImpactMotionWithItsMultipliers) {

@@ -165,6 +165,15 @@ std::vector<Case> Cases() {
        "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
        "--frequency 20 --m2-range 1:1e300",
        2, "inputs m2 = 1e+300 kg, f = 20 Hz are invalid", none},
+      // What a long run holds in memory is bounded before it starts.
+      {"AttractorsRecordIsBounded", "attractors " + kRobot + " --starts 1x1 --record 100000000", 2,
+       "record = 100000000 is invalid: expected 2 * max_period = 16 <= record <= 1e7 periods",
+       none},
+      {"BifurcationRecordedPeriodsAreBounded",
+       "bifurcation " + kRobot + " --param T0 --from 0.08 --to 0.12 --steps 10000000 -o o.csv", 2,
+       "steps = 10000000 with record = 100 is invalid: 1000000000 recorded periods a "
+       "continuation: expected steps x record <= 100000000",
+       none},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},
@@ -337,7 +346,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 79;
+constexpr int kCaseCount = 81;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
