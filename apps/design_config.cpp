@@ -355,8 +355,8 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
   given.insert(from_flags.begin(), from_flags.end());
   for (const DesignGridAxis& axis : grid) {
     const int i = Find(axis.name());
-    if (i < 0) continue;  // m2: not a setting (the grid fixes what m2-range searches)
-    std::vector<std::string> flags = {axis.name()};  // the setting, or an alternative of it
+    // m2 is not a setting: its grid fixes what m2-range searches, so the two exclude each other.
+    std::vector<std::string> flags = {i < 0 ? std::string("m2-range") : axis.name()};
     for (const auto& [a, b] : kExclusive) {
       if (axis.name() == a) flags.emplace_back(b);
       if (axis.name() == b) flags.emplace_back(a);
@@ -367,6 +367,7 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
           "--{} = {} is invalid with --grid {}: expected the value from only one of them", flag,
           o.values[Find(flag)], axis.ToString()));
     }
+    if (i < 0) continue;
     Value v;
     v.number = axis.Value(0);  // a valid value: the run sets each point's (DesignGridOptions)
     kSettings[i].set(in, v);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -80,6 +81,9 @@ int CheckStdout(const std::string& who, int status) {
 int main(int argc, char** argv) {
   using namespace capsubot::app;
   capsubot::InstallTempFileCleanup();
+  // Past the file size limit (ulimit -f) a write fails with EFBIG and the run says so, keeping
+  // what can be resumed, instead of being killed by SIGXFSZ without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "capsubot: one-impact periodic gaits of a vibro-impact capsule robot (A. P. Ivanov, "
       "Vibroimpact Mobile Robot, 2021). All quantities are dimensionless: phases in rad, "

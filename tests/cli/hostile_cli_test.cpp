@@ -174,6 +174,12 @@ std::vector<Case> Cases() {
        "steps = 10000000 with record = 100 is invalid: 1000000000 recorded periods a "
        "continuation: expected steps x record <= 100000000",
        none},
+      {"DesignM2GridWithM2Range",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --grid m2=0.2,0.3 --m2-range 0.1:0.2 -o o.csv",
+       2,
+       "--m2-range = 0.1:0.2 is invalid with --grid m2=0.2,0.3: expected the value from only one",
+       none},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},
@@ -346,7 +352,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 81;
+constexpr int kCaseCount = 82;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
