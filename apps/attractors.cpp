@@ -36,7 +36,7 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   const std::vector<PhaseState> starts = GridStarts(n_x, n_psi);
   AttractorOptions ao;
   ao.motion = opt.robot.motion;
-  ao.threads = opt.threads;
+  ao.threads = CapThreads(opt.threads, "capsubot attractors");
   RequireShardForResume(cmd, opt.shard);
   if (SplitsRun(opt.shard.shard)) {
     if (opt.output.empty()) {

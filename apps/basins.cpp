@@ -120,7 +120,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   }
   AttractorOptions ao;
   ao.motion = opt.robot.motion;
-  ao.threads = opt.threads;
+  ao.threads = CapThreads(opt.threads, "capsubot basins");
   RequireShardForResume(cmd, opt.shard);
   RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
   if (SplitsRun(opt.shard.shard)) {

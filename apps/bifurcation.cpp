@@ -40,6 +40,7 @@ struct BifurcationCommandOptions {
 int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   BifurcationOptions o = opt.diagram;
+  o.threads = CapThreads(o.threads, "capsubot bifurcation");
   o.param = ParseBifurcationParam(opt.param, &o.harmonic);
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);

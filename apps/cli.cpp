@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "capsubot/io.hpp"
+#include "ranks.hpp"
 
 namespace capsubot::app {
 
@@ -216,6 +217,7 @@ int CapThreads(int requested, const char* who) {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const int cap = kThreadsPerCore * cores;
   if (requested <= cap) return requested;
+  if (LaunchedRank() != 0) return cap;  // under mpirun: said once, by rank 0
   fmt::print(stderr,
              "{}: note: --threads {} lowered to {} ({} per core on {} cores: more only adds "
              "overhead)\n",

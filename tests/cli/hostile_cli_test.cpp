@@ -180,6 +180,12 @@ std::vector<Case> Cases() {
        2,
        "--m2-range = 0.1:0.2 is invalid with --grid m2=0.2,0.3: expected the value from only one",
        none},
+      // More threads than useful: lowered with a note, as in every command that takes them.
+      {"BasinsThreadsAreLoweredWithANote",
+       "basins " + kRobot + " --starts 2x2 --transient 20 --record 20 --threads 100000 -o b.csv",
+       0,
+       "capsubot basins: note: --threads 100000 lowered to",
+       {"b.csv"}},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},
@@ -352,7 +358,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 82;
+constexpr int kCaseCount = 83;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
