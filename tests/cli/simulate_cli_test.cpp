@@ -134,9 +134,10 @@ TEST(SimulateCli, TableNamesTheEventCounts) {
       << r.out;
 }
 
-// The review's reproductions: a resting capsule under a force touching T0 (A + c = T0) and a
-// body resting on the wall while F = 0.5 (sin + 1) touches 0 at 3 pi / 2. Before the
-// simulator decided touches on the piece after them, both ended with status event_limit.
+// Two forces that touch a level without crossing it: a resting capsule under a force touching
+// T0 (A + c = T0), and a body resting on the wall while F = 0.5 (sin + 1) touches 0 at
+// 3 pi / 2. A simulator that did not decide touches on the piece after them ended both with
+// status event_limit.
 TEST(SimulateCli, ForceTouchingALevelEndsOk) {
   const auto rest = Json(
       "simulate --A 0.007 --c 0.003 --T0 0.01 --phi0 1 --alpha 0.5 --x0 0.5 --u0 0 --v0 0 "
