@@ -174,6 +174,10 @@ std::pair<int, int> ParseShard(const std::string& text) {
     throw std::invalid_argument(fmt::format(
         "--shard {} is invalid: expected K/N, e.g. 0/4 (shard K of N, 0 <= K < N)", text));
   }
+  if (n < 1 || k >= n) {
+    throw std::invalid_argument(fmt::format(
+        "--shard = {} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", text));
+  }
   return {k, n};
 }
 

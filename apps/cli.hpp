@@ -77,8 +77,8 @@ int CapThreads(int requested, const char* who);
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
 void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
 
-/// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX (the library checks
-/// 0 <= K < N); throws std::invalid_argument naming the option and the syntax.
+/// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX, 0 <= K < N; throws
+/// std::invalid_argument naming the option, its value and the rule.
 std::pair<int, int> ParseShard(const std::string& text);
 
 /// Whether --shard `text` splits the run into N >= 2 shards: false when not given ("") and

@@ -46,10 +46,6 @@ int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
                   const std::vector<std::pair<const char*, bool>>& refused) {
   StartShardOptions so;
   std::tie(so.shard, so.shards) = ParseShard(options.shard);
-  if (so.shards < 1 || so.shard < 0 || so.shard >= so.shards) {
-    throw std::invalid_argument(fmt::format(
-        "--shard = {} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", options.shard));
-  }
   if (static_cast<std::size_t>(so.shards) > starts.size()) {
     throw std::invalid_argument(
         fmt::format("--shard = {} is invalid: the map has only {} starts: expected at most as "

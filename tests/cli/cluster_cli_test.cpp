@@ -527,7 +527,7 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
        "parameter x 2 directions): expected 1 <= N <= 6"},
       {" --direction up --shard 0/4",
        "shard count N = 4 is invalid: the study has 3 continuations"},
-      {" --shard 3/3", "shard K = 3 is invalid: expected 0 <= K < N = 3"},
+      {" --shard 3/3", "--shard = 3/3 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
       {" --shard 0/3 --summary " + out, "--summary = " + out +
                                             " is invalid: it is the file of -o = " + out +
                                             ": expected another file"}};

@@ -300,7 +300,7 @@ std::vector<BadCase> BadCases() {
       {"grid_output", "--grid m2=0.1:0.3:5" + cfg,
        "output is missing: --grid writes its CSV to -o FILE"},
       {"grid_shard", "--grid m2=0.1:0.3:5 --shard 1/1 -o x.csv" + cfg,
-       "shard = 1/1 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
+       "--shard = 1/1 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
       {"grid_json", "--grid m2=0.1:0.3:5 --json -o x.csv" + cfg,
        "--json is invalid with --grid: expected --json only with one design (no --from-rest, "
        "no --grid) or --from-rest"},
