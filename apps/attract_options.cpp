@@ -5,7 +5,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 
 #include "progress.hpp"
@@ -48,10 +47,13 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
 
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
   const std::size_t x = text.find_first_of("xX");
-  const auto whole = [&](const std::string& part, int* value) {
-    char* end = nullptr;
-    const long n = std::strtol(part.c_str(), &end, 10);
-    if (part.empty() || end != part.c_str() + part.size() || n < 1 || n > 100000) return false;
+  const auto whole = [&](const std::string& part, int* value) {  // digits only, 1 to 100000
+    if (part.empty() || part.size() > 6 ||
+        part.find_first_not_of("0123456789") != std::string::npos) {
+      return false;
+    }
+    const long n = std::stol(part);
+    if (n < 1 || n > 100000) return false;
     *value = static_cast<int>(n);
     return true;
   };

@@ -78,6 +78,12 @@ TEST(AttractorsCli, BadInputIsOneLineNamingTheParameter) {
   EXPECT_EQ(r.out,
             "capsubot attractors: error: --starts = 8by8 is invalid: expected NXxNPSI, two whole "
             "numbers from 1 to 100000 (e.g. 8x8)\n");
+  for (const char* starts : {"' 2x2'", "+2x2", "2x-2", "2x2e0"}) {  // digits only
+    r = RunCli("attractors " + kOptimum + " --starts " + starts + " 2>&1");
+    EXPECT_EQ(r.status, 2) << starts;
+    EXPECT_NE(r.out.find("is invalid: expected NXxNPSI, two whole numbers"), std::string::npos)
+        << r.out;
+  }
   r = RunCli("attractors " + kOptimum + " --record 3 2>&1");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out,
