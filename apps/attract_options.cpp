@@ -85,6 +85,18 @@ PhaseState ParseRestStart(const char* name, const std::string& text) {
   return RestStart(x0, psi);
 }
 
+const FlagNames& MotionFlagNames() {
+  static const FlagNames names = {{"transient", "--transient"},
+                                  {"record", "--record"},
+                                  {"max_period", "--max-period"},
+                                  {"state_tolerance", "--state-tolerance"},
+                                  {"converged_tolerance", "--converged-tolerance"},
+                                  {"chatter_velocity", "--chatter-velocity"},
+                                  {"max_events_per_period", "--max-events-per-period"},
+                                  {"threads", "--threads"}};
+  return names;
+}
+
 void AddThreadsOption(CLI::App& cmd, int& threads) {
   cmd.add_option("--threads", threads,
                  "worker threads (0: all cores); the output does not depend on it")

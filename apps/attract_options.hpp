@@ -34,6 +34,9 @@ std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
 /// "0.5,1" -> RestStart(0.5, 1) for option `name`; throws std::invalid_argument naming it.
 PhaseState ParseRestStart(const char* name, const std::string& text);
 
+/// The flags of the long-run options (MotionOptions' fields, threads): for WithFlagNames.
+const FlagNames& MotionFlagNames();
+
 /// Adds --threads (0: all cores).
 void AddThreadsOption(CLI::App& cmd, int& threads);
 

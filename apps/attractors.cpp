@@ -109,7 +109,9 @@ Command AddAttractorsCommand(CLI::App& app) {
                 "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
                 "one_impact_orbit), mean_velocity (over the starts), event_limit_starts, "
                 "provenance");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
+  return {cmd,
+          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
+          [] { return true; }};
 }
 
 }  // namespace capsubot::app

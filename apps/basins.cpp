@@ -183,7 +183,9 @@ Command AddBasinsCommand(CLI::App& app) {
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
                 "print the attractors object of `attractors --json` with provenance");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
+  return {cmd,
+          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
+          [] { return true; }};
 }
 
 }  // namespace capsubot::app

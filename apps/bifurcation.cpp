@@ -201,7 +201,9 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "(written as FILE.partial, renamed at the end); 0: after every part")
       ->capture_default_str();
   AddThreadsOption(*cmd, opt->diagram.threads);
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
+  return {cmd,
+          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
+          [] { return true; }};
 }
 
 }  // namespace capsubot::app

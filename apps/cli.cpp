@@ -7,6 +7,7 @@
 #include <charconv>
 #include <climits>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
@@ -158,6 +159,25 @@ void RequireInRange(const std::string& option, long long value, long long lo, lo
     const std::string name = option.substr(option.find_first_not_of('-'));
     throw std::invalid_argument(
         fmt::format("{} = {} is invalid: expected {} <= {} <= {}", option, value, lo, name, hi));
+  }
+}
+
+std::string WithFlagNames(const std::string& message, const FlagNames& names) {
+  for (const auto& [name, flag] : names) {
+    const std::size_t n = std::strlen(name);
+    if (message.compare(0, n, name) == 0 && n < message.size() &&
+        (message[n] == ' ' || message[n] == ':')) {
+      return flag + message.substr(n);
+    }
+  }
+  return message;
+}
+
+int RunNamingFlags(const FlagNames& names, const std::function<int()>& run) {
+  try {
+    return run();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(WithFlagNames(e.what(), names));
   }
 }
 

@@ -77,6 +77,17 @@ int CapThreads(int requested, const char* who);
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
 void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
 
+/// Library messages begin with the name of a field ("record = 3 is invalid: ..."); the user
+/// typed a flag. Pairs of field and flag, e.g. {"record", "--record"}.
+using FlagNames = std::vector<std::pair<const char*, const char*>>;
+
+/// `message` with its first word replaced by its flag when it is a field of `names` and is
+/// followed by ' ' or ':' ("--record = 3 is invalid: ..."); otherwise `message` unchanged.
+std::string WithFlagNames(const std::string& message, const FlagNames& names);
+
+/// Runs `run`; a std::invalid_argument it throws is thrown again WithFlagNames(names).
+int RunNamingFlags(const FlagNames& names, const std::function<int()>& run);
+
 /// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX, 0 <= K < N; throws
 /// std::invalid_argument naming the option, its value and the rule.
 std::pair<int, int> ParseShard(const std::string& text);

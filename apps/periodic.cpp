@@ -118,7 +118,9 @@ Command AddPeriodicCommand(CLI::App& app) {
                 "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
                 "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
                 "distance_to_unit_circle, residual, iterations, provenance");
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
+  return {cmd,
+          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
+          {}};
 }
 
 }  // namespace capsubot::app

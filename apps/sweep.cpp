@@ -46,31 +46,19 @@ struct SweepCliOptions {
 };
 
 // Library messages name the sweep's parameters; the user typed these flags.
-constexpr std::pair<const char*, const char*> kFlagOf[] = {
-    {"grid", "--grid"},
-    {"optimize", "--optimize"},
-    {"output", "--output"},
-    {"threads", "--threads"},
-    {"resume", "--resume"},
-    {"checkpoint_seconds", "--checkpoint-seconds"},
-    {"scan_points", "--scan-points"},
-    {"harmonics", "--harmonics"},
-    {"starts", "--starts"},
-    {"hops", "--hops"},
-    {"rho_max", "--rho-max"},
-    {"alpha", "--alpha"},
-    {"shard", "--shard"}};
-
-std::string WithFlagNames(const std::string& message) {
-  for (const auto& [name, flag] : kFlagOf) {
-    const std::size_t n = std::strlen(name);
-    if (message.compare(0, n, name) == 0 && n < message.size() &&
-        (message[n] == ' ' || message[n] == ':')) {
-      return flag + message.substr(n);
-    }
-  }
-  return message;
-}
+const FlagNames kFlagOf = {{"grid", "--grid"},
+                           {"optimize", "--optimize"},
+                           {"output", "--output"},
+                           {"threads", "--threads"},
+                           {"resume", "--resume"},
+                           {"checkpoint_seconds", "--checkpoint-seconds"},
+                           {"scan_points", "--scan-points"},
+                           {"harmonics", "--harmonics"},
+                           {"starts", "--starts"},
+                           {"hops", "--hops"},
+                           {"rho_max", "--rho-max"},
+                           {"alpha", "--alpha"},
+                           {"shard", "--shard"}};
 
 // The option giving a grid parameter's value: "--rho-max" for rho_max.
 std::string FlagOf(const GridAxis& axis) {
@@ -299,13 +287,14 @@ int Run(SweepCliOptions& opt, const CLI::App& cmd) {
   try {
     return RunSweepCommand(opt, cmd);
   } catch (const SweepResumableError& e) {
-    throw WriteError(WithFlagNames(e.what()) + ": run the same command with --resume to continue");
+    throw WriteError(WithFlagNames(e.what(), kFlagOf) +
+                     ": run the same command with --resume to continue");
   } catch (const WriteError& e) {
-    throw WriteError(WithFlagNames(e.what()));
+    throw WriteError(WithFlagNames(e.what(), kFlagOf));
   } catch (const IoError& e) {
-    throw IoError(WithFlagNames(e.what()));
+    throw IoError(WithFlagNames(e.what(), kFlagOf));
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(WithFlagNames(e.what()));
+    throw std::invalid_argument(WithFlagNames(e.what(), kFlagOf));
   }
 }
 

@@ -87,7 +87,7 @@ TEST(AttractorsCli, BadInputIsOneLineNamingTheParameter) {
   r = RunCli("attractors " + kOptimum + " --record 3 2>&1");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out,
-            "capsubot attractors: error: record = 3 is invalid: expected 2 * max_period = 16 <= "
+            "capsubot attractors: error: --record = 3 is invalid: expected 2 * max_period = 16 <= "
             "record <= 1e7 periods\n");
 }
 

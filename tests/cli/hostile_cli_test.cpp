@@ -167,7 +167,7 @@ std::vector<Case> Cases() {
        2, "inputs m2 = 1e+300 kg, f = 20 Hz are invalid", none},
       // What a long run holds in memory is bounded before it starts.
       {"AttractorsRecordIsBounded", "attractors " + kRobot + " --starts 1x1 --record 100000000", 2,
-       "record = 100000000 is invalid: expected 2 * max_period = 16 <= record <= 1e7 periods",
+       "--record = 100000000 is invalid: expected 2 * max_period = 16 <= record <= 1e7 periods",
        none},
       {"BifurcationRecordedPeriodsAreBounded",
        "bifurcation " + kRobot + " --param T0 --from 0.08 --to 0.12 --steps 10000000 -o o.csv", 2,
