@@ -52,6 +52,10 @@ inline constexpr int kMaxSymlinks = 40;
 /// reader would see the end of the file).
 void CheckWritable(const std::string& path, const std::string& what);
 
+/// Whether paths `a` and `b` name one file: the same text, the same file once "." and ".."
+/// and symlinks are resolved (also for a file that does not exist yet), or another hard link.
+bool SameFile(const std::string& a, const std::string& b);
+
 /// Throws std::invalid_argument when two of `outputs` (pairs of path and option; empty paths
 /// are skipped) are the same file under other spellings ("./a.csv", "dir/../a.csv", an
 /// absolute path, a symlink, a hard link): one would overwrite the other. Standard output,

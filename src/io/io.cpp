@@ -86,14 +86,18 @@ bool InPlace(const std::string& path) {
 
 }  // namespace
 
+bool SameFile(const std::string& a, const std::string& b) {
+  std::error_code error;
+  return a == b || Spelled(a) == Spelled(b) || std::filesystem::equivalent(a, b, error);
+}
+
 void RequireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     for (std::size_t j = i + 1; j < outputs.size(); ++j) {
       const auto& [a, a_option] = outputs[i];
       const auto& [b, b_option] = outputs[j];
       if (a.empty() || b.empty() || InPlace(a) || InPlace(b)) continue;
-      std::error_code error;
-      if (a == b || Spelled(a) == Spelled(b) || std::filesystem::equivalent(a, b, error)) {
+      if (SameFile(a, b)) {
         throw std::invalid_argument(
             fmt::format("{} = {} is invalid: it is the file of {} = {}: expected another file",
                         b_option, QuoteForMessage(b), a_option, QuoteForMessage(a)));

@@ -58,7 +58,7 @@ void RequireOutputNotAShard(const std::vector<std::string>& paths, const std::st
   std::error_code error;
   if (output == "-" || !std::filesystem::exists(output, error)) return;
   for (const std::string& path : paths) {
-    if (std::filesystem::equivalent(output, path, error)) {
+    if (SameFile(output, path)) {
       throw std::invalid_argument(fmt::format(
           "output {} is invalid: it is the shard file {}: expected a file other than the shards",
           output, path));
