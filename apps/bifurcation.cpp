@@ -68,11 +68,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   const bool sharded = SplitsRun(opt.shard);  // --shard 0/1: the files of the whole study
   if (sharded) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   RequireShardForResume(cmd, sharded, "study");
-  if (!(opt.checkpoint_seconds >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds",
-                    opt.checkpoint_seconds));
-  }
+  RequireCheckpointSeconds(opt.checkpoint_seconds);
   double alpha = opt.robot.alpha;
   if (o.param == BifurcationParam::kAlpha) alpha = o.from;  // the swept value decides
   if (two && o.over == BifurcationParam::kAlpha) alpha = o.over_values.front();

@@ -216,6 +216,13 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
   }
 }
 
+void RequireCheckpointSeconds(double seconds) {
+  if (!(seconds >= 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds", seconds));
+  }
+}
+
 void UseStrictValues(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();

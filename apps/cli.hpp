@@ -101,6 +101,9 @@ bool SplitsRun(const std::string& text);
 /// (std::invalid_argument): only a shard is checkpointed, not the whole `what` ("map").
 void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what);
 
+/// Refuses a --checkpoint-seconds below 0 or NaN (std::invalid_argument naming the option).
+void RequireCheckpointSeconds(double seconds);
+
 /// Which runs of a command use an option (a run is what the command's mode option selects,
 /// e.g. `optimize --problem`); an option not listed determines the content of every run.
 struct OptionUse {

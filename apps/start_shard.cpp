@@ -52,11 +52,7 @@ int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
                     "many shards as starts",
                     options.shard, starts.size()));
   }
-  if (!(options.checkpoint_seconds >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds",
-                    options.checkpoint_seconds));
-  }
+  RequireCheckpointSeconds(options.checkpoint_seconds);
   for (const auto& [flag, set] : refused) {
     if (set) {
       throw std::invalid_argument(fmt::format(
