@@ -40,7 +40,7 @@ detail::PhaseZero StopPhase(const Forcing& f, double T0, double Pi_tau) {
       g_lo = g_hi;
     }
   }
-  return {Angle::Of(kTau), f.Phi(kTau)};  // unreachable: g(tau) < 0
+  return {Angle::Of(kTau), f.Values(kTau)};  // unreachable: g(tau) < 0
 }
 
 }  // namespace
@@ -73,7 +73,7 @@ Orbit ComputeOrbit(const Forcing& forcing, const Params& params) {
   o.phi1 = stop.at.phi;
   o.cos_phi1 = stop.at.cos;
   o.sin_phi1 = stop.at.sin;
-  o.Phi1 = stop.Phi;
+  o.Phi1 = stop.values.Phi;
   const double phi1 = o.phi1, Phi1 = o.Phi1;
   // psi(alpha) = e tau Pi(tau)/(1+e) - (1-alpha) Phi(tau)
   //              - alpha (T0 phi1^2/2 + (tau - phi1) Pi(tau) + Phi(phi1))

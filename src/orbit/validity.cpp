@@ -22,7 +22,7 @@ void PositionExtrema(const Orbit& o, Validity& v) {
   detail::ForEachMonotonePiece(o, [&](const Angle& lo, const Angle& hi, double dlo, double dhi) {
     if (!(dlo * dhi < 0.0)) return;
     const detail::PhaseZero r = detail::VelocityZero(o, lo, hi, dlo, dhi);
-    const double xr = detail::RelativePosition(o, r.at.phi, r.Phi, o.Phi1);
+    const double xr = detail::RelativePosition(o, r.at.phi, r.values.Phi, o.Phi1);
     if (dlo < 0.0) {  // x' from - to +: local minimum
       if (xr < v.x_min) {
         v.x_min = xr;

@@ -7,7 +7,7 @@
 // levels, each piece has a monotone x' and so at most one zero of x'.
 
 #include "capsubot/orbit.hpp"
-#include "orbit/phase_root.hpp"
+#include "numerics/phase_root.hpp"
 
 namespace capsubot::detail {
 

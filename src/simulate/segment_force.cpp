@@ -29,13 +29,37 @@ constexpr std::array<Inverse, kMaxHarmonics> kInverse = Inverses();
 
 }  // namespace
 
-void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels) {
+void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels,
+                           double tol) {
   n_levels_ = 0;
+  tol_ = tol;
   for (int i = 0; i < n_levels && n_levels_ < kMaxLevels; ++i) {
     LevelCrossings& entry = table_[n_levels_++];
     entry.level = levels[i];
     entry.t = motor.Crossings(levels[i], 0.0, kTau);
+    const int n = entry.t.n;
+    for (int k = 0; k < std::max(n, 1); ++k) {
+      const double l = n == 0 ? 0.0 : entry.t.phi[k];
+      const double r = n == 0 ? kTau : k + 1 < n ? entry.t.phi[k + 1] : entry.t.phi[0] + kTau;
+      const double g = motor.F(0.5 * (l + r)) - levels[i];
+      entry.sign[k] = g > tol ? 1.0 : g < -tol ? -1.0 : 0.0;
+    }
   }
+}
+
+double SegmentForce::PieceSign(double level, double l, double r) const {
+  const LevelCrossings* entry = r - l >= kNearCut ? Find(level) : nullptr;
+  if (entry == nullptr) {
+    const double g = F(0.5 * (l + r)) - level;
+    return g > tol_ ? 1.0 : g < -tol_ ? -1.0 : 0.0;
+  }
+  // The piece of the motor's period that holds the middle: the last crossing at or before it
+  // (the one before the first crossing, wrapping around, is the last).
+  double m = shift_ + 0.5 * (l + r);
+  for (int turn = 0; turn < 3 && m >= kTau; ++turn) m -= kTau;
+  int k = entry->t.n - 1;
+  for (int i = 0; i < entry->t.n && entry->t.phi[i] <= m; ++i) k = i;
+  return entry->sign[std::max(k, 0)];
 }
 
 void SegmentForce::Set(const Forcing& motor, double shift) {
@@ -72,25 +96,27 @@ double SegmentForce::SumF(double c1, double s1) const {
   return sum;
 }
 
-ForceValues SegmentForce::SumValues(double s, double c1, double s1) const {
-  double ck = c1, sk = s1, sF = 0.0, sPi = 0.0, sPhi = 0.0;
+ForceJet SegmentForce::SumJet(const Angle& at, bool derivatives) const {
+  const double s = at.phi, c1 = at.cos, s1 = at.sin;
+  double ck = c1, sk = s1, sF = 0.0, sdF = 0.0, sddF = 0.0, sPi = 0.0, sPhi = 0.0;
   for (int k = 0; k < K_; ++k) {
-    const double one_minus_c = 1.0 - ck;
-    sF += a_[k] * ck + b_[k] * sk;
+    const double one_minus_c = 1.0 - ck, f = a_[k] * ck + b_[k] * sk, n = k + 1;
+    sF += f;
+    if (derivatives) {
+      sdF += n * (b_[k] * ck - a_[k] * sk);
+      sddF -= n * n * f;
+    }
     sPi += a1_[k] * sk + b1_[k] * one_minus_c;
-    sPhi += a2_[k] * one_minus_c + b2_[k] * ((k + 1) * s - sk);
+    sPhi += a2_[k] * one_minus_c + b2_[k] * (n * s - sk);
     const double next = ck * c1 - sk * s1;
     sk = sk * c1 + ck * s1;
     ck = next;
   }
-  return {c_ + sF, c_ * s + sPi, 0.5 * c_ * s * s + sPhi};
+  return {c_ + sF, sdF, sddF, c_ * s + sPi, 0.5 * c_ * s * s + sPhi};
 }
 
 CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
-  const LevelCrossings* entry = nullptr;
-  for (int i = 0; i < n_levels_; ++i) {
-    if (table_[i].level == level) entry = &table_[i];
-  }
+  const LevelCrossings* entry = Find(level);
   CrossingList out;
   if (entry == nullptr) {
     const PhaseList roots = TrigRoots(c_ - level, a_.data(), b_.data(), K_, lo, hi);

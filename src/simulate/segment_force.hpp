@@ -2,7 +2,9 @@
 // The motor force seen from the origin of one simulated segment (docs/model.md sections 2, 3
 // and 10), for the simulator's hot path: the harmonics rotated to the segment's origin and
 // the factors 1/k and 1/k^2 of the integrals taken once per segment, so each point costs one
-// sincos and no division.
+// sincos (none along a root search: its iterates' angles come by angle addition) and no
+// division; the signs of F against the levels the events look for, between their crossings,
+// are tabulated once per run.
 
 #include <array>
 #include <cmath>
@@ -24,13 +26,26 @@ class SegmentForce {
   /// Levels whose crossings a run looks up instead of solving them per segment.
   static constexpr int kMaxLevels = 5;
 
+  /// A part of a piece between crossings shorter than this takes its sign from its own middle
+  /// (PieceSign): a longer one's middle lies far enough from the crossings for the sign of
+  /// the whole piece to be its sign.
+  static constexpr double kNearCut = 1e-3;
+
   /// Once per run: the crossings over one period of `motor` (shift 0) with each of `levels`
-  /// (at most kMaxLevels); Crossings of these levels then only shift them to the segment.
-  void Prepare(const Forcing& motor, const double* levels, int n_levels);
+  /// (at most kMaxLevels), and the sign of F - level between them (PieceSign with `tol`);
+  /// Crossings and PieceSign of these levels then only shift them to the segment.
+  void Prepare(const Forcing& motor, const double* levels, int n_levels, double tol);
   /// F(s) = G(origin + s) with G the motor force and origin = motor.phi0() + shift: the same
   /// series as motor.WithPhase(motor.phi0() + shift) to rounding (LocalCosSin of k origin).
   /// shift in [0, tau).
   void Set(const Forcing& motor, double shift);
+
+  /// The local phase s with its cosine and sine (LocalCosSin; none at s = 0).
+  static Angle At(double s) {
+    if (s == 0.0) return {0.0, 1.0, 0.0};
+    const auto [c, sn] = LocalCosSin(s);
+    return {s, c, sn};
+  }
 
   /// F(s).
   double F(double s) const {
@@ -41,19 +56,24 @@ class SegmentForce {
   }
   /// F(s), Pi(s), Phi(s) from one sincos (harmonic k by angle addition). At s = 0 exactly:
   /// F(0) = c + sum a_k and Pi = Phi = 0, without a sincos. Inline: the event searches of the
-  /// simulator call it a dozen times per event, mostly for one harmonic.
+  /// simulator call it several times per event, mostly for one harmonic.
   ForceValues Values(double s) const {
     if (s == 0.0) return {f0_, 0.0, 0.0};
-    // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
-    // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2.
-    const auto [c1, s1] = LocalCosSin(s);
-    if (K_ == 1) {  // SumValues for K = 1, without the recurrence
-      const double one_minus_c = 1.0 - c1;
-      return {c_ + (a_[0] * c1 + b_[0] * s1), c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c),
-              0.5 * c_ * s * s + (a2_[0] * one_minus_c + b2_[0] * (s - s1))};
-    }
-    return SumValues(s, c1, s1);
+    return Values(At(s));
   }
+  /// Values at a local phase whose cosine and sine are known (no sincos).
+  ForceValues Values(const Angle& at) const {
+    const ForceJet j = Sums<false>(at);
+    return {j.F, j.Pi, j.Phi};
+  }
+  /// Values with F' and F'' (what PhaseRoot needs), no sincos.
+  ForceJet Jet(const Angle& at) const { return Sums<true>(at); }
+  /// Sign of F - level on (l, r), a part of one piece between consecutive crossings of the
+  /// level (0 <= l < r <= l + tau): +1 or -1, or 0 when |F - level| <= tol in its middle (a
+  /// touch, or a piece too short to matter: F stays on the level within rounding). For a
+  /// prepared level and a part longer than kNearCut, the tabulated sign of the piece that
+  /// holds its middle (no evaluation of F).
+  double PieceSign(double level, double l, double r) const;
   /// Every s in [lo, hi] (0 <= lo, hi - lo <= tau) where F crosses or touches `level`,
   /// sorted: Forcing::Crossings of the same series; for a prepared level, the motor's
   /// crossings shifted to the segment (the same phases to rounding, without a root solve).
@@ -63,13 +83,41 @@ class SegmentForce {
   struct LevelCrossings {
     double level = 0.0;
     PhaseList t;  // crossings in [0, tau) of the series at shift 0
+    // sign[i]: PieceSign on (t[i], t[i+1]) (t[n] = t[0] + tau); with no crossing, sign[0] on
+    // the whole period.
+    std::array<double, 2 * kMaxHarmonics + 2> sign{};
   };
-  // The sums of F and of Values for K > 1 from cos s, sin s (harmonic k by angle addition).
+  const LevelCrossings* Find(double level) const {
+    for (int i = 0; i < n_levels_; ++i) {
+      if (table_[i].level == level) return &table_[i];
+    }
+    return nullptr;
+  }
+  // F, its derivatives (kWithDerivatives) and integrals at s from cos s and sin s:
+  // Pi = c s + sum_k (a_k sin ks + b_k (1 - cos ks)) / k,
+  // Phi = c s^2/2 + sum_k (a_k (1 - cos ks) + b_k (k s - sin ks)) / k^2; one harmonic inline,
+  // more by angle addition (SumJet).
+  template <bool kWithDerivatives>
+  ForceJet Sums(const Angle& at) const {
+    if (K_ != 1) return SumJet(at, kWithDerivatives);
+    const double s = at.phi, c1 = at.cos, s1 = at.sin, one_minus_c = 1.0 - c1;
+    const double f = a_[0] * c1 + b_[0] * s1;
+    ForceJet j;
+    j.F = c_ + f;
+    if (kWithDerivatives) {
+      j.dF = b_[0] * c1 - a_[0] * s1;
+      j.ddF = -f;
+    }
+    j.Pi = c_ * s + (a1_[0] * s1 + b1_[0] * one_minus_c);
+    j.Phi = 0.5 * c_ * s * s + (a2_[0] * one_minus_c + b2_[0] * (s - s1));
+    return j;
+  }
   double SumF(double c1, double s1) const;
-  ForceValues SumValues(double s, double c1, double s1) const;
+  ForceJet SumJet(const Angle& at, bool derivatives) const;
 
   std::array<LevelCrossings, kMaxLevels> table_{};
   int n_levels_ = 0;
+  double tol_ = 0.0;
   double shift_ = 0.0;
   int K_ = 0;
   double c_ = 0.0;
@@ -78,5 +126,14 @@ class SegmentForce {
   std::array<double, kMaxHarmonics> a1_{}, b1_{};  // a_k / k, b_k / k
   std::array<double, kMaxHarmonics> a2_{}, b2_{};  // a_k / k^2, b_k / k^2
 };
+
+/// How PhaseRoot moves from one iterate's angle to the next in a segment: angle addition for
+/// short steps (Angle::Toward's short series), LocalCosSin for longer ones (cheaper than the
+/// long series).
+inline Angle StepAngle(const SegmentForce& force, const Angle& from, double to) {
+  (void)force;
+  constexpr double kShortStep = 0.125;  // Angle::Toward's short series
+  return std::abs(to - from.phi) <= kShortStep ? from.Toward(to) : SegmentForce::At(to);
+}
 
 }  // namespace capsubot::detail

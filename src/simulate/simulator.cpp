@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "model/enum_names.hpp"
+#include "numerics/phase_root.hpp"
 #include "numerics/safe_newton.hpp"
 #include "simulate/segment_force.hpp"
 
@@ -71,7 +72,6 @@ struct Segment {
   double alpha = 0.0, T0 = 0.0;
   double x0 = 0.0, u0 = 0.0, v0 = 0.0, y0 = 0.0;
   double sgn = 0.0, kx = 0.0, b = 0.0;  // Sign(slide) and the x'' coefficients
-  double tol = 0.0;  // |F - level| below this is "on the level" (kLevelTol * force scale)
 
   bool OnWall() const { return mode == SimMode::kOnRightWall || mode == SimMode::kOnLeftWall; }
   Wall RestingWall() const { return mode == SimMode::kOnRightWall ? Wall::kRight : Wall::kLeft; }
@@ -104,6 +104,8 @@ struct Segment {
   }
   // x'' = kx (F + b) of a free mode.
   double Accel(const ForceValues& w) const { return kx * (w.F + b); }
+  // v' = -(sgn T0 + F)/(1-alpha) of a sliding free mode.
+  double VelocityRate(double F) const { return -(sgn * T0 + F) / (1.0 - alpha); }
   // integral_0^s F u of a free mode: with u = u0 + kx (Pi + b s), integral F Pi = Pi^2/2 and
   // integral s F = s Pi - Phi (integration by parts).
   double MotorWork(double s, const ForceValues& w) const {
@@ -123,11 +125,11 @@ void SetCoefficients(Segment& sg, Slide slide) {
 // The first zero in (l, r] of f(s) = dir (x(s) - level) from below, dir = Sign(wall),
 // level = Position(wall): where the inner body reaches `wall` moving towards it, on a piece
 // between consecutive crossings of F = -b, where x'' = kx (F + b) keeps its sign, so f is
-// convex or concave and has at most two zeros. Given f, f' at the ends (fl, dl, fr, dr), the
-// sign of f'' on the piece (`curvature`: dir (F + b) in its middle when the piece starts with
-// the body on the wall, where its size decides; otherwise f'(r) - f'(l), of the same sign as
-// f' is monotone on the piece) and whether the piece starts with the body on the wall
-// (from_wall: f(0) = 0, leaving it):
+// convex or concave and has at most two zeros. Given the ends' angles (al, ar), f, f' at the
+// ends (fl, dl, fr, dr), the sign of f'' on the piece (`curvature`: dir times the sign of
+// F + b on it, SegmentForce::PieceSign, when the piece starts with the body on the wall;
+// otherwise f'(r) - f'(l), of the same sign as f' is monotone on the piece) and whether the
+// piece starts with the body on the wall (from_wall: f(0) = 0, leaving it):
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
@@ -139,26 +141,34 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //   - from the wall: concave cannot come back; convex comes back only after its minimum (root
 //     of f'): where the tangents at the ends meet, f(st) < 0 already brackets the return in
 //     (st, r], else the minimum is found from st and then as above; a piece with F + b = 0
-//     within rounding (sg.tol) is neither: the body stays where it is.
-// Root finder: detail::SafeNewtonFrom (Newton with the closed-form derivative, kept inside
-// the bracket, bisection fallback), to ~1e-14 in phase: quadratic, and it holds no solver
-// state. Every root search starts from a point whose f and f' are known (an end of the
-// bracket on the side where f f'' > 0, or st), so no value is computed twice. Returns +inf
-// when there is no zero in (l, r].
-double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl, double dl,
-                    double fr, double dr, double curvature, bool from_wall) {
-  const double level = Position(wall), dir = Sign(wall);
+//     within rounding (PieceSign 0) is neither: the body stays where it is.
+// The crossing: detail::PhaseRoot (Halley's iteration with the closed-form derivatives, kept
+// inside the bracket, bisection fallback), to about an ulp in phase, with the force's values
+// there; the extrema: detail::SafeNewtonFrom on f' from a point whose f' and f'' are known.
+// Returns at.phi = +inf when there is no zero in (l, r].
+using Hit = detail::PhaseZero;  // an event's local phase (+inf: none) and the force there
+Hit NoHit() { return {{kInf, 1.0, 0.0}, {}}; }
+
+Hit ReachOnPiece(const Segment& sg, Wall wall, const Angle& al, const Angle& ar, double fl,
+                 double dl, double fr, double dr, double curvature, bool from_wall) {
+  const double level = Position(wall), dir = Sign(wall), l = al.phi, r = ar.phi;
   // f = dir (x - level), f' = dir u, f'' = dir x'': all three from one sincos.
   struct Point {
+    Angle a;
     double f, df, ddf;
   };
   const auto at = [&](double s) {
-    const ForceValues w = sg.f.Values(s);
-    return Point{dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
+    const Angle a = detail::SegmentForce::At(s);
+    const ForceValues w = sg.f.Values(a);
+    return Point{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
   };
-  const auto fdf = [&](double s) {
-    const Point p = at(s);
-    return std::pair<double, double>(p.f, p.df);
+  const auto jet = [&](const Angle& a, const ForceJet& j) {
+    const ForceValues w{j.F, j.Pi, j.Phi};
+    return detail::PhaseJet{dir * (sg.X(a.phi, w) - level), dir * sg.U(a.phi, w),
+                            dir * sg.Accel(w), dir * sg.kx * j.dF};
+  };
+  const auto crossing = [&](const Angle& lo, const Angle& hi, double flo, double fhi) {
+    return detail::PhaseRoot(sg.f, jet, lo, hi, flo, fhi);
   };
   const auto dfddf = [&](double s) {
     const Point p = at(s);
@@ -169,23 +179,22 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
   const auto tangents_meet = [&] {
     return std::clamp((fr - fl - dr * r + dl * l) / (dl - dr), l, r);
   };
+  // Pressed into the wall (the caller settles this case first): the hit is at l.
+  const auto pressed = [&] { return Hit{al, sg.f.Values(al)}; };
   if (from_wall) {
-    if (curvature > sg.tol && fr >= 0.0) {
+    if (curvature > 0.0 && fr >= 0.0) {
       // Convex, leaving the wall: it returns after its minimum.
-      if (!(dl < 0.0 && dr > 0.0)) return l;  // pressed into the wall (settled first)
+      if (!(dl < 0.0 && dr > 0.0)) return pressed();
       const double st = tangents_meet();
       const Point pt = at(st);
-      if (pt.f < 0.0) return detail::SafeNewtonFrom(fdf, st, r, pt.f, fr, r, fr, dr);
+      if (pt.f < 0.0) return crossing(pt.a, ar, pt.f, fr);
       const double lo = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
       const Point pm = at(lo);
-      if (pm.f < 0.0) return detail::SafeNewtonFrom(fdf, lo, r, pm.f, fr, r, fr, dr);
-      return l;  // pressed into the wall (the caller settles this case first)
+      if (pm.f < 0.0) return crossing(pm.a, ar, pm.f, fr);
+      return pressed();
     }
   } else if (fl < 0.0 && fr >= 0.0) {
-    // Newton from the end where f f'' > 0 (convex: the right end, concave: the left one): the
-    // steps approach the crossing from one side, and the ends' values are already known.
-    if (curvature > 0.0) return detail::SafeNewtonFrom(fdf, l, r, fl, fr, r, fr, dr);
-    return detail::SafeNewtonFrom(fdf, l, r, fl, fr, l, fl, dl);
+    return crossing(al, ar, fl, fr);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
     // Concave with its maximum inside [a, b] (f'(a) > 0 > f'(b)): f lies below its tangents,
     // so the height where the tangents at a and b meet bounds the maximum; below 0: no zero.
@@ -197,10 +206,10 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
     double a = l, fa = fl, da = dl, b = r, fb = fr, db = dr;
     const auto meet = [&] { return std::clamp((fb - fa - db * b + da * a) / (da - db), a, b); };
     double x = meet();
-    if (fa + da * (x - a) < 0.0) return kInf;
+    if (fa + da * (x - a) < 0.0) return NoHit();
     for (int cut = 0; cut < kMaxTangentCuts; ++cut) {
       const Point p = at(x);
-      if (p.f >= 0.0) return detail::SafeNewtonFrom(fdf, l, x, fl, p.f, l, fl, dl);
+      if (p.f >= 0.0) return crossing(al, p.a, fl, p.f);
       if (p.df > 0.0) {
         a = x, fa = p.f, da = p.df;
       } else if (p.df < 0.0) {
@@ -216,39 +225,46 @@ double ReachOnPiece(const Segment& sg, Wall wall, double l, double r, double fl,
       x = newton > a && newton < b ? newton : st;
     }
   }
-  return kInf;
+  return NoHit();
 }
 
 // The first impact in (0, limit] on either wall: the pieces between the crossings of F = -b
 // (`cuts`) in order, each searched for both walls with ReachOnPiece (the values at its ends
 // serve both); the earliest hit wins (the left wall on a tie). kind is kStop and s = +inf
-// when there is none.
+// when there is none. `end`, when given, is the force at the limit (the stop that ends a
+// slide, from its root search).
 struct Reach {
-  double s = kInf;
+  Hit hit = NoHit();
   EventKind kind = EventKind::kStop;
 };
 
-Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double limit) {
-  ForceValues w = sg.f.Values(0.0);
-  double l = 0.0, xl = sg.X(0.0, w), ul = sg.U(0.0, w);
+Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double limit,
+                  const Hit* end) {
+  Angle al = detail::SegmentForce::At(0.0);
+  ForceValues w = sg.f.Values(al);
+  double xl = sg.X(0.0, w), ul = sg.U(0.0, w);
   const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
   int next_cut = 0;
-  while (l < limit) {
+  while (al.phi < limit) {
+    const double l = al.phi;
     while (next_cut < cuts.n && cuts.phi[next_cut] <= l + kMinCut) ++next_cut;
     const double r = next_cut < cuts.n ? std::min(cuts.phi[next_cut], limit) : limit;
-    w = sg.f.Values(r);
+    const bool known = end != nullptr && end->at.phi == r;
+    const Angle ar = known ? end->at : detail::SegmentForce::At(r);
+    w = known ? end->values : sg.f.Values(ar);
     const double xr = sg.X(r, w), ur = sg.U(r, w);
-    // Sign of x'' on (l, r): exact from the middle where a piece leaves a wall, else from the
-    // monotone u (one sincos less).
-    const double accel =
-        l == 0.0 && (right_from_wall || left_from_wall) ? sg.f.F(0.5 * (l + r)) + sg.b : ur - ul;
-    const double right = ReachOnPiece(sg, Wall::kRight, l, r, xl - 1.0, ul, xr - 1.0, ur, accel,
-                                      l == 0.0 && right_from_wall);
-    const double left =
-        ReachOnPiece(sg, Wall::kLeft, l, r, -xl, -ul, -xr, -ur, -accel, l == 0.0 && left_from_wall);
-    if (left <= right && left < kInf) return {left, EventKind::kImpactLeft};
-    if (right < kInf) return {right, EventKind::kImpactRight};
-    l = r;
+    // Sign of x'' on (l, r): from the force where a piece leaves a wall, else from the
+    // monotone u.
+    const double accel = l == 0.0 && (right_from_wall || left_from_wall)
+                             ? sg.f.PieceSign(-sg.b, l, r)
+                             : ur - ul;
+    const Hit right = ReachOnPiece(sg, Wall::kRight, al, ar, xl - 1.0, ul, xr - 1.0, ur, accel,
+                                   l == 0.0 && right_from_wall);
+    const Hit left = ReachOnPiece(sg, Wall::kLeft, al, ar, -xl, -ul, -xr, -ur, -accel,
+                                  l == 0.0 && left_from_wall);
+    if (left.at.phi <= right.at.phi && left.at.phi < kInf) return {left, EventKind::kImpactLeft};
+    if (right.at.phi < kInf) return {right, EventKind::kImpactRight};
+    al = ar;
     xl = xr;
     ul = ur;
   }
@@ -257,38 +273,27 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
 
 // First s in (0, limit] where the sliding capsule stops: v' = -(sgn T0 + F)/(1-alpha) keeps its
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
-// piece whose end has sgn v <= 0 brackets the unique stop.
-double FirstStop(const Segment& sg, double limit) {
-  const auto vdv = [&](double s) {
-    const ForceValues w = sg.f.Values(s);
-    return std::pair<double, double>(sg.V(s, w), -(sg.sgn * sg.T0 + w.F) / (1.0 - sg.alpha));
+// piece whose end has sgn v <= 0 brackets the unique stop (detail::PhaseRoot, with the force
+// there). at.phi = +inf when there is none.
+Hit FirstStop(const Segment& sg, double limit) {
+  const auto jet = [&](const Angle& a, const ForceJet& j) {
+    const double k = -1.0 / (1.0 - sg.alpha);
+    return detail::PhaseJet{sg.V(a.phi, {j.F, j.Pi, j.Phi}), sg.VelocityRate(j.F), k * j.dF,
+                            k * j.ddF};
   };
   const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
-  double l = 0.0;
-  auto [vl, dvl] = vdv(0.0);
+  Angle al = detail::SegmentForce::At(0.0);
+  double vl = sg.v0;
   int i = 0;
-  while (l < limit) {
-    while (i < cuts.n && cuts.phi[i] <= l + kMinCut) ++i;
-    const double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
-    const auto [vr, dvr] = vdv(r);
-    if (sg.sgn * vr <= 0.0) {
-      // Newton from the end nearer the stop whose tangent reaches inside the piece (no value
-      // to compute first), else from the middle.
-      const double tl = l - vl / dvl, tr = r - vr / dvr;
-      const bool from_l = tl > l && tl<r, from_r = tr> l && tr < r;
-      if (from_l && (!from_r || std::abs(vl) < std::abs(vr))) {
-        return detail::SafeNewtonFrom(vdv, l, r, vl, vr, l, vl, dvl);
-      }
-      if (from_r) return detail::SafeNewtonFrom(vdv, l, r, vl, vr, r, vr, dvr);
-      const double mid = 0.5 * (l + r);
-      const auto [vm, dvm] = vdv(mid);
-      return detail::SafeNewtonFrom(vdv, l, r, vl, vr, mid, vm, dvm);
-    }
-    l = r;
+  while (al.phi < limit) {
+    while (i < cuts.n && cuts.phi[i] <= al.phi + kMinCut) ++i;
+    const Angle ar = detail::SegmentForce::At(i < cuts.n ? std::min(cuts.phi[i], limit) : limit);
+    const double vr = sg.V(ar.phi, sg.f.Values(ar));
+    if (sg.sgn * vr <= 0.0) return detail::PhaseRoot(sg.f, jet, al, ar, vl, vr);
+    al = ar;
     vl = vr;
-    dvl = dvr;
   }
-  return kInf;
+  return NoHit();
 }
 
 // integral_0^S max(F u, 0) of a free mode: F u keeps its sign between the zeros of F and of u,
@@ -341,23 +346,16 @@ double NextCut(const detail::CrossingList& cuts, double l) {
   return l + kTau;
 }
 
-// Sign of F - level on the open piece (l, r) between consecutive crossings of the level:
-// +1 or -1, or 0 when |F - level| <= tol in its middle (a touch, or a piece too short to
-// matter: F stays on the level within rounding). Deciding on the piece, never from dF at a
-// crossing, makes a tangential touch (dF = rounding noise of either sign) no crossing.
-double PieceSign(const detail::SegmentForce& f, double level, double tol, double l, double r) {
-  const double g = f.F(0.5 * (l + r)) - level;
-  return g > tol ? 1.0 : g < -tol ? -1.0 : 0.0;
-}
-
-// Sign of F - level right after s = 0: on the first piece after 0 (first_only), or on the
-// first piece within a period where F leaves the level by more than tol (0: none).
-double SignAfterOrigin(const detail::SegmentForce& f, double level, double tol, bool first_only) {
+// Sign of F - level right after s = 0 (SegmentForce::PieceSign): on the first piece after 0
+// (first_only), or on the first piece within a period where F leaves the level by more than
+// the rounding tolerance (0: none). Deciding on the piece, never from dF at a crossing, makes
+// a tangential touch (dF = rounding noise of either sign) no crossing.
+double SignAfterOrigin(const detail::SegmentForce& f, double level, bool first_only) {
   const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l < kTau) {
     const double r = NextCut(cuts, l);
-    const double sign = PieceSign(f, level, tol, l, r);
+    const double sign = f.PieceSign(level, l, r);
     if (sign != 0.0 || first_only) return sign;
     l = r;
   }
@@ -365,28 +363,30 @@ double SignAfterOrigin(const detail::SegmentForce& f, double level, double tol, 
 }
 
 // First s in [0, limit] where F crosses `level` upwards (or downwards): the start of the first
-// piece between exact crossings (Forcing::Crossings) on which F - level > tol (< -tol). A
-// tangential touch (no sign change across it) does not count; s = 0 when F leaves the level
-// that way right from the start.
-double FirstCrossing(const detail::SegmentForce& f, double level, bool upwards, double tol,
-                     double limit) {
+// piece between exact crossings (Forcing::Crossings) on which F - level > 0 (< 0) beyond
+// rounding (SegmentForce::PieceSign). A tangential touch (no sign change across it) does not
+// count; s = 0 when F leaves the level that way right from the start.
+double FirstCrossing(const detail::SegmentForce& f, double level, bool upwards, double limit) {
   const double dir = upwards ? 1.0 : -1.0;
   const detail::CrossingList cuts = f.Crossings(level, 0.0, kTau);
   double l = 0.0;
   while (l <= limit) {
     const double r = NextCut(cuts, l);
-    if (dir * PieceSign(f, level, tol, l, r) > 0.0) return l;
+    if (dir * f.PieceSign(level, l, r) > 0.0) return l;
     l = r;
   }
   return kInf;
 }
 
 // The earliest event of the current segment: its local phase s (+inf: none in the window),
-// its kind and, for a break-away, the direction of the slide it starts.
+// its kind, for a break-away the direction of the slide it starts, and the force's values
+// at s when its root search left them (impacts and stops).
 struct Event {
   double s = kInf;
   EventKind kind = EventKind::kStop;
   Slide slide = Slide::kNone;
+  bool has_values = false;
+  ForceValues w;
 };
 
 // The run as a loop of three named steps: LocateEvent (the earliest event of the current mode
@@ -410,15 +410,16 @@ class Simulation {
   // Phase left to the current boundary (the transient's end, then the run's end).
   double Remaining() const { return (end_turns_ - static_cast<double>(turns_)) * kTau - r_; }
   SimState StateAt(double s) const;
+  SimState StateAt(double s, const ForceValues& w) const;  // w: the force's values at s
 
   // The three steps.
   Event LocateEvent(double window) const;
-  SimState Advance(double s);
+  SimState Advance(double s, const ForceValues* w = nullptr);  // w: the values at s if known
   void ApplyEvent(const Event& event, double u_before, double v_before);
 
   // Start a new segment at local phase s of the current one with the state `st` there.
   void Rebase(double s, const SimState& st);
-  void AccumulateEnergy(double s);
+  void AccumulateEnergy(double s, const ForceValues& w);
   void Emit(EventKind kind, double u_before, double v_before);
   void EmitSamplesBefore(double s_end, bool final);
   // Instantaneous transitions at the origin: impacts with inward velocity, choice of the
@@ -469,7 +470,12 @@ SimState Simulation::StateAt(double s) const {
     st.y = sg_.y0;
     return st;
   }
-  const ForceValues w = sg_.f.Values(s);
+  return StateAt(s, sg_.f.Values(s));
+}
+
+SimState Simulation::StateAt(double s, const ForceValues& w) const {
+  SimState st;
+  st.mode = sg_.mode;
   st.phi = Phase() + s;
   st.x = sg_.X(s, w);
   st.u = sg_.U(s, w);
@@ -495,9 +501,8 @@ void Simulation::Rebase(double s, const SimState& st) {
 
 // Energy over [0, s] of the segment (docs/model.md section 11), in closed form: motor work
 // Segment::MotorWork (and its positive part), friction T0 |y(s) - y0| (v keeps its sign while
-// the mode lasts: a slide ends at the stop).
-void Simulation::AccumulateEnergy(double s) {
-  const ForceValues w = sg_.f.Values(s);
+// the mode lasts: a slide ends at the stop); w: the force's values at s.
+void Simulation::AccumulateEnergy(double s, const ForceValues& w) {
   Energy& en = res_.energy;
   en.motor_work += sg_.MotorWork(s, w);
   en.motor_work_positive += PositiveMotorWork(sg_, s);
@@ -505,10 +510,11 @@ void Simulation::AccumulateEnergy(double s) {
 }
 
 // Moves the origin to local phase s; returns the state there (right before an event at s).
-SimState Simulation::Advance(double s) {
+SimState Simulation::Advance(double s, const ForceValues* w) {
   EmitSamplesBefore(s, false);
-  if (opt_.energy) AccumulateEnergy(s);
-  const SimState st = StateAt(s);
+  const ForceValues values = w != nullptr ? *w : sg_.f.Values(s);
+  if (opt_.energy) AccumulateEnergy(s, values);
+  const SimState st = StateAt(s, values);
   Rebase(s, st);
   return st;
 }
@@ -572,7 +578,7 @@ bool Simulation::FreeAccelIntoWall(Wall wall, Slide slide) const {
   const double level = -Sign(slide) * sg_.alpha * sg_.T0, tol = kLevelTol * force_scale_;
   const double g = sg_.f.F(0.0) - level;
   if (std::abs(g) > 1e3 * tol) return dir * g > 0.0;  // far from the level: no crossing near
-  return dir * SignAfterOrigin(sg_.f, level, tol, false) > 0.0;
+  return dir * SignAfterOrigin(sg_.f, level, false) > 0.0;
 }
 
 // Capsule at v = 0 (docs/model.md section 3): rest while |F| <= T0; it slides forward once
@@ -583,8 +589,8 @@ Slide Simulation::RestOrSlide(Slide hint) const {
   const double F = sg_.f.F(0.0), T0 = sg_.T0, tol = kLevelTol * force_scale_;
   if (F > T0 + tol) return Slide::kBackward;
   if (F < -T0 - tol) return Slide::kForward;
-  if (F > T0 - tol && SignAfterOrigin(sg_.f, T0, tol, true) > 0.0) return Slide::kBackward;
-  if (F < -T0 + tol && SignAfterOrigin(sg_.f, -T0, tol, true) < 0.0) return Slide::kForward;
+  if (F > T0 - tol && SignAfterOrigin(sg_.f, T0, true) > 0.0) return Slide::kBackward;
+  if (F < -T0 + tol && SignAfterOrigin(sg_.f, -T0, true) < 0.0) return Slide::kForward;
   return Slide::kNone;
 }
 
@@ -678,28 +684,31 @@ void Simulation::Settle(Slide hint) {
 }
 
 Event Simulation::LocateEvent(double window) const {
-  const double tol = sg_.tol;
   Event ev;
   if (sg_.OnWall()) {
     // Moving with the capsule: it stops (v' = -sgn T0), or the contact force changes sign.
     if (sg_.Sliding()) ev.s = sg_.v0 / (sg_.sgn * sg_.T0);
     const bool upwards = sg_.RestingWall() == Wall::kLeft;  // F + b turns away from the wall
-    const double s = FirstCrossing(sg_.f, -sg_.b, upwards, tol, std::min(window, ev.s));
-    if (s <= ev.s) ev = {s, EventKind::kRelease};
+    const double s = FirstCrossing(sg_.f, -sg_.b, upwards, std::min(window, ev.s));
+    if (s <= ev.s) ev = {s, EventKind::kRelease, Slide::kNone, false, {}};
     return ev;
   }
+  Hit stop = NoHit();
   if (sg_.Sliding()) {
-    ev.s = FirstStop(sg_, window);
+    stop = FirstStop(sg_, window);
+    ev = {stop.at.phi, EventKind::kStop, Slide::kNone, true, stop.values};
   } else {
-    const double back = FirstCrossing(sg_.f, sg_.T0, true, tol, window);
-    const double fwd = FirstCrossing(sg_.f, -sg_.T0, false, tol, std::min(window, back));
+    const double back = FirstCrossing(sg_.f, sg_.T0, true, window);
+    const double fwd = FirstCrossing(sg_.f, -sg_.T0, false, std::min(window, back));
     ev = {std::min(back, fwd), EventKind::kBreakaway,
-          fwd <= back ? Slide::kForward : Slide::kBackward};
+          fwd <= back ? Slide::kForward : Slide::kBackward, false, {}};
   }
   const double limit = std::min(window, ev.s);
   const detail::CrossingList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
-  const Reach impact = FirstImpact(sg_, cuts, limit);
-  if (impact.s <= ev.s) ev = {impact.s, impact.kind};
+  const Reach impact = FirstImpact(sg_, cuts, limit, stop.at.phi == limit ? &stop : nullptr);
+  if (impact.hit.at.phi <= ev.s) {
+    ev = {impact.hit.at.phi, impact.kind, Slide::kNone, true, impact.hit.values};
+  }
   return ev;
 }
 
@@ -775,13 +784,12 @@ SimResult Simulation::Run() {
   // F = -b = 0, -+alpha T0 (the sign of x'' at rest and while sliding).
   const double levels[] = {params_.T0, -params_.T0, 0.0, opt_.alpha * params_.T0,
                            -(opt_.alpha * params_.T0)};
-  sg_.f.Prepare(forcing_, levels, static_cast<int>(std::size(levels)));
+  sg_.f.Prepare(forcing_, levels, static_cast<int>(std::size(levels)), kLevelTol * force_scale_);
   sg_.f.Set(forcing_, 0.0);
   sg_.x0 = opt_.x0;
   sg_.u0 = opt_.u0;
   sg_.v0 = opt_.v0;
   sg_.y0 = opt_.y0;
-  sg_.tol = kLevelTol * force_scale_;
   span_y0_ = opt_.y0;
   if (opt_.energy) res_.energy = Energy{0.0, 0.0, 0.0, 0.0};
   // The work bound, saturated: the product of two valid options may exceed int64.
@@ -811,7 +819,7 @@ SimResult Simulation::Run() {
       if (event.s <= window) {
         stalled = event.s > 0.0 ? 0 : stalled + 1;
         if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
-        const SimState before = Advance(event.s);
+        const SimState before = Advance(event.s, event.has_values ? &event.w : nullptr);
         ApplyEvent(event, before.u, before.v);
         continue;
       }

@@ -245,9 +245,9 @@ std::vector<Case> Cases() {
          EXPECT_EQ(ReadFile(d / "s0.csv"), "# shard 0/2 of 2 points\nphi0\n1\n");
        }},
       // A state beyond double precision ends the simulation with an error, no file.
-      {"SimulateHugeU0",
-       "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 1.7e308 "
-       "--v0 0 --trajectory t.csv --events e.csv",
+      {"SimulateHugeV0",
+       "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 "
+       "--v0 1.7e308 --trajectory t.csv --events e.csv",
        1, "the state is not finite", none},
       // Write errors on standard output and in files: exit 1.
       {"SolveToDevFull", kSolve, 1,

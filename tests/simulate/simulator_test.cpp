@@ -614,18 +614,34 @@ TEST(Simulator, SimulateValidatesParams) {
 }
 
 TEST(Simulator, NonFiniteStateEndsTheRunWithItsStatus) {
-  // x = x0 + u0 s overflows at once for u0 near the largest double: the run must not report
-  // ok (or any count of events) with inf in the state.
+  // y = y0 + v0 s overflows within the first slide for v0 near the largest double: the run
+  // must not report ok (or any count of events) with inf in the state.
   int checked = 0;
-  for (double u0 : {1.7e308, -1e308}) {
+  for (double v0 : {1.7e308, -1e308}) {
     const SimResult r =
-        Simulate(Forcing::Harmonic(0.5, 0.5, 0.0), Params{}, StartAt(0.5, 0.5, u0, 0.0, 10.0));
-    EXPECT_EQ(r.status, SimStatus::kNonFinite) << u0;
+        Simulate(Forcing::Harmonic(0.5, 0.5, 0.0), Params{}, StartAt(0.5, 0.5, 0.0, v0, 10.0));
+    EXPECT_EQ(r.status, SimStatus::kNonFinite) << v0;
     EXPECT_STREQ(SimStatusName(r.status), "non_finite");
     EXPECT_NE(r.message.find("the state is not finite"), std::string::npos) << r.message;
     ++checked;
   }
   EXPECT_EQ(checked, 2);
+}
+
+TEST(Simulator, HugeRelativeVelocityBouncesUntilTheWorkBound) {
+  // u0 near the largest double with e = 1: the body crosses the gap in about 3e-309 of phase
+  // and bounces between the walls without losing speed; every impact is located (no overflow
+  // on the way) until the work bound ends the run with a finite state.
+  const Params elastic{1.0, 1.0};
+  const SimOptions opt = StartAt(0.5, 0.5, 1.7e308, 0.0, 10.0);
+  const SimResult r = Simulate(Forcing::Harmonic(0.5, 0.5, 0.0), elastic, opt);
+  EXPECT_EQ(r.status, SimStatus::kEventLimit);
+  EXPECT_EQ(r.events, opt.max_events_per_period * 10);
+  EXPECT_EQ(r.impacts_right + r.impacts_left, r.events);
+  EXPECT_EQ(r.impacts_right, r.impacts_left);
+  EXPECT_TRUE(std::isfinite(r.final_state.x) && std::isfinite(r.final_state.u) &&
+              std::isfinite(r.final_state.v) && std::isfinite(r.final_state.y));
+  EXPECT_LT(r.final_state.phi, 1e-300);
 }
 
 TEST(Simulator, NamesAreStable) {

@@ -1,5 +1,7 @@
 #pragma once
-// Zeros in the phase of a function of the force's values (private helper of the orbit stage).
+// Zeros in the phase of a function of the force's values: the root finder of the analytic
+// orbit (the force seen from the impact, Forcing) and of the simulator's events (the force seen
+// from a segment's origin, detail::SegmentForce).
 
 #include <algorithm>
 #include <cmath>
@@ -17,14 +19,22 @@ struct PhaseJet {
   double d3f;  ///< f'''
 };
 
-/// A zero found by PhaseRoot: its phase with cosine and sine, and Phi there.
+/// A zero found by PhaseRoot: its phase with cosine and sine, and the force's values there.
 struct PhaseZero {
   Angle at;
-  double Phi;
+  ForceValues values;
 };
 
-/// Largest last step after which Phi at the zero comes from its Taylor series at the last
-/// iterate (PhaseRoot): the first term omitted, step^4 F''/24, is below 1e-21 |F''|.
+/// How PhaseRoot moves from one iterate's angle to the next one for the force seen from the
+/// impact: angle addition for short steps (Angle::Toward).
+inline Angle StepAngle(const Forcing& force, const Angle& from, double to) {
+  (void)force;
+  return from.Toward(to);
+}
+
+/// Largest last step after which the values at the zero come from their Taylor series at the
+/// last iterate (PhaseRoot): the first terms omitted, step^4 F''/24 in Phi, step^4 F'''/24 in
+/// Pi and step^3 F'''/6 in F, are below 1e-21 |F''|, 1e-21 |F'''| and 2e-16 |F'''|.
 inline constexpr double kTaylorStep = 1e-5;
 /// PhaseRoot stops when the error left after a step is estimated below this, a small fraction
 /// of the spacing of doubles near 1: one more step would not move the zero by more than about
@@ -33,7 +43,7 @@ inline constexpr double kRootErrorTol = 1e-17;
 
 /// The zero in [lo, hi] of a function of the phase whose values at the bracket's ends are
 /// known, flo and fhi of opposite signs (or one of them zero): jet(at, force) returns f and
-/// its first three derivatives at the angle `at` given the force's jet there (Forcing::Jet).
+/// its first three derivatives at the angle `at` given the force's jet there (force.Jet(at)).
 /// Halley's iteration, kept inside the shrinking bracket (bisection whenever a step would
 /// leave it or converge too slowly, as in SafeNewtonFrom), started from the chord's zero.
 /// Each iterate's cosine and sine come from the previous one by angle addition
@@ -41,23 +51,23 @@ inline constexpr double kRootErrorTol = 1e-17;
 /// leaves an error of about (M^2 - f'''/(6 f')) s^3, M = f''/(2 f') (a Newton step, taken
 /// where Halley's would more than double it: M s^2); the iteration stops when the step is
 /// below kRootAbsTol or when the bound (M^2 + |f'''/(6 f')|) |s|^3 (M |s|^2) on that error is
-/// below kRootErrorTol, and then takes Phi at the zero from the last iterate's values by
-/// Taylor's series (Phi' = Pi, Phi'' = F, Phi''' = F'): the force is not evaluated at the
-/// zero itself.
-template <class Jet>
-PhaseZero PhaseRoot(const Forcing& force, const Jet& jet, const Angle& lo, const Angle& hi,
+/// below kRootErrorTol, and then takes F, Pi and Phi at the zero from the last iterate's jet
+/// by Taylor's series (Phi' = Pi, Pi' = F): the force is not evaluated at the zero itself.
+/// `force` is a Forcing or a detail::SegmentForce (Jet and Values of an Angle, and StepAngle).
+template <class Force, class Jet>
+PhaseZero PhaseRoot(const Force& force, const Jet& jet, const Angle& lo, const Angle& hi,
                     double flo, double fhi) {
-  if (flo == 0.0) return {lo, force.Values(lo).Phi};
-  if (fhi == 0.0) return {hi, force.Values(hi).Phi};
+  if (flo == 0.0) return {lo, force.Values(lo)};
+  if (fhi == 0.0) return {hi, force.Values(hi)};
   double neg = flo < 0.0 ? lo.phi : hi.phi, pos = flo < 0.0 ? hi.phi : lo.phi;  // f < 0 < f
   const double chord = lo.phi - flo * (hi.phi - lo.phi) / (fhi - flo);
   double x = chord > lo.phi && chord < hi.phi ? chord : 0.5 * (lo.phi + hi.phi);
-  Angle at = (std::abs(flo) <= std::abs(fhi) ? lo : hi).Toward(x);
+  Angle at = StepAngle(force, std::abs(flo) <= std::abs(fhi) ? lo : hi, x);
   double step = hi.phi - lo.phi, step_old = step;  // the last two steps
   for (int it = 0; it < kRootMaxIter; ++it) {
     const ForceJet v = force.Jet(at);
     const PhaseJet j = jet(at, v);
-    if (j.f == 0.0) return {at, v.Phi};
+    if (j.f == 0.0) return {at, {v.F, v.Pi, v.Phi}};
     (j.f < 0.0 ? neg : pos) = x;
     const double newton = j.f / j.df, M = 0.5 * j.ddf / j.df;
     const double halley = 1.0 - M * newton;  // Halley's step is newton / halley
@@ -73,12 +83,16 @@ PhaseZero PhaseRoot(const Forcing& force, const Jet& jet, const Angle& lo, const
     const double left =
         cubic ? (M * M + std::abs(j.d3f / (6.0 * j.df))) * s * s * s : std::abs(M) * s * s;
     if (s < kRootAbsTol || (!bisect && s <= kTaylorStep && left < kRootErrorTol)) {
-      return {at.Toward(next), v.Phi + step * (v.Pi + 0.5 * step * (v.F + step / 3.0 * v.dF))};
+      const double h = step;
+      return {StepAngle(force, at, next),
+              {v.F + h * (v.dF + 0.5 * h * v.ddF),
+               v.Pi + h * (v.F + 0.5 * h * (v.dF + h / 3.0 * v.ddF)),
+               v.Phi + h * (v.Pi + 0.5 * h * (v.F + h / 3.0 * v.dF))}};
     }
     x = next;
-    at = at.Toward(x);
+    at = StepAngle(force, at, x);
   }
-  return {at, force.Values(at).Phi};
+  return {at, force.Values(at)};
 }
 
 }  // namespace capsubot::detail
