@@ -128,12 +128,16 @@ class SegmentForce {
 };
 
 /// How PhaseRoot moves from one iterate's angle to the next in a segment: angle addition for
-/// short steps (Angle::Toward's short series), LocalCosSin for longer ones (cheaper than the
-/// long series).
+/// steps that are short (Angle::Toward's short series) and at most half the target phase,
+/// LocalCosSin otherwise. Angle addition errs by about an ulp of 1 in sin s; the second
+/// bound keeps that a few ulp of sin s itself where s is small (the short flights of a
+/// chattering sequence), as LocalCosSin is.
 inline Angle StepAngle(const SegmentForce& force, const Angle& from, double to) {
   (void)force;
   constexpr double kShortStep = 0.125;  // Angle::Toward's short series
-  return std::abs(to - from.phi) <= kShortStep ? from.Toward(to) : SegmentForce::At(to);
+  const double step = std::abs(to - from.phi);
+  return step <= kShortStep && step <= 0.5 * std::abs(to) ? from.Toward(to)
+                                                         : SegmentForce::At(to);
 }
 
 }  // namespace capsubot::detail

@@ -390,7 +390,7 @@ struct Event {
 };
 
 // The run as a loop of three named steps: LocateEvent (the earliest event of the current mode
-// within a window of at most one period), Advance (move the segment's origin there: samples,
+// within one period), Advance (move the segment's origin there: samples,
 // energy, state) and ApplyEvent (the instantaneous transition, then Settle for the ones it
 // triggers at the same phase).
 class Simulation {
@@ -413,7 +413,7 @@ class Simulation {
   SimState StateAt(double s, const ForceValues& w) const;  // w: the force's values at s
 
   // The three steps.
-  Event LocateEvent(double window) const;
+  Event LocateEvent() const;
   SimState Advance(double s, const ForceValues* w = nullptr);  // w: the values at s if known
   void ApplyEvent(const Event& event, double u_before, double v_before);
 
@@ -683,7 +683,8 @@ void Simulation::Settle(Slide hint) {
   }
 }
 
-Event Simulation::LocateEvent(double window) const {
+Event Simulation::LocateEvent() const {
+  constexpr double window = kTau;
   Event ev;
   if (sg_.OnWall()) {
     // Moving with the capsule: it stops (v' = -sgn T0), or the contact force changes sign.
@@ -814,8 +815,11 @@ SimResult Simulation::Run() {
     const double rem = Remaining();
     bool boundary = rem <= 0.0;
     if (!boundary) {
+      // Events are searched over a whole period whatever is left of the run, so where an
+      // event is found (to the last bit) never depends on where the run ends; those beyond
+      // the end (and its slack) are left to the next run.
       const double window = std::min(kTau, rem + kEndSlack);
-      const Event event = LocateEvent(window);
+      const Event event = LocateEvent();
       if (event.s <= window) {
         stalled = event.s > 0.0 ? 0 : stalled + 1;
         if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
