@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "capsubot/forcing.hpp"
 #include "numerics/safe_newton.hpp"
@@ -41,11 +42,34 @@ inline constexpr double kTaylorStep = 1e-5;
 /// an ulp.
 inline constexpr double kRootErrorTol = 1e-17;
 
+/// One end of a bracket: the angle, and f, f', f'' there.
+struct BracketEnd {
+  Angle at;
+  double f, df, ddf;
+};
+
+/// The zero next to e of the parabola of f at e, f + f' h + f'' h^2/2 (in the form without
+/// cancellation); NaN when it has none.
+inline double ParabolaZero(const BracketEnd& e) {
+  const double disc = e.df * e.df - 2.0 * e.f * e.ddf;
+  if (!(disc >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return e.at.phi - 2.0 * e.f / (e.df + std::copysign(std::sqrt(disc), e.df));
+}
+
+/// A first iterate for PhaseRoot where the zero may lie close to one end of a long bracket
+/// (a short flight, a short slide), which the chord places badly: ParabolaZero of the end
+/// whose Newton step -f/f' is the shorter; NaN when it is not strictly inside the bracket.
+inline double ParabolaStart(const BracketEnd& lo, const BracketEnd& hi) {
+  const double x = ParabolaZero(std::abs(lo.f * hi.df) <= std::abs(hi.f * lo.df) ? lo : hi);
+  return x > lo.at.phi && x < hi.at.phi ? x : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// The zero in [lo, hi] of a function of the phase whose values at the bracket's ends are
 /// known, flo and fhi of opposite signs (or one of them zero): jet(at, force) returns f and
 /// its first three derivatives at the angle `at` given the force's jet there (force.Jet(at)).
 /// Halley's iteration, kept inside the shrinking bracket (bisection whenever a step would
-/// leave it or converge too slowly, as in SafeNewtonFrom), started from the chord's zero.
+/// leave it or converge too slowly, as in SafeNewtonFrom), started from `start` when it lies
+/// inside the bracket (stepping its angle from the nearer end), else from the chord's zero.
 /// Each iterate's cosine and sine come from the previous one by angle addition
 /// (Angle::Toward), so the converging steps cost no sincos. Near the zero a Halley step s
 /// leaves an error of about (M^2 - f'''/(6 f')) s^3, M = f''/(2 f') (a Newton step, taken
@@ -56,13 +80,19 @@ inline constexpr double kRootErrorTol = 1e-17;
 /// `force` is a Forcing or a detail::SegmentForce (Jet and Values of an Angle, and StepAngle).
 template <class Force, class Jet>
 PhaseZero PhaseRoot(const Force& force, const Jet& jet, const Angle& lo, const Angle& hi,
-                    double flo, double fhi) {
+                    double flo, double fhi,
+                    double start = std::numeric_limits<double>::quiet_NaN()) {
   if (flo == 0.0) return {lo, force.Values(lo)};
   if (fhi == 0.0) return {hi, force.Values(hi)};
   double neg = flo < 0.0 ? lo.phi : hi.phi, pos = flo < 0.0 ? hi.phi : lo.phi;  // f < 0 < f
-  const double chord = lo.phi - flo * (hi.phi - lo.phi) / (fhi - flo);
-  double x = chord > lo.phi && chord < hi.phi ? chord : 0.5 * (lo.phi + hi.phi);
-  Angle at = StepAngle(force, std::abs(flo) <= std::abs(fhi) ? lo : hi, x);
+  double x = start;
+  const Angle* from = x - lo.phi <= hi.phi - x ? &lo : &hi;
+  if (!(start > lo.phi && start < hi.phi)) {
+    const double chord = lo.phi - flo * (hi.phi - lo.phi) / (fhi - flo);
+    x = chord > lo.phi && chord < hi.phi ? chord : 0.5 * (lo.phi + hi.phi);
+    from = std::abs(flo) <= std::abs(fhi) ? &lo : &hi;
+  }
+  Angle at = StepAngle(force, *from, x);
   double step = hi.phi - lo.phi, step_old = step;  // the last two steps
   for (int it = 0; it < kRootMaxIter; ++it) {
     const ForceJet v = force.Jet(at);

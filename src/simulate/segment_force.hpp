@@ -128,16 +128,18 @@ class SegmentForce {
 };
 
 /// How PhaseRoot moves from one iterate's angle to the next in a segment: angle addition for
-/// steps that are short (Angle::Toward's short series) and at most half the target phase,
-/// LocalCosSin otherwise. Angle addition errs by about an ulp of 1 in sin s; the second
-/// bound keeps that a few ulp of sin s itself where s is small (the short flights of a
-/// chattering sequence), as LocalCosSin is.
+/// steps that are short (Angle::Toward's short series) and, unless they start from the
+/// origin itself, at most half the target phase; LocalCosSin otherwise. Angle addition from
+/// an angle other than 0 errs by about an ulp of 1 in sin s; the second bound keeps that a
+/// few ulp of sin s itself where s is small (the short flights of a chattering sequence), as
+/// LocalCosSin is.
 inline Angle StepAngle(const SegmentForce& force, const Angle& from, double to) {
   (void)force;
   constexpr double kShortStep = 0.125;  // Angle::Toward's short series
   const double step = std::abs(to - from.phi);
-  return step <= kShortStep && step <= 0.5 * std::abs(to) ? from.Toward(to)
-                                                         : SegmentForce::At(to);
+  return step <= kShortStep && (from.phi == 0.0 || step <= 0.5 * std::abs(to))
+             ? from.Toward(to)
+             : SegmentForce::At(to);
 }
 
 }  // namespace capsubot::detail

@@ -32,6 +32,10 @@ constexpr double kChatterSpan = 1e-3;
 // Points at which ReachOnPiece evaluates a concave piece while it bounds its maximum (Newton
 // steps on f', a few near a smooth maximum; this many only guard against rounding loops).
 constexpr int kMaxTangentCuts = 100;
+// A probe for an event predicted by the parabola of its function at a segment's origin goes
+// this far beyond the prediction (relative to the distance from the origin), so a good
+// prediction lands just past the event and brackets it.
+constexpr double kProbeReach = 1.01;
 // More consecutive events than this without any progress in phase: report, never hang.
 constexpr int kMaxStalledEvents = 1000;
 
@@ -125,11 +129,11 @@ void SetCoefficients(Segment& sg, Slide slide) {
 // The first zero in (l, r] of f(s) = dir (x(s) - level) from below, dir = Sign(wall),
 // level = Position(wall): where the inner body reaches `wall` moving towards it, on a piece
 // between consecutive crossings of F = -b, where x'' = kx (F + b) keeps its sign, so f is
-// convex or concave and has at most two zeros. Given the ends' angles (al, ar), f, f' at the
-// ends (fl, dl, fr, dr), the sign of f'' on the piece (`curvature`: dir times the sign of
-// F + b on it, SegmentForce::PieceSign, when the piece starts with the body on the wall;
-// otherwise f'(r) - f'(l), of the same sign as f' is monotone on the piece) and whether the
-// piece starts with the body on the wall (from_wall: f(0) = 0, leaving it):
+// convex or concave and has at most two zeros. Given the ends (lo, hi: angles, f, f', f''),
+// the sign of f'' on the piece (`curvature`: dir times the sign of F + b on it,
+// SegmentForce::PieceSign, when the piece starts with the body on the wall; otherwise
+// f'(r) - f'(l), of the same sign as f' is monotone on the piece) and whether the piece starts
+// with the body on the wall (from_wall: f(0) = 0, leaving it):
 //   - f(l) < 0 <= f(r): exactly one crossing, found by the root finder;
 //   - f(l) < 0, f(r) < 0, convex: no zero;
 //   - f(l) < 0, f(r) < 0, concave: a zero only if the maximum (the unique zero of the monotone
@@ -143,35 +147,34 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //     (st, r], else the minimum is found from st and then as above; a piece with F + b = 0
 //     within rounding (PieceSign 0) is neither: the body stays where it is.
 // The crossing: detail::PhaseRoot (Halley's iteration with the closed-form derivatives, kept
-// inside the bracket, bisection fallback), to about an ulp in phase, with the force's values
-// there; the extrema: detail::SafeNewtonFrom on f' from a point whose f' and f'' are known.
+// inside the bracket, bisection fallback, started from detail::ParabolaStart), to about an
+// ulp in phase, with the force's values there; the extrema: detail::SafeNewtonFrom on f' from
+// a point whose f' and f'' are known.
 // Returns at.phi = +inf when there is no zero in (l, r].
 using Hit = detail::PhaseZero;  // an event's local phase (+inf: none) and the force there
 Hit NoHit() { return {{kInf, 1.0, 0.0}, {}}; }
 
-Hit ReachOnPiece(const Segment& sg, Wall wall, const Angle& al, const Angle& ar, double fl,
-                 double dl, double fr, double dr, double curvature, bool from_wall) {
-  const double level = Position(wall), dir = Sign(wall), l = al.phi, r = ar.phi;
+Hit ReachOnPiece(const Segment& sg, Wall wall, const detail::BracketEnd& lo,
+                 const detail::BracketEnd& hi, double curvature, bool from_wall) {
+  const double level = Position(wall), dir = Sign(wall), l = lo.at.phi, r = hi.at.phi;
+  const double fl = lo.f, dl = lo.df, fr = hi.f, dr = hi.df;
   // f = dir (x - level), f' = dir u, f'' = dir x'': all three from one sincos.
-  struct Point {
-    Angle a;
-    double f, df, ddf;
-  };
   const auto at = [&](double s) {
     const Angle a = detail::SegmentForce::At(s);
     const ForceValues w = sg.f.Values(a);
-    return Point{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
+    return detail::BracketEnd{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w),
+                              dir * sg.Accel(w)};
   };
   const auto jet = [&](const Angle& a, const ForceJet& j) {
     const ForceValues w{j.F, j.Pi, j.Phi};
     return detail::PhaseJet{dir * (sg.X(a.phi, w) - level), dir * sg.U(a.phi, w),
                             dir * sg.Accel(w), dir * sg.kx * j.dF};
   };
-  const auto crossing = [&](const Angle& lo, const Angle& hi, double flo, double fhi) {
-    return detail::PhaseRoot(sg.f, jet, lo, hi, flo, fhi);
+  const auto crossing = [&](const detail::BracketEnd& a, const detail::BracketEnd& b) {
+    return detail::PhaseRoot(sg.f, jet, a.at, b.at, a.f, b.f, detail::ParabolaStart(a, b));
   };
   const auto dfddf = [&](double s) {
-    const Point p = at(s);
+    const detail::BracketEnd p = at(s);
     return std::pair<double, double>(p.df, p.ddf);
   };
   // Where the tangents at l and r meet (inside (l, r) when dl and dr have opposite signs;
@@ -180,21 +183,21 @@ Hit ReachOnPiece(const Segment& sg, Wall wall, const Angle& al, const Angle& ar,
     return std::clamp((fr - fl - dr * r + dl * l) / (dl - dr), l, r);
   };
   // Pressed into the wall (the caller settles this case first): the hit is at l.
-  const auto pressed = [&] { return Hit{al, sg.f.Values(al)}; };
+  const auto pressed = [&] { return Hit{lo.at, sg.f.Values(lo.at)}; };
   if (from_wall) {
     if (curvature > 0.0 && fr >= 0.0) {
       // Convex, leaving the wall: it returns after its minimum.
       if (!(dl < 0.0 && dr > 0.0)) return pressed();
       const double st = tangents_meet();
-      const Point pt = at(st);
-      if (pt.f < 0.0) return crossing(pt.a, ar, pt.f, fr);
-      const double lo = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
-      const Point pm = at(lo);
-      if (pm.f < 0.0) return crossing(pm.a, ar, pm.f, fr);
+      const detail::BracketEnd pt = at(st);
+      if (pt.f < 0.0) return crossing(pt, hi);
+      const double low = detail::SafeNewtonFrom(dfddf, l, r, dl, dr, st, pt.df, pt.ddf);
+      const detail::BracketEnd pm = at(low);
+      if (pm.f < 0.0) return crossing(pm, hi);
       return pressed();
     }
   } else if (fl < 0.0 && fr >= 0.0) {
-    return crossing(al, ar, fl, fr);
+    return crossing(lo, hi);
   } else if (fl < 0.0 && curvature < 0.0 && dl > 0.0 && dr < 0.0) {
     // Concave with its maximum inside [a, b] (f'(a) > 0 > f'(b)): f lies below its tangents,
     // so the height where the tangents at a and b meet bounds the maximum; below 0: no zero.
@@ -208,8 +211,8 @@ Hit ReachOnPiece(const Segment& sg, Wall wall, const Angle& al, const Angle& ar,
     double x = meet();
     if (fa + da * (x - a) < 0.0) return NoHit();
     for (int cut = 0; cut < kMaxTangentCuts; ++cut) {
-      const Point p = at(x);
-      if (p.f >= 0.0) return crossing(al, p.a, fl, p.f);
+      const detail::BracketEnd p = at(x);
+      if (p.f >= 0.0) return crossing(lo, p);
       if (p.df > 0.0) {
         a = x, fa = p.f, da = p.df;
       } else if (p.df < 0.0) {
@@ -242,7 +245,7 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
                   const Hit* end) {
   Angle al = detail::SegmentForce::At(0.0);
   ForceValues w = sg.f.Values(al);
-  double xl = sg.X(0.0, w), ul = sg.U(0.0, w);
+  double xl = sg.X(0.0, w), ul = sg.U(0.0, w), accl = sg.Accel(w);
   const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
   int next_cut = 0;
   while (al.phi < limit) {
@@ -250,48 +253,58 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
     while (next_cut < cuts.n && cuts.phi[next_cut] <= l + kMinCut) ++next_cut;
     const double r = next_cut < cuts.n ? std::min(cuts.phi[next_cut], limit) : limit;
     const bool known = end != nullptr && end->at.phi == r;
-    const Angle ar = known ? end->at : detail::SegmentForce::At(r);
+    const Angle ar = known ? end->at : detail::StepAngle(sg.f, al, r);
     w = known ? end->values : sg.f.Values(ar);
-    const double xr = sg.X(r, w), ur = sg.U(r, w);
+    const double xr = sg.X(r, w), ur = sg.U(r, w), accr = sg.Accel(w);
     // Sign of x'' on (l, r): from the force where a piece leaves a wall, else from the
     // monotone u.
     const double accel = l == 0.0 && (right_from_wall || left_from_wall)
                              ? sg.f.PieceSign(-sg.b, l, r)
                              : ur - ul;
-    const Hit right = ReachOnPiece(sg, Wall::kRight, al, ar, xl - 1.0, ul, xr - 1.0, ur, accel,
-                                   l == 0.0 && right_from_wall);
-    const Hit left = ReachOnPiece(sg, Wall::kLeft, al, ar, -xl, -ul, -xr, -ur, -accel,
-                                  l == 0.0 && left_from_wall);
+    const Hit right = ReachOnPiece(sg, Wall::kRight, {al, xl - 1.0, ul, accl},
+                                   {ar, xr - 1.0, ur, accr}, accel, l == 0.0 && right_from_wall);
+    const Hit left = ReachOnPiece(sg, Wall::kLeft, {al, -xl, -ul, -accl}, {ar, -xr, -ur, -accr},
+                                  -accel, l == 0.0 && left_from_wall);
     if (left.at.phi <= right.at.phi && left.at.phi < kInf) return {left, EventKind::kImpactLeft};
     if (right.at.phi < kInf) return {right, EventKind::kImpactRight};
     al = ar;
     xl = xr;
     ul = ur;
+    accl = accr;
   }
   return {};
 }
 
 // First s in (0, limit] where the sliding capsule stops: v' = -(sgn T0 + F)/(1-alpha) keeps its
 // sign between the crossings of F = -sgn T0, so v is monotone on each piece and the first
-// piece whose end has sgn v <= 0 brackets the unique stop (detail::PhaseRoot, with the force
-// there). at.phi = +inf when there is none.
+// piece whose end has sgn v <= 0 brackets the unique stop (detail::PhaseRoot from
+// detail::ParabolaStart, with the force there). at.phi = +inf when there is none.
 Hit FirstStop(const Segment& sg, double limit) {
   const auto jet = [&](const Angle& a, const ForceJet& j) {
     const double k = -1.0 / (1.0 - sg.alpha);
     return detail::PhaseJet{sg.V(a.phi, {j.F, j.Pi, j.Phi}), sg.VelocityRate(j.F), k * j.dF,
                             k * j.ddF};
   };
+  const auto end = [&](const Angle& a) {
+    const detail::PhaseJet j = jet(a, sg.f.Jet(a));
+    return detail::BracketEnd{a, j.f, j.df, j.ddf};
+  };
   const detail::CrossingList cuts = sg.f.Crossings(-sg.sgn * sg.T0, 0.0, limit);
-  Angle al = detail::SegmentForce::At(0.0);
-  double vl = sg.v0;
+  detail::BracketEnd lo = end(detail::SegmentForce::At(0.0));
+  // A probe just beyond the stop the parabola of v at the origin predicts: an extra cut that
+  // brackets a short slide without the end of its piece.
+  double probe = lo.at.phi + kProbeReach * (detail::ParabolaZero(lo) - lo.at.phi);
   int i = 0;
-  while (al.phi < limit) {
-    while (i < cuts.n && cuts.phi[i] <= al.phi + kMinCut) ++i;
-    const Angle ar = detail::SegmentForce::At(i < cuts.n ? std::min(cuts.phi[i], limit) : limit);
-    const double vr = sg.V(ar.phi, sg.f.Values(ar));
-    if (sg.sgn * vr <= 0.0) return detail::PhaseRoot(sg.f, jet, al, ar, vl, vr);
-    al = ar;
-    vl = vr;
+  while (lo.at.phi < limit) {
+    while (i < cuts.n && cuts.phi[i] <= lo.at.phi + kMinCut) ++i;
+    double r = i < cuts.n ? std::min(cuts.phi[i], limit) : limit;
+    if (probe > lo.at.phi + kMinCut && probe < r) r = probe;
+    probe = kInf;
+    const detail::BracketEnd hi = end(detail::StepAngle(sg.f, lo.at, r));
+    if (sg.sgn * hi.f <= 0.0) {
+      return detail::PhaseRoot(sg.f, jet, lo.at, hi.at, lo.f, hi.f, detail::ParabolaStart(lo, hi));
+    }
+    lo = hi;
   }
   return NoHit();
 }
