@@ -29,8 +29,7 @@ constexpr std::array<Inverse, kMaxHarmonics> kInverse = Inverses();
 
 }  // namespace
 
-void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels,
-                           double tol) {
+void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels, double tol) {
   n_levels_ = 0;
   tol_ = tol;
   for (int i = 0; i < n_levels && n_levels_ < kMaxLevels; ++i) {

@@ -162,13 +162,12 @@ Hit ReachOnPiece(const Segment& sg, Wall wall, const detail::BracketEnd& lo,
   const auto at = [&](double s) {
     const Angle a = detail::SegmentForce::At(s);
     const ForceValues w = sg.f.Values(a);
-    return detail::BracketEnd{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w),
-                              dir * sg.Accel(w)};
+    return detail::BracketEnd{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
   };
   const auto jet = [&](const Angle& a, const ForceJet& j) {
     const ForceValues w{j.F, j.Pi, j.Phi};
-    return detail::PhaseJet{dir * (sg.X(a.phi, w) - level), dir * sg.U(a.phi, w),
-                            dir * sg.Accel(w), dir * sg.kx * j.dF};
+    return detail::PhaseJet{dir * (sg.X(a.phi, w) - level), dir * sg.U(a.phi, w), dir * sg.Accel(w),
+                            dir * sg.kx * j.dF};
   };
   const auto crossing = [&](const detail::BracketEnd& a, const detail::BracketEnd& b) {
     return detail::PhaseRoot(sg.f, jet, a.at, b.at, a.f, b.f, detail::ParabolaStart(a, b));
@@ -258,9 +257,8 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
     const double xr = sg.X(r, w), ur = sg.U(r, w), accr = sg.Accel(w);
     // Sign of x'' on (l, r): from the force where a piece leaves a wall, else from the
     // monotone u.
-    const double accel = l == 0.0 && (right_from_wall || left_from_wall)
-                             ? sg.f.PieceSign(-sg.b, l, r)
-                             : ur - ul;
+    const double accel =
+        l == 0.0 && (right_from_wall || left_from_wall) ? sg.f.PieceSign(-sg.b, l, r) : ur - ul;
     const Hit right = ReachOnPiece(sg, Wall::kRight, {al, xl - 1.0, ul, accl},
                                    {ar, xr - 1.0, ur, accr}, accel, l == 0.0 && right_from_wall);
     const Hit left = ReachOnPiece(sg, Wall::kLeft, {al, -xl, -ul, -accl}, {ar, -xr, -ur, -accr},
@@ -714,8 +712,11 @@ Event Simulation::LocateEvent() const {
   } else {
     const double back = FirstCrossing(sg_.f, sg_.T0, true, window);
     const double fwd = FirstCrossing(sg_.f, -sg_.T0, false, std::min(window, back));
-    ev = {std::min(back, fwd), EventKind::kBreakaway,
-          fwd <= back ? Slide::kForward : Slide::kBackward, false, {}};
+    ev = {std::min(back, fwd),
+          EventKind::kBreakaway,
+          fwd <= back ? Slide::kForward : Slide::kBackward,
+          false,
+          {}};
   }
   const double limit = std::min(window, ev.s);
   const detail::CrossingList cuts = sg_.f.Crossings(-sg_.b, 0.0, limit);
