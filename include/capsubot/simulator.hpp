@@ -5,8 +5,9 @@
 //
 // Inside each mode the motion is in closed form; events are located by exact bracketing on
 // pieces where the event function is monotone, convex or concave (cut at the crossings of F
-// with known levels), then a bracketed Newton iteration to ~1e-14 in phase. See docs/simulate.md
-// for why no event is missed, and for the energy budget (docs/model.md section 11).
+// with known levels), then Halley's iteration kept in the bracket, to about an ulp in phase.
+// See docs/simulate.md for why no event is missed, and for the energy budget (docs/model.md
+// section 11).
 
 #include <cstdint>
 #include <limits>

@@ -23,8 +23,9 @@ using testing::StartAt;
 using testing::Near;
 using testing::RelNear;
 
-// Events are located to ~1e-14 in phase and the closed forms are exact: after a period the
-// state agrees with the analytic orbit to rounding (observed ~1e-15); 1e-9 is the bar.
+// Events are located to about an ulp in phase and the closed forms are exact: after a period
+// the state agrees with the analytic orbit to rounding (observed ~1e-15); 1e-9 is the
+// agreement asked of the analytic orbit.
 constexpr double kPeriodTol = 1e-9;
 // Grid of impact phases scanned for orbits in each validation case.
 constexpr int kScan = 64;
