@@ -5,7 +5,7 @@
 //
 // Inside each mode the motion is in closed form; events are located by exact bracketing on
 // pieces where the event function is monotone, convex or concave (cut at the crossings of F
-// with known levels), then Halley's iteration kept in the bracket, to about an ulp in phase.
+// with known levels), then Halley's iteration kept in the bracket, to a few ulp in phase.
 // See docs/simulate.md for why no event is missed, and for the energy budget (docs/model.md
 // section 11).
 
@@ -114,7 +114,7 @@ enum class SimStatus {
   kImpactLimit,  ///< stopped right after max_impacts_right right-wall impacts
   kEventLimit,   ///< the work bound was hit (message says where); the state is where it stopped
   /// The state stopped being finite numbers (a velocity or position beyond double precision,
-  /// e.g. a huge u0): the run stops there, message says where; the final state is that state.
+  /// e.g. a huge v0): the run stops there, message says where; the final state is that state.
   kNonFinite,
 };
 

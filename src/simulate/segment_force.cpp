@@ -40,8 +40,11 @@ void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_lev
     for (int k = 0; k < std::max(n, 1); ++k) {
       const double l = n == 0 ? 0.0 : entry.t.phi[k];
       const double r = n == 0 ? kTau : k + 1 < n ? entry.t.phi[k + 1] : entry.t.phi[0] + kTau;
-      const double g = motor.F(0.5 * (l + r)) - levels[i];
-      entry.sign[k] = g > tol ? 1.0 : g < -tol ? -1.0 : 0.0;
+      // F - level keeps its sign between crossings: its largest size on the piece decides, so
+      // a point of the piece where F nearly touches the level cannot.
+      const Range range = motor.Bounds(l, r);
+      const double high = range.max - levels[i], low = range.min - levels[i];
+      entry.sign[k] = high >= -low ? (high > tol ? 1.0 : 0.0) : (low < -tol ? -1.0 : 0.0);
     }
   }
 }

@@ -32,8 +32,9 @@ class SegmentForce {
   static constexpr double kNearCut = 1e-3;
 
   /// Once per run: the crossings over one period of `motor` (shift 0) with each of `levels`
-  /// (at most kMaxLevels), and the sign of F - level between them (PieceSign with `tol`);
-  /// Crossings and PieceSign of these levels then only shift them to the segment.
+  /// (at most kMaxLevels), and the sign of F - level between them, from its largest size on
+  /// each piece (exact bounds of F; 0 when F stays within `tol` of the level on the whole
+  /// piece); Crossings and PieceSign of these levels then only shift them to the segment.
   void Prepare(const Forcing& motor, const double* levels, int n_levels, double tol);
   /// F(s) = G(origin + s) with G the motor force and origin = motor.phi0() + shift: the same
   /// series as motor.WithPhase(motor.phi0() + shift) to rounding (LocalCosSin of k origin).
@@ -72,7 +73,8 @@ class SegmentForce {
   /// level (0 <= l < r <= l + tau): +1 or -1, or 0 when |F - level| <= tol in its middle (a
   /// touch, or a piece too short to matter: F stays on the level within rounding). For a
   /// prepared level and a part longer than kNearCut, the tabulated sign of the piece that
-  /// holds its middle (no evaluation of F).
+  /// holds its middle (no evaluation of F; decided where F - level is largest, so a point
+  /// where F nearly touches the level inside a piece changes nothing).
   double PieceSign(double level, double l, double r) const;
   /// Every s in [lo, hi] (0 <= lo, hi - lo <= tau) where F crosses or touches `level`,
   /// sorted: Forcing::Crossings of the same series; for a prepared level, the motor's
@@ -83,8 +85,8 @@ class SegmentForce {
   struct LevelCrossings {
     double level = 0.0;
     PhaseList t;  // crossings in [0, tau) of the series at shift 0
-    // sign[i]: PieceSign on (t[i], t[i+1]) (t[n] = t[0] + tau); with no crossing, sign[0] on
-    // the whole period.
+    // sign[i]: the sign of F - level on (t[i], t[i+1]) (t[n] = t[0] + tau); with no
+    // crossing, sign[0] on the whole period (see Prepare).
     std::array<double, 2 * kMaxHarmonics + 2> sign{};
   };
   const LevelCrossings* Find(double level) const {

@@ -147,7 +147,7 @@ void SetCoefficients(Segment& sg, Slide slide) {
 //     (st, r], else the minimum is found from st and then as above; a piece with F + b = 0
 //     within rounding (PieceSign 0) is neither: the body stays where it is.
 // The crossing: detail::PhaseRoot (Halley's iteration with the closed-form derivatives, kept
-// inside the bracket, bisection fallback, started from detail::ParabolaStart), to about an
+// inside the bracket, bisection fallback, started from detail::ParabolaStart), to a few
 // ulp in phase, with the force's values there; the extrema: detail::SafeNewtonFrom on f' from
 // a point whose f' and f'' are known.
 // Returns at.phi = +inf when there is no zero in (l, r].
