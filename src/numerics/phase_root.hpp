@@ -86,11 +86,13 @@ PhaseZero PhaseRoot(const Force& force, const Jet& jet, const Angle& lo, const A
   if (fhi == 0.0) return {hi, force.Values(hi)};
   double neg = flo < 0.0 ? lo.phi : hi.phi, pos = flo < 0.0 ? hi.phi : lo.phi;  // f < 0 < f
   double x = start;
-  const Angle* from = x - lo.phi <= hi.phi - x ? &lo : &hi;
-  if (!(start > lo.phi && start < hi.phi)) {
+  const Angle* from = &lo;  // the end whose angle the first iterate's is stepped from
+  if (start > lo.phi && start < hi.phi) {
+    if (hi.phi - x < x - lo.phi) from = &hi;
+  } else {
     const double chord = lo.phi - flo * (hi.phi - lo.phi) / (fhi - flo);
     x = chord > lo.phi && chord < hi.phi ? chord : 0.5 * (lo.phi + hi.phi);
-    from = std::abs(flo) <= std::abs(fhi) ? &lo : &hi;
+    if (std::abs(flo) > std::abs(fhi)) from = &hi;
   }
   Angle at = StepAngle(force, *from, x);
   double step = hi.phi - lo.phi, step_old = step;  // the last two steps

@@ -401,9 +401,9 @@ struct Event {
 };
 
 // The run as a loop of three named steps: LocateEvent (the earliest event of the current mode
-// within one period), Advance (move the segment's origin there: samples,
-// energy, state) and ApplyEvent (the instantaneous transition, then Settle for the ones it
-// triggers at the same phase).
+// within one period), Advance (move the segment's origin there: samples, energy, state) and
+// ApplyEvent (the instantaneous transition, then Settle for the ones it triggers at the same
+// phase).
 class Simulation {
  public:
   Simulation(const Forcing& forcing, const Params& params, const SimOptions& opt,
