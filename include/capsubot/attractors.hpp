@@ -61,6 +61,9 @@ struct MotionOptions {
   /// Work bound per simulated period (SimOptions::max_events_per_period): a start that needs
   /// more ends with status kEventLimit (a Zeno sequence of impacts); >= 10.
   std::int64_t max_events_per_period = 1000;
+  /// The simulator's reuse of located events along repeated cycles
+  /// (SimOptions::reuse_cycles): the same results bit for bit; false only to time the search.
+  bool reuse_cycles = true;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

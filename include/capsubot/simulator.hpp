@@ -103,6 +103,13 @@ struct SimOptions {
   /// half again the time per period (the positive part needs the sign changes of F u), so the
   /// hot path leaves it off; the budget is NaN then.
   bool energy = false;
+  /// Reuse located events along a repeated cycle: once the state at the origin of a segment
+  /// (mode, phase within the period, x, u, v) equals, bit for bit, its state at the start of
+  /// one of the last 64 periods, the events located from there on are taken again instead of
+  /// searched (the search is a function of that state alone). Every event is still applied
+  /// and reported, so the run is the same bit for bit; false searches every event (to time
+  /// the search itself).
+  bool reuse_cycles = true;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
@@ -151,6 +158,9 @@ struct SimResult : SimTally {
   /// The first SimOptions::transient periods (all zero/NaN when there is none). A run stopped
   /// inside the transient (impact or event limit) has all its figures here and an empty record.
   SimTally transient;
+  /// Events of the whole run whose location was taken from an earlier, identical state
+  /// (SimOptions::reuse_cycles) instead of searched.
+  std::int64_t reused_events = 0;
 };
 
 /// Simulates the model of docs/model.md section 3 from the initial state of `options`, with the

@@ -46,6 +46,7 @@ SimResult Advance(const Forcing& forcing, const Params& params, double alpha,
   o.periods = periods;
   o.chatter_velocity = options.chatter_velocity;
   o.max_events_per_period = options.max_events_per_period;
+  o.reuse_cycles = options.reuse_cycles;
   o.sample_step = sample ? kTau : 0.0;
   const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + s.z.psi), params, o, observer);
   const SimState& f = r.final_state;

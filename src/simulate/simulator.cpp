@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +14,7 @@
 #include "model/enum_names.hpp"
 #include "numerics/phase_root.hpp"
 #include "numerics/safe_newton.hpp"
+#include "simulate/cycle_memo.hpp"
 #include "simulate/segment_force.hpp"
 
 namespace capsubot {
@@ -400,6 +403,19 @@ struct Event {
   ForceValues w;
 };
 
+// Everything the event search of a segment depends on (the rest is fixed for the run): the
+// mode, the slide, the origin's phase within the period (the force seen from it) and x, u, v
+// there, compared bit for bit (so 0 and -0 differ).
+struct SegmentKey {
+  SimMode mode = SimMode::kRest;
+  Slide slide = Slide::kNone;
+  std::array<std::uint64_t, 4> bits{};
+
+  bool operator==(const SegmentKey& o) const {
+    return bits == o.bits && mode == o.mode && slide == o.slide;
+  }
+};
+
 // The run as a loop of three named steps: LocateEvent (the earliest event of the current mode
 // within one period), Advance (move the segment's origin there: samples, energy, state) and
 // ApplyEvent (the instantaneous transition, then Settle for the ones it triggers at the same
@@ -425,6 +441,8 @@ class Simulation {
 
   // The three steps.
   Event LocateEvent() const;
+  // LocateEvent, or its result for the same segment state earlier in the run (CycleMemo).
+  Event NextEvent();
   SimState Advance(double s, const ForceValues* w = nullptr);  // w: the values at s if known
   void ApplyEvent(const Event& event, double u_before, double v_before);
 
@@ -468,6 +486,7 @@ class Simulation {
   int chatter_count_ = 0;
   double last_impact_phase_ = -kInf;
   Wall last_impact_wall_ = Wall::kRight;
+  detail::CycleMemo<SegmentKey, Event> memo_;
 };
 
 SimState Simulation::StateAt(double s) const {
@@ -727,6 +746,23 @@ Event Simulation::LocateEvent() const {
   return ev;
 }
 
+Event Simulation::NextEvent() {
+  if (!opt_.reuse_cycles) return LocateEvent();
+  SegmentKey key;
+  key.mode = sg_.mode;
+  key.slide = sg_.slide;
+  const double values[] = {r_, sg_.x0, sg_.u0, sg_.v0};
+  static_assert(sizeof(values) == sizeof(key.bits));
+  std::memcpy(key.bits.data(), values, sizeof(values));
+  if (const Event* known = memo_.Find(key, turns_)) {
+    ++res_.reused_events;
+    return *known;
+  }
+  const Event event = LocateEvent();
+  memo_.Add(key, event);
+  return event;
+}
+
 void Simulation::ApplyEvent(const Event& event, double u_before, double v_before) {
   Slide hint = Slide::kNone;
   switch (event.kind) {
@@ -833,7 +869,7 @@ SimResult Simulation::Run() {
       // event is found (to the last bit) never depends on where the run ends; those beyond
       // the end (and its slack) are left to the next run.
       const double window = std::min(kTau, rem + kEndSlack);
-      const Event event = LocateEvent();
+      const Event event = NextEvent();
       if (event.s <= window) {
         stalled = event.s > 0.0 ? 0 : stalled + 1;
         if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;

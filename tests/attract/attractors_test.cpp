@@ -98,7 +98,7 @@ TEST(Attractors, StableOptimumFromRestEndsInThreeRightOneLeftMotionAtItsLongRunV
   for (const Solution& s : orbits) EXPECT_EQ(CountReached(a, r.forcing, s.orbit), 0);
 }
 
-TEST(Attractors, DoNotDependOnTheThreadCountOrTheEarlyStop) {
+TEST(Attractors, DoNotDependOnTheThreadCountTheEarlyStopOrTheReuseOfCycles) {
   const StableOptimum r;
   FromRestOptions one;
   one.n_x = 4;
@@ -108,13 +108,21 @@ TEST(Attractors, DoNotDependOnTheThreadCountOrTheEarlyStop) {
   two.attractor.threads = 2;
   FromRestOptions full = one;
   full.attractor.motion.converged_tolerance = 0.0;  // the whole transient and record
+  FromRestOptions searched = full;  // and every event searched, none taken from a cycle
+  searched.attractor.motion.reuse_cycles = false;
   const Attractors a1 = FindAttractors(r.forcing, r.params, r.alpha, one);
   const Attractors a2 = FindAttractors(r.forcing, r.params, r.alpha, two);
   const Attractors af = FindAttractors(r.forcing, r.params, r.alpha, full);
+  const Attractors as = FindAttractors(r.forcing, r.params, r.alpha, searched);
   ASSERT_EQ(a1.motions.size(), 16U);
   ASSERT_EQ(a2.motions.size(), 16U);
   ASSERT_EQ(af.motions.size(), 16U);
+  ASSERT_EQ(as.motions.size(), 16U);
   for (std::size_t k = 0; k < a1.motions.size(); ++k) {
+    EXPECT_EQ(af.motions[k].mean_velocity, as.motions[k].mean_velocity);  // bit for bit
+    EXPECT_EQ(af.motions[k].section.x, as.motions[k].section.x);
+    EXPECT_EQ(af.motions[k].section.u, as.motions[k].section.u);
+    EXPECT_EQ(af.labels[k], as.labels[k]);
     EXPECT_EQ(a1.motions[k].mean_velocity, a2.motions[k].mean_velocity);  // bit for bit
     EXPECT_EQ(a1.motions[k].section.x, a2.motions[k].section.x);
     EXPECT_EQ(a1.labels[k], a2.labels[k]);

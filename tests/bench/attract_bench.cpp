@@ -4,7 +4,10 @@
 // directions, 200 + 100 periods per value, with multipliers, on 2 threads (wanted <= 1 s).
 // The default MotionOptions stop a start early once its motion repeats to 1e-11 (what the
 // commands do); the ...Full300Periods variants switch that off (converged_tolerance = 0), so
-// every start or value really simulates its 200 + 100 periods: the targets' worst case.
+// every start or value really simulates its 200 + 100 periods, every event applied: the
+// targets' worst case. The simulator still takes the located events of a cycle again once
+// its state repeats bit for bit (SimOptions::reuse_cycles: the same results); the
+// ...SearchingEveryEvent variants switch that off too, timing the event search alone.
 // The robot is the exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem
 // forcing --stable --json`), whose starts from rest end in a 3-right/1-left motion.
 
@@ -51,7 +54,7 @@ void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
 BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A 1000-value bifurcation diagram in T0, both directions, 2 threads (wanted <= 1 s).
-void Bifurcation1000Values(benchmark::State& state, double converged_tolerance) {
+void Bifurcation1000Values(benchmark::State& state, double converged_tolerance, bool reuse = true) {
   const Robot r;
   capsubot::BifurcationOptions opt;
   opt.param = capsubot::BifurcationParam::kT0;
@@ -61,6 +64,7 @@ void Bifurcation1000Values(benchmark::State& state, double converged_tolerance) 
   opt.analytic = false;
   opt.threads = 2;
   opt.motion.converged_tolerance = converged_tolerance;
+  opt.motion.reuse_cycles = reuse;
   std::size_t rows = 0;
   for (auto _ : state) {
     rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
@@ -84,14 +88,24 @@ BENCHMARK(BM_Bifurcation1000ValuesBothDirectionsFull300Periods)
     ->UseRealTime()
     ->Iterations(1);
 
+void BM_Bifurcation1000ValuesBothDirectionsFull300PeriodsSearchingEveryEvent(
+    benchmark::State& state) {
+  Bifurcation1000Values(state, 0.0, false);
+}
+BENCHMARK(BM_Bifurcation1000ValuesBothDirectionsFull300PeriodsSearchingEveryEvent)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
 // A 256 x 256 basin map, 200 + 100 periods per start, 2 threads (wanted <= 10 s).
-void Basins256x256(benchmark::State& state, double converged_tolerance) {
+void Basins256x256(benchmark::State& state, double converged_tolerance, bool reuse = true) {
   const Robot r;
   capsubot::FromRestOptions opt;
   opt.n_x = 256;
   opt.n_psi = 256;
   opt.attractor.threads = 2;
   opt.attractor.motion.converged_tolerance = converged_tolerance;
+  opt.attractor.motion.reuse_cycles = reuse;
   double sum = 0.0;
   for (auto _ : state) {
     sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
@@ -108,6 +122,14 @@ void BM_Basins256x256TwoThreadsFull300Periods(benchmark::State& state) {
   Basins256x256(state, 0.0);  // 200 + 100 periods at every start
 }
 BENCHMARK(BM_Basins256x256TwoThreadsFull300Periods)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+void BM_Basins256x256TwoThreadsFull300PeriodsSearchingEveryEvent(benchmark::State& state) {
+  Basins256x256(state, 0.0, false);
+}
+BENCHMARK(BM_Basins256x256TwoThreadsFull300PeriodsSearchingEveryEvent)
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

@@ -1,0 +1,153 @@
+// The simulator's reuse of located events along repeated cycles (SimOptions::reuse_cycles,
+// docs/simulate.md "Repeated cycles"): a run with it is the run without it, bit for bit (every
+// count, the state, the displacement, the energy budget, every reported event and sample),
+// and a motion that settles on a periodic attractor takes most of its events from it.
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "capsubot/simulator.hpp"
+#include "capsubot/validity.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::StartAt;
+
+struct Log : SimObserver {
+  std::vector<SimEvent> events;
+  std::vector<SimState> samples;
+  void OnEvent(const SimEvent& e) override { events.push_back(e); }
+  void OnSample(const SimState& s) override { samples.push_back(s); }
+};
+
+// Bit for bit (0 and -0 differ; NaN equals NaN of the same bits).
+bool Same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void ExpectSameState(const SimState& a, const SimState& b) {
+  EXPECT_EQ(a.mode, b.mode);
+  EXPECT_TRUE(Same(a.phi, b.phi) && Same(a.x, b.x) && Same(a.u, b.u) && Same(a.v, b.v) &&
+              Same(a.y, b.y))
+      << a.phi << " " << b.phi;
+}
+
+void ExpectSameTally(const SimTally& a, const SimTally& b) {
+  EXPECT_EQ(a.impacts_right, b.impacts_right);
+  EXPECT_EQ(a.impacts_left, b.impacts_left);
+  EXPECT_EQ(a.stops, b.stops);
+  EXPECT_EQ(a.breakaways, b.breakaways);
+  EXPECT_EQ(a.sticks, b.sticks);
+  EXPECT_EQ(a.releases, b.releases);
+  EXPECT_EQ(a.events, b.events);
+  EXPECT_TRUE(Same(a.displacement, b.displacement));
+  EXPECT_TRUE(Same(a.v_mean, b.v_mean));
+  EXPECT_TRUE(Same(a.energy.motor_work, b.energy.motor_work));
+  EXPECT_TRUE(Same(a.energy.motor_work_positive, b.energy.motor_work_positive));
+  EXPECT_TRUE(Same(a.energy.friction_loss, b.energy.friction_loss));
+  EXPECT_TRUE(Same(a.energy.impact_loss, b.energy.impact_loss));
+}
+
+struct Run {
+  SimResult result;
+  Log log;
+};
+
+Run Simulated(const Forcing& f, const Params& p, SimOptions opt, bool reuse) {
+  opt.reuse_cycles = reuse;
+  opt.energy = true;
+  opt.sample_step = kTau / 7;
+  Run run;
+  run.result = Simulate(f, p, opt, &run.log);
+  return run;
+}
+
+// Runs `opt` with and without the reuse, expects them identical, returns the reused events.
+std::int64_t ExpectIdenticalWithReuse(const Forcing& f, const Params& p, const SimOptions& opt) {
+  const Run off = Simulated(f, p, opt, false), on = Simulated(f, p, opt, true);
+  EXPECT_EQ(off.result.reused_events, 0);
+  EXPECT_EQ(on.result.status, off.result.status);
+  EXPECT_EQ(on.result.message, off.result.message);
+  ExpectSameTally(on.result, off.result);
+  ExpectSameTally(on.result.transient, off.result.transient);
+  ExpectSameState(on.result.final_state, off.result.final_state);
+  EXPECT_EQ(on.log.events.size(), off.log.events.size());
+  for (std::size_t i = 0; i < on.log.events.size() && i < off.log.events.size(); ++i) {
+    const SimEvent &a = on.log.events[i], &b = off.log.events[i];
+    EXPECT_EQ(a.kind, b.kind) << i;
+    ExpectSameState(a.after, b.after);
+    EXPECT_TRUE(Same(a.u_before, b.u_before) && Same(a.v_before, b.v_before)) << i;
+    if (::testing::Test::HasFailure()) break;  // the first difference says it all
+  }
+  EXPECT_EQ(on.log.samples.size(), off.log.samples.size());
+  for (std::size_t i = 0; i < on.log.samples.size() && i < off.log.samples.size(); ++i) {
+    ExpectSameState(on.log.samples[i], off.log.samples[i]);
+  }
+  return on.result.reused_events;
+}
+
+// The exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem forcing --stable
+// --json`): from rest it settles within a few tens of periods on a 3-right/1-left motion with
+// 8 events a period; at T0 = 1.3 it chatters (a dozen impacts and stops a period, ending on
+// the wall).
+const Forcing kOptimum =
+    Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
+constexpr double kOptimumAlpha = 0.6435592358295166;
+
+TEST(SimulatorReuse, ASettledMotionReusesMostEventsAndChangesNoBit) {
+  SimOptions opt = StartAt(kOptimumAlpha, 0.5, 0.0, 0.0, 100.0);
+  opt.transient = 200.0;
+  const std::int64_t reused = ExpectIdenticalWithReuse(kOptimum, Params{1.0, 1.0}, opt);
+  // 300 periods of 8 events; the motion repeats bit for bit after about 20 periods.
+  EXPECT_GT(reused, 2000);
+}
+
+TEST(SimulatorReuse, StartsAllOverThePhaseAndTheWallsChangeNoBit) {
+  std::int64_t reused = 0;
+  int runs = 0;
+  for (const double T0 : {0.6, 1.0, 1.3, 2.0}) {
+    for (const double x0 : {0.0, 0.3, 1.0}) {
+      for (const double psi : {0.0, 2.0, 4.5}) {
+        SimOptions opt = StartAt(kOptimumAlpha, x0, 0.0, 0.0, 60.0);
+        const Forcing f = kOptimum.WithPhase(kOptimum.phi0() + psi);
+        reused += ExpectIdenticalWithReuse(f, Params{T0, 1.0}, opt);
+        ++runs;
+      }
+    }
+  }
+  EXPECT_EQ(runs, 36);
+  EXPECT_GT(reused, 0);
+}
+
+TEST(SimulatorReuse, AStableOneImpactOrbitChangesNoBit) {
+  // A valid, stable orbit (spectral radius ~0.16, see stability_test), from its post-impact
+  // state: 1000 periods of one impact and one stop.
+  Params p;
+  p.T0 = 0.1;
+  p.e = 0.5;
+  const Orbit o = ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.842), p);
+  ASSERT_TRUE(o.ok());
+  const SimOptions opt = StartAt(o.alpha, 1.0, -o.e * o.u, o.v_plus, 1000.0);
+  EXPECT_GT(ExpectIdenticalWithReuse(o.forcing, p, opt), 1000);
+}
+
+TEST(SimulatorReuse, StickingBreakAwayAndWorkBoundChangeNoBit) {
+  // Chattering that ends resting on the wall and releases (SimulatorTest's case) over many
+  // periods; a strong force with break-aways both ways; a run stopped by its work bound.
+  Params p;
+  p.T0 = 0.1;
+  p.e = 0.5;
+  ExpectIdenticalWithReuse(Forcing::Harmonic(0.05, 0.02, 0.0), p,
+                           StartAt(0.3, 0.999, 0.001, 0.0, 50.0));
+  ExpectIdenticalWithReuse(Forcing::Harmonic(2.0, 0.0, 0.0), Params{1.0, 0.5},
+                           StartAt(0.9, 0.5, -2.0 / 0.9, 0.0, 50.0));
+  SimOptions bounded = StartAt(0.3, 0.5, 50.0, 0.0, 40.0);
+  bounded.max_events_per_period = 10;
+  ExpectIdenticalWithReuse(Forcing::Harmonic(0.05, 0.02, 0.0), Params{0.1, 1.0}, bounded);
+}
+
+}  // namespace
+}  // namespace capsubot
