@@ -1,15 +1,19 @@
 #pragma once
 // The results of a pure function of the simulator's state (the event search of a segment),
-// kept along a run so that a run which comes back, bit for bit, to a state it had earlier
-// takes them from here instead of computing them again (docs/simulate.md, "Repeated cycles").
-// A motion that has settled on a periodic attractor does so within a few tens of periods:
-// rounding then maps the state onto itself exactly, and from there the run repeats the
-// same events forever. Each stored result is used only when its key equals the present one
-// in every bit, so a run with the memo is the run without it, bit for bit.
+// kept along a cycle of the run so that, once the run comes back to a state it had, bit for
+// bit, they are taken from here instead of computed again (docs/simulate.md, "Repeated
+// cycles"). A motion that has settled on a periodic attractor does so within a few tens of
+// periods: rounding then maps the state onto itself exactly, and from there the run repeats
+// the same events forever. Each stored result is used only when its key equals the present
+// one in every bit, so a run with the memo is the run without it, bit for bit.
 //
-// Cost: the state is looked up among the first keys of the last kMaxTurns periods once per
-// period; along a detected cycle each use compares one key. The trace holds at most
-// kMaxEntries results (it starts afresh when full).
+// Three phases. Watching: the key of the first look-up of each period is compared with those
+// of the last kMaxTurns periods. Once one repeats, the run has entered a cycle, and the
+// results of the next cycle are recorded (at most kMaxEntries, over at most kMaxTurns
+// periods, else the memo goes back to watching). When the first key of a period equals the
+// first recorded one, the cycle has closed: its results are replayed in order, each checked
+// against its key, until a key differs (the end of the run changes a step). A run that never
+// repeats pays one key comparison per event and kMaxTurns per period.
 
 #include <array>
 #include <cstddef>
@@ -23,46 +27,45 @@ class CycleMemo {
  public:
   /// Longest cycle looked for, in periods.
   static constexpr int kMaxTurns = 64;
-  /// Most results kept.
-  static constexpr std::size_t kMaxEntries = 4096;
+  /// Most results recorded (the trace stays below the size the allocator would map and
+  /// unmap for every run).
+  static constexpr std::size_t kMaxEntries = 1024;
 
-  /// The stored result for `key` in period `turn`: the next one of a cycle the run follows,
-  /// or, at the first look-up of a period, the one stored for the same key at the start of
-  /// one of the last kMaxTurns periods (the run has entered a cycle); nullptr otherwise.
+  /// The stored result for `key`, looked up in period `turn`: the next one of the cycle being
+  /// replayed, or the first recorded one when the first look-up of a period closes the cycle;
+  /// nullptr otherwise (compute it and give it to Add).
   const Value* Find(const Key& key, std::int64_t turn) {
     const bool first = turn != turn_;
     turn_ = turn;
-    if (cursor_ != kNone) {
-      if (cursor_ == cycle_end_) cursor_ = cycle_begin_;
+    if (replaying_) {
+      if (cursor_ == trace_.size()) cursor_ = 0;
       if (trace_[cursor_].key == key) return &trace_[cursor_++].value;
-      cursor_ = kNone;  // the run has left the cycle (the end of the run changes a step)
+      Restart();  // the run has left the cycle
     }
     if (!first) return nullptr;
-    for (int i = 0; i < n_starts_; ++i) {
-      const std::size_t begin = starts_[static_cast<std::size_t>(i)];
-      if (trace_[begin].key == key) {
-        cycle_begin_ = begin;
-        cycle_end_ = trace_.size();
-        cursor_ = begin + 1;
-        return &trace_[begin].value;
+    if (recording_) {
+      if (trace_.front().key == key) {
+        recording_ = false;
+        replaying_ = true;
+        cursor_ = 1;
+        return &trace_.front().value;
       }
+      if (++recorded_turns_ > kMaxTurns) Restart();
     }
-    new_turn_ = true;
+    if (!recording_ && Seen(key)) {
+      recording_ = true;
+      recorded_turns_ = 0;
+    }
+    Remember(key);
     return nullptr;
   }
 
-  /// Stores the result computed for `key` (after a Find that returned nullptr).
+  /// The result computed for `key` after Find returned nullptr (kept while recording).
   void Add(const Key& key, const Value& value) {
+    if (!recording_) return;
     if (trace_.size() == kMaxEntries) {
-      trace_.clear();
-      n_starts_ = 0;
-      next_start_ = 0;
-    }
-    if (new_turn_) {
-      starts_[next_start_] = trace_.size();
-      next_start_ = (next_start_ + 1) % starts_.size();
-      if (n_starts_ < kMaxTurns) ++n_starts_;
-      new_turn_ = false;
+      Restart();
+      return;
     }
     trace_.push_back({key, value});
   }
@@ -72,18 +75,34 @@ class CycleMemo {
     Key key;
     Value value;
   };
-  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-  std::vector<Entry> trace_;
-  // Index of the first entry of each of the last kMaxTurns periods (a ring).
-  std::array<std::size_t, kMaxTurns> starts_{};
-  int n_starts_ = 0;
-  std::size_t next_start_ = 0;
-  bool new_turn_ = false;
+  bool Seen(const Key& key) const {
+    for (int i = 0; i < n_firsts_; ++i) {
+      if (firsts_[static_cast<std::size_t>(i)] == key) return true;
+    }
+    return false;
+  }
+  void Remember(const Key& key) {
+    firsts_[next_first_] = key;
+    next_first_ = (next_first_ + 1) % firsts_.size();
+    if (n_firsts_ < kMaxTurns) ++n_firsts_;
+  }
+  void Restart() {
+    trace_.clear();
+    recording_ = replaying_ = false;
+    cursor_ = 0;
+  }
+
+  // Keys of the first look-ups of the last kMaxTurns periods (a ring).
+  std::array<Key, kMaxTurns> firsts_{};
+  int n_firsts_ = 0;
+  std::size_t next_first_ = 0;
   std::int64_t turn_ = -1;
-  // The cycle being followed: entries [cycle_begin_, cycle_end_) (those stored since its first
-  // key; each used only while its key matches), next one at cursor_.
-  std::size_t cursor_ = kNone, cycle_begin_ = 0, cycle_end_ = 0;
+  // The recorded cycle: results in order from the first look-up of a period.
+  std::vector<Entry> trace_;
+  bool recording_ = false, replaying_ = false;
+  int recorded_turns_ = 0;
+  std::size_t cursor_ = 0;  // next entry to replay
 };
 
 }  // namespace capsubot::detail

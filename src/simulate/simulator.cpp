@@ -412,7 +412,8 @@ struct SegmentKey {
   std::array<std::uint64_t, 4> bits{};
 
   bool operator==(const SegmentKey& o) const {
-    return bits == o.bits && mode == o.mode && slide == o.slide;
+    return bits[0] == o.bits[0] && bits[1] == o.bits[1] && bits[2] == o.bits[2] &&
+           bits[3] == o.bits[3] && mode == o.mode && slide == o.slide;
   }
 };
 

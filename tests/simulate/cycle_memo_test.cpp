@@ -34,66 +34,76 @@ int Feed(Memo& memo, const std::vector<std::vector<int>>& turns, std::int64_t fi
   return reused;
 }
 
-TEST(CycleMemo, FollowsACycleOnceThePeriodsFirstKeyRepeats) {
+TEST(CycleMemo, RecordsTheCycleAfterAFirstKeyRepeatsAndReplaysItOnceItCloses) {
   Memo memo;
-  // Two periods of transient, then a cycle of two periods (keys 5 6 7 | 8 9) repeated 3 times.
+  // Two periods of transient, then a cycle of two periods (keys 5 6 7 | 8 9) four times: the
+  // third period's first key comes back in the fifth, which starts the record; it closes in
+  // the seventh, from which on everything is replayed (2 periods, 5 keys).
   const std::vector<std::vector<int>> turns = {{1, 2},    {3, 4}, {5, 6, 7}, {8, 9},
                                                {5, 6, 7}, {8, 9}, {5, 6, 7}, {8, 9}};
-  // Found at the start of the fifth period: everything from there on (4 periods, 10 keys).
-  EXPECT_EQ(Feed(memo, turns), 10);
+  EXPECT_EQ(Feed(memo, turns), 5);
+  // Two more cycles: all replayed.
+  EXPECT_EQ(Feed(memo, {{5, 6, 7}, {8, 9}, {5, 6, 7}, {8, 9}}, 8), 10);
 }
 
 TEST(CycleMemo, AOnePeriodCycleWithOneKeyWrapsAroundItself) {
   Memo memo;
-  EXPECT_EQ(Feed(memo, {{4}, {4}, {4}, {4}, {4}}), 4);
+  // Remembered in period 0, seen again and recorded in 1, closed in 2: replayed from there.
+  EXPECT_EQ(Feed(memo, {{4}, {4}, {4}, {4}, {4}}), 3);
 }
 
 TEST(CycleMemo, LeavesTheCycleAtTheFirstDifferentKeyAndFindsItAgain) {
   Memo memo;
-  // The cycle (1 2) is followed from period 2; in period 4 the second key differs (3): that
-  // one and the rest of the period are computed; period 5 starts like period 1 again.
+  // The cycle (1 2) is recorded in period 1 and replayed from period 2; in period 3 the
+  // second key differs (3): the memo leaves the cycle, records it again in period 4 (its
+  // first key was seen) and replays it from period 5.
   const std::vector<std::vector<int>> turns = {{1, 2}, {1, 2}, {1, 2}, {1, 3}, {1, 2}, {1, 2}};
-  // Reused: periods 2 and 3 (4 keys), the 1 of period 4, periods 5 and 6 (4 keys).
-  EXPECT_EQ(Feed(memo, turns), 9);
+  // Replayed: period 2 (2 keys), the 1 of period 3, period 5 (2 keys).
+  EXPECT_EQ(Feed(memo, turns), 5);
 }
 
 TEST(CycleMemo, KeysAreLookedUpOnlyAtThePeriodsFirstSearch) {
   Memo memo;
-  // Key 2 comes back in the middle of a period: not looked up there (the look-up costs a scan
-  // of the last periods' first keys, paid once per period).
-  EXPECT_EQ(Feed(memo, {{1, 2}, {3, 2, 4}}), 0);
+  // Key 2 comes back in the middle of a period, and again as a first key: only the latter
+  // starts a record (a look-up scans the last periods' first keys, paid once per period).
+  EXPECT_EQ(Feed(memo, {{1, 2}, {3, 2, 4}, {2}, {2}, {2}}), 1);
 }
 
 TEST(CycleMemo, ACycleLongerThanItsPeriodBoundIsNotFound) {
-  Memo memo;
-  std::vector<std::vector<int>> turns;
-  const int n = Memo::kMaxTurns + 1;  // distinct first keys, then the same again
-  for (int pass = 0; pass < 2; ++pass) {
-    for (int k = 0; k < n; ++k) turns.push_back({k});
-  }
-  EXPECT_EQ(Feed(memo, turns), 0);
-  // One period shorter is found: the second pass reuses all of its keys.
-  Memo shorter;
-  turns.clear();
-  for (int pass = 0; pass < 2; ++pass) {
-    for (int k = 0; k < n - 1; ++k) turns.push_back({k});
-  }
-  EXPECT_EQ(Feed(shorter, turns), n - 1);
+  // Distinct first keys for kMaxTurns + 1 periods, repeated three times: the first key of a
+  // pass has left the ring when it comes back.
+  const auto passes = [](int n) {
+    std::vector<std::vector<int>> turns;
+    for (int pass = 0; pass < 3; ++pass) {
+      for (int k = 0; k < n; ++k) turns.push_back({k});
+    }
+    return turns;
+  };
+  Memo longer;
+  EXPECT_EQ(Feed(longer, passes(Memo::kMaxTurns + 1)), 0);
+  // kMaxTurns periods: seen in the second pass, recorded there, replayed in the third.
+  Memo bound;
+  EXPECT_EQ(Feed(bound, passes(Memo::kMaxTurns)), Memo::kMaxTurns);
 }
 
-TEST(CycleMemo, AFullTraceStartsAfreshAndStillFindsLaterCycles) {
-  Memo memo;
-  // More distinct keys than the trace holds, spread over periods, then a repeated period.
-  std::vector<std::vector<int>> turns;
-  const int keys = static_cast<int>(Memo::kMaxEntries) + 100;
-  for (int k = 0; k < keys; k += 10) {
-    std::vector<int> period;
-    for (int j = k; j < k + 10; ++j) period.push_back(j);
-    turns.push_back(period);
-  }
-  turns.push_back({-1, -2});
-  turns.push_back({-1, -2});
-  EXPECT_EQ(Feed(memo, turns), 2);
+TEST(CycleMemo, ACycleOfMoreResultsThanTheTraceHoldsIsNotRecorded) {
+  // Two periods of n keys each, repeated: a cycle of 2n results.
+  const auto cycle = [](int n, int cycles) {
+    std::vector<std::vector<int>> turns;
+    for (int c = 0; c < cycles; ++c) {
+      for (int half = 0; half < 2; ++half) {
+        std::vector<int> period;
+        for (int k = 0; k < n; ++k) period.push_back(half * n + k);
+        turns.push_back(period);
+      }
+    }
+    return turns;
+  };
+  const int fits = static_cast<int>(Memo::kMaxEntries) / 2;  // 2n = kMaxEntries
+  Memo small, large;
+  // Recorded in the second cycle, replayed in the third and fourth.
+  EXPECT_EQ(Feed(small, cycle(fits, 4)), 4 * fits);
+  EXPECT_EQ(Feed(large, cycle(fits + 1, 4)), 0);
 }
 
 }  // namespace
