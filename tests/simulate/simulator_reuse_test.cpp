@@ -65,8 +65,8 @@ Run Simulated(const Forcing& f, const Params& p, SimOptions opt, bool reuse) {
   return run;
 }
 
-// Runs `opt` with and without the reuse, expects them identical, returns the reused events.
-std::int64_t ExpectIdenticalWithReuse(const Forcing& f, const Params& p, const SimOptions& opt) {
+// Runs `opt` with and without the reuse, expects them identical, returns the run with it.
+SimResult ExpectIdenticalWithReuse(const Forcing& f, const Params& p, const SimOptions& opt) {
   const Run off = Simulated(f, p, opt, false), on = Simulated(f, p, opt, true);
   EXPECT_EQ(off.result.reused_events, 0);
   EXPECT_EQ(on.result.status, off.result.status);
@@ -86,7 +86,7 @@ std::int64_t ExpectIdenticalWithReuse(const Forcing& f, const Params& p, const S
   for (std::size_t i = 0; i < on.log.samples.size() && i < off.log.samples.size(); ++i) {
     ExpectSameState(on.log.samples[i], off.log.samples[i]);
   }
-  return on.result.reused_events;
+  return on.result;
 }
 
 // The exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem forcing --stable
@@ -100,7 +100,8 @@ constexpr double kOptimumAlpha = 0.6435592358295166;
 TEST(SimulatorReuse, ASettledMotionReusesMostEventsAndChangesNoBit) {
   SimOptions opt = StartAt(kOptimumAlpha, 0.5, 0.0, 0.0, 100.0);
   opt.transient = 200.0;
-  const std::int64_t reused = ExpectIdenticalWithReuse(kOptimum, Params{1.0, 1.0}, opt);
+  const std::int64_t reused =
+      ExpectIdenticalWithReuse(kOptimum, Params{1.0, 1.0}, opt).reused_events;
   // 300 periods of 8 events; the motion repeats bit for bit after about 20 periods.
   EXPECT_GT(reused, 2000);
 }
@@ -113,7 +114,7 @@ TEST(SimulatorReuse, StartsAllOverThePhaseAndTheWallsChangeNoBit) {
       for (const double psi : {0.0, 2.0, 4.5}) {
         SimOptions opt = StartAt(kOptimumAlpha, x0, 0.0, 0.0, 60.0);
         const Forcing f = kOptimum.WithPhase(kOptimum.phi0() + psi);
-        reused += ExpectIdenticalWithReuse(f, Params{T0, 1.0}, opt);
+        reused += ExpectIdenticalWithReuse(f, Params{T0, 1.0}, opt).reused_events;
         ++runs;
       }
     }
@@ -131,22 +132,40 @@ TEST(SimulatorReuse, AStableOneImpactOrbitChangesNoBit) {
   const Orbit o = ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.842), p);
   ASSERT_TRUE(o.ok());
   const SimOptions opt = StartAt(o.alpha, 1.0, -o.e * o.u, o.v_plus, 1000.0);
-  EXPECT_GT(ExpectIdenticalWithReuse(o.forcing, p, opt), 1000);
+  EXPECT_GT(ExpectIdenticalWithReuse(o.forcing, p, opt).reused_events, 1000);
 }
 
 TEST(SimulatorReuse, StickingBreakAwayAndWorkBoundChangeNoBit) {
   // Chattering that ends resting on the wall and releases (SimulatorTest's case) over many
-  // periods; a strong force with break-aways both ways; a run stopped by its work bound.
+  // periods; a strong force with break-aways both ways; the chattering again with a work bound
+  // of 10 events a period, which its 11 a period reach after the cycle is taken up.
   Params p;
   p.T0 = 0.1;
   p.e = 0.5;
-  ExpectIdenticalWithReuse(Forcing::Harmonic(0.05, 0.02, 0.0), p,
-                           StartAt(0.3, 0.999, 0.001, 0.0, 50.0));
-  ExpectIdenticalWithReuse(Forcing::Harmonic(2.0, 0.0, 0.0), Params{1.0, 0.5},
-                           StartAt(0.9, 0.5, -2.0 / 0.9, 0.0, 50.0));
-  SimOptions bounded = StartAt(0.3, 0.5, 50.0, 0.0, 40.0);
+  const Forcing chatter = Forcing::Harmonic(0.05, 0.02, 0.0);
+  EXPECT_GT(ExpectIdenticalWithReuse(chatter, p, StartAt(0.3, 0.999, 0.001, 0.0, 50.0)).sticks, 0);
+  EXPECT_GT(ExpectIdenticalWithReuse(Forcing::Harmonic(2.0, 0.0, 0.0), Params{1.0, 0.5},
+                                     StartAt(0.9, 0.5, -2.0 / 0.9, 0.0, 50.0))
+                .breakaways,
+            0);
+  SimOptions bounded = StartAt(0.3, 0.999, 0.001, 0.0, 50.0);
   bounded.max_events_per_period = 10;
-  ExpectIdenticalWithReuse(Forcing::Harmonic(0.05, 0.02, 0.0), Params{0.1, 1.0}, bounded);
+  const SimResult stopped = ExpectIdenticalWithReuse(chatter, p, bounded);
+  EXPECT_EQ(stopped.status, SimStatus::kEventLimit);
+  EXPECT_GT(stopped.reused_events, 0);
+}
+
+TEST(SimulatorReuse, AWallSlideThatRepeatsAllButTheVelocityChangesNoBit) {
+  // The body pressed into the right wall (F + alpha T0 >= 0.18 > 0 throughout) while the
+  // capsule slides from v = 5 and slows at T0: every period starts at phase 0 with x = 1,
+  // u = 0, only v differs, and the stop comes at phase v0 / T0 = 50 (then the robot rests on
+  // the wall, a repeated cycle). Without v in what the reuse compares, the stop is never found.
+  const Params p{0.1, 1.0};
+  const SimResult r = ExpectIdenticalWithReuse(Forcing::Harmonic(0.05, 0.2, 0.0), p,
+                                               StartAt(0.3, 1.0, 0.0, 5.0, 30.0));
+  EXPECT_EQ(r.stops, 1);
+  EXPECT_EQ(r.final_state.mode, SimMode::kOnRightWall);
+  EXPECT_GT(r.reused_events, 0);
 }
 
 }  // namespace
