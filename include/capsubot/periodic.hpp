@@ -31,6 +31,9 @@ struct ShootingOptions {
   double chatter_velocity = 1e-6;  ///< the simulator's chatter cut-off; > 0
   /// Work bound per simulated period (SimOptions::max_events_per_period); >= 10.
   std::int64_t max_events_per_period = 100000;
+  /// The simulator's reuse of located events along repeated cycles
+  /// (SimOptions::reuse_cycles): the same results bit for bit; false only to time the search.
+  bool reuse_cycles = true;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

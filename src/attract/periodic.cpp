@@ -54,6 +54,7 @@ class Shooter {
       : forcing_(forcing), params_(params), alpha_(alpha) {
     motion_.chatter_velocity = o.chatter_velocity;
     motion_.max_events_per_period = o.max_events_per_period;
+    motion_.reuse_cycles = o.reuse_cycles;
   }
 
   // P^p(z): false if the simulation hit the work bound.
@@ -293,6 +294,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   MotionOptions mo;
   mo.chatter_velocity = options.chatter_velocity;
   mo.max_events_per_period = options.max_events_per_period;
+  mo.reuse_cycles = options.reuse_cycles;
   if (options.transient > 0 &&
       detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
           SimStatus::kEventLimit) {

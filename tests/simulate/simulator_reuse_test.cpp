@@ -3,6 +3,7 @@
 // count, the state, the displacement, the energy budget, every reported event and sample),
 // and a motion that settles on a periodic attractor takes most of its events from it.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -25,14 +26,22 @@ struct Log : SimObserver {
   void OnSample(const SimState& s) override { samples.push_back(s); }
 };
 
-// Bit for bit (0 and -0 differ; NaN equals NaN of the same bits).
-bool Same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+// Bit for bit (0 and -0 differ; NaN equals NaN of the same bits); on failure both sides are
+// printed to the last bit.
+::testing::AssertionResult Same(const char* what, double a, double b) {
+  if (std::memcmp(&a, &b, sizeof a) == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << what << ": " << fmt::format("{:.17g}", a) << " with the reuse, "
+         << fmt::format("{:.17g}", b) << " without";
+}
 
 void ExpectSameState(const SimState& a, const SimState& b) {
   EXPECT_EQ(a.mode, b.mode);
-  EXPECT_TRUE(Same(a.phi, b.phi) && Same(a.x, b.x) && Same(a.u, b.u) && Same(a.v, b.v) &&
-              Same(a.y, b.y))
-      << a.phi << " " << b.phi;
+  EXPECT_TRUE(Same("phi", a.phi, b.phi));
+  EXPECT_TRUE(Same("x", a.x, b.x));
+  EXPECT_TRUE(Same("u", a.u, b.u));
+  EXPECT_TRUE(Same("v", a.v, b.v));
+  EXPECT_TRUE(Same("y", a.y, b.y));
 }
 
 void ExpectSameTally(const SimTally& a, const SimTally& b) {
@@ -43,12 +52,14 @@ void ExpectSameTally(const SimTally& a, const SimTally& b) {
   EXPECT_EQ(a.sticks, b.sticks);
   EXPECT_EQ(a.releases, b.releases);
   EXPECT_EQ(a.events, b.events);
-  EXPECT_TRUE(Same(a.displacement, b.displacement));
-  EXPECT_TRUE(Same(a.v_mean, b.v_mean));
-  EXPECT_TRUE(Same(a.energy.motor_work, b.energy.motor_work));
-  EXPECT_TRUE(Same(a.energy.motor_work_positive, b.energy.motor_work_positive));
-  EXPECT_TRUE(Same(a.energy.friction_loss, b.energy.friction_loss));
-  EXPECT_TRUE(Same(a.energy.impact_loss, b.energy.impact_loss));
+  EXPECT_TRUE(Same("span", a.span, b.span));
+  EXPECT_TRUE(Same("displacement", a.displacement, b.displacement));
+  EXPECT_TRUE(Same("v_mean", a.v_mean, b.v_mean));
+  EXPECT_TRUE(Same("motor_work", a.energy.motor_work, b.energy.motor_work));
+  EXPECT_TRUE(
+      Same("motor_work_positive", a.energy.motor_work_positive, b.energy.motor_work_positive));
+  EXPECT_TRUE(Same("friction_loss", a.energy.friction_loss, b.energy.friction_loss));
+  EXPECT_TRUE(Same("impact_loss", a.energy.impact_loss, b.energy.impact_loss));
 }
 
 struct Run {
@@ -79,7 +90,8 @@ SimResult ExpectIdenticalWithReuse(const Forcing& f, const Params& p, const SimO
     const SimEvent &a = on.log.events[i], &b = off.log.events[i];
     EXPECT_EQ(a.kind, b.kind) << i;
     ExpectSameState(a.after, b.after);
-    EXPECT_TRUE(Same(a.u_before, b.u_before) && Same(a.v_before, b.v_before)) << i;
+    EXPECT_TRUE(Same("u_before", a.u_before, b.u_before)) << i;
+    EXPECT_TRUE(Same("v_before", a.v_before, b.v_before)) << i;
     if (::testing::Test::HasFailure()) break;  // the first difference says it all
   }
   EXPECT_EQ(on.log.samples.size(), off.log.samples.size());
