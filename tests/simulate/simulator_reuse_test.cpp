@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
 #include "capsubot/validity.hpp"
 #include "test_utils.hpp"
@@ -138,13 +139,11 @@ TEST(SimulatorReuse, StartsAllOverThePhaseAndTheWallsChangeNoBit) {
 TEST(SimulatorReuse, AStableOneImpactOrbitChangesNoBit) {
   // A valid, stable orbit (spectral radius ~0.16, see stability_test), from its post-impact
   // state: 1000 periods of one impact and one stop.
-  Params p;
-  p.T0 = 0.1;
-  p.e = 0.5;
+  const Params p{0.1, 0.5};
   const Orbit o = ComputeOrbit(Forcing::Harmonic(0.05, 0.02, -2.842), p);
   ASSERT_TRUE(o.ok());
-  const SimOptions opt = StartAt(o.alpha, 1.0, -o.e * o.u, o.v_plus, 1000.0);
-  EXPECT_GT(ExpectIdenticalWithReuse(o.forcing, p, opt).reused_events, 1000);
+  EXPECT_GT(ExpectIdenticalWithReuse(o.forcing, p, StartAfterImpact(o, 1000.0)).reused_events,
+            1000);
 }
 
 TEST(SimulatorReuse, StickingBreakAwayAndWorkBoundChangeNoBit) {
