@@ -103,12 +103,12 @@ struct SimOptions {
   /// half again the time per period (the positive part needs the sign changes of F u), so the
   /// hot path leaves it off; the budget is NaN then.
   bool energy = false;
-  /// Reuse located events along a repeated cycle: once the state at the origin of a segment
-  /// (mode, phase within the period, x, u, v) equals, bit for bit, its state at the start of
-  /// one of the last 64 periods, the events located from there on are taken again instead of
-  /// searched (the search is a function of that state alone). Every event is still applied
-  /// and reported, so the run is the same bit for bit; false searches every event (to time
-  /// the search itself).
+  /// Reuse located events along a repeated cycle: once the state at the first event search of
+  /// a period (mode, slide, phase within the period, x, u, v) equals, bit for bit, that of one
+  /// of the last 64 periods, the events of the next cycle are recorded and, when the cycle
+  /// closes, taken again instead of searched (the search is a function of that state alone;
+  /// docs/simulate.md "Repeated cycles"). Every event is still applied and reported, so the
+  /// run is the same bit for bit; false searches every event (to time the search itself).
   bool reuse_cycles = true;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.

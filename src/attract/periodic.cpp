@@ -48,14 +48,20 @@ std::vector<int> FreeCoordinates(SimMode mode, double v) {
   return {};
 }
 
+// The simulator's settings of the shooting's runs (the stroboscopic map takes them from
+// MotionOptions).
+MotionOptions SimulationOf(const ShootingOptions& o) {
+  MotionOptions mo;
+  mo.chatter_velocity = o.chatter_velocity;
+  mo.max_events_per_period = o.max_events_per_period;
+  mo.reuse_cycles = o.reuse_cycles;
+  return mo;
+}
+
 class Shooter {
  public:
   Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : forcing_(forcing), params_(params), alpha_(alpha) {
-    motion_.chatter_velocity = o.chatter_velocity;
-    motion_.max_events_per_period = o.max_events_per_period;
-    motion_.reuse_cycles = o.reuse_cycles;
-  }
+      : forcing_(forcing), params_(params), alpha_(alpha), motion_(SimulationOf(o)) {}
 
   // P^p(z): false if the simulation hit the work bound.
   bool Map(const PhaseState& z, int p, detail::MapState* out, double* displacement = nullptr,
@@ -291,10 +297,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   PeriodicMotion fail;
   fail.status = ShootingStatus::kEventLimit;
-  MotionOptions mo;
-  mo.chatter_velocity = options.chatter_velocity;
-  mo.max_events_per_period = options.max_events_per_period;
-  mo.reuse_cycles = options.reuse_cycles;
+  const MotionOptions mo = SimulationOf(options);
   if (options.transient > 0 &&
       detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
           SimStatus::kEventLimit) {

@@ -13,7 +13,7 @@
 // periods, else the memo goes back to watching). When the first key of a period equals the
 // first recorded one, the cycle has closed: its results are replayed in order, each checked
 // against its key, until a key differs (the end of the run changes a step). A run that never
-// repeats pays one key comparison per event and kMaxTurns per period.
+// repeats pays the key of each event and kMaxTurns key comparisons per period.
 
 #include <array>
 #include <cstddef>
