@@ -88,13 +88,26 @@ struct Motion {
   /// Right-wall impacts per p periods (kPeriodic); over the whole record otherwise.
   std::int64_t impacts_right = 0;
   std::int64_t impacts_left = 0;  ///< left-wall impacts, counted the same way
-  /// Mean capsule velocity (units of omega L): displacement over the largest whole number of
-  /// periods p inside the record / that phase (kPeriodic: exact for a periodic motion), or
-  /// over the whole record (kNoPeriod); NaN for kEventLimit.
+  /// Mean capsule velocity (units of omega L): kPeriodic, that of the periodic motion Newton's
+  /// method finds (displacement over one period p from its fixed point / (p tau)), or, when
+  /// Newton fails, over the whole periods p at the end of the record; kNoPeriod, displacement
+  /// over the whole record / (record tau), as a direct simulation of the start gives it; NaN
+  /// for kEventLimit.
   double mean_velocity = kNaN;
-  /// The state at the section at the end of the record: a point of the attractor.
+  /// kNoPeriod: the mean velocity over the first and the second half of the record (they tell
+  /// whether the record is long enough for the mean to settle); kPeriodic: mean_velocity.
+  double first_half_velocity = kNaN;
+  double second_half_velocity = kNaN;
+  /// kPeriodic: the fixed point of the p-th iterate at a section clear of its events (refined)
+  /// or the last state of the record; otherwise the state at the end of the record.
   PhaseState section;
   SimMode mode = SimMode::kRest;  ///< the mode there
+  /// Newton's method found the periodic motion (kPeriodic): period, impacts, velocity and
+  /// multipliers are exact; false when they come from the record alone.
+  bool refined = false;
+  double spectral_radius = kNaN;  ///< largest modulus of the multipliers (refined only)
+  double multiplier_re = kNaN;    ///< the multiplier of largest modulus (refined only)
+  double multiplier_im = kNaN;
 };
 
 /// The long-run motion from `start` (docs/model.md section 13): simulate options.transient

@@ -73,6 +73,11 @@ class SimObserver {
   /// whole periods are done. At most once per period; several periods without an event
   /// may be reported at once.
   virtual void OnPeriods(std::int64_t periods) { (void)periods; }
+  /// Asked right after each OnSample: true ends the run there, as if its end phase were that
+  /// sample's (the final state is the sample's state; the figures are those up to it). Lets an
+  /// observer stop a long run once it has seen enough without restarting the simulation, so
+  /// the trajectory up to that point is the same, bit for bit, as that of a run to the end.
+  virtual bool Done() { return false; }
 };
 
 struct SimOptions {

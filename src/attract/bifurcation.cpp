@@ -142,10 +142,6 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
            BifurcationDiagram& out, const std::function<void()>& tick) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
-  ShootingOptions shooting;
-  shooting.chatter_velocity = o.motion.chatter_velocity;
-  shooting.max_events_per_period = o.motion.max_events_per_period;
-  shooting.reuse_cycles = o.motion.reuse_cycles;
   for (int n = 0; n < o.steps; ++n) {
     const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
     const double value = Value(o, i);
@@ -159,25 +155,21 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
     if (point.motion.status == MotionStatus::kPeriodic && recorder.impacts.empty()) {
       // Stopped early on a periodic motion: its impacts of one period p stand for the record.
       detail::MapState again = s;
-      recorder.Start(point.motion.period, false, false, true);
+      recorder.Start(point.motion.period, false, false, true, s.z.psi);
       detail::Advance(r.forcing, r.params, r.alpha, o.motion, again, point.motion.period, nullptr,
                       &recorder);
     }
     if (point.motion.status != MotionStatus::kEventLimit) {
       for (const detail::Recorder::Impact& im : recorder.impacts) {
-        double phase = s.z.psi + im.phase;
+        double phase = recorder.psi0 + im.phase;
         phase -= kTau * std::floor(phase / kTau);
         out.impacts.push_back({value, direction, im.period, im.right, phase, im.u_before});
       }
     }
-    if (o.multipliers && point.motion.status == MotionStatus::kPeriodic) {
-      const PeriodicMotion pm = ShootPeriodicMotion(
-          r.forcing, r.params, r.alpha, point.motion.section, point.motion.period, shooting);
-      if (pm.status == ShootingStatus::kConverged && !pm.multipliers.empty()) {
-        point.multiplier_re = pm.multipliers.front().real();
-        point.multiplier_im = pm.multipliers.front().imag();
-        point.spectral_radius = pm.spectral_radius;
-      }
+    if (o.multipliers && point.motion.refined) {  // Newton's multipliers of the motion
+      point.multiplier_re = point.motion.multiplier_re;
+      point.multiplier_im = point.motion.multiplier_im;
+      point.spectral_radius = point.motion.spectral_radius;
     }
     out.summary.push_back(point);
     tick();

@@ -1,5 +1,6 @@
-// The long-run motion from one start (docs/model.md section 13): transient, section, record,
-// period from the state of the stroboscopic map.
+// The long-run motion from one start (docs/model.md section 13): one continuous simulation of
+// the transient and the record, the period and velocity of a periodic motion from Newton's
+// method on the stroboscopic map, an early stop only on a proven attracting motion.
 
 #include <fmt/format.h>
 
@@ -16,9 +17,6 @@ namespace capsubot {
 namespace {
 
 constexpr int kMaxPeriodLimit = 64;
-// A section closer than this (rad) to an event may see the state before or after it: the
-// early stop does not trust such a section and moves it.
-constexpr double kSectionClearance = 1e-6;
 
 }  // namespace
 
@@ -76,98 +74,216 @@ void ValidateStart(double alpha, const PhaseState& start) {
   }
 }
 
-// Counts and mean velocity of a motion of period p from a record of whole periods: impacts of
-// the last p periods; displacement over the largest whole number of periods p at the end of
-// the record along which the section states repeat with period p (within tol), so a record
-// that starts before the motion settled does not bias it.
-void FillPeriodic(Motion& m, int p, const Recorder& recorder, double tol) {
-  const int R = static_cast<int>(recorder.right.size());
-  const std::vector<SimState>& S = recorder.samples;
-  m.status = MotionStatus::kPeriodic;
-  m.period = p;
-  for (int k = R - p; k < R; ++k) {
-    m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
-    m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
-  }
-  int first = R - p;  // S[first..R] repeats with period p
-  while (first > 0 && SameState(S[static_cast<std::size_t>(first - 1)],
-                                S[static_cast<std::size_t>(first - 1 + p)], tol)) {
-    --first;
-  }
-  const int whole = ((R - first) / p) * p;
-  m.mean_velocity = (S[static_cast<std::size_t>(R)].y - S[static_cast<std::size_t>(R - whole)].y) /
-                    (whole * kTau);
+namespace {
+
+// Early stop: a state whose section states repeated to converged_tolerance is taken as settled
+// only when Newton's method finds the periodic motion through it (residual within the
+// shooting's tolerance), that motion attracts (spectral radius at most this) and the state lies
+// on it within kSettledDistance: then the rest of the run can only converge to it.
+constexpr double kSettledRadius = 1.0 - 1e-3;
+constexpr double kSettledDistance = 1e-8;
+// At the end of the record, the periodic motion Newton finds is the recorded one when the last
+// state lies within this of it (units of L and omega L); otherwise the period and velocity
+// come from the record alone.
+constexpr double kRefinedDistance = 1e-3;
+
+double Distance(const PhaseState& a, const PhaseState& b) {
+  return std::max({std::abs(a.x - b.x), std::abs(a.u - b.u), std::abs(a.v - b.v)});
 }
+
+// The motion of a periodic motion found by Newton's method: its exact period, impacts, mean
+// velocity, section state and largest multiplier.
+Motion FromPeriodic(const PeriodicMotion& pm) {
+  Motion m;
+  m.status = MotionStatus::kPeriodic;
+  m.period = pm.period;
+  m.impacts_right = pm.impacts_right;
+  m.impacts_left = pm.impacts_left;
+  m.mean_velocity = pm.mean_velocity;
+  m.first_half_velocity = m.second_half_velocity = pm.mean_velocity;
+  m.section = pm.state;
+  m.mode = pm.mode;
+  m.spectral_radius = pm.spectral_radius;
+  if (!pm.multipliers.empty()) {
+    m.multiplier_re = pm.multipliers.front().real();
+    m.multiplier_im = pm.multipliers.front().imag();
+  }
+  m.refined = true;
+  return m;
+}
+
+// Watches one continuous simulation of a long run: the state at every whole period from the
+// start (the last 2 max_period + 1 kept), the impacts of the record (in `recorder`), and at
+// the end of every chunk of 2 max_period periods of the transient, the early stop.
+class LongRun : public SimObserver {
+ public:
+  LongRun(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& o,
+          Recorder& recorder)
+      : forcing_(forcing), params_(params), alpha_(alpha), o_(o), recorder_(recorder) {
+    ring_.reserve(static_cast<std::size_t>(2 * o.max_period + 1));
+  }
+
+  void OnEvent(const SimEvent& event) override { recorder_.OnEvent(event); }
+
+  void OnSample(const SimState& state) override {
+    const auto cap = static_cast<std::size_t>(2 * o_.max_period + 1);
+    if (ring_.size() == cap) ring_.erase(ring_.begin());
+    ring_.push_back(state);
+    if (samples_ == o_.transient) record_start_ = state;
+    if (samples_ == o_.transient + o_.record / 2) record_middle_ = state;
+    ++samples_;
+  }
+
+  bool Done() override {
+    const int k = samples_ - 1;  // whole periods done
+    const int chunk = 2 * o_.max_period;
+    if (!(o_.converged_tolerance > 0.0) || k == 0 || k % chunk != 0 || k > o_.transient) {
+      return false;
+    }
+    const int p = DetectPeriod(ring_, o_.max_period, o_.converged_tolerance);
+    if (p == 0) return false;
+    const SimState& last = ring_.back();
+    MapState s{{last.x, last.u, last.v, psi_}, last.mode}, moved;
+    const PeriodicMotion pm =
+        RefinePeriodicMotion(forcing_, params_, alpha_, o_, s, p, &moved);
+    if (pm.status != ShootingStatus::kConverged || !(pm.spectral_radius <= kSettledRadius) ||
+        !(Distance(moved.z, pm.state) <= kSettledDistance)) {
+      return false;
+    }
+    settled_ = pm;
+    return true;
+  }
+
+  void SetPhase(double psi) { psi_ = psi; }
+  const std::vector<SimState>& Ring() const { return ring_; }
+  const PeriodicMotion& Settled() const { return settled_; }
+  const SimState& RecordStart() const { return record_start_; }
+  const SimState& RecordMiddle() const { return record_middle_; }
+
+ private:
+  const Forcing& forcing_;
+  const Params& params_;
+  double alpha_;
+  const MotionOptions& o_;
+  Recorder& recorder_;
+  std::vector<SimState> ring_;
+  int samples_ = 0;
+  double psi_ = 0.0;
+  SimState record_start_, record_middle_;
+  PeriodicMotion settled_;
+};
+
+// The period of the motion through s from a short look at a section clear of its events:
+// max_period periods to see the events, the section moved into their largest gap, then
+// 2 max_period periods of section states. 0 when none repeats within state_tolerance (or the
+// work bound is hit).
+int ProbePeriod(const Forcing& forcing, const Params& params, double alpha,
+                const MotionOptions& o, MapState s, Recorder& probe, MapState* at) {
+  const int P = o.max_period;
+  MapState look = s;
+  probe.Start(P, false, true);
+  if (Advance(forcing, params, alpha, o, look, P, nullptr, &probe).status ==
+      SimStatus::kEventLimit) {
+    return 0;
+  }
+  const double shift = SectionShift(probe.event_phases);
+  if (shift > 0.0 &&
+      Advance(forcing, params, alpha, o, s, shift / kTau, nullptr).status == SimStatus::kEventLimit) {
+    return 0;
+  }
+  *at = s;
+  probe.Start(2 * P, true, false);
+  if (Advance(forcing, params, alpha, o, s, 2 * P, nullptr, &probe, true).status ==
+          SimStatus::kEventLimit ||
+      static_cast<int>(probe.samples.size()) != 2 * P + 1) {
+    return 0;
+  }
+  return DetectPeriod(probe.samples, P, o.state_tolerance);
+}
+
+}  // namespace
 
 Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
                       const MotionOptions& options, MapState s, Recorder& recorder,
                       bool keep_impacts) {
   Motion m;
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
-  const auto stopped = [&](const SimResult& r) {
-    if (r.status != SimStatus::kEventLimit) return false;
+  const double psi = s.z.psi;
+  const int T = options.transient, R = options.record;
+  // One continuous run of the transient and the record, as a direct simulation of the start
+  // would do: restarting it would perturb the motion by rounding, and a chaotic transient
+  // would then end elsewhere.
+  recorder.Start(R, false, false, keep_impacts, psi, T * kTau);
+  LongRun run(forcing, params, alpha, options, recorder);
+  run.SetPhase(psi);
+  SimOptions o;
+  o.alpha = alpha;
+  o.x0 = std::clamp(s.z.x, 0.0, 1.0);  // a free motion may overshoot a wall by rounding
+  o.u0 = s.z.u;
+  o.v0 = s.z.v;
+  o.transient = T;
+  o.periods = R;
+  o.chatter_velocity = options.chatter_velocity;
+  o.max_events_per_period = options.max_events_per_period;
+  o.reuse_cycles = options.reuse_cycles;
+  o.sample_step = kTau;
+  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + psi), params, o, &run);
+  const SimState& f = r.final_state;
+  MapState end{{f.x, f.u, f.v, psi}, f.mode};
+  if (r.status == SimStatus::kEventLimit) {
     m.status = MotionStatus::kEventLimit;
-    m.section = s.z;
-    m.mode = s.mode;
-    return true;
-  };
-  const auto advance = [&](double periods, bool record) {
-    return stopped(Advance(forcing, params, alpha, options, s, periods, nullptr,
-                           record ? &recorder : nullptr, record));
-  };
-  const int P = options.max_period;
-  // Early stop: in chunks of 2P periods, a motion that already repeats to converged_tolerance
-  // at a section clear of every event is periodic; the rest of the run would repeat it.
-  int done = 0;
-  const int chunk = 2 * P;
-  while (options.converged_tolerance > 0.0 && done + chunk <= options.transient) {
-    recorder.Start(chunk, true, true);
-    if (advance(chunk, true)) return m;
-    done += chunk;
-    const bool clear = SectionClear(recorder.event_phases, kSectionClearance);
-    const int p = static_cast<int>(recorder.samples.size()) == chunk + 1
-                      ? DetectPeriod(recorder.samples, P, options.converged_tolerance)
-                      : 0;
-    if (clear && p > 0) {
-      FillPeriodic(m, p, recorder, options.converged_tolerance);
-      m.section = s.z;
-      m.mode = s.mode;
-      recorder.impacts.clear();
-      return m;
-    }
-    if (!clear && advance(SectionShift(recorder.event_phases) / kTau, false)) return m;
-  }
-  // Transient; its last P periods tell where the events of the motion lie.
-  const int tail = std::min(P, options.transient - done);
-  if (options.transient - done > tail && advance(options.transient - done - tail, false)) return m;
-  recorder.Start(tail, false, true);
-  if (tail > 0 && stopped(Advance(forcing, params, alpha, options, s, tail, nullptr, &recorder))) {
+    m.section = end.z;
+    m.mode = end.mode;
     return m;
   }
-  const double shift = SectionShift(recorder.event_phases);
-  if (shift > 0.0 && advance(shift / kTau, false)) return m;
-  // Record: the state at every whole period from the section.
-  const int R = options.record;
-  recorder.Start(R, true, false, keep_impacts);
-  double displacement = 0.0;
-  const SimResult r =
-      Advance(forcing, params, alpha, options, s, R, &displacement, &recorder, true);
-  if (stopped(r)) return m;
-  m.section = s.z;
-  m.mode = s.mode;
-  const int p = static_cast<int>(recorder.samples.size()) == R + 1
-                    ? DetectPeriod(recorder.samples, P, options.state_tolerance)
-                    : 0;
+  if (run.Settled().status == ShootingStatus::kConverged) {
+    recorder.impacts.clear();
+    return FromPeriodic(run.Settled());
+  }
+  // The period: from the states at the start's phase, or, when those do not repeat (the
+  // phase may lie on an event), from a section clear of the events.
+  MapState at = end;
+  Recorder probe;
+  const std::vector<SimState>* samples = &run.Ring();
+  int p = DetectPeriod(*samples, options.max_period, options.state_tolerance);
+  if (p == 0) {
+    p = ProbePeriod(forcing, params, alpha, options, end, probe, &at);
+    samples = &probe.samples;
+  }
   if (p > 0) {
-    FillPeriodic(m, p, recorder, options.state_tolerance);
+    MapState moved;
+    const PeriodicMotion pm = RefinePeriodicMotion(forcing, params, alpha, options, at, p, &moved);
+    if (pm.status == ShootingStatus::kConverged && Distance(moved.z, pm.state) <= kRefinedDistance) {
+      return FromPeriodic(pm);
+    }
+    // Newton failed (a non-smooth map, a work bound): the states repeat all the same.
+    m.status = MotionStatus::kPeriodic;
+    m.period = p;
+    for (int k = R - p; k < R; ++k) {
+      m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
+      m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
+    }
+    const int n = static_cast<int>(samples->size()) - 1, whole = (n / p) * p;
+    const std::vector<SimState>& S = *samples;
+    m.mean_velocity = (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
+                      (whole * kTau);
+    m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
+    m.section = end.z;
+    m.mode = end.mode;
     return m;
   }
+  // No periodic motion: the record's own figures, as a direct run of the start gives them.
   m.status = MotionStatus::kNoPeriod;
   for (int k = 0; k < R; ++k) {
     m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
     m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
   }
-  m.mean_velocity = displacement / (R * kTau);
+  m.mean_velocity = r.displacement / (R * kTau);
+  const int half = R / 2;
+  m.first_half_velocity = (run.RecordMiddle().y - run.RecordStart().y) / (half * kTau);
+  m.second_half_velocity = (f.y - run.RecordMiddle().y) / ((R - half) * kTau);
+  m.section = end.z;
+  m.mode = end.mode;
   return m;
 }
 

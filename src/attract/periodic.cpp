@@ -27,6 +27,11 @@ constexpr double kReturnFactor = 2.0;
 constexpr double kReturnRounding = 1e-12;
 // Newton steps are halved at most this many times while the residual does not decrease.
 constexpr int kMaxHalvings = 8;
+// A fixed point of the p-th iterate is one of the d-th (d a divisor of p) when its d-th iterate
+// returns within this: the fixed point's own error (residual_tolerance) grown by the motion's
+// multipliers stays far below it, while distinct points of a period-p motion are apart by far
+// more.
+constexpr double kSameOrbitTol = 1e-9;
 
 using Vec3 = std::array<double, 3>;  // (x, u, v)
 
@@ -243,7 +248,8 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
     out.spectral_radius = 0.0;
     out.distance_to_plus_one = out.distance_to_minus_one = out.distance_to_unit_circle = 1.0;
   }
-  out.stable = out.spectral_radius < 1.0;
+  // No verdict without a periodic motion: an unconverged state's multipliers say nothing.
+  out.stable = out.status == ShootingStatus::kConverged && out.spectral_radius < 1.0;
   // Impacts and displacement over one period p of the motion.
   detail::MapState end;
   double displacement = 0.0;
@@ -258,7 +264,52 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   return out;
 }
 
+// Shoot, then the smallest period: a converged fixed point of the p-th iterate that is one of
+// the d-th for a divisor d of p is the motion of period d (its multipliers those of one period).
+PeriodicMotion ShootMinimal(Shooter& shooter, const PhaseState& z0, int p,
+                            const ShootingOptions& o) {
+  PeriodicMotion pm = Shoot(shooter, z0, p, o);
+  if (pm.status != ShootingStatus::kConverged) return pm;
+  for (int d = 1; d < p; ++d) {
+    if (p % d != 0) continue;
+    detail::MapState image;
+    if (!shooter.Map(pm.state, d, &image) || Residual(ToVec(pm.state), image.z) > kSameOrbitTol) {
+      continue;
+    }
+    PeriodicMotion shorter = Shoot(shooter, pm.state, d, o);
+    if (shorter.status == ShootingStatus::kConverged) return shorter;
+  }
+  return pm;
+}
+
+ShootingOptions ShootingOf(const MotionOptions& mo) {
+  ShootingOptions o;
+  o.chatter_velocity = mo.chatter_velocity;
+  o.max_events_per_period = mo.max_events_per_period;
+  o.reuse_cycles = mo.reuse_cycles;
+  return o;
+}
+
 }  // namespace
+
+namespace detail {
+
+PeriodicMotion RefinePeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
+                                    const MotionOptions& options, MapState s, int p,
+                                    MapState* moved) {
+  const ShootingOptions o = ShootingOf(options);
+  Shooter shooter(forcing, params, alpha, o);
+  *moved = s;
+  if (!shooter.PlaceSection(s, p)) {
+    PeriodicMotion fail;
+    fail.status = ShootingStatus::kEventLimit;
+    return fail;
+  }
+  *moved = s;
+  return ShootMinimal(shooter, s.z, p, o);
+}
+
+}  // namespace detail
 
 const char* ShootingStatusName(ShootingStatus status) {
   static constexpr const char* kNames[] = {"not_run", "converged", "no_convergence", "event_limit"};
@@ -307,7 +358,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   bool ok = true;
   const int p = shooter.ChoosePeriod(s, options.max_period, &ok);
   if (!ok) return fail;
-  return Shoot(shooter, s.z, p, options);
+  return ShootMinimal(shooter, s.z, p, options);
 }
 
 PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
@@ -323,7 +374,7 @@ PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params,
   Shooter shooter(forcing, params, alpha, options);
   PhaseState z = start;
   z.psi -= kTau * std::floor(z.psi / kTau);
-  return Shoot(shooter, z, period, options);
+  return ShootMinimal(shooter, z, period, options);
 }
 
 }  // namespace capsubot

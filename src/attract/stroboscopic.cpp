@@ -5,8 +5,11 @@
 
 namespace capsubot::detail {
 
-void Recorder::Start(int periods, bool samples_wanted, bool events_wanted, bool impacts_wanted) {
+void Recorder::Start(int periods, bool samples_wanted, bool events_wanted, bool impacts_wanted,
+                     double psi0_at_start, double origin_phase) {
   periods_ = periods;
+  psi0 = psi0_at_start;
+  origin = origin_phase;
   keep_impacts_ = impacts_wanted;
   impacts.clear();
   keep_samples_ = samples_wanted;
@@ -18,7 +21,8 @@ void Recorder::Start(int periods, bool samples_wanted, bool events_wanted, bool 
 }
 
 void Recorder::OnEvent(const SimEvent& event) {
-  const double phase = event.after.phi;
+  const double phase = event.after.phi - origin;
+  if (phase < 0.0) return;
   if (keep_events_ && event_phases.size() < kMaxEvents) {
     event_phases.push_back(phase - kTau * std::floor(phase / kTau));
   }

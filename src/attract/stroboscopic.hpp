@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "capsubot/attractors.hpp"
+#include "capsubot/periodic.hpp"
 #include "capsubot/simulator.hpp"
 
 namespace capsubot::detail {
@@ -26,7 +27,8 @@ class Recorder : public SimObserver {
  public:
   /// Clears the record for a run of `periods` whole periods; `samples`, `events` and `impacts`
   /// say what to keep (per-period impact counts are always kept).
-  void Start(int periods, bool samples, bool events, bool impacts = false);
+  void Start(int periods, bool samples, bool events, bool impacts = false, double psi0 = 0.0,
+             double origin = 0.0);
   void OnEvent(const SimEvent& event) override;
   void OnSample(const SimState& state) override;
 
@@ -41,6 +43,12 @@ class Recorder : public SimObserver {
     int period;
   };
   std::vector<Impact> impacts;  ///< every impact (when kept)
+  /// Forcing phase (mod tau) at the start of period 0 of the record: impact phases are
+  /// measured from it.
+  double psi0 = 0.0;
+  /// Phase since the start of the simulation at which period 0 of the record starts; events
+  /// before it are not recorded.
+  double origin = 0.0;
   static constexpr std::size_t kMaxEvents = 4096;
 
  private:
@@ -78,5 +86,14 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
 
 /// Checks alpha and a start state (std::invalid_argument naming the bad value).
 void ValidateStart(double alpha, const PhaseState& start);
+
+/// The periodic motion of period p (or a divisor of it) through the state s (periodic.cpp):
+/// the section is moved off the events of the next p periods from s, then Newton's method on
+/// the p-th iterate with the simulator settings of `options`; the period is the smallest
+/// divisor of p whose iterate returns to the fixed point. The reported state lies at that
+/// section. *moved receives s at that section (the start of the Newton iteration).
+PeriodicMotion RefinePeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
+                                    const MotionOptions& options, MapState s, int p,
+                                    MapState* moved);
 
 }  // namespace capsubot::detail

@@ -484,6 +484,8 @@ class Simulation {
   Segment sg_;
   SimResult res_;
   std::int64_t next_sample_ = 0;
+  bool stop_ = false;     // SimObserver::Done: the run ends at local phase stop_at_
+  double stop_at_ = 0.0;
   int chatter_count_ = 0;
   double last_impact_phase_ = -kInf;
   Wall last_impact_wall_ = Wall::kRight;
@@ -543,6 +545,10 @@ void Simulation::AccumulateEnergy(double s, const ForceValues& w) {
 // Moves the origin to local phase s; returns the state there (right before an event at s).
 SimState Simulation::Advance(double s, const ForceValues* w) {
   EmitSamplesBefore(s, false);
+  if (stop_) {  // the observer has seen enough: the run ends at its last sample
+    s = stop_at_;
+    w = nullptr;
+  }
   const ForceValues values = w != nullptr ? *w : sg_.f.Values(s);
   if (opt_.energy) AccumulateEnergy(s, values);
   const SimState st = StateAt(s, values);
@@ -595,6 +601,11 @@ void Simulation::EmitSamplesBefore(double s_end, bool final) {
     if (!final && s >= s_end) return;
     observer_->OnSample(StateAt(std::max(s, 0.0)));
     ++next_sample_;
+    if (!final && observer_->Done()) {
+      stop_ = true;
+      stop_at_ = std::max(s, 0.0);
+      return;
+    }
   }
 }
 
@@ -875,18 +886,22 @@ SimResult Simulation::Run() {
         stalled = event.s > 0.0 ? 0 : stalled + 1;
         if (stalled > kMaxStalledEvents && Fail("no progress in phase")) break;
         const SimState before = Advance(event.s, event.has_values ? &event.w : nullptr);
+        if (stop_) break;
         ApplyEvent(event, before.u, before.v);
         continue;
       }
       const double step = std::min(window, rem);  // no event in the window
       Advance(step);
+      if (stop_) break;
       boundary = step >= rem;
     }
     if (!boundary) continue;
     if (!in_transient_) break;
     EndTransient();
   }
-  if (res_.status != SimStatus::kNonFinite && !StopIfNotFinite()) EmitSamplesBefore(0.0, true);
+  if (res_.status != SimStatus::kNonFinite && !stop_ && !StopIfNotFinite()) {
+    EmitSamplesBefore(0.0, true);
+  }
   res_.final_state = StateAt(0.0);
   if (in_transient_) {  // stopped inside the transient: its figures, and an empty record
     EndTransient();
