@@ -40,8 +40,9 @@ const FlagNames& MotionFlagNames();
 /// Adds --threads (0: all cores).
 void AddThreadsOption(CLI::App& cmd, int& threads);
 
-/// "3 right + 1 left impacts per 1 period" or "no period found up to 8 (...)".
-std::string MotionWords(const Motion& motion, int max_period);
+/// "period 1: 3 right + 1 left impacts per period", or for an irregular attractor the range of
+/// its starts' mean velocities and whether their records are long enough.
+std::string AttractorWords(const Attractor& attractor, int max_period);
 
 /// A StartsProgress that draws the shared progress bar (ProgressBar, counting `what`, e.g.
 /// "starts") on stderr when it is a terminal; none otherwise.

@@ -68,8 +68,7 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   int k = 0;
   for (const Attractor& at : a.attractors) {
     t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13.10g} {}{}\n", ++k,
-                     100.0 * at.fraction, at.motion.mean_velocity,
-                     MotionWords(at.motion, mo.max_period),
+                     100.0 * at.fraction, at.mean_velocity, AttractorWords(at, mo.max_period),
                      at.one_impact_orbit ? "  (the analytic one-impact orbit)" : "");
     t += fmt::format("      e.g. from x0 = {:.6g}, psi = {:.6g}\n", at.example.x, at.example.psi);
   }

@@ -43,7 +43,7 @@ struct BasinsCommandOptions {
 
 std::string Legend(const Attractor& a, int max_period) {
   return fmt::format("{:.1f} %: {}, mean velocity {:.4g}", 100.0 * a.fraction,
-                     MotionWords(a.motion, max_period), a.motion.mean_velocity);
+                     AttractorWords(a, max_period), a.mean_velocity);
 }
 
 // Draws the map with gnuplot into a temporary file beside `path`, then renames it.

@@ -216,8 +216,8 @@ std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_
   for (std::size_t k = 0; k < list.size() && k < kListedAttractors; ++k) {
     const Attractor& a = list[k];
     t += fmt::format("    attractor {:<5} {:.0f} % of the starts: {}, {}\n", k + 1,
-                     100.0 * a.fraction, MotionWords(a.motion, max_period),
-                     Num(1e3 * m.omega * in.L * a.motion.mean_velocity, " mm/s"));
+                     100.0 * a.fraction, AttractorWords(a, max_period),
+                     Num(1e3 * m.omega * in.L * a.mean_velocity, " mm/s"));
   }
   if (list.size() > kListedAttractors) {
     double rest = 0.0;

@@ -70,11 +70,15 @@ int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
                      l.imag() != 0.0 ? fmt::format("{:+.10g}i", l.imag()) : std::string());
   }
   t += fmt::format("   ({} free coordinates at the section)\n", m.dimension);
-  t += fmt::format(
-      "  verdict        {} (spectral radius {:.10g}; largest multiplier is {:.3g} "
-      "from +1, {:.3g} from -1)\n",
-      m.stable ? "stable" : "unstable", m.spectral_radius, m.distance_to_plus_one,
-      m.distance_to_minus_one);
+  if (m.status != ShootingStatus::kConverged) {
+    t += "  verdict        none: Newton did not converge, so no periodic motion is known here\n";
+  } else {
+    t += fmt::format(
+        "  verdict        {} (spectral radius {:.10g}; largest multiplier is {:.3g} "
+        "from +1, {:.3g} from -1)\n",
+        m.stable ? "stable" : "unstable", m.spectral_radius, m.distance_to_plus_one,
+        m.distance_to_minus_one);
+  }
   fmt::print("{}", t);
   return 0;
 }

@@ -135,9 +135,15 @@ using StartsProgress = std::function<void(std::int64_t done, std::int64_t total)
 /// How starts are grouped into attractors.
 struct AttractorOptions {
   MotionOptions motion;  ///< simulation and classification of each start
-  /// Two motions with the same status, period and impact counts belong to one attractor when
-  /// their mean velocities differ by at most this times the larger magnitude; >= 0.
+  /// Two periodic motions with the same period belong to one attractor when their mean
+  /// velocities differ by at most this times the larger magnitude; >= 0. (Newton's method gives
+  /// both exactly; impact counts are not compared: a chattering sequence may be cut after a
+  /// different number of impacts.)
   double velocity_tolerance = 1e-6;
+  /// Motions with no period form one irregular attractor per cluster of mean velocity: sorted
+  /// by mean velocity, neighbours within this times the larger magnitude are in one cluster;
+  /// >= 0.
+  double irregular_tolerance = 0.1;
   /// A periodic motion is the analytic one-impact orbit when its section state is within this
   /// of the orbit's state (x, u, v, units of L and omega L); > 0.
   double orbit_tolerance = 1e-6;
@@ -156,7 +162,20 @@ struct Attractor {
   /// The analytic one-impact orbit of this robot (docs/model.md sections 4 and 8): period 1,
   /// one right impact, no left impact, and the section state on the orbit.
   bool one_impact_orbit = false;
+  /// Mean, smallest and largest mean velocity over its starts (they differ only for an
+  /// irregular motion).
+  double mean_velocity = Motion::kNaN;
+  double velocity_min = Motion::kNaN;
+  double velocity_max = Motion::kNaN;
+  /// Largest difference between the mean velocities of the two halves of a start's record,
+  /// relative to the attractor's mean velocity (0 for a periodic motion): below 1 % the
+  /// record is long enough for the mean to settle.
+  double halves_difference = 0.0;
 };
+
+/// An irregular attractor's record is long enough when the halves of every start's record
+/// agree to this (relative).
+inline constexpr double kSettledHalves = 0.01;
 
 /// The attractors reached from a set of starts.
 struct Attractors {
@@ -192,13 +211,20 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
                           std::int64_t first, const MotionSink& sink,
                           const BlockBackend& backend = LocalBlocks());
 
+/// How motions are grouped into attractors (AttractorOptions' two tolerances).
+struct Grouping {
+  double velocity_tolerance = 1e-6;  ///< periodic motions (AttractorOptions)
+  double irregular_tolerance = 0.1;  ///< motions with no period (AttractorOptions)
+};
+
 /// The motions of `starts` (one each, in the same order) grouped into attractors, as
-/// ClassifyStarts groups them: in the order of the starts, two motions in one class when
-/// their status, period and impact counts agree and their mean velocities are within
-/// `velocity_tolerance` (relative); classes sorted by starts, most first. The attractors'
+/// ClassifyStarts groups them: periodic motions by period and mean velocity (within
+/// `velocity_tolerance`, relative), motions with no period by clusters of mean velocity
+/// (`irregular_tolerance`), starts that hit the work bound in one class; classes numbered in
+/// the order of their first start, then sorted by starts, most first. The attractors'
 /// one_impact_orbit is left false. Throws std::invalid_argument when the sizes differ.
 Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motion> motions,
-                        double velocity_tolerance);
+                        const Grouping& grouping);
 
 /// The long-run motion of every start (LongRunMotions) grouped into attractors (GroupMotions),
 /// the one-impact orbits recognised. Throws

@@ -26,15 +26,35 @@ constexpr int kMaxThreads = 1024;
 // and the ranks of a distributed run.
 constexpr std::int64_t kStartsPerBlock = 16;
 
-bool SameClass(const Motion& a, const Motion& b, double velocity_tolerance) {
-  if (a.status != b.status) return false;
-  if (a.status == MotionStatus::kEventLimit) return true;
-  if (a.period != b.period || a.impacts_right != b.impacts_right ||
-      a.impacts_left != b.impacts_left) {
-    return false;
-  }
+// Periodic motions of one attractor: same period, mean velocities within the tolerance.
+bool SamePeriodic(const Motion& a, const Motion& b, double velocity_tolerance) {
+  if (a.period != b.period) return false;
   const double scale = std::max(std::abs(a.mean_velocity), std::abs(b.mean_velocity));
   return std::abs(a.mean_velocity - b.mean_velocity) <= velocity_tolerance * scale;
+}
+
+// The cluster of every motion with no period (-1 for the others): sorted by mean velocity,
+// neighbours within `tolerance` times the larger magnitude share a cluster. Clusters are
+// numbered by their smallest velocity; the result does not depend on the order of the starts.
+std::vector<int> IrregularClusters(const std::vector<Motion>& motions, double tolerance) {
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < motions.size(); ++k) {
+    if (motions[k].status == MotionStatus::kNoPeriod) order.push_back(k);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return motions[a].mean_velocity < motions[b].mean_velocity;
+  });
+  std::vector<int> cluster(motions.size(), -1);
+  int id = -1;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const double v = motions[order[i]].mean_velocity;
+    const double prev = i > 0 ? motions[order[i - 1]].mean_velocity : v;
+    if (i == 0 || !(std::abs(v - prev) <= tolerance * std::max(std::abs(v), std::abs(prev)))) {
+      ++id;
+    }
+    cluster[order[i]] = id;
+  }
+  return cluster;
 }
 
 bool OneImpactShape(const Motion& m) {
@@ -49,6 +69,10 @@ void AttractorOptions::Validate() const {
   if (!(velocity_tolerance >= 0.0) || !std::isfinite(velocity_tolerance)) {
     throw std::invalid_argument(fmt::format(
         "velocity_tolerance = {} is invalid: expected a finite number >= 0", velocity_tolerance));
+  }
+  if (!(irregular_tolerance >= 0.0) || !std::isfinite(irregular_tolerance)) {
+    throw std::invalid_argument(fmt::format(
+        "irregular_tolerance = {} is invalid: expected a finite number >= 0", irregular_tolerance));
   }
   if (!(orbit_tolerance > 0.0) || !std::isfinite(orbit_tolerance)) {
     throw std::invalid_argument(fmt::format(
@@ -162,7 +186,7 @@ std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params,
 }
 
 Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motion> motions,
-                        double velocity_tolerance) {
+                        const Grouping& grouping) {
   if (motions.size() != starts.size()) {
     throw std::invalid_argument(fmt::format("motions: {} given: expected one per start ({})",
                                             motions.size(), starts.size()));
@@ -171,9 +195,12 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
   const auto n = static_cast<std::int64_t>(starts.size());
   out.starts = n;
   out.motions = std::move(motions);
+  const std::vector<int> cluster = IrregularClusters(out.motions, grouping.irregular_tolerance);
   // Group in the order of the starts (deterministic), then sort by size.
   std::vector<int> label(starts.size(), -1);
   std::vector<Attractor> found;
+  std::vector<int> found_cluster;
+  std::vector<double> sums;
   double sum = 0.0;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const Motion& m = out.motions[k];
@@ -183,16 +210,41 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
       sum += m.mean_velocity;
     }
     for (std::size_t a = 0; a < found.size() && label[k] < 0; ++a) {
-      if (SameClass(found[a].motion, m, velocity_tolerance)) label[k] = static_cast<int>(a);
+      const Motion& f = found[a].motion;
+      if (f.status != m.status) continue;
+      const bool same = m.status == MotionStatus::kPeriodic
+                            ? SamePeriodic(f, m, grouping.velocity_tolerance)
+                            : found_cluster[a] == cluster[k];
+      if (same) label[k] = static_cast<int>(a);
     }
     if (label[k] < 0) {
       label[k] = static_cast<int>(found.size());
       Attractor a;
       a.motion = m;
       a.example = starts[k];
+      a.velocity_min = a.velocity_max = m.mean_velocity;
       found.push_back(a);
+      found_cluster.push_back(cluster[k]);
+      sums.push_back(0.0);
     }
-    ++found[static_cast<std::size_t>(label[k])].starts;
+    const auto g = static_cast<std::size_t>(label[k]);
+    Attractor& a = found[g];
+    ++a.starts;
+    sums[g] += m.mean_velocity;
+    a.velocity_min = std::min(a.velocity_min, m.mean_velocity);
+    a.velocity_max = std::max(a.velocity_max, m.mean_velocity);
+    if (m.status == MotionStatus::kNoPeriod) {
+      a.halves_difference = std::max(
+          a.halves_difference, std::abs(m.first_half_velocity - m.second_half_velocity));
+    }
+  }
+  for (std::size_t g = 0; g < found.size(); ++g) {
+    Attractor& a = found[g];
+    a.mean_velocity = sums[g] / static_cast<double>(a.starts);
+    // Relative to the attractor's speed (absolute differences summed above).
+    a.halves_difference = a.halves_difference > 0.0
+                              ? a.halves_difference / std::abs(a.mean_velocity)
+                              : a.halves_difference;
   }
   if (n > out.event_limit_starts)
     out.mean_velocity = sum / static_cast<double>(n - out.event_limit_starts);
@@ -220,7 +272,7 @@ Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double a
                           const StartsProgress& progress, const BlockBackend& backend) {
   Attractors out = GroupMotions(
       starts, LongRunMotions(forcing, params, alpha, starts, options, progress, backend),
-      options.velocity_tolerance);
+      Grouping{options.velocity_tolerance, options.irregular_tolerance});
   // The analytic one-impact orbits are needed only if a motion has their shape.
   const bool any = std::any_of(out.attractors.begin(), out.attractors.end(),
                                [](const Attractor& a) { return OneImpactShape(a.motion); });

@@ -258,8 +258,8 @@ FromRestBest EvaluateFromRest(const DesignInput& in, double m2, double frequency
   b.mean_velocity = b.attractors.mean_velocity;
   b.forward_fraction = b.backward_fraction = 0.0;
   for (const Attractor& a : b.attractors.attractors) {
-    if (a.motion.mean_velocity > 0.0) b.forward_fraction += a.fraction;
-    if (a.motion.mean_velocity < 0.0) b.backward_fraction += a.fraction;
+    if (a.mean_velocity > 0.0) b.forward_fraction += a.fraction;
+    if (a.mean_velocity < 0.0) b.backward_fraction += a.fraction;
   }
   const double sign = direction == Direction::kForward ? 1.0 : -1.0;
   if (b.attractors.event_limit_starts > 0 || std::isnan(b.mean_velocity)) {

@@ -22,6 +22,16 @@ nlohmann::json AttractorsJson(const Attractors& a) {
     x["starts"] = at.starts;
     x["example_start"] = {{"x0", at.example.x}, {"psi", at.example.psi}};
     x["one_impact_orbit"] = at.one_impact_orbit;
+    x["mean_velocity"] = at.mean_velocity;  // over its starts
+    x["velocity_min"] = at.velocity_min;
+    x["velocity_max"] = at.velocity_max;
+    if (at.motion.status == MotionStatus::kNoPeriod) {
+      x["halves_difference"] = at.halves_difference;
+    }
+    if (at.motion.refined) {
+      x["spectral_radius"] = at.motion.spectral_radius;
+      x["largest_multiplier"] = {at.motion.multiplier_re, at.motion.multiplier_im};
+    }
     j["attractors"].push_back(x);
   }
   j["mean_velocity"] = a.mean_velocity;

@@ -78,7 +78,7 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
     nlohmann::json a = AttractorsJson(b->attractors);
     for (std::size_t k = 0; k < b->attractors.attractors.size(); ++k) {
       a["attractors"][k]["speed_mm_s"] =
-          1e3 * m.omega * in.L * b->attractors.attractors[k].motion.mean_velocity;
+          1e3 * m.omega * in.L * b->attractors.attractors[k].mean_velocity;
     }
     j["attractors"] = a;
     out[DirectionName(b->direction)] = j;

@@ -86,7 +86,8 @@ MergeSummary MergeBasinShards(const std::vector<std::string>& paths, const std::
     ++s.units_read;
   }
   detail::RequireShardsConsumed(shards);
-  const Attractors a = GroupMotions(starts, std::move(motions), velocity_tolerance);
+  const Attractors a = GroupMotions(starts, std::move(motions),
+                                    Grouping{velocity_tolerance, Grouping{}.irregular_tolerance});
 
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();

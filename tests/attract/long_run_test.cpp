@@ -1,0 +1,389 @@
+// Long-run answers that do not depend on numerical settings (docs/attractors.md "How a motion is
+// classified"): the early stop only saves time, a long run is one continuous simulation (the
+// same as a direct run of the start), a periodic motion's period is its smallest one, and
+// motions are grouped by their period and velocity, never by impact counts alone.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "attract/stroboscopic.hpp"
+#include "capsubot/attractors.hpp"
+#include "capsubot/bifurcation.hpp"
+#include "capsubot/periodic.hpp"
+#include "capsubot/robot_orbits.hpp"
+#include "capsubot/stability.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+
+// Newton's method puts the fixed point within 1e-12 of the motion; mean velocities of the
+// same periodic motion found from two states agree to rounding (observed ~1e-14 relative).
+constexpr double kSameMotionRelTol = 1e-9;
+// A multiplier found by finite differences of simulated iterates against the analytic one
+// (docs/model.md section 8); observed ~1e-9.
+constexpr double kMultiplierTol = 1e-7;
+// The issue's bar for the mean over starts against direct runs.
+constexpr double kMeanOverStartsRelTol = 0.02;
+
+::testing::AssertionResult RelClose(double actual, double expected, double rel) {
+  return Near(actual, expected, rel * std::abs(expected));
+}
+
+// The design example robot's dimensionless form (`capsubot design --m1 0.2 --L 0.02 --mu 0.3
+// --force-amplitude 0.5 --force-bias 0.1 --frequency 20 --e 0.7 --from-rest`): a period-2 motion
+// and long irregular motions that pass through sticks of the inner body on a wall.
+struct DesignExample {
+  Forcing forcing = Forcing::Harmonic(0.007147513690343026, 0.0014295027380686054, 0.0);
+  Params params = [] {
+    Params p;
+    p.T0 = 0.009318382608106253;
+    p.e = 0.7;
+    return p;
+  }();
+  double alpha = 0.09704790303928344;
+};
+
+// A direct simulation of a start from rest: the mean velocity over `record` periods after
+// `transient` periods, as `capsubot simulate --transient T --periods R` gives it.
+double DirectVelocity(const Forcing& forcing, const Params& params, double alpha,
+                      const PhaseState& start, int transient, int record) {
+  SimOptions o = testing::StartAt(alpha, start.x, start.u, start.v, record);
+  o.transient = transient;
+  o.max_events_per_period = 1000;
+  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + start.psi), params, o);
+  EXPECT_EQ(r.status, SimStatus::kOk);
+  return r.displacement / (record * kTau);
+}
+
+TEST(LongRun, EarlyStopChangesNoAnswerOverRandomRobots) {
+  // 200 random robots of every kind: small and large T0, e from 0 to 1, light and heavy inner
+  // bodies, forces near and far from the friction bound; two random starts from rest each.
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int periodic = 0, irregular = 0, early = 0, compared = 0;
+  for (int robot = 0; robot < 200; ++robot) {
+    Params params;
+    params.T0 = std::pow(10.0, -2.0 + 2.0 * unit(rng));
+    params.e = unit(rng);
+    const double share = unit(rng);
+    const double total = 0.5 + 0.5 * unit(rng);  // (A + c)/T0
+    const Forcing forcing = Forcing::Harmonic(share * total * params.T0,
+                                              (1.0 - share) * total * params.T0,
+                                              kTau * unit(rng) - 0.5 * kTau);
+    const double alpha = 0.05 + 0.9 * unit(rng);
+    AttractorOptions stop, full;
+    stop.threads = full.threads = 1;
+    full.motion.converged_tolerance = 0.0;
+    const std::vector<PhaseState> starts = {RestStart(unit(rng), kTau * unit(rng)),
+                                            RestStart(unit(rng), kTau * unit(rng))};
+    const std::vector<Motion> a = LongRunMotions(forcing, params, alpha, starts, stop);
+    const std::vector<Motion> b = LongRunMotions(forcing, params, alpha, starts, full);
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      SCOPED_TRACE("robot " + std::to_string(robot) + " start " + std::to_string(k));
+      ASSERT_EQ(a[k].status, b[k].status);
+      ++compared;
+      if (a[k].status == MotionStatus::kEventLimit) continue;
+      EXPECT_EQ(a[k].period, b[k].period);
+      EXPECT_TRUE(RelClose(a[k].mean_velocity, b[k].mean_velocity, kSameMotionRelTol));
+      if (a[k].status == MotionStatus::kPeriodic) {
+        ++periodic;
+        if (a[k].refined) {
+          EXPECT_TRUE(b[k].refined);
+          EXPECT_TRUE(Near(a[k].spectral_radius, b[k].spectral_radius, 1e-6));
+        }
+      } else {
+        ++irregular;
+        EXPECT_EQ(a[k].mean_velocity, b[k].mean_velocity);  // the same run, bit for bit
+      }
+      const std::vector<Motion> one =
+          LongRunMotions(forcing, params, alpha, {starts[k]}, stop);  // no cross-talk
+      EXPECT_EQ(one[0].mean_velocity, a[k].mean_velocity);
+    }
+    // Did the early stop act on this robot? (its motion is then Newton's, with no record)
+    for (std::size_t k = 0; k < starts.size(); ++k) early += a[k].refined ? 1 : 0;
+  }
+  EXPECT_EQ(compared, 400);
+  // The table holds both kinds of motion, and the early stop was used.
+  EXPECT_GE(periodic, 100);
+  EXPECT_GE(irregular, 5);
+  EXPECT_GE(early, 50);
+}
+
+TEST(LongRun, AttractorsAgreeWithDirectRunsOfTheSameStarts) {
+  // The chaotic transients of this robot end in its period-2 motion or in long motions through
+  // sticks; restarting the simulation every few periods (as an early stop used to) sent three
+  // times as many starts into the period-2 motion as direct runs do.
+  const DesignExample r;
+  const int transient = 2000, record = 3000;
+  FromRestOptions o;
+  o.attractor.motion.transient = transient;
+  o.attractor.motion.record = record;
+  const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, o);
+  ASSERT_EQ(a.motions.size(), 64U);
+  const std::vector<PhaseState> starts = GridStarts(8, 8);
+  double direct_sum = 0.0;
+  int irregular = 0;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const double direct = DirectVelocity(r.forcing, r.params, r.alpha, starts[k], transient, record);
+    direct_sum += direct;
+    if (a.motions[k].status == MotionStatus::kNoPeriod) {
+      ++irregular;
+      EXPECT_TRUE(RelClose(a.motions[k].mean_velocity, direct, 1e-12)) << "start " << k;
+    } else {  // a direct run's record may still hold part of the chaotic transient
+      ASSERT_EQ(a.motions[k].status, MotionStatus::kPeriodic);
+    }
+  }
+  EXPECT_GE(irregular, 32);
+  EXPECT_TRUE(RelClose(a.mean_velocity, direct_sum / 64.0, kMeanOverStartsRelTol));
+  // The irregular starts form one irregular attractor with the range of their velocities.
+  int irregular_attractors = 0;
+  for (const Attractor& at : a.attractors) {
+    if (at.motion.status != MotionStatus::kNoPeriod) continue;
+    ++irregular_attractors;
+    EXPECT_EQ(at.starts, irregular);
+    EXPECT_LT(at.velocity_min, at.velocity_max);
+    EXPECT_GE(at.mean_velocity, at.velocity_min);
+    EXPECT_LE(at.mean_velocity, at.velocity_max);
+  }
+  EXPECT_EQ(irregular_attractors, 1);
+}
+
+// The robots of the examples in docs/attractors.md (the stable optimum at T0 = 1, e = 1 and
+// the orbit with clearance beside its period-12 motion).
+struct Example {
+  const char* name;
+  Forcing forcing;
+  Params params;
+  double alpha;
+  int max_period;
+};
+
+std::vector<Example> DocExamples() {
+  Params paper;
+  Params clearance;
+  clearance.T0 = 0.1;
+  clearance.e = 0.5;
+  return {{"stable optimum",
+           Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047),
+           paper, 0.6435592358295166, 8},
+          {"orbit with clearance", Forcing::Harmonic(0.05, 0.02, -2.842), clearance,
+           0.2792869076315278, 16}};
+}
+
+TEST(LongRun, DocExamplesAgreeWithDirectRunsOfTheSameStarts) {
+  const int transient = 2000, record = 3000;
+  for (const Example& ex : DocExamples()) {
+    SCOPED_TRACE(ex.name);
+    FromRestOptions o;
+    o.attractor.motion.transient = transient;
+    o.attractor.motion.record = record;
+    o.attractor.motion.max_period = ex.max_period;
+    const Attractors a = FindAttractors(ex.forcing, ex.params, ex.alpha, o);
+    const std::vector<PhaseState> starts = GridStarts(8, 8);
+    ASSERT_EQ(a.motions.size(), starts.size());
+    double direct_sum = 0.0;
+    for (const PhaseState& start : starts) {
+      direct_sum += DirectVelocity(ex.forcing, ex.params, ex.alpha, start, transient, record);
+    }
+    EXPECT_EQ(a.event_limit_starts, 0);
+    EXPECT_TRUE(RelClose(a.mean_velocity, direct_sum / 64.0, kMeanOverStartsRelTol));
+  }
+}
+
+TEST(LongRun, PeriodIsTheSmallestWithTheMultipliersOfOnePeriod) {
+  // Started next to the stable one-impact orbit of this force, the closest return may be at
+  // p = 3; Newton's fixed point is one of the first iterate.
+  Params params;
+  params.T0 = 0.03359258640909073;
+  params.e = 1.0;
+  const Forcing forcing =
+      Forcing::Harmonic(0.012379276257211788, 0.018006366775342907, -2.3431342586039907);
+  const Solution s = Solve(forcing, params);
+  ASSERT_TRUE(s.validity.valid());
+  const Stability st = ComputeStability(s.orbit);
+  ASSERT_TRUE(st.stable);
+  PhaseState z;
+  z.x = 0.5032482015201704;
+  z.u = 0.17018581585325004;
+  z.v = 0.0;
+  z.psi = 4.437859415761879;
+  for (int period : {1, 2, 3, 6}) {
+    SCOPED_TRACE("shot with period " + std::to_string(period));
+    const PeriodicMotion pm = ShootPeriodicMotion(forcing, params, s.orbit.alpha, z, period, {});
+    ASSERT_EQ(pm.status, ShootingStatus::kConverged);
+    EXPECT_EQ(pm.period, 1);
+    EXPECT_EQ(pm.impacts_right, 1);
+    EXPECT_EQ(pm.impacts_left, 0);
+    EXPECT_TRUE(RelClose(pm.mean_velocity, s.orbit.v_mean, kSameMotionRelTol));
+    ASSERT_EQ(pm.multipliers.size(), 2U);
+    EXPECT_TRUE(Near(std::abs(pm.multipliers[0]), st.spectral_radius, kMultiplierTol));
+  }
+  ShootingOptions from_near;
+  from_near.max_period = 8;
+  const PeriodicMotion found = FindPeriodicMotion(forcing, params, s.orbit.alpha, z, from_near);
+  EXPECT_EQ(found.period, 1);
+  EXPECT_TRUE(Near(found.spectral_radius, st.spectral_radius, kMultiplierTol));
+}
+
+TEST(LongRun, SlowlyConvergingPeriodOneNearPeriodDoublingIsPeriodOne) {
+  // A = 0.2, c = 0.03, phi0 = -2.518525390 at T0 = 1, e = 1: the one-impact orbit has a
+  // multiplier -1 at alpha = 0.64062; at alpha = 0.645 it is stable but converges slowly, so
+  // the recorded states repeat better every 2 periods than every period.
+  Params params;
+  const Forcing forcing = Forcing::Harmonic(0.2, 0.03, -2.518525390);
+  const double alpha = 0.645;
+  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+  const Solution* stable = nullptr;
+  for (const Solution& s : orbits) {
+    if (s.validity.valid() && ComputeStability(s.orbit).stable) stable = &s;
+  }
+  ASSERT_NE(stable, nullptr);
+  const double rho = ComputeStability(stable->orbit).spectral_radius;
+  ASSERT_GT(rho, 0.8);  // slowly converging: the case under test
+  // Started off the orbit by 1e-3 in x, one radian after its impact.
+  const double phi = 1.0;
+  PhaseState start;
+  start.x = stable->orbit.x(phi) - 1e-3;
+  start.u = stable->orbit.dx(phi);
+  start.v = stable->orbit.v(phi);
+  start.psi = phi + stable->orbit.forcing.phi0() - forcing.phi0();
+  // Short runs end while the motion still alternates about the orbit (deviations of 1e-6 to
+  // 1e-5 after 30 to 50 periods): every 2 periods it returns 7 times closer than every period.
+  int periodic = 0;
+  for (int transient = 0; transient <= 60; transient += 5) {
+    SCOPED_TRACE("transient " + std::to_string(transient));
+    MotionOptions o;
+    o.transient = transient;
+    o.record = 16;
+    o.converged_tolerance = 0.0;
+    const Motion m = LongRunMotion(forcing, params, alpha, start, o);
+    if (m.status != MotionStatus::kPeriodic) continue;  // not yet within state_tolerance
+    ++periodic;
+    EXPECT_EQ(m.period, 1);
+    EXPECT_TRUE(m.refined);
+    EXPECT_TRUE(RelClose(m.mean_velocity, stable->orbit.v_mean, kSameMotionRelTol));
+    EXPECT_TRUE(Near(m.spectral_radius, rho, kMultiplierTol));
+  }
+  EXPECT_GE(periodic, 5);
+}
+
+// The orbit with clearance of docs/attractors.md: stable, spectral radius 0.16, its impact at
+// the motor phase phi0, so starts at psi = 0 begin on its impact.
+struct ClearanceOrbit {
+  Forcing forcing = Forcing::Harmonic(0.05, 0.02, -2.842);
+  Params params = [] {
+    Params p;
+    p.T0 = 0.1;
+    p.e = 0.5;
+    return p;
+  }();
+  double alpha = 0.2792869076315278;
+};
+
+TEST(LongRun, SectionIsOffTheImpactForEveryTransient) {
+  const ClearanceOrbit r;
+  const Solution s = Solve(r.forcing, r.params);
+  const double rho = ComputeStability(s.orbit).spectral_radius;
+  for (int transient : {0, 1, 2}) {
+    SCOPED_TRACE("transient " + std::to_string(transient));
+    AttractorOptions o;
+    o.motion.transient = transient;
+    o.motion.record = 200;
+    const std::vector<PhaseState> starts = GridStarts(4, 3);
+    const Attractors a = ClassifyStarts(r.forcing, r.params, r.alpha, starts, o);
+    int on_orbit = 0;
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const Motion& m = a.motions[k];
+      if (m.status != MotionStatus::kPeriodic || m.period != 1) continue;
+      ++on_orbit;
+      EXPECT_EQ(m.impacts_right, 1) << "start " << k;
+      EXPECT_TRUE(Near(m.spectral_radius, rho, kMultiplierTol)) << "start " << k;
+    }
+    EXPECT_GE(on_orbit, 4);  // the psi = 0 starts among them
+    EXPECT_EQ(a.attractors.front().motion.impacts_right, 1);
+    // The bifurcation diagram started on the impact reports the orbit's own spectral radius.
+    BifurcationOptions b;
+    b.param = BifurcationParam::kAlpha;
+    b.from = r.alpha;
+    b.to = 0.28;
+    b.steps = 2;
+    b.start = RestStart(0.125, 0.0);
+    b.motion.transient = transient;
+    const BifurcationDiagram d = ComputeBifurcation(r.forcing, r.params, r.alpha, b);
+    ASSERT_FALSE(d.summary.empty());
+    EXPECT_EQ(d.summary.front().motion.period, 1);
+    EXPECT_TRUE(Near(d.summary.front().spectral_radius, rho, kMultiplierTol));
+  }
+}
+
+Motion PeriodicWith(int period, std::int64_t right, std::int64_t left, double v) {
+  Motion m;
+  m.status = MotionStatus::kPeriodic;
+  m.period = period;
+  m.impacts_right = right;
+  m.impacts_left = left;
+  m.mean_velocity = m.first_half_velocity = m.second_half_velocity = v;
+  return m;
+}
+
+Motion Irregular(double v, double first, double second) {
+  Motion m;
+  m.status = MotionStatus::kNoPeriod;
+  m.mean_velocity = v;
+  m.first_half_velocity = first;
+  m.second_half_velocity = second;
+  return m;
+}
+
+TEST(LongRun, MotionsAreGroupedByPeriodAndVelocityNotImpactCounts) {
+  // Two chattering motions cut after different numbers of impacts (176/14 and 227/17) with
+  // velocities equal to 1e-10: one attractor. Irregular motions 0.0103 to 0.0104: one
+  // irregular attractor; one far away: another.
+  const std::vector<Motion> motions = {
+      PeriodicWith(1, 176, 14, 0.151436), PeriodicWith(1, 227, 17, 0.151436 * (1 + 1e-10)),
+      Irregular(0.01033, 0.0102, 0.0104),  Irregular(0.01041, 0.0104, 0.0104),
+      Irregular(0.01037, 0.0103, 0.0104),  Irregular(-0.02, -0.02, -0.02),
+      PeriodicWith(2, 1, 1, 0.151436)};
+  const std::vector<PhaseState> starts(motions.size(), RestStart(0.5, 0.0));
+  const Attractors a = GroupMotions(starts, motions, Grouping{});
+  ASSERT_EQ(a.attractors.size(), 4U);
+  EXPECT_EQ(a.labels[0], a.labels[1]);
+  EXPECT_EQ(a.labels[2], a.labels[3]);
+  EXPECT_EQ(a.labels[2], a.labels[4]);
+  EXPECT_NE(a.labels[5], a.labels[2]);
+  EXPECT_NE(a.labels[6], a.labels[0]);  // another period
+  const Attractor& irregular = a.attractors[static_cast<std::size_t>(a.labels[2])];
+  EXPECT_EQ(irregular.starts, 3);
+  EXPECT_DOUBLE_EQ(irregular.velocity_min, 0.01033);
+  EXPECT_DOUBLE_EQ(irregular.velocity_max, 0.01041);
+  EXPECT_TRUE(Near(irregular.mean_velocity, (0.01033 + 0.01041 + 0.01037) / 3.0, 1e-15));
+  EXPECT_TRUE(Near(irregular.halves_difference, 0.0002 / irregular.mean_velocity, 1e-12));
+  EXPECT_GT(irregular.halves_difference, kSettledHalves);  // the record is too short
+  // The grouping does not depend on the order of the starts.
+  std::vector<Motion> reversed(motions.rbegin(), motions.rend());
+  const Attractors b = GroupMotions(starts, reversed, Grouping{});
+  EXPECT_EQ(b.attractors.size(), a.attractors.size());
+}
+
+TEST(LongRun, NoVerdictWithoutConvergence) {
+  // A start far beyond any motion: Newton does not converge, so nothing is called stable.
+  Params params;
+  const Forcing forcing = Forcing::Harmonic(0.5, 0.3, -2.9);
+  PhaseState z = RestStart(0.5, 0.0);
+  z.u = 1e10;
+  ShootingOptions o;
+  o.max_iterations = 3;
+  const PeriodicMotion pm = FindPeriodicMotion(forcing, params, 0.5, z, o);
+  EXPECT_NE(pm.status, ShootingStatus::kConverged);
+  EXPECT_FALSE(pm.stable);
+}
+
+}  // namespace
+}  // namespace capsubot
