@@ -205,7 +205,7 @@ def test_refused_input(fn, kwargs, error, text):
 
 # Phases are radians: refused beyond 1e6 rad (a double there carries no angle once added to
 # another phase), reduced exactly modulo 2 pi below.
-HUGE_PHASE = "is invalid: expected a phase |phi0| <= 1e+06 rad (phases are in radians"
+HUGE_PHASE = "is invalid: expected a phase |{}| <= 1e+06 rad (phases are in radians"
 
 
 @pytest.mark.parametrize("fn, kwargs, start", [
@@ -216,10 +216,12 @@ HUGE_PHASE = "is invalid: expected a phase |phi0| <= 1e+06 rad (phases are in ra
     (capsubot.attractors, {**HARMONIC, "phi0": 1e16, "alpha": 0.28, "starts": "1x1"},
      "phi0 = 1e+16 "),
     (capsubot.solve_grid, {**GRID, "phi0": np.array([0.0, 1e300])}, "at index (1,): phi0 = 1e+300 "),
-], ids=["solve", "trajectory", "simulate", "attractors", "solve_grid"])
+    (capsubot.periodic, {**HARMONIC, "alpha": 0.28, "from_rest": (0.5, 1e300)}, "psi = 1e+300 "),
+], ids=["solve", "trajectory", "simulate", "attractors", "solve_grid", "periodic"])
 def test_huge_phase_is_refused_naming_radians(fn, kwargs, start):
     text = message(fn, **kwargs)
-    assert text.startswith(start) and HUGE_PHASE in text, text
+    name = start.split()[-3] if start.startswith("at index") else start.split()[0]
+    assert text.startswith(start) and HUGE_PHASE.format(name) in text, text
 
 
 def test_large_phase_is_its_exact_remainder():

@@ -378,6 +378,9 @@ std::vector<Case> Cases() {
        "--grid phi0=0:1e300:3 is invalid: expected phases |phi0| <= 1e6 rad (phases are in "
        "radians)",
        none},
+      {"PeriodicHugeStartPhaseIsRefused",
+       "periodic " + kRobot + " --from-rest 0.5,1e300", 2,
+       "psi = 1e+300 is invalid: expected a phase |psi| <= 1e+06 rad", none},
       // -2.9 + 10^5 turns as a double: its exact remainder (300-bit arithmetic), not -2.9.
       {"SolveLargePhaseIsReducedExactly", "solve --A 0.5 --c 0.5 --phi0 628315.6307179587 --json", 0,
        "", none, "", "", "\"phi0\":-2.899999999974789"},
@@ -390,7 +393,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 90;
+constexpr int kCaseCount = 91;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
