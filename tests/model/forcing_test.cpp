@@ -11,6 +11,7 @@
 #include <string>
 
 #include "capsubot/orbit.hpp"
+#include "capsubot/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -400,6 +401,12 @@ TEST(InputPhase, ReducedPhaseGivesTheOrbitOfItsRemainder) {
   EXPECT_NEAR(big.phi1, ref.phi1, 1e-13);
   EXPECT_NEAR(big.alpha, ref.alpha, 1e-13);
   EXPECT_NEAR(big.I, ref.I, 1e-12);
+  // The extrema of x come from crossing phases of F, phi + delta with delta = phi0 + const:
+  // unreduced, 628315.6 + phi lost 2e-11 of x_min (-12.5969194117288 against
+  // -12.5969194117497).
+  const Solution big_s = Solve(Forcing::Harmonic(0.5, 0.3, 628315.6307179587), p);
+  const Solution ref_s = Solve(Forcing::Harmonic(0.5, 0.3, -0x1.7333333325571p+1), p);
+  EXPECT_NEAR(big_s.validity.x_min, ref_s.validity.x_min, 1e-12);
 }
 
 }  // namespace
