@@ -99,3 +99,13 @@ def test_keyboard_interrupt_stops_a_long_call(name):
     finally:
         timer.cancel()
     assert time.monotonic() - start < 0.3 + INTERRUPT_LATENCY
+
+
+def test_design_with_a_friction_bound_that_dwarfs_the_motor_answers_at_its_work_bound():
+    """g = 1e300 makes T0 1e298 times the motor force: the orbit searches cannot resolve the
+    robots, and the design stops after 8 of them (it ran past 100 s) instead of refining every
+    robot's circle."""
+    r = capsubot.design(m1=0.2, L=0.02, mu=0.3, g=1e300, e=0.7, force_amplitude=0.5,
+                        force_bias=0.1, frequency=20.0)
+    assert (r["status"], r["complete"], r["robots"]) == ("no_gait", False, 8)
+    assert "the search stopped after 8 robots" in r["message"]
