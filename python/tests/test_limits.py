@@ -109,3 +109,17 @@ def test_design_with_a_friction_bound_that_dwarfs_the_motor_answers_at_its_work_
                         force_bias=0.1, frequency=20.0)
     assert (r["status"], r["complete"], r["robots"]) == ("no_gait", False, 8)
     assert "the search stopped after 8 robots" in r["message"]
+
+
+def test_keyboard_interrupt_stops_a_long_trajectory():
+    """trajectory at its largest (1e7 samples, about 4 s) checks for signals between samples:
+    interrupted after 0.1 s it ends long before it would have."""
+    timer = threading.Timer(0.1, _thread.interrupt_main)
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            capsubot.trajectory(A=0.5, c=0.5, phi0=-2.9, samples=10**7)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 2.0
