@@ -29,11 +29,10 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
                     max_evaluations, kMaxOrbitEvaluations));
   }
   bool complete = true;
-  std::vector<Solution> found;
-  {
-    py::gil_scoped_release release;
-    found = FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations);
-  }
+  const std::vector<Solution> found = RunWithoutGil([&](SignalCheck& check) {
+    return FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations,
+                           [&check] { check.Check(); });
+  });
   py::list all(ToPython(json::RobotOrbitsJson(found, complete)));
   if (!complete) {
     // Said as a warning, as the command line says it on stderr.
@@ -61,7 +60,7 @@ constexpr const char* kOrbitsArgsDoc =
     "RuntimeWarning then says so). phi0 is solved for: it is not an argument (a Fourier "
     "force's coefficients are those of phi0 = 0).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL.\n\n";
+    "rule). Runs without the GIL; Ctrl-C interrupts it.\n\n";
 
 }  // namespace
 

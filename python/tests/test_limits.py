@@ -72,7 +72,8 @@ def test_threads_are_lowered_to_four_per_core():
 
 
 # Calls that run for a minute or more without an interrupt (measured: simulate 6.5 us a
-# period of this chattering motion; 64 starts of 2e6 periods; up to 160 000 robots).
+# period of this chattering motion; 64 starts of 2e6 periods; up to 160 000 robots; the orbit
+# search of a robot whose T0 is 5e9 times its force, refined to 1e9 evaluations).
 LONG_CALLS = {
     "simulate": (capsubot.simulate, dict(HARMONIC, **STATE, periods=1e7)),
     "attractors": (capsubot.attractors,
@@ -81,6 +82,8 @@ LONG_CALLS = {
     "design": (capsubot.design,
                dict(m1=0.2, L=0.02, mu=0.3, e=0.7, force_amplitude=0.5, force_bias=0.1,
                     frequency_range=(1.0, 1000.0), scan_points=300)),
+    "orbits": (capsubot.orbits, dict(alpha=0.3333, A=0.00527714, c=0.00105543, T0=3e7, e=0.7,
+                                     max_evaluations=10**9)),
 }
 # Interrupted calls end within this: a start or a robot in progress is finished first. Far
 # below the length of the calls, which would otherwise end with their KeyboardInterrupt.
