@@ -40,13 +40,14 @@ struct StateColumns {
 struct TableFull {};
 
 // Collects what the command line writes to --events and --trajectory, and checks for Python
-// signals as the run goes.
+// signals as the run goes (with the check of the call that runs it, Watch).
 class TableObserver : public SimObserver {
  public:
-  TableObserver(bool events, bool samples, SignalCheck& check)
-      : events_(events), samples_(samples), check_(check) {}
+  TableObserver(bool events, bool samples) : events_(events), samples_(samples) {}
+  // The signal check of the run being observed; nullptr: none.
+  void Watch(SignalCheck* check) { check_ = check; }
   void OnEvent(const SimEvent& e) override {
-    check_();
+    Poll();
     if (!events_) return;
     if (static_cast<std::int64_t>(kind.size()) >= kMaxTrajectoryRows) throw TableFull();
     kind.push_back(e.kind);
@@ -55,10 +56,10 @@ class TableObserver : public SimObserver {
     v_before.push_back(e.v_before);
   }
   void OnSample(const SimState& s) override {
-    check_();
+    Poll();
     if (samples_) samples.Add(s);
   }
-  void OnPeriods(std::int64_t) override { check_(); }
+  void OnPeriods(std::int64_t) override { Poll(); }
 
   std::vector<EventKind> kind;
   StateColumns after;
@@ -66,8 +67,12 @@ class TableObserver : public SimObserver {
   StateColumns samples;
 
  private:
+  void Poll() {
+    if (check_ != nullptr) (*check_)();
+  }
+
   bool events_, samples_;
-  SignalCheck& check_;
+  SignalCheck* check_ = nullptr;
 };
 
 py::array_t<double> Column(const std::vector<double>& values) {
@@ -178,11 +183,14 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
   sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
 
-  std::optional<TableObserver> observer;
+  TableObserver observer(events, trajectory);
   SimResult r;
   try {
     r = RunWithoutGil([&](SignalCheck& check) {
-      return capsubot::Simulate(forcing, params, sim, &observer.emplace(events, trajectory, check));
+      observer.Watch(&check);
+      const SimResult result = capsubot::Simulate(forcing, params, sim, &observer);
+      observer.Watch(nullptr);
+      return result;
     });
   } catch (const TableFull&) {
     throw std::invalid_argument(fmt::format(
@@ -192,8 +200,8 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
   }
   if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
   py::dict d(ToPython(json::SimulationJson(r, sim, orbit ? &*orbit : nullptr)));
-  if (events) d["event_table"] = EventTable(*observer);
-  if (trajectory) d["trajectory"] = StateDict(observer->samples, "phi");
+  if (events) d["event_table"] = EventTable(observer);
+  if (trajectory) d["trajectory"] = StateDict(observer.samples, "phi");
   return d;
 }
 
