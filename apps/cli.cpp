@@ -10,7 +10,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
-#include <thread>
 
 #include "capsubot/io.hpp"
 #include "ranks.hpp"
@@ -245,9 +244,9 @@ CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi) {
 }
 
 int CapThreads(int requested, const char* who) {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int cap = kThreadsPerCore * cores;
-  if (requested <= cap) return requested;
+  const int cap = capsubot::CapThreads(requested);
+  if (cap == requested) return requested;
+  const int cores = MaxUsefulThreads() / kThreadsPerCore;
   if (LaunchedRank() != 0) return cap;  // under mpirun: said once, by rank 0
   fmt::print(stderr,
              "{}: note: --threads {} lowered to {} ({} per core on {} cores: more only adds "

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "capsubot/forcing.hpp"
+#include "capsubot/limits.hpp"
 #include "capsubot/params.hpp"
 
 namespace capsubot::app {
@@ -62,15 +63,9 @@ inline constexpr const char* kFloatOrInf = "FLOAT|inf";
 /// work), the range named in the message and shown in --help.
 CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi);
 
-/// Rows of a --trajectory file at most (about 1 GB of CSV), checked before any work.
-inline constexpr std::int64_t kMaxTrajectoryRows = 10'000'000;
-
-/// Worker threads beyond this many per core only add overhead: a larger --threads is
-/// lowered to it (with a note on stderr).
-inline constexpr int kThreadsPerCore = 4;
-
-/// `requested` threads (0: all cores) capped at kThreadsPerCore x the cores; a note on
-/// stderr (naming `who`) when it lowers the request.
+/// `requested` threads (0: all cores) capped at kThreadsPerCore x the cores (the library's
+/// capsubot::CapThreads, limits.hpp); a note on stderr (naming `who`) when it lowers the
+/// request.
 int CapThreads(int requested, const char* who);
 
 /// A size option given on the command line must lie in [lo, hi], checked before any work:

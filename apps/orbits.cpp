@@ -23,9 +23,6 @@ struct OrbitsOptions {
   bool json = false;
 };
 
-// The largest --max-evaluations: 250 times the default.
-constexpr std::int64_t kMaxEvaluations = 1'000'000'000;
-
 // Said when the search hit its work bound: the list is then not known to be complete.
 constexpr const char* kIncompleteNote =
     "the search stopped at its work bound (--max-evaluations): orbits may be missing";
@@ -87,7 +84,7 @@ Command AddOrbitsCommand(CLI::App& app) {
                           "work bound of the search: evaluations of the orbit equation while "
                           "refining the circle (default 4000000, far above what the tested "
                           "forces need); when it is hit, orbits may be missing: a note says so"),
-          1, kMaxEvaluations)
+          1, kMaxOrbitEvaluations)
       ->capture_default_str();
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: orbits (an array with one object per orbit, sorted by "

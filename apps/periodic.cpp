@@ -45,6 +45,7 @@ int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
     }
     if (opt.transient_option->count() == 0) so.transient = 0;  // start near the motion itself
   }
+  RequirePhase("psi", start.psi);  // a start phase in radians, as phi0
   const PeriodicMotion m =
       FindPeriodicMotion(forcing, opt.robot.params, opt.robot.alpha, start, so);
   if (opt.json) {

@@ -24,8 +24,6 @@ namespace {
 
 // Runs of at least this many periods (about 0.2 s) show a progress bar on a terminal.
 constexpr double kProgressPeriods = 1e5;
-constexpr int kMaxSamplesPerPeriod = 1'000'000;
-constexpr std::int64_t kMaxEventsPerPeriod = 1'000'000'000;
 
 struct SimulateOptions {
   ForcingOptions forcing;
@@ -120,13 +118,9 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
   sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
   if (!opt.trajectory.empty()) {
-    const double rows = std::floor(sim.periods * opt.samples_per_period) + 1.0;
-    if (rows > static_cast<double>(kMaxTrajectoryRows)) {
-      throw std::invalid_argument(fmt::format(
-          "--samples-per-period = {} with --periods {:g} is invalid: expected at most {} rows "
-          "of --trajectory (samples per period x periods + 1 = {:.0f})",
-          opt.samples_per_period, sim.periods, kMaxTrajectoryRows, rows));
-    }
+    // The samples cover the whole run, the transient too.
+    RequireTrajectoryRows(sim.transient + sim.periods, opt.samples_per_period,
+                          "--samples-per-period", "--transient + --periods");
     sim.sample_step = kTau / opt.samples_per_period;
   }
 
@@ -245,7 +239,7 @@ Command AddSimulateCommand(CLI::App& app) {
   CLI::Option* trajectory = cmd->add_option(
       "--trajectory", opt->trajectory,
       "write the state phi, x, u, v, y, mode sampled on a grid to this CSV file (at most "
-      "10000000 rows: samples per period x periods + 1)");
+      "10000000 rows: samples per period x (transient + periods) + 1)");
   Bounded(cmd->add_option("--samples-per-period", opt->samples_per_period,
                           "grid of --trajectory: samples per forcing period"),
           1, kMaxSamplesPerPeriod)

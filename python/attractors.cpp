@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 #include "json/attractors_json.hpp"
 
 namespace capsubot::python {
@@ -47,12 +48,12 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
   mo.converged_tolerance = converged_tolerance;
   mo.chatter_velocity = chatter_velocity;
   mo.max_events_per_period = max_events_per_period;
-  fr.attractor.threads = threads;
-  Attractors a;
-  {
-    py::gil_scoped_release release;
-    a = FindAttractors(forcing, params, alpha, fr);
-  }
+  fr.attractor.threads = CapThreads(threads);
+  // The progress of the starts is told on this thread, block by block: where Ctrl-C is seen.
+  const Attractors a = RunWithoutGil([&](SignalCheck& check) {
+    return FindAttractors(forcing, params, alpha, fr,
+                          [&check](std::int64_t, std::int64_t) { check.Check(); });
+  });
   return py::dict(ToPython(json::AttractorsJson(a)));
 }
 
@@ -77,7 +78,8 @@ constexpr const char* kAttractorsArgsDoc =
     "by Newton's method (0: never; the result does not depend on it)\n"
     "    chatter_velocity  the simulator's chatter cut-off [omega L]\n"
     "    max_events_per_period  work bound: a start needing more ends as event_limit\n"
-    "    threads  worker threads (0: all cores); the result does not depend on it\n\n"
+    "    threads  worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
+    "            result does not depend on it\n\n"
     "Returns a dict: starts (their number), attractors (a list of dicts, most starts first: "
     "status, period, impacts_right, impacts_left, mean_velocity (over its starts), velocity_min, "
     "velocity_max, fraction, starts, example_start {x0, psi}, one_impact_orbit, "
@@ -85,7 +87,7 @@ constexpr const char* kAttractorsArgsDoc =
     "ones)), mean_velocity (over the starts that did not "
     "hit the work bound), event_limit_starts.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL.\n\n";
+    "rule). Runs without the GIL; Ctrl-C interrupts it after the starts being simulated.\n\n";
 
 }  // namespace
 

@@ -7,9 +7,13 @@
 
 #include <pybind11/pybind11.h>
 
+#include <chrono>
+#include <exception>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "capsubot/attractors.hpp"
@@ -62,13 +66,19 @@ inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
 
+/// Refuses an empty list of Fourier coefficients `terms` (argument `name`, coefficients
+/// symbol_1..symbol_K), as the command line refuses an empty --sin or --cos; absent is fine.
+void RequireTerms(const char* name, const char* symbol,
+                  const std::optional<std::vector<double>>& terms);
+
 /// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
 /// options.n_psi; throws std::invalid_argument naming the argument (the library checks the
 /// sizes).
 void ParseStarts(const char* name, const std::string& text, FromRestOptions& options);
 
 /// How the module checks a gait from rest, as the command line's --from-rest-starts and
-/// --threads: the full grid `starts` (argument from_rest_starts), `threads` worker threads.
+/// --threads: the full grid `starts` (argument from_rest_starts), `threads` worker threads
+/// (lowered to the command line's cap, CapThreads of limits.hpp).
 FromRestOptions FromRestCheck(const std::string& starts, int threads);
 
 /// The default grid of the check from rest, as the command line's --from-rest-starts.
@@ -81,8 +91,49 @@ inline constexpr const char* kDefaultReachStarts = "4x4";
 inline constexpr const char* kFromRestArgsDoc =
     "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"
     "            (docs/model.md section 12; key from_rest)\n"
-    "    threads worker threads of the simulated starts (0: all cores); the result does not\n"
-    "            depend on it\n";
+    "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
+    "            are lowered to that); the result does not depend on it\n";
+
+/// Thrown by SignalCheck when a Python signal handler raised (Ctrl-C: KeyboardInterrupt). The
+/// Python error stays set; RunWithoutGil raises it once the library call has unwound.
+struct Interrupted : std::exception {
+  const char* what() const noexcept override { return "interrupted by a Python signal handler"; }
+};
+
+/// The Python signal check of a long library call that runs without the GIL, called from its
+/// progress callbacks or observers. On the thread that called the module (Python runs signal
+/// handlers on the main thread only) and at most every kInterval, it takes the GIL and runs the
+/// pending handlers; it throws Interrupted when one raised. Elsewhere, and in between, it costs
+/// a comparison (a clock read every kStride calls).
+class SignalCheck {
+ public:
+  static constexpr std::chrono::milliseconds kInterval{50};
+  static constexpr int kStride = 64;
+
+  void operator()() {
+    if (++calls_ % kStride == 0 || calls_ == 1) Check();
+  }
+  /// Checks now (still at most every kInterval): where a call is rare (once per start).
+  void Check();
+
+ private:
+  const std::thread::id caller_ = std::this_thread::get_id();
+  std::chrono::steady_clock::time_point next_ = std::chrono::steady_clock::now();
+  unsigned calls_ = 0;
+};
+
+/// Runs `work(check)` without the GIL, `check` a SignalCheck of this call; an Interrupted it
+/// throws becomes the Python error again (KeyboardInterrupt), with the GIL taken back.
+template <typename Work>
+auto RunWithoutGil(Work&& work) {
+  SignalCheck check;
+  try {
+    py::gil_scoped_release release;
+    return std::forward<Work>(work)(check);
+  } catch (const Interrupted&) {
+    throw py::error_already_set();
+  }
+}
 
 /// A JSON value as Python objects: objects -> dict, arrays -> list, numbers -> int or float
 /// (NaN and infinities, which JSON writes as null, -> None), strings -> str, booleans -> bool,

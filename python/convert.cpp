@@ -10,9 +10,22 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 
 namespace capsubot::python {
+void RequireTerms(const char* name, const char* symbol,
+                  const std::optional<std::vector<double>>& terms) {
+  if (terms && terms->empty()) {
+    throw std::invalid_argument(fmt::format(
+        "{} = [] is invalid: expected the coefficients {}_1..{}_K, 1 <= K <= {} (an empty "
+        "series is no force)",
+        name, symbol, symbol, kMaxHarmonics));
+  }
+}
+
 Forcing ForcingArgs::Build(bool need_phase) const {
+  RequireTerms("sin", "b", sin);
+  RequireTerms("cos", "a", cos);
   if (sin) {
     if (A) {
       throw std::invalid_argument(
@@ -48,9 +61,18 @@ void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) 
 FromRestOptions FromRestCheck(const std::string& starts, int threads) {
   FromRestOptions o;
   ParseStarts("from_rest_starts", starts, o);
-  o.attractor.threads = threads;
+  o.attractor.threads = CapThreads(threads);
   o.Validate();
   return o;
+}
+
+void SignalCheck::Check() {
+  if (std::this_thread::get_id() != caller_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_) return;
+  next_ = now + kInterval;
+  py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() != 0) throw Interrupted();
 }
 
 py::object ToPython(const nlohmann::json& value) {

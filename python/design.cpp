@@ -3,8 +3,10 @@
 
 #include "capsubot/design.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,12 +15,22 @@
 
 #include "bindings.hpp"
 #include "capsubot/design_from_rest.hpp"
+#include "capsubot/limits.hpp"
 #include "json/design_json.hpp"
 
 namespace capsubot::python {
 namespace {
 
 using Range = std::pair<double, double>;
+
+// As the command line's ranges MIN:MAX: a range has MIN < MAX (one frequency is `frequency`).
+void RequireRange(const char* name, const std::optional<Range>& range) {
+  if (range && !(range->first < range->second)) {
+    throw std::invalid_argument(fmt::format(
+        "{} = ({}, {}) is invalid: expected (MIN, MAX) with MIN < MAX", name, range->first,
+        range->second));
+  }
+}
 
 // One of two alternatives must be given, not both (names as the arguments).
 void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
@@ -48,6 +60,10 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
         "force_sin)");
   }
   RequireOne(frequency.has_value(), frequency_range.has_value(), "frequency", "frequency_range");
+  RequireTerms("force_sin", "b", force_sin);
+  RequireTerms("force_cos", "a", force_cos);
+  RequireRange("frequency_range", frequency_range);
+  RequireRange("m2_range", m2_range);
   DesignInput in;
   in.m1 = m1;
   in.L = L;
@@ -73,7 +89,7 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   in.Validate();
   DesignFromRestOptions rest;
   ParseStarts("reach_starts", reach_starts, rest.search);
-  rest.search.attractor.threads = threads;
+  rest.search.attractor.threads = CapThreads(threads);
   const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
   rest.check.n_x = check.n_x;  // the grid and threads; the record stays long
   rest.check.n_psi = check.n_psi;
@@ -84,11 +100,12 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   rest.Validate();
   DesignResult r;
   DesignFromRestResult best;
-  {
-    py::gil_scoped_release release;
-    r = Design(in);
+  RunWithoutGil([&](SignalCheck& check) {
+    // Design tells its robots on this thread: where Ctrl-C is seen. The from-rest search stops
+    // at its own time limit (reach_seconds).
+    r = Design(in, [&check](std::int64_t, std::int64_t) { check.Check(); });
     if (from_rest) best = DesignFromRest(in, rest);
-  }
+  });
   nlohmann::json j = json::DesignJson(r);
   if (from_rest) j["from_rest_best"] = json::FromRestBestJson(in, best);
   return py::dict(ToPython(j));
@@ -123,8 +140,8 @@ constexpr const char* kDesignDoc =
     "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
     "            search and of the local polish, per direction\n"
     "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
-    "    threads worker threads of the simulated starts (0: all cores); the result does not\n"
-    "            depend on it\n\n"
+    "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
+    "            are lowered to that); the result does not depend on it\n\n"
     "Returns a dict: status ('ok', 'motor_slides_shell', 'no_gait'), message, one_impact "
     "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
     "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
@@ -133,7 +150,7 @@ constexpr const char* kDesignDoc =
     "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
     "attractors}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL.";
+    "rule). Runs without the GIL; Ctrl-C interrupts the search of the one-impact gait.";
 
 }  // namespace
 
@@ -147,7 +164,8 @@ void BindDesign(py::module_& m) {
         py::arg("m2_range") = py::none(), py::arg("margin") = in.margin,
         py::arg("margin_stroke") = in.margin_stroke, py::arg("stick_margin") = in.stick_margin,
         py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points,
-        py::arg("from_rest") = false, py::arg("from_rest_starts") = kDefaultFromRestStarts,
+        py::arg("from_rest").noconvert() = false,
+        py::arg("from_rest_starts") = kDefaultFromRestStarts,
         py::arg("reach_starts") = kDefaultReachStarts,
         py::arg("reach_evaluations") = rest.global_evaluations,
         py::arg("reach_local_evaluations") = rest.local_evaluations,

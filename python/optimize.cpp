@@ -14,6 +14,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 #include "json/optimize_json.hpp"
 
 namespace capsubot::python {
@@ -38,7 +39,7 @@ ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   r.force_bound = a.search.force_bound;
   r.alpha = alpha;
   ParseStarts("reach_starts", a.reach_starts, r.search);
-  r.search.attractor.threads = a.threads;
+  r.search.attractor.threads = CapThreads(a.threads);
   r.check = FromRestCheck(a.from_rest_starts, a.threads);
   r.global_evaluations = a.reach_evaluations;
   r.local_evaluations = a.reach_local_evaluations;
@@ -243,7 +244,7 @@ void BindOptimize(py::module_& m) {
         py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("margin_stroke") = kRobustMarginStroke,
         py::arg("stick_margin") = kRobustStickMargin, py::arg("bound") = py::none(),
-        py::arg("rho_max") = py::none(), py::arg("stable") = false,
+        py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
         py::arg("max_time") = p2.max_time, py::arg("harmonics") = FourierOptions{}.harmonics,
         py::arg("global_algorithm") = p2.global_algorithm,
         py::arg("local_algorithm") = p2.local_algorithm,

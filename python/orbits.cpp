@@ -1,6 +1,7 @@
 // orbits: every one-impact orbit of a robot whose mass ratio is fixed (docs/model.md section 8),
 // as `capsubot orbits --json`.
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "json/solution_json.hpp"
 
@@ -21,12 +23,16 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
-  bool complete = true;
-  std::vector<Solution> found;
-  {
-    py::gil_scoped_release release;
-    found = FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations);
+  if (max_evaluations < 1 || max_evaluations > kMaxOrbitEvaluations) {
+    throw std::invalid_argument(
+        fmt::format("max_evaluations = {} is invalid: expected 1 <= max_evaluations <= {}",
+                    max_evaluations, kMaxOrbitEvaluations));
   }
+  bool complete = true;
+  const std::vector<Solution> found = RunWithoutGil([&](SignalCheck& check) {
+    return FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations,
+                           [&check] { check.Check(); });
+  });
   py::list all(ToPython(json::RobotOrbitsJson(found, complete)));
   if (!complete) {
     // Said as a warning, as the command line says it on stderr.
@@ -48,13 +54,13 @@ constexpr const char* kOrbitsDoc =
     "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
 
 constexpr const char* kOrbitsArgsDoc =
-    "    max_evaluations  work bound of the search (evaluations of the orbit equation), >= 1\n\n"
+    "    max_evaluations  work bound of the search (evaluations of the orbit equation), 1 to 1e9\n\n"
     "Returns a list of dicts sorted by phi0, each with the keys of solve(..., stability=True) "
     "and complete (False: the search hit its work bound and orbits may be missing; a "
     "RuntimeWarning then says so). phi0 is solved for: it is not an argument (a Fourier "
     "force's coefficients are those of phi0 = 0).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL.\n\n";
+    "rule). Runs without the GIL; Ctrl-C interrupts it.\n\n";
 
 }  // namespace
 

@@ -54,6 +54,7 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
   const Params params{T0, e, 0.0};
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   const PhaseState start = Start(x0, u0, v0, psi, from_rest);
+  RequirePhase("psi", start.psi);  // a start phase in radians, as phi0
   if (period && transient) {
     throw std::invalid_argument(
         "period and transient are exclusive: with the period given, Newton starts at the start "

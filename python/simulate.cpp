@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 #include "capsubot/orbit_start.hpp"
 #include "capsubot/simulator.hpp"
 #include "json/simulation_json.hpp"
@@ -35,20 +36,30 @@ struct StateColumns {
   }
 };
 
-// Collects what the command line writes to --events and --trajectory.
+// Thrown when the event table would pass kMaxTrajectoryRows rows (it is held in memory).
+struct TableFull {};
+
+// Collects what the command line writes to --events and --trajectory, and checks for Python
+// signals as the run goes (with the check of the call that runs it, Watch).
 class TableObserver : public SimObserver {
  public:
   TableObserver(bool events, bool samples) : events_(events), samples_(samples) {}
+  // The signal check of the run being observed; nullptr: none.
+  void Watch(SignalCheck* check) { check_ = check; }
   void OnEvent(const SimEvent& e) override {
+    Poll();
     if (!events_) return;
+    if (static_cast<std::int64_t>(kind.size()) >= kMaxTrajectoryRows) throw TableFull();
     kind.push_back(e.kind);
     after.Add(e.after);
     u_before.push_back(e.u_before);
     v_before.push_back(e.v_before);
   }
   void OnSample(const SimState& s) override {
+    Poll();
     if (samples_) samples.Add(s);
   }
+  void OnPeriods(std::int64_t) override { Poll(); }
 
   std::vector<EventKind> kind;
   StateColumns after;
@@ -56,7 +67,12 @@ class TableObserver : public SimObserver {
   StateColumns samples;
 
  private:
+  void Poll() {
+    if (check_ != nullptr) (*check_)();
+  }
+
   bool events_, samples_;
+  SignalCheck* check_ = nullptr;
 };
 
 py::array_t<double> Column(const std::vector<double>& values) {
@@ -148,19 +164,39 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
     sim.u0 = *u0;
     sim.v0 = *v0;
   }
-  if (samples_per_period < 1) {
+  if (samples_per_period < 1 || samples_per_period > kMaxSamplesPerPeriod) {
     throw std::invalid_argument(
-        fmt::format("samples_per_period = {} is invalid: expected at least 1", samples_per_period));
+        fmt::format("samples_per_period = {} is invalid: expected 1 <= samples_per_period <= {}",
+                    samples_per_period, kMaxSamplesPerPeriod));
   }
-  if (trajectory) sim.sample_step = kTau / static_cast<double>(samples_per_period);
+  if (max_events_per_period > kMaxEventsPerPeriod) {
+    throw std::invalid_argument(fmt::format(
+        "max_events_per_period = {} is invalid: expected 10 <= max_events_per_period <= {}",
+        max_events_per_period, kMaxEventsPerPeriod));
+  }
+  if (trajectory) {
+    // The samples cover the whole run, the transient too.
+    RequireTrajectoryRows(transient + periods, static_cast<double>(samples_per_period),
+                          "samples_per_period", "transient + periods");
+    sim.sample_step = kTau / static_cast<double>(samples_per_period);
+  }
   sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
   sim.Validate();
 
   TableObserver observer(events, trajectory);
   SimResult r;
-  {
-    py::gil_scoped_release release;
-    r = capsubot::Simulate(forcing, params, sim, events || trajectory ? &observer : nullptr);
+  try {
+    r = RunWithoutGil([&](SignalCheck& check) {
+      observer.Watch(&check);
+      const SimResult result = capsubot::Simulate(forcing, params, sim, &observer);
+      observer.Watch(nullptr);
+      return result;
+    });
+  } catch (const TableFull&) {
+    throw std::invalid_argument(fmt::format(
+        "events = True is invalid for this run: its event table passed {} rows, the most held in "
+        "memory: expected a shorter run (fewer periods)",
+        kMaxTrajectoryRows));
   }
   if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
   py::dict d(ToPython(json::SimulationJson(r, sim, orbit ? &*orbit : nullptr)));
@@ -192,10 +228,11 @@ constexpr const char* kSimulateStateDoc =
     "    chatter_velocity  an impact slower than this [omega L], with the inner body pushed\n"
     "            into the wall, ends a chattering sequence: the body then rests on the wall\n"
     "    max_events_per_period  work bound: the run stops (status 'event_limit') after this\n"
-    "            many events per period, >= 10\n"
+    "            many events per period, 10 to 1e9\n"
     "    events  also return every event (key 'event_table')\n"
     "    trajectory  also return the state sampled on a grid of phases (key 'trajectory')\n"
-    "    samples_per_period  samples per forcing period of the trajectory, >= 1\n\n"
+    "    samples_per_period  samples per forcing period of the trajectory, 1 to 1e6, with at\n"
+    "            most 1e7 samples over transient + periods\n\n"
     "Returns a dict: status ('ok', 'impact_limit', 'event_limit'), message, alpha, the final "
     "state phi (rad), x (L), u, v (omega L), y (L), mode, displacement (y(end) - y0, L), "
     "v_mean (omega L), the counts impacts_right, impacts_left, stops, breakaways, sticks, "
@@ -206,10 +243,10 @@ constexpr const char* kSimulateStateDoc =
     "'event_table', a dict of NumPy arrays phase, kind, x, u, v, y (state right after the "
     "event), u_before, v_before, mode (the columns of --events). With trajectory: "
     "'trajectory', a dict of arrays phi, x, u, v, y, mode. The tables are kept in memory: "
-    "mind long runs.\n\n"
+    "at most 1e7 rows each.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule), RuntimeError when the state stops being finite (status 'non_finite': the command "
-    "line then exits with status 1).\n\n";
+    "line then exits with status 1). Runs without the GIL; Ctrl-C interrupts it.\n\n";
 
 }  // namespace
 
@@ -221,11 +258,11 @@ void BindSimulate(py::module_& m) {
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
         py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
-        py::arg("y0") = defaults.y0, py::arg("from_orbit") = false,
+        py::arg("y0") = defaults.y0, py::arg("from_orbit").noconvert() = false,
         py::arg("periods") = defaults.periods, py::arg("transient") = defaults.transient,
         py::arg("chatter_velocity") = defaults.chatter_velocity,
         py::arg("max_events_per_period") = defaults.max_events_per_period,
-        py::arg("events") = false, py::arg("trajectory") = false,
+        py::arg("events").noconvert() = false, py::arg("trajectory").noconvert() = false,
         py::arg("samples_per_period") = 100);
 }
 

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "capsubot/gait_from_rest.hpp"
+#include "capsubot/limits.hpp"
 #include "json/solution_json.hpp"
 
 namespace capsubot::python {
@@ -53,12 +54,13 @@ constexpr const char* kTrajectoryDoc =
     "Arguments (keyword only, named as the options of `capsubot solve`):\n";
 
 constexpr const char* kTrajectoryReturnsDoc =
-    "    samples number of phases, >= 2\n\n"
+    "    samples number of phases, 2 <= samples <= 10000000 (as --samples)\n\n"
     "Returns a dict of NumPy arrays of length samples: phi (rad), x (relative position of "
     "the inner body, L), dx (relative velocity dx/dphi, omega L), v (capsule velocity, omega "
     "L).\n\n"
     "Raises ValueError for bad input, or when no one-impact orbit exists for this force, T0 "
-    "and e (then the message names the orbit's status).\n\n";
+    "and e (then the message names the orbit's status). Runs without the GIL; Ctrl-C "
+    "interrupts it.\n\n";
 
 py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
                std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
@@ -83,9 +85,9 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
   const Params params{T0, e, 0.0};
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  if (samples < 2) {
-    throw std::invalid_argument(
-        fmt::format("samples = {} is invalid: expected at least 2", samples));
+  if (samples < 2 || samples > kMaxTrajectoryRows) {
+    throw std::invalid_argument(fmt::format(
+        "samples = {} is invalid: expected 2 <= samples <= {}", samples, kMaxTrajectoryRows));
   }
   const Orbit o = ComputeOrbit(forcing, params);
   if (!o.ok()) {
@@ -98,13 +100,16 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
   double* x_out = x.mutable_data();
   double* dx_out = dx.mutable_data();
   double* v_out = v.mutable_data();
-  for (long i = 0; i < samples; ++i) {
-    // phi = 0 is just after the impact, phi = tau just before the next one.
-    phi_out[i] = kTau * static_cast<double>(i) / static_cast<double>(samples - 1);
-    x_out[i] = o.x(phi_out[i]);
-    dx_out[i] = o.dx(phi_out[i]);
-    v_out[i] = o.v(phi_out[i]);
-  }
+  RunWithoutGil([&](SignalCheck& check) {
+    for (long i = 0; i < samples; ++i) {
+      // phi = 0 is just after the impact, phi = tau just before the next one.
+      phi_out[i] = kTau * static_cast<double>(i) / static_cast<double>(samples - 1);
+      x_out[i] = o.x(phi_out[i]);
+      dx_out[i] = o.dx(phi_out[i]);
+      v_out[i] = o.v(phi_out[i]);
+      check();
+    }
+  });
   py::dict d;
   d["phi"] = phi;
   d["x"] = x;
@@ -123,7 +128,8 @@ void BindSolve(py::module_& m) {
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false,
+        py::arg("stick_margin") = Params{}.stick_margin,
+        py::arg("stability").noconvert() = false,
         py::arg("from_rest_starts") = kDefaultFromRestStarts,
         py::arg("threads") = AttractorOptions{}.threads);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +

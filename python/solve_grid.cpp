@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "capsubot/limits.hpp"
 #include "capsubot/stability.hpp"
 #include "capsubot/validity.hpp"
 
@@ -230,6 +231,7 @@ class GridSolver {
   std::exception_ptr error_;
 };
 
+// The threads asked for (None: all cores), lowered to the command line's cap (limits.hpp).
 int ThreadCount(std::optional<int> threads) {
   if (!threads) return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (*threads < 1 || *threads > kMaxThreads) {
@@ -237,7 +239,38 @@ int ThreadCount(std::optional<int> threads) {
         fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (None: all cores)",
                     *threads, kMaxThreads));
   }
-  return *threads;
+  return CapThreads(*threads);
+}
+
+// Input `name` as an array of doubles. Only what NumPy holds as integers or floating-point
+// numbers is taken: None (which NumPy turns into NaN), booleans, strings, complex numbers and
+// objects raise TypeError instead of being converted, and so does a masked array, whose mask
+// the computation would ignore.
+Array NumbersArgument(const char* name, const py::object& value) {
+  const py::module_ np = py::module_::import("numpy");
+  const auto refuse = [&](const char* why) {
+    return py::type_error(fmt::format("{} must be a number or an array of numbers: {} (got {})",
+                                      name, why,
+                                      py::str(py::type::of(value)).cast<std::string>()));
+  };
+  if (value.is_none()) throw refuse("None is no number");
+  if (py::isinstance(value, np.attr("ma").attr("MaskedArray"))) {
+    throw refuse("a masked array's mask would be ignored (fill or compress it first)");
+  }
+  py::array numbers;
+  try {
+    numbers = np.attr("asarray")(value);
+  } catch (const py::error_already_set&) {
+    throw refuse("NumPy cannot read it as an array");
+  }
+  const char kind = numbers.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f') {
+    throw refuse(kind == 'b'   ? "booleans are not numbers here"
+                 : kind == 'c' ? "complex numbers are not real numbers"
+                 : kind == 'U' || kind == 'S' ? "strings are not converted"
+                                              : "its elements are not all numbers");
+  }
+  return Array::ensure(numbers);
 }
 
 // Runs the blocks on `threads` threads, the calling one included; the calling thread
@@ -273,14 +306,7 @@ py::dict SolveGrid(const py::object& A, const py::object& c, const py::object& p
   const std::array<const py::object*, kInputs> objects = {
       &A, &c, &phi0, &T0, &e, &margin, &margin_stroke, &stick_margin};
   std::array<Array, kInputs> in;
-  for (int k = 0; k < kInputs; ++k) {
-    in[k] = Array::ensure(*objects[k]);
-    if (!in[k]) {
-      throw py::type_error(fmt::format("{} must be a number or an array of numbers (got {})",
-                                       kInputNames[k],
-                                       py::str(py::type::of(*objects[k])).cast<std::string>()));
-    }
-  }
+  for (int k = 0; k < kInputs; ++k) in[k] = NumbersArgument(kInputNames[k], *objects[k]);
   const Layout layout(in);
 
   py::dict d;
@@ -327,7 +353,8 @@ constexpr const char* kSolveGridDoc =
 
 constexpr const char* kSolveGridOptionsDoc =
     "    stability  also spectral_radius and stable (docs/model.md section 8)\n"
-    "    threads number of threads, 1..1024; None: all cores\n\n"
+    "    threads number of threads, 1..1024 (more than 4 per core are lowered to that); None:\n"
+    "            all cores\n\n"
     "Returns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "
     "(rad), alpha, u (omega L), v_plus (omega L), I (L), v_mean (omega L), x_min, x_max (L), "
     "valid (bool), violations (uint32 bit mask: bit i set when condition CONDITIONS[i] is "
@@ -335,7 +362,8 @@ constexpr const char* kSolveGridOptionsDoc =
     "not exist.\n\n"
     "Raises ValueError for inputs that cannot be broadcast or a point the library rejects "
     "(the message gives its index and the library's rule), TypeError for inputs that are not "
-    "numbers.\n\n";
+    "numbers: None, booleans, strings, complex numbers, objects, and masked arrays (their mask "
+    "would be ignored).\n\n";
 
 }  // namespace
 
@@ -350,8 +378,8 @@ void BindSolveGrid(py::module_& m) {
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
         py::arg("margin") = Params{}.margin, py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability") = false,
-        py::arg("threads") = py::none());
+        py::arg("stick_margin") = Params{}.stick_margin,
+        py::arg("stability").noconvert() = false, py::arg("threads") = py::none());
 }
 
 }  // namespace capsubot::python

@@ -24,6 +24,17 @@
 
 namespace capsubot {
 
+/// Default work bound of the orbit search of one robot in a design (DesignInput::
+/// orbit_evaluations): 32 times what the robots of the examples need. A robot whose friction
+/// bound dwarfs its motor force (T0 = mu g/(omega^2 L) a million times max |F|: a huge mu or
+/// g) leaves the search's rounding allowance, which grows with T0, wider than its orbits, and
+/// its search would refine the whole circle to the bound.
+inline constexpr std::int64_t kDesignOrbitEvaluations = 32768;
+
+/// A design stops once this many robots' orbit searches have hit their work bound: the rest of
+/// its ranges is not evaluated (DesignResult::complete false, the fastest gait met is kept).
+inline constexpr int kDesignMaxUnresolvedRobots = 8;
+
 /// The motor force in newtons, as a function of the motor phase s = omega t + const:
 /// F_N(s) = bias + amplitude sin(s), or with Fourier coefficients
 /// F_N(s) = bias + sum_k (cos[k-1] cos(k s) + sin[k-1] sin(k s)). The phase at the impact is
@@ -71,6 +82,10 @@ struct DesignInput {
 
   /// Samples of each variable's scan (log-spaced) before the golden-section refinement, >= 3.
   int scan_points = 64;
+  /// Work bound of each robot's orbit search (FindRobotOrbits' max_evaluations),
+  /// 1 <= orbit_evaluations <= kMaxOrbitEvaluations. It sets the cost of a design, not its
+  /// answer, except where a search hits it (Gait::complete false).
+  std::int64_t orbit_evaluations = kDesignOrbitEvaluations;
 
   /// m2_min and m2_max with their defaults applied.
   double M2Min() const;
@@ -164,6 +179,9 @@ struct DesignResult {
   Gait one_impact;
   std::int64_t robots = 0;  ///< robots (m2, f) evaluated
   bool complete = true;     ///< false if an orbit search hit its work bound somewhere
+  /// Robots whose orbit search hit its work bound (DesignInput::orbit_evaluations); at
+  /// kDesignMaxUnresolvedRobots the design stops there and says so in `message`.
+  std::int64_t unresolved_robots = 0;
 };
 
 /// Reports the robots evaluated so far (done of total, total an upper bound); must be cheap.
@@ -173,7 +191,9 @@ using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)
 /// a scan of scan_points log-spaced values of each free variable, then a golden-section
 /// refinement around the best one (to 1e-9 relative, at most 100 steps); with a frequency range
 /// the m2 search runs for each frequency tried. Work is bounded by
-/// (scan_points + 100)^2 robots. Throws std::invalid_argument for invalid input.
+/// (scan_points + 100)^2 robots of at most orbit_evaluations evaluations each, and it stops
+/// after kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws
+/// std::invalid_argument for invalid input.
 DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});
 
 /// The gait the design finds for a robot whose inner mass is m2 [kg], or is searched over the

@@ -16,6 +16,23 @@ namespace capsubot {
 inline constexpr double kTau = 6.283185307179586476925286766559;  ///< the period 2*pi
 inline constexpr int kMaxHarmonics = 16;  ///< largest K a Forcing holds (no allocation)
 
+/// Largest |phase| [rad] an input phase may have (the motor phase phi0 of a force, a range or
+/// grid of phi0). A double phase is an angle only while its spacing is a small part of a turn:
+/// 1.2e-10 rad at 1e6 rad, a whole turn beyond 3.5e16 rad, where 1e16 or 1e300 name no angle
+/// at all. Larger phases are refused (RequirePhase), not wrapped.
+inline constexpr double kMaxPhase = 1e6;
+
+/// Throws std::invalid_argument unless `phi` is finite ("phi0 = nan is invalid: expected a
+/// finite number") with |phi| <= kMaxPhase ("phi0 = 1e+300 is invalid: expected a phase
+/// |phi0| <= 1e+06 rad (...)"), naming `name`.
+void RequirePhase(const char* name, double phi);
+
+/// The input phase `phi` (RequirePhase, naming `name`) reduced modulo 2 pi into [-pi, pi]:
+/// unchanged when |phi| <= pi, otherwise phi - n 2 pi for the nearest whole n, with 2 pi
+/// carried to 150 bits (three parts, Cody and Waite), so that the result is the exact
+/// remainder of the double phi to within 2e-15 rad, not of the rounded 2 pi.
+double ReduceInputPhase(const char* name, double phi);
+
 /// Phases found in an interval, in increasing order (a fixed-size list: no allocation).
 struct PhaseList {
   std::array<double, 2 * kMaxHarmonics + 2> phi{};  ///< the phases, phi[0..n)
@@ -142,10 +159,14 @@ class Forcing {
   static Forcing Harmonic(double A, double c, double phi0);
   /// F = c + sum_k (a[k-1] cos(k (phi+phi0)) + b[k-1] sin(k (phi+phi0))); a and b have the
   /// same length K <= kMaxHarmonics. Throws std::invalid_argument naming the bad coefficient.
+  /// phi0 is an input phase: |phi0| <= kMaxPhase, kept as phi0() reduced into [-pi, pi]
+  /// (ReduceInputPhase), so that every phase added to it later keeps its digits.
   static Forcing Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
                          double phi0);
 
-  /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)).
+  /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)). phi0 is kept
+  /// as given (the simulator's shifts phi0 + psi stay within two turns and keep their bits);
+  /// |phi0| > kMaxPhase throws std::invalid_argument (RequirePhase).
   Forcing WithPhase(double phi0) const;
   /// The same force F(phi) as a series in the phase seen from the impact: phi0 = 0, base
   /// coefficients = the rotated ones, so F, Pi, MaxAbs, ... give the same numbers (cheap: O(K)).

@@ -6,6 +6,7 @@
 // orbit of section 4 for the force with impact phase phi0.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "capsubot/validity.hpp"
@@ -20,9 +21,15 @@ inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
 /// alpha(phi0) = alpha (docs/model.md section 8), each solved and checked (the forcing's own phi0
 /// is ignored). If the work bound max_evaluations (>= 1) stops the search before every part of the
 /// circle is decided, the list may miss orbits: *complete (if given) is set to false then, true
-/// otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations.
+/// otherwise. Throws std::invalid_argument for bad params, alpha or max_evaluations. `poll`
+/// (optional) is called every kRobotOrbitsPollEvaluations evaluations: what it throws stops the
+/// search and is rethrown (a caller's cancellation).
 std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
                                       bool* complete = nullptr,
-                                      std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations);
+                                      std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations,
+                                      const std::function<void()>& poll = {});
+
+/// Evaluations between two calls of FindRobotOrbits' `poll` (about a millisecond).
+inline constexpr std::int64_t kRobotOrbitsPollEvaluations = 4096;
 
 }  // namespace capsubot

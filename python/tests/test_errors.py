@@ -3,6 +3,7 @@ parameter, its value and the rule; nothing crashes the interpreter."""
 
 import math
 
+import numpy as np
 import pytest
 
 import capsubot
@@ -65,7 +66,7 @@ def test_wrong_types_raise_type_error():
 
 def test_trajectory_needs_samples_and_an_orbit():
     assert message(capsubot.trajectory, **HARMONIC, samples=1) == (
-        "samples = 1 is invalid: expected at least 2")
+        "samples = 1 is invalid: expected 2 <= samples <= 10000000")
     assert message(capsubot.trajectory, A=0.05, c=-0.02, phi0=0.0) == (
         "no one-impact orbit exists for this force, T0 and e (non_positive_mean_force): no "
         "trajectory")
@@ -83,7 +84,7 @@ def test_simulate_messages():
         "(non_positive_mean_force)")
     state = dict(alpha=0.3, x0=0.5, u0=0.0, v0=0.0)
     assert message(sim, **HARMONIC, **state, samples_per_period=0, trajectory=True) == (
-        "samples_per_period = 0 is invalid: expected at least 1")
+        "samples_per_period = 0 is invalid: expected 1 <= samples_per_period <= 1000000")
     assert message(sim, **HARMONIC, **{**state, "alpha": 1.0}) == (
         "mass ratio alpha = 1 is invalid: expected 0 < alpha < 1")
     assert message(sim, **HARMONIC, **{**state, "x0": math.nan}) == (
@@ -144,4 +145,85 @@ def test_orbits_messages():
     assert message(capsubot.orbits, alpha=1.5, A=0.05, c=0.02) == (
         "mass ratio alpha = 1.5 is invalid: expected 0 < alpha < 1")
     assert message(capsubot.orbits, alpha=0.3, A=0.05, c=0.02, max_evaluations=0) == (
-        "max_evaluations = 0 is invalid: expected >= 1")
+        "max_evaluations = 0 is invalid: expected 1 <= max_evaluations <= 1000000000")
+
+
+# What NumPy or pybind11 would convert silently is refused: one row per input, with the
+# exception and a part of its message.
+GRID = dict(A=0.05, c=0.02, phi0=-2.842, T0=0.1, e=0.5)
+REFUSED = [
+    ("grid_none", capsubot.solve_grid, {**GRID, "A": None}, TypeError,
+     "A must be a number or an array of numbers: None is no number (got <class 'NoneType'>)"),
+    ("grid_string_array", capsubot.solve_grid, {**GRID, "c": np.array(["0.02", "0.03"])},
+     TypeError, "c must be a number or an array of numbers: strings are not converted"),
+    ("grid_string", capsubot.solve_grid, {**GRID, "T0": "0.1"}, TypeError,
+     "T0 must be a number or an array of numbers: strings are not converted"),
+    ("grid_complex", capsubot.solve_grid, {**GRID, "A": np.array([0.05 + 0.0j])}, TypeError,
+     "A must be a number or an array of numbers: complex numbers are not real numbers"),
+    ("grid_objects", capsubot.solve_grid, {**GRID, "phi0": [0.0, None]}, TypeError,
+     "phi0 must be a number or an array of numbers: its elements are not all numbers"),
+    ("grid_booleans", capsubot.solve_grid, {**GRID, "e": np.array([True, False])}, TypeError,
+     "e must be a number or an array of numbers: booleans are not numbers here"),
+    ("grid_masked", capsubot.solve_grid,
+     {**GRID, "A": np.ma.masked_array([0.05, 0.06], mask=[False, True])}, TypeError,
+     "A must be a number or an array of numbers: a masked array's mask would be ignored"),
+    ("grid_stability_int", capsubot.solve_grid, {**GRID, "stability": 2}, TypeError, ""),
+    ("solve_stability_int", capsubot.solve, {**HARMONIC, "stability": 2}, TypeError, ""),
+    ("simulate_trajectory_int", capsubot.simulate,
+     {**HARMONIC, "from_orbit": True, "trajectory": 1}, TypeError, ""),
+    ("optimize_stable_int", capsubot.optimize,
+     {"problem": "phase", "A": 0.2, "c": 0.03, "stable": 1}, TypeError, ""),
+    ("design_from_rest_int", capsubot.design,
+     {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_amplitude": 0.5, "force_bias": 0.1,
+      "frequency": 20.0, "from_rest": 1}, TypeError, ""),
+    ("solve_empty_sin", capsubot.solve, {"c": 0.02, "sin": []}, ValueError,
+     "sin = [] is invalid: expected the coefficients b_1..b_K, 1 <= K <= 16 (an empty series "
+     "is no force)"),
+    ("solve_empty_cos", capsubot.solve, {"c": 0.02, "cos": [], "sin": [0.1]}, ValueError,
+     "cos = [] is invalid: expected the coefficients a_1..a_K, 1 <= K <= 16"),
+    ("design_empty_force_sin", capsubot.design,
+     {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_sin": [], "force_bias": 0.1,
+      "frequency": 20.0}, ValueError, "force_sin = [] is invalid: expected the coefficients"),
+    ("design_empty_frequency_range", capsubot.design,
+     {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_amplitude": 0.5, "force_bias": 0.1,
+      "frequency_range": (10, 10)}, ValueError,
+     "frequency_range = (10, 10) is invalid: expected (MIN, MAX) with MIN < MAX"),
+    ("design_inverted_m2_range", capsubot.design,
+     {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_amplitude": 0.5, "force_bias": 0.1,
+      "frequency": 20.0, "m2_range": (0.3, 0.1)}, ValueError,
+     "m2_range = (0.3, 0.1) is invalid: expected (MIN, MAX) with MIN < MAX"),
+]
+
+
+@pytest.mark.parametrize("fn, kwargs, error, text", [r[1:] for r in REFUSED],
+                         ids=[r[0] for r in REFUSED])
+def test_refused_input(fn, kwargs, error, text):
+    with pytest.raises(error) as err:
+        fn(**kwargs)
+    assert text in str(err.value)
+
+
+# Phases are radians: refused beyond 1e6 rad (a double there carries no angle once added to
+# another phase), reduced exactly modulo 2 pi below.
+HUGE_PHASE = "is invalid: expected a phase |{}| <= 1e+06 rad (phases are in radians"
+
+
+@pytest.mark.parametrize("fn, kwargs, start", [
+    (capsubot.solve, {**HARMONIC, "phi0": 1e300}, "phi0 = 1e+300 "),
+    (capsubot.trajectory, {**HARMONIC, "phi0": -1e16}, "phi0 = -1e+16 "),
+    (capsubot.simulate, {**HARMONIC, "phi0": 1e300, "alpha": 0.3, "x0": 0.5, "u0": 0.0,
+                         "v0": 0.0}, "phi0 = 1e+300 "),
+    (capsubot.attractors, {**HARMONIC, "phi0": 1e16, "alpha": 0.28, "starts": "1x1"},
+     "phi0 = 1e+16 "),
+    (capsubot.solve_grid, {**GRID, "phi0": np.array([0.0, 1e300])}, "at index (1,): phi0 = 1e+300 "),
+    (capsubot.periodic, {**HARMONIC, "alpha": 0.28, "from_rest": (0.5, 1e300)}, "psi = 1e+300 "),
+], ids=["solve", "trajectory", "simulate", "attractors", "solve_grid", "periodic"])
+def test_huge_phase_is_refused_naming_radians(fn, kwargs, start):
+    text = message(fn, **kwargs)
+    name = start.split()[-3] if start.startswith("at index") else start.split()[0]
+    assert text.startswith(start) and HUGE_PHASE.format(name) in text, text
+
+
+def test_large_phase_is_its_exact_remainder():
+    # -2.9 + 10^5 turns as a double; its remainder from 300-bit arithmetic (mpmath).
+    assert capsubot.solve(A=0.5, c=0.5, phi0=628315.6307179587)["phi0"] == -2.899999999974789

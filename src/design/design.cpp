@@ -18,16 +18,28 @@ namespace {
 // Resolution of the refinement in log(m2) and log(f): 1e-9 relative.
 constexpr double kLogTol = 1e-9;
 
-// Counts the robots evaluated and reports progress.
+// Counts the robots evaluated and reports progress; once kDesignMaxUnresolvedRobots orbit
+// searches have hit their work bound, the robots asked for next are not evaluated (status
+// kNotRun: no speed, and no reason that outranks one met).
 struct Tally {
   const DesignProgress& progress;
   std::int64_t total = 0;  // upper bound for progress reports
   std::int64_t robots = 0;
+  std::int64_t unresolved = 0;
   bool complete = true;
 
+  bool stopped() const { return unresolved >= kDesignMaxUnresolvedRobots; }
+
   Gait Evaluate(const DesignInput& in, double m2, double frequency) {
+    if (stopped()) {
+      Gait skipped;
+      skipped.m2_kg = m2;
+      skipped.frequency_hz = frequency;
+      return skipped;
+    }
     Gait g = EvaluateGait(in, m2, frequency);
     ++robots;
+    if (!g.complete) ++unresolved;
     complete = complete && g.complete;
     if (progress) progress(robots, total);
     return g;
@@ -150,11 +162,19 @@ DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
   }
   r.robots = tally.robots;
   r.complete = tally.complete;
+  r.unresolved_robots = tally.unresolved;
   const GaitStatus s = r.one_impact.status;
   r.status = s == GaitStatus::kOk                 ? DesignStatus::kOk
              : s == GaitStatus::kMotorSlidesShell ? DesignStatus::kMotorSlidesShell
                                                   : DesignStatus::kNoGait;
   r.message = Describe(in, r.one_impact);
+  if (tally.stopped()) {
+    r.message += fmt::format(
+        "; the search stopped after {} robots: the orbit searches of {} of them hit their work "
+        "bound of {} evaluations (orbits may be missing there), so the rest of the range was "
+        "not evaluated",
+        tally.robots, tally.unresolved, in.orbit_evaluations);
+  }
   return r;
 }
 

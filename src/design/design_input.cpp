@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "capsubot/design.hpp"
+#include "capsubot/limits.hpp"
 
 namespace capsubot {
 namespace {
@@ -82,6 +83,9 @@ void DesignInput::Validate() const {
   Require(scan_points >= 3 && scan_points <= kMaxScanPoints,
           fmt::format("scan_points = {} is invalid: expected 3 <= scan_points <= {}", scan_points,
                       kMaxScanPoints));
+  Require(orbit_evaluations >= 1 && orbit_evaluations <= kMaxOrbitEvaluations,
+          fmt::format("orbit_evaluations = {} is invalid: expected 1 <= orbit_evaluations <= {}",
+                      orbit_evaluations, kMaxOrbitEvaluations));
   // The dimensionless model (MapToModel) at the corners of the searched ranges must exist in
   // double precision: extreme SI inputs (f = 1e300 Hz, m2 = 1e300 kg) would round T0, the
   // force or alpha to 0, 1 or infinity.

@@ -63,7 +63,7 @@ Gait EvaluateGait(const DesignInput& input, double m2, double frequency) {
     return gait;
   }
   const std::vector<Solution> orbits =
-      FindRobotOrbits(m.forcing, m.params, m.alpha, &gait.complete);
+      FindRobotOrbits(m.forcing, m.params, m.alpha, &gait.complete, input.orbit_evaluations);
   gait.orbits = static_cast<int>(orbits.size());
   gait.status = orbits.empty() ? GaitStatus::kNoOrbit : GaitStatus::kNotRobust;
   for (const Solution& s : orbits) {

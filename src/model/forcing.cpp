@@ -18,7 +18,40 @@ void RequireFinite(const char* name, double value) {
   }
 }
 
+// 2 pi = kTwoPi1 + kTwoPi2 + kTwoPi3 + kTwoPi3t: the first three have 33 significant bits each
+// (fdlibm's split of pi/2, times 4), so n kTwoPi1, n kTwoPi2 and n kTwoPi3 are exact for whole
+// |n| < 2^20; kTwoPi3t is the rest, rounded.
+constexpr double kTwoPi1 = 0x1.921fb544p+2;
+constexpr double kTwoPi2 = 0x1.0b4611a6p-32;
+constexpr double kTwoPi3 = 0x1.3198a2ep-67;
+constexpr double kTwoPi3t = 0x1.b839a252049c1p-102;
+constexpr double kPi = 0.5 * kTau;  // pi rounded down
+
 }  // namespace
+
+void RequirePhase(const char* name, double phi) {
+  RequireFinite(name, phi);
+  if (std::abs(phi) > kMaxPhase) {
+    throw std::invalid_argument(fmt::format(
+        "{} = {} is invalid: expected a phase |{}| <= {:g} rad (phases are in radians; a larger "
+        "one carries no angle to the digits of a double)",
+        name, phi, name, kMaxPhase));
+  }
+}
+
+double ReduceInputPhase(const char* name, double phi) {
+  RequirePhase(name, phi);
+  if (std::abs(phi) <= kPi) return phi;
+  // |n| <= kMaxPhase/(2 pi) < 2^18. phi and n kTwoPi1 are whole multiples of 2^-51 and differ
+  // by less than 4, so their difference is exact; each later step rounds once, at the scale
+  // of the result.
+  const double n = std::nearbyint(phi / kTau);
+  double r = phi - n * kTwoPi1;
+  r -= n * kTwoPi2;
+  r -= n * kTwoPi3;
+  r -= n * kTwoPi3t;
+  return r;
+}
 
 Forcing Forcing::Harmonic(double A, double c, double phi0) {
   RequireFinite("A", A);
@@ -31,7 +64,7 @@ Forcing Forcing::Harmonic(double A, double c, double phi0) {
 Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
                          double phi0) {
   RequireFinite("c", c);
-  RequireFinite("phi0", phi0);
+  const double phase = ReduceInputPhase("phi0", phi0);
   if (a.size() != b.size()) {
     throw std::invalid_argument(fmt::format(
         "Fourier coefficients: {} cosine and {} sine terms given: expected as many of each",
@@ -43,7 +76,7 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
   }
   Forcing f;
   f.c_ = c;
-  f.phi0_ = phi0;
+  f.phi0_ = phase;
   f.K_ = static_cast<int>(a.size());
   for (int k = 0; k < f.K_; ++k) {
     if (!std::isfinite(a[k])) RequireFinite(fmt::format("a_{}", k + 1).c_str(), a[k]);
@@ -57,6 +90,7 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
 }
 
 Forcing Forcing::WithPhase(double phi0) const {
+  if (std::abs(phi0) > kMaxPhase) RequirePhase("phi0", phi0);  // NaN passes, as before
   Forcing f = *this;
   f.phi0_ = phi0;
   f.Rotate();

@@ -53,7 +53,8 @@ struct PsiFunction {
 }  // namespace
 
 std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
-                                      bool* complete, std::int64_t max_evaluations) {
+                                      bool* complete, std::int64_t max_evaluations,
+                                      const std::function<void()>& poll) {
   params.Validate();
   if (!(alpha > 0.0 && alpha < 1.0)) {
     throw std::invalid_argument(
@@ -116,7 +117,7 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
       continue;
     }
     const double mid = 0.5 * (iv.lo + iv.hi), pmid = psi(mid);
-    ++evaluations;
+    if (++evaluations % kRobotOrbitsPollEvaluations == 0 && poll) poll();
     stack.push_back({mid, iv.hi, pmid, iv.phi});
     stack.push_back({iv.lo, mid, iv.plo, pmid});
   }

@@ -25,10 +25,14 @@ struct ParameterRule {
   GridDomain domain;
 };
 
+static_assert(kMaxPhase == 1e6, "the phi0 rule below names kMaxPhase");
 constexpr ParameterRule kParameters[] = {
     {SweepParameter::kA, "A", false, {0.0, false, kInf, false, "amplitudes A >= 0"}},
     {SweepParameter::kc, "c", false, {-kInf, false, kInf, false, ""}},
-    {SweepParameter::kphi0, "phi0", false, {-kInf, false, kInf, false, ""}},
+    {SweepParameter::kphi0,
+     "phi0",
+     false,
+     {-kMaxPhase, false, kMaxPhase, false, "phases |phi0| <= 1e6 rad (phases are in radians)"}},
     {SweepParameter::kT0, "T0", false, {0.0, true, kInf, false, "friction bounds T0 > 0"}},
     {SweepParameter::ke, "e", false, {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"}},
     {SweepParameter::kmargin,

@@ -216,7 +216,15 @@ std::vector<Case> Cases() {
        "--samples-per-period = 2e9 is invalid: expected an integer 1 <= n <= 1000000", none},
       {"SimulateTrajectoryRowsBound",
        kSim + " --periods 1e6 --samples-per-period 100 --trajectory t.csv", 2,
-       "expected at most 10000000 rows of --trajectory", none},
+       "--samples-per-period = 100 with --transient + --periods = 1000000 is invalid: expected "
+       "at most 10000000 rows of the trajectory",
+       none},
+      // The samples cover the transient too.
+      {"SimulateTrajectoryRowsCountTheTransient",
+       kSim + " --transient 1e6 --periods 1 --samples-per-period 100 --trajectory t.csv", 2,
+       "expected at most 10000000 rows of the trajectory (samples per period x periods + 1 = "
+       "100000101)",
+       none},
       {"SimulateEventBound", kSim + " --max-events-per-period 2e9", 2,
        "--max-events-per-period = 2e9 is invalid: expected an integer 10 <= n <= 1000000000", none},
       {"OrbitsEvaluationBound", kOrbits + " --max-evaluations 0", 2,
@@ -355,10 +363,37 @@ std::vector<Case> Cases() {
       // One convention for a missing value in tables: "-".
       {"MissingValuesAreDashes", "solve --A 0.2 --c 0.03 --phi0 0", 0, "", none, "", "",
        "alpha  = -   (m2/(m1+m2))", nullptr},
+      // Phases are radians: reduced modulo the true 2 pi up to 1e6 rad, refused beyond, where a
+      // double names no angle (the phase was lost when added).
+      {"SolveHugePhaseIsRefused", "solve --A 0.5 --c 0.5 --phi0 1e300", 2,
+       "phi0 = 1e+300 is invalid: expected a phase |phi0| <= 1e+06 rad (phases are in radians",
+       none},
+      {"AttractorsHugePhaseIsRefused",
+       "attractors --A 0.05 --c 0.02 --phi0 1e16 --T0 0.1 --alpha 0.28 --starts 1x1", 2,
+       "phi0 = 1e+16 is invalid: expected a phase |phi0| <= 1e+06 rad", none},
+      {"BifurcationHugePhaseRangeIsRefused",
+       "bifurcation " + kRobot + " --param phi0 --from 0 --to 1e300 --steps 3 -o o.csv", 2,
+       "phi0 = 1e+300 is invalid: expected a phase |phi0| <= 1e+06 rad", none},
+      {"SweepHugePhaseGridIsRefused", "sweep --grid phi0=0:1e300:3 --A 0.5 --c 0.5 -o o.csv", 2,
+       "--grid phi0=0:1e300:3 is invalid: expected phases |phi0| <= 1e6 rad (phases are in "
+       "radians)",
+       none},
+      {"PeriodicHugeStartPhaseIsRefused",
+       "periodic " + kRobot + " --from-rest 0.5,1e300", 2,
+       "psi = 1e+300 is invalid: expected a phase |psi| <= 1e+06 rad", none},
+      // -2.9 + 10^5 turns as a double: its exact remainder (300-bit arithmetic), not -2.9.
+      {"SolveLargePhaseIsReducedExactly", "solve --A 0.5 --c 0.5 --phi0 628315.6307179587 --json", 0,
+       "", none, "", "", "\"phi0\":-2.899999999974789"},
+      // A friction bound that dwarfs the motor: the design answers after a bounded number of
+      // robots (it refined every orbit search to its bound, a minute and more).
+      {"DesignHugeFrictionStopsAtItsWorkBound",
+       "design --m1 0.2 --L 0.02 --mu 1e6 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20",
+       0, "", none, "", "", "the search stopped after 8 robots"},
   };
 }
 
-constexpr int kCaseCount = 83;
+constexpr int kCaseCount = 91;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 

@@ -293,6 +293,8 @@ const BadInput kBadInputs[] = {
      "rho_max = 0 is invalid: expected rho_max > 0"},
     {"scan_points", [](DesignInput& in) { in.scan_points = 2; },
      "scan_points = 2 is invalid: expected 3 <= scan_points <= 100000"},
+    {"orbit_evaluations", [](DesignInput& in) { in.orbit_evaluations = 0; },
+     "orbit_evaluations = 0 is invalid: expected 1 <= orbit_evaluations <= 1000000000"},
 };
 
 TEST(Design, EveryBadInputIsRejectedNamingTheParameterItsValueAndTheRule) {
@@ -310,7 +312,7 @@ TEST(Design, EveryBadInputIsRejectedNamingTheParameterItsValueAndTheRule) {
     EXPECT_THROW(Design(in), std::invalid_argument) << b.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 17);
+  EXPECT_EQ(checked, 18);
 }
 
 TEST(Design, GaitOfAGivenInnerMassRejectsABadMass) {
@@ -327,6 +329,46 @@ TEST(Design, GaitOfAGivenInnerMassRejectsABadMass) {
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// A friction bound that dwarfs the motor force (huge mu or g): the orbit searches cannot resolve
+// the robot's orbits, and the design stops after a bounded number of robots instead of refining
+// every circle to the search's bound (a minute or more per design).
+struct FrictionCase {
+  const char* name;
+  double mu, g;
+};
+
+TEST(Design, HugeFrictionStopsAfterABoundedNumberOfUnresolvedRobots) {
+  for (const FrictionCase& c : {FrictionCase{"mu = 1e6", 1e6, 9.81}, FrictionCase{"g = 1e7", 0.3, 1e7},
+                                FrictionCase{"g = 1e10", 0.3, 1e10},
+                                FrictionCase{"g = 1e300", 0.3, 1e300}}) {
+    const char* name = c.name;
+    DesignInput in = testing::ExampleRobot();
+    in.mu = c.mu;
+    in.g = c.g;
+    const DesignResult r = Design(in);
+    EXPECT_EQ(r.unresolved_robots, kDesignMaxUnresolvedRobots) << name;
+    EXPECT_LE(r.robots, 2 * kDesignMaxUnresolvedRobots) << name;
+    EXPECT_FALSE(r.complete) << name;
+    EXPECT_NE(r.message.find("the search stopped after"), std::string::npos) << name << r.message;
+  }
+}
+
+// The work bound of each orbit search is a cost knob: a thousand times more changes nothing for
+// the example robot, whose searches all end far below it.
+TEST(Design, OrbitEvaluationsBoundChangesTheCostNotTheAnswer) {
+  DesignInput in = testing::ExampleRobot();
+  const DesignResult base = Design(in);
+  in.orbit_evaluations = 1000 * kDesignOrbitEvaluations;
+  const DesignResult more = Design(in);
+  ASSERT_EQ(base.status, DesignStatus::kOk);
+  EXPECT_TRUE(base.complete);
+  EXPECT_EQ(base.unresolved_robots, 0);
+  EXPECT_EQ(base.robots, more.robots);
+  EXPECT_EQ(base.one_impact.m2_kg, more.one_impact.m2_kg);
+  EXPECT_EQ(base.one_impact.speed_mm_s, more.one_impact.speed_mm_s);
+  EXPECT_EQ(base.message, more.message);
 }
 
 }  // namespace

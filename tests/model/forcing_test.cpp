@@ -8,7 +8,10 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
+#include "capsubot/orbit.hpp"
+#include "capsubot/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -319,6 +322,91 @@ TEST(Forcing, AnglesWithoutSincosMatchTheLibrary) {
   }
   EXPECT_EQ(steps, 4000);
   EXPECT_EQ(crossings, 8);
+}
+
+// Input phases: reduced modulo the true 2 pi, refused where a double carries no angle.
+
+// The remainders below were computed with 300-bit arithmetic (mpmath): x - n 2 pi, n the
+// nearest whole number to x/(2 pi), for each double x.
+struct PhaseCase {
+  double phi, reduced;
+};
+
+// Three roundings of the reduction, each at most half an ulp of pi.
+constexpr double kReductionTol = 2e-15;
+
+TEST(InputPhase, IsReducedModuloTheTrueTwoPi) {
+  const PhaseCase cases[] = {
+      {4.0, -0x1.243f6a8885a31p+1},
+      {-4.0, 0x1.243f6a8885a31p+1},
+      {7.0, 0x1.6f0255dde973ep-1},
+      {123456.789, -0x1.84e3c9c5bd10ap+0},
+      {1e6, -0x1.6e254d0f6b398p-2},
+      {-1e6, 0x1.6e254d0f6b398p-2},
+      {999999.9999999999, -0x1.6e254d116b398p-2},
+      // 0.5 + 10^5 turns, rounded to a double: the true remainder of that double.
+      {628319.0307179586, 0x1.fffffffed5476p-2},
+      {628315.6307179587, -0x1.7333333325571p+1},
+  };
+  for (const PhaseCase& c : cases) {
+    const double r = ReduceInputPhase("phi0", c.phi);
+    EXPECT_NEAR(r, c.reduced, kReductionTol) << "phi = " << c.phi << ", difference " << r - c.reduced;
+    // The force keeps the reduced phase: the same motor as the reference phase.
+    const Forcing f = Forcing::Harmonic(0.5, 0.1, c.phi);
+    EXPECT_EQ(f.phi0(), r);
+    EXPECT_NEAR(f.F(1.0), Forcing::Harmonic(0.5, 0.1, c.reduced).F(1.0), 1e-15);
+  }
+}
+
+TEST(InputPhase, WithinHalfATurnIsKeptBitForBit) {
+  for (double phi : {0.0, -0.0, 1.0, -2.842, 3.141592653589793, -3.141592653589793, 1e-300}) {
+    EXPECT_EQ(ReduceInputPhase("phi0", phi), phi);
+    EXPECT_EQ(Forcing::Harmonic(0.5, 0.1, phi).phi0(), phi);
+  }
+}
+
+TEST(InputPhase, BeyondTheBoundIsRefusedNamingRadians) {
+  for (double phi : {1e300, -1e16, 1000000.0000000001}) {
+    try {
+      Forcing::Harmonic(0.5, 0.5, phi);
+      FAIL() << "no exception for " << phi;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(" is invalid: expected a phase |phi0| <= 1e+06 rad "
+                                           "(phases are in radians"),
+                std::string::npos)
+          << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind("phi0 = ", 0), 0U) << e.what();
+    }
+  }
+  // The same bound for a phase set on a built force (a bifurcation over phi0).
+  EXPECT_THROW(Forcing::Harmonic(0.5, 0.5, 0.0).WithPhase(1e300), std::invalid_argument);
+  try {
+    Forcing::Harmonic(0.5, 0.5, 0.0).WithPhase(-1e16);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "phi0 = -1e+16 is invalid: expected a phase |phi0| <= 1e+06 rad (phases are in "
+                 "radians; a larger one carries no angle to the digits of a double)");
+  }
+}
+
+TEST(InputPhase, ReducedPhaseGivesTheOrbitOfItsRemainder) {
+  // -2.9 + 10^5 turns, rounded to a double, and its remainder (mpmath, 300 bits): the orbit of
+  // the remainder to rounding, not that of a phase shifted by the rounding of 10^5 (2 pi)
+  // (about 1e-10 rad).
+  const Params p{1.0, 0.5, 0.0};
+  const Orbit big = ComputeOrbit(Forcing::Harmonic(0.5, 0.3, 628315.6307179587), p);
+  const Orbit ref = ComputeOrbit(Forcing::Harmonic(0.5, 0.3, -0x1.7333333325571p+1), p);
+  ASSERT_TRUE(ref.ok());
+  EXPECT_NEAR(big.phi1, ref.phi1, 1e-13);
+  EXPECT_NEAR(big.alpha, ref.alpha, 1e-13);
+  EXPECT_NEAR(big.I, ref.I, 1e-12);
+  // The extrema of x come from crossing phases of F, phi + delta with delta = phi0 + const:
+  // unreduced, 628315.6 + phi lost 2e-11 of x_min (-12.5969194117288 against
+  // -12.5969194117497).
+  const Solution big_s = Solve(Forcing::Harmonic(0.5, 0.3, 628315.6307179587), p);
+  const Solution ref_s = Solve(Forcing::Harmonic(0.5, 0.3, -0x1.7333333325571p+1), p);
+  EXPECT_NEAR(big_s.validity.x_min, ref_s.validity.x_min, 1e-12);
 }
 
 }  // namespace
