@@ -35,13 +35,3 @@ def cli_json(*args):
     provenance = obj.pop("provenance")
     assert provenance["command"] == args[0] and provenance["program"] == "capsubot"
     return obj
-
-
-def without_timing(obj):
-    """`obj` without the keys "search_seconds" at any depth: the reach search's wall-clock time,
-    the one figure that differs between two runs."""
-    if isinstance(obj, dict):
-        return {k: without_timing(v) for k, v in obj.items() if k != "search_seconds"}
-    if isinstance(obj, list):
-        return [without_timing(v) for v in obj]
-    return obj

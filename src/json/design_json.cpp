@@ -85,7 +85,6 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
   }
   out["evaluations"] = r.evaluations;
   out["rejected_evaluations"] = r.rejected_evaluations;
-  out["seconds"] = r.search_seconds;
   out["max_time"] = r.max_time;
   return out;
 }

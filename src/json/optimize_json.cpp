@@ -80,7 +80,6 @@ nlohmann::json ReachJson(const ReachResult& r) {
   j["robust_to_settings"] = r.robust_to_settings;
   j["evaluations"] = r.evaluations;
   j["rejected_evaluations"] = r.rejected_evaluations;
-  j["search_seconds"] = r.search_seconds;
   j["algorithm"] = r.algorithm;
   const Orbit& so = r.seed.gait.solution.orbit;
   if (r.seed.from_rest.checked) {

@@ -106,7 +106,7 @@ TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
   for (const char* key :
        {"status", "message", "A", "c", "phi0", "alpha", "mean_velocity", "attractors", "summary",
         "spread", "seed_won", "robust_to_settings", "evaluations", "rejected_evaluations",
-        "search_seconds", "algorithm", "seed"}) {
+        "algorithm", "seed"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   for (const char* key : {"chatter_small", "chatter_large", "e_0999", "max_relative_deviation",
