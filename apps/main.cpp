@@ -20,6 +20,7 @@
 #include "capsubot/version.hpp"
 #include "commands.hpp"
 #include "ranks.hpp"
+#include "suggest.hpp"
 
 namespace {
 
@@ -43,6 +44,22 @@ std::string ParseErrorMessage(const CLI::ParseError& e) {
     return text.substr(colon + 2);
   }
   return text;
+}
+
+// The arguments CLI11 did not expect, from its message "The following arguments were not
+// expected: --t0 1".
+std::vector<std::string> UnexpectedArguments(const CLI::ParseError& e) {
+  const std::string text = e.what();
+  const std::size_t colon = text.find(": ");
+  std::vector<std::string> words;
+  std::size_t at = colon == std::string::npos ? text.size() : colon + 2;
+  while (at < text.size()) {
+    const std::size_t space = text.find(' ', at);
+    const std::size_t end = space == std::string::npos ? text.size() : space;
+    if (end > at) words.push_back(text.substr(at, end - at));
+    at = end + 1;
+  }
+  return words;
 }
 
 // Prints `who: error: text` and returns `status`. Under mpirun every process parses the same
@@ -99,8 +116,13 @@ int main(int argc, char** argv) {
       AddDesignCommand(app), AddAttractorsCommand(app), AddPeriodicCommand(app),
       AddBasinsCommand(app), AddBifurcationCommand(app)};
   UseStrictValues(app);
+  std::vector<std::string> args = ReadHelpCommand(std::vector<std::string>(argv + 1, argv + argc));
+  if (!args.empty()) {
+    if (const auto unknown = UnknownCommand(app, args.front())) return Fail("capsubot", *unknown, 2);
+  }
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
-    app.parse(argc, argv);
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
@@ -113,6 +135,11 @@ int main(int argc, char** argv) {
     if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr ||
         dynamic_cast<const CLI::ValidationError*>(&e) != nullptr) {
       return Fail(who, ParseErrorMessage(e), 2);
+    }
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr && !subs.empty()) {
+      if (const auto flag = UnknownFlag(*subs.front(), UnexpectedArguments(e))) {
+        return Fail(who, *flag, 2);
+      }
     }
     return Fail(who, fmt::format("{} (see {} --help)", ParseErrorMessage(e), who), 2);
   }

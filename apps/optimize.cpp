@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -488,7 +489,11 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
                   "A + c <= --bound), fourier (P3: best K-harmonic force with max |F| <= "
                   "--bound) or reach (the fastest motion from rest: A, c, alpha with A + c <= "
-                  "--bound, simulated, seeded with the robust P2 gait); default: the main job")
+                  "--bound, simulated, seeded with the robust P2 gait); P1, P2 and P3 name the "
+                  "first three; default: the main job")
+      ->transform(CLI::Transformer(
+          std::map<std::string, std::string>{{"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
+          CLI::ignore_case))
       ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}));
   opt->A_option =
       cmd->add_option("--A", opt->A,

@@ -82,6 +82,9 @@ namespace {
 // on it within kSettledDistance: then the rest of the run can only converge to it.
 constexpr double kSettledRadius = 1.0 - 1e-3;
 constexpr double kSettledDistance = 1e-8;
+// Newton's method is tried at most this many times per start (a motion it cannot settle runs
+// to the end, as without the early stop).
+constexpr int kMaxSettleTries = 4;
 // At the end of the record, the periodic motion Newton finds is the recorded one when the last
 // state lies within this of it (units of L and omega L); otherwise the period and velocity
 // come from the record alone.
@@ -141,7 +144,8 @@ class LongRun : public SimObserver {
       return false;
     }
     const int p = DetectPeriod(ring_, o_.max_period, o_.converged_tolerance);
-    if (p == 0) return false;
+    if (p == 0 || tries_ >= kMaxSettleTries) return false;
+    ++tries_;
     const SimState& last = ring_.back();
     MapState s{{last.x, last.u, last.v, psi_}, last.mode}, moved;
     const PeriodicMotion pm =
@@ -168,6 +172,7 @@ class LongRun : public SimObserver {
   Recorder& recorder_;
   std::vector<SimState> ring_;
   int samples_ = 0;
+  int tries_ = 0;
   double psi_ = 0.0;
   SimState record_start_, record_middle_;
   PeriodicMotion settled_;

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# `pip install .` into a fresh virtual environment (with the system's site packages, offline,
+# no build isolation: Debian's setuptools and wheel), then imports the installed module from
+# outside the source tree. The build folder given is reused, so the test builds nothing new.
+# Usage: pip_install_test.sh SOURCE_DIR BUILD_DIR PYTHON
+set -euo pipefail
+source_dir=$1 build=$2 python=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$python" -m venv --system-site-packages "$work/venv"
+# pip copies nothing back into the source tree: its build folders go to the temporary folder.
+cp -r "$source_dir/pyproject.toml" "$source_dir/setup.py" "$source_dir/README.md" "$work/"
+CAPSUBOT_CMAKE_BUILD_DIR="$build" "$work/venv/bin/python" -m pip install --no-build-isolation \
+  --no-index --no-deps -q "$work" >"$work/pip.log" 2>&1 || { cat "$work/pip.log"; exit 1; }
+out=$(cd "$work" && "$work/venv/bin/python" -c "
+import capsubot, sys
+assert capsubot.__file__.startswith(sys.prefix), (capsubot.__file__, sys.prefix)
+print(capsubot.__version__, capsubot.solve(A=0.5, c=0.5, phi0=-2.944899971002)['alpha'])
+")
+echo "$out"
+[[ $out == *" 0.35685746237742"* ]]  # the paper's example (README, 'capsubot solve')
+"$work/venv/bin/python" -m pip show capsubot | grep -q '^Version: 0.2.0'
+echo "pip install: 1 passed, 0 failed"
