@@ -196,17 +196,153 @@ Value FromText(const Setting& s, const std::string& who, const std::string& text
   return v;
 }
 
-// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1].
+// Most characters of a key or value a message shows: the rest is cut to "...", so that a
+// huge key or value of the file makes a message of one short line.
+constexpr std::size_t kShownChars = 60;
+
+// `text` cut to kShownChars characters and "...".
+std::string Clip(std::string text) {
+  if (text.size() > kShownChars) text = text.substr(0, kShownChars) + "...";
+  return text;
+}
+
+// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1],
+// {a = 0.3}; cut once longer than a message shows (the file's nesting is bounded by
+// RequireTomlDepth, so is this recursion).
 std::string Show(const toml::node& node) {
+  std::string text;
+  const auto add = [&text](const std::string& item) {
+    if (text.size() <= kShownChars) text += item;
+  };
   if (const auto* array = node.as_array()) {
-    std::vector<std::string> items;
-    for (const toml::node& element : *array) items.push_back(Show(element));
-    return fmt::format("[{}]", fmt::join(items, ", "));
+    add("[");
+    for (const toml::node& element : *array) {
+      if (text.size() > 1) add(", ");
+      add(Show(element));
+    }
+    add("]");
+  } else if (const auto* table = node.as_table()) {
+    add("{");
+    for (const auto& [key, value] : *table) {
+      if (text.size() > 1) add(", ");
+      add(std::string(key.str()) + " = " + Show(value));
+    }
+    add("}");
+  } else if (node.is_floating_point()) {
+    add(FormatNumber(**node.as_floating_point()));
+  } else {
+    std::ostringstream out;
+    node.visit([&out](const auto& n) { out << n; });
+    add(out.str());
   }
-  if (node.is_floating_point()) return fmt::format("{}", **node.as_floating_point());
-  std::ostringstream out;
-  node.visit([&out](const auto& n) { out << n; });
-  return out.str();
+  return Clip(text);
+}
+
+// Nesting of a config file at the most: parts of a dotted key or table header, plus arrays
+// and inline tables around a value. The parser descends once per level: a file nested
+// thousands deep would exhaust the stack. A robot's file needs 2.
+constexpr int kMaxTomlDepth = 32;
+
+// Refuses a TOML text nested deeper than kMaxTomlDepth, scanning it before it is parsed:
+// keys' dots, headers' dots and the brackets and braces of values, outside strings and
+// comments. Tracks only what nests; the parser checks the rest of the syntax.
+void RequireTomlDepth(const std::string& text, const std::string& path) {
+  int header = 0;          // parts of the last [table] header: the depth of the keys below it
+  std::vector<int> depth;  // depth of the elements of each open array or inline table
+  std::vector<char> open;  // '[' or '{' of each
+  int value_depth = 0;     // depth of the value after the last '='
+  bool at_key = true;      // reading a key: its dots separate its parts
+  int parts = 1;
+  int line = 1;
+  const auto check = [&](int d) {
+    if (d > kMaxTomlDepth) {
+      throw std::invalid_argument(fmt::format(
+          "config file {} line {} is invalid: keys and values nested more than {} deep: "
+          "expected at most {} levels (parts of dotted keys and table headers, nested arrays "
+          "and inline tables)",
+          path, line, kMaxTomlDepth, kMaxTomlDepth));
+    }
+  };
+  const auto context = [&] { return depth.empty() ? header : depth.back(); };
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  // Moves past the string that starts at i (basic or literal, one line or several).
+  const auto skip_string = [&] {
+    const char quote = text[i];
+    const bool multi = text.compare(i, 3, std::string(3, quote)) == 0;
+    i += multi ? 3 : 1;
+    while (i < n) {
+      if (text[i] == '\n') ++line;
+      if (quote == '"' && text[i] == '\\') {
+        i += 2;
+        continue;
+      }
+      if (text[i] == quote && (!multi || text.compare(i, 3, std::string(3, quote)) == 0)) {
+        i += multi ? 3 : 1;
+        return;
+      }
+      if (text[i] == '\n' && !multi) return;
+      ++i;
+    }
+  };
+  while (i < n) {
+    const char c = text[i];
+    if (c == '#') {
+      while (i < n && text[i] != '\n') ++i;
+    } else if (c == '"' || c == '\'') {
+      skip_string();
+    } else if (c == '\n') {
+      ++line;
+      ++i;
+      if (open.empty()) {
+        at_key = true;
+        parts = 1;
+      }
+    } else if (at_key && open.empty() && c == '[') {  // a [table] or [[array]] header
+      int header_parts = 1;
+      for (++i; i < n && text[i] != ']' && text[i] != '\n';) {
+        if (text[i] == '"' || text[i] == '\'') {
+          skip_string();
+          continue;
+        }
+        if (text[i] == '.') check(++header_parts);
+        ++i;
+      }
+      header = header_parts;
+      while (i < n && text[i] == ']') ++i;
+    } else if (at_key && c == '}' && !open.empty() && open.back() == '{') {  // {} or {a = 1,}
+      depth.pop_back();
+      open.pop_back();
+      at_key = false;
+      ++i;
+    } else if (at_key) {
+      if (c == '.') check(context() + ++parts);
+      if (c == '=') {
+        at_key = false;
+        value_depth = context() + parts;
+        check(value_depth);
+      }
+      ++i;
+    } else {
+      if (c == '[' || c == '{') {
+        const int d = (!open.empty() && open.back() == '[' ? depth.back() : value_depth) + 1;
+        check(d);
+        depth.push_back(d);
+        open.push_back(c);
+        if (c == '{') {
+          at_key = true;
+          parts = 1;
+        }
+      } else if ((c == ']' || c == '}') && !open.empty()) {
+        depth.pop_back();
+        open.pop_back();
+      } else if (c == ',' && !open.empty() && open.back() == '{') {
+        at_key = true;
+        parts = 1;
+      }
+      ++i;
+    }
+  }
 }
 
 // A setting's value from the config file: numbers as TOML numbers, lists and ranges as arrays
@@ -320,6 +456,7 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
   std::vector<std::pair<int, Value>> file_values;  // the settings of the file, as read
   if (!o.config.empty()) {
     const std::string text = ReadTextFile(o.config, "--config");
+    RequireTomlDepth(text, o.config);
     toml::table table;
     try {
       table = toml::parse(text, o.config);
@@ -333,7 +470,7 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
       const int i = Find(name);
       if (i < 0) {
         throw std::invalid_argument(
-            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", name,
+            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", Clip(name),
                         Show(node), o.config, Names()));
       }
       const Setting& s = kSettings[i];
@@ -393,6 +530,15 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
           fmt::format("setting {} is missing: give --{} (or {} in the --config file)",
                       fmt::join(group, " or "), group.front(), group.front()));
     }
+  }
+  // The default inner-mass range is 0.01 m1 .. 10 m1: where it leaves double precision, the
+  // mass the user gave is the bad input, not a range the user never gave.
+  if (std::isnan(in.m2_min) && std::isnan(in.m2_max) && std::isfinite(in.m1) &&
+      !std::isfinite(in.M2Max())) {
+    throw std::invalid_argument(
+        fmt::format("shell mass m1 = {} kg is invalid: expected m1 <= {} kg, so that the default "
+                    "inner mass range 0.01 m1:10 m1 is finite (or give m2-range)",
+                    FormatNumber(in.m1), FormatNumber(std::numeric_limits<double>::max() / 10)));
   }
   in.Validate();
   return in;

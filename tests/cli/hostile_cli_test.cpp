@@ -352,13 +352,45 @@ std::vector<Case> Cases() {
        "--harmonics conflicts with --problem forcing: expected --harmonics only with --problem "
        "fourier",
        none},
+      // A config file nested thousands deep is refused before it is parsed (the parser would
+      // descend once per level and exhaust the stack).
+      {"ConfigDeepDottedKeyIsRefused", "design --config dk.toml", 2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep", {"dk.toml"},
+       "{ yes a | head -n 50000 | tr '\\n' .; echo 'b = 1'; } > dk.toml"},
+      {"ConfigDeepTableHeaderIsRefused", "design --config dk.toml", 2,
+       "config file dk.toml line 2 is invalid: keys and values nested more than 32 deep", {"dk.toml"},
+       "{ echo '# robot'; printf '[['; yes a | head -n 50000 | tr '\\n' .; echo 'b]]'; } > "
+       "dk.toml"},
+      {"ConfigDeepArrayIsRefused", "design --config dk.toml", 2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep", {"dk.toml"},
+       "{ printf 'm1 = '; yes '[' | head -n 50000 | tr -d '\\n'; echo; } > dk.toml"},
+      {"ConfigDeepInlineTableIsRefused", "design --config dk.toml", 2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep", {"dk.toml"},
+       "{ printf 'm1 = '; yes '{a=' | head -n 50000 | tr -d '\\n'; echo; } > dk.toml"},
+      {"ConfigLongKeyIsCut", "design --config k.toml", 2,
+       "kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk... = 1 in k.toml is "
+       "invalid: unknown key",
+       {"k.toml"}, "{ head -c 40000 /dev/zero | tr '\\0' k; echo ' = 1'; } > k.toml", "", "",
+       [](const fs::path& d) { EXPECT_LT(fs::file_size(d / ".." / "stderr.txt"), 400U); }},
+      {"ConfigNumbersEchoedShortest", "design --config c.toml", 2,
+       "m1 = {a = 0.3} in c.toml is invalid: expected a number", {"c.toml"},
+       "echo 'm1 = {a = 0.3}' > c.toml"},
+      {"ConfigHugeShellMassIsNamed",
+       "design --config c.toml",
+       2,
+       "shell mass m1 = 1e+308 kg is invalid: expected m1 <= 1.7976931348623158e+307 kg",
+       {"c.toml"},
+       "printf 'm1 = 1e308\\nL = 0.02\\nmu = 0.3\\ne = 0.7\\nforce-amplitude = 0.5\\n"
+       "force-bias = 0.1\\nfrequency = 20\\n' > c.toml"},
+      {"ConfigFolderIsRefused", "design --config .", 2,
+       "--config . is invalid: expected a file of at most 1048576 bytes, not a folder", none},
       // One convention for a missing value in tables: "-".
       {"MissingValuesAreDashes", "solve --A 0.2 --c 0.03 --phi0 0", 0, "", none, "", "",
        "alpha  = -   (m2/(m1+m2))", nullptr},
   };
 }
 
-constexpr int kCaseCount = 83;
+constexpr int kCaseCount = 91;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
@@ -430,6 +462,22 @@ TEST(HostileCliFifo, WholeRunsWriteAPipeOnce) {
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// A pipe given as --config is refused at once, also without a writer (an open that waited
+// for one would block forever).
+TEST(HostileCliFifo, ConfigPipeWithoutWriterIsRefused) {
+  Sandbox box("config_fifo");
+  const std::string command = "cd '" + box.work.string() + "' && mkfifo ff && timeout 20 " +
+                              std::string(CAPSUBOT_CLI) + " design --config ff 2>err.txt";
+  const int raw = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(raw)) << command;
+  EXPECT_EQ(WEXITSTATUS(raw), 2) << command;
+  EXPECT_NE(ReadFile(box.work / "err.txt")
+                .find("--config ff is invalid: expected a file of at most 1048576 bytes, not a "
+                      "pipe or device"),
+            std::string::npos)
+      << ReadFile(box.work / "err.txt");
 }
 
 // Starts `capsubot args...` with stdout and stderr to files (or stderr to `stderr_path`).
