@@ -123,7 +123,7 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
     const double rows = std::floor(sim.periods * opt.samples_per_period) + 1.0;
     if (rows > static_cast<double>(kMaxTrajectoryRows)) {
       throw std::invalid_argument(fmt::format(
-          "--samples-per-period = {} with --periods {:g} is invalid: expected at most {} rows "
+          "--samples-per-period = {} with --periods {} is invalid: expected at most {} rows "
           "of --trajectory (samples per period x periods + 1 = {:.0f})",
           opt.samples_per_period, sim.periods, kMaxTrajectoryRows, rows));
     }
@@ -159,8 +159,8 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
   }
   std::string t = "event-driven simulation\n";
   t += fmt::format("  force            {}\n", ForceFormula(forcing));
-  t += fmt::format("  model            T0 = {:g}, e = {:g}, alpha = {}\n", opt.params.T0,
-                   opt.params.e, Num(sim.alpha));
+  t += fmt::format("  model            T0 = {}, e = {}, alpha = {}\n", opt.params.T0,
+                   opt.params.e, std::isnan(sim.alpha) ? "-" : FormatNumber(sim.alpha));
   t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
                    Num(sim.v0),
                    opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");

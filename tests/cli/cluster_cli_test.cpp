@@ -750,6 +750,26 @@ TEST(Cluster, CommandsThatRunOnOneProcessRefuseMpirun) {
   EXPECT_TRUE(std::filesystem::exists(out));
 }
 
+// mpirun copies rank 0's standard output to its own and ignores a write that fails there: the
+// run writes mpirun's standard output itself, and a full one fails it (exit 1), as alone.
+TEST(Cluster, FullStandardOutputUnderMpirunFails) {
+  if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string sweep = std::string(kMpiexec) + " --oversubscribe -n 2 " + CAPSUBOT_CLI +
+                            " sweep --grid A=0:1:3 --c 0.5 --phi0 0 -o -";
+  const CommandResult full = Shell("sh -c '" + sweep + " > /dev/full'");
+  EXPECT_EQ(full.status, 1) << full.out;
+  EXPECT_NE(full.out.find("capsubot sweep: error: --output -: cannot write standard output: No "
+                          "space left on device"),
+            std::string::npos)
+      << full.out;
+  // Written through a pipe, the header and the 3 rows arrive whole.
+  const CommandResult piped = Shell(sweep + " | grep -c ,");
+  EXPECT_EQ(piped.status, 0) << piped.out;
+  EXPECT_EQ(piped.out, "4\n");
+}
+
 TEST(Cluster, BadInputUnderMpirunFailsOnceAndWritesNoFile) {
   if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
   Dir dir;

@@ -384,13 +384,29 @@ std::vector<Case> Cases() {
        "force-bias = 0.1\\nfrequency = 20\\n' > c.toml"},
       {"ConfigFolderIsRefused", "design --config .", 2,
        "--config . is invalid: expected a file of at most 1048576 bytes, not a folder", none},
+      // Ranges that hold no map or diagram, refused before any work.
+      {"BifurcationFromEqualsTo",
+       "bifurcation " + kRobot + " --param T0 --from 0.1 --to 0.1 --steps 3 -o o.csv", 2,
+       "--to = 0.1 is invalid with --from = 0.1: expected a range, --to other than --from", none},
+      {"BasinsInvertedURangeOnThePsiPlane",
+       "basins " + kRobot + " --starts 2x2 --u-min 5 --u-max -5 -o b.csv", 2,
+       "--u-min = 5 and --u-max = -5 are invalid: expected u-min < u-max", none},
+      // Values in reports and messages in their shortest round-trip form, never rounded.
+      {"AttractorsAlphaNearOneIsNotRounded",
+       "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.999999999999 "
+       "--starts 1x1 --transient 20 --record 20",
+       0, "", none, "", "", "alpha = 0.999999999999\n"},
+      {"SimulateAlphaNearOneIsNotRounded",
+       "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.999999999999 --x0 0.5 --u0 0 --v0 0 "
+       "--periods 1",
+       0, "", none, "", "", "T0 = 1, e = 1, alpha = 0.999999999999\n"},
       // One convention for a missing value in tables: "-".
       {"MissingValuesAreDashes", "solve --A 0.2 --c 0.03 --phi0 0", 0, "", none, "", "",
        "alpha  = -   (m2/(m1+m2))", nullptr},
   };
 }
 
-constexpr int kCaseCount = 91;
+constexpr int kCaseCount = 95;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
