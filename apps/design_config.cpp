@@ -31,30 +31,59 @@ struct Setting {
   Kind kind;
   const char* help;
   void (*set)(DesignInput&, const Value&);
+  /// The value of the input (defaults, file and flags resolved); false when it has none
+  /// (an alternative is used, or a default that depends on another setting).
+  bool (*get)(const DesignInput&, Value&);
 };
+
+// Getters of Setting::get.
+template <double DesignInput::*field>
+bool GetNumber(const DesignInput& in, Value& v) {
+  v.number = in.*field;
+  return !std::isnan(v.number);
+}
+
+bool GetRange(double lo, double hi, Value& v) {
+  v.lo = lo;
+  v.hi = hi;
+  return !std::isnan(lo) && !std::isnan(hi) && lo != hi;
+}
 
 // Each setting once: its name serves the flag and the file. Several settings write the same
 // field where they are alternatives (frequency or frequency-range, amplitude or Fourier).
 const Setting kSettings[] = {
     {"m1", Kind::kNumber, "shell mass m1 [kg], > 0",
-     [](DesignInput& in, const Value& v) { in.m1 = v.number; }},
+     [](DesignInput& in, const Value& v) { in.m1 = v.number; },
+     GetNumber<&DesignInput::m1>},
     {"L", Kind::kNumber, "free gap L of the inner body between the walls [m], > 0",
-     [](DesignInput& in, const Value& v) { in.L = v.number; }},
+     [](DesignInput& in, const Value& v) { in.L = v.number; },
+     GetNumber<&DesignInput::L>},
     {"mu", Kind::kNumber, "friction coefficient mu of the shell on the floor, > 0",
-     [](DesignInput& in, const Value& v) { in.mu = v.number; }},
+     [](DesignInput& in, const Value& v) { in.mu = v.number; },
+     GetNumber<&DesignInput::mu>},
     {"g", Kind::kNumber, "gravity g [m/s^2], > 0 (default 9.81)",
-     [](DesignInput& in, const Value& v) { in.g = v.number; }},
+     [](DesignInput& in, const Value& v) { in.g = v.number; },
+     GetNumber<&DesignInput::g>},
     {"e", Kind::kNumber, "coefficient of restitution e of the impacts, 0 <= e <= 1",
-     [](DesignInput& in, const Value& v) { in.e = v.number; }},
+     [](DesignInput& in, const Value& v) { in.e = v.number; },
+     GetNumber<&DesignInput::e>},
     {"force-amplitude", Kind::kNumber,
      "amplitude A_N [N] of the motor force F_N = A_N sin(omega t + phase) + c_N, >= 0",
      [](DesignInput& in, const Value& v) {
        in.force.amplitude = v.number;
        in.force.cos.clear();
        in.force.sin.clear();
+     },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.force.amplitude;
+       return !in.force.fourier() && !std::isnan(v.number);
      }},
     {"force-bias", Kind::kNumber, "mean c_N [N] of the motor force, >= 0",
-     [](DesignInput& in, const Value& v) { in.force.bias = v.number; }},
+     [](DesignInput& in, const Value& v) { in.force.bias = v.number; },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.force.bias;
+       return !std::isnan(v.number);
+     }},
     {"force-cos", Kind::kList,
      "Fourier motor force instead of the amplitude: cosine coefficients [N] of "
      "F_N = c_N + sum_k (a_k cos k s + b_k sin k s), s = omega t + phase (as many as "
@@ -62,40 +91,64 @@ const Setting kSettings[] = {
      [](DesignInput& in, const Value& v) {
        in.force.cos = v.list;
        in.force.amplitude = DesignInput::kNaN;
+     },
+     [](const DesignInput& in, Value& v) {
+       v.list = in.force.cos;
+       return !v.list.empty();
      }},
     {"force-sin", Kind::kList, "Fourier motor force: sine coefficients b_1,...,b_K [N]",
      [](DesignInput& in, const Value& v) {
        in.force.sin = v.list;
        in.force.amplitude = DesignInput::kNaN;
+     },
+     [](const DesignInput& in, Value& v) {
+       v.list = in.force.sin;
+       return !v.list.empty();
      }},
     {"frequency", Kind::kNumber, "motor frequency f [Hz], > 0",
-     [](DesignInput& in, const Value& v) { in.frequency_min = in.frequency_max = v.number; }},
+     [](DesignInput& in, const Value& v) { in.frequency_min = in.frequency_max = v.number; },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.frequency_min;
+       return !std::isnan(v.number) && in.frequency_min == in.frequency_max;
+     }},
     {"frequency-range", Kind::kRange,
      "search the motor frequency too, over FMIN:FMAX [Hz] (instead of frequency)",
      [](DesignInput& in, const Value& v) {
        in.frequency_min = v.lo;
        in.frequency_max = v.hi;
+     },
+     [](const DesignInput& in, Value& v) {
+       return GetRange(in.frequency_min, in.frequency_max, v);
      }},
     {"m2-range", Kind::kRange, "inner masses searched, M2MIN:M2MAX [kg] (default 0.01 m1:10 m1)",
      [](DesignInput& in, const Value& v) {
        in.m2_min = v.lo;
        in.m2_max = v.hi;
-     }},
+     },
+     [](const DesignInput& in, Value& v) { return GetRange(in.m2_min, in.m2_max, v); }},
     {"margin", Kind::kNumber, "clearance d from both walls [units of L], 0 <= d < 0.5 (default 0)",
-     [](DesignInput& in, const Value& v) { in.margin = v.number; }},
+     [](DesignInput& in, const Value& v) { in.margin = v.number; },
+     GetNumber<&DesignInput::margin>},
     {"margin-stroke", Kind::kNumber,
      "clearance d_s from both walls [units of the stroke 1 - x_min], >= 0 (default 0.02)",
-     [](DesignInput& in, const Value& v) { in.margin_stroke = v.number; }},
+     [](DesignInput& in, const Value& v) { in.margin_stroke = v.number; },
+     GetNumber<&DesignInput::margin_stroke>},
     {"stick-margin", Kind::kNumber,
      "stick margin s: |F| <= (1-s) T0 while the shell rests, 0 <= s < 1 (default 0.02)",
-     [](DesignInput& in, const Value& v) { in.stick_margin = v.number; }},
+     [](DesignInput& in, const Value& v) { in.stick_margin = v.number; },
+     GetNumber<&DesignInput::stick_margin>},
     {"rho-max", Kind::kBound,
      "largest admissible multiplier modulus of the gait, > 0; inf: no stability requirement "
      "(default 0.9)",
-     [](DesignInput& in, const Value& v) { in.rho_max = v.number; }},
+     [](DesignInput& in, const Value& v) { in.rho_max = v.number; },
+     GetNumber<&DesignInput::rho_max>},
     {"scan-points", Kind::kInteger,
      "log-spaced samples of each searched variable before the refinement, >= 3 (default 64)",
-     [](DesignInput& in, const Value& v) { in.scan_points = static_cast<int>(v.number); }},
+     [](DesignInput& in, const Value& v) { in.scan_points = static_cast<int>(v.number); },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.scan_points;
+       return true;
+     }},
 };
 constexpr int kSettingCount = static_cast<int>(sizeof(kSettings) / sizeof(kSettings[0]));
 
@@ -450,10 +503,9 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
 }
 
 DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<DesignGridAxis>& grid,
-                             std::vector<std::pair<std::string, std::string>>* config_flags) {
+                             std::vector<std::pair<std::string, std::string>>* settings) {
   DesignInput in;
   std::set<std::string> given;
-  std::vector<std::pair<int, Value>> file_values;  // the settings of the file, as read
   if (!o.config.empty()) {
     const std::string text = ReadTextFile(o.config, "--config");
     RequireTomlDepth(text, o.config);
@@ -474,8 +526,7 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
                         Show(node), o.config, Names()));
       }
       const Setting& s = kSettings[i];
-      file_values.emplace_back(i, FromToml(s, " in " + o.config, node));
-      s.set(in, file_values.back().second);
+      s.set(in, FromToml(s, " in " + o.config, node));
       from_file.insert(name);
     }
     CheckExclusive(from_file, "in " + o.config);
@@ -510,18 +561,6 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
     kSettings[i].set(in, v);
     given.insert(axis.name());
   }
-  if (config_flags != nullptr) {
-    std::set<std::string> replaced = from_flags;
-    for (const DesignGridAxis& axis : grid) replaced.insert(axis.name());
-    std::sort(file_values.begin(), file_values.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    config_flags->clear();
-    for (const auto& [i, value] : file_values) {
-      const Setting& s = kSettings[i];
-      if (NamedOrAlternative(replaced, s.name)) continue;
-      config_flags->emplace_back(std::string("--") + s.name, FlagText(s, value));
-    }
-  }
   for (const auto& group : kRequired) {
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;
@@ -541,6 +580,19 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
                     FormatNumber(in.m1), FormatNumber(std::numeric_limits<double>::max() / 10)));
   }
   in.Validate();
+  if (settings != nullptr) {
+    // A grid gives its settings (m2: the range searched) at every point.
+    std::set<std::string> gridded;
+    for (const DesignGridAxis& axis : grid) {
+      gridded.insert(Find(axis.name()) < 0 ? std::string("m2-range") : axis.name());
+    }
+    settings->clear();
+    for (const Setting& s : kSettings) {
+      Value v;
+      if (NamedOrAlternative(gridded, s.name) || !s.get(in, v)) continue;
+      settings->emplace_back(std::string("--") + s.name, FlagText(s, v));
+    }
+  }
   return in;
 }
 

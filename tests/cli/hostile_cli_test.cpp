@@ -244,6 +244,20 @@ std::vector<Case> Cases() {
        [](const fs::path& d) {
          EXPECT_EQ(ReadFile(d / "s0.csv"), "# shard 0/2 of 2 points\nphi0\n1\n");
        }},
+      // A folder or a converted file among the shards: bad input naming the file.
+      {"MergeShardFolderIsRefused",
+       "merge m.csv s0.csv dd",
+       2,
+       "shard file dd is invalid: it is a folder: expected a shard file",
+       {"s0.csv", "dd"},
+       "printf '# shard 0/2 of 2 points\\nphi0\\n1\\n' > s0.csv && mkdir dd"},
+      {"MergeCrLfShardSaysLineEndings",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv is invalid: its line endings are CR LF",
+       {"s0.csv", "s1.csv"},
+       "printf '# shard 0/2 of 2 points\\r\\nphi0\\r\\n1\\r\\n' > s0.csv && printf '# shard "
+       "1/2 of 2 points\\r\\nphi0\\r\\n2\\r\\n' > s1.csv"},
       // A state beyond double precision ends the simulation with an error, no file.
       {"SimulateHugeV0",
        "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 "
@@ -406,7 +420,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 95;
+constexpr int kCaseCount = 97;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
