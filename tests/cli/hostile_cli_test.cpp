@@ -94,6 +94,30 @@ void LinksKeptTargetWritten(const fs::path& dir, const std::string& first_line) 
   EXPECT_EQ(ReadFile(dir / "target.csv").rfind(first_line, 0), 0U) << ReadFile(dir / "target.csv");
 }
 
+// Shell commands that write the 2 shards s0.csv, s1.csv of a robot-mode sweep of 4 points:
+// points 0 and 1 have no orbit, points 2 and 3 two orbit rows each.
+std::string RobotShardsSetup() {
+  std::string setup;
+  for (const char* k : {"0", "1"}) {
+    setup += std::string(setup.empty() ? "" : " && ") + CAPSUBOT_CLI +
+             " sweep --grid alpha=0.5,0.3,0.25,0.2 --A 0.05 --c 0.02 --T0 0.1 --e 0.5 -o s" + k +
+             ".csv --shard " + k + "/2";
+  }
+  return setup;
+}
+
+// Shell commands that write the 2 shards b0.csv, b1.csv of a 3 x 2 basin map (x0 major:
+// b0.csv holds the starts psi = 0, b1.csv those with psi = pi).
+std::string BasinShardsSetup() {
+  std::string setup;
+  for (const char* k : {"0", "1"}) {
+    setup += std::string(setup.empty() ? "" : " && ") + CAPSUBOT_CLI + " basins " + kRobot +
+             " --starts 3x2 --transient 20 --record 20 -o b" + k + ".csv --shard " + k +
+             "/2 > /dev/null";
+  }
+  return setup;
+}
+
 std::vector<Case> Cases() {
   const std::set<std::string> none;
   const std::set<std::string> links = {"target.csv", "link.csv", "chain.csv"};
@@ -258,6 +282,26 @@ std::vector<Case> Cases() {
        {"s0.csv", "s1.csv"},
        "printf '# shard 0/2 of 2 points\\r\\nphi0\\r\\n1\\r\\n' > s0.csv && printf '# shard "
        "1/2 of 2 points\\r\\nphi0\\r\\n2\\r\\n' > s1.csv"},
+      // The rows of a robot-mode point are those its `orbits` cell counts, numbered 1 ..
+      // orbits: a row lost, repeated or moved is refused, never merged.
+      {"MergeRobotShardLastRowLost", "merge m.csv s0.csv s1.csv", 2,
+       "shard file s1.csv is truncated: it ends in point 3 after 1 of its 2 rows (orbits = 2)",
+       {"s0.csv", "s1.csv"}, RobotShardsSetup() + " && sed -i '$d' s1.csv"},
+      {"MergeRobotShardOrbitRowLost", "merge m.csv s0.csv s1.csv", 2,
+       "shard file s0.csv point 2 row 1 '0.25,2,2,",
+       {"s0.csv", "s1.csv"}, RobotShardsSetup() + " && sed -i '5d' s0.csv"},
+      {"MergeRobotShardOrbitRowRepeated", "merge m.csv s0.csv s1.csv", 2,
+       "shard file s0.csv point 2 row 2 '0.25,2,1,",
+       {"s0.csv", "s1.csv"}, RobotShardsSetup() + " && sed -i '5p' s0.csv"},
+      // The starts of a basin map are those of its grid: an edited or copied start is named.
+      {"MergeBasinStartEdited", "merge m.csv b0.csv b1.csv", 2,
+       "shard file b0.csv start 1 (x0 = 0.51, psi = 0) is invalid: expected start 2 of the "
+       "map's 3 x 2 grid, x0 = 0.5: a start edited or copied from another",
+       {"b0.csv", "b1.csv"}, BasinShardsSetup() + " && sed -i 's/^0.5,0,/0.51,0,/' b0.csv"},
+      {"MergeBasinStartCopied", "merge m.csv b0.csv b1.csv", 2,
+       "shard file b0.csv start 1 (x0 = 0.16666666666666666, psi = 0) is invalid: expected "
+       "start 2 of the map's 3 x 2 grid, x0 = 0.5",
+       {"b0.csv", "b1.csv"}, BasinShardsSetup() + " && sed -i '4h;5g' b0.csv"},
       // A state beyond double precision ends the simulation with an error, no file.
       {"SimulateHugeV0",
        "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 "
@@ -420,7 +464,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 97;
+constexpr int kCaseCount = 102;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
