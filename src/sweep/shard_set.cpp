@@ -96,6 +96,34 @@ ShardFile OpenShard(const std::string& path, const std::string& unit) {
 
 }  // namespace
 
+int HeaderColumn(std::string_view header, std::string_view name) {
+  int column = 0;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = std::min(header.find_first_of(",\n", start), header.size());
+    if (header.substr(start, end - start) == name) return column;
+    if (end >= header.size() || header[end] == '\n') return -1;
+    start = end + 1;
+    ++column;
+  }
+}
+
+std::size_t CellStart(std::string_view row, int column) {
+  std::size_t start = 0;
+  for (int c = 0; c < column; ++c) {
+    start = row.find(',', start);
+    if (start == std::string_view::npos) return start;
+    start += 1;
+  }
+  return start;
+}
+
+std::string_view RowCell(std::string_view row, int column) {
+  const std::size_t start = CellStart(row, column);
+  if (start == std::string_view::npos) return {};
+  return row.substr(start, row.find(',', start) - start);
+}
+
 std::unique_ptr<std::ifstream> OpenShardStream(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {

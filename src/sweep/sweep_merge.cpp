@@ -15,36 +15,6 @@ namespace {
 // orbits, far below what a damaged `orbits` cell could make the join wait for.
 constexpr std::int64_t kMaxOrbitRows = std::int64_t{1} << 20;
 
-// The index of column `name` of the header line, -1 when it has none.
-int Column(const std::string& header, const char* name) {
-  int column = 0;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t end = std::min(header.find_first_of(",\n", start), header.size());
-    if (header.compare(start, end - start, name) == 0) return column;
-    if (end >= header.size() || header[end] == '\n') return -1;
-    start = end + 1;
-    ++column;
-  }
-}
-
-// Where cell `column` of `row` begins (npos when the row has fewer cells).
-std::size_t CellStart(const std::string& row, int column) {
-  std::size_t start = 0;
-  for (int c = 0; c < column; ++c) {
-    start = row.find(',', start);
-    if (start == std::string::npos) return start;
-    start += 1;
-  }
-  return start;
-}
-
-std::string Cell(const std::string& row, int column) {
-  const std::size_t start = CellStart(row, column);
-  if (start == std::string::npos) return "";
-  return row.substr(start, row.find(',', start) - start);
-}
-
 // Robot mode (docs/model.md section 8): a point has one row per periodic orbit, each with the
 // point's grid values, then `orbits` (their count) and `orbit` (1 .. orbits); a point without
 // orbit has one row with orbits = 0 and an empty orbit cell. Without these columns a point has
@@ -72,8 +42,8 @@ std::int64_t CopyPoint(detail::ShardFile& s, std::int64_t point, const RobotColu
     s.Advance();
     return 1;
   }
-  const std::string count = Cell(s.next, c.orbits);
-  const std::size_t grid_end = CellStart(s.next, c.orbits);
+  const std::string count(detail::RowCell(s.next, c.orbits));
+  const std::size_t grid_end = detail::CellStart(s.next, c.orbits);
   const std::string grid = grid_end == std::string::npos ? s.next : s.next.substr(0, grid_end);
   std::int64_t orbits = 0;
   try {
@@ -92,8 +62,8 @@ std::int64_t CopyPoint(detail::ShardFile& s, std::int64_t point, const RobotColu
           s.path, point, k - 1, rows, orbits));
     }
     const std::string expected = orbits == 0 ? std::string() : std::to_string(k);
-    if (s.next.compare(0, grid.size(), grid) != 0 || Cell(s.next, c.orbits) != count ||
-        Cell(s.next, c.orbit) != expected) {
+    if (s.next.compare(0, grid.size(), grid) != 0 || detail::RowCell(s.next, c.orbits) != count ||
+        detail::RowCell(s.next, c.orbit) != expected) {
       throw std::invalid_argument(fmt::format(
           "shard file {} point {} row {} '{}' is invalid: expected orbit = {} of its orbits = "
           "{} rows, with the point's grid values (a row lost, repeated or moved)",
@@ -111,7 +81,7 @@ MergeSummary MergeSweepShards(const std::vector<std::string>& paths, const std::
   std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "points", output);
   const detail::ShardFile& first = shards.front();
   const std::int64_t n = first.n;
-  const RobotColumns columns{Column(first.header, "orbits"), Column(first.header, "orbit")};
+  const RobotColumns columns{detail::HeaderColumn(first.header, "orbits"), detail::HeaderColumn(first.header, "orbit")};
 
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();

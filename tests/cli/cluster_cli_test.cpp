@@ -701,11 +701,35 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
   EXPECT_TRUE(ReadFile(killed + ".checkpoint") == checkpoint);
   std::ofstream(summary + ".checkpoint", std::ios::binary) << summary_checkpoint;
   ++checked;
-  EXPECT_EQ(checked, 5);
+  // A checkpoint whose partial file is gone: named, no empty partial file made.
+  std::filesystem::rename(summary + ".partial", summary + ".kept");
+  const CommandResult lost = RunCli(SlowBifurcationShard("1/3", killed, " --resume") + " 2>&1");
+  EXPECT_EQ(lost.status, 2);
+  EXPECT_NE(lost.out.find("capsubot bifurcation: error: resume: " + summary +
+                          ".partial is missing, but its checkpoint " + summary +
+                          ".checkpoint says it holds "),
+            std::string::npos)
+      << lost.out;
+  EXPECT_FALSE(std::filesystem::exists(summary + ".partial"));
+  EXPECT_TRUE(ReadFile(killed + ".partial") == partial);
+  std::filesystem::rename(summary + ".kept", summary + ".partial");
+  ++checked;
+  EXPECT_EQ(checked, 6);
   const CommandResult resumed =
       RunCli(SlowBifurcationShard("1/3", killed, " --resume --threads 2"));
   ASSERT_EQ(resumed.status, 0) << resumed.out;
   EXPECT_NE(resumed.out.find(" resumed from the checkpoint)"), std::string::npos) << resumed.out;
+  // The line counts the rows of the whole files, those of the resumed parts too.
+  const auto rows = [](const std::string& text) {
+    std::istringstream in(text);
+    long count = -1;  // the header
+    for (std::string line; std::getline(in, line);) count += line.rfind('#', 0) == 0 ? 0 : 1;
+    return std::to_string(count);
+  };
+  EXPECT_NE(resumed.out.find(": " + rows(ReadFile(reference)) + " impacts written to " + killed +
+                             ", " + rows(ReadFile(reference + ".summary")) + " summary rows to "),
+            std::string::npos)
+      << resumed.out;
   EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed impacts differ";
   EXPECT_TRUE(ReadFile(summary) == ReadFile(reference + ".summary")) << "resumed summary differs";
   for (const std::string& file : {killed, summary}) {

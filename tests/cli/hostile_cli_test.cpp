@@ -302,6 +302,16 @@ std::vector<Case> Cases() {
        "shard file b0.csv start 1 (x0 = 0.16666666666666666, psi = 0) is invalid: expected "
        "start 2 of the map's 3 x 2 grid, x0 = 0.5",
        {"b0.csv", "b1.csv"}, BasinShardsSetup() + " && sed -i '4h;5g' b0.csv"},
+      // Parts of a bifurcation shard moved within it: named as such, not as missing.
+      {"MergeBifurcationPartsReordered",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv holds part 0 of 4 after part 2: expected its parts in increasing order",
+       {"s0.csv", "s1.csv"},
+       "printf '# shard 0/2 of 2 continuations\\nparam,direction\\n# part 2 of 4: 1 rows\\n"
+       "0.1,up\\n# part 0 of 4: 1 rows\\n0.2,up\\n' > s0.csv && printf '# shard 1/2 of 2 "
+       "continuations\\nparam,direction\\n# part 1 of 4: 1 rows\\n0.3,down\\n# part 3 of "
+       "4: 1 rows\\n0.4,down\\n' > s1.csv"},
       // A state beyond double precision ends the simulation with an error, no file.
       {"SimulateHugeV0",
        "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 "
@@ -464,7 +474,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 102;
+constexpr int kCaseCount = 103;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
