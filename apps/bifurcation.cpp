@@ -84,13 +84,13 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   // before the processes of an MPI job meet: bad input fails at once, before any file is
   // touched.
   ValidateBifurcation(forcing, opt.robot.params, alpha, o);
-  Ranks ranks;           // under mpirun: rank 0 runs the study, the others compute its parts
+  Ranks ranks;  // under mpirun: rank 0 runs the study, the others compute its parts
   if (ranks.worker()) {
     return ranks.Serve(BifurcationBlocks(forcing, opt.robot.params, alpha, o), o.threads);
   }
   const std::string study = fmt::format(
-      "bifurcation diagram over {} = {} .. {} ({} values, {}){}", opt.param, o.from, o.to,
-      o.steps, opt.direction,
+      "bifurcation diagram over {} = {} .. {} ({} values, {}){}", opt.param, o.from, o.to, o.steps,
+      opt.direction,
       two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string());
   const auto summary_note = [&](std::int64_t rows) {
     return opt.summary.empty() ? std::string()

@@ -12,9 +12,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -298,12 +298,15 @@ std::string GaitCells(const Gait& g) {
 // contents of one file differ; `--g 9.81` typed or left to its default, `--m1 0.20` or
 // `--m1 0.2` are alike), and it is the provenance of the same command given without the file.
 Provenance WithSettings(Provenance p, const CLI::App& cmd, const DesignConfigOptions& config,
-                            const std::vector<std::pair<std::string, std::string>>& settings) {
+                        const std::vector<std::pair<std::string, std::string>>& settings) {
   std::set<std::string> typed = {"--config"};
-  for (const CLI::Option* option : config.options) typed.insert("--" + option->get_lnames().front());
-  p.options.erase(std::remove_if(p.options.begin(), p.options.end(),
-                                 [&typed](const auto& option) { return typed.count(option.first); }),
-                  p.options.end());
+  for (const CLI::Option* option : config.options) {
+    typed.insert("--" + option->get_lnames().front());
+  }
+  p.options.erase(
+      std::remove_if(p.options.begin(), p.options.end(),
+                     [&typed](const auto& option) { return typed.count(option.first) > 0; }),
+      p.options.end());
   std::map<std::string, std::size_t> rank;  // long name -> declaration index
   for (const CLI::Option* option : cmd.get_options()) {
     if (!option->get_lnames().empty())
@@ -331,8 +334,7 @@ std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd,
                          opt.config.options.end();
     if (!setting && name != "--config" && name != "--grid") exclude.push_back(name);
   }
-  return WithSettings(CommandProvenance(cmd, exclude), cmd, opt.config, settings)
-      .CommandLine();
+  return WithSettings(CommandProvenance(cmd, exclude), cmd, opt.config, settings).CommandLine();
 }
 
 int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
@@ -385,8 +387,8 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.json) {
     nlohmann::json j = json::DesignJson(r);
     if (with_from_rest) j["from_rest_best"] = json::FromRestBestJson(input, from_rest);
-    j["provenance"] = WithSettings(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))),
-                                       cmd, opt.config, settings)
+    j["provenance"] = WithSettings(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))), cmd,
+                                   opt.config, settings)
                           .Json();
     fmt::print("{}\n", j.dump());
   } else {

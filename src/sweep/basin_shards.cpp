@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string_view>
 
@@ -77,8 +77,8 @@ std::string GridMismatch(const std::vector<PhaseState>& starts, bool u0, std::si
                          std::size_t s) {
   const std::size_t n_x = starts.size() / n_y, i = s / n_y, j = s % n_y;
   if (i >= n_x) return fmt::format("{} starts, a multiple of {}", starts.size(), n_y);
-  const PhaseState grid = GridStart(static_cast<int>(i), static_cast<int>(j),
-                                    static_cast<int>(n_x), static_cast<int>(n_y));
+  const PhaseState grid = GridStart(static_cast<int>(i), static_cast<int>(j), static_cast<int>(n_x),
+                                    static_cast<int>(n_y));
   if (starts[s].x != grid.x) return "x0 = " + FormatNumber(grid.x);
   if (!u0 && starts[s].psi != grid.psi) return "psi = " + FormatNumber(grid.psi);
   if (u0 && starts[s].u != ColumnU(starts, n_y, j)) {

@@ -110,11 +110,11 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
   try {
     for (const ShardTarget& t : targets) {
       // A part is its part line and its rows; a shard has at most the study's parts.
-      const detail::PointRows parts{BifurcationParts(options),
-                                    [](std::string_view row) { return row.rfind("# part ", 0) == 0; }};
-      open.push_back(std::make_unique<detail::SweepFile>(t.path, t.description, t.head, parts,
-                                                         files.resume, files.checkpoint_seconds,
-                                                         "shard"));
+      const detail::PointRows parts{BifurcationParts(options), [](std::string_view row) {
+                                      return row.rfind("# part ", 0) == 0;
+                                    }};
+      open.push_back(std::make_unique<detail::SweepFile>(
+          t.path, t.description, t.head, parts, files.resume, files.checkpoint_seconds, "shard"));
     }
   } catch (...) {
     // A file that holds no part yet is no use to a resume: no stray partial file.

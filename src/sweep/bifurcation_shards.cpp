@@ -79,9 +79,9 @@ PartLine ReadPart(detail::ShardFile& s) {
   }
   std::string positions;
   for (std::size_t k = 0; k < shards.size(); ++k) {
-    positions += fmt::format("{}{} at {}", positions.empty() ? "" : ", ", shards[k].path,
-                             at[k].part < 0 ? std::string("its end")
-                                            : fmt::format("part {}", at[k].part));
+    positions +=
+        fmt::format("{}{} at {}", positions.empty() ? "" : ", ", shards[k].path,
+                    at[k].part < 0 ? std::string("its end") : fmt::format("part {}", at[k].part));
   }
   throw std::invalid_argument(fmt::format(
       "shard files: part {} of {} is in none of them ({}): expected every part in one file (a "

@@ -26,9 +26,10 @@ PointRows GridPointRows(const GridRun& run) {
   PointRows rows;
   rows.points = run.points;
   const std::string_view header(run.header);
-  const std::size_t names = header.rfind('\n', header.size() - std::min<std::size_t>(header.size(), 2));
-  const int orbit = HeaderColumn(names == std::string_view::npos ? header : header.substr(names + 1),
-                                 "orbit");
+  const std::size_t names =
+      header.rfind('\n', header.size() - std::min<std::size_t>(header.size(), 2));
+  const int orbit =
+      HeaderColumn(names == std::string_view::npos ? header : header.substr(names + 1), "orbit");
   if (orbit >= 0) {
     rows.starts_point = [orbit](std::string_view row) {
       const std::string_view cell = RowCell(row, orbit);

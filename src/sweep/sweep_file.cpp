@@ -99,9 +99,11 @@ class PointCounter {
   void Add(const char* data, std::size_t size) {
     for (std::size_t i = 0; i < size;) {
       const void* found = std::memchr(data + i, '\n', size - i);
-      const std::size_t end =
-          found != nullptr ? static_cast<std::size_t>(static_cast<const char*>(found) - data) : size;
-      line_.append(data + i, std::min(end - i, kMaxLineBytes - std::min(line_.size(), kMaxLineBytes)));
+      const std::size_t end = found != nullptr
+                                  ? static_cast<std::size_t>(static_cast<const char*>(found) - data)
+                                  : size;
+      line_.append(data + i,
+                   std::min(end - i, kMaxLineBytes - std::min(line_.size(), kMaxLineBytes)));
       if (found == nullptr) return;
       ++row_count_;
       if (!rows_.starts_point || rows_.starts_point(line_)) ++point_count_;

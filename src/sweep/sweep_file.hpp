@@ -54,7 +54,7 @@ class SweepFile {
   std::int64_t points_done() const { return points_; }  ///< complete grid points in the file
   /// Rows after the header taken over from the checkpoint (0 without a resume).
   std::int64_t rows_resumed() const { return rows_resumed_; }
-  bool direct() const { return direct_; }               ///< written in place (no resume)
+  bool direct() const { return direct_; }  ///< written in place (no resume)
 
   /// Appends the rows of `points` complete grid points; starts a checkpoint of every row
   /// appended when the last one began checkpoint_seconds ago or more (after waiting for that
@@ -92,8 +92,8 @@ class SweepFile {
   std::string partial_, checkpoint_, description_;
   std::string written_;  // the file written: partial_, or the output itself when direct
   int fd_ = -1;
-  bool direct_ = false;         // written in place: no partial file, no checkpoint
-  std::int64_t points_ = 0;     // complete points written
+  bool direct_ = false;      // written in place: no partial file, no checkpoint
+  std::int64_t points_ = 0;  // complete points written
   std::int64_t rows_resumed_ = 0;
   std::int64_t bytes_ = 0;      // bytes written
   std::int64_t writeback_ = 0;  // bytes the disk was asked to write (sync_file_range)

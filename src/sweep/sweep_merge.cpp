@@ -81,7 +81,8 @@ MergeSummary MergeSweepShards(const std::vector<std::string>& paths, const std::
   std::vector<detail::ShardFile> shards = detail::OpenShardSet(paths, "points", output);
   const detail::ShardFile& first = shards.front();
   const std::int64_t n = first.n;
-  const RobotColumns columns{detail::HeaderColumn(first.header, "orbits"), detail::HeaderColumn(first.header, "orbit")};
+  const RobotColumns columns{detail::HeaderColumn(first.header, "orbits"),
+                             detail::HeaderColumn(first.header, "orbit")};
 
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();

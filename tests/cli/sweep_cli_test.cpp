@@ -569,13 +569,16 @@ TEST(SweepCli, ACheckpointWithAWrongPointCountIsRefused) {
   std::remove((out + ".partial").c_str());
   const Outcome r = RunCli(args + " -o " + out + " --resume", dir.File("log3"));
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_EQ(r.output, "capsubot sweep: error: --resume: " + out + ".partial is missing, but its "
-                      "checkpoint " + out + ".checkpoint says it holds " + std::to_string(points) +
-                      " points (" + checkpoint.substr(checkpoint.find("bytes ") + 6,
-                                                       checkpoint.find('\n', checkpoint.find(
-                                                           "bytes ")) - checkpoint.find("bytes ") - 6) +
-                      " bytes): expected the partial file of the interrupted sweep beside its "
-                      "checkpoint (delete the checkpoint to start the sweep again)\n");
+  EXPECT_EQ(r.output, "capsubot sweep: error: --resume: " + out +
+                          ".partial is missing, but its "
+                          "checkpoint " +
+                          out + ".checkpoint says it holds " + std::to_string(points) +
+                          " points (" +
+                          checkpoint.substr(checkpoint.find("bytes ") + 6,
+                                            checkpoint.find('\n', checkpoint.find("bytes ")) -
+                                                checkpoint.find("bytes ") - 6) +
+                          " bytes): expected the partial file of the interrupted sweep beside its "
+                          "checkpoint (delete the checkpoint to start the sweep again)\n");
   EXPECT_FALSE(Exists(out + ".partial"));
 }
 
