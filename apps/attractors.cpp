@@ -63,16 +63,16 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
       fmt::format("attractors from rest: {} starts ({} x0 x {} phases), {} + {} periods\n",
                   a.starts, n_x, n_psi, mo.transient, mo.record);
   t += fmt::format("  force          {}\n", ForceFormula(forcing));
-  t += fmt::format("  model          T0 = {:g}, e = {:g}, alpha = {:.10g}\n", opt.robot.params.T0,
+  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", opt.robot.params.T0,
                    opt.robot.params.e, opt.robot.alpha);
   int k = 0;
   for (const Attractor& at : a.attractors) {
-    t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13.10g} {}{}\n", ++k,
-                     100.0 * at.fraction, at.mean_velocity, AttractorWords(at, mo.max_period),
+    t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13} {}{}\n", ++k,
+                     100.0 * at.fraction, Num(at.mean_velocity, 10), AttractorWords(at, mo.max_period),
                      at.one_impact_orbit ? "  (the analytic one-impact orbit)" : "");
     t += fmt::format("      e.g. from x0 = {:.6g}, psi = {:.6g}\n", at.example.x, at.example.psi);
   }
-  t += fmt::format("  mean velocity over the starts: {:.10g} (omega L)", a.mean_velocity);
+  t += fmt::format("  mean velocity over the starts: {} (omega L)", Num(a.mean_velocity, 10));
   if (a.event_limit_starts > 0) {
     t += fmt::format(", {} starts hit the work bound and are left out", a.event_limit_starts);
   }

@@ -42,8 +42,8 @@ struct BasinsCommandOptions {
 };
 
 std::string Legend(const Attractor& a, int max_period) {
-  return fmt::format("{:.1f} %: {}, mean velocity {:.4g}", 100.0 * a.fraction,
-                     AttractorWords(a, max_period), a.mean_velocity);
+  return fmt::format("{:.1f} %: {}, mean velocity {}", 100.0 * a.fraction,
+                     AttractorWords(a, max_period), Num(a.mean_velocity, 4));
 }
 
 // Draws the map with gnuplot into a temporary file beside `path`, then renames it.
@@ -103,7 +103,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
     throw std::invalid_argument(
         fmt::format("--plane = {} is invalid: expected x0-psi or x0-u0", opt.plane));
   }
-  if (x0_u0 && !(opt.u_min < opt.u_max)) {
+  if (!(opt.u_min < opt.u_max)) {  // also in the x0-psi plane: never accepted unchecked
     throw std::invalid_argument(fmt::format(
         "--u-min = {} and --u-max = {} are invalid: expected u-min < u-max", opt.u_min, opt.u_max));
   }

@@ -75,14 +75,22 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   if (std::isnan(alpha)) {
     throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
   }
-  Ranks ranks;           // under mpirun: rank 0 runs the study, the others compute its parts
-  if (ranks.worker()) {  // rank 0 validates
+  if (o.from == o.to) {  // one value: no diagram (and "up" and "down" would be the same)
+    throw std::invalid_argument(fmt::format(
+        "--to = {} is invalid with --from = {}: expected a range, --to other than --from",
+        FormatNumber(o.to), FormatNumber(o.from)));
+  }
+  // Every rank checks the whole study (both ends of the range at every robot, a bad --shard)
+  // before the processes of an MPI job meet: bad input fails at once, before any file is
+  // touched.
+  ValidateBifurcation(forcing, opt.robot.params, alpha, o);
+  Ranks ranks;  // under mpirun: rank 0 runs the study, the others compute its parts
+  if (ranks.worker()) {
     return ranks.Serve(BifurcationBlocks(forcing, opt.robot.params, alpha, o), o.threads);
   }
-  o.Validate();  // a bad --shard fails here, before any file is touched
   const std::string study = fmt::format(
-      "bifurcation diagram over {} = {:g} .. {:g} ({} values, {}){}", opt.param, o.from, o.to,
-      o.steps, opt.direction,
+      "bifurcation diagram over {} = {} .. {} ({} values, {}){}", opt.param, o.from, o.to, o.steps,
+      opt.direction,
       two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string());
   const auto summary_note = [&](std::int64_t rows) {
     return opt.summary.empty() ? std::string()

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -291,22 +292,27 @@ std::string GaitCells(const Gait& g) {
   return fmt::format("{}", fmt::join(cells, ","));
 }
 
-// `p` (a provenance of `cmd`) with --config FILE replaced by the settings the file supplied,
-// as flags in their place among the others (declaration order): the provenance names the
-// robot itself (two contents of one file differ), and it is the provenance of the same
-// command given without the file.
-Provenance WithConfigValues(Provenance p, const CLI::App& cmd,
-                            const std::vector<std::pair<std::string, std::string>>& config_flags) {
-  const auto config = std::find_if(p.options.begin(), p.options.end(),
-                                   [](const auto& option) { return option.first == "--config"; });
-  if (config == p.options.end()) return p;
-  p.options.erase(config);
+// `p` (a provenance of `cmd`) with --config FILE and the settings' flags as typed replaced by
+// the value of every setting of the input (`settings`, BuildDesignInput), as flags in their
+// place among the others (declaration order): the provenance names the robot itself (two
+// contents of one file differ; `--g 9.81` typed or left to its default, `--m1 0.20` or
+// `--m1 0.2` are alike), and it is the provenance of the same command given without the file.
+Provenance WithSettings(Provenance p, const CLI::App& cmd, const DesignConfigOptions& config,
+                        const std::vector<std::pair<std::string, std::string>>& settings) {
+  std::set<std::string> typed = {"--config"};
+  for (const CLI::Option* option : config.options) {
+    typed.insert("--" + option->get_lnames().front());
+  }
+  p.options.erase(
+      std::remove_if(p.options.begin(), p.options.end(),
+                     [&typed](const auto& option) { return typed.count(option.first) > 0; }),
+      p.options.end());
   std::map<std::string, std::size_t> rank;  // long name -> declaration index
   for (const CLI::Option* option : cmd.get_options()) {
     if (!option->get_lnames().empty())
       rank.emplace("--" + option->get_lnames().front(), rank.size());
   }
-  for (const auto& flag : config_flags) {
+  for (const auto& flag : settings) {
     const auto at = std::upper_bound(
         p.options.begin(), p.options.end(), rank.at(flag.first),
         [&rank](std::size_t r, const auto& option) { return r < rank.at(option.first); });
@@ -319,7 +325,7 @@ Provenance WithConfigValues(Provenance p, const CLI::App& cmd,
 // not the options of the from-rest search (a grid does not run it) nor those of how or where
 // the file is computed (--threads, -o, --shard, --resume).
 std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd,
-                           const std::vector<std::pair<std::string, std::string>>& config_flags) {
+                           const std::vector<std::pair<std::string, std::string>>& settings) {
   std::vector<std::string> exclude;
   for (const CLI::Option* option : cmd.get_options()) {
     if (option->get_lnames().empty()) continue;
@@ -328,20 +334,20 @@ std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd,
                          opt.config.options.end();
     if (!setting && name != "--config" && name != "--grid") exclude.push_back(name);
   }
-  return WithConfigValues(CommandProvenance(cmd, exclude), cmd, config_flags).CommandLine();
+  return WithSettings(CommandProvenance(cmd, exclude), cmd, opt.config, settings).CommandLine();
 }
 
 int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   DesignGridOptions o;
   for (const std::string& spec : opt.grids) o.axes.push_back(ParseDesignGridAxis(spec));
-  std::vector<std::pair<std::string, std::string>> config_flags;
-  o.input = BuildDesignInput(opt.config, o.axes, &config_flags);
+  std::vector<std::pair<std::string, std::string>> settings;
+  o.input = BuildDesignInput(opt.config, o.axes, &settings);
   if (opt.output.empty()) {
     throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
   }
   o.columns = GaitColumns();
   o.row = GaitCells;
-  o.comments.push_back(GridProvenance(opt, cmd, config_flags));
+  o.comments.push_back(GridProvenance(opt, cmd, settings));
   o.output = opt.output;
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   o.resume = opt.resume;
@@ -367,8 +373,8 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   RejectUnusedOptions(opt, cmd);
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
-  std::vector<std::pair<std::string, std::string>> config_flags;
-  const DesignInput input = BuildDesignInput(opt.config, {}, &config_flags);
+  std::vector<std::pair<std::string, std::string>> settings;
+  const DesignInput input = BuildDesignInput(opt.config, {}, &settings);
   const DesignProgress progress = TerminalProgress("robots");
   const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
@@ -381,8 +387,8 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.json) {
     nlohmann::json j = json::DesignJson(r);
     if (with_from_rest) j["from_rest_best"] = json::FromRestBestJson(input, from_rest);
-    j["provenance"] = WithConfigValues(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))),
-                                       cmd, config_flags)
+    j["provenance"] = WithSettings(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))), cmd,
+                                   opt.config, settings)
                           .Json();
     fmt::print("{}\n", j.dump());
   } else {

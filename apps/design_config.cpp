@@ -31,30 +31,54 @@ struct Setting {
   Kind kind;
   const char* help;
   void (*set)(DesignInput&, const Value&);
+  /// The value of the input (defaults, file and flags resolved); false when it has none
+  /// (an alternative is used, or a default that depends on another setting).
+  bool (*get)(const DesignInput&, Value&);
 };
+
+// Getters of Setting::get.
+template <double DesignInput::*field>
+bool GetNumber(const DesignInput& in, Value& v) {
+  v.number = in.*field;
+  return !std::isnan(v.number);
+}
+
+bool GetRange(double lo, double hi, Value& v) {
+  v.lo = lo;
+  v.hi = hi;
+  return !std::isnan(lo) && !std::isnan(hi) && lo != hi;
+}
 
 // Each setting once: its name serves the flag and the file. Several settings write the same
 // field where they are alternatives (frequency or frequency-range, amplitude or Fourier).
 const Setting kSettings[] = {
     {"m1", Kind::kNumber, "shell mass m1 [kg], > 0",
-     [](DesignInput& in, const Value& v) { in.m1 = v.number; }},
+     [](DesignInput& in, const Value& v) { in.m1 = v.number; }, GetNumber<&DesignInput::m1>},
     {"L", Kind::kNumber, "free gap L of the inner body between the walls [m], > 0",
-     [](DesignInput& in, const Value& v) { in.L = v.number; }},
+     [](DesignInput& in, const Value& v) { in.L = v.number; }, GetNumber<&DesignInput::L>},
     {"mu", Kind::kNumber, "friction coefficient mu of the shell on the floor, > 0",
-     [](DesignInput& in, const Value& v) { in.mu = v.number; }},
+     [](DesignInput& in, const Value& v) { in.mu = v.number; }, GetNumber<&DesignInput::mu>},
     {"g", Kind::kNumber, "gravity g [m/s^2], > 0 (default 9.81)",
-     [](DesignInput& in, const Value& v) { in.g = v.number; }},
+     [](DesignInput& in, const Value& v) { in.g = v.number; }, GetNumber<&DesignInput::g>},
     {"e", Kind::kNumber, "coefficient of restitution e of the impacts, 0 <= e <= 1",
-     [](DesignInput& in, const Value& v) { in.e = v.number; }},
+     [](DesignInput& in, const Value& v) { in.e = v.number; }, GetNumber<&DesignInput::e>},
     {"force-amplitude", Kind::kNumber,
      "amplitude A_N [N] of the motor force F_N = A_N sin(omega t + phase) + c_N, >= 0",
      [](DesignInput& in, const Value& v) {
        in.force.amplitude = v.number;
        in.force.cos.clear();
        in.force.sin.clear();
+     },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.force.amplitude;
+       return !in.force.fourier() && !std::isnan(v.number);
      }},
     {"force-bias", Kind::kNumber, "mean c_N [N] of the motor force, >= 0",
-     [](DesignInput& in, const Value& v) { in.force.bias = v.number; }},
+     [](DesignInput& in, const Value& v) { in.force.bias = v.number; },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.force.bias;
+       return !std::isnan(v.number);
+     }},
     {"force-cos", Kind::kList,
      "Fourier motor force instead of the amplitude: cosine coefficients [N] of "
      "F_N = c_N + sum_k (a_k cos k s + b_k sin k s), s = omega t + phase (as many as "
@@ -62,40 +86,64 @@ const Setting kSettings[] = {
      [](DesignInput& in, const Value& v) {
        in.force.cos = v.list;
        in.force.amplitude = DesignInput::kNaN;
+     },
+     [](const DesignInput& in, Value& v) {
+       v.list = in.force.cos;
+       return !v.list.empty();
      }},
     {"force-sin", Kind::kList, "Fourier motor force: sine coefficients b_1,...,b_K [N]",
      [](DesignInput& in, const Value& v) {
        in.force.sin = v.list;
        in.force.amplitude = DesignInput::kNaN;
+     },
+     [](const DesignInput& in, Value& v) {
+       v.list = in.force.sin;
+       return !v.list.empty();
      }},
     {"frequency", Kind::kNumber, "motor frequency f [Hz], > 0",
-     [](DesignInput& in, const Value& v) { in.frequency_min = in.frequency_max = v.number; }},
+     [](DesignInput& in, const Value& v) { in.frequency_min = in.frequency_max = v.number; },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.frequency_min;
+       return !std::isnan(v.number) && in.frequency_min == in.frequency_max;
+     }},
     {"frequency-range", Kind::kRange,
      "search the motor frequency too, over FMIN:FMAX [Hz] (instead of frequency)",
      [](DesignInput& in, const Value& v) {
        in.frequency_min = v.lo;
        in.frequency_max = v.hi;
+     },
+     [](const DesignInput& in, Value& v) {
+       return GetRange(in.frequency_min, in.frequency_max, v);
      }},
     {"m2-range", Kind::kRange, "inner masses searched, M2MIN:M2MAX [kg] (default 0.01 m1:10 m1)",
      [](DesignInput& in, const Value& v) {
        in.m2_min = v.lo;
        in.m2_max = v.hi;
-     }},
+     },
+     [](const DesignInput& in, Value& v) { return GetRange(in.m2_min, in.m2_max, v); }},
     {"margin", Kind::kNumber, "clearance d from both walls [units of L], 0 <= d < 0.5 (default 0)",
-     [](DesignInput& in, const Value& v) { in.margin = v.number; }},
+     [](DesignInput& in, const Value& v) { in.margin = v.number; },
+     GetNumber<&DesignInput::margin>},
     {"margin-stroke", Kind::kNumber,
      "clearance d_s from both walls [units of the stroke 1 - x_min], >= 0 (default 0.02)",
-     [](DesignInput& in, const Value& v) { in.margin_stroke = v.number; }},
+     [](DesignInput& in, const Value& v) { in.margin_stroke = v.number; },
+     GetNumber<&DesignInput::margin_stroke>},
     {"stick-margin", Kind::kNumber,
      "stick margin s: |F| <= (1-s) T0 while the shell rests, 0 <= s < 1 (default 0.02)",
-     [](DesignInput& in, const Value& v) { in.stick_margin = v.number; }},
+     [](DesignInput& in, const Value& v) { in.stick_margin = v.number; },
+     GetNumber<&DesignInput::stick_margin>},
     {"rho-max", Kind::kBound,
      "largest admissible multiplier modulus of the gait, > 0; inf: no stability requirement "
      "(default 0.9)",
-     [](DesignInput& in, const Value& v) { in.rho_max = v.number; }},
+     [](DesignInput& in, const Value& v) { in.rho_max = v.number; },
+     GetNumber<&DesignInput::rho_max>},
     {"scan-points", Kind::kInteger,
      "log-spaced samples of each searched variable before the refinement, >= 3 (default 64)",
-     [](DesignInput& in, const Value& v) { in.scan_points = static_cast<int>(v.number); }},
+     [](DesignInput& in, const Value& v) { in.scan_points = static_cast<int>(v.number); },
+     [](const DesignInput& in, Value& v) {
+       v.number = in.scan_points;
+       return true;
+     }},
 };
 constexpr int kSettingCount = static_cast<int>(sizeof(kSettings) / sizeof(kSettings[0]));
 
@@ -196,17 +244,153 @@ Value FromText(const Setting& s, const std::string& who, const std::string& text
   return v;
 }
 
-// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1].
+// Most characters of a key or value a message shows: the rest is cut to "...", so that a
+// huge key or value of the file makes a message of one short line.
+constexpr std::size_t kShownChars = 60;
+
+// `text` cut to kShownChars characters and "...".
+std::string Clip(std::string text) {
+  if (text.size() > kShownChars) text = text.substr(0, kShownChars) + "...";
+  return text;
+}
+
+// A value as written in the file, numbers in shortest round-trip form: 0.1, 'abc', [0.5, 1],
+// {a = 0.3}; cut once longer than a message shows (the file's nesting is bounded by
+// RequireTomlDepth, so is this recursion).
 std::string Show(const toml::node& node) {
+  std::string text;
+  const auto add = [&text](const std::string& item) {
+    if (text.size() <= kShownChars) text += item;
+  };
   if (const auto* array = node.as_array()) {
-    std::vector<std::string> items;
-    for (const toml::node& element : *array) items.push_back(Show(element));
-    return fmt::format("[{}]", fmt::join(items, ", "));
+    add("[");
+    for (const toml::node& element : *array) {
+      if (text.size() > 1) add(", ");
+      add(Show(element));
+    }
+    add("]");
+  } else if (const auto* table = node.as_table()) {
+    add("{");
+    for (const auto& [key, value] : *table) {
+      if (text.size() > 1) add(", ");
+      add(std::string(key.str()) + " = " + Show(value));
+    }
+    add("}");
+  } else if (node.is_floating_point()) {
+    add(FormatNumber(**node.as_floating_point()));
+  } else {
+    std::ostringstream out;
+    node.visit([&out](const auto& n) { out << n; });
+    add(out.str());
   }
-  if (node.is_floating_point()) return fmt::format("{}", **node.as_floating_point());
-  std::ostringstream out;
-  node.visit([&out](const auto& n) { out << n; });
-  return out.str();
+  return Clip(text);
+}
+
+// Nesting of a config file at the most: parts of a dotted key or table header, plus arrays
+// and inline tables around a value. The parser descends once per level: a file nested
+// thousands deep would exhaust the stack. A robot's file needs 2.
+constexpr int kMaxTomlDepth = 32;
+
+// Refuses a TOML text nested deeper than kMaxTomlDepth, scanning it before it is parsed:
+// keys' dots, headers' dots and the brackets and braces of values, outside strings and
+// comments. Tracks only what nests; the parser checks the rest of the syntax.
+void RequireTomlDepth(const std::string& text, const std::string& path) {
+  int header = 0;          // parts of the last [table] header: the depth of the keys below it
+  std::vector<int> depth;  // depth of the elements of each open array or inline table
+  std::vector<char> open;  // '[' or '{' of each
+  int value_depth = 0;     // depth of the value after the last '='
+  bool at_key = true;      // reading a key: its dots separate its parts
+  int parts = 1;
+  int line = 1;
+  const auto check = [&](int d) {
+    if (d > kMaxTomlDepth) {
+      throw std::invalid_argument(fmt::format(
+          "config file {} line {} is invalid: keys and values nested more than {} deep: "
+          "expected at most {} levels (parts of dotted keys and table headers, nested arrays "
+          "and inline tables)",
+          path, line, kMaxTomlDepth, kMaxTomlDepth));
+    }
+  };
+  const auto context = [&] { return depth.empty() ? header : depth.back(); };
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  // Moves past the string that starts at i (basic or literal, one line or several).
+  const auto skip_string = [&] {
+    const char quote = text[i];
+    const bool multi = text.compare(i, 3, std::string(3, quote)) == 0;
+    i += multi ? 3 : 1;
+    while (i < n) {
+      if (text[i] == '\n') ++line;
+      if (quote == '"' && text[i] == '\\') {
+        i += 2;
+        continue;
+      }
+      if (text[i] == quote && (!multi || text.compare(i, 3, std::string(3, quote)) == 0)) {
+        i += multi ? 3 : 1;
+        return;
+      }
+      if (text[i] == '\n' && !multi) return;
+      ++i;
+    }
+  };
+  while (i < n) {
+    const char c = text[i];
+    if (c == '#') {
+      while (i < n && text[i] != '\n') ++i;
+    } else if (c == '"' || c == '\'') {
+      skip_string();
+    } else if (c == '\n') {
+      ++line;
+      ++i;
+      if (open.empty()) {
+        at_key = true;
+        parts = 1;
+      }
+    } else if (at_key && open.empty() && c == '[') {  // a [table] or [[array]] header
+      int header_parts = 1;
+      for (++i; i < n && text[i] != ']' && text[i] != '\n';) {
+        if (text[i] == '"' || text[i] == '\'') {
+          skip_string();
+          continue;
+        }
+        if (text[i] == '.') check(++header_parts);
+        ++i;
+      }
+      header = header_parts;
+      while (i < n && text[i] == ']') ++i;
+    } else if (at_key && c == '}' && !open.empty() && open.back() == '{') {  // {} or {a = 1,}
+      depth.pop_back();
+      open.pop_back();
+      at_key = false;
+      ++i;
+    } else if (at_key) {
+      if (c == '.') check(context() + ++parts);
+      if (c == '=') {
+        at_key = false;
+        value_depth = context() + parts;
+        check(value_depth);
+      }
+      ++i;
+    } else {
+      if (c == '[' || c == '{') {
+        const int d = (!open.empty() && open.back() == '[' ? depth.back() : value_depth) + 1;
+        check(d);
+        depth.push_back(d);
+        open.push_back(c);
+        if (c == '{') {
+          at_key = true;
+          parts = 1;
+        }
+      } else if ((c == ']' || c == '}') && !open.empty()) {
+        depth.pop_back();
+        open.pop_back();
+      } else if (c == ',' && !open.empty() && open.back() == '{') {
+        at_key = true;
+        parts = 1;
+      }
+      ++i;
+    }
+  }
 }
 
 // A setting's value from the config file: numbers as TOML numbers, lists and ranges as arrays
@@ -314,12 +498,12 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
 }
 
 DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<DesignGridAxis>& grid,
-                             std::vector<std::pair<std::string, std::string>>* config_flags) {
+                             std::vector<std::pair<std::string, std::string>>* settings) {
   DesignInput in;
   std::set<std::string> given;
-  std::vector<std::pair<int, Value>> file_values;  // the settings of the file, as read
   if (!o.config.empty()) {
     const std::string text = ReadTextFile(o.config, "--config");
+    RequireTomlDepth(text, o.config);
     toml::table table;
     try {
       table = toml::parse(text, o.config);
@@ -333,12 +517,11 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
       const int i = Find(name);
       if (i < 0) {
         throw std::invalid_argument(
-            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", name,
+            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", Clip(name),
                         Show(node), o.config, Names()));
       }
       const Setting& s = kSettings[i];
-      file_values.emplace_back(i, FromToml(s, " in " + o.config, node));
-      s.set(in, file_values.back().second);
+      s.set(in, FromToml(s, " in " + o.config, node));
       from_file.insert(name);
     }
     CheckExclusive(from_file, "in " + o.config);
@@ -373,18 +556,6 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
     kSettings[i].set(in, v);
     given.insert(axis.name());
   }
-  if (config_flags != nullptr) {
-    std::set<std::string> replaced = from_flags;
-    for (const DesignGridAxis& axis : grid) replaced.insert(axis.name());
-    std::sort(file_values.begin(), file_values.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    config_flags->clear();
-    for (const auto& [i, value] : file_values) {
-      const Setting& s = kSettings[i];
-      if (NamedOrAlternative(replaced, s.name)) continue;
-      config_flags->emplace_back(std::string("--") + s.name, FlagText(s, value));
-    }
-  }
   for (const auto& group : kRequired) {
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;
@@ -394,7 +565,29 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
                       fmt::join(group, " or "), group.front(), group.front()));
     }
   }
+  // The default inner-mass range is 0.01 m1 .. 10 m1: where it leaves double precision, the
+  // mass the user gave is the bad input, not a range the user never gave.
+  if (std::isnan(in.m2_min) && std::isnan(in.m2_max) && std::isfinite(in.m1) &&
+      !std::isfinite(in.M2Max())) {
+    throw std::invalid_argument(
+        fmt::format("shell mass m1 = {} kg is invalid: expected m1 <= {} kg, so that the default "
+                    "inner mass range 0.01 m1:10 m1 is finite (or give m2-range)",
+                    FormatNumber(in.m1), FormatNumber(std::numeric_limits<double>::max() / 10)));
+  }
   in.Validate();
+  if (settings != nullptr) {
+    // A grid gives its settings (m2: the range searched) at every point.
+    std::set<std::string> gridded;
+    for (const DesignGridAxis& axis : grid) {
+      gridded.insert(Find(axis.name()) < 0 ? std::string("m2-range") : axis.name());
+    }
+    settings->clear();
+    for (const Setting& s : kSettings) {
+      Value v;
+      if (NamedOrAlternative(gridded, s.name) || !s.get(in, v)) continue;
+      settings->emplace_back(std::string("--") + s.name, FlagText(s, v));
+    }
+  }
   return in;
 }
 

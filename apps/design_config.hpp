@@ -28,12 +28,13 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& options);
 /// flag for it is an error). Throws std::invalid_argument (unknown key, wrong type, bad
 /// text, a missing or doubly given setting; the message names the setting, its value and the
 /// rule) or IoError (unreadable file). The input is validated (DesignInput::Validate).
-/// `config_flags` (if given) receives the settings the config file supplied as the flags that
-/// give them ({"--m1", "0.2"}, in the table's order, numbers in shortest round-trip form),
-/// without those a flag or a grid axis replaced (itself or an alternative of it): with the
-/// flags given, they make the same input without the file.
-DesignInput BuildDesignInput(
-    const DesignConfigOptions& options, const std::vector<DesignGridAxis>& grid = {},
-    std::vector<std::pair<std::string, std::string>>* config_flags = nullptr);
+/// `settings` (if given) receives the value of every setting the input has, however it was
+/// given (the file, a flag or the default), as the flag that gives it ({"--m1", "0.2"},
+/// {"--g", "9.81"}, in the table's order, numbers in shortest round-trip form), without the
+/// settings of `grid` (and their alternatives): alone they make the same input, so two runs
+/// of one input name it alike (`--g 9.81` typed or not, `--m1 0.20` or `m1 = 0.2` in a file).
+DesignInput BuildDesignInput(const DesignConfigOptions& options,
+                             const std::vector<DesignGridAxis>& grid = {},
+                             std::vector<std::pair<std::string, std::string>>* settings = nullptr);
 
 }  // namespace capsubot::app

@@ -98,6 +98,7 @@ int CheckStdout(const std::string& who, int status) {
 int main(int argc, char** argv) {
   using namespace capsubot::app;
   capsubot::InstallTempFileCleanup();
+  UseLauncherStdout();  // rank 0 under mpirun: a failed write to standard output is seen
   // Past the file size limit (ulimit -f) a write fails with EFBIG and the run says so, keeping
   // what can be resumed, instead of being killed by SIGXFSZ without a word.
   std::signal(SIGXFSZ, SIG_IGN);

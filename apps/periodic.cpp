@@ -56,7 +56,7 @@ int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
   }
   std::string t = "periodic motion by Newton shooting on the stroboscopic map\n";
   t += fmt::format("  force          {}\n", ForceFormula(forcing));
-  t += fmt::format("  model          T0 = {:g}, e = {:g}, alpha = {:.10g}\n", opt.robot.params.T0,
+  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", opt.robot.params.T0,
                    opt.robot.params.e, opt.robot.alpha);
   t += fmt::format("  status         {} (residual {:.3g} after {} Newton iterations)\n",
                    ShootingStatusName(m.status), m.residual, m.iterations);

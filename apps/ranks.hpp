@@ -20,6 +20,14 @@ int LaunchedProcesses();
 /// PMIX_RANK), known before MPI is started; 0 when started alone.
 int LaunchedRank();
 
+/// Under mpirun, rank 0's standard output is a terminal or pipe that mpirun copies to its own
+/// standard output, ignoring a write that fails there (a full disk, /dev/full): the run would
+/// say nothing and exit 0. On rank 0 of a job started by mpirun on this machine, this makes
+/// standard output mpirun's own (opened again through /proc), so that a failed write fails the
+/// run (exit 1) as it does without mpirun. Elsewhere (no launcher, another rank, a launcher that
+/// is not the parent, a standard output that is already a file) it changes nothing.
+void UseLauncherStdout();
+
 class Ranks {
  public:
   /// Joins the MPI job when this process was started by mpirun (srun) with more than one

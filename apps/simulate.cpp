@@ -153,8 +153,8 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
   }
   std::string t = "event-driven simulation\n";
   t += fmt::format("  force            {}\n", ForceFormula(forcing));
-  t += fmt::format("  model            T0 = {:g}, e = {:g}, alpha = {}\n", opt.params.T0,
-                   opt.params.e, Num(sim.alpha));
+  t += fmt::format("  model            T0 = {}, e = {}, alpha = {}\n", opt.params.T0, opt.params.e,
+                   std::isnan(sim.alpha) ? "-" : FormatNumber(sim.alpha));
   t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
                    Num(sim.v0),
                    opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");

@@ -47,8 +47,8 @@ struct BifurcationShardFiles {
 struct BifurcationShardSummary {
   int parts = 0;                  ///< parts of the shard
   int resumed = 0;                ///< of them taken over from the checkpoints (not computed again)
-  std::int64_t impacts = 0;       ///< impact rows of the parts computed by this run
-  std::int64_t summary_rows = 0;  ///< summary rows of the parts computed by this run
+  std::int64_t impacts = 0;       ///< impact rows of the impacts file (resumed ones included)
+  std::int64_t summary_rows = 0;  ///< rows of the summary file (resumed ones included)
 };
 
 /// Computes shard options.shard of the study (StreamBifurcation, its parts computed by

@@ -116,10 +116,12 @@ inline constexpr std::size_t kMaxTextFileBytes = std::size_t{1} << 20;
 bool ReadLine(std::istream& in, std::string& line, const std::string& what,
               std::size_t limit = kMaxLineBytes);
 
-/// The whole file at `path`, read only if it holds at most `limit` bytes (at most limit + 1
-/// bytes are read: a device or an endless pipe is refused too). Throws IoError "<what> <path>
-/// cannot be read: <reason>" and std::invalid_argument "<what> <path> is invalid: expected a
-/// file of at most <limit> bytes".
+/// The whole file at `path`, read only if it is a regular file of at most `limit` bytes
+/// (opened without blocking and checked first: a pipe without a writer, a device or a folder
+/// is refused before any read; at most limit + 1 bytes are read). Throws IoError "<what>
+/// <path> cannot be read: <reason>" and std::invalid_argument "<what> <path> is invalid:
+/// expected a file of at most <limit> bytes" (with ", not a pipe or device" or ", not a
+/// folder" for those).
 std::string ReadTextFile(const std::string& path, const std::string& what,
                          std::size_t limit = kMaxTextFileBytes);
 

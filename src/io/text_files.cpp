@@ -1,7 +1,10 @@
 // Bounded reads of text files: a line or a file longer than its limit is refused, so that a
 // device (/dev/zero) or a damaged file cannot make a reader hold unbounded memory.
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -51,16 +54,44 @@ bool ReadLine(std::istream& in, std::string& line, const std::string& what, std:
 }
 
 std::string ReadTextFile(const std::string& path, const std::string& what, std::size_t limit) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("{} {} cannot be read: {}", what, path, std::strerror(errno)));
-  std::string text(limit + 1, '\0');
-  in.read(&text[0], static_cast<std::streamsize>(text.size()));
-  if (in.bad()) throw IoError(fmt::format("{} {} cannot be read", what, path));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > limit) {
-    throw std::invalid_argument(
-        fmt::format("{} {} is invalid: expected a file of at most {} bytes", what, path, limit));
+  // Opened without blocking and checked before any read: a pipe without writer would block
+  // the open, a device or a pipe may never end.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    throw IoError(fmt::format("{} {} cannot be read: {}", what, path, std::strerror(errno)));
   }
+  struct stat st {};
+  const bool stated = ::fstat(fd, &st) == 0;
+  const int err = errno;
+  const auto refuse = [&](const std::string& why) {
+    ::close(fd);
+    throw std::invalid_argument(fmt::format(
+        "{} {} is invalid: expected a file of at most {} bytes{}", what, path, limit, why));
+  };
+  if (!stated) {
+    ::close(fd);
+    throw IoError(fmt::format("{} {} cannot be read: {}", what, path, std::strerror(err)));
+  }
+  if (S_ISDIR(st.st_mode)) refuse(", not a folder");
+  if (!S_ISREG(st.st_mode)) refuse(", not a pipe or device");
+  if (static_cast<std::uint64_t>(st.st_size) > limit) refuse("");
+  // At most limit + 1 bytes: a file that grew past the limit since fstat is refused too.
+  std::string text(limit + 1, '\0');
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::read(fd, &text[done], text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int read_err = errno;
+      ::close(fd);
+      throw IoError(fmt::format("{} {} cannot be read: {}", what, path, std::strerror(read_err)));
+    }
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  text.resize(done);
+  if (text.size() > limit) refuse("");
+  ::close(fd);
   return text;
 }
 

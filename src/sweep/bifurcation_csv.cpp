@@ -109,8 +109,12 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
   std::vector<std::unique_ptr<detail::SweepFile>> open;
   try {
     for (const ShardTarget& t : targets) {
+      // A part is its part line and its rows; a shard has at most the study's parts.
+      const detail::PointRows parts{BifurcationParts(options), [](std::string_view row) {
+                                      return row.rfind("# part ", 0) == 0;
+                                    }};
       open.push_back(std::make_unique<detail::SweepFile>(
-          t.path, t.description, t.head, files.resume, files.checkpoint_seconds, "shard"));
+          t.path, t.description, t.head, parts, files.resume, files.checkpoint_seconds, "shard"));
     }
   } catch (...) {
     // A file that holds no part yet is no use to a resume: no stray partial file.
@@ -126,6 +130,9 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
   BifurcationShardSummary summary;
   summary.resumed = static_cast<int>(first);
   summary.parts = summary.resumed;
+  // The rows of each file: those resumed (rows other than part lines), then those appended.
+  std::vector<std::int64_t> file_rows;
+  for (const auto& file : open) file_rows.push_back(file->rows_resumed() - file->points_done());
   std::string rows;
   StreamBifurcation(
       forcing, params, alpha, options, summary.resumed,
@@ -133,16 +140,16 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
         const std::int64_t index = summary.parts++;
         for (std::size_t k = 0; k < open.size(); ++k) {
           if (index < open[k]->points_done()) continue;  // resumed in this file
-          const std::size_t count = targets[k].rows(part);
-          rows = BifurcationPartLine(part.parts.front(), part.total_parts,
-                                     static_cast<std::int64_t>(count));
+          const auto count = static_cast<std::int64_t>(targets[k].rows(part));
+          rows = BifurcationPartLine(part.parts.front(), part.total_parts, count);
           targets[k].append(rows, part, over);
           open[k]->Append(rows.data(), rows.size(), 1);
+          file_rows[k] += count;
         }
-        summary.impacts += static_cast<std::int64_t>(part.impacts.size());
-        summary.summary_rows += static_cast<std::int64_t>(part.summary.size());
       },
       progress, backend);
+  summary.impacts = file_rows.front();
+  if (file_rows.size() > 1) summary.summary_rows = file_rows[1];
   for (const auto& file : open) file->Commit();
   return summary;
 }

@@ -212,7 +212,7 @@ void GridValues::Check(const std::string& spec, const GridDomain& domain) const 
     const double m = static_cast<double>(n - 1);
     if (spacing == GridSpacing::kLinear && (!std::isfinite(lo * m) || !std::isfinite(hi * m))) {
       Fail(spec, fmt::format("the bounds are too large for {} points: expected |lo| and |hi| "
-                             "<= {:.6g} (the values lo (n-1-i)/(n-1) + hi i/(n-1) overflow)",
+                             "<= {} (the values lo (n-1-i)/(n-1) + hi i/(n-1) overflow)",
                              n, std::numeric_limits<double>::max() / m));
     }
     if (spacing == GridSpacing::kLog && !(lo > 0.0 && hi > 0.0)) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "sweep/shard_set.hpp"
 #include "sweep/sweep_file.hpp"
 #include "sweep/sweep_rows.hpp"
 
@@ -17,6 +18,25 @@ namespace {
 std::string KeptMessage(const IoError& e, const std::string& output) {
   return fmt::format("{}; the rows done are kept in {} with its checkpoint {} for a resume",
                      e.what(), SweepFile::PartialPath(output), SweepFile::CheckpointPath(output));
+}
+
+// The points of the run's rows: in robot mode (docs/model.md section 8) a point's first row
+// has orbit = 1, or an empty orbit cell when the point has no orbit; else each row is a point.
+PointRows GridPointRows(const GridRun& run) {
+  PointRows rows;
+  rows.points = run.points;
+  const std::string_view header(run.header);
+  const std::size_t names =
+      header.rfind('\n', header.size() - std::min<std::size_t>(header.size(), 2));
+  const int orbit =
+      HeaderColumn(names == std::string_view::npos ? header : header.substr(names + 1), "orbit");
+  if (orbit >= 0) {
+    rows.starts_point = [orbit](std::string_view row) {
+      const std::string_view cell = RowCell(row, orbit);
+      return cell.empty() || cell == "1";
+    };
+  }
+  return rows;
 }
 
 }  // namespace
@@ -45,7 +65,8 @@ SweepSummary RunGridRows(const GridRun& run, const BlockComputeFactory& blocks,
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const std::int64_t total = run.points;
-  SweepFile file(run.output, run.description, run.header, run.resume, run.checkpoint_seconds);
+  SweepFile file(run.output, run.description, run.header, GridPointRows(run), run.resume,
+                 run.checkpoint_seconds);
   SweepSummary summary;
   summary.threads = run.threads;
   summary.points_resumed = file.points_done();

@@ -69,13 +69,10 @@ void RequireOutputNotAShard(const std::vector<std::string>& paths, const std::st
 ShardFile OpenShard(const std::string& path, const std::string& unit) {
   ShardFile s;
   s.path = path;
-  s.in = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*s.in)
-    throw IoError(fmt::format("shard file {} cannot be read: {}", path, std::strerror(errno)));
+  s.in = OpenShardStream(path);
   std::string line;
   bool marked = false;
-  const std::string what = "shard file " + path;
-  while (ReadLine(*s.in, line, what) && !line.empty() && line[0] == '#') {
+  while (ReadShardFileLine(*s.in, line, path) && !line.empty() && line[0] == '#') {
     if (!marked && ReadShardLine(line, s)) {
       marked = true;
     } else {
@@ -99,8 +96,61 @@ ShardFile OpenShard(const std::string& path, const std::string& unit) {
 
 }  // namespace
 
+int HeaderColumn(std::string_view header, std::string_view name) {
+  int column = 0;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = std::min(header.find_first_of(",\n", start), header.size());
+    if (header.substr(start, end - start) == name) return column;
+    if (end >= header.size() || header[end] == '\n') return -1;
+    start = end + 1;
+    ++column;
+  }
+}
+
+std::size_t CellStart(std::string_view row, int column) {
+  std::size_t start = 0;
+  for (int c = 0; c < column; ++c) {
+    start = row.find(',', start);
+    if (start == std::string_view::npos) return start;
+    start += 1;
+  }
+  return start;
+}
+
+std::string_view RowCell(std::string_view row, int column) {
+  const std::size_t start = CellStart(row, column);
+  if (start == std::string_view::npos) return {};
+  return row.substr(start, row.find(',', start) - start);
+}
+
+std::unique_ptr<std::ifstream> OpenShardStream(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw std::invalid_argument(
+        fmt::format("shard file {} is invalid: it is a folder: expected a shard file", path));
+  }
+  auto in = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*in) {
+    throw IoError(fmt::format("shard file {} cannot be read: {}", path, std::strerror(errno)));
+  }
+  return in;
+}
+
+bool ReadShardFileLine(std::istream& in, std::string& line, const std::string& path) {
+  if (!ReadLine(in, line, "shard file " + path)) return false;
+  if (!line.empty() && line.back() == '\r') {
+    throw std::invalid_argument(fmt::format(
+        "shard file {} is invalid: its line endings are CR LF (a file converted to Windows "
+        "line endings): expected the LF line endings capsubot writes (convert it back, e.g. "
+        "with dos2unix)",
+        path));
+  }
+  return true;
+}
+
 void ShardFile::Advance() {
-  has_next = ReadLine(*in, next, "shard file " + path);
+  has_next = ReadShardFileLine(*in, next, path);
   if (has_next && in->eof()) {
     throw std::invalid_argument(
         fmt::format("shard file {} is truncated: its last line has no line break", path));
@@ -190,12 +240,10 @@ void RequireShardsConsumed(const std::vector<ShardFile>& shards) {
 }
 
 std::string ShardUnit(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw IoError(fmt::format("shard file {} cannot be read: {}", path, std::strerror(errno)));
+  const std::unique_ptr<std::ifstream> in = OpenShardStream(path);
   std::string line;
   ShardFile s;
-  while (ReadLine(in, line, "shard file " + path) && !line.empty() && line[0] == '#') {
+  while (ReadShardFileLine(*in, line, path) && !line.empty() && line[0] == '#') {
     if (ReadShardLine(line, s)) return s.unit;
   }
   return "";

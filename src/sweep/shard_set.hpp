@@ -34,6 +34,24 @@ struct ShardFile {
   std::int64_t OwnUnits() const { return (units - k + n - 1) / n; }
 };
 
+/// The index of column `name` in the column names line `header` (its line break optional),
+/// -1 when it has none.
+int HeaderColumn(std::string_view header, std::string_view name);
+
+/// Where cell `column` of CSV row `row` begins; npos when the row has fewer cells.
+std::size_t CellStart(std::string_view row, int column);
+
+/// Cell `column` of CSV row `row` ("" when the row has fewer cells).
+std::string_view RowCell(std::string_view row, int column);
+
+/// The file of a shard opened for reading; throws std::invalid_argument for a folder, IoError
+/// for a file that cannot be opened (both naming the file).
+std::unique_ptr<std::ifstream> OpenShardStream(const std::string& path);
+
+/// ReadLine of a shard file's next line; a line that ends in '\r' (CR LF line endings: the
+/// file was converted) throws std::invalid_argument naming the file and its line endings.
+bool ReadShardFileLine(std::istream& in, std::string& line, const std::string& path);
+
 /// Reads a line of fixed words and decimal numbers ("# shard 1/3 of 14 points"): Word
 /// matches text, Number reads digits into an int64 (no sign, no wrap-around: a number beyond
 /// int64 fails the line), Done says whether all of it matched.

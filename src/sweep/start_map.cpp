@@ -102,7 +102,8 @@ StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, 
   params.Validate();  // before the file is touched
   attractor.Validate();
   for (const PhaseState& s : mine) detail::ValidateStart(alpha, s);
-  detail::SweepFile file(options.output, description, head, options.resume,
+  detail::SweepFile file(options.output, description, head,
+                         {static_cast<std::int64_t>(mine.size()), {}}, options.resume,
                          options.checkpoint_seconds, "shard");
   StartShardSummary summary;
   summary.starts = static_cast<std::int64_t>(mine.size());

@@ -91,6 +91,36 @@ std::string ReadSmallFile(const std::string& path, std::size_t limit, bool& exis
   return text;
 }
 
+// Counts the rows and points of a file's rows given in chunks (PointRows): the first
+// kMaxLineBytes of each row are held for PointRows::starts_point, never more.
+class PointCounter {
+ public:
+  explicit PointCounter(const PointRows& rows) : rows_(rows) {}
+  void Add(const char* data, std::size_t size) {
+    for (std::size_t i = 0; i < size;) {
+      const void* found = std::memchr(data + i, '\n', size - i);
+      const std::size_t end = found != nullptr
+                                  ? static_cast<std::size_t>(static_cast<const char*>(found) - data)
+                                  : size;
+      line_.append(data + i,
+                   std::min(end - i, kMaxLineBytes - std::min(line_.size(), kMaxLineBytes)));
+      if (found == nullptr) return;
+      ++row_count_;
+      if (!rows_.starts_point || rows_.starts_point(line_)) ++point_count_;
+      line_.clear();
+      i = end + 1;
+    }
+  }
+  bool Complete() const { return line_.empty(); }  ///< the last row has its line break
+  std::int64_t rows() const { return row_count_; }
+  std::int64_t points() const { return point_count_; }
+
+ private:
+  const PointRows& rows_;
+  std::string line_;
+  std::int64_t row_count_ = 0, point_count_ = 0;
+};
+
 // Reads and checks a checkpoint: any damage is reported (never silently restarted).
 CheckpointRecord ReadCheckpoint(const std::string& path, std::size_t description_size) {
   CheckpointRecord r;
@@ -124,10 +154,18 @@ CheckpointRecord ReadCheckpoint(const std::string& path, std::size_t description
 }
 
 // The checkpoint a resume continues from (exists false: none), refused when it is of
-// another run.
+// another run or when its partial file is missing (a resume would start it empty).
 CheckpointRecord ResumeRecord(const std::string& path, const std::string& description,
-                              const std::string& run) {
+                              const std::string& run, const std::string& partial) {
   const CheckpointRecord record = ReadCheckpoint(path, description.size());
+  struct stat st {};
+  if (record.exists && ::stat(partial.c_str(), &st) != 0 && errno == ENOENT) {
+    throw IoError(fmt::format(
+        "resume: {} is missing, but its checkpoint {} says it holds {} points ({} bytes): "
+        "expected the partial file of the interrupted {} beside its checkpoint (delete the "
+        "checkpoint to start the {} again)",
+        partial, path, record.points, record.bytes, run, run));
+  }
   if (record.exists && record.description != description) {
     throw std::invalid_argument(
         fmt::format("resume: checkpoint {} is invalid for this {}: it was written by a {} with "
@@ -152,7 +190,7 @@ void SweepFile::CheckResume(const std::string& output, const std::string& descri
                             const std::string& run) {
   const OutputTarget target = ResolveOutput(output, "output");
   if (target.in_place) throw ResumeInPlace(output);
-  ResumeRecord(CheckpointPath(target.path), description, run);
+  ResumeRecord(CheckpointPath(target.path), description, run, PartialPath(target.path));
 }
 
 void SweepFile::Fail(const std::string& what, const std::string& path) const {
@@ -164,8 +202,8 @@ void SweepFile::Fail(const std::string& what, const std::string& path) const {
 }
 
 SweepFile::SweepFile(const std::string& output, const std::string& description,
-                     const std::string& header, bool resume, double checkpoint_seconds,
-                     const std::string& run)
+                     const std::string& header, const PointRows& rows, bool resume,
+                     double checkpoint_seconds, const std::string& run)
     : output_(output),
       run_(run),
       target_(ResolveOutput(output, "output")),
@@ -183,6 +221,8 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
     return;
   }
   written_ = partial_;
+  // Checked before the open, which would create a missing partial file.
+  if (resume) ResumeRecord(checkpoint_, description_, run_, partial_);
   fd_ = ::open(partial_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) Fail("create", partial_);
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -198,7 +238,7 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
   }
   last_checkpoint_ = std::chrono::steady_clock::now();
   try {
-    Open(header, resume);
+    Open(header, rows, resume);
   } catch (...) {  // no destructor runs: release the file and its lock here
     if (pending_checkpoint_.valid()) pending_checkpoint_.wait();
     ::close(fd_);
@@ -207,9 +247,9 @@ SweepFile::SweepFile(const std::string& output, const std::string& description,
   }
 }
 
-void SweepFile::Open(const std::string& header, bool resume) {
+void SweepFile::Open(const std::string& header, const PointRows& rows, bool resume) {
   const CheckpointRecord record =
-      resume ? ResumeRecord(checkpoint_, description_, run_) : CheckpointRecord{};
+      resume ? ResumeRecord(checkpoint_, description_, run_, partial_) : CheckpointRecord{};
   if (record.exists) {
     struct stat st {};
     if (::fstat(fd_, &st) != 0) Fail("read", partial_);
@@ -219,9 +259,12 @@ void SweepFile::Open(const std::string& header, bool resume) {
           "{} again",
           partial_, static_cast<long long>(st.st_size), checkpoint_, record.bytes, run_));
     }
-    // The rows the checkpoint vouches for must be those written: check their CRC-32.
+    // The rows the checkpoint vouches for must be those written: check their CRC-32, and
+    // count their points (rows after the header).
     std::vector<char> chunk(kChunkBytes);
     std::uint32_t crc = 0;
+    PointCounter counter(rows);
+    const auto header_bytes = static_cast<std::int64_t>(header.size());
     for (std::int64_t at = 0; at < record.bytes;) {
       const auto want = static_cast<std::size_t>(
           std::min<std::int64_t>(record.bytes - at, static_cast<std::int64_t>(kChunkBytes)));
@@ -229,6 +272,8 @@ void SweepFile::Open(const std::string& header, bool resume) {
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) Fail("read", partial_);
       crc = Crc32(crc, chunk.data(), static_cast<std::size_t>(n));
+      const std::int64_t skip = std::clamp<std::int64_t>(header_bytes - at, 0, n);
+      counter.Add(chunk.data() + skip, static_cast<std::size_t>(n - skip));
       at += n;
     }
     if (crc != record.data_crc) {
@@ -237,6 +282,14 @@ void SweepFile::Open(const std::string& header, bool resume) {
           "mismatch: the file was changed or damaged): delete both to start the {} again",
           partial_, checkpoint_, run_));
     }
+    if (record.bytes < header_bytes || !counter.Complete() || counter.points() != record.points ||
+        record.points > rows.points) {
+      Corrupted(checkpoint_,
+                fmt::format("it says {} points, but the {} bytes it vouches for hold {} of the "
+                            "{}'s {} points",
+                            record.points, record.bytes, counter.points(), run_, rows.points));
+    }
+    rows_resumed_ = counter.rows();
     // Rows after the checkpoint may be partial: drop them, they are computed again.
     if (::ftruncate(fd_, record.bytes) != 0) Fail("truncate", partial_);
     points_ = record.points;

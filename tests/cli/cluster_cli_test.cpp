@@ -701,11 +701,35 @@ TEST(Cluster, KilledBifurcationShardResumesToTheBytesOfAnUninterruptedOne) {
   EXPECT_TRUE(ReadFile(killed + ".checkpoint") == checkpoint);
   std::ofstream(summary + ".checkpoint", std::ios::binary) << summary_checkpoint;
   ++checked;
-  EXPECT_EQ(checked, 5);
+  // A checkpoint whose partial file is gone: named, no empty partial file made.
+  std::filesystem::rename(summary + ".partial", summary + ".kept");
+  const CommandResult lost = RunCli(SlowBifurcationShard("1/3", killed, " --resume") + " 2>&1");
+  EXPECT_EQ(lost.status, 2);
+  EXPECT_NE(lost.out.find("capsubot bifurcation: error: resume: " + summary +
+                          ".partial is missing, but its checkpoint " + summary +
+                          ".checkpoint says it holds "),
+            std::string::npos)
+      << lost.out;
+  EXPECT_FALSE(std::filesystem::exists(summary + ".partial"));
+  EXPECT_TRUE(ReadFile(killed + ".partial") == partial);
+  std::filesystem::rename(summary + ".kept", summary + ".partial");
+  ++checked;
+  EXPECT_EQ(checked, 6);
   const CommandResult resumed =
       RunCli(SlowBifurcationShard("1/3", killed, " --resume --threads 2"));
   ASSERT_EQ(resumed.status, 0) << resumed.out;
   EXPECT_NE(resumed.out.find(" resumed from the checkpoint)"), std::string::npos) << resumed.out;
+  // The line counts the rows of the whole files, those of the resumed parts too.
+  const auto rows = [](const std::string& text) {
+    std::istringstream in(text);
+    long count = -1;  // the header
+    for (std::string line; std::getline(in, line);) count += line.rfind('#', 0) == 0 ? 0 : 1;
+    return std::to_string(count);
+  };
+  EXPECT_NE(resumed.out.find(": " + rows(ReadFile(reference)) + " impacts written to " + killed +
+                             ", " + rows(ReadFile(reference + ".summary")) + " summary rows to "),
+            std::string::npos)
+      << resumed.out;
   EXPECT_TRUE(ReadFile(killed) == ReadFile(reference)) << "resumed impacts differ";
   EXPECT_TRUE(ReadFile(summary) == ReadFile(reference + ".summary")) << "resumed summary differs";
   for (const std::string& file : {killed, summary}) {
@@ -748,6 +772,26 @@ TEST(Cluster, CommandsThatRunOnOneProcessRefuseMpirun) {
       Mpirun(1, "simulate" + robot + " --from-orbit --periods 4 --events " + out);
   EXPECT_EQ(alone.status, 0) << alone.out;
   EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+// mpirun copies rank 0's standard output to its own and ignores a write that fails there: the
+// run writes mpirun's standard output itself, and a full one fails it (exit 1), as alone.
+TEST(Cluster, FullStandardOutputUnderMpirunFails) {
+  if (!kMpi) GTEST_SKIP() << "capsubot built without MPI (CAPSUBOT_MPI=OFF)";
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string sweep = std::string(kMpiexec) + " --oversubscribe -n 2 " + CAPSUBOT_CLI +
+                            " sweep --grid A=0:1:3 --c 0.5 --phi0 0 -o -";
+  const CommandResult full = Shell("sh -c '" + sweep + " > /dev/full'");
+  EXPECT_EQ(full.status, 1) << full.out;
+  EXPECT_NE(full.out.find("capsubot sweep: error: --output -: cannot write standard output: No "
+                          "space left on device"),
+            std::string::npos)
+      << full.out;
+  // Written through a pipe, the header and the 3 rows arrive whole.
+  const CommandResult piped = Shell(sweep + " | grep -c ,");
+  EXPECT_EQ(piped.status, 0) << piped.out;
+  EXPECT_EQ(piped.out, "4\n");
 }
 
 TEST(Cluster, BadInputUnderMpirunFailsOnceAndWritesNoFile) {

@@ -69,7 +69,7 @@ TEST(DesignCli, GridShardsOfDifferentConfigContentsDoNotMerge) {
   std::string first_line;
   std::ifstream shard(shards[1]);
   std::getline(shard, first_line);
-  EXPECT_NE(first_line.find(" design --m1 0.4 --L 0.02 --mu 0.3 --force-amplitude 0.5 "),
+  EXPECT_NE(first_line.find(" design --m1 0.4 --L 0.02 --mu 0.3 --g 9.81 --force-amplitude 0.5 "),
             std::string::npos)
       << first_line;
   const std::string out = TempPath("config_merged.csv").string();
@@ -81,6 +81,37 @@ TEST(DesignCli, GridShardsOfDifferentConfigContentsDoNotMerge) {
             std::string::npos)
       << r.out;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Shards of one input given in other words (the default --g typed, a number written with
+// another spelling, a setting in a file) name the same robot: they merge into the file of the
+// whole grid.
+TEST(DesignCli, GridShardsOfOneInputGivenInOtherWordsMerge) {
+  const std::string robot =
+      "design --L 0.02 --mu 0.3 --force-amplitude 0.5 --force-bias 0.1 --frequency 20 "
+      "--margin 0 --margin-stroke 0 --stick-margin 0 --rho-max 1 --grid e=0.5,0.7,0.9";
+  const auto config = WriteConfig("robot_m1.toml", "m1 = 0.2\n");
+  const std::vector<std::string> words = {" --m1 0.2", " --m1 0.20 --g 9.81",
+                                          " --config " + config.string()};
+  const std::string merged_path = TempPath("words_merged.csv").string();
+  std::string merge = "merge " + merged_path;
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const std::string shard = TempPath("words_shard" + std::to_string(k) + ".csv").string();
+    const auto r = RunCli(robot + words[k] + " --shard " + std::to_string(k) + "/3 -o " + shard);
+    ASSERT_EQ(r.status, 0) << r.out;
+    merge += " " + shard;
+  }
+  const std::string whole = TempPath("words_whole.csv").string();
+  ASSERT_EQ(RunCli(robot + " --m1 0.2 -o " + whole).status, 0);
+  const auto r = RunCli(merge + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream merged(merged_path), one(whole);
+  const std::string merged_text((std::istreambuf_iterator<char>(merged)),
+                                std::istreambuf_iterator<char>());
+  const std::string whole_text((std::istreambuf_iterator<char>(one)),
+                               std::istreambuf_iterator<char>());
+  EXPECT_EQ(merged_text, whole_text);
+  EXPECT_NE(whole_text.find(" --g 9.81 "), std::string::npos) << whole_text;
 }
 
 TEST(DesignCli, FlagsOverrideTheConfigFile) {

@@ -94,6 +94,30 @@ void LinksKeptTargetWritten(const fs::path& dir, const std::string& first_line) 
   EXPECT_EQ(ReadFile(dir / "target.csv").rfind(first_line, 0), 0U) << ReadFile(dir / "target.csv");
 }
 
+// Shell commands that write the 2 shards s0.csv, s1.csv of a robot-mode sweep of 4 points:
+// points 0 and 1 have no orbit, points 2 and 3 two orbit rows each.
+std::string RobotShardsSetup() {
+  std::string setup;
+  for (const char* k : {"0", "1"}) {
+    setup += std::string(setup.empty() ? "" : " && ") + CAPSUBOT_CLI +
+             " sweep --grid alpha=0.5,0.3,0.25,0.2 --A 0.05 --c 0.02 --T0 0.1 --e 0.5 -o s" + k +
+             ".csv --shard " + k + "/2";
+  }
+  return setup;
+}
+
+// Shell commands that write the 2 shards b0.csv, b1.csv of a 3 x 2 basin map (x0 major:
+// b0.csv holds the starts psi = 0, b1.csv those with psi = pi).
+std::string BasinShardsSetup() {
+  std::string setup;
+  for (const char* k : {"0", "1"}) {
+    setup += std::string(setup.empty() ? "" : " && ") + CAPSUBOT_CLI + " basins " + kRobot +
+             " --starts 3x2 --transient 20 --record 20 -o b" + k + ".csv --shard " + k +
+             "/2 > /dev/null";
+  }
+  return setup;
+}
+
 std::vector<Case> Cases() {
   const std::set<std::string> none;
   const std::set<std::string> links = {"target.csv", "link.csv", "chain.csv"};
@@ -252,6 +276,65 @@ std::vector<Case> Cases() {
        [](const fs::path& d) {
          EXPECT_EQ(ReadFile(d / "s0.csv"), "# shard 0/2 of 2 points\nphi0\n1\n");
        }},
+      // A folder or a converted file among the shards: bad input naming the file.
+      {"MergeShardFolderIsRefused",
+       "merge m.csv s0.csv dd",
+       2,
+       "shard file dd is invalid: it is a folder: expected a shard file",
+       {"s0.csv", "dd"},
+       "printf '# shard 0/2 of 2 points\\nphi0\\n1\\n' > s0.csv && mkdir dd"},
+      {"MergeCrLfShardSaysLineEndings",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv is invalid: its line endings are CR LF",
+       {"s0.csv", "s1.csv"},
+       "printf '# shard 0/2 of 2 points\\r\\nphi0\\r\\n1\\r\\n' > s0.csv && printf '# shard "
+       "1/2 of 2 points\\r\\nphi0\\r\\n2\\r\\n' > s1.csv"},
+      // The rows of a robot-mode point are those its `orbits` cell counts, numbered 1 ..
+      // orbits: a row lost, repeated or moved is refused, never merged.
+      {"MergeRobotShardLastRowLost",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s1.csv is truncated: it ends in point 3 after 1 of its 2 rows (orbits = 2)",
+       {"s0.csv", "s1.csv"},
+       RobotShardsSetup() + " && sed -i '$d' s1.csv"},
+      {"MergeRobotShardOrbitRowLost",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv point 2 row 1 '0.25,2,2,",
+       {"s0.csv", "s1.csv"},
+       RobotShardsSetup() + " && sed -i '5d' s0.csv"},
+      {"MergeRobotShardOrbitRowRepeated",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv point 2 row 2 '0.25,2,1,",
+       {"s0.csv", "s1.csv"},
+       RobotShardsSetup() + " && sed -i '5p' s0.csv"},
+      // The starts of a basin map are those of its grid: an edited or copied start is named.
+      {"MergeBasinStartEdited",
+       "merge m.csv b0.csv b1.csv",
+       2,
+       "shard file b0.csv start 1 (x0 = 0.51, psi = 0) is invalid: expected start 2 of the "
+       "map's 3 x 2 grid, x0 = 0.5: a start edited or copied from another",
+       {"b0.csv", "b1.csv"},
+       BasinShardsSetup() + " && sed -i 's/^0.5,0,/0.51,0,/' b0.csv"},
+      {"MergeBasinStartCopied",
+       "merge m.csv b0.csv b1.csv",
+       2,
+       "shard file b0.csv start 1 (x0 = 0.16666666666666666, psi = 0) is invalid: expected "
+       "start 2 of the map's 3 x 2 grid, x0 = 0.5",
+       {"b0.csv", "b1.csv"},
+       BasinShardsSetup() + " && sed -i '4h;5g' b0.csv"},
+      // Parts of a bifurcation shard moved within it: named as such, not as missing.
+      {"MergeBifurcationPartsReordered",
+       "merge m.csv s0.csv s1.csv",
+       2,
+       "shard file s0.csv holds part 0 of 4 after part 2: expected its parts in increasing order",
+       {"s0.csv", "s1.csv"},
+       "printf '# shard 0/2 of 2 continuations\\nparam,direction\\n# part 2 of 4: 1 rows\\n"
+       "0.1,up\\n# part 0 of 4: 1 rows\\n0.2,up\\n' > s0.csv && printf '# shard 1/2 of 2 "
+       "continuations\\nparam,direction\\n# part 1 of 4: 1 rows\\n0.3,down\\n# part 3 of "
+       "4: 1 rows\\n0.4,down\\n' > s1.csv"},
       // A state beyond double precision ends the simulation with an error, no file.
       {"SimulateHugeV0",
        "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.5 --x0 0.5 --u0 0 "
@@ -360,6 +443,74 @@ std::vector<Case> Cases() {
        "--harmonics conflicts with --problem forcing: expected --harmonics only with --problem "
        "fourier",
        none},
+      // A config file nested thousands deep is refused before it is parsed (the parser would
+      // descend once per level and exhaust the stack).
+      {"ConfigDeepDottedKeyIsRefused",
+       "design --config dk.toml",
+       2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep",
+       {"dk.toml"},
+       "{ yes a | head -n 50000 | tr '\\n' .; echo 'b = 1'; } > dk.toml"},
+      {"ConfigDeepTableHeaderIsRefused",
+       "design --config dk.toml",
+       2,
+       "config file dk.toml line 2 is invalid: keys and values nested more than 32 deep",
+       {"dk.toml"},
+       "{ echo '# robot'; printf '[['; yes a | head -n 50000 | tr '\\n' .; echo 'b]]'; } > "
+       "dk.toml"},
+      {"ConfigDeepArrayIsRefused",
+       "design --config dk.toml",
+       2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep",
+       {"dk.toml"},
+       "{ printf 'm1 = '; yes '[' | head -n 50000 | tr -d '\\n'; echo; } > dk.toml"},
+      {"ConfigDeepInlineTableIsRefused",
+       "design --config dk.toml",
+       2,
+       "config file dk.toml line 1 is invalid: keys and values nested more than 32 deep",
+       {"dk.toml"},
+       "{ printf 'm1 = '; yes '{a=' | head -n 50000 | tr -d '\\n'; echo; } > dk.toml"},
+      {"ConfigLongKeyIsCut",
+       "design --config k.toml",
+       2,
+       "kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk... = 1 in k.toml is "
+       "invalid: unknown key",
+       {"k.toml"},
+       "{ head -c 40000 /dev/zero | tr '\\0' k; echo ' = 1'; } > k.toml",
+       "",
+       "",
+       [](const fs::path& d) { EXPECT_LT(fs::file_size(d / ".." / "stderr.txt"), 400U); }},
+      {"ConfigNumbersEchoedShortest",
+       "design --config c.toml",
+       2,
+       "m1 = {a = 0.3} in c.toml is invalid: expected a number",
+       {"c.toml"},
+       "echo 'm1 = {a = 0.3}' > c.toml"},
+      {"ConfigHugeShellMassIsNamed",
+       "design --config c.toml",
+       2,
+       "shell mass m1 = 1e+308 kg is invalid: expected m1 <= 1.7976931348623158e+307 kg",
+       {"c.toml"},
+       "printf 'm1 = 1e308\\nL = 0.02\\nmu = 0.3\\ne = 0.7\\nforce-amplitude = 0.5\\n"
+       "force-bias = 0.1\\nfrequency = 20\\n' > c.toml"},
+      {"ConfigFolderIsRefused", "design --config .", 2,
+       "--config . is invalid: expected a file of at most 1048576 bytes, not a folder", none},
+      // Ranges that hold no map or diagram, refused before any work.
+      {"BifurcationFromEqualsTo",
+       "bifurcation " + kRobot + " --param T0 --from 0.1 --to 0.1 --steps 3 -o o.csv", 2,
+       "--to = 0.1 is invalid with --from = 0.1: expected a range, --to other than --from", none},
+      {"BasinsInvertedURangeOnThePsiPlane",
+       "basins " + kRobot + " --starts 2x2 --u-min 5 --u-max -5 -o b.csv", 2,
+       "--u-min = 5 and --u-max = -5 are invalid: expected u-min < u-max", none},
+      // Values in reports and messages in their shortest round-trip form, never rounded.
+      {"AttractorsAlphaNearOneIsNotRounded",
+       "attractors --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.999999999999 "
+       "--starts 1x1 --transient 20 --record 20",
+       0, "", none, "", "", "alpha = 0.999999999999\n"},
+      {"SimulateAlphaNearOneIsNotRounded",
+       "simulate --A 0.5 --c 0.5 --phi0 0 --alpha 0.999999999999 --x0 0.5 --u0 0 --v0 0 "
+       "--periods 1",
+       0, "", none, "", "", "T0 = 1, e = 1, alpha = 0.999999999999\n"},
       // One convention for a missing value in tables: "-".
       {"MissingValuesAreDashes", "solve --A 0.2 --c 0.03 --phi0 0", 0, "", none, "", "",
        "alpha  = -   (m2/(m1+m2))", nullptr},
@@ -393,7 +544,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 91;
+constexpr int kCaseCount = 130;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
@@ -465,6 +616,22 @@ TEST(HostileCliFifo, WholeRunsWriteAPipeOnce) {
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// A pipe given as --config is refused at once, also without a writer (an open that waited
+// for one would block forever).
+TEST(HostileCliFifo, ConfigPipeWithoutWriterIsRefused) {
+  Sandbox box("config_fifo");
+  const std::string command = "cd '" + box.work.string() + "' && mkfifo ff && timeout 20 " +
+                              std::string(CAPSUBOT_CLI) + " design --config ff 2>err.txt";
+  const int raw = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(raw)) << command;
+  EXPECT_EQ(WEXITSTATUS(raw), 2) << command;
+  EXPECT_NE(ReadFile(box.work / "err.txt")
+                .find("--config ff is invalid: expected a file of at most 1048576 bytes, not a "
+                      "pipe or device"),
+            std::string::npos)
+      << ReadFile(box.work / "err.txt");
 }
 
 // Starts `capsubot args...` with stdout and stderr to files (or stderr to `stderr_path`).

@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -503,6 +505,81 @@ TEST(SweepCli, AWriteErrorPartWayKeepsTheRowsForAResume) {
   EXPECT_TRUE(ReadFile(out) == ReadFile(dir.File("ref.csv")));
   EXPECT_FALSE(Exists(out + ".partial"));
   EXPECT_FALSE(Exists(out + ".checkpoint"));
+}
+
+// CRC-32 (the polynomial of zlib, reflected 0xEDB88320), bit by bit: an independent
+// computation of the checksum a checkpoint carries of itself.
+std::uint32_t Crc32(const std::string& text) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const char ch : text) {
+    crc ^= static_cast<unsigned char>(ch);
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+// `checkpoint` with its `points` line set to `points` and its own checksum made valid again:
+// a checkpoint whose only damage is its point count.
+std::string WithPoints(const std::string& checkpoint, long long points) {
+  const std::size_t at = checkpoint.find("\npoints ") + 8;
+  const std::size_t end = checkpoint.find('\n', at);
+  std::string record = checkpoint.substr(0, checkpoint.rfind("crc32 "));
+  record.replace(at, end - at, std::to_string(points));
+  char line[32];
+  std::snprintf(line, sizeof line, "crc32 %08x\n", Crc32(record));
+  return record + line;
+}
+
+// A checkpoint with a valid checksum but another point count than the rows it vouches for
+// (one more: a point skipped; 0: points written twice; beyond the grid) is refused, never
+// trusted; a checkpoint without its partial file is named as such, no empty file created.
+TEST(SweepCli, ACheckpointWithAWrongPointCountIsRefused) {
+  TempDir dir;
+  const std::string args = "sweep --grid phi0=-pi:pi:4000 --A 0.5 --c 0.5 --checkpoint-seconds 0";
+  const std::string out = dir.File("f.csv");
+  const std::string limited =
+      "sh -c \"ulimit -f 200; exec " + kCli + " " + args + " -o " + out + "\"";
+  const int raw = std::system((limited + " > " + dir.File("log") + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 1) << ReadFile(dir.File("log"));
+  const std::string checkpoint = ReadFile(out + ".checkpoint");
+  const long points = CheckpointPoints(out + ".checkpoint");
+  ASSERT_GT(points, 0) << checkpoint;
+  // The untouched checkpoint rewritten by WithPoints is the same file: the helper is exact.
+  ASSERT_EQ(WithPoints(checkpoint, points), checkpoint);
+  int checked = 0;
+  for (const long long wrong : {static_cast<long long>(points) + 1, 0LL, 4001LL}) {
+    std::ofstream(out + ".checkpoint", std::ios::trunc) << WithPoints(checkpoint, wrong);
+    const Outcome r = RunCli(args + " -o " + out + " --resume", dir.File("log2"));
+    EXPECT_EQ(r.status, 2) << wrong << ": " << r.output;
+    EXPECT_NE(r.output.find("--resume: checkpoint " + out +
+                            ".checkpoint is not a valid capsubot sweep checkpoint (it says " +
+                            std::to_string(wrong) + " points, but the "),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find(" bytes it vouches for hold " + std::to_string(points) +
+                            " of the sweep's 4000 points)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(Exists(out));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  // Without its partial file.
+  std::ofstream(out + ".checkpoint", std::ios::trunc) << checkpoint;
+  std::remove((out + ".partial").c_str());
+  const Outcome r = RunCli(args + " -o " + out + " --resume", dir.File("log3"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output, "capsubot sweep: error: --resume: " + out +
+                          ".partial is missing, but its "
+                          "checkpoint " +
+                          out + ".checkpoint says it holds " + std::to_string(points) +
+                          " points (" +
+                          checkpoint.substr(checkpoint.find("bytes ") + 6,
+                                            checkpoint.find('\n', checkpoint.find("bytes ")) -
+                                                checkpoint.find("bytes ") - 6) +
+                          " bytes): expected the partial file of the interrupted sweep beside its "
+                          "checkpoint (delete the checkpoint to start the sweep again)\n");
+  EXPECT_FALSE(Exists(out + ".partial"));
 }
 
 // Runs `sweep` whole and in `n` shards, merges them; returns the shard paths.

@@ -4,6 +4,7 @@
 #include "capsubot/io.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "test_utils.hpp"
@@ -218,6 +220,33 @@ TEST(ReadTextFile, ReadsAFileUpToItsLimitAndRefusesMore) {
   // A device without end is refused after limit + 1 bytes, not read forever.
   EXPECT_THROW(ReadTextFile("/dev/zero", "--config"), std::invalid_argument);
   EXPECT_THROW(ReadTextFile(path.string(), "--config"), IoError);
+}
+
+// Only a regular file is read: a pipe without a writer (whose open would wait for one for
+// ever), a device and a folder are refused at once, naming the file and the rule.
+TEST(ReadTextFile, RefusesPipesDevicesAndFoldersWithoutWaiting) {
+  const fs::path folder = fs::temp_directory_path() / "capsubot_read_text_folder";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path fifo = folder / "ff";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {fifo.string(), ", not a pipe or device"},
+      {"/dev/zero", ", not a pipe or device"},
+      {folder.string(), ", not a folder"}};
+  int checked = 0;
+  for (const auto& [path, why] : cases) {
+    try {
+      ReadTextFile(path, "--config");
+      ADD_FAILURE() << path << " was read";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "--config " + path + " is invalid: expected a file of at most 1048576 bytes" + why);
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  fs::remove_all(folder);
 }
 
 }  // namespace
