@@ -544,7 +544,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 130;
+constexpr int kCaseCount = 111;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
