@@ -29,7 +29,7 @@ struct SolveOptions {
 void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
   AtomicFile file(path, "--trajectory");
   auto& out = file.stream();
-  out << "phi,x,dx,v\n";
+  out << "phi,x,u,v\n";
   for (int i = 0; i < samples; ++i) {
     const double phi = kTau * i / (samples - 1);
     // phi = 0 is just after the impact, phi = tau just before the next one.
@@ -98,7 +98,7 @@ Command AddSolveCommand(CLI::App& app) {
   AddFromRestOptions(*cmd, opt->from_rest, false);
   CLI::Option* trajectory =
       cmd->add_option("--trajectory", opt->trajectory,
-                      "write phi, x, dx, v over one period to this CSV file (phi = 0 just after "
+                      "write phi, x, u, v over one period to this CSV file (phi = 0 just after "
                       "the impact)");
   Bounded(cmd->add_option("--samples", opt->samples, "number of rows of --trajectory"), 2,
           kMaxTrajectoryRows)

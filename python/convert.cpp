@@ -2,8 +2,11 @@
 // results (src/json/, as the command line prints it) as Python objects.
 
 #include <fmt/format.h>
+#include <pybind11/complex.h>
+#include <pybind11/numpy.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <regex>
 #include <stdexcept>
@@ -75,11 +78,31 @@ void SignalCheck::Check() {
   if (PyErr_CheckSignals() != 0) throw Interrupted();
 }
 
+namespace {
+
+// Multipliers, written in JSON as {"re", "im"} objects (solve) or [re, im] pairs (periodic):
+// one NumPy complex array in Python whatever the command.
+py::object ComplexArray(const nlohmann::json& list) {
+  py::array_t<std::complex<double>> out(static_cast<py::ssize_t>(list.size()));
+  std::complex<double>* z = out.mutable_data();
+  for (const auto& item : list) {
+    const nlohmann::json& re = item.is_object() ? item.at("re") : item.at(0);
+    const nlohmann::json& im = item.is_object() ? item.at("im") : item.at(1);
+    *z++ = {re.is_number() ? re.get<double>() : std::nan(""),
+            im.is_number() ? im.get<double>() : std::nan("")};
+  }
+  return std::move(out);
+}
+
+}  // namespace
+
 py::object ToPython(const nlohmann::json& value) {
   switch (value.type()) {
     case nlohmann::json::value_t::object: {
       py::dict d;
-      for (const auto& [key, item] : value.items()) d[py::str(key)] = ToPython(item);
+      for (const auto& [key, item] : value.items()) {
+        d[py::str(key)] = key == "multipliers" && item.is_array() ? ComplexArray(item) : ToPython(item);
+      }
       return d;
     }
     case nlohmann::json::value_t::array: {

@@ -56,7 +56,7 @@ constexpr const char* kTrajectoryDoc =
 constexpr const char* kTrajectoryReturnsDoc =
     "    samples number of phases, 2 <= samples <= 10000000 (as --samples)\n\n"
     "Returns a dict of NumPy arrays of length samples: phi (rad), x (relative position of "
-    "the inner body, L), dx (relative velocity dx/dphi, omega L), v (capsule velocity, omega "
+    "the inner body, L), u (relative velocity dx/dphi, omega L), v (capsule velocity, omega "
     "L).\n\n"
     "Raises ValueError for bad input, or when no one-impact orbit exists for this force, T0 "
     "and e (then the message names the orbit's status). Runs without the GIL; Ctrl-C "
@@ -95,17 +95,17 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
         fmt::format("no one-impact orbit exists for this force, T0 and e ({}): no trajectory",
                     StatusName(o.status)));
   }
-  py::array_t<double> phi(samples), x(samples), dx(samples), v(samples);
+  py::array_t<double> phi(samples), x(samples), u(samples), v(samples);
   double* phi_out = phi.mutable_data();
   double* x_out = x.mutable_data();
-  double* dx_out = dx.mutable_data();
+  double* u_out = u.mutable_data();
   double* v_out = v.mutable_data();
   RunWithoutGil([&](SignalCheck& check) {
     for (long i = 0; i < samples; ++i) {
       // phi = 0 is just after the impact, phi = tau just before the next one.
       phi_out[i] = kTau * static_cast<double>(i) / static_cast<double>(samples - 1);
       x_out[i] = o.x(phi_out[i]);
-      dx_out[i] = o.dx(phi_out[i]);
+      u_out[i] = o.dx(phi_out[i]);
       v_out[i] = o.v(phi_out[i]);
       check();
     }
@@ -113,7 +113,7 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
   py::dict d;
   d["phi"] = phi;
   d["x"] = x;
-  d["dx"] = dx;
+  d["u"] = u;
   d["v"] = v;
   return d;
 }

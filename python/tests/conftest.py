@@ -9,6 +9,7 @@ import json
 import os
 import subprocess
 
+import numpy as np
 import pytest
 
 
@@ -35,3 +36,38 @@ def cli_json(*args):
     provenance = obj.pop("provenance")
     assert provenance["command"] == args[0] and provenance["program"] == "capsubot"
     return obj
+
+
+def _complex(z):
+    """A multiplier of the JSON, {"re", "im"} or [re, im] (null: NaN), as a complex number."""
+    re, im = (z["re"], z["im"]) if isinstance(z, dict) else z
+    return complex(float("nan") if re is None else re, float("nan") if im is None else im)
+
+
+def _multipliers(obj):
+    """The JSON with its multipliers as the module gives them: NumPy complex arrays."""
+    if isinstance(obj, dict):
+        return {k: np.array([_complex(z) for z in v], dtype=complex)
+                if k == "multipliers" and isinstance(v, list) else _multipliers(v)
+                for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_multipliers(v) for v in obj]
+    return obj
+
+
+def same(a, b):
+    """a and b equal at every depth; NumPy arrays element by element (NaN equal to NaN). The
+    command line's JSON (b may be it) has its multipliers converted as the module converts them."""
+    b = _multipliers(b)
+
+    def equal(x, y):
+        if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+            return (isinstance(x, np.ndarray) and isinstance(y, np.ndarray)
+                    and x.shape == y.shape and np.array_equal(x, y, equal_nan=True))
+        if isinstance(x, dict) and isinstance(y, dict):
+            return x.keys() == y.keys() and all(equal(x[k], y[k]) for k in x)
+        if isinstance(x, list) and isinstance(y, list):
+            return len(x) == len(y) and all(equal(u, v) for u, v in zip(x, y))
+        return x == y
+
+    return equal(a, b)

@@ -3,7 +3,7 @@
 import pytest
 
 import capsubot
-from conftest import cli_json
+from conftest import cli_json, same
 
 # The robot of docs/attractors.md whose motion from rest has 3 right + 1 left impacts.
 ROBOT = dict(A=0.34063197373861814, c=0.06410131873607934, phi0=-3.1181183398453047,
@@ -14,14 +14,18 @@ CLI_ROBOT = ["--A", 0.34063197373861814, "--c", 0.06410131873607934, "--phi0",
 
 def test_equals_the_command_line():
     found = capsubot.periodic(**ROBOT, from_rest=(0.5, 1.0), transient=100)
-    assert found == cli_json("periodic", *CLI_ROBOT, "--from-rest", "0.5,1", "--transient", 100)
+    assert same(found, cli_json("periodic", *CLI_ROBOT, "--from-rest", "0.5,1", "--transient", 100))
     assert found["status"] == "converged"
+    # Multipliers are one NumPy complex array, as from solve(stability=True).
+    assert found["multipliers"].dtype == complex and found["multipliers"].shape == (2,)
+    orbit = capsubot.solve(A=0.05, c=0.02, phi0=-2.842, T0=0.1, e=0.5, stability=True)
+    assert orbit["multipliers"].dtype == complex and orbit["multipliers"].shape == (2,)
     assert (found["period"], found["impacts_right"], found["impacts_left"]) == (1, 3, 1)
     # From the state it found, with no transient, as the command line does from a state.
     s = found["state"]
     again = capsubot.periodic(**ROBOT, x0=s["x"], u0=s["u"], v0=s["v"], psi=s["psi"])
-    assert again == cli_json("periodic", *CLI_ROBOT, "--x0", s["x"], "--u0", s["u"], "--v0",
-                             s["v"], "--psi", s["psi"])
+    assert same(again, cli_json("periodic", *CLI_ROBOT, "--x0", s["x"], "--u0", s["u"], "--v0",
+                             s["v"], "--psi", s["psi"]))
     # The period given: Newton from that state converges to the same motion.
     shot = capsubot.periodic(**ROBOT, x0=s["x"], u0=s["u"], v0=s["v"], psi=s["psi"], period=1)
     assert shot["status"] == "converged" and shot["period"] == 1

@@ -44,9 +44,9 @@ const HelpCase kHelpCases[] = {
      "--t0 is an unknown flag; did you mean --T0?"},
     {"MisspeltFlag", "solve --A 0.5 --c 0.5 --phi0 -2.9 --stabilty", 2,
      "did you mean --stability?"},
-    {"ProblemShortName", "optimize --problem P2 --T0 0.1 --json", 0, "\"problem\": \"forcing\""},
+    {"ProblemShortName", "optimize --problem P2 --T0 0.1 --json", 0, "\"problem\":\"forcing\""},
     {"ProblemShortNameLowerCase", "optimize --problem p1 --A 0.2 --c 0.03 --json", 0,
-     "\"problem\": \"phase\""},
+     "\"problem\":\"phase\""},
 };
 
 INSTANTIATE_TEST_SUITE_P(Table, HelpCli, ::testing::ValuesIn(kHelpCases),

@@ -126,7 +126,7 @@ std::vector<Case> Cases() {
       // Output through symlinks: the target is written, the link kept.
       {"SolveTrajectoryThroughSymlink", kSolve + " --samples 3 --trajectory link.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
-       [](const fs::path& d) { LinksKeptTargetWritten(d, "phi,x,dx,v\n"); }},
+       [](const fs::path& d) { LinksKeptTargetWritten(d, "phi,x,u,v\n"); }},
       {"SimulateEventsThroughSymlinkChain", kSim + " --events chain.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
        [](const fs::path& d) { LinksKeptTargetWritten(d, "phase,kind,"); }},

@@ -91,7 +91,7 @@ TEST(SolveCli, TrajectoryCsvCoversOnePeriod) {
   std::ifstream in(path);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "phi,x,dx,v");
+  EXPECT_EQ(line, "phi,x,u,v");
   int rows = 0;
   std::string last;
   while (std::getline(in, line)) {
