@@ -21,15 +21,15 @@ def test_equals_the_command_line_and_each_orbit_solves_back():
     assert [o["stable"] for o in found] == [True, False]
     margins = capsubot.orbits(alpha=ALPHA, **MOTOR, margin_stroke=0.3, stick_margin=0.1)
     assert same(margins, cli_json("orbits", "--alpha", ALPHA, "--A", 0.05, "--c", 0.02, "--T0",
-                               0.1, "--e", 0.5, "--margin-stroke", 0.3, "--stick-margin",
-                               0.1))["orbits"]
+                                  0.1, "--e", 0.5, "--margin-stroke", 0.3, "--stick-margin",
+                                  0.1)["orbits"])
     checked = 0
     for o in found:
         assert o["complete"] is True and abs(o["alpha"] - ALPHA) <= ALPHA_TOL
         # solve's stability adds the check from rest, which orbits leaves out.
         again = capsubot.solve(**MOTOR, phi0=o["phi0"], stability=True, from_rest_starts="1x1")
         assert again.pop("from_rest")["starts"] == 1
-        assert {k: v for k, v in o.items() if k != "complete"} == again
+        assert same({k: v for k, v in o.items() if k != "complete"}, again)
         checked += 1
     assert checked == 2
 
