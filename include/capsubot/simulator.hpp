@@ -96,12 +96,12 @@ struct SimOptions {
   /// the accumulation phase (estimated from the change of the extrapolation over one impact)
   /// is below this, and the ratio of successive speeds is steady and below 1 (docs/simulate.md
   /// "Chattering"); the body then rests on the wall. Finite, > 0.
-  double chatter_tolerance = 1e-9;
-  /// Fallback of the rule above: an impact slower than this (|u| before it), with the relative
-  /// acceleration pushing the inner body into the wall and at least four impacts in its
-  /// sequence, ends the sequence at once: at the extrapolated accumulation point if the speeds
-  /// shrink steadily, else as a plastic impact (u+ = 0; e = 1 without loss, where the speeds
-  /// do not shrink). Finite, > 0.
+  double chatter_tolerance = 1e-10;
+  /// Fallback of the rule above: an impact slower than this (|u| before it), with at least
+  /// five impacts in its sequence, ends the sequence at the extrapolated accumulation point if
+  /// the speeds shrink steadily; if they do not shrink (e = 1 without loss) and the relative
+  /// acceleration pushes the body into the wall, as a plastic impact (u+ = 0), the body then
+  /// resting on the wall. Finite, > 0.
   double chatter_velocity = 1e-6;
   /// Work bound: at most this many events per simulated period (then status kEventLimit). >= 10.
   /// The total, this times ceil(periods), saturates at the largest std::int64_t (no overflow).

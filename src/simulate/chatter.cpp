@@ -72,16 +72,15 @@ Estimate FromPoints(const ChatterRecord* rec) {
 
 }  // namespace
 
-void ChatterSequence::Add(const ChatterRecord& record) {
+ChatterLimit ChatterSequence::Add(const ChatterRecord& record) {
   if (n_ == kImpacts) {
     for (int i = 1; i < kImpacts; ++i) rec_[i - 1] = rec_[i];
     --n_;
   }
   rec_[n_++] = record;
-}
-
-ChatterLimit ChatterSequence::Limit() const {
   ChatterLimit limit;
+  limit.previous_phase_error = error_;
+  error_ = std::numeric_limits<double>::quiet_NaN();
   if (n_ < kImpacts) return limit;
   const Estimate last = FromPoints(&rec_[1]);
   const Estimate before = FromPoints(&rec_[0]);
@@ -91,6 +90,7 @@ ChatterLimit ChatterSequence::Limit() const {
   limit.ratio_spread = std::abs(last.ratio - before.ratio) / (1.0 - last.ratio);
   const double r3 = last.ratio * last.ratio * last.ratio;
   limit.phase_error = std::abs(last.at.phase - before.at.phase) * r3 / (1.0 - r3);
+  error_ = limit.phase_error;
   limit.at = last.at;
   return limit;
 }

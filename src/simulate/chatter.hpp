@@ -10,6 +10,7 @@
 // the series of degrees 1 to 3, with r itself extrapolated from its drift.
 
 #include <array>
+#include <limits>
 
 #include "capsubot/energy.hpp"
 
@@ -37,6 +38,9 @@ struct ChatterLimit {
   /// (through the error of the extrapolated r) or higher, which shrinks by at least r^3 per
   /// impact; so the error left is at most about that difference times r^3/(1 - r^3).
   double phase_error = 0.0;
+  /// phase_error at the previous impact of the sequence (NaN: none). Truncation makes the
+  /// error shrink by r^3 or faster per impact; once it grows instead, rounding limits it.
+  double previous_phase_error = std::numeric_limits<double>::quiet_NaN();
   /// The state at the accumulation point (speed 0): phase, v, y and energy since the first
   /// impact, as ChatterRecord.
   ChatterRecord at;
@@ -48,15 +52,19 @@ class ChatterSequence {
   /// Impacts the extrapolation uses: two estimates from four successive impacts each.
   static constexpr int kImpacts = 5;
 
-  void Clear() { n_ = 0; }
+  void Clear() {
+    n_ = 0;
+    error_ = std::numeric_limits<double>::quiet_NaN();
+  }
   int Size() const { return n_; }
-  void Add(const ChatterRecord& record);
-  /// The accumulation point from the last kImpacts impacts (valid = false with fewer).
-  ChatterLimit Limit() const;
+  /// Adds the record of the next impact and returns the accumulation point from the last
+  /// kImpacts impacts (valid = false with fewer).
+  ChatterLimit Add(const ChatterRecord& record);
 
  private:
   std::array<ChatterRecord, kImpacts> rec_{};
   int n_ = 0;
+  double error_ = std::numeric_limits<double>::quiet_NaN();  // the last phase_error
 };
 
 }  // namespace capsubot::detail

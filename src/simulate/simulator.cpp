@@ -39,6 +39,13 @@ constexpr double kChatterSpan = 1e-3;
 // fraction of 1 - r. Early in a sequence, while the impact map has not yet settled on its
 // geometric rate, they differ by more.
 constexpr double kChatterRatioSpread = 1e-3;
+// A sequence whose estimated error of the accumulation phase stops shrinking within this factor
+// of SimOptions::chatter_tolerance has reached the rounding of its estimates (about 1e-10 in
+// phase for the impacts of a sequence near speeds of 1e-4) and ends there.
+constexpr double kChatterRoundingFactor = 100.0;
+// Below the cut-off, a sequence whose ratio is above 1 - this (or that does not shrink at all)
+// is not contracting: at e = 1 without loss the speeds repeat to rounding.
+constexpr double kMinChatterContraction = 1e-6;
 // Points at which ReachOnPiece evaluates a concave piece while it bounds its maximum (Newton
 // steps on f', a few near a smooth maximum; this many only guard against rounding loops).
 constexpr int kMaxTangentCuts = 100;
@@ -476,9 +483,11 @@ class Simulation {
   // of a break-away (kNone if none).
   void Settle(Slide hint);
   void Impact(Wall wall);
-  // The record of an impact on `wall` with u, v right before it, for the sequence of
-  // chatter_ (a new sequence when it is empty or on the other wall).
-  detail::ChatterRecord RecordChatter(Wall wall, double u, double v);
+  // Adds the record of an impact on `wall` with u, v right before it (also returned in
+  // `record`) to the sequence of chatter_ (a new sequence when it is empty or on the other
+  // wall); returns the sequence's accumulation point estimated from its last impacts.
+  detail::ChatterLimit RecordChatter(Wall wall, double u, double v,
+                                     detail::ChatterRecord* record);
   // The phase from the origin to the accumulation point of `limit` if the sequence may end
   // there (docs/simulate.md "Chattering"), else a negative number.
   double ChatterTail(const detail::ChatterLimit& limit, const detail::ChatterRecord& now,
@@ -675,9 +684,11 @@ Slide Simulation::RestOrSlide(Slide hint) const {
 // Impact with `wall` (docs/model.md section 3): u+ = -e u, v+ = v + alpha (1+e) u. The impact
 // is recorded in its chattering sequence; once the sequence may end (ChatterTail), the run
 // jumps from right after this impact to the accumulation point, where Settle makes the body
-// rest on the wall. An impact slower than the cut-off (or the end of a long run of close
-// impacts) whose sequence cannot end there, with the body pushed into the wall, is taken as
-// plastic (u+ = 0, v+ = v + alpha u: the momentum of its remaining impacts).
+// rest on the wall (or lets it leave). An impact slower than the cut-off whose sequence does
+// not contract, or the end of a long run of close impacts that cannot be extrapolated, with
+// the body pushed into the wall, is taken as plastic (u+ = 0, v+ = v + alpha u: the momentum
+// of its remaining impacts); a contracting sequence below the cut-off whose ratio is not yet
+// steady goes on.
 // Energy: the kinetic energy lost, alpha (1-alpha) (1-e^2) u^2/2 (e = 0 when plastic: the
 // losses of the remaining impacts, sum (1-e^2) e^(2k) = 1).
 void Simulation::Impact(Wall wall) {
@@ -689,15 +700,16 @@ void Simulation::Impact(Wall wall) {
   }
   last_impact_wall_ = wall;
   last_impact_phase_ = phase;
-  const detail::ChatterRecord now = RecordChatter(wall, u, v);
-  const bool cut_off = (std::abs(u) < opt_.chatter_velocity &&
-                        chatter_.Size() >= detail::ChatterSequence::kImpacts) ||
-                       chatter_count_ > kMaxChatterImpacts;
-  const detail::ChatterLimit limit = chatter_.Limit();
-  const double tail = ChatterTail(limit, now, cut_off);
+  detail::ChatterRecord now;
+  const detail::ChatterLimit limit = RecordChatter(wall, u, v, &now);
+  const bool slow = std::abs(u) < opt_.chatter_velocity &&
+                    chatter_.Size() >= detail::ChatterSequence::kImpacts;
+  const bool too_many = chatter_count_ > kMaxChatterImpacts;
+  const double tail = ChatterTail(limit, now, slow || too_many);
+  const bool contracting = limit.valid && limit.ratio <= 1.0 - kMinChatterContraction;
   sg_.x0 = Position(wall);
   bool plastic = false;
-  if (tail < 0.0 && cut_off && !limit.valid) {
+  if (tail < 0.0 && (too_many || (slow && !contracting))) {
     const double v_plastic = v + sg_.alpha * u;
     const Slide slide = SlideOf(v_plastic);
     sg_.v0 = v_plastic;
@@ -724,7 +736,8 @@ void Simulation::Impact(Wall wall) {
   }
 }
 
-detail::ChatterRecord Simulation::RecordChatter(Wall wall, double u, double v) {
+detail::ChatterLimit Simulation::RecordChatter(Wall wall, double u, double v,
+                                               detail::ChatterRecord* record) {
   if (chatter_.Size() == 0 || wall != chatter_start_.wall) {
     chatter_.Clear();
     chatter_start_ = {wall, turns_, r_, sg_.y0, res_.energy};
@@ -739,20 +752,26 @@ detail::ChatterRecord Simulation::RecordChatter(Wall wall, double u, double v) {
                 res_.energy.motor_work_positive - e0.motor_work_positive,
                 res_.energy.friction_loss - e0.friction_loss,
                 res_.energy.impact_loss - e0.impact_loss};
-  chatter_.Add(rec);
-  return rec;
+  *record = rec;
+  return chatter_.Add(rec);
 }
 
 // A sequence ends at its accumulation point when its speeds shrink steadily (both ratio
-// estimates in (0, 1), within kChatterRatioSpread of each other) and either its two estimates
-// of the accumulation phase agree within chatter_tolerance or this impact is below the cut-off;
+// estimates in (0, 1), within kChatterRatioSpread of each other) and either the estimated error
+// of its accumulation phase is at most chatter_tolerance, or that error grew since the previous
+// impact from at most kChatterRoundingFactor times the tolerance (rounding, not truncation,
+// limits it: waiting would not help), or this impact is below the cut-off;
 // and only if the tail it skips is short enough to be local (at most a period, within the
 // run's span), the capsule's velocity keeps its sign over it, and F crosses none of the levels
 // that change the motion (+-T0, 0, +-alpha T0) there: the sums assume one pattern of flights.
 double Simulation::ChatterTail(const detail::ChatterLimit& limit, const detail::ChatterRecord& now,
                                bool cut_off) const {
   if (!limit.valid || !(limit.ratio_spread <= kChatterRatioSpread)) return -1.0;
-  if (!cut_off && !(limit.phase_error <= opt_.chatter_tolerance)) return -1.0;
+  const bool accurate = limit.phase_error <= opt_.chatter_tolerance;
+  const bool at_rounding = limit.phase_error > limit.previous_phase_error &&
+                           limit.previous_phase_error <= kChatterRoundingFactor *
+                                                             opt_.chatter_tolerance;
+  if (!cut_off && !accurate && !at_rounding) return -1.0;
   const double tail = limit.at.phase - now.phase;
   if (!(tail >= 0.0 && tail <= std::min(kTau, Remaining()))) return -1.0;
   if (limit.at.v * now.v < 0.0) return -1.0;
