@@ -9,25 +9,35 @@ namespace {
 constexpr int kPoints = ChatterSequence::kImpacts - 1;
 constexpr int kDegrees = kPoints - 1;
 
-// The limit of Q from its values q[0..kPoints) at successive impacts, when
+// The limit of Q from its values Q_j at kPoints successive impacts, when
 // Q_k - Q* = sum over d = 1..kDegrees of a_d r^(d k) (increments of degree d in the scale of
 // the sequence, docs/model.md section 14). The shift E: k -> k+1 maps r^(d k) to r^d r^(d k),
 // so p(E) = prod_d (E - r^d) annihilates every series and leaves p(1) Q*:
 //   Q* = sum_j c_j Q_j / p(1),   c_j the coefficients of p,
-// written as Q_last + sum_j c_j (Q_j - Q_last) / p(1) so that a constant Q stays exact. A
-// purely geometric Q gives Q_last + (Q_last - Q_before) r/(1 - r).
-double Extrapolate(const double (&q)[kPoints], double r) {
-  double c[kPoints] = {1.0};  // p(E) = 1, then times (E - r^d): c[j] is the coefficient of E^j
-  double p1 = 1.0, rd = 1.0;
-  for (int d = 1; d <= kDegrees; ++d) {
-    rd *= r;
-    p1 *= 1.0 - rd;
-    for (int j = d; j >= 0; --j) c[j] = (j > 0 ? c[j - 1] : 0.0) - rd * c[j];
+// written as Q_last + sum_j w_j (Q_j - Q_last), w_j = c_j / p(1), so that a constant Q stays
+// exact. A purely geometric Q gives Q_last + (Q_last - Q_before) r/(1 - r).
+struct Extrapolation {
+  double w[kPoints];
+
+  explicit Extrapolation(double r) {
+    double c[kPoints] = {1.0};  // p(E) = 1, then times (E - r^d): c[j] the coefficient of E^j
+    double p1 = 1.0, rd = 1.0;
+    for (int d = 1; d <= kDegrees; ++d) {
+      rd *= r;
+      p1 *= 1.0 - rd;
+      for (int j = d; j >= 0; --j) c[j] = (j > 0 ? c[j - 1] : 0.0) - rd * c[j];
+    }
+    for (int j = 0; j < kPoints; ++j) w[j] = c[j] / p1;
   }
-  double sum = 0.0;
-  for (int j = 0; j < kPoints; ++j) sum += c[j] * (q[j] - q[kPoints - 1]);
-  return q[kPoints - 1] + sum / p1;
-}
+
+  template <typename Get>
+  double operator()(const ChatterRecord* rec, Get get) const {
+    const double last = get(rec[kPoints - 1]);
+    double sum = 0.0;
+    for (int j = 0; j < kPoints - 1; ++j) sum += w[j] * (get(rec[j]) - last);
+    return last + sum;
+  }
+};
 
 struct Estimate {
   bool valid = false;
@@ -37,7 +47,7 @@ struct Estimate {
 
 // The accumulation point from kPoints successive impacts. The ratios of the last three speeds,
 // rho1 and rho2, drift towards the limit r as rho_k - r = g r^k (the force changes along the
-// sequence), so r = rho2 (1 - rho1)/(1 - rho2); then every tallied quantity by Extrapolate with
+// sequence), so r = rho2 (1 - rho1)/(1 - rho2); then every tallied quantity by Extrapolation with
 // that r.
 Estimate FromPoints(const ChatterRecord* rec) {
   Estimate est;
@@ -53,20 +63,18 @@ Estimate FromPoints(const ChatterRecord* rec) {
   if (!(r > 0.0 && r < 1.0)) return est;
   est.valid = true;
   est.ratio = r;
-  const auto lim = [&](auto get) {
-    double q[kPoints];
-    for (int j = 0; j < kPoints; ++j) q[j] = get(rec[j]);
-    return Extrapolate(q, r);
-  };
-  est.at.phase = lim([](const ChatterRecord& x) { return x.phase; });
+  const Extrapolation lim(r);
+  est.at.phase = lim(rec, [](const ChatterRecord& x) { return x.phase; });
   est.at.speed = 0.0;
-  est.at.v = lim([](const ChatterRecord& x) { return x.v; });
-  est.at.y = lim([](const ChatterRecord& x) { return x.y; });
-  est.at.energy.motor_work = lim([](const ChatterRecord& x) { return x.energy.motor_work; });
-  est.at.energy.motor_work_positive =
-      lim([](const ChatterRecord& x) { return x.energy.motor_work_positive; });
-  est.at.energy.friction_loss = lim([](const ChatterRecord& x) { return x.energy.friction_loss; });
-  est.at.energy.impact_loss = lim([](const ChatterRecord& x) { return x.energy.impact_loss; });
+  est.at.v = lim(rec, [](const ChatterRecord& x) { return x.v; });
+  est.at.y = lim(rec, [](const ChatterRecord& x) { return x.y; });
+  if (std::isnan(c.energy.motor_work)) return est;  // no energy budget
+  Energy& en = est.at.energy;
+  en.motor_work = lim(rec, [](const ChatterRecord& x) { return x.energy.motor_work; });
+  en.motor_work_positive =
+      lim(rec, [](const ChatterRecord& x) { return x.energy.motor_work_positive; });
+  en.friction_loss = lim(rec, [](const ChatterRecord& x) { return x.energy.friction_loss; });
+  en.impact_loss = lim(rec, [](const ChatterRecord& x) { return x.energy.impact_loss; });
   return est;
 }
 
