@@ -84,16 +84,21 @@ TEST_P(ChatterSettingsFromRest, EveryStartEndsInTheSameMotionWhateverTheCutOff) 
   EXPECT_EQ(compared, 3 * kGrid * kGrid);
 }
 
-// The main job's robot ("fastest motion from rest": the paper's force at T0 = 1) at e = 1 and
-// e = 0.9, and the exact stable optimum of docs/attractors.md (3 right + 1 left impacts a
-// period, no chattering). Reference figures: 0.151436, the main job's answer (6 digits as
-// printed); 0.1436930564 at e = 0.9 from a 300-period Simulate run from rest with the cut-off
-// 1e-8 before the accumulation rule existed (its sequences then simulated down to the
-// cut-off); 0.02442949323 as printed by `capsubot attractors` in docs/attractors.md.
+// The main job's robot ("fastest motion from rest": the paper's force at T0 = 1) at e = 1,
+// 0.999 and 0.9 (with the cut-offs 1e-8 and 1e-10 every start of the first two used to end in
+// the work bound), and the exact stable optimum of docs/attractors.md (3 right + 1 left
+// impacts a period, no chattering). Reference figures: 0.151436, the main job's answer (6
+// digits as printed); 0.1513077246 at e = 0.999 and 0.1436930564 at e = 0.9 from 300-period
+// Simulate runs from rest with the cut-off 1e-8 before the accumulation rule existed (their
+// sequences then simulated down to the cut-off; 10 digits); 0.02442949323 as printed by
+// `capsubot attractors` in docs/attractors.md.
 INSTANTIATE_TEST_SUITE_P(
     Attractors, ChatterSettingsFromRest,
     ::testing::Values(Robot{"main_e_1", 0.676954732510288, 0.323045267489712, -3.089378590956282,
                             0.9428190586419751, 1.0, 0.151436, 5e-6, true},
+                      Robot{"main_e_0p999", 0.676954732510288, 0.323045267489712,
+                            -3.089378590956282, 0.9428190586419751, 0.999, 0.1513077246, 1e-9,
+                            true},
                       Robot{"main_e_0p9", 0.676954732510288, 0.323045267489712,
                             -3.089378590956282, 0.9428190586419751, 0.9, 0.1436930564, 1e-9,
                             true},
