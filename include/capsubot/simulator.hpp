@@ -101,7 +101,7 @@ struct SimOptions {
   /// five impacts in its sequence, ends the sequence at the extrapolated accumulation point if
   /// the speeds shrink steadily; if they do not shrink (e = 1 without loss) and the relative
   /// acceleration pushes the body into the wall, as a plastic impact (u+ = 0), the body then
-  /// resting on the wall. Finite, > 0.
+  /// resting on the wall; a sequence that shrinks but not yet steadily goes on. Finite, > 0.
   double chatter_velocity = 1e-6;
   /// Work bound: at most this many events per simulated period (then status kEventLimit). >= 10.
   /// The total, this times ceil(periods), saturates at the largest std::int64_t (no overflow).
