@@ -705,7 +705,11 @@ void Simulation::Impact(Wall wall) {
   const bool slow = std::abs(u) < opt_.chatter_velocity &&
                     chatter_.Size() >= detail::ChatterSequence::kImpacts;
   const bool too_many = chatter_count_ > kMaxChatterImpacts;
-  const double tail = ChatterTail(limit, now, slow || too_many);
+  // A run that stops right after this impact (SimOptions::max_impacts_right) ends there.
+  const bool stops_here = wall == Wall::kRight && opt_.max_impacts_right > 0 &&
+                          res_.impacts_right + res_.transient.impacts_right + 1 >=
+                              opt_.max_impacts_right;
+  const double tail = stops_here ? -1.0 : ChatterTail(limit, now, slow || too_many);
   const bool contracting = limit.valid && limit.ratio <= 1.0 - kMinChatterContraction;
   sg_.x0 = Position(wall);
   bool plastic = false;

@@ -106,6 +106,20 @@ TEST_P(ConstantForceChatter, EndsAtTheClosedFormAccumulationPoint) {
 
 INSTANTIATE_TEST_SUITE_P(Simulator, ConstantForceChatter, ::testing::Values(0.3, 0.5, 0.8, 0.95));
 
+TEST(SimulatorChatter, ARunStoppedByItsImpactLimitEndsRightAfterTheImpact) {
+  // The sequence of ConstantForceChatter jumps after its fifth impact; a run limited to five
+  // right impacts ends right after that impact instead, as max_impacts_right promises.
+  const double e = 0.5, u0 = 0.01;
+  SimOptions opt = StartAt(0.5, 1.0, u0, 1.0, 0.25);
+  opt.max_impacts_right = 5;
+  const SimResult r = Simulate(Forcing::Harmonic(0.0, 0.1, 0.0), Params{1.0, e}, opt);
+  ASSERT_EQ(r.status, SimStatus::kImpactLimit);
+  EXPECT_EQ(r.impacts_right, 5);
+  EXPECT_EQ(r.sticks, 0);
+  EXPECT_EQ(r.final_state.x, 1.0);
+  EXPECT_TRUE(Near(r.final_state.u, -std::pow(e, 5) * u0, kClosedFormTol * u0));
+}
+
 TEST(SimulatorChatter, ElasticImpactsThatDoNotShrinkEndPlasticBelowTheCutOff) {
   // e = 1 and the capsule sliding all along: the speeds repeat (r = 1), there is no
   // accumulation point. Below the cut-off the fifth impact is made plastic (the momentum of
