@@ -96,8 +96,17 @@ struct SimOptions {
   /// Stop right after this many right-wall impacts over the whole run, transient included
   /// (0: no limit). An impact at phi = 0 counts.
   std::int64_t max_impacts_right = 0;
-  /// An impact slower than this (|u| before it), with the relative acceleration pushing the
-  /// inner body into the wall, ends in the body resting on the wall (chattering cut-off). > 0.
+  /// A chattering sequence (impacts on one wall with shrinking speeds, docs/model.md section 14)
+  /// is ended at its accumulation point, extrapolated from its last impacts, once the error of
+  /// the accumulation phase (estimated from the change of the extrapolation over one impact)
+  /// is below this, and the ratio of successive speeds is steady and below 1 (docs/simulate.md
+  /// "Chattering"); the body then rests on the wall. Finite, > 0.
+  double chatter_tolerance = 1e-10;
+  /// Fallback of the rule above: an impact slower than this (|u| before it), with at least
+  /// five impacts in its sequence, ends the sequence at the extrapolated accumulation point if
+  /// the speeds shrink steadily; if they do not shrink (e = 1 without loss) and the relative
+  /// acceleration pushes the body into the wall, as a plastic impact (u+ = 0), the body then
+  /// resting on the wall; a sequence that shrinks but not yet steadily goes on. Finite, > 0.
   double chatter_velocity = 1e-6;
   /// Work bound: at most this many events per simulated period (then status kEventLimit). >= 10.
   /// The total, this times ceil(periods), saturates at the largest std::int64_t (no overflow).
@@ -149,8 +158,9 @@ struct SimTally {
   double v_mean = kNaN;        ///< displacement / span
   /// Exact energy budget of the span (SimOptions::energy; NaN otherwise). Over any span,
   /// motor_work = friction_loss + impact_loss + change of the kinetic energy
-  /// ((1-alpha) v^2 + alpha (v+u)^2)/2. A stick (the chattering cut-off) counts as a plastic
-  /// impact: it removes alpha (1-alpha) u^2/2, the loss of the remaining impacts of the sequence.
+  /// ((1-alpha) v^2 + alpha (v+u)^2)/2. A sequence ended at its accumulation point adds the
+  /// extrapolated tallies of its remaining impacts and flights; one ended by the plastic
+  /// fallback counts it as a plastic impact (it removes alpha (1-alpha) u^2/2).
   Energy energy;
 };
 

@@ -102,7 +102,7 @@ ForceJet SegmentForce::SumJet(const Angle& at, bool derivatives) const {
   const double s = at.phi, c1 = at.cos, s1 = at.sin;
   double ck = c1, sk = s1, sF = 0.0, sdF = 0.0, sddF = 0.0, sPi = 0.0, sPhi = 0.0;
   for (int k = 0; k < K_; ++k) {
-    const double one_minus_c = 1.0 - ck, f = a_[k] * ck + b_[k] * sk, n = k + 1;
+    const double one_minus_c = Versine(ck, sk), f = a_[k] * ck + b_[k] * sk, n = k + 1;
     sF += f;
     if (derivatives) {
       sdF += n * (b_[k] * ck - a_[k] * sk);

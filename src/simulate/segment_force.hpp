@@ -21,6 +21,12 @@ struct CrossingList {
   int n = 0;
 };
 
+/// 1 - cos x from cos x and sin x: sin^2 x/(1 + cos x) where cos x > 0, so it keeps its
+/// relative accuracy for small x (the short flights of a chattering sequence, whose
+/// displacement Phi would otherwise lose it to the rounding of cos x near 1); 1 - cos x
+/// elsewhere (no cancellation there).
+inline double Versine(double c, double s) { return c > 0.0 ? s * s / (1.0 + c) : 1.0 - c; }
+
 class SegmentForce {
  public:
   /// Levels whose crossings a run looks up instead of solving them per segment.
@@ -102,7 +108,7 @@ class SegmentForce {
   template <bool kWithDerivatives>
   ForceJet Sums(const Angle& at) const {
     if (K_ != 1) return SumJet(at, kWithDerivatives);
-    const double s = at.phi, c1 = at.cos, s1 = at.sin, one_minus_c = 1.0 - c1;
+    const double s = at.phi, c1 = at.cos, s1 = at.sin, one_minus_c = Versine(c1, s1);
     const double f = a_[0] * c1 + b_[0] * s1;
     ForceJet j;
     j.F = c_ + f;

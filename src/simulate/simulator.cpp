@@ -14,6 +14,7 @@
 #include "model/enum_names.hpp"
 #include "numerics/phase_root.hpp"
 #include "numerics/safe_newton.hpp"
+#include "simulate/chatter.hpp"
 #include "simulate/cycle_memo.hpp"
 #include "simulate/segment_force.hpp"
 
@@ -29,9 +30,22 @@ constexpr double kMinCut = 1e-13;
 // chosen at a phase where F may be crossing T0, -T0 or a contact level (rounding of events).
 constexpr double kLevelTol = 1e-12;
 // Chattering safety bound: more consecutive impacts on one wall than this, each within
-// kChatterSpan in phase of the previous one, end in the body resting on the wall.
+// kChatterSpan in phase of the previous one, end the sequence as an impact slower than the
+// cut-off does.
 constexpr int kMaxChatterImpacts = 10000;
 constexpr double kChatterSpan = 1e-3;
+// A sequence is extrapolated to its accumulation point only while the ratio of successive
+// speeds is steady: its two estimates (ChatterLimit::ratio_spread) differ by at most this
+// fraction of 1 - r. Early in a sequence, while the impact map has not yet settled on its
+// geometric rate, they differ by more.
+constexpr double kChatterRatioSpread = 1e-3;
+// A sequence whose estimated error of the accumulation phase stops shrinking within this factor
+// of SimOptions::chatter_tolerance has reached the rounding of its estimates (about 1e-10 in
+// phase for the impacts of a sequence near speeds of 1e-4) and ends there.
+constexpr double kChatterRoundingFactor = 100.0;
+// Below the cut-off, a sequence whose ratio is above 1 - this (or that does not shrink at all)
+// is not contracting: at e = 1 without loss the speeds repeat to rounding.
+constexpr double kMinChatterContraction = 1e-6;
 // Points at which ReachOnPiece evaluates a concave piece while it bounds its maximum (Newton
 // steps on f', a few near a smooth maximum; this many only guard against rounding loops).
 constexpr int kMaxTangentCuts = 100;
@@ -87,7 +101,13 @@ struct Segment {
   // The state at s from the force values w = f.Values(s) (one sincos serves them all).
   double X(double s, const ForceValues& w) const {
     if (OnWall()) return x0;
-    return x0 + u0 * s + kx * (w.Phi + 0.5 * b * s * s);
+    return x0 + (u0 * s + kx * (w.Phi + 0.5 * b * s * s));
+  }
+  // x(s) - level with x0 - level taken first (exact next to a wall), so a body that stays close
+  // to the wall (a chattering flight) keeps the relative accuracy of its distance from it.
+  double Gap(double s, const ForceValues& w, double level) const {
+    if (OnWall()) return x0 - level;
+    return (x0 - level) + (u0 * s + kx * (w.Phi + 0.5 * b * s * s));
   }
   double U(double s, const ForceValues& w) const {
     if (OnWall()) return 0.0;
@@ -165,11 +185,11 @@ Hit ReachOnPiece(const Segment& sg, Wall wall, const detail::BracketEnd& lo,
   const auto at = [&](double s) {
     const Angle a = detail::SegmentForce::At(s);
     const ForceValues w = sg.f.Values(a);
-    return detail::BracketEnd{a, dir * (sg.X(s, w) - level), dir * sg.U(s, w), dir * sg.Accel(w)};
+    return detail::BracketEnd{a, dir * sg.Gap(s, w, level), dir * sg.U(s, w), dir * sg.Accel(w)};
   };
   const auto jet = [&](const Angle& a, const ForceJet& j) {
     const ForceValues w{j.F, j.Pi, j.Phi};
-    return detail::PhaseJet{dir * (sg.X(a.phi, w) - level), dir * sg.U(a.phi, w), dir * sg.Accel(w),
+    return detail::PhaseJet{dir * sg.Gap(a.phi, w, level), dir * sg.U(a.phi, w), dir * sg.Accel(w),
                             dir * sg.kx * j.dF};
   };
   const auto crossing = [&](const detail::BracketEnd& a, const detail::BracketEnd& b) {
@@ -247,8 +267,10 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
                   const Hit* end) {
   Angle al = detail::SegmentForce::At(0.0);
   ForceValues w = sg.f.Values(al);
-  double xl = sg.X(0.0, w), ul = sg.U(0.0, w), accl = sg.Accel(w);
-  const bool right_from_wall = xl - 1.0 >= 0.0, left_from_wall = -xl >= 0.0;
+  // Distances from the right and the left wall (<= 0 inside).
+  double rl = sg.Gap(0.0, w, 1.0), ll = -sg.Gap(0.0, w, 0.0);
+  double ul = sg.U(0.0, w), accl = sg.Accel(w);
+  const bool right_from_wall = rl >= 0.0, left_from_wall = ll >= 0.0;
   int next_cut = 0;
   while (al.phi < limit) {
     const double l = al.phi;
@@ -257,19 +279,21 @@ Reach FirstImpact(const Segment& sg, const detail::CrossingList& cuts, double li
     const bool known = end != nullptr && end->at.phi == r;
     const Angle ar = known ? end->at : detail::StepAngle(sg.f, al, r);
     w = known ? end->values : sg.f.Values(ar);
-    const double xr = sg.X(r, w), ur = sg.U(r, w), accr = sg.Accel(w);
+    const double rr = sg.Gap(r, w, 1.0), lr = -sg.Gap(r, w, 0.0);
+    const double ur = sg.U(r, w), accr = sg.Accel(w);
     // Sign of x'' on (l, r): from the force where a piece leaves a wall, else from the
     // monotone u.
     const double accel =
         l == 0.0 && (right_from_wall || left_from_wall) ? sg.f.PieceSign(-sg.b, l, r) : ur - ul;
-    const Hit right = ReachOnPiece(sg, Wall::kRight, {al, xl - 1.0, ul, accl},
-                                   {ar, xr - 1.0, ur, accr}, accel, l == 0.0 && right_from_wall);
-    const Hit left = ReachOnPiece(sg, Wall::kLeft, {al, -xl, -ul, -accl}, {ar, -xr, -ur, -accr},
+    const Hit right = ReachOnPiece(sg, Wall::kRight, {al, rl, ul, accl}, {ar, rr, ur, accr}, accel,
+                                   l == 0.0 && right_from_wall);
+    const Hit left = ReachOnPiece(sg, Wall::kLeft, {al, ll, -ul, -accl}, {ar, lr, -ur, -accr},
                                   -accel, l == 0.0 && left_from_wall);
     if (left.at.phi <= right.at.phi && left.at.phi < kInf) return {left, EventKind::kImpactLeft};
     if (right.at.phi < kInf) return {right, EventKind::kImpactRight};
     al = ar;
-    xl = xr;
+    rl = rr;
+    ll = lr;
     ul = ur;
     accl = accr;
   }
@@ -451,12 +475,28 @@ class Simulation {
   void Rebase(double s, const SimState& st);
   void AccumulateEnergy(double s, const ForceValues& w);
   void Emit(EventKind kind, double u_before, double v_before);
-  void EmitSamplesBefore(double s_end, bool final);
+  // `fixed`, when given, is reported for every sample (at the sample's phase) instead of
+  // the segment's state: the skipped tail of a chattering sequence.
+  void EmitSamplesBefore(double s_end, bool final, const SimState* fixed = nullptr);
   // Instantaneous transitions at the origin: impacts with inward velocity, choice of the
   // capsule mode when v = 0, sticking to and leaving a wall. `hint` is the slide direction
   // of a break-away (kNone if none).
   void Settle(Slide hint);
   void Impact(Wall wall);
+  // Adds the record of an impact on `wall` with u, v right before it (also returned in
+  // `record`) to the sequence of chatter_ (a new sequence when it is empty or on the other
+  // wall); returns the sequence's accumulation point estimated from its last impacts.
+  detail::ChatterLimit RecordChatter(Wall wall, double u, double v,
+                                     detail::ChatterRecord* record);
+  // The phase from the origin to the accumulation point of `limit` if the sequence may end
+  // there (docs/simulate.md "Chattering"), else a negative number.
+  double ChatterTail(const detail::ChatterLimit& limit, const detail::ChatterRecord& now,
+                     bool cut_off) const;
+  // Moves the origin `tail` ahead to the accumulation point of `limit`: the body on `wall`
+  // with u = 0, the capsule's velocity and position and the energy tallies extrapolated.
+  // `now` is the record of the impact just applied, `kinetic` the kinetic energy before it.
+  void JumpToAccumulation(Wall wall, const detail::ChatterLimit& limit, double tail,
+                          const detail::ChatterRecord& now, double kinetic);
   void Release(double u_before, double v_before);
   // Sets the capsule mode at the origin from v (and F when v = 0) without other transitions.
   void UpdateMode(Slide hint);
@@ -489,6 +529,16 @@ class Simulation {
   int chatter_count_ = 0;
   double last_impact_phase_ = -kInf;
   Wall last_impact_wall_ = Wall::kRight;
+  // The current chattering sequence: its last impacts, and the run at its first impact (the
+  // records count phase, position and energy from there).
+  detail::ChatterSequence chatter_;
+  struct ChatterStart {
+    Wall wall = Wall::kRight;
+    std::int64_t turns = 0;
+    double r = 0.0, y = 0.0;
+    Energy energy;
+  } chatter_start_;
+  std::array<double, 5> levels_{};  // the levels the events look for (Run)
   detail::CycleMemo<SegmentKey, Event> memo_;
 };
 
@@ -590,7 +640,7 @@ void Simulation::Emit(EventKind kind, double u_before, double v_before) {
 
 // Samples at phases k * sample_step in [origin, origin + s_end) of the current segment; with
 // `final`, every remaining sample up to the end phase (rounding of k * step allowed).
-void Simulation::EmitSamplesBefore(double s_end, bool final) {
+void Simulation::EmitSamplesBefore(double s_end, bool final, const SimState* fixed) {
   if (observer_ == nullptr || !(opt_.sample_step > 0.0)) return;
   const double origin = Phase(), end = (opt_.transient + opt_.periods) * kTau,
                slack = 1e-12 * (1.0 + end);
@@ -599,7 +649,13 @@ void Simulation::EmitSamplesBefore(double s_end, bool final) {
     if (p > end + slack) return;
     const double s = p - origin;
     if (!final && s >= s_end) return;
-    observer_->OnSample(StateAt(std::max(s, 0.0)));
+    if (fixed != nullptr) {
+      SimState st = *fixed;
+      st.phi = p;
+      observer_->OnSample(st);
+    } else {
+      observer_->OnSample(StateAt(std::max(s, 0.0)));
+    }
     ++next_sample_;
     if (!final && observer_->Done()) {
       stop_ = true;
@@ -636,10 +692,14 @@ Slide Simulation::RestOrSlide(Slide hint) const {
   return Slide::kNone;
 }
 
-// Impact with `wall` (docs/model.md section 3): u+ = -e u, v+ = v + alpha (1+e) u. A slow impact
-// (|u| < chatter_velocity, or the end of a long run of close impacts) with the body pushed
-// into the wall is taken as plastic: it ends a chattering sequence with the momentum of its
-// remaining impacts (u+ = 0, v+ = v + alpha u); Settle then makes the body rest on the wall.
+// Impact with `wall` (docs/model.md section 3): u+ = -e u, v+ = v + alpha (1+e) u. The impact
+// is recorded in its chattering sequence; once the sequence may end (ChatterTail), the run
+// jumps from right after this impact to the accumulation point, where Settle makes the body
+// rest on the wall (or lets it leave). An impact slower than the cut-off whose sequence does
+// not contract, or the end of a long run of close impacts that cannot be extrapolated, with
+// the body pushed into the wall, is taken as plastic (u+ = 0, v+ = v + alpha u: the momentum
+// of its remaining impacts); a contracting sequence below the cut-off whose ratio is not yet
+// steady goes on.
 // Energy: the kinetic energy lost, alpha (1-alpha) (1-e^2) u^2/2 (e = 0 when plastic: the
 // losses of the remaining impacts, sum (1-e^2) e^(2k) = 1).
 void Simulation::Impact(Wall wall) {
@@ -651,9 +711,20 @@ void Simulation::Impact(Wall wall) {
   }
   last_impact_wall_ = wall;
   last_impact_phase_ = phase;
+  detail::ChatterRecord now;
+  const detail::ChatterLimit limit = RecordChatter(wall, u, v, &now);
+  const bool slow = std::abs(u) < opt_.chatter_velocity &&
+                    chatter_.Size() >= detail::ChatterSequence::kImpacts;
+  const bool too_many = chatter_count_ > kMaxChatterImpacts;
+  // A run that stops right after this impact (SimOptions::max_impacts_right) ends there.
+  const bool stops_here = wall == Wall::kRight && opt_.max_impacts_right > 0 &&
+                          res_.impacts_right + res_.transient.impacts_right + 1 >=
+                              opt_.max_impacts_right;
+  const double tail = stops_here ? -1.0 : ChatterTail(limit, now, slow || too_many);
+  const bool contracting = limit.valid && limit.ratio <= 1.0 - kMinChatterContraction;
   sg_.x0 = Position(wall);
   bool plastic = false;
-  if (std::abs(u) < opt_.chatter_velocity || chatter_count_ > kMaxChatterImpacts) {
+  if (tail < 0.0 && (too_many || (slow && !contracting))) {
     const double v_plastic = v + sg_.alpha * u;
     const Slide slide = SlideOf(v_plastic);
     sg_.v0 = v_plastic;
@@ -663,6 +734,7 @@ void Simulation::Impact(Wall wall) {
   if (plastic) {
     sg_.u0 = 0.0;
     sg_.v0 = v + sg_.alpha * u;
+    chatter_.Clear();
   } else {
     sg_.u0 = -params_.e * u;
     sg_.v0 = v + sg_.alpha * (1.0 + params_.e) * u;
@@ -673,10 +745,88 @@ void Simulation::Impact(Wall wall) {
   }
   UpdateMode(Slide::kNone);
   Emit(ImpactKind(wall), u, v);
+  if (tail >= 0.0) {
+    const double kinetic = 0.5 * ((1.0 - sg_.alpha) * v * v + sg_.alpha * (v + u) * (v + u));
+    JumpToAccumulation(wall, limit, tail, now, kinetic);
+  }
+}
+
+detail::ChatterLimit Simulation::RecordChatter(Wall wall, double u, double v,
+                                               detail::ChatterRecord* record) {
+  if (chatter_.Size() == 0 || wall != chatter_start_.wall) {
+    chatter_.Clear();
+    chatter_start_ = {wall, turns_, r_, sg_.y0, res_.energy};
+  }
+  detail::ChatterRecord rec;
+  rec.phase = static_cast<double>(turns_ - chatter_start_.turns) * kTau + (r_ - chatter_start_.r);
+  rec.speed = std::abs(u);
+  rec.v = v;
+  rec.y = sg_.y0 - chatter_start_.y;
+  const Energy& e0 = chatter_start_.energy;
+  rec.energy = {res_.energy.motor_work - e0.motor_work,
+                res_.energy.motor_work_positive - e0.motor_work_positive,
+                res_.energy.friction_loss - e0.friction_loss,
+                res_.energy.impact_loss - e0.impact_loss};
+  *record = rec;
+  return chatter_.Add(rec);
+}
+
+// A sequence ends at its accumulation point when its speeds shrink steadily (both ratio
+// estimates in (0, 1), within kChatterRatioSpread of each other) and either the estimated error
+// of its accumulation phase is at most chatter_tolerance, or that error grew since the previous
+// impact from at most kChatterRoundingFactor times the tolerance (rounding, not truncation,
+// limits it: waiting would not help), or this impact is below the cut-off;
+// and only if the tail it skips is short enough to be local (at most a period, within the
+// run's span), the capsule's velocity keeps its sign over it, and F crosses none of the levels
+// that change the motion (+-T0, 0, +-alpha T0) there: the sums assume one pattern of flights.
+double Simulation::ChatterTail(const detail::ChatterLimit& limit, const detail::ChatterRecord& now,
+                               bool cut_off) const {
+  if (!limit.valid || !(limit.ratio_spread <= kChatterRatioSpread)) return -1.0;
+  const bool accurate = limit.phase_error <= opt_.chatter_tolerance;
+  const bool at_rounding = limit.phase_error > limit.previous_phase_error &&
+                           limit.previous_phase_error <= kChatterRoundingFactor *
+                                                             opt_.chatter_tolerance;
+  if (!cut_off && !accurate && !at_rounding) return -1.0;
+  const double tail = limit.at.phase - now.phase;
+  if (!(tail >= 0.0 && tail <= std::min(kTau, Remaining()))) return -1.0;
+  if (limit.at.v * now.v < 0.0) return -1.0;
+  for (const double level : levels_) {
+    if (sg_.f.Crossings(level, 0.0, tail).n > 0) return -1.0;
+  }
+  return tail;
+}
+
+void Simulation::JumpToAccumulation(Wall wall, const detail::ChatterLimit& limit, double tail,
+                                    const detail::ChatterRecord& now, double kinetic) {
+  SimState st;
+  st.mode = sg_.mode;
+  st.x = Position(wall);
+  st.u = 0.0;
+  st.v = limit.at.v;
+  st.y = chatter_start_.y + limit.at.y;
+  EmitSamplesBefore(tail, false, &st);
+  Rebase(tail, st);
+  if (opt_.energy) {
+    // Over the tail (from right before this impact): the motor's work and the impacts' loss
+    // extrapolated, the kinetic energy at both ends exact for their states, and the friction
+    // what the energy theorem leaves, so the budget holds for the state the run continues
+    // from (it equals T0 |y* - y| to the extrapolation's error).
+    const Energy& e0 = chatter_start_.energy;
+    const Energy& at = limit.at.energy;
+    const double motor = at.motor_work - now.energy.motor_work;
+    const double impacts = at.impact_loss - now.energy.impact_loss;
+    const double friction = motor - impacts - (0.5 * st.v * st.v - kinetic);
+    res_.energy = {e0.motor_work + at.motor_work, e0.motor_work_positive + at.motor_work_positive,
+                   e0.friction_loss + now.energy.friction_loss + friction,
+                   e0.impact_loss + at.impact_loss};
+  }
+  chatter_.Clear();
+  UpdateMode(Slide::kNone);
 }
 
 // The inner body leaves the wall it rested on (u stays 0).
 void Simulation::Release(double u_before, double v_before) {
+  chatter_.Clear();
   sg_.mode = SimMode::kRest;
   sg_.u0 = 0.0;
   UpdateMode(Slide::kNone);
@@ -713,6 +863,7 @@ void Simulation::Settle(Slide hint) {
         if (FreeAccelIntoWall(wall, sg_.slide)) {
           sg_.mode = wall == Wall::kRight ? SimMode::kOnRightWall : SimMode::kOnLeftWall;
           sg_.x0 = Position(wall);
+          chatter_.Clear();
           Emit(EventKind::kStick, 0.0, sg_.v0);
         }
       }
@@ -818,6 +969,7 @@ void Simulation::EndTransient() {
   span_y0_ = sg_.y0;
   in_transient_ = false;
   end_turns_ = opt_.transient + opt_.periods;
+  chatter_.Clear();  // its records count the energy from the old span's start
 }
 
 bool Simulation::Fail(const char* what) {
@@ -845,9 +997,9 @@ SimResult Simulation::Run() {
   sg_.T0 = params_.T0;
   // The levels the events look for (docs/model.md section 3): F = +-T0 (break-away, stop),
   // F = -b = 0, -+alpha T0 (the sign of x'' at rest and while sliding).
-  const double levels[] = {params_.T0, -params_.T0, 0.0, opt_.alpha * params_.T0,
-                           -(opt_.alpha * params_.T0)};
-  sg_.f.Prepare(forcing_, levels, static_cast<int>(std::size(levels)), kLevelTol * force_scale_);
+  levels_ = {params_.T0, -params_.T0, 0.0, opt_.alpha * params_.T0, -(opt_.alpha * params_.T0)};
+  sg_.f.Prepare(forcing_, levels_.data(), static_cast<int>(levels_.size()),
+                kLevelTol * force_scale_);
   sg_.f.Set(forcing_, 0.0);
   sg_.x0 = opt_.x0;
   sg_.u0 = opt_.u0;
@@ -949,6 +1101,8 @@ void SimOptions::Validate() const {
   }
   Require(chatter_velocity > 0.0 && std::isfinite(chatter_velocity), "chatter_velocity",
           chatter_velocity, "a finite number > 0");
+  Require(chatter_tolerance > 0.0 && std::isfinite(chatter_tolerance), "chatter_tolerance",
+          chatter_tolerance, "a finite number > 0");
   if (max_events_per_period < 10) {
     throw std::invalid_argument(fmt::format("max_events_per_period = {} is invalid: expected >= 10",
                                             max_events_per_period));

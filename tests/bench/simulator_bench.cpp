@@ -87,6 +87,37 @@ void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulateFourierOrbit100Periods);
 
+// A chattering motion: the main job's robot ("fastest motion from rest": the paper's force at
+// T0 = 1, A = 0.676954732510288, c = 0.323045267489712, phi0 = -3.089378590956282,
+// alpha = 0.9428190586419751) from rest in the middle, 200 + 100 periods, e = state.range(0)/1000
+// (1000: e = 1; 900: e = 0.9), every event searched. About 70 impacts a period end on one wall
+// in a chattering sequence. Counters: events_per_period; items_per_second = periods per second.
+void BM_SimulateChatteringFromRest(benchmark::State& state) {
+  Params params;
+  params.T0 = 1.0;
+  params.e = static_cast<double>(state.range(0)) / 1000.0;
+  const Forcing f = Forcing::Harmonic(0.676954732510288, 0.323045267489712, -3.089378590956282);
+  capsubot::SimOptions opt;
+  opt.alpha = 0.9428190586419751;
+  opt.x0 = 0.5;
+  opt.u0 = 0.0;
+  opt.v0 = 0.0;
+  opt.transient = 200.0;
+  opt.periods = 100.0;
+  opt.reuse_cycles = false;
+  constexpr double kPeriods = 300.0;
+  double sum = 0.0, events = 0.0;
+  for (auto _ : state) {
+    const capsubot::SimResult r = capsubot::Simulate(f, params, opt);
+    sum += r.displacement;
+    events = static_cast<double>(r.events + r.transient.events);
+  }
+  benchmark::DoNotOptimize(sum);
+  state.counters["events_per_period"] = events / kPeriods;
+  state.SetItemsProcessed(static_cast<int64_t>(static_cast<double>(state.iterations()) * kPeriods));
+}
+BENCHMARK(BM_SimulateChatteringFromRest)->Arg(1000)->Arg(900)->Unit(benchmark::kMillisecond);
+
 // The analytic stability of one orbit (what an optimiser or a sweep pays per point).
 void BM_ComputeStability(benchmark::State& state) {
   const StableOrbit s;

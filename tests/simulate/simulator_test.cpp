@@ -672,7 +672,9 @@ TEST(Simulator, ANearTouchOfAContactLevelInsideAPieceHidesNoImpact) {
     }
     if (events_clear < 0) events_clear = r.events;
     EXPECT_EQ(r.events, events_clear) << eps;
-    EXPECT_GT(r.impacts_right, 50) << eps;
+    // 36 right impacts (chattering sequences ended at their accumulation point); a missed
+    // return to the wall would leave a handful.
+    EXPECT_GT(r.impacts_right, 30) << eps;
     ++checked;
   }
   EXPECT_EQ(checked, 3);
