@@ -19,5 +19,6 @@ print(capsubot.__version__, capsubot.solve(A=0.5, c=0.5, phi0=-2.944899971002)['
 ")
 echo "$out"
 [[ $out == *" 0.35685746237742"* ]]  # the paper's example (README, 'capsubot solve')
-"$work/venv/bin/python" -m pip show capsubot | grep -q '^Version: 0.2.0'
+version=$("$work/venv/bin/python" -m pip show capsubot)
+[[ $version == *"Version: 0.2.0"* ]]
 echo "pip install: 1 passed, 0 failed"
