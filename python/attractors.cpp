@@ -83,8 +83,7 @@ constexpr const char* kAttractorsArgsDoc =
     "Returns a dict: starts (their number), attractors (a list of dicts, most starts first: "
     "status, period, impacts_right, impacts_left, mean_velocity (over its starts), velocity_min, "
     "velocity_max, fraction, starts, example_start {x0, psi}, one_impact_orbit, "
-    "spectral_radius and largest_multiplier (periodic motions), halves_difference (irregular "
-    "ones)), mean_velocity (over the starts that did not "
+    "halves_difference (irregular ones)), mean_velocity (over the starts that did not "
     "hit the work bound), event_limit_starts.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL; Ctrl-C interrupts it after the starts being simulated.\n\n";

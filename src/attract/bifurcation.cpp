@@ -142,6 +142,10 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
            BifurcationDiagram& out, const std::function<void()>& tick) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
+  ShootingOptions shooting;
+  shooting.chatter_velocity = o.motion.chatter_velocity;
+  shooting.max_events_per_period = o.motion.max_events_per_period;
+  shooting.reuse_cycles = o.motion.reuse_cycles;
   for (int n = 0; n < o.steps; ++n) {
     const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
     const double value = Value(o, i);
@@ -166,10 +170,20 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
         out.impacts.push_back({value, direction, im.period, im.right, phase, im.u_before});
       }
     }
-    if (o.multipliers && point.motion.refined) {  // Newton's multipliers of the motion
-      point.multiplier_re = point.motion.multiplier_re;
-      point.multiplier_im = point.motion.multiplier_im;
-      point.spectral_radius = point.motion.spectral_radius;
+    if (o.multipliers && point.motion.status == MotionStatus::kPeriodic) {
+      Motion& m = point.motion;
+      if (!m.refined) {  // Newton's method from the motion's state gives its multipliers
+        const PeriodicMotion pm =
+            ShootPeriodicMotion(r.forcing, r.params, r.alpha, m.section, m.period, shooting);
+        if (pm.status == ShootingStatus::kConverged && !pm.multipliers.empty()) {
+          m.spectral_radius = pm.spectral_radius;
+          m.multiplier_re = pm.multipliers.front().real();
+          m.multiplier_im = pm.multipliers.front().imag();
+        }
+      }
+      point.multiplier_re = m.multiplier_re;
+      point.multiplier_im = m.multiplier_im;
+      point.spectral_radius = m.spectral_radius;
     }
     out.summary.push_back(point);
     tick();

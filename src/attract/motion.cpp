@@ -89,6 +89,12 @@ constexpr int kMaxSettleTries = 4;
 // state lies within this of it (units of L and omega L); otherwise the period and velocity
 // come from the record alone.
 constexpr double kRefinedDistance = 1e-3;
+// A motion whose last states repeat to this (units of L and omega L) at a section clear of its
+// events is periodic to rounding: its period, impacts and mean velocity are read off its last
+// periods, exact to that, without Newton's method.
+constexpr double kSettledTol = 1e-11;
+// An event closer than this (rad) to the section may fall on either side of it.
+constexpr double kSectionClearance = 1e-6;
 
 double Distance(const PhaseState& a, const PhaseState& b) {
   return std::max({std::abs(a.x - b.x), std::abs(a.u - b.u), std::abs(a.v - b.v)});
@@ -122,16 +128,33 @@ class LongRun : public SimObserver {
  public:
   LongRun(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& o,
           Recorder& recorder)
-      : forcing_(forcing), params_(params), alpha_(alpha), o_(o), recorder_(recorder) {
+      : forcing_(forcing),
+        params_(params),
+        alpha_(alpha),
+        o_(o),
+        recorder_(recorder),
+        right_(static_cast<std::size_t>(2 * o.max_period), 0),
+        left_(static_cast<std::size_t>(2 * o.max_period), 0) {
     ring_.reserve(static_cast<std::size_t>(2 * o.max_period + 1));
   }
 
-  void OnEvent(const SimEvent& event) override { recorder_.OnEvent(event); }
+  void OnEvent(const SimEvent& event) override {
+    recorder_.OnEvent(event);
+    const double turns = std::floor(event.after.phi / kTau);
+    const double within = event.after.phi - turns * kTau;
+    const auto period = static_cast<std::int64_t>(turns);
+    if (within < kSectionClearance || within > kTau - kSectionClearance) near_section_ = period;
+    if (event.kind != EventKind::kImpactRight && event.kind != EventKind::kImpactLeft) return;
+    const auto slot = static_cast<std::size_t>(period % (2 * o_.max_period));
+    ++(event.kind == EventKind::kImpactRight ? right_ : left_)[slot];
+  }
 
   void OnSample(const SimState& state) override {
     const auto cap = static_cast<std::size_t>(2 * o_.max_period + 1);
     if (ring_.size() == cap) ring_.erase(ring_.begin());
     ring_.push_back(state);
+    const auto slot = static_cast<std::size_t>(samples_ % (2 * o_.max_period));
+    right_[slot] = left_[slot] = 0;  // period samples_ starts here
     if (samples_ == o_.transient) record_start_ = state;
     if (samples_ == o_.transient + o_.record / 2) record_middle_ = state;
     ++samples_;
@@ -160,6 +183,40 @@ class LongRun : public SimObserver {
 
   void SetPhase(double psi) { psi_ = psi; }
   const std::vector<SimState>& Ring() const { return ring_; }
+
+  // The period of a motion whose last states repeat to kSettledTol at a section clear of its
+  // events over the last max_period periods, when no shorter period repeats to
+  // state_tolerance (a slowly converging motion may repeat closer every 2 periods than every
+  // period: Newton's method decides that one); 0 otherwise.
+  int SettledPeriod() const {
+    if (!SectionClear()) return 0;
+    const int p = DetectPeriod(ring_, o_.max_period, kSettledTol);
+    return p > 0 && DetectPeriod(ring_, o_.max_period, o_.state_tolerance) == p ? p : 0;
+  }
+
+  // No event within kSectionClearance of the section over the last max_period periods.
+  bool SectionClear() const { return near_section_ < samples_ - 1 - o_.max_period; }
+
+  // The motion of period p read off the last states and impacts.
+  Motion FromRing(int p) const {
+    Motion m;
+    m.status = MotionStatus::kPeriodic;
+    m.period = p;
+    const int done = samples_ - 1, P2 = 2 * o_.max_period;
+    for (int k = done - p; k < done; ++k) {
+      const auto slot = static_cast<std::size_t>(k % P2);
+      m.impacts_right += right_[slot];
+      m.impacts_left += left_[slot];
+    }
+    // Over its last period p (the earlier states of the ring may precede the motion).
+    const auto n = ring_.size() - 1;
+    m.mean_velocity = (ring_[n].y - ring_[n - static_cast<std::size_t>(p)].y) / (p * kTau);
+    m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
+    const SimState& last = ring_.back();
+    m.section = {last.x, last.u, last.v, psi_};
+    m.mode = last.mode;
+    return m;
+  }
   const PeriodicMotion& Settled() const { return settled_; }
   const SimState& RecordStart() const { return record_start_; }
   const SimState& RecordMiddle() const { return record_middle_; }
@@ -171,6 +228,8 @@ class LongRun : public SimObserver {
   const MotionOptions& o_;
   Recorder& recorder_;
   std::vector<SimState> ring_;
+  std::vector<std::int32_t> right_, left_;  // impacts of the last 2 max_period periods
+  std::int64_t near_section_ = -1;           // last period with an event at the section
   int samples_ = 0;
   int tries_ = 0;
   double psi_ = 0.0;
@@ -243,15 +302,18 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   }
   if (run.Settled().status == ShootingStatus::kConverged) {
     recorder.impacts.clear();
-    return FromPeriodic(run.Settled());
+    // Read off the last states when they already repeat with the motion's own period.
+    const int settled = run.SettledPeriod();
+    return settled == run.Settled().period ? run.FromRing(settled) : FromPeriodic(run.Settled());
   }
+  if (const int settled = run.SettledPeriod(); settled > 0) return run.FromRing(settled);
   // The period: from the states at the start's phase, or, when those do not repeat (the
   // phase may lie on an event), from a section clear of the events.
   MapState at = end;
   Recorder probe;
   const std::vector<SimState>* samples = &run.Ring();
   int p = DetectPeriod(*samples, options.max_period, options.state_tolerance);
-  if (p == 0) {
+  if (p == 0 && !run.SectionClear()) {  // the states may flip across an event
     p = ProbePeriod(forcing, params, alpha, options, end, probe, &at);
     samples = &probe.samples;
   }
@@ -262,17 +324,19 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
       return FromPeriodic(pm);
     }
     // Newton failed (a non-smooth map, a work bound): the states repeat all the same.
+    if (samples == &run.Ring()) return run.FromRing(p);
     m.status = MotionStatus::kPeriodic;
     m.period = p;
-    for (int k = R - p; k < R; ++k) {
-      m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
-      m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
-    }
-    const int n = static_cast<int>(samples->size()) - 1, whole = (n / p) * p;
     const std::vector<SimState>& S = *samples;
+    const int n = static_cast<int>(S.size()) - 1, whole = (n / p) * p;
     m.mean_velocity = (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
                       (whole * kTau);
     m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
+    for (std::size_t k = probe.right.size() - static_cast<std::size_t>(p); k < probe.right.size();
+         ++k) {
+      m.impacts_right += probe.right[k];
+      m.impacts_left += probe.left[k];
+    }
     m.section = end.z;
     m.mode = end.mode;
     return m;

@@ -28,10 +28,6 @@ nlohmann::json AttractorsJson(const Attractors& a) {
     if (at.motion.status == MotionStatus::kNoPeriod) {
       x["halves_difference"] = at.halves_difference;
     }
-    if (at.motion.refined) {
-      x["spectral_radius"] = at.motion.spectral_radius;
-      x["largest_multiplier"] = {at.motion.multiplier_re, at.motion.multiplier_im};
-    }
     j["attractors"].push_back(x);
   }
   j["mean_velocity"] = a.mean_velocity;

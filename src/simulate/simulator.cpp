@@ -805,6 +805,11 @@ void Simulation::JumpToAccumulation(Wall wall, const detail::ChatterLimit& limit
   st.v = limit.at.v;
   st.y = chatter_start_.y + limit.at.y;
   EmitSamplesBefore(tail, false, &st);
+  if (stop_) {  // the observer stopped at a sample inside the tail: the run ends there
+    Rebase(stop_at_, st);
+    chatter_.Clear();
+    return;
+  }
   Rebase(tail, st);
   if (opt_.energy) {
     // Over the tail (from right before this impact): the motor's work and the impacts' loss
@@ -1016,7 +1021,7 @@ SimResult Simulation::Run() {
   res_.status = SimStatus::kOk;
   Settle(Slide::kNone);
   for (;;) {
-    if (StopIfNotFinite()) break;
+    if (stop_ || StopIfNotFinite()) break;
     const std::int64_t impacts_right = res_.impacts_right + res_.transient.impacts_right;
     if (opt_.max_impacts_right > 0 && impacts_right >= opt_.max_impacts_right) {
       res_.status = SimStatus::kImpactLimit;
