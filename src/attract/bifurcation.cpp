@@ -142,10 +142,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
            BifurcationDiagram& out, const std::function<void()>& tick) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
-  ShootingOptions shooting;
-  shooting.chatter_velocity = o.motion.chatter_velocity;
-  shooting.max_events_per_period = o.motion.max_events_per_period;
-  shooting.reuse_cycles = o.motion.reuse_cycles;
+  const ShootingOptions shooting = detail::ShootingOf(o.motion);
   for (int n = 0; n < o.steps; ++n) {
     const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
     const double value = Value(o, i);

@@ -280,16 +280,9 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   recorder.Start(R, false, false, keep_impacts, psi, T * kTau);
   LongRun run(forcing, params, alpha, options, recorder);
   run.SetPhase(psi);
-  SimOptions o;
-  o.alpha = alpha;
-  o.x0 = std::clamp(s.z.x, 0.0, 1.0);  // a free motion may overshoot a wall by rounding
-  o.u0 = s.z.u;
-  o.v0 = s.z.v;
+  SimOptions o = RunOptions(options, alpha, s.z);
   o.transient = T;
   o.periods = R;
-  o.chatter_velocity = options.chatter_velocity;
-  o.max_events_per_period = options.max_events_per_period;
-  o.reuse_cycles = options.reuse_cycles;
   o.sample_step = kTau;
   const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + psi), params, o, &run);
   const SimState& f = r.final_state;

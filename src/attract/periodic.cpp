@@ -282,6 +282,10 @@ PeriodicMotion ShootMinimal(Shooter& shooter, const PhaseState& z0, int p,
   return pm;
 }
 
+}  // namespace
+
+namespace detail {
+
 ShootingOptions ShootingOf(const MotionOptions& mo) {
   ShootingOptions o;
   o.chatter_velocity = mo.chatter_velocity;
@@ -289,10 +293,6 @@ ShootingOptions ShootingOf(const MotionOptions& mo) {
   o.reuse_cycles = mo.reuse_cycles;
   return o;
 }
-
-}  // namespace
-
-namespace detail {
 
 PeriodicMotion RefinePeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
                                     const MotionOptions& options, MapState s, int p,

@@ -39,18 +39,23 @@ void Recorder::OnSample(const SimState& state) {
   if (keep_samples_) samples.push_back(state);
 }
 
-SimResult Advance(const Forcing& forcing, const Params& params, double alpha,
-                  const MotionOptions& options, MapState& s, double periods, double* displacement,
-                  SimObserver* observer, bool sample) {
+SimOptions RunOptions(const MotionOptions& options, double alpha, const PhaseState& z) {
   SimOptions o;
   o.alpha = alpha;
-  o.x0 = std::clamp(s.z.x, 0.0, 1.0);  // a free motion may overshoot a wall by rounding
-  o.u0 = s.z.u;
-  o.v0 = s.z.v;
-  o.periods = periods;
+  o.x0 = std::clamp(z.x, 0.0, 1.0);  // a free motion may overshoot a wall by rounding
+  o.u0 = z.u;
+  o.v0 = z.v;
   o.chatter_velocity = options.chatter_velocity;
   o.max_events_per_period = options.max_events_per_period;
   o.reuse_cycles = options.reuse_cycles;
+  return o;
+}
+
+SimResult Advance(const Forcing& forcing, const Params& params, double alpha,
+                  const MotionOptions& options, MapState& s, double periods, double* displacement,
+                  SimObserver* observer, bool sample) {
+  SimOptions o = RunOptions(options, alpha, s.z);
+  o.periods = periods;
   o.sample_step = sample ? kTau : 0.0;
   const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + s.z.psi), params, o, observer);
   const SimState& f = r.final_state;

@@ -56,6 +56,13 @@ class Recorder : public SimObserver {
   bool keep_samples_ = false, keep_events_ = false, keep_impacts_ = false;
 };
 
+/// The simulator's options for a run from state z (its forcing phase aside) with the settings
+/// of `options`.
+SimOptions RunOptions(const MotionOptions& options, double alpha, const PhaseState& z);
+
+/// The shooting's options with the simulator settings of `options` (periodic.cpp).
+ShootingOptions ShootingOf(const MotionOptions& options);
+
 /// Simulates `periods` (> 0, any real) forcing periods from s, updates s (state, phase, mode)
 /// and adds the capsule displacement to *displacement (if given). The observer gets phases
 /// measured from s.z.psi; with `sample` the samples are at whole periods.
