@@ -49,42 +49,46 @@ DesignInput Input(const Robot& r) {
   return in;
 }
 
-// What a scan of log-spaced m2 sees: each window (a run of robots with a gait, by its first
-// and last m2) and the fastest robot, refined by local grids that shrink around the best.
+// What a scan of log-spaced m2 (or f) sees: each window (a run of robots with a gait, by its
+// first and last value) and the fastest robot, refined by local grids that shrink around it.
 struct Reference {
   std::vector<std::pair<double, double>> windows;
-  double best_m2 = NAN;
+  double best_value = NAN;  // the best m2 (or frequency), refined
   double best_speed = NAN;
 };
 
-double Speed(const DesignInput& in, double m2) {
-  const Gait g = EvaluateGait(in, m2, in.frequency_min);
+// The speed of the robot's gait (-infinity without one).
+double Speed(const DesignInput& in, double m2, double frequency) {
+  const Gait g = EvaluateGait(in, m2, frequency);
   return g.ok() ? g.speed_mm_s : -INFINITY;
 }
 
-Reference Scan(const DesignInput& in, int n) {
-  const double lo = std::log(in.M2Min()), hi = std::log(in.M2Max());
-  const auto m2_at = [&](int i) { return std::exp(lo + (hi - lo) * i / (n - 1)); };
+// A scan of speed_at(v) at n log-spaced v over [lo_value, hi_value].
+template <class SpeedFn>
+Reference Scan(const SpeedFn& speed_at, double lo_value, double hi_value, int n) {
+  const double lo = std::log(lo_value), hi = std::log(hi_value);
+  const auto value_at = [&](int i) { return std::exp(lo + (hi - lo) * i / (n - 1)); };
   Reference r;
   int best = -1;
   std::vector<double> speed(n);
   for (int i = 0; i < n; ++i) {
-    speed[i] = Speed(in, m2_at(i));
+    speed[i] = speed_at(value_at(i));
     if (speed[i] == -INFINITY) continue;
-    if (i == 0 || speed[i - 1] == -INFINITY) r.windows.push_back({m2_at(i), 0.0});
-    r.windows.back().second = m2_at(i);
+    if (i == 0 || speed[i - 1] == -INFINITY) r.windows.push_back({value_at(i), 0.0});
+    r.windows.back().second = value_at(i);
     if (best < 0 || speed[i] > speed[best]) best = i;
   }
   if (best < 0) return r;
   // Local grids of 11 points between the best point's neighbours, 16 times: the bracket
   // shrinks five-fold each time, from the scan's spacing to below 1e-12 of it.
-  double a = std::log(m2_at(std::max(best - 1, 0))), c = std::log(m2_at(std::min(best + 1, n - 1)));
-  double x = std::log(m2_at(best));
+  double a = std::log(value_at(std::max(best - 1, 0)));
+  double c = std::log(value_at(std::min(best + 1, n - 1)));
+  double x = std::log(value_at(best));
   r.best_speed = speed[best];
   for (int round = 0; round < 16; ++round) {
     const double step = (c - a) / 10.0;
     for (int k = 0; k <= 10; ++k) {
-      const double y = a + step * k, v = Speed(in, std::exp(y));
+      const double y = a + step * k, v = speed_at(std::exp(y));
       if (v > r.best_speed) {
         r.best_speed = v;
         x = y;
@@ -93,8 +97,13 @@ Reference Scan(const DesignInput& in, int n) {
     a = std::max(a, x - step);
     c = std::min(c, x + step);
   }
-  r.best_m2 = std::exp(x);
+  r.best_value = std::exp(x);
   return r;
+}
+
+Reference ScanM2(const DesignInput& in, int n) {
+  return Scan([&](double m2) { return Speed(in, m2, in.frequency_min); }, in.M2Min(), in.M2Max(),
+              n);
 }
 
 // A robot of the former search's blind spot: its only window, m2 in [0.6497, 0.66] kg, lies
@@ -134,7 +143,7 @@ constexpr Robot kTable[] = {
 // Checks the design of one robot against a scan of n robots; returns the windows the scan saw.
 int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row) {
   const DesignInput in = Input(robot);
-  const Reference ref = Scan(in, n);
+  const Reference ref = ScanM2(in, n);
   std::vector<detail::M2Window> windows;
   const Gait bracketed = detail::BestOverM2(in, in.frequency_min, &windows);
   const DesignResult r = Design(in);
@@ -165,7 +174,7 @@ int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row) {
   EXPECT_TRUE(EvaluateGait(in, r.one_impact.m2_kg, in.frequency_min).ok()) << "row " << row;
   EXPECT_GE(r.one_impact.speed_mm_s, ref.best_speed * (1.0 - kSpeedRelTol))
       << "row " << row << ": design m2 = " << r.one_impact.m2_kg << " kg, scan m2 = "
-      << ref.best_m2 << " kg";
+      << ref.best_value << " kg";
   // Faster than the scan only in a window the scan did not see.
   if (r.one_impact.speed_mm_s > ref.best_speed * (1.0 + kSpeedRelTol)) {
     for (const auto& [first, last] : ref.windows) {
@@ -201,6 +210,32 @@ TEST(DesignWindows, EveryWindowOfADenseScanIsFoundOnATableOfRandomRobots) {
   // changed).
   EXPECT_EQ(with_gait, 20);
   EXPECT_EQ(windows, 20);
+}
+
+// The frequency search: a robot of the table with its m2 fixed at 0.8788 kg and a clearance d
+// from both walls just below the largest its gait allows. By the scaling of docs/model.md
+// section 6, changing f multiplies 1 - x by k = (7.686 Hz / f)^2 and leaves the rest of the
+// orbit as it is, so the walls with clearance d admit only k in [d/(1 - x_max), (1 - d)/(1 -
+// x_min)] of the orbit at 7.686 Hz: a band of about 1e-4 in log f near 7.88 Hz, 200 times
+// narrower than the spacing of the scan of [4, 16] Hz (the search before the bracketing found
+// no gait).
+TEST(DesignWindows, TheFrequencySearchFindsABandOfFrequenciesNarrowerThanItsScan) {
+  DesignInput in = Input(kTable[16]);
+  in.margin = 0.0492;
+  in.frequency_min = 4.0;
+  in.frequency_max = 16.0;
+  constexpr double kM2 = 0.8788;
+  const Gait g = DesignGait(in, kM2);
+  ASSERT_TRUE(g.ok()) << GaitStatusName(g.status);
+  // The scan: 4000 log-spaced frequencies (1.6e-5 apart in log f) over [7.5, 8.5] Hz, where
+  // the band lies (outside it x reaches a wall's clearance).
+  const Reference ref = Scan([&](double f) { return Speed(in, kM2, f); }, 7.5, 8.5, 4000);
+  ASSERT_EQ(ref.windows.size(), 1u);
+  EXPECT_LT(std::log(ref.windows[0].second / ref.windows[0].first), 2e-4);
+  EXPECT_GE(g.frequency_hz, ref.windows[0].first * (1.0 - 1e-4));
+  EXPECT_LE(g.frequency_hz, ref.windows[0].second * (1.0 + 1e-4));
+  EXPECT_GE(g.speed_mm_s, ref.best_speed * (1.0 - kSpeedRelTol))
+      << "design f = " << g.frequency_hz << " Hz, scan f = " << ref.best_value << " Hz";
 }
 
 }  // namespace
