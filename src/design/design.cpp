@@ -24,9 +24,10 @@ constexpr double kLogTol = 1e-9;
 // Resolution of the bracketing of windows in log(m2) and log(f) (docs/design.md, "How the
 // search works"): a window wider than this is found where the search looks for one ...
 constexpr double kWindowResolution = 1e-6;
-// ... and one that reaches a fold of alpha(phi0), where the robot's orbits merge, if it is
-// wider than this: closer to the fold the orbit search needs far more work to tell two orbits
-// from none (about ten times the default DesignInput::orbit_evaluations within 1e-6).
+// ... and a gap across which the robot's orbit count changes (a fold of alpha(phi0), where two
+// orbits merge) is bisected to this: within 1e-5 to 1e-4 of the fold (by robot) the orbit
+// search needs more than the default DesignInput::orbit_evaluations to tell two orbits from
+// none, and a robot that close, met by chance, is an unresolved robot.
 constexpr double kFoldResolution = 1e-3;
 // Bracketing budget of one search, in robots (or m2 searches) per scan sample.
 constexpr int kRefinementsPerSample = 8;
