@@ -185,7 +185,7 @@ struct DesignResult {
 };
 
 /// Reports the robots evaluated so far (done of total, total an upper bound that the search
-/// raises when it finds more than one window of gaits); must be cheap.
+/// raises when its windows hold more than one maximum of the speed); must be cheap.
 using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
 /// The fastest robust one-impact gait over m2 in [M2Min, M2Max] (and f in the frequency range).
@@ -195,11 +195,11 @@ using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)
 /// disappears (bisected to 1e-6) and beside an infeasible sample whose feasibility measure
 /// (the largest over the robot's orbits of the smallest slack of the limits of a robust gait)
 /// is a local maximum (golden section on the measure to 1e-6). Then the speed is maximised in
-/// each window by golden section (to 1e-9 relative, at most 100 steps) and the fastest is
-/// kept. With a frequency range the same search runs over f, each point an m2 search whose
+/// each window by golden section from each local maximum of its samples (to 1e-9 relative, at
+/// most 100 steps) and the fastest is kept. With a frequency range the same search runs over f, each point an m2 search whose
 /// measure is the largest it met (docs/design.md, "How the search works"). Work is bounded
-/// by B = 9 scan_points + 100 W robots for a fixed frequency (W the windows found; one in the
-/// examples) and B_f * B_m2 with a range, each of at most orbit_evaluations evaluations, and it
+/// by B = 9 scan_points + 100 M robots for a fixed frequency (M the local maxima of the speed
+/// among the samples of the windows; one in the examples) and B_f * B_m2 with a range, each of at most orbit_evaluations evaluations, and it
 /// stops after kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws
 /// std::invalid_argument for invalid input.
 DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});

@@ -36,7 +36,7 @@ constexpr int kRefinementsPerSample = 8;
 // searches have hit their work bound, the searches ask for no more robots.
 struct Tally {
   const DesignProgress& progress;
-  std::int64_t total = 0;  // upper bound for progress reports, raised when windows are found
+  std::int64_t total = 0;  // upper bound for progress reports, raised for more speed maxima
   std::int64_t robots = 0;
   std::int64_t unresolved = 0;
   int exhausted = 0;  // searches whose bracketing budget ran out
@@ -88,8 +88,8 @@ Found Robot(const DesignInput& in, double m2, double frequency, Tally& tally) {
   return r;
 }
 
-// Robots (or m2 searches) one search evaluates at most when it finds one window; each more
-// window adds kGoldenMaxSteps.
+// Robots (or m2 searches) one search evaluates at most when its windows hold one local maximum
+// of the speed; each more adds kGoldenMaxSteps.
 std::int64_t SearchBound(const DesignInput& in) {
   return static_cast<std::int64_t>(in.scan_points) * (1 + kRefinementsPerSample) +
          detail::kGoldenMaxSteps;
@@ -131,9 +131,8 @@ Found Maximise(double lo, double hi, int n, const Inner& inner, Tally& tally, st
   options.tol = kLogTol;
   const detail::WindowSearch search = detail::MaximiseOverWindows(
       probe, [&tally] { return tally.stopped(); }, std::log(lo), std::log(hi), options);
-  if (search.windows.size() > 1) {
-    tally.total += static_cast<std::int64_t>(search.windows.size() - 1) *
-                   detail::kGoldenMaxSteps * cost;
+  if (search.maxima > 1) {
+    tally.total += static_cast<std::int64_t>(search.maxima - 1) * detail::kGoldenMaxSteps * cost;
   }
   if (search.exhausted) ++tally.exhausted;
   if (windows != nullptr) {

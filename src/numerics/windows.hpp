@@ -2,7 +2,8 @@
 // Bounded 1-D maximisation over a feasible set made of windows, some of them far narrower than
 // the spacing of a scan: the windows are bracketed first, with a feasibility measure that is
 // continuous between the points where the number of solution branches changes, then the
-// objective is maximised inside each window (GoldenRefine) and the best is kept.
+// objective is maximised inside each window (GoldenRefine from each local maximum of its
+// samples) and the best is kept.
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,7 @@ struct WindowSearch {
   /// The best objective over the windows (x and f; its index and evaluations are unused).
   ScanMax best;
   int evaluations = 0;                ///< calls of the probe
+  int maxima = 0;  ///< local maxima of the objective refined in the windows
   /// The refinement budget ran out while some gap still had to be refined: a window narrower
   /// than the scan's spacing may be missing.
   bool exhausted = false;
@@ -137,10 +139,11 @@ inline double NextTrial(const std::vector<WindowSample>& s, const WindowOptions&
 /// First options.scan_points uniform samples lo, ..., hi (both ends exact). Then the gaps that
 /// may hide a window are refined (windows_internal::NextTrial) until each is narrower than
 /// its resolution or options.max_refinements probes have been spent (`exhausted`). Then in
-/// each window, from its best sample and between its neighbours, GoldenRefine maximises the
-/// objective to options.tol. halt() is asked before each probe; once it says true the search
-/// ends with what it has. At most scan_points + max_refinements + kGoldenMaxSteps * windows
-/// probes.
+/// each window, from each local maximum of the objective among its samples and between that
+/// sample's neighbours, GoldenRefine maximises the objective to options.tol, and the best is
+/// kept. halt() is asked before each probe; once it says true the search ends with what it
+/// has. At most scan_points + max_refinements + kGoldenMaxSteps * M probes, M the local maxima
+/// of the objective among the samples of the windows.
 template <class ProbeFn, class HaltFn>
 WindowSearch MaximiseOverWindows(const ProbeFn& probe, const HaltFn& halt, double lo, double hi,
                                  const WindowOptions& options) {
@@ -178,17 +181,25 @@ WindowSearch MaximiseOverWindows(const ProbeFn& probe, const HaltFn& halt, doubl
     return p.feasible ? p.value : std::numeric_limits<double>::quiet_NaN();
   };
   for (const Window& w : r.windows) {
-    int j = w.first;
-    for (int k = w.first + 1; k <= w.last; ++k) {
-      if (s[k].probe.value > s[j].probe.value) j = k;
+    for (int j = w.first; j <= w.last; ++j) {
+      // Every local maximum of the objective among the window's samples (its ends compared
+      // with their neighbour inside only): the objective may have several in one window (where
+      // the fastest solution changes), and the best sample need not be next to the best one.
+      const double v = s[j].probe.value;
+      const bool left_lower = j == w.first || s[j - 1].probe.value < v;
+      const bool right_lower = j == w.last || s[j + 1].probe.value < v;
+      const bool left_not_higher = j == w.first || s[j - 1].probe.value <= v;
+      const bool right_not_higher = j == w.last || s[j + 1].probe.value <= v;
+      if (!((left_lower && right_not_higher) || (left_not_higher && right_lower))) continue;
+      ScanMax start;
+      start.x = s[j].x;
+      start.f = v;
+      const double a = s[j > 0 ? j - 1 : j].x;
+      const double c = s[j + 1 < static_cast<int>(s.size()) ? j + 1 : j].x;
+      ++r.maxima;
+      const ScanMax m = GoldenRefine(objective, a, c, options.tol, start);
+      if (m.f > r.best.f) r.best = m;
     }
-    ScanMax start;
-    start.x = s[j].x;
-    start.f = s[j].probe.value;
-    const double a = s[j > 0 ? j - 1 : j].x;
-    const double c = s[j + 1 < static_cast<int>(s.size()) ? j + 1 : j].x;
-    const ScanMax m = GoldenRefine(objective, a, c, options.tol, start);
-    if (m.f > r.best.f) r.best = m;
   }
   r.halted = r.halted || halt();
   return r;

@@ -141,7 +141,8 @@ constexpr Robot kTable[] = {
 };
 
 // Checks the design of one robot against a scan of n robots; returns the windows the scan saw.
-int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row) {
+int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row,
+                                          int* faster = nullptr) {
   const DesignInput in = Input(robot);
   const Reference ref = ScanM2(in, n);
   std::vector<detail::M2Window> windows;
@@ -175,11 +176,15 @@ int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row) {
   EXPECT_GE(r.one_impact.speed_mm_s, ref.best_speed * (1.0 - kSpeedRelTol))
       << "row " << row << ": design m2 = " << r.one_impact.m2_kg << " kg, scan m2 = "
       << ref.best_value << " kg";
-  // Faster than the scan only in a window the scan did not see.
+  // It may be faster than the scan: in a window narrower than the scan's spacing (checked
+  // here: no window of the scan holds its m2), or at the other of two local maxima of one
+  // window, which the scan's local refinement does not reach (one of 250 other random robots
+  // has its speed maxima at both edges of its window; none of the table).
   if (r.one_impact.speed_mm_s > ref.best_speed * (1.0 + kSpeedRelTol)) {
     for (const auto& [first, last] : ref.windows) {
       EXPECT_FALSE(first <= r.one_impact.m2_kg && r.one_impact.m2_kg <= last) << "row " << row;
     }
+    if (faster != nullptr) ++*faster;
   }
   return static_cast<int>(ref.windows.size());
 }
@@ -200,9 +205,9 @@ TEST(DesignWindows, FindsTheNarrowWindowNextToTheFoldWhereTheOrbitsEnd) {
 }
 
 TEST(DesignWindows, EveryWindowOfADenseScanIsFoundOnATableOfRandomRobots) {
-  int windows = 0, with_gait = 0, row = 0;
+  int windows = 0, with_gait = 0, row = 0, faster = 0;
   for (const Robot& robot : kTable) {
-    const int w = ExpectDesignFindsEveryWindowOfTheScan(robot, kTableScan, row++);
+    const int w = ExpectDesignFindsEveryWindowOfTheScan(robot, kTableScan, row++, &faster);
     windows += w;
     with_gait += w > 0;
   }
@@ -210,6 +215,10 @@ TEST(DesignWindows, EveryWindowOfADenseScanIsFoundOnATableOfRandomRobots) {
   // changed).
   EXPECT_EQ(with_gait, 20);
   EXPECT_EQ(windows, 20);
+  // The design is faster than the scan on one robot (row 17: 2.8122 mm/s at 0.0811 kg in a
+  // window the scan does not see, against 2.8110 mm/s at 0.0571 kg); elsewhere the two agree
+  // within kSpeedRelTol both ways.
+  EXPECT_EQ(faster, 1);
 }
 
 // The frequency search: a robot of the table with its m2 fixed at 0.8788 kg and a clearance d
