@@ -80,7 +80,7 @@ struct DesignInput {
   /// no stability requirement.
   double rho_max = kRobustRhoMax;
 
-  /// Samples of each variable's scan (log-spaced) before the golden-section refinement, >= 3.
+  /// Samples of each variable's scan (log-spaced) before the bracketing of windows, >= 3.
   int scan_points = 64;
   /// Work bound of each robot's orbit search (FindRobotOrbits' max_evaluations),
   /// 1 <= orbit_evaluations <= kMaxOrbitEvaluations. It sets the cost of a design, not its
@@ -184,15 +184,23 @@ struct DesignResult {
   std::int64_t unresolved_robots = 0;
 };
 
-/// Reports the robots evaluated so far (done of total, total an upper bound); must be cheap.
+/// Reports the robots evaluated so far (done of total, total an upper bound that the search
+/// raises when its windows hold more than one maximum of the speed); must be cheap.
 using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
-/// The fastest robust one-impact gait over m2 in [M2Min, M2Max] (and f in the frequency range):
-/// a scan of scan_points log-spaced values of each free variable, then a golden-section
-/// refinement around the best one (to 1e-9 relative, at most 100 steps); with a frequency range
-/// the m2 search runs for each frequency tried. Work is bounded by
-/// (scan_points + 100)^2 robots of at most orbit_evaluations evaluations each, and it stops
-/// after kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws
+/// The fastest robust one-impact gait over m2 in [M2Min, M2Max] (and f in the frequency range).
+/// The windows of m2 with a gait are bracketed first: a scan of scan_points log-spaced values,
+/// then, within a budget of 8 robots per scan sample, the gaps between samples where the
+/// robot's orbit count changes (a fold: bisected to 1e-3 in log m2), where the gait appears or
+/// disappears (bisected to 1e-6) and beside an infeasible sample whose feasibility measure
+/// (the largest over the robot's orbits of the smallest slack of the limits of a robust gait)
+/// is a local maximum (golden section on the measure to 1e-6). Then the speed is maximised in
+/// each window by golden section from each local maximum of its samples (to 1e-9 relative, at
+/// most 100 steps) and the fastest is kept. With a frequency range the same search runs over f, each point an m2 search whose
+/// measure is the largest it met (docs/design.md, "How the search works"). Work is bounded
+/// by B = 9 scan_points + 100 M robots for a fixed frequency (M the local maxima of the speed
+/// among the samples of the windows; one in the examples) and B_f * B_m2 with a range, each of at most orbit_evaluations evaluations, and it
+/// stops after kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws
 /// std::invalid_argument for invalid input.
 DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});
 

@@ -5,39 +5,47 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
+#include <vector>
 #include <stdexcept>
 
 #include "model/enum_names.hpp"
-#include "numerics/golden.hpp"
+#include "design/search.hpp"
+#include "numerics/windows.hpp"
 
 namespace capsubot {
 namespace {
 
 // Resolution of the refinement in log(m2) and log(f): 1e-9 relative.
 constexpr double kLogTol = 1e-9;
+// Resolution of the bracketing of windows in log(m2) and log(f) (docs/design.md, "How the
+// search works"): a window wider than this is found where the search looks for one ...
+constexpr double kWindowResolution = 1e-6;
+// ... and a gap across which the robot's orbit count changes (a fold of alpha(phi0), where two
+// orbits merge) is bisected to this: within 1e-5 to 1e-4 of the fold (by robot) the orbit
+// search needs more than the default DesignInput::orbit_evaluations to tell two orbits from
+// none, and a robot that close, met by chance, is an unresolved robot.
+constexpr double kFoldResolution = 1e-3;
+// Bracketing budget of one search, in robots (or m2 searches) per scan sample.
+constexpr int kRefinementsPerSample = 8;
 
 // Counts the robots evaluated and reports progress; once kDesignMaxUnresolvedRobots orbit
-// searches have hit their work bound, the robots asked for next are not evaluated (status
-// kNotRun: no speed, and no reason that outranks one met).
+// searches have hit their work bound, the searches ask for no more robots.
 struct Tally {
   const DesignProgress& progress;
-  std::int64_t total = 0;  // upper bound for progress reports
+  std::int64_t total = 0;  // upper bound for progress reports, raised for more speed maxima
   std::int64_t robots = 0;
   std::int64_t unresolved = 0;
+  int exhausted = 0;  // searches whose bracketing budget ran out
   bool complete = true;
 
   bool stopped() const { return unresolved >= kDesignMaxUnresolvedRobots; }
 
-  Gait Evaluate(const DesignInput& in, double m2, double frequency) {
-    if (stopped()) {
-      Gait skipped;
-      skipped.m2_kg = m2;
-      skipped.frequency_hz = frequency;
-      return skipped;
-    }
-    Gait g = EvaluateGait(in, m2, frequency);
+  Gait Evaluate(const DesignInput& in, double m2, double frequency, double* slack) {
+    Gait g = detail::EvaluateGait(in, m2, frequency, slack);
     ++robots;
     if (!g.complete) ++unresolved;
     complete = complete && g.complete;
@@ -63,50 +71,99 @@ double FromLog(double x, double lo, double hi) {
   return x == std::log(lo) ? lo : x == std::log(hi) ? hi : std::exp(x);
 }
 
-// Fastest gait of inner(value) for value in [lo, hi]: log-spaced scan, then golden section
-// (detail::ScanGoldenMaximize). The best gait met is kept (the search's own best point); when
-// it sits at an end of the range, that end's name joins its binding limits.
+// The fastest gait at one point of a search (a robot, or the best over m2 at one frequency)
+// and what the window search needs to know there.
+struct Found {
+  Gait gait;
+  detail::Probe probe;
+};
+
+// One robot: its branches are its orbits (-1 when the motor slides the shell).
+Found Robot(const DesignInput& in, double m2, double frequency, Tally& tally) {
+  Found r;
+  r.gait = tally.Evaluate(in, m2, frequency, &r.probe.slack);
+  r.probe.feasible = r.gait.ok();
+  r.probe.branches = r.gait.status == GaitStatus::kMotorSlidesShell ? -1 : r.gait.orbits;
+  r.probe.value = r.gait.speed_mm_s;
+  return r;
+}
+
+// Robots (or m2 searches) one search evaluates at most when its windows hold one local maximum
+// of the speed; each more adds kGoldenMaxSteps.
+std::int64_t SearchBound(const DesignInput& in) {
+  return static_cast<std::int64_t>(in.scan_points) * (1 + kRefinementsPerSample) +
+         detail::kGoldenMaxSteps;
+}
+
+// Fastest gait of inner(value) for value in [lo, hi]: the windows of values with a gait are
+// bracketed in log(value), then the speed is maximised in each (detail::MaximiseOverWindows).
+// The best gait met is kept; when it sits at an end of the range, that end's name joins its
+// binding limits. The probe returned sums the search up for a search around it: its measure
+// is the largest met, its branches say whether some robot had orbits (1), none had but some
+// motor left its shell at rest (0), or every motor slid its shell (-1). `cost` is the robots
+// one inner(value) evaluates at most; `windows` (if not null) receives each window's bracket.
 template <class Inner>
-Gait Maximise(double lo, double hi, int n, const Inner& inner, const char* lo_name,
-              const char* hi_name) {
-  Gait best;
+Found Maximise(double lo, double hi, int n, const Inner& inner, Tally& tally, std::int64_t cost,
+               const char* lo_name, const char* hi_name,
+               std::vector<detail::M2Window>* windows = nullptr) {
+  Found best;
+  best.probe.branches = -1;
   GaitStatus why = GaitStatus::kNotRun;
   double best_value = std::numeric_limits<double>::quiet_NaN();
-  const auto speed = [&](double x) {
+  const auto probe = [&](double x) {
     const double value = FromLog(x, lo, hi);
-    Gait g = inner(value);
-    if (!g.ok()) {
-      why = Worse(why, g.status);
-      return std::numeric_limits<double>::quiet_NaN();
-    }
-    const double v = g.speed_mm_s;
-    if (!best.ok() || v > best.speed_mm_s) {  // the same rule as the search's own best point
-      best = std::move(g);
+    Found f = inner(value);
+    best.probe.slack = std::max(best.probe.slack, f.probe.slack);
+    best.probe.branches = std::max(best.probe.branches, std::min(f.probe.branches, 1));
+    if (!f.gait.ok()) {
+      why = Worse(why, f.gait.status);
+    } else if (!best.gait.ok() || f.gait.speed_mm_s > best.gait.speed_mm_s) {
+      best.gait = std::move(f.gait);
       best_value = value;
     }
-    return v;
+    return f.probe;
   };
-  detail::ScanGoldenMaximize(speed, std::log(lo), std::log(hi), n, kLogTol);
-  if (!best.ok()) {
-    best.status = why;
+  detail::WindowOptions options;
+  options.scan_points = n;
+  options.resolution = kWindowResolution;
+  options.fold_resolution = kFoldResolution;
+  options.max_refinements = kRefinementsPerSample * n;
+  options.tol = kLogTol;
+  const detail::WindowSearch search = detail::MaximiseOverWindows(
+      probe, [&tally] { return tally.stopped(); }, std::log(lo), std::log(hi), options);
+  if (search.maxima > 1) {
+    tally.total += static_cast<std::int64_t>(search.maxima - 1) * detail::kGoldenMaxSteps * cost;
+  }
+  if (search.exhausted) ++tally.exhausted;
+  if (windows != nullptr) {
+    const auto at = [&](int i) { return FromLog(search.samples[i].x, lo, hi); };
+    const int last = static_cast<int>(search.samples.size()) - 1;
+    for (const detail::Window& w : search.windows) {
+      windows->push_back({at(std::max(w.first - 1, 0)), at(w.first), at(w.last),
+                          at(std::min(w.last + 1, last))});
+    }
+  }
+  if (!best.gait.ok()) {
+    best.gait.status = why;
     return best;
   }
-  if (best_value == lo) best.binding.emplace_back(lo_name);
-  if (best_value == hi) best.binding.emplace_back(hi_name);
+  best.probe.feasible = true;
+  best.probe.value = best.gait.speed_mm_s;
+  if (best_value == lo) best.gait.binding.emplace_back(lo_name);
+  if (best_value == hi) best.gait.binding.emplace_back(hi_name);
   return best;
 }
 
 // The fastest gait over m2 in the input's range at frequency f.
-Gait BestOverM2(const DesignInput& in, double frequency, Tally& tally) {
-  Gait g = Maximise(
+Found OverM2(const DesignInput& in, double frequency, Tally& tally,
+             std::vector<detail::M2Window>* windows = nullptr) {
+  Found r = Maximise(
       in.M2Min(), in.M2Max(), in.scan_points,
-      [&](double m2) { return tally.Evaluate(in, m2, frequency); }, "m2_min", "m2_max");
-  g.frequency_hz = frequency;
-  return g;
+      [&](double m2) { return Robot(in, m2, frequency, tally); }, tally, 1, "m2_min", "m2_max",
+      windows);
+  r.gait.frequency_hz = frequency;
+  return r;
 }
-
-// Robots one m2 search evaluates at most.
-std::int64_t SearchBound(const DesignInput& in) { return in.scan_points + detail::kGoldenMaxSteps; }
 
 bool FixedFrequency(const DesignInput& in) { return in.frequency_min == in.frequency_max; }
 
@@ -150,15 +207,17 @@ const char* DesignStatusName(DesignStatus status) {
 DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
   in.Validate();
   Tally tally{progress};
-  const auto over_m2 = [&](double f) { return BestOverM2(in, f, tally); };
   DesignResult r;
   if (FixedFrequency(in)) {
     tally.total = SearchBound(in);
-    r.one_impact = over_m2(in.frequency_min);
+    r.one_impact = OverM2(in, in.frequency_min, tally).gait;
   } else {
     tally.total = SearchBound(in) * SearchBound(in);
-    r.one_impact = Maximise(in.frequency_min, in.frequency_max, in.scan_points, over_m2,
-                            "frequency_min", "frequency_max");
+    r.one_impact = Maximise(
+                       in.frequency_min, in.frequency_max, in.scan_points,
+                       [&](double f) { return OverM2(in, f, tally); }, tally, SearchBound(in),
+                       "frequency_min", "frequency_max")
+                       .gait;
   }
   r.robots = tally.robots;
   r.complete = tally.complete;
@@ -174,6 +233,11 @@ DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
         "bound of {} evaluations (orbits may be missing there), so the rest of the range was "
         "not evaluated",
         tally.robots, tally.unresolved, in.orbit_evaluations);
+  } else if (tally.exhausted > 0) {
+    r.message += fmt::format(
+        "; the bracketing budget of {} of its searches ran out, so a window of gaits narrower "
+        "than the scan's spacing may be missing there",
+        tally.exhausted);
   }
   return r;
 }
@@ -187,12 +251,25 @@ Gait DesignGait(const DesignInput& in, double m2) {
   }
   const DesignProgress none;
   Tally tally{none};
-  if (FixedFrequency(in)) return tally.Evaluate(in, m2, in.frequency_min);
+  if (FixedFrequency(in)) return Robot(in, m2, in.frequency_min, tally).gait;
   Gait g = Maximise(
-      in.frequency_min, in.frequency_max, in.scan_points,
-      [&](double f) { return tally.Evaluate(in, m2, f); }, "frequency_min", "frequency_max");
+               in.frequency_min, in.frequency_max, in.scan_points,
+               [&](double f) { return Robot(in, m2, f, tally); }, tally, 1, "frequency_min",
+               "frequency_max")
+               .gait;
   g.m2_kg = m2;
   return g;
 }
+
+namespace detail {
+
+Gait BestOverM2(const DesignInput& in, double frequency, std::vector<M2Window>* windows) {
+  in.Validate();
+  const DesignProgress none;
+  Tally tally{none};
+  return OverM2(in, frequency, tally, windows).gait;
+}
+
+}  // namespace detail
 
 }  // namespace capsubot
