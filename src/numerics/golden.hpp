@@ -1,6 +1,6 @@
 #pragma once
-// Bounded 1-D maximisation of a function that may be undefined in places and may end at a
-// cliff (the edge of a feasible set): a uniform scan, then golden-section refinement.
+// Bounded 1-D maximisation inside a bracket of a function that may be undefined in places and
+// may end at a cliff (the edge of a feasible set): golden-section refinement.
 
 #include <cmath>
 #include <limits>
@@ -13,7 +13,6 @@ inline constexpr int kGoldenMaxSteps = 100;  ///< refinement steps of GoldenRefi
 struct ScanMax {
   double x = std::numeric_limits<double>::quiet_NaN();  ///< argument (NaN: f never defined)
   double f = -std::numeric_limits<double>::infinity();  ///< value there
-  int index = -1;       ///< index of the best scan sample (-1: none defined)
   int evaluations = 0;  ///< calls of f
 };
 
@@ -44,29 +43,6 @@ ScanMax GoldenRefine(const Fn& f, double a, double c, double tol, ScanMax best) 
     }
   }
   return best;
-}
-
-/// Maximum of f over [lo, hi]. f returns NaN where it is undefined (treated as -infinity).
-/// First n >= 2 uniform samples lo, ..., hi; then the triplet (left neighbour, best sample,
-/// right neighbour), clamped to [lo, hi], is refined by GoldenRefine. Returns the best point
-/// evaluated: at most n + kGoldenMaxSteps calls.
-template <class Fn>
-ScanMax ScanGoldenMaximize(const Fn& f, double lo, double hi, int n, double tol) {
-  ScanMax best;
-  const auto sample = [&](int i) { return i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1); };
-  for (int i = 0; i < n; ++i) {
-    const double x = sample(i), fx = f(x);
-    ++best.evaluations;
-    const double v = std::isnan(fx) ? -std::numeric_limits<double>::infinity() : fx;
-    if (v > best.f) {
-      best.x = x;
-      best.f = v;
-      best.index = i;
-    }
-  }
-  if (best.index < 0) return best;
-  return GoldenRefine(f, sample(best.index > 0 ? best.index - 1 : 0),
-                      sample(best.index < n - 1 ? best.index + 1 : n - 1), tol, best);
 }
 
 }  // namespace capsubot::detail
