@@ -174,6 +174,7 @@ Command AddBasinsCommand(CLI::App& app) {
   cmd->add_option("--plane", opt->plane, "x0-psi (starts from rest) or x0-u0")
       ->capture_default_str();
   cmd->add_option("--psi", opt->psi, "forcing phase of the starts in the x0-u0 plane")
+      ->type_name(kPhase)
       ->capture_default_str();
   cmd->add_option("--u-min", opt->u_min, "smallest u0 of the x0-u0 plane")->capture_default_str();
   cmd->add_option("--u-max", opt->u_max, "largest u0 of the x0-u0 plane")->capture_default_str();

@@ -56,6 +56,20 @@ CLI::Validator NumberText(const std::string& name, bool allow_inf) {
       "", "number");
 }
 
+// A phase option (--phi0, --psi): ParsePhase's syntax, pi multiples included.
+CLI::Validator PhaseText(const std::string& name) {
+  return CLI::Validator(
+      [name](std::string& text) {
+        try {
+          text = FormatNumber(ParsePhase(text, name));
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      },
+      "", "phase");
+}
+
 CLI::Validator IntegerText(const std::string& name, std::int64_t lo, std::int64_t hi,
                            const std::string& description) {
   return CLI::Validator(
@@ -101,7 +115,9 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
     o.phi0_option = cmd.add_option(
         "--phi0", o.phi0,
         "motor phase phi0 [rad] at the impact: F(phi) = A sin(phi + phi0) + c with phi = 0 at "
-        "the impact (required for the harmonic force; default 0 for a Fourier force)");
+        "the impact (required for the harmonic force; default 0 for a Fourier force); a "
+        "number or a multiple of pi (pi, -pi/2, 2*pi)");
+    o.phi0_option->type_name(kPhase);
   }
   o.fourier_option =
       cmd.add_option("--sin", o.sin_text,
@@ -225,7 +241,9 @@ void RequireCheckpointSeconds(double seconds) {
 void UseStrictValues(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
-    if (type == "FLOAT" || type == kFloatOrInf) {
+    if (type == kPhase) {
+      option->transform(PhaseText(option->get_name()));
+    } else if (type == "FLOAT" || type == kFloatOrInf) {
       option->transform(NumberText(option->get_name(), type == kFloatOrInf));
     } else if ((type == "INT" || type == "UINT") && !HasValidator(option, kIntegerValidator)) {
       option->transform(IntegerText(option->get_name(), type == "UINT" ? 0 : INT_MIN, INT_MAX, ""));

@@ -58,6 +58,8 @@ void UseStrictValues(CLI::App& app);
 
 /// CLI11 type name of a floating-point option that also accepts "inf".
 inline constexpr const char* kFloatOrInf = "FLOAT|inf";
+/// Type name of a phase option (UseStrictValues reads it with ParsePhase: 0.5, pi, -pi/2).
+inline constexpr const char* kPhase = "PHASE";
 
 /// A size option: its integer value must lie in [lo, hi], checked while parsing (before any
 /// work), the range named in the message and shown in --help.

@@ -102,7 +102,8 @@ Command AddPeriodicCommand(CLI::App& app) {
   opt->state_options[1] = cmd->add_option("--u0", opt->start.u, "start: relative velocity");
   opt->state_options[2] = cmd->add_option("--v0", opt->start.v, "start: capsule velocity");
   opt->state_options[3] = cmd->add_option("--psi", opt->start.psi,
-                                          "start: forcing phase (F = A sin(psi + phi0) + c there)");
+                                          "start: forcing phase (F = A sin(psi + phi0) + c there)")
+                              ->type_name(kPhase);
   cmd->add_option("--from-rest", opt->from_rest,
                   "start from rest at x0 = X0 and forcing phase PSI, then run --transient periods")
       ->type_name("X0,PSI");

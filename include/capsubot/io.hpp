@@ -144,6 +144,13 @@ std::string FormatNumber(double value);
 /// "<name> = <text> is invalid: expected ..." naming the rule.
 double ParseNumber(std::string_view text, const std::string& name);
 
+/// Parses a phase in radians: a number in the syntax of ParseNumber, or a multiple of pi
+/// written [sign][N*]pi[/M] with N and M positive numbers in that syntax ("pi", "-pi/2",
+/// "2*pi", "3*pi/4", "+pi/3"); no spaces. Its value is sign (N pi)/M in double precision (pi,
+/// its halves and its doubles exactly the double nearest that multiple of pi). Throws
+/// std::invalid_argument "<name> = <text> is invalid: expected ..." naming the rule.
+double ParsePhase(std::string_view text, const std::string& name);
+
 /// Parses an integer lo <= n <= hi: decimal digits with an optional sign, or a number in the
 /// syntax of ParseNumber whose value is a whole number ("2e6"). Throws std::invalid_argument
 /// "<name> = <text> is invalid: expected an integer lo <= n <= hi".

@@ -98,6 +98,46 @@ double ParseNumber(std::string_view text, const std::string& name) {
   return value;
 }
 
+double ParsePhase(std::string_view text, const std::string& name) {
+  const std::size_t pi = text.find("pi");
+  if (pi == std::string_view::npos) return ParseNumber(text, name);
+  const auto bad = [&]() {
+    Reject(name, text,
+           "a phase in radians: a decimal number such as 0.5 or -2, or a multiple of pi such as "
+           "pi, -pi/2 or 2*pi (no spaces)");
+  };
+  std::string_view head = text.substr(0, pi), tail = text.substr(pi + 2);
+  double sign = 1.0;
+  if (!head.empty() && (head[0] == '+' || head[0] == '-')) {
+    sign = head[0] == '-' ? -1.0 : 1.0;
+    head.remove_prefix(1);
+  }
+  double factor = 1.0;
+  if (!head.empty()) {
+    if (head.back() != '*' || head.size() < 2 || head[0] == '+' || head[0] == '-') bad();
+    head.remove_suffix(1);
+    try {
+      factor = ParseNumber(head, name);
+    } catch (const std::invalid_argument&) {
+      bad();
+    }
+  }
+  double divisor = 1.0;
+  if (!tail.empty()) {
+    if (tail[0] != '/' || tail.size() < 2 || tail[1] == '+' || tail[1] == '-') bad();
+    try {
+      divisor = ParseNumber(tail.substr(1), name);
+    } catch (const std::invalid_argument&) {
+      bad();
+    }
+  }
+  if (!(factor > 0.0) || !(divisor > 0.0)) bad();
+  constexpr double kPi = 3.14159265358979323846;  // the double nearest pi
+  const double value = sign * (factor * kPi) / divisor;
+  if (!std::isfinite(value)) bad();
+  return value;
+}
+
 std::int64_t ParseInteger(std::string_view text, const std::string& name, std::int64_t lo,
                           std::int64_t hi) {
   const std::string rule = fmt::format("an integer {} <= n <= {}", lo, hi);

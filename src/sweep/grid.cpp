@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "capsubot/forcing.hpp"
+#include "capsubot/io.hpp"
 
 namespace capsubot {
 namespace {
@@ -69,15 +70,16 @@ const ParameterRule& RuleOf(SweepParameter parameter) {
   throw std::invalid_argument(fmt::format("grid {} is invalid: {}", spec, why));
 }
 
-// A decimal number (optional sign, no spaces, no hexadecimal), or pi, +pi, -pi.
+// A decimal number (optional sign, no spaces, no hexadecimal), or a multiple of pi in the
+// syntax of the phase options (pi, -pi/2, 2*pi: ParsePhase).
 bool ParseNumber(const std::string& text, double& value) {
-  if (text == "pi" || text == "+pi") {
-    value = kTau / 2.0;
-    return true;
-  }
-  if (text == "-pi") {
-    value = -kTau / 2.0;
-    return true;
+  if (text.find("pi") != std::string::npos) {
+    try {
+      value = ParsePhase(text, "grid value");
+      return true;
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
   }
   const char* first = text.data();
   const char* last = first + text.size();

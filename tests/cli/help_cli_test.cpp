@@ -49,6 +49,22 @@ const HelpCase kHelpCases[] = {
      "\"problem\":\"phase\""},
 };
 
+// Phases in the syntax of the grids: pi multiples give exactly what their decimal value gives.
+TEST(PhaseSyntax, PiMultiplesEqualTheirDecimalValue) {
+  const auto pi = testing::RunCli("solve --A 0.5 --c 0.5 --phi0 -pi/2 --json");
+  const auto decimal = testing::RunCli("solve --A 0.5 --c 0.5 --phi0 -1.5707963267948966 --json");
+  ASSERT_EQ(pi.status, 0) << pi.out;
+  EXPECT_EQ(pi.out, decimal.out);  // the provenance records the value read
+  const auto grid = testing::RunCli("sweep --grid phi0=-pi/2:3*pi/4:3 --A 0.5 --c 0.5 -o -");
+  ASSERT_EQ(grid.status, 0) << grid.out;
+  EXPECT_NE(grid.out.find("\n-1.5707963267948966,"), std::string::npos) << grid.out;
+  const auto bad = testing::RunCli("solve --A 0.5 --c 0.5 --phi0 2pi 2>&1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--phi0 = 2pi is invalid: expected a phase in radians"),
+            std::string::npos)
+      << bad.out;
+}
+
 INSTANTIATE_TEST_SUITE_P(Table, HelpCli, ::testing::ValuesIn(kHelpCases),
                          [](const ::testing::TestParamInfo<HelpCase>& info) {
                            return std::string(info.param.name);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "capsubot/io.hpp"
+#include "test_utils.hpp"
 
 namespace capsubot {
 namespace {
@@ -180,6 +181,27 @@ TEST(ParseIntegerFuzz, RandomIntegersRoundTripAndOutOfRangeIsRejected) {
     ++checked;
   }
   EXPECT_EQ(checked, kCases);
+}
+
+TEST(ParsePhase, ReadsNumbersAndMultiplesOfPi) {
+  const double pi = std::acos(-1.0);  // the double nearest pi, computed independently
+  EXPECT_EQ(ParsePhase("0.5", "--phi0"), 0.5);
+  EXPECT_EQ(ParsePhase("pi", "--phi0"), pi);
+  EXPECT_EQ(ParsePhase("+pi", "--phi0"), pi);
+  EXPECT_EQ(ParsePhase("-pi", "--phi0"), -pi);
+  EXPECT_EQ(ParsePhase("-pi/2", "--phi0"), -pi / 2.0);
+  EXPECT_EQ(ParsePhase("2*pi", "--phi0"), 2.0 * pi);
+  EXPECT_EQ(ParsePhase("3*pi/4", "--phi0"), 3.0 * pi / 4.0);
+  EXPECT_EQ(ParsePhase("1e0*pi/1e0", "--phi0"), pi);
+}
+
+TEST(ParsePhase, RefusesOtherTextNamingTheRule) {
+  for (const char* text : {"pix", "2pi", "pi/", "pi/0", "pi/-2", "*pi", "-*pi", "pi*2", "pi pi",
+                           " pi", "-2*-pi", "0*pi", "inf*pi", "PI", ""}) {
+    const std::string message = testing::InvalidArgumentMessage([&] { ParsePhase(text, "--psi"); });
+    EXPECT_EQ(message.rfind("--psi = ", 0), 0U) << text << ": " << message;
+    EXPECT_NE(message.find("is invalid: expected"), std::string::npos) << text << ": " << message;
+  }
 }
 
 }  // namespace
