@@ -68,7 +68,8 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   int k = 0;
   for (const Attractor& at : a.attractors) {
     t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13} {}{}\n", ++k,
-                     100.0 * at.fraction, Num(at.mean_velocity, 10), AttractorWords(at, mo.max_period),
+                     100.0 * at.fraction, Num(at.mean_velocity, 10),
+                     AttractorWords(at, mo.max_period),
                      at.one_impact_orbit ? "  (the analytic one-impact orbit)" : "");
     t += fmt::format("      e.g. from x0 = {:.6g}, psi = {:.6g}\n", at.example.x, at.example.psi);
   }

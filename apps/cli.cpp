@@ -41,33 +41,20 @@ constexpr const char* kIntegerValidator = "integer";
 
 // The transform of a numeric option: the strict parse, then the value in a form CLI11's own
 // conversion reads back exactly (shortest round-trip, plain decimal integers).
-// `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max).
-CLI::Validator NumberText(const std::string& name, bool allow_inf) {
+// `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max);
+// `phase`: ParsePhase's syntax, multiples of pi included (--phi0, --psi).
+CLI::Validator NumberText(const std::string& name, bool allow_inf, bool phase) {
   return CLI::Validator(
-      [name, allow_inf](std::string& text) {
+      [name, allow_inf, phase](std::string& text) {
         if (allow_inf && text == "inf") return std::string();
         try {
-          text = FormatNumber(ParseNumber(text, name));
+          text = FormatNumber(phase ? ParsePhase(text, name) : ParseNumber(text, name));
           return std::string();
         } catch (const std::invalid_argument& e) {
           return std::string(e.what());
         }
       },
       "", "number");
-}
-
-// A phase option (--phi0, --psi): ParsePhase's syntax, pi multiples included.
-CLI::Validator PhaseText(const std::string& name) {
-  return CLI::Validator(
-      [name](std::string& text) {
-        try {
-          text = FormatNumber(ParsePhase(text, name));
-          return std::string();
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-      },
-      "", "phase");
 }
 
 CLI::Validator IntegerText(const std::string& name, std::int64_t lo, std::int64_t hi,
@@ -241,10 +228,8 @@ void RequireCheckpointSeconds(double seconds) {
 void UseStrictValues(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
-    if (type == kPhase) {
-      option->transform(PhaseText(option->get_name()));
-    } else if (type == "FLOAT" || type == kFloatOrInf) {
-      option->transform(NumberText(option->get_name(), type == kFloatOrInf));
+    if (type == "FLOAT" || type == kFloatOrInf || type == kPhase) {
+      option->transform(NumberText(option->get_name(), type == kFloatOrInf, type == kPhase));
     } else if ((type == "INT" || type == "UINT") && !HasValidator(option, kIntegerValidator)) {
       option->transform(IntegerText(option->get_name(), type == "UINT" ? 0 : INT_MIN, INT_MAX, ""));
     } else if (option->get_items_expected_min() > 0) {

@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
   UseStrictValues(app);
   std::vector<std::string> args = ReadHelpCommand(std::vector<std::string>(argv + 1, argv + argc));
   if (!args.empty()) {
-    if (const auto unknown = UnknownCommand(app, args.front())) return Fail("capsubot", *unknown, 2);
+    if (const auto unknown = UnknownCommand(app, args.front()))
+      return Fail("capsubot", *unknown, 2);
   }
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {

@@ -78,10 +78,10 @@ std::optional<std::string> UnknownCommand(const CLI::App& app, const std::string
   }
   if (std::find(commands.begin(), commands.end(), first) != commands.end()) return std::nullopt;
   const auto near = Nearest(first, commands);
-  return fmt::format("unknown command '{}'{}; expected one of {} (capsubot help COMMAND explains "
-                     "one)",
-                     first, near ? fmt::format("; did you mean '{}'?", *near) : "",
-                     fmt::join(commands, ", "));
+  return fmt::format(
+      "unknown command '{}'{}; expected one of {} (capsubot help COMMAND explains "
+      "one)",
+      first, near ? fmt::format("; did you mean '{}'?", *near) : "", fmt::join(commands, ", "));
 }
 
 std::optional<std::string> UnknownFlag(const CLI::App& command,

@@ -3,7 +3,6 @@
 // `capsubot help [COMMAND]` and the problems' short names.
 
 #include <CLI/CLI.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>

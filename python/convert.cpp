@@ -101,7 +101,8 @@ py::object ToPython(const nlohmann::json& value) {
     case nlohmann::json::value_t::object: {
       py::dict d;
       for (const auto& [key, item] : value.items()) {
-        d[py::str(key)] = key == "multipliers" && item.is_array() ? ComplexArray(item) : ToPython(item);
+        d[py::str(key)] =
+            key == "multipliers" && item.is_array() ? ComplexArray(item) : ToPython(item);
       }
       return d;
     }

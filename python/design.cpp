@@ -26,9 +26,9 @@ using Range = std::pair<double, double>;
 // As the command line's ranges MIN:MAX: a range has MIN < MAX (one frequency is `frequency`).
 void RequireRange(const char* name, const std::optional<Range>& range) {
   if (range && !(range->first < range->second)) {
-    throw std::invalid_argument(fmt::format(
-        "{} = ({}, {}) is invalid: expected (MIN, MAX) with MIN < MAX", name, range->first,
-        range->second));
+    throw std::invalid_argument(
+        fmt::format("{} = ({}, {}) is invalid: expected (MIN, MAX) with MIN < MAX", name,
+                    range->first, range->second));
   }
 }
 

@@ -54,7 +54,8 @@ constexpr const char* kOrbitsDoc =
     "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
 
 constexpr const char* kOrbitsArgsDoc =
-    "    max_evaluations  work bound of the search (evaluations of the orbit equation), 1 to 1e9\n\n"
+    "    max_evaluations  work bound of the search (evaluations of the orbit equation), 1 to "
+    "1e9\n\n"
     "Returns a list of dicts sorted by phi0, each with the keys of solve(..., stability=True) "
     "and complete (False: the search hit its work bound and orbits may be missing; a "
     "RuntimeWarning then says so). phi0 is solved for: it is not an argument (a Fourier "

@@ -86,8 +86,8 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
   params.Validate();
   const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   if (samples < 2 || samples > kMaxTrajectoryRows) {
-    throw std::invalid_argument(fmt::format(
-        "samples = {} is invalid: expected 2 <= samples <= {}", samples, kMaxTrajectoryRows));
+    throw std::invalid_argument(fmt::format("samples = {} is invalid: expected 2 <= samples <= {}",
+                                            samples, kMaxTrajectoryRows));
   }
   const Orbit o = ComputeOrbit(forcing, params);
   if (!o.ok()) {
@@ -128,8 +128,7 @@ void BindSolve(py::module_& m) {
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin,
-        py::arg("stability").noconvert() = false,
+        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability").noconvert() = false,
         py::arg("from_rest_starts") = kDefaultFromRestStarts,
         py::arg("threads") = AttractorOptions{}.threads);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +

@@ -250,8 +250,7 @@ Array NumbersArgument(const char* name, const py::object& value) {
   const py::module_ np = py::module_::import("numpy");
   const auto refuse = [&](const char* why) {
     return py::type_error(fmt::format("{} must be a number or an array of numbers: {} (got {})",
-                                      name, why,
-                                      py::str(py::type::of(value)).cast<std::string>()));
+                                      name, why, py::str(py::type::of(value)).cast<std::string>()));
   };
   if (value.is_none()) throw refuse("None is no number");
   if (py::isinstance(value, np.attr("ma").attr("MaskedArray"))) {
@@ -265,8 +264,8 @@ Array NumbersArgument(const char* name, const py::object& value) {
   }
   const char kind = numbers.dtype().kind();
   if (kind != 'i' && kind != 'u' && kind != 'f') {
-    throw refuse(kind == 'b'   ? "booleans are not numbers here"
-                 : kind == 'c' ? "complex numbers are not real numbers"
+    throw refuse(kind == 'b'                  ? "booleans are not numbers here"
+                 : kind == 'c'                ? "complex numbers are not real numbers"
                  : kind == 'U' || kind == 'S' ? "strings are not converted"
                                               : "its elements are not all numbers");
   }
@@ -378,8 +377,8 @@ void BindSolveGrid(py::module_& m) {
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
         py::arg("margin") = Params{}.margin, py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin,
-        py::arg("stability").noconvert() = false, py::arg("threads") = py::none());
+        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability").noconvert() = false,
+        py::arg("threads") = py::none());
 }
 
 }  // namespace capsubot::python

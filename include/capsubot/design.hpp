@@ -196,12 +196,13 @@ using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)
 /// (the largest over the robot's orbits of the smallest slack of the limits of a robust gait)
 /// is a local maximum (golden section on the measure to 1e-6). Then the speed is maximised in
 /// each window by golden section from each local maximum of its samples (to 1e-9 relative, at
-/// most 100 steps) and the fastest is kept. With a frequency range the same search runs over f, each point an m2 search whose
-/// measure is the largest it met (docs/design.md, "How the search works"). Work is bounded
-/// by B = 9 scan_points + 100 M robots for a fixed frequency (M the local maxima of the speed
-/// among the samples of the windows; one in the examples) and B_f * B_m2 with a range, each of at most orbit_evaluations evaluations, and it
-/// stops after kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws
-/// std::invalid_argument for invalid input.
+/// most 100 steps) and the fastest is kept. With a frequency range the same search runs over f,
+/// each point an m2 search whose measure is the largest it met (docs/design.md, "How the search
+/// works"). Work is bounded by B = 9 scan_points + 100 M robots for a fixed frequency (M the local
+/// maxima of the speed among the samples of the windows; one in the examples) and B_f * B_m2 with a
+/// range, each of at most orbit_evaluations evaluations, and it stops after
+/// kDesignMaxUnresolvedRobots robots whose search hit that bound. Throws std::invalid_argument for
+/// invalid input.
 DesignResult Design(const DesignInput& input, const DesignProgress& progress = {});
 
 /// The gait the design finds for a robot whose inner mass is m2 [kg], or is searched over the

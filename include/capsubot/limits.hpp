@@ -40,7 +40,7 @@ double TrajectoryRows(double periods, double samples_per_period);
 /// kMaxTrajectoryRows, naming the two arguments as the caller spells them: "samples_per_period
 /// = 1000000 with transient + periods = 100000000 is invalid: expected at most 10000000 rows of
 /// the trajectory (samples per period x periods + 1 = 100000000000001)".
-void RequireTrajectoryRows(double periods, double samples_per_period,
-                           const char* samples_name, const char* periods_name);
+void RequireTrajectoryRows(double periods, double samples_per_period, const char* samples_name,
+                           const char* periods_name);
 
 }  // namespace capsubot

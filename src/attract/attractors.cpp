@@ -234,8 +234,8 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
     a.velocity_min = std::min(a.velocity_min, m.mean_velocity);
     a.velocity_max = std::max(a.velocity_max, m.mean_velocity);
     if (m.status == MotionStatus::kNoPeriod) {
-      a.halves_difference = std::max(
-          a.halves_difference, std::abs(m.first_half_velocity - m.second_half_velocity));
+      a.halves_difference =
+          std::max(a.halves_difference, std::abs(m.first_half_velocity - m.second_half_velocity));
     }
   }
   for (std::size_t g = 0; g < found.size(); ++g) {

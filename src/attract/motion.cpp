@@ -171,8 +171,7 @@ class LongRun : public SimObserver {
     ++tries_;
     const SimState& last = ring_.back();
     MapState s{{last.x, last.u, last.v, psi_}, last.mode}, moved;
-    const PeriodicMotion pm =
-        RefinePeriodicMotion(forcing_, params_, alpha_, o_, s, p, &moved);
+    const PeriodicMotion pm = RefinePeriodicMotion(forcing_, params_, alpha_, o_, s, p, &moved);
     if (pm.status != ShootingStatus::kConverged || !(pm.spectral_radius <= kSettledRadius) ||
         !(Distance(moved.z, pm.state) <= kSettledDistance)) {
       return false;
@@ -229,7 +228,7 @@ class LongRun : public SimObserver {
   Recorder& recorder_;
   std::vector<SimState> ring_;
   std::vector<std::int32_t> right_, left_;  // impacts of the last 2 max_period periods
-  std::int64_t near_section_ = -1;           // last period with an event at the section
+  std::int64_t near_section_ = -1;          // last period with an event at the section
   int samples_ = 0;
   int tries_ = 0;
   double psi_ = 0.0;
@@ -241,8 +240,8 @@ class LongRun : public SimObserver {
 // max_period periods to see the events, the section moved into their largest gap, then
 // 2 max_period periods of section states. 0 when none repeats within state_tolerance (or the
 // work bound is hit).
-int ProbePeriod(const Forcing& forcing, const Params& params, double alpha,
-                const MotionOptions& o, MapState s, Recorder& probe, MapState* at) {
+int ProbePeriod(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& o,
+                MapState s, Recorder& probe, MapState* at) {
   const int P = o.max_period;
   MapState look = s;
   probe.Start(P, false, true);
@@ -251,8 +250,8 @@ int ProbePeriod(const Forcing& forcing, const Params& params, double alpha,
     return 0;
   }
   const double shift = SectionShift(probe.event_phases);
-  if (shift > 0.0 &&
-      Advance(forcing, params, alpha, o, s, shift / kTau, nullptr).status == SimStatus::kEventLimit) {
+  if (shift > 0.0 && Advance(forcing, params, alpha, o, s, shift / kTau, nullptr).status ==
+                         SimStatus::kEventLimit) {
     return 0;
   }
   *at = s;
@@ -313,7 +312,8 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   if (p > 0) {
     MapState moved;
     const PeriodicMotion pm = RefinePeriodicMotion(forcing, params, alpha, options, at, p, &moved);
-    if (pm.status == ShootingStatus::kConverged && Distance(moved.z, pm.state) <= kRefinedDistance) {
+    if (pm.status == ShootingStatus::kConverged &&
+        Distance(moved.z, pm.state) <= kRefinedDistance) {
       return FromPeriodic(pm);
     }
     // Newton failed (a non-smooth map, a work bound): the states repeat all the same.
@@ -322,8 +322,9 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
     m.period = p;
     const std::vector<SimState>& S = *samples;
     const int n = static_cast<int>(S.size()) - 1, whole = (n / p) * p;
-    m.mean_velocity = (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
-                      (whole * kTau);
+    m.mean_velocity =
+        (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
+        (whole * kTau);
     m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
     for (std::size_t k = probe.right.size() - static_cast<std::size_t>(p); k < probe.right.size();
          ++k) {

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
-#include "model/enum_names.hpp"
 #include "design/search.hpp"
+#include "model/enum_names.hpp"
 #include "numerics/windows.hpp"
 
 namespace capsubot {
@@ -139,8 +139,8 @@ Found Maximise(double lo, double hi, int n, const Inner& inner, Tally& tally, st
     const auto at = [&](int i) { return FromLog(search.samples[i].x, lo, hi); };
     const int last = static_cast<int>(search.samples.size()) - 1;
     for (const detail::Window& w : search.windows) {
-      windows->push_back({at(std::max(w.first - 1, 0)), at(w.first), at(w.last),
-                          at(std::min(w.last + 1, last))});
+      windows->push_back(
+          {at(std::max(w.first - 1, 0)), at(w.first), at(w.last), at(std::min(w.last + 1, last))});
     }
   }
   if (!best.gait.ok()) {

@@ -30,11 +30,16 @@ constexpr double kBindingTol = 1e-4;
 constexpr std::size_t kLimits = 5;
 const char* LimitName(std::size_t k) {
   switch (k) {
-    case 0: return ConditionName(Condition::kLeftWall);
-    case 1: return ConditionName(Condition::kRightWall);
-    case 2: return ConditionName(Condition::kStick);
-    case 3: return kForceBoundName;
-    default: return MarginName(Margin::kRhoMax);
+    case 0:
+      return ConditionName(Condition::kLeftWall);
+    case 1:
+      return ConditionName(Condition::kRightWall);
+    case 2:
+      return ConditionName(Condition::kStick);
+    case 3:
+      return kForceBoundName;
+    default:
+      return MarginName(Margin::kRhoMax);
   }
 }
 
@@ -51,8 +56,8 @@ std::array<double, kLimits> LimitSlacks(const DesignInput& in, const Validity& v
 
 // The limits whose slack at the gait is below kBindingTol (a NaN slack never binds).
 std::vector<std::string> Binding(const DesignInput& in, const Gait& gait) {
-  const std::array<double, kLimits> slack = LimitSlacks(
-      in, gait.solution.validity, gait.model.params.T0, gait.stability.spectral_radius);
+  const std::array<double, kLimits> slack =
+      LimitSlacks(in, gait.solution.validity, gait.model.params.T0, gait.stability.spectral_radius);
   std::vector<std::string> names;
   for (std::size_t k = 0; k < kLimits; ++k) {
     if (slack[k] <= kBindingTol) names.emplace_back(LimitName(k));
@@ -116,8 +121,7 @@ Gait EvaluateGait(const DesignInput& input, double m2, double frequency, double*
   for (const Solution& s : orbits) {
     if (!s.validity.valid() && slack == nullptr) continue;
     const Stability st = ComputeStability(s.orbit);
-    const bool robust =
-        s.validity.valid() && st.computed && st.spectral_radius <= input.rho_max;
+    const bool robust = s.validity.valid() && st.computed && st.spectral_radius <= input.rho_max;
     if (slack != nullptr) *slack = std::max(*slack, OrbitSlack(input, s, st, robust));
     if (!robust) continue;
     if (gait.ok() && !(s.orbit.v_mean > gait.solution.orbit.v_mean)) continue;

@@ -31,8 +31,8 @@ nlohmann::json ProblemJson(const OptimizeResult& result, const char* problem,
 /// The `reach` object: A, c, phi0, alpha, mean_velocity, status, message, attractors,
 /// summary, spread {chatter_small, chatter_large, e_0999, max_relative_deviation,
 /// event_limit_starts}, seed_won, robust_to_settings, evaluations, rejected_evaluations,
-/// algorithm (no wall-clock time: the JSON of a run is the same on every run), seed {A, c, phi0, alpha, I, v_mean, mean_velocity_from_rest,
-/// reached} (null without a checked seed).
+/// algorithm (no wall-clock time: the JSON of a run is the same on every run), seed {A, c, phi0,
+/// alpha, I, v_mean, mean_velocity_from_rest, reached} (null without a checked seed).
 nlohmann::json ReachJson(const ReachResult& reach);
 
 /// The object of the reach problem: ReachJson with the requirements of its seed (the robust

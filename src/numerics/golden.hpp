@@ -13,7 +13,7 @@ inline constexpr int kGoldenMaxSteps = 100;  ///< refinement steps of GoldenRefi
 struct ScanMax {
   double x = std::numeric_limits<double>::quiet_NaN();  ///< argument (NaN: f never defined)
   double f = -std::numeric_limits<double>::infinity();  ///< value there
-  int evaluations = 0;  ///< calls of f
+  int evaluations = 0;                                  ///< calls of f
 };
 
 /// Refines the maximum of f inside the bracket [a, c] around best.x (a <= best.x <= c, f there

@@ -44,8 +44,8 @@ struct WindowSearch {
   std::vector<Window> windows;        ///< the feasible windows among them, by x
   /// The best objective over the windows (x and f; its index and evaluations are unused).
   ScanMax best;
-  int evaluations = 0;                ///< calls of the probe
-  int maxima = 0;  ///< local maxima of the objective refined in the windows
+  int evaluations = 0;  ///< calls of the probe
+  int maxima = 0;       ///< local maxima of the objective refined in the windows
   /// The refinement budget ran out while some gap still had to be refined: a window narrower
   /// than the scan's spacing may be missing.
   bool exhausted = false;
@@ -86,8 +86,7 @@ inline bool LocalMaximum(const std::vector<WindowSample>& s, std::size_t i) {
 }
 
 // The width of the gap after sample i if it is still to be refined, else 0.
-inline double OpenWidth(const std::vector<WindowSample>& s, std::size_t i,
-                        const WindowOptions& o) {
+inline double OpenWidth(const std::vector<WindowSample>& s, std::size_t i, const WindowOptions& o) {
   if (i + 1 >= s.size()) return 0.0;
   const double width = s[i + 1].x - s[i].x;
   const bool fold = s[i].probe.branches != s[i + 1].probe.branches;

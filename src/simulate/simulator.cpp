@@ -486,8 +486,7 @@ class Simulation {
   // Adds the record of an impact on `wall` with u, v right before it (also returned in
   // `record`) to the sequence of chatter_ (a new sequence when it is empty or on the other
   // wall); returns the sequence's accumulation point estimated from its last impacts.
-  detail::ChatterLimit RecordChatter(Wall wall, double u, double v,
-                                     detail::ChatterRecord* record);
+  detail::ChatterLimit RecordChatter(Wall wall, double u, double v, detail::ChatterRecord* record);
   // The phase from the origin to the accumulation point of `limit` if the sequence may end
   // there (docs/simulate.md "Chattering"), else a negative number.
   double ChatterTail(const detail::ChatterLimit& limit, const detail::ChatterRecord& now,
@@ -524,7 +523,7 @@ class Simulation {
   Segment sg_;
   SimResult res_;
   std::int64_t next_sample_ = 0;
-  bool stop_ = false;     // SimObserver::Done: the run ends at local phase stop_at_
+  bool stop_ = false;  // SimObserver::Done: the run ends at local phase stop_at_
   double stop_at_ = 0.0;
   int chatter_count_ = 0;
   double last_impact_phase_ = -kInf;
@@ -713,13 +712,13 @@ void Simulation::Impact(Wall wall) {
   last_impact_phase_ = phase;
   detail::ChatterRecord now;
   const detail::ChatterLimit limit = RecordChatter(wall, u, v, &now);
-  const bool slow = std::abs(u) < opt_.chatter_velocity &&
-                    chatter_.Size() >= detail::ChatterSequence::kImpacts;
+  const bool slow =
+      std::abs(u) < opt_.chatter_velocity && chatter_.Size() >= detail::ChatterSequence::kImpacts;
   const bool too_many = chatter_count_ > kMaxChatterImpacts;
   // A run that stops right after this impact (SimOptions::max_impacts_right) ends there.
-  const bool stops_here = wall == Wall::kRight && opt_.max_impacts_right > 0 &&
-                          res_.impacts_right + res_.transient.impacts_right + 1 >=
-                              opt_.max_impacts_right;
+  const bool stops_here =
+      wall == Wall::kRight && opt_.max_impacts_right > 0 &&
+      res_.impacts_right + res_.transient.impacts_right + 1 >= opt_.max_impacts_right;
   const double tail = stops_here ? -1.0 : ChatterTail(limit, now, slow || too_many);
   const bool contracting = limit.valid && limit.ratio <= 1.0 - kMinChatterContraction;
   sg_.x0 = Position(wall);
@@ -783,9 +782,9 @@ double Simulation::ChatterTail(const detail::ChatterLimit& limit, const detail::
                                bool cut_off) const {
   if (!limit.valid || !(limit.ratio_spread <= kChatterRatioSpread)) return -1.0;
   const bool accurate = limit.phase_error <= opt_.chatter_tolerance;
-  const bool at_rounding = limit.phase_error > limit.previous_phase_error &&
-                           limit.previous_phase_error <= kChatterRoundingFactor *
-                                                             opt_.chatter_tolerance;
+  const bool at_rounding =
+      limit.phase_error > limit.previous_phase_error &&
+      limit.previous_phase_error <= kChatterRoundingFactor * opt_.chatter_tolerance;
   if (!cut_off && !accurate && !at_rounding) return -1.0;
   const double tail = limit.at.phase - now.phase;
   if (!(tail >= 0.0 && tail <= std::min(kTau, Remaining()))) return -1.0;

@@ -16,7 +16,6 @@
 namespace capsubot {
 namespace {
 
-
 // Each chattering sequence ends within about the rule's tolerance (1e-9 in phase) of its
 // accumulation point whatever the cut-off; a start's mean velocity moves by far less than this.
 constexpr double kSettingsRelTol = 1e-8;
@@ -99,9 +98,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Robot{"main_e_0p999", 0.676954732510288, 0.323045267489712,
                             -3.089378590956282, 0.9428190586419751, 0.999, 0.1513077246, 1e-9,
                             true},
-                      Robot{"main_e_0p9", 0.676954732510288, 0.323045267489712,
-                            -3.089378590956282, 0.9428190586419751, 0.9, 0.1436930564, 1e-9,
-                            true},
+                      Robot{"main_e_0p9", 0.676954732510288, 0.323045267489712, -3.089378590956282,
+                            0.9428190586419751, 0.9, 0.1436930564, 1e-9, true},
                       Robot{"three_right_one_left", 0.34063197373861814, 0.06410131873607934,
                             -3.1181183398453047, 0.6435592358295166, 1.0, 0.02442949323, 1e-9,
                             false}),

@@ -76,9 +76,9 @@ TEST(LongRun, EarlyStopChangesNoAnswerOverRandomRobots) {
     params.e = unit(rng);
     const double share = unit(rng);
     const double total = 0.5 + 0.5 * unit(rng);  // (A + c)/T0
-    const Forcing forcing = Forcing::Harmonic(share * total * params.T0,
-                                              (1.0 - share) * total * params.T0,
-                                              kTau * unit(rng) - 0.5 * kTau);
+    const Forcing forcing =
+        Forcing::Harmonic(share * total * params.T0, (1.0 - share) * total * params.T0,
+                          kTau * unit(rng) - 0.5 * kTau);
     const double alpha = 0.05 + 0.9 * unit(rng);
     AttractorOptions stop, full;
     stop.threads = full.threads = 1;
@@ -109,8 +109,8 @@ TEST(LongRun, EarlyStopChangesNoAnswerOverRandomRobots) {
     // Did the early stop act? A run it stopped records no impact of the record.
     for (const PhaseState& start : starts) {
       detail::Recorder recorder;
-      detail::ClassifyMotion(forcing, params, alpha, stop.motion, {start, SimMode::kRest},
-                             recorder, true);
+      detail::ClassifyMotion(forcing, params, alpha, stop.motion, {start, SimMode::kRest}, recorder,
+                             true);
       early += recorder.impacts.empty() ? 1 : 0;
     }
   }
@@ -136,7 +136,8 @@ TEST(LongRun, AttractorsAgreeWithDirectRunsOfTheSameStarts) {
   double direct_sum = 0.0;
   int irregular = 0;
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    const double direct = DirectVelocity(r.forcing, r.params, r.alpha, starts[k], transient, record);
+    const double direct =
+        DirectVelocity(r.forcing, r.params, r.alpha, starts[k], transient, record);
     direct_sum += direct;
     if (a.motions[k].status == MotionStatus::kNoPeriod) {
       ++irregular;
@@ -183,8 +184,8 @@ std::vector<Example> DocExamples() {
   clearance.T0 = 0.1;
   clearance.e = 0.5;
   return {{"stable optimum",
-           Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047),
-           paper, 0.6435592358295166, 8},
+           Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047), paper,
+           0.6435592358295166, 8},
           {"orbit with clearance", Forcing::Harmonic(0.05, 0.02, -2.842), clearance,
            0.2792869076315278, 16}};
 }
@@ -360,8 +361,8 @@ TEST(LongRun, MotionsAreGroupedByPeriodAndVelocityNotImpactCounts) {
   // irregular attractor; one far away: another.
   const std::vector<Motion> motions = {
       PeriodicWith(1, 176, 14, 0.151436), PeriodicWith(1, 227, 17, 0.151436 * (1 + 1e-10)),
-      Irregular(0.01033, 0.0102, 0.0104),  Irregular(0.01041, 0.0104, 0.0104),
-      Irregular(0.01037, 0.0103, 0.0104),  Irregular(-0.02, -0.02, -0.02),
+      Irregular(0.01033, 0.0102, 0.0104), Irregular(0.01041, 0.0104, 0.0104),
+      Irregular(0.01037, 0.0103, 0.0104), Irregular(-0.02, -0.02, -0.02),
       PeriodicWith(2, 1, 1, 0.151436)};
   const std::vector<PhaseState> starts(motions.size(), RestStart(0.5, 0.0));
   const Attractors a = GroupMotions(starts, motions, Grouping{});

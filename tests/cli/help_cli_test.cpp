@@ -32,8 +32,7 @@ TEST_P(HelpCli, AnswersWithTheNearestNameOrTheHelp) {
 }
 
 const HelpCase kHelpCases[] = {
-    {"MisspeltCommand", "optimise", 2,
-     "unknown command 'optimise'; did you mean 'optimize'?"},
+    {"MisspeltCommand", "optimise", 2, "unknown command 'optimise'; did you mean 'optimize'?"},
     {"MisspeltCommandWithFlags", "solv --A 0.5", 2, "did you mean 'solve'?"},
     {"UnknownCommandFarFromAll", "frobnicate", 2, "unknown command 'frobnicate'; expected one of"},
     {"MisspeltVersion", "--versoin", 2, "unknown option '--versoin'; did you mean '--version'?"},
@@ -60,8 +59,7 @@ TEST(PhaseSyntax, PiMultiplesEqualTheirDecimalValue) {
   EXPECT_NE(grid.out.find("\n-1.5707963267948966,"), std::string::npos) << grid.out;
   const auto bad = testing::RunCli("solve --A 0.5 --c 0.5 --phi0 2pi 2>&1");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.out.find("--phi0 = 2pi is invalid: expected a phase in radians"),
-            std::string::npos)
+  EXPECT_NE(bad.out.find("--phi0 = 2pi is invalid: expected a phase in radians"), std::string::npos)
       << bad.out;
 }
 

@@ -529,12 +529,11 @@ std::vector<Case> Cases() {
        "--grid phi0=0:1e300:3 is invalid: expected phases |phi0| <= 1e6 rad (phases are in "
        "radians)",
        none},
-      {"PeriodicHugeStartPhaseIsRefused",
-       "periodic " + kRobot + " --from-rest 0.5,1e300", 2,
+      {"PeriodicHugeStartPhaseIsRefused", "periodic " + kRobot + " --from-rest 0.5,1e300", 2,
        "psi = 1e+300 is invalid: expected a phase |psi| <= 1e+06 rad", none},
       // -2.9 + 10^5 turns as a double: its exact remainder (300-bit arithmetic), not -2.9.
-      {"SolveLargePhaseIsReducedExactly", "solve --A 0.5 --c 0.5 --phi0 628315.6307179587 --json", 0,
-       "", none, "", "", "\"phi0\":-2.899999999974789"},
+      {"SolveLargePhaseIsReducedExactly", "solve --A 0.5 --c 0.5 --phi0 628315.6307179587 --json",
+       0, "", none, "", "", "\"phi0\":-2.899999999974789"},
       // A friction bound that dwarfs the motor: the design answers after a bounded number of
       // robots (it refined every orbit search to its bound, a minute and more).
       {"DesignHugeFrictionStopsAtItsWorkBound",

@@ -103,10 +103,9 @@ TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
   const auto r = RunCli("optimize --problem reach --json" + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key :
-       {"status", "message", "A", "c", "phi0", "alpha", "mean_velocity", "attractors", "summary",
-        "spread", "seed_won", "robust_to_settings", "evaluations", "rejected_evaluations",
-        "algorithm", "seed"}) {
+  for (const char* key : {"status", "message", "A", "c", "phi0", "alpha", "mean_velocity",
+                          "attractors", "summary", "spread", "seed_won", "robust_to_settings",
+                          "evaluations", "rejected_evaluations", "algorithm", "seed"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   for (const char* key : {"chatter_small", "chatter_large", "e_0999", "max_relative_deviation",

@@ -341,9 +341,9 @@ struct FrictionCase {
 };
 
 TEST(Design, HugeFrictionStopsAfterABoundedNumberOfUnresolvedRobots) {
-  for (const FrictionCase& c : {FrictionCase{"mu = 1e6", 1e6, 9.81}, FrictionCase{"g = 1e7", 0.3, 1e7},
-                                FrictionCase{"g = 1e10", 0.3, 1e10},
-                                FrictionCase{"g = 1e300", 0.3, 1e300}}) {
+  for (const FrictionCase& c :
+       {FrictionCase{"mu = 1e6", 1e6, 9.81}, FrictionCase{"g = 1e7", 0.3, 1e7},
+        FrictionCase{"g = 1e10", 0.3, 1e10}, FrictionCase{"g = 1e300", 0.3, 1e300}}) {
     const char* name = c.name;
     DesignInput in = testing::ExampleRobot();
     in.mu = c.mu;

@@ -126,19 +126,19 @@ constexpr Robot kTable[] = {
     {0.4648, 0.04136, 0.704, 0.86, 0.6367, 0.2562, 5.034, kNoStability},
     {0.7971, 0.04099, 0.287, 0.607, 0.2535, 0.1177, 7.915, kMarginsOff},
     {0.8309, 0.01268, 0.113, 0.372, 0.2496, 0.08787, 36.46, kMarginsOff},
-    {0.2165, 0.03357, 0.163, 0.603, 0.1362, 0.07212, 2.419, kMarginsOff},  // missed
-    {4.051, 0.02264, 0.274, 0.593, 3.554, 1.535, 2.829, kMarginsOff},      // missed
-    {0.08306, 0.02195, 0.354, 0.617, 0.1741, 0.07293, 4.031, kDefault},    // missed
-    {0.1143, 0.01859, 0.195, 0.438, 0.2976, 0.04917, 2.647, kNoStability}, // missed
-    {0.5087, 0.00542, 0.78, 0.065, 10.85, 0.6448, 15.9, kMarginsOff},      // missed
-    {2.21, 0.02114, 0.33, 0.226, 6.02, 2.261, 26.49, kMarginsOff},         // missed
-    {0.2014, 0.03375, 0.284, 0.675, 1.45, 0.2081, 2.87, kMarginsOff},      // missed
-    {0.05971, 0.01072, 0.453, 0.786, 0.2699, 0.1503, 9.42, kNoStability},  // missed
-    {1.87, 0.00736, 0.631, 0.284, 6.35, 1.576, 7.686, kNoStability},       // missed
-    {0.2693, 0.01758, 0.485, 0.439, 0.2318, 0.09303, 3.275, kNoStability}, // missed (slower)
-    {1.938, 0.006435, 0.555, 0.3, 9.597, 2.633, 10.24, kDefault},          // missed
-    {0.1703, 0.01795, 0.365, 0.587, 0.2291, 0.0843, 3.122, kNoStability},  // missed (slower)
-    {2.64, 0.01765, 0.15, 0.633, 3.098, 1.118, 2.819, kDefault},           // missed
+    {0.2165, 0.03357, 0.163, 0.603, 0.1362, 0.07212, 2.419, kMarginsOff},   // missed
+    {4.051, 0.02264, 0.274, 0.593, 3.554, 1.535, 2.829, kMarginsOff},       // missed
+    {0.08306, 0.02195, 0.354, 0.617, 0.1741, 0.07293, 4.031, kDefault},     // missed
+    {0.1143, 0.01859, 0.195, 0.438, 0.2976, 0.04917, 2.647, kNoStability},  // missed
+    {0.5087, 0.00542, 0.78, 0.065, 10.85, 0.6448, 15.9, kMarginsOff},       // missed
+    {2.21, 0.02114, 0.33, 0.226, 6.02, 2.261, 26.49, kMarginsOff},          // missed
+    {0.2014, 0.03375, 0.284, 0.675, 1.45, 0.2081, 2.87, kMarginsOff},       // missed
+    {0.05971, 0.01072, 0.453, 0.786, 0.2699, 0.1503, 9.42, kNoStability},   // missed
+    {1.87, 0.00736, 0.631, 0.284, 6.35, 1.576, 7.686, kNoStability},        // missed
+    {0.2693, 0.01758, 0.485, 0.439, 0.2318, 0.09303, 3.275, kNoStability},  // missed (slower)
+    {1.938, 0.006435, 0.555, 0.3, 9.597, 2.633, 10.24, kDefault},           // missed
+    {0.1703, 0.01795, 0.365, 0.587, 0.2291, 0.0843, 3.122, kNoStability},   // missed (slower)
+    {2.64, 0.01765, 0.15, 0.633, 3.098, 1.118, 2.819, kDefault},            // missed
     // A faster orbit becomes the gait just before the fold where it ends: two speed maxima
     // in one window (8.51 mm/s at 0.096 kg, 8.70 mm/s at 0.210 kg).
     {0.3217, 0.01467, 0.674, 0.738, 0.7917, 0.2926, 4.306, kNoStability},  // missed (slower)
@@ -159,8 +159,8 @@ int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row,
   for (const auto& [first, last] : ref.windows) {
     bool inside = false;
     for (const detail::M2Window& w : windows) {
-      inside = inside || (w.outer_lo <= first * (1.0 + kM2RelTol) &&
-                          last <= w.outer_hi * (1.0 + kM2RelTol));
+      inside = inside ||
+               (w.outer_lo <= first * (1.0 + kM2RelTol) && last <= w.outer_hi * (1.0 + kM2RelTol));
     }
     EXPECT_TRUE(inside) << "row " << row << ": the scan's window [" << first << ", " << last
                         << "] kg is in no window of the design (" << windows.size() << ")";
@@ -178,8 +178,8 @@ int ExpectDesignFindsEveryWindowOfTheScan(const Robot& robot, int n, int row,
   }
   EXPECT_TRUE(EvaluateGait(in, r.one_impact.m2_kg, in.frequency_min).ok()) << "row " << row;
   EXPECT_GE(r.one_impact.speed_mm_s, ref.best_speed * (1.0 - kSpeedRelTol))
-      << "row " << row << ": design m2 = " << r.one_impact.m2_kg << " kg, scan m2 = "
-      << ref.best_value << " kg";
+      << "row " << row << ": design m2 = " << r.one_impact.m2_kg
+      << " kg, scan m2 = " << ref.best_value << " kg";
   // It may be faster than the scan: in a window narrower than the scan's spacing (checked
   // here: no window of the scan holds its m2), or at the other of two local maxima of one
   // window, which the scan's local refinement does not reach (one of 250 other random robots

@@ -350,7 +350,8 @@ TEST(InputPhase, IsReducedModuloTheTrueTwoPi) {
   };
   for (const PhaseCase& c : cases) {
     const double r = ReduceInputPhase("phi0", c.phi);
-    EXPECT_NEAR(r, c.reduced, kReductionTol) << "phi = " << c.phi << ", difference " << r - c.reduced;
+    EXPECT_NEAR(r, c.reduced, kReductionTol)
+        << "phi = " << c.phi << ", difference " << r - c.reduced;
     // The force keeps the reduced phase: the same motor as the reference phase.
     const Forcing f = Forcing::Harmonic(0.5, 0.1, c.phi);
     EXPECT_EQ(f.phi0(), r);

@@ -81,8 +81,8 @@ TEST(MaximiseOverWindows, StopsWhenHalted) {
     ++calls;
     return At(-1.0 - (x - 0.5) * (x - 0.5), 1, x);
   };
-  const detail::WindowSearch r =
-      detail::MaximiseOverWindows(probe, [&calls] { return calls >= 7; }, 0.0, 1.0, Options(5));
+  const detail::WindowSearch r = detail::MaximiseOverWindows(
+      probe, [&calls] { return calls >= 7; }, 0.0, 1.0, Options(5));
   EXPECT_TRUE(r.halted);
   EXPECT_EQ(calls, 7);
   EXPECT_EQ(r.evaluations, 7);

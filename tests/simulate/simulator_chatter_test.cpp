@@ -96,8 +96,8 @@ TEST_P(ConstantForceChatter, EndsAtTheClosedFormAccumulationPoint) {
   // Five impacts (two estimates from four each agree at once), then the jump.
   EXPECT_EQ(r.impacts_right, 5);
   EXPECT_EQ(r.impacts_left, 0);
-  EXPECT_TRUE(Near(r.energy.impact_loss, 0.5 * alpha * (1.0 - alpha) * u0 * u0,
-                   kClosedFormTol * u0 * u0));
+  EXPECT_TRUE(
+      Near(r.energy.impact_loss, 0.5 * alpha * (1.0 - alpha) * u0 * u0, kClosedFormTol * u0 * u0));
   SimState start;
   start.u = u0;
   start.v = v0;
@@ -192,8 +192,8 @@ TEST_P(ChatterSettings, EnergyBalancesOverTheRecordWithItsJumps) {
   SimOptions opt = StartAt(k.alpha, 0.5, 0.0, 0.0, 200.0);
   const SimState s0 =
       Simulate(Forcing::Harmonic(k.A, k.c, k.phi0), Params{1.0, k.e}, opt).final_state;
-  const SimResult r = LongRun(k, SimOptions{}.chatter_velocity, SimOptions{}.chatter_tolerance,
-                              true);
+  const SimResult r =
+      LongRun(k, SimOptions{}.chatter_velocity, SimOptions{}.chatter_tolerance, true);
   ASSERT_EQ(r.status, SimStatus::kOk);
   EXPECT_TRUE(Balanced(r.energy, Kinetic(k.alpha, r.final_state) - Kinetic(k.alpha, s0)));
   if (k.e == 1.0) {
