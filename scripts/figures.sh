@@ -166,10 +166,10 @@ gnuplot -e "term='$term'; out='$out/design_speed_power.png'; valid_data='$out/de
   "$gp/design.gp"
 gnuplot -e "term='$term'; out='$out/bifurcation_T0.png'; impacts='$out/bifurcation_T0_impacts.csv';
   summary='$out/bifurcation_T0_summary.csv';
-  title_text='Long-run motions against T0: F = 0.3406 sin(phi - 3.1181) + 0.0641, alpha = 0.6436, e = 1'" \
+  title_text='Long-run motions of one robot against the friction bound T_0 (F = 0.3406 sin({/Symbol f} - 3.1181) + 0.0641, {/Symbol a} = 0.6436, e = 1)'" \
   "$gp/bifurcation.gp"
 gnuplot -e "term='$term'; out='$out/velocity_alpha.png'; summary='$out/velocity_alpha.csv';
-  title_text='Mean velocity against alpha: F = 0.05 sin(phi - 2.842) + 0.02, T0 = 0.1, e = 0.5'" \
+  title_text='Long-run motions and one-impact orbits against the mass ratio {/Symbol a} (F = 0.05 sin({/Symbol f} - 2.842) + 0.02, T_0 = 0.1, e = 0.5)'" \
   "$gp/velocity_alpha.gp"
 say "basins of two coexisting attractors (drawn by capsubot basins through gnuplot)"
 "$cli" basins $small --alpha 0.2792869076315278 \

@@ -10,7 +10,9 @@ set logscale x
 set format x "%g"
 set xrange [0.002:0.5]
 set grid
-set key top right box opaque font ",11"
+# The key sits bottom left, where neither panel has data (every gait lies right of 0.008 kg).
+set key bottom left box opaque font ",11"
+set lmargin 12  # both panels share the x axis
 set style line 1 lw 2 dt 2 lc rgb "#7f7f7f"
 set style line 2 lw 3 lc rgb "#1f77b4"
 set style line 3 pt 7 ps 1.8 lc rgb "#d62728"

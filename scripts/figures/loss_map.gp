@@ -19,7 +19,7 @@ set key below horizontal box opaque font ",12"
 kind(s) = (column("valid") == 0) ? 0xc8c8c8 : (column("stable") == 1) ? 0x2ca02c : \
   (s eq "fold") ? 0x1f77b4 : (s eq "flip") ? 0xd62728 : (s eq "torus") ? 0xff7f0e : 0x000000
 has_orbit(y) = (strcol("alpha") eq "") ? NaN : y
-set multiplot layout 1,2 title sprintf("How the one-impact orbit loses stability: F = A sin({/Symbol f} + {/Symbol f}_0) + %g,  T_0 = %g,  e = %g   (capsubot sweep --stability, column loss)", c, T0, e)
+set multiplot layout 1,2 title sprintf("How the one-impact orbit loses stability: F = A sin({/Symbol f} + {/Symbol f}_0) + %g,  T_0 = %g,  e = %g", c, T0, e)
 set title "whole phase range"
 set xrange [-pi:pi]
 set xtics ("-{/Symbol p}" -pi, "-{/Symbol p}/2" -pi/2, "0" 0, "{/Symbol p}/2" pi/2, "{/Symbol p}" pi)
@@ -31,7 +31,8 @@ plot data using "phi0":(has_orbit(column("A"))):(column("phi0")-dphi):(column("p
      NaN with boxes fs solid lc rgb "#1f77b4" title "fold (+1)", \
      NaN with boxes fs solid lc rgb "#d62728" title "flip (-1)", \
      NaN with boxes fs solid lc rgb "#ff7f0e" title "torus (complex pair)", \
-     NaN with boxes fs solid lc rgb "#c8c8c8" title "invalid orbit"
+     NaN with boxes fs solid lc rgb "#c8c8c8" title "invalid orbit", \
+     NaN with boxes fs empty border lc rgb "#000000" lc rgb "#000000" title "no orbit"
 unset key
 set title "zoom: A + c close to T_0"
 unset logscale y

@@ -21,7 +21,7 @@ set object 1 rectangle from graph 0,0 to graph 1,1 back fc rgb "#d9d9d9" fillsty
 # T0 is log-spaced (n_T0 points over two decades): neighbours differ by the factor r.
 r = 10**(2.0/(n_T0 - 1))
 ok(v) = (strcol("status") eq "ok" && column("valid") == 1) ? v : NaN
-set multiplot layout 1,2 title "Fastest one-impact gait at each (T_0, e): problem P2 at every grid point (capsubot sweep --optimize forcing).  Grey: none found"
+set multiplot layout 1,2 title "Fastest one-impact gait at each (T_0, e): problem P2 at every grid point.  Grey: none found"
 set title "fastest valid gait"
 plot valid_data using (column("T0")):(ok(column("e"))):(column("T0")/sqrt(r)):(column("T0")*sqrt(r)):(column("e")-0.05):(column("e")+0.05):(ok(column("I"))) \
        with boxxyerror lc palette notitle
