@@ -527,7 +527,8 @@ Command AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--max-time", opt->search.max_time,
                   "time limit [s] of each optimisation; when reached, the best point so far is "
                   "reported with status max_time (inf: none)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name(kFloatOrInf);
   cmd->add_option("--harmonics", opt->search.harmonics,
                   "number K of harmonics of the Fourier force")
       ->capture_default_str();

@@ -322,6 +322,21 @@ TEST(OptimizeCli, TimeLimitStopsTheSearchWithItsStatus) {
       << j["message"];
 }
 
+TEST(OptimizeCli, InfiniteTimeLimitMeansNoLimit) {
+  // The help says "inf: none"; the limit is then never reached and the answer is the default's.
+  const std::string args =
+      "optimize --problem phase --A 0.2 --c 0.03 --from-rest-starts 1x1 --json";
+  const auto limited = RunCli(args);
+  const auto unlimited = RunCli(args + " --max-time inf");
+  ASSERT_EQ(unlimited.status, 0) << unlimited.out;
+  ASSERT_EQ(limited.status, 0) << limited.out;
+  const auto a = nlohmann::json::parse(limited.out);
+  const auto b = nlohmann::json::parse(unlimited.out);
+  EXPECT_EQ(b["status"], "ok") << b["message"];
+  EXPECT_EQ(b["phi0"], a["phi0"]);
+  EXPECT_EQ(b["I"], a["I"]);
+}
+
 TEST(OptimizeCli, SizeOptionsAreBoundedBeforeAnyWork) {
   // Each of these once ran for ever or allocated until the process died.
   struct Case {
