@@ -51,10 +51,12 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
       ClassifyWholeMap(opt.robot, forcing, starts, ao, opt.output);
   if (!map) return 0;  // a worker of an MPI job: rank 0 writes and prints
   const Attractors& a = *map;
-  if (!opt.output.empty()) WriteStartMap(opt.output, starts, a, false);
+  if (!opt.output.empty()) {
+    WriteStartMap(opt.output, starts, a, false, OutputProvenance(cmd).CommentLine());
+  }
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd, {"--checkpoint-seconds", "--shard"});
+    AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
     return 0;
   }

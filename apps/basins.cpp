@@ -131,7 +131,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
       ClassifyWholeMap(opt.robot, forcing, starts, ao, opt.output);
   if (!map) return 0;  // a worker of an MPI job: rank 0 writes and prints
   const Attractors& a = *map;
-  WriteStartMap(opt.output, starts, a, x0_u0);
+  WriteStartMap(opt.output, starts, a, x0_u0, OutputProvenance(cmd).CommentLine());
   if (!opt.plot.empty()) {
     const std::string title =
         fmt::format("Basins of attraction: {}, T0 = {:g}, e = {:g}, alpha = {:.6g}{}",
@@ -141,7 +141,7 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   }
   if (opt.json) {
     nlohmann::json j = AttractorsJson(a);
-    AddProvenanceJson(j, cmd, {"--checkpoint-seconds", "--shard"});
+    AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
     return 0;
   }

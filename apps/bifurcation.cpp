@@ -96,16 +96,14 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     return opt.summary.empty() ? std::string()
                                : fmt::format(", {} summary rows to {}", rows, opt.summary);
   };
+  // The run's name, in both files: the same for a shard and the whole study (the join writes
+  // it), without the paths and how it runs.
+  const std::string comments = OutputProvenance(cmd).CommentLine();
   if (sharded) {
     BifurcationShardFiles files;
     files.impacts = opt.output;
     files.summary = opt.summary;
-    // The run's name: without --shard, the paths and how it runs.
-    files.comments = "# " +
-                     CommandProvenance(cmd, {"--threads", "--output", "--summary", "--shard",
-                                             "--resume", "--checkpoint-seconds"})
-                         .CommandLine() +
-                     '\n';
+    files.comments = comments;
     files.resume = opt.resume;
     files.checkpoint_seconds = opt.checkpoint_seconds;
     const BifurcationShardSummary s =
@@ -123,13 +121,13 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   CheckWritable(opt.output, "-o");  // fail on an unwritable path before the long run
   const BifurcationDiagram d = ComputeBifurcation(
       forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"), ranks.backend());
-  std::string rows = BifurcationImpactsHeader(o);
+  std::string rows = comments + BifurcationImpactsHeader(o);
   AppendImpactRows(rows, d, two);
   AtomicFile impacts(opt.output, "-o");
   impacts.stream() << rows;
   std::unique_ptr<AtomicFile> summary;
   if (!opt.summary.empty()) {
-    rows = BifurcationSummaryHeader(o);
+    rows = comments + BifurcationSummaryHeader(o);
     AppendSummaryRows(rows, d, two);
     summary = std::make_unique<AtomicFile>(opt.summary, "--summary");
     summary->stream() << rows;

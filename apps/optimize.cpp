@@ -465,6 +465,11 @@ int Run(const OptimizeCliOptions& opt) {
   files.json = OpenIfAsked(opt.output, "-o");
   files.force_csv = OpenIfAsked(opt.force_csv, "--force-csv");
   files.from_rest_csv = OpenIfAsked(opt.from_rest_csv, "--from-rest-csv");
+  // The CSV files start with the provenance of the JSON (the same run, the same options).
+  const std::string comment = OutputProvenance(*opt.cmd, UnusedOptionsOf(opt)).CommentLine();
+  for (AtomicFile* csv : {files.force_csv.get(), files.from_rest_csv.get()}) {
+    if (csv != nullptr) csv->stream() << comment;
+  }
   if (opt.problem.empty()) return RunMainJob(opt, files);
   return opt.problem == "reach" ? RunReach(opt, files) : RunProblem(opt, check, files);
 }

@@ -45,6 +45,8 @@ std::string Provenance::CommandLine() const {
   return line;
 }
 
+std::string Provenance::CommentLine() const { return "# " + CommandLine() + '\n'; }
+
 nlohmann::json Provenance::Json() const {
   nlohmann::json values = nlohmann::json::object();
   for (const auto& [name, value] : options) {
@@ -80,12 +82,28 @@ Provenance CommandProvenance(const CLI::App& command, const std::vector<std::str
   return p;
 }
 
-Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused) {
-  std::vector<std::string> exclude = {
-      "--json",      "--threads",       "--output", "--trajectory",         "--events",
-      "--force-csv", "--from-rest-csv", "--plot",   "--samples-per-period", "--samples"};
+Provenance OutputProvenance(const CLI::App& command, const std::vector<std::string>& unused) {
+  std::vector<std::string> exclude = {"--json",
+                                      "--threads",
+                                      "--output",
+                                      "--summary",
+                                      "--trajectory",
+                                      "--events",
+                                      "--force-csv",
+                                      "--from-rest-csv",
+                                      "--plot",
+                                      "--shard",
+                                      "--resume",
+                                      "--checkpoint-seconds",
+                                      "--no-header-comment"};
   exclude.insert(exclude.end(), unused.begin(), unused.end());
   return CommandProvenance(command, exclude);
+}
+
+Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused) {
+  std::vector<std::string> exclude = {"--samples", "--samples-per-period"};
+  exclude.insert(exclude.end(), unused.begin(), unused.end());
+  return OutputProvenance(command, exclude);
 }
 
 void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,

@@ -1,8 +1,9 @@
 #pragma once
 // What made an output file: the program, its version, the subcommand and the value of every
-// option that determines the content, as one command line (CSV comment lines) or a JSON
-// object. Options that only change how or where the work is done (threads, output path,
-// resume) are left out, so that the same content always carries the same provenance.
+// option that determines the content, as one command line (the comment line that starts every
+// CSV file) or a JSON object. Options that only change how or where the work is done (threads,
+// output paths, shards, resume) are left out, so that the same content always carries the same
+// provenance.
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -21,6 +22,9 @@ struct Provenance {
   /// "capsubot 1.0.0 sweep --grid phi0=-pi:pi:5 --A 0.5 ...": a command that reproduces the
   /// content (values shell-quoted where needed).
   std::string CommandLine() const;
+  /// "# " + CommandLine() + "\n": the line that starts a CSV file (pandas: comment='#';
+  /// gnuplot skips it).
+  std::string CommentLine() const;
   /// {"program": "capsubot", "version": ..., "command": ..., "command_line": ...,
   ///  "options": {"--grid": ["phi0=-pi:pi:5"], "--stability": [], ...}}.
   nlohmann::json Json() const;
@@ -31,14 +35,19 @@ struct Provenance {
 /// order; `exclude` lists long names ("--threads") that do not change the content.
 Provenance CommandProvenance(const CLI::App& command, const std::vector<std::string>& exclude);
 
-/// The provenance AddProvenanceJson adds (its options: see there).
+/// The provenance of an output of the parsed subcommand `command`: every option, but not those
+/// that change no output's content (--json, --threads, the paths of output files -o/--output,
+/// --summary, --trajectory, --events, --force-csv, --from-rest-csv, --plot, and --shard,
+/// --resume, --checkpoint-seconds, --no-header-comment), nor the options in `unused` (long
+/// names of options the run does not use or that do not shape this output).
+Provenance OutputProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
+
+/// The provenance AddProvenanceJson adds: OutputProvenance(command, unused) without what only
+/// shapes the CSV files (--samples, --samples-per-period).
 Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
 
-/// Adds "provenance" (Provenance::Json) to a JSON output of the parsed subcommand `command`:
-/// every option that determines the content, but not --json, --threads, the paths of output
-/// files (-o/--output, --trajectory, --events, --force-csv, --from-rest-csv, --plot) or what
-/// only shapes those files (--samples, --samples-per-period), nor the options in `unused`
-/// (long names of options the run does not use).
+/// Adds "provenance" (JsonProvenance(command, unused).Json()) to a JSON output of the parsed
+/// subcommand `command`.
 void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
                        const std::vector<std::string>& unused = {});
 

@@ -81,6 +81,46 @@ class CsvObserver : public SimObserver {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// The printed report of a run `r` of `sim` (`orbit`: the analytic orbit it starts from, or null).
+std::string ReportText(const Forcing& forcing, const SimulateOptions& opt, const SimOptions& sim,
+                       const SimResult& r, const Solution* orbit) {
+  const SimState& f = r.final_state;
+  std::string t = "event-driven simulation\n";
+  t += fmt::format("  force            {}\n", ForceFormula(forcing));
+  t += fmt::format("  model            T0 = {}, e = {}, alpha = {}\n", opt.params.T0, opt.params.e,
+                   std::isnan(sim.alpha) ? "-" : FormatNumber(sim.alpha));
+  t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
+                   Num(sim.v0),
+                   opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
+  t += fmt::format("  status           {}   (phase {} = {} periods)\n", SimStatusName(r.status),
+                   Num(f.phi), Num(f.phi / kTau, 6));
+  if (sim.transient > 0.0) {
+    t += fmt::format(
+        "  transient        {:g} periods: displacement {}, mean velocity {}, {} right "
+        "and {} left impacts (not in the figures below)\n",
+        sim.transient, Num(r.transient.displacement), Num(r.transient.v_mean),
+        r.transient.impacts_right, r.transient.impacts_left);
+  }
+  t += fmt::format("  final state      x = {}, u = {}, v = {}, y = {} ({})\n", Num(f.x), Num(f.u),
+                   Num(f.v), Num(f.y), SimModeName(f.mode));
+  t += fmt::format("  displacement     {}   (L)\n", Num(r.displacement));
+  t += fmt::format("  mean velocity    {}   (omega L)", Num(r.v_mean));
+  if (orbit) t += fmt::format("   analytic: {}", Num(orbit->orbit.v_mean));
+  t += "\n";
+  t += fmt::format("  events           {} right impacts, {} left impacts, {} stops, {} break-aways",
+                   r.impacts_right, r.impacts_left, r.stops, r.breakaways);
+  if (r.sticks + r.releases > 0) {
+    t += fmt::format(", {} sticks on a wall (chattering), {} releases", r.sticks, r.releases);
+  }
+  t += "\n";
+  const Energy& en = r.energy;
+  t += fmt::format(
+      "  energy           motor work {:.10g} (positive part {:.10g}); losses: friction "
+      "{:.10g}, impacts {:.10g}   ((m1+m2) omega^2 L^2)\n",
+      en.motor_work, en.motor_work_positive, en.friction_loss, en.impact_loss);
+  return t;
+}
+
 int Run(SimulateOptions& opt, const CLI::App& cmd) {
   opt.params.Validate();
   const Forcing forcing = opt.forcing.Build();
@@ -125,10 +165,15 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
   }
 
   RequireDistinctOutputs({{opt.events, "--events"}, {opt.trajectory, "--trajectory"}});
+  // Each file starts with its provenance: the events do not depend on the trajectory's grid.
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
-  if (!opt.events.empty()) events_file = std::make_unique<AtomicFile>(opt.events, "--events");
+  if (!opt.events.empty()) {
+    events_file = std::make_unique<AtomicFile>(opt.events, "--events");
+    events_file->stream() << OutputProvenance(cmd, {"--samples-per-period"}).CommentLine();
+  }
   if (!opt.trajectory.empty()) {
     trajectory_file = std::make_unique<AtomicFile>(opt.trajectory, "--trajectory");
+    trajectory_file->stream() << OutputProvenance(cmd).CommentLine();
   }
   std::optional<ProgressBar> bar;
   if (sim.periods >= kProgressPeriods && StderrIsTerminal()) bar.emplace("periods");
@@ -144,47 +189,13 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
     fmt::print(stderr, "capsubot simulate: note: stopped early: {}\n", r.message);
   }
 
-  const SimState& f = r.final_state;
   if (opt.json) {
     nlohmann::json j = json::SimulationJson(r, sim, orbit ? &*orbit : nullptr);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
     return 0;
   }
-  std::string t = "event-driven simulation\n";
-  t += fmt::format("  force            {}\n", ForceFormula(forcing));
-  t += fmt::format("  model            T0 = {}, e = {}, alpha = {}\n", opt.params.T0, opt.params.e,
-                   std::isnan(sim.alpha) ? "-" : FormatNumber(sim.alpha));
-  t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
-                   Num(sim.v0),
-                   opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
-  t += fmt::format("  status           {}   (phase {} = {} periods)\n", SimStatusName(r.status),
-                   Num(f.phi), Num(f.phi / kTau, 6));
-  if (sim.transient > 0.0) {
-    t += fmt::format(
-        "  transient        {:g} periods: displacement {}, mean velocity {}, {} right "
-        "and {} left impacts (not in the figures below)\n",
-        sim.transient, Num(r.transient.displacement), Num(r.transient.v_mean),
-        r.transient.impacts_right, r.transient.impacts_left);
-  }
-  t += fmt::format("  final state      x = {}, u = {}, v = {}, y = {} ({})\n", Num(f.x), Num(f.u),
-                   Num(f.v), Num(f.y), SimModeName(f.mode));
-  t += fmt::format("  displacement     {}   (L)\n", Num(r.displacement));
-  t += fmt::format("  mean velocity    {}   (omega L)", Num(r.v_mean));
-  if (orbit) t += fmt::format("   analytic: {}", Num(orbit->orbit.v_mean));
-  t += "\n";
-  t += fmt::format("  events           {} right impacts, {} left impacts, {} stops, {} break-aways",
-                   r.impacts_right, r.impacts_left, r.stops, r.breakaways);
-  if (r.sticks + r.releases > 0) {
-    t += fmt::format(", {} sticks on a wall (chattering), {} releases", r.sticks, r.releases);
-  }
-  t += "\n";
-  const Energy& en = r.energy;
-  t += fmt::format(
-      "  energy           motor work {:.10g} (positive part {:.10g}); losses: friction "
-      "{:.10g}, impacts {:.10g}   ((m1+m2) omega^2 L^2)\n",
-      en.motor_work, en.motor_work_positive, en.friction_loss, en.impact_loss);
-  fmt::print("{}", t);
+  fmt::print("{}", ReportText(forcing, opt, sim, r, orbit ? &*orbit : nullptr));
   return 0;
 }
 

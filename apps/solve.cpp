@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "capsubot/io.hpp"
 #include "capsubot/orbit_energy.hpp"
@@ -26,10 +28,15 @@ struct SolveOptions {
   FromRestCliOptions from_rest;  // with --stability: the orbit checked from rest
 };
 
-void WriteTrajectory(const Orbit& o, const std::string& path, int samples) {
+// What the trajectory of the orbit does not depend on: the check of the orbit's validity and
+// stability (its margins; the grid of starts from rest).
+const std::vector<std::string> kNotInTrajectory = {"--margin", "--margin-stroke", "--stick-margin",
+                                                   "--stability", "--from-rest-starts"};
+
+void WriteTrajectory(const Orbit& o, const std::string& path, int samples, const CLI::App& cmd) {
   AtomicFile file(path, "--trajectory");
   auto& out = file.stream();
-  out << "phi,x,u,v\n";
+  out << OutputProvenance(cmd, kNotInTrajectory).CommentLine() << "phi,x,u,v\n";
   for (int i = 0; i < samples; ++i) {
     const double phi = kTau * i / (samples - 1);
     // phi = 0 is just after the impact, phi = tau just before the next one.
@@ -46,7 +53,7 @@ int Run(const SolveOptions& opt, const CLI::App& cmd) {
   const Solution s = Solve(forcing, opt.params);
   if (!opt.trajectory.empty()) {
     if (s.orbit.ok()) {
-      WriteTrajectory(s.orbit, opt.trajectory, opt.samples);
+      WriteTrajectory(s.orbit, opt.trajectory, opt.samples, cmd);
     } else {
       fmt::print(stderr, "capsubot solve: note: --trajectory not written: no orbit ({})\n",
                  StatusName(s.orbit.status));

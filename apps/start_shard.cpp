@@ -30,11 +30,6 @@ void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const ch
       ->capture_default_str();
 }
 
-std::vector<std::string> ShardExcludedOptions() {
-  return {"--threads", "--output", "--shard", "--resume", "--checkpoint-seconds",
-          "--plot",    "--json"};
-}
-
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options) {
   RequireShardForResume(cmd, SplitsRun(options.shard), "map");
 }
@@ -68,7 +63,7 @@ int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
                        attractor.threads);
   }
   so.output = output;
-  so.comments = "# " + CommandProvenance(cmd, ShardExcludedOptions()).CommandLine() + '\n';
+  so.comments = OutputProvenance(cmd).CommentLine();  // that of the whole map's file
   so.u0 = u0;
   so.resume = options.resume;
   so.checkpoint_seconds = options.checkpoint_seconds;

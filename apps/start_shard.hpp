@@ -20,9 +20,6 @@ struct StartShardCliOptions {
 /// Adds --shard, --resume and --checkpoint-seconds to `cmd` (of command `name`).
 void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const char* name);
 
-/// The options a shard file's provenance line leaves out (besides those of no content).
-std::vector<std::string> ShardExcludedOptions();
-
 /// Refuses --resume or a changed --checkpoint-seconds without --shard K/N, N >= 2
 /// (std::invalid_argument).
 void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options);

@@ -235,12 +235,8 @@ void SetOptimizerOptions(SweepCliOptions& opt, const CLI::App& cmd) {
 // defaults of options a grid replaces.
 std::string ProvenanceLine(const SweepCliOptions& opt, const CLI::App& cmd,
                            std::vector<std::string> exclude) {
-  for (const char* flag : {"--threads", "--output", "--resume", "--checkpoint-seconds",
-                           "--no-header-comment", "--shard"}) {
-    exclude.emplace_back(flag);
-  }
   for (const GridAxis& axis : opt.sweep.grid.axes) exclude.push_back(FlagOf(axis));
-  Provenance p = CommandProvenance(cmd, exclude);
+  Provenance p = OutputProvenance(cmd, exclude);
   if (opt.sweep.optimize == SweepOptimize::kReach) {
     for (auto& [name, value] : p.options) {
       for (const auto& [flag, robust] : kReachDefaults) {

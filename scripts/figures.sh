@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the paper's figures into results/ (CSV from `capsubot sweep`, PNG from gnuplot):
-#   every CSV starts with a '# capsubot <version> sweep ...' line (what made it): gnuplot
-#   skips it, the awk helpers below read the table through `table`.
+#   every CSV starts with a '# capsubot <version> <command> ...' line (what made it):
+#   gnuplot skips it, the awk helpers below read the table through `table`.
 #   fig2_phi1_vs_phi0.{csv,png}   Fig. 2: phi1 against phi0 for c = A = T0/2
 #   fig3_*.csv, fig3_I_vs_phi0.png Fig. 3: I against phi0, the paper's example and a valid case
 #   map_valid.csv, map_stable.csv, map_best_velocity.png: the fastest gait over (A/T0, c/T0)

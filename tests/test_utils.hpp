@@ -10,10 +10,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "capsubot/params.hpp"
 #include "capsubot/simulator.hpp"
@@ -105,6 +108,41 @@ inline CommandResult RunCli(const std::string& args) {
   const int raw = pclose(pipe);
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return r;
+}
+
+/// A CSV file as capsubot writes it: its comment lines (each beginning with '#': the
+/// provenance), its header line, its rows; without their line breaks.
+struct CsvLines {
+  std::vector<std::string> comments;
+  std::string header;
+  std::vector<std::string> rows;
+};
+
+/// Splits the text of a CSV file: the '#' lines before the header, the header, every later
+/// line a row.
+inline CsvLines SplitCsv(const std::string& text) {
+  CsvLines csv;
+  std::istringstream in(text);
+  bool header = false;
+  for (std::string line; std::getline(in, line);) {
+    if (header) {
+      csv.rows.push_back(line);
+    } else if (line.rfind('#', 0) == 0) {
+      csv.comments.push_back(line);
+    } else {
+      csv.header = line;
+      header = true;
+    }
+  }
+  return csv;
+}
+
+/// SplitCsv of the file at `path`.
+inline CsvLines ReadCsv(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return SplitCsv(text.str());
 }
 
 }  // namespace capsubot::testing

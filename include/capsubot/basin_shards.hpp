@@ -14,12 +14,13 @@
 namespace capsubot {
 
 /// Joins the files of the N shards of one basin map, given in any order, into `output`
-/// (written atomically): the header and the rows in start order (start s from shard s % N),
-/// with the attractor of each start (1 = reached from most starts) from GroupMotions of all
-/// the motions read. The shard checks are MergeSweepShards' (line "# shard K/N of T starts",
-/// same run, none missing or twice, none truncated or longer); a row that is not a basin row
-/// with an empty attractor cell is refused. Throws std::invalid_argument naming the file and
-/// the rule, IoError for a file that cannot be read or written; `output` is then untouched.
+/// (written atomically): the comment lines (without the shard line), the header and the rows
+/// in start order (start s from shard s % N), with the attractor of each start (1 = reached
+/// from most starts) from GroupMotions of all the motions read. The shard checks are
+/// MergeSweepShards' (line "# shard K/N of T starts", same run, none missing or twice, none
+/// truncated or longer); a row that is not a basin row with an empty attractor cell is refused.
+/// Throws std::invalid_argument naming the file and the rule, IoError for a file that cannot be
+/// read or written; `output` is then untouched.
 MergeSummary MergeBasinShards(const std::vector<std::string>& shards, const std::string& output,
                               double velocity_tolerance = AttractorOptions{}.velocity_tolerance);
 

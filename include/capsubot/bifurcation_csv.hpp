@@ -29,9 +29,11 @@ void AppendSummaryRows(std::string& out, const BifurcationDiagram& d, bool over)
 
 /// Where a shard of a bifurcation study is written and how.
 struct BifurcationShardFiles {
-  std::string impacts;   ///< the impacts CSV (required; "-": standard output, no resume)
-  std::string summary;   ///< the summary CSV; empty: none
-  std::string comments;  ///< the lines before the shard line (each "# ...\n"): the run's name
+  std::string impacts;  ///< the impacts CSV (required; "-": standard output, no resume)
+  std::string summary;  ///< the summary CSV; empty: none
+  /// The lines before the shard line (each "# ...\n"): the run's name, those of the whole
+  /// study's files, which the join writes.
+  std::string comments;
   /// Continue from `<file>.checkpoint` of each file if it exists and was written by this same
   /// shard (same comment lines, shard line, header and parts); without one, a file starts anew.
   bool resume = false;

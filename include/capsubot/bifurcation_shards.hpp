@@ -19,8 +19,9 @@ namespace capsubot {
 std::string BifurcationPartLine(int part, int parts, std::int64_t rows);
 
 /// Joins the files of the N shards of one bifurcation study (all impacts files or all
-/// summary files), given in any order, into `output` (written atomically): the header and
-/// the rows of parts 0 .. Q-1 in order, without comment lines. The shard checks are
+/// summary files), given in any order, into `output` (written atomically): the comment lines
+/// (without the shard line), the header and the rows of parts 0 .. Q-1 in order, without
+/// their part lines. The shard checks are
 /// MergeSweepShards' (same run, none missing or twice); every part must be in exactly one
 /// file with its R rows. Throws std::invalid_argument naming the file and the rule, IoError for
 /// a file that cannot be read or written; `output` is then untouched.

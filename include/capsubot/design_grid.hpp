@@ -40,8 +40,8 @@ enum class DesignParameter {
   krho_max,          ///< largest admissible multiplier modulus (inf: no stability requirement)
 };
 
-/// The parameter's name in a grid and a CSV header: the design's setting ("m1",
-/// "force-amplitude", "rho-max", ...; "m2" for the inner mass).
+/// The parameter's name in a grid: the design's setting ("m1", "force-amplitude", "rho-max",
+/// ...; "m2" for the inner mass).
 const char* DesignParameterName(DesignParameter parameter);
 
 /// One axis of a design grid.
@@ -49,6 +49,9 @@ struct DesignGridAxis : GridValues {
   DesignParameter parameter = DesignParameter::km2;  ///< what varies
 
   std::string name() const { return DesignParameterName(parameter); }
+  /// Its column in the CSV header: name(), but "m2_kg" for the inner mass (the name of a gait's
+  /// inner mass, Gait::m2_kg, with its unit: a file has one column for it).
+  std::string column() const;
   /// `name=` + ValuesText().
   std::string ToString() const { return name() + "=" + ValuesText(); }
   /// Throws std::invalid_argument "grid <axis> is invalid: ..." (GridValues::Check with the
@@ -69,7 +72,8 @@ struct DesignGridOptions : GridFileOptions {
   DesignInput input;
   /// The axes, first slowest; each parameter at most once, at least one axis.
   std::vector<DesignGridAxis> axes;
-  /// The names of the columns after the grid's, and their cells (required).
+  /// The names of the columns after the grid's (none an axis's column: DesignGridAxis::column),
+  /// and their cells (required).
   std::vector<std::string> columns;
   DesignGridRow row;
 
@@ -89,7 +93,7 @@ struct DesignGridOptions : GridFileOptions {
 BlockComputeFactory DesignGridBlocks(const DesignGridOptions& options);
 
 /// Runs the grid and writes options.output: `# ` comments, the shard line of a shard, the
-/// header (the axes' names, then options.columns), one row a point (the axes' values, then
+/// header (the axes' columns, then options.columns), one row a point (the axes' values, then
 /// options.row(DesignGait(PointInput))). Errors as RunSweep: std::invalid_argument for bad
 /// options (before any file is touched), IoError, SweepResumableError. The blocks of rows are
 /// computed by `backend` (this process's threads by default).

@@ -23,18 +23,21 @@ void AppendStartMapRow(std::string& out, const PhaseState& start, const Motion& 
 
 /// Writes the map of `starts` (in their order) with their motions and labels from `a` (of
 /// ClassifyStarts or GroupMotions of these starts; label k + 1 for a.attractors[k]) to `output`,
-/// atomically (AtomicFile, "-": standard output). Throws std::invalid_argument when the sizes
-/// differ, IoError when the file cannot be written.
+/// atomically (AtomicFile, "-": standard output): `comments` (the run's name, each line
+/// "# ...\n"; empty: none), the header, one row per start. Throws std::invalid_argument when
+/// the sizes differ, IoError when the file cannot be written.
 void WriteStartMap(const std::string& output, const std::vector<PhaseState>& starts,
-                   const Attractors& a, bool u0);
+                   const Attractors& a, bool u0, const std::string& comments = "");
 
 /// Which starts a shard holds and where it is written.
 struct StartShardOptions {
-  int shard = 0;         ///< K: the starts s with s % shards = shard; 0 <= shard < shards
-  int shards = 1;        ///< N; 1 <= shards <= the starts
-  std::string output;    ///< the CSV ("-": standard output, written in place, no resume)
-  std::string comments;  ///< the lines before the shard line (each "# ...\n"): the run's name
-  bool u0 = false;       ///< second column u0 (else psi)
+  int shard = 0;       ///< K: the starts s with s % shards = shard; 0 <= shard < shards
+  int shards = 1;      ///< N; 1 <= shards <= the starts
+  std::string output;  ///< the CSV ("-": standard output, written in place, no resume)
+  /// The lines before the shard line (each "# ...\n"): the run's name, those of the whole
+  /// map's file (WriteStartMap), which the join writes.
+  std::string comments;
+  bool u0 = false;  ///< second column u0 (else psi)
   /// Continue from `<output>.checkpoint` if it exists and was written by this same shard
   /// (same comment lines, shard line and header).
   bool resume = false;

@@ -168,7 +168,7 @@ MergeSummary MergeBasinShards(const std::vector<std::string>& paths, const std::
 
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();
-  out << first.header;
+  out << first.comments << first.header;
   for (std::size_t p = 0; p < n; ++p) {
     out.write(rows[p].data(), static_cast<std::streamsize>(cells[p]));
     out << a.labels[p] + 1;

@@ -103,7 +103,7 @@ MergeSummary MergeBifurcationShards(const std::vector<std::string>& paths,
   const std::int64_t parts = at.front().parts;
   AtomicFile file(output, "output");
   std::ostream& out = file.stream();
-  out << shards.front().header;
+  out << shards.front().comments << shards.front().header;
   MergeSummary summary;
   summary.shards = static_cast<int>(shards.size());
   summary.points = shards.front().units;

@@ -19,7 +19,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Bumped whenever the bytes of a design grid change for the same options (invalidates
 // checkpoints).
-constexpr int kFormatVersion = 2;
+constexpr int kFormatVersion = 3;
 
 // What a design grid may vary: the name (the design's setting), the domain and where the value
 // goes. A new input is one row here and one enumerator.
@@ -136,6 +136,10 @@ const char* DesignParameterName(DesignParameter parameter) { return RuleOf(param
 
 void DesignGridAxis::Validate() const { Check(ToString(), RuleOf(parameter).domain); }
 
+std::string DesignGridAxis::column() const {
+  return parameter == DesignParameter::km2 ? "m2_kg" : name();
+}
+
 DesignGridAxis ParseDesignGridAxis(const std::string& spec) {
   const std::string name = GridSpecName(spec);
   for (const DesignRule& r : kRules) {
@@ -212,6 +216,14 @@ void DesignGridOptions::Validate() const {
   if (columns.empty() || !row) {
     throw std::invalid_argument("columns are missing: expected the result columns and their row");
   }
+  for (const DesignGridAxis& axis : axes) {
+    if (std::find(columns.begin(), columns.end(), axis.column()) != columns.end()) {
+      throw std::invalid_argument(
+          fmt::format("columns are invalid: {} is the column of grid {}: expected each column "
+                      "once (the grid's value)",
+                      axis.column(), axis.ToString()));
+    }
+  }
   ValidateFile(Points());
 }
 
@@ -241,7 +253,7 @@ SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallba
                            const BlockBackend& backend) {
   o.Validate();
   std::vector<std::string> columns;
-  for (const DesignGridAxis& axis : o.axes) columns.push_back(axis.name());
+  for (const DesignGridAxis& axis : o.axes) columns.push_back(axis.column());
   columns.insert(columns.end(), o.columns.begin(), o.columns.end());
   detail::GridRun run;
   run.output = o.output;

@@ -39,14 +39,14 @@ void AppendStartMapRow(std::string& out, const PhaseState& start, const Motion& 
 }
 
 void WriteStartMap(const std::string& output, const std::vector<PhaseState>& starts,
-                   const Attractors& a, bool u0) {
+                   const Attractors& a, bool u0, const std::string& comments) {
   if (a.motions.size() != starts.size() || a.labels.size() != starts.size()) {
     throw std::invalid_argument(fmt::format(
         "attractors of {} motions and {} labels are invalid: expected one per start ({})",
         a.motions.size(), a.labels.size(), starts.size()));
   }
   AtomicFile file(output, "output");
-  std::string rows = StartMapHeader(u0);
+  std::string rows = comments + StartMapHeader(u0);
   for (std::size_t k = 0; k < starts.size(); ++k) {
     AppendStartMapRow(rows, starts[k], a.motions[k], u0, std::to_string(a.labels[k] + 1));
     if (rows.size() > kFlushBytes) {

@@ -145,14 +145,13 @@ TEST(BasinsCli, LabelsEveryStartByItsAttractorTheSameForAnyThreadCount) {
       "basins " + kSmallOrbit + " --max-period 16 --transient 1000 --starts 8x6 --json";
   const auto j = Json(common + " --threads 1 -o " + a);
   Json(common + " --threads 2 -o " + b);
-  const std::string csv = ReadFile(a);
-  EXPECT_EQ(csv, ReadFile(b));
-  std::istringstream lines(csv);
-  std::string line;
-  std::getline(lines, line);
-  EXPECT_EQ(line, "x0,psi,attractor,period,impacts_right,impacts_left,mean_velocity,status");
+  const std::string text = ReadFile(a);
+  EXPECT_EQ(text, ReadFile(b));
+  const testing::CsvLines csv = testing::SplitCsv(text);
+  EXPECT_EQ(csv.comments.size(), 1U);  // the provenance (provenance_cli_test.cpp)
+  EXPECT_EQ(csv.header, "x0,psi,attractor,period,impacts_right,impacts_left,mean_velocity,status");
   int rows = 0, periods[2] = {0, 0};
-  while (std::getline(lines, line)) {
+  for (const std::string& line : csv.rows) {
     ++rows;
     if (line.find(",1,1,0,") != std::string::npos) ++periods[0];    // period 1, 1 right, 0 left
     if (line.find(",12,25,0,") != std::string::npos) ++periods[1];  // period 12
@@ -190,12 +189,11 @@ TEST(BifurcationCli, StepsAFourierCoefficientAndNamesOneTheForceDoesNotHave) {
   EXPECT_NE(r.out.find("bifurcation diagram over a2 = -0.03 .. 0.03 (3 values, both)"),
             std::string::npos)
       << r.out;
-  std::istringstream lines(ReadFile(summary));
-  std::string line;
-  std::getline(lines, line);
-  EXPECT_EQ(line.rfind("param,direction,period,", 0), 0U) << line;
+  const testing::CsvLines csv = testing::ReadCsv(summary);
+  EXPECT_EQ(csv.comments.size(), 1U);  // the provenance (provenance_cli_test.cpp)
+  EXPECT_EQ(csv.header.rfind("param,direction,period,", 0), 0U) << csv.header;
   int rows = 0;
-  while (std::getline(lines, line)) {
+  for (const std::string& line : csv.rows) {
     ++rows;
     EXPECT_TRUE(line.rfind("-0.03,", 0) == 0 || line.rfind("0,", 0) == 0 ||
                 line.rfind("0.03,", 0) == 0)

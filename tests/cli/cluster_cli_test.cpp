@@ -95,6 +95,7 @@ TEST(Cluster, SweepThreadedShardedAndUnderMpirunIsTheSameFile) {
   ASSERT_EQ(RunCli(std::string(kSweep) + " --threads 2 -o " + whole).status, 0);
   const std::string bytes = ReadFile(whole);
   ASSERT_GT(bytes.size(), 10000u);
+  ASSERT_EQ(bytes.rfind("# capsubot ", 0), 0u) << "no provenance line";
 
   std::string merge = "merge " + dir.File("merged.csv");
   for (int k = 0; k < 3; ++k) {
@@ -208,6 +209,7 @@ TEST(Cluster, BasinMapThreadedAndInShardsMergedIsTheSameFile) {
   ASSERT_EQ(RunCli(std::string(kBasins) + " --threads 2 -o " + dir.File("one.csv")).status, 0);
   const std::string bytes = ReadFile(dir.File("one.csv"));
   ASSERT_GT(bytes.size(), 1000u);
+  ASSERT_EQ(bytes.rfind("# capsubot ", 0), 0u) << "no provenance line";
   std::vector<std::string> shards = BasinShards(dir);
   // 48 starts: shard 1 holds starts 1, 4, ..., 46 with empty attractor cells.
   const std::string one = ReadFile(shards[1]);
@@ -332,9 +334,15 @@ TEST(Cluster, AttractorsThreadedAndInShardsMergedIsTheSameFile) {
   EXPECT_NE(one.out.find("the motion of every start written to"), std::string::npos) << one.out;
   const std::string bytes = ReadFile(dir.File("one.csv"));
   ASSERT_GT(bytes.size(), 1000u);
-  // The from-rest grid of `attractors` is the x0-psi map of `basins`: the same file.
+  ASSERT_EQ(bytes.rfind("# capsubot ", 0), 0u) << "no provenance line";
+  // The from-rest grid of `attractors` is the x0-psi map of `basins`: the same table, under
+  // the provenance of each command.
   ASSERT_EQ(RunCli(std::string(kBasins) + " --threads 2 -o " + dir.File("map.csv")).status, 0);
-  EXPECT_TRUE(ReadFile(dir.File("map.csv")) == bytes);
+  const CsvLines map = ReadCsv(dir.File("map.csv")), attractors = SplitCsv(bytes);
+  EXPECT_EQ(map.header, attractors.header);
+  EXPECT_TRUE(map.rows == attractors.rows);
+  ASSERT_EQ(map.comments.size(), 1u);
+  EXPECT_NE(map.comments[0].find(" basins --A 0.05 "), std::string::npos) << map.comments[0];
 
   const std::vector<std::string> shards = AttractorShards(dir);
   EXPECT_NE(ReadFile(shards[1]).find("\n# shard 1/3 of 48 starts\nx0,psi,attractor,"),
@@ -471,8 +479,13 @@ TEST(Cluster, BifurcationStudyThreadedAndInShardsMergedIsTheSameFiles) {
   EXPECT_NE(one.out.find("(4 values, both) for 3 values of e: "), std::string::npos) << one.out;
   const std::string impacts = ReadFile(dir.File("impacts.csv"));
   const std::string summary = ReadFile(dir.File("summary.csv"));
-  // 3 values of e x 4 of T0 x (up, down) rows, plus the analytic orbits.
-  ASSERT_EQ(summary.rfind("e,param,direction,period,", 0), 0u) << summary;
+  // The provenance line of the study in both files, then 3 values of e x 4 of T0 x (up, down)
+  // rows, plus the analytic orbits.
+  const CsvLines summary_csv = SplitCsv(summary), impacts_csv = SplitCsv(impacts);
+  ASSERT_EQ(summary_csv.comments.size(), 1u) << summary;
+  EXPECT_EQ(summary_csv.comments[0].rfind("# capsubot ", 0), 0u) << summary;
+  EXPECT_TRUE(impacts_csv.comments == summary_csv.comments);
+  ASSERT_EQ(summary_csv.header.rfind("e,param,direction,period,", 0), 0u) << summary;
   EXPECT_NE(summary.find("\n0.6,0.12,analytic,1,1,0,"), std::string::npos) << summary;
   ASSERT_GT(impacts.size(), 1000u);
 

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "test_utils.hpp"
@@ -213,28 +214,29 @@ TEST(DesignCli, TableShowsTheGaitAndHowToCheckIt) {
 // One CSV row of a grid over m2, solved again by `capsubot solve` from its dimensionless
 // numbers: the design's orbit is exactly the orbit of the mapped parameters.
 TEST(DesignCli, GridRowsAreReproducedBySolve) {
-  const auto csv = TempPath("design_sweep.csv");
+  const auto csv_path = TempPath("design_sweep.csv");
   const auto r = RunCli("design --config " + ExampleConfig() + kMarginsOff +
-                        " --grid m2=0.18:0.3:7:log -o " + csv.string());
+                        " --grid m2=0.18:0.3:7:log -o " + csv_path.string());
   ASSERT_EQ(r.status, 0) << r.out;
-  std::ifstream in(csv);
-  std::string comment, header;
-  std::getline(in, comment);
+  const testing::CsvLines csv = testing::ReadCsv(csv_path);
+  ASSERT_EQ(csv.comments.size(), 1U);
+  const std::string& comment = csv.comments[0];
   EXPECT_EQ(comment.rfind("# capsubot ", 0), 0U) << comment;
   EXPECT_NE(comment.find(" design --m1 0.2 --L 0.02 "), std::string::npos) << comment;
   EXPECT_NE(comment.find(" --grid m2=0.18:0.3:7:log"), std::string::npos) << comment;
-  std::getline(in, header);
-  EXPECT_EQ(header,
-            "m2,status,m2_kg,frequency_hz,speed_mm_s,displacement_mm,impact_velocity_m_s,energy_mj,"
+  // One column for the inner mass: the grid's, m2_kg, with its unit.
+  EXPECT_EQ(csv.header,
+            "m2_kg,status,frequency_hz,speed_mm_s,displacement_mm,impact_velocity_m_s,energy_mj,"
             "power_mw,power_positive_mw,friction_loss_mj,impact_loss_mj,cot,efficiency,T0,A,c,"
             "alpha,phi0,I,spectral_radius,x_min,x_max,orbits,binding");
   std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
+  for (const std::string& line : csv.rows) {
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
     if (!line.empty() && line.back() == ',') cells.emplace_back();
-    cells.erase(cells.begin());  // the grid's m2, also in m2_kg
+    ASSERT_GE(cells.size(), 2U) << line;
+    std::swap(cells[0], cells[1]);  // status, m2_kg, ...: the order of a design's gait
     rows.push_back(cells);
   }
   ASSERT_EQ(rows.size(), 7U);

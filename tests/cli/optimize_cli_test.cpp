@@ -161,14 +161,11 @@ TEST(OptimizeCli, FourierJsonHasCoefficientsAndTheForceCsvOnePeriod) {
   EXPECT_EQ(j["coefficients"]["sin"].size(), 2U);
   EXPECT_TRUE(j["A"].is_null());
   EXPECT_GE(j["gain"].get<double>(), 0.0);
-  std::ifstream in(csv);
-  std::string header, line;
-  std::getline(in, header);
-  EXPECT_EQ(header, "phi,F");
-  int rows = 0;
-  while (std::getline(in, line)) ++rows;
+  const testing::CsvLines force = testing::ReadCsv(csv);
   std::remove(csv.c_str());
-  EXPECT_EQ(rows, 1001);
+  EXPECT_EQ(force.comments.size(), 1U);  // the provenance of the JSON (provenance_cli_test.cpp)
+  EXPECT_EQ(force.header, "phi,F");
+  EXPECT_EQ(force.rows.size(), 1001U);
 }
 
 TEST(OptimizeCli, StableAloneMeansSpectralRadiusAtMostOne) {

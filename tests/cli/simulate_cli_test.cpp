@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -33,13 +32,6 @@ nlohmann::json Json(const std::string& args) {
 }
 
 std::string Num(double value) { return FormatNumber(value); }
-
-std::vector<std::string> Lines(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "capsubot_simulate_cli_" + name;
@@ -113,15 +105,18 @@ TEST(SimulateCli, WritesEveryEventAndTheTrajectoryGrid) {
   const auto r = RunCli("simulate " + kOrbit + " --from-orbit --periods 4 --events " + events +
                         " --trajectory " + trajectory + " --samples-per-period 25");
   ASSERT_EQ(r.status, 0) << r.out;
-  const auto ev = Lines(events);
-  ASSERT_EQ(ev.size(), 1U + 8U);  // header + (stop, impact) per period
-  EXPECT_EQ(ev[0], "phase,kind,x,u,v,y,u_before,v_before,mode");
-  EXPECT_NE(ev[1].find(",stop,"), std::string::npos);
-  EXPECT_NE(ev[2].find(",impact_right,1,"), std::string::npos);
-  const auto tr = Lines(trajectory);
-  ASSERT_EQ(tr.size(), 1U + 4U * 25U + 1U);  // header + samples at 0, tau/25, ..., 4 tau
-  EXPECT_EQ(tr[0], "phi,x,u,v,y,mode");
-  EXPECT_EQ(tr[1].substr(0, 4), "0,1,");  // phi = 0, x = 1 (right after the impact)
+  // Each file: its provenance line (provenance_cli_test.cpp), the header, the rows.
+  const testing::CsvLines ev = testing::ReadCsv(events);
+  EXPECT_EQ(ev.comments.size(), 1U);
+  EXPECT_EQ(ev.header, "phase,kind,x,u,v,y,u_before,v_before,mode");
+  ASSERT_EQ(ev.rows.size(), 8U);  // (stop, impact) per period
+  EXPECT_NE(ev.rows[0].find(",stop,"), std::string::npos);
+  EXPECT_NE(ev.rows[1].find(",impact_right,1,"), std::string::npos);
+  const testing::CsvLines tr = testing::ReadCsv(trajectory);
+  EXPECT_EQ(tr.comments.size(), 1U);
+  EXPECT_EQ(tr.header, "phi,x,u,v,y,mode");
+  ASSERT_EQ(tr.rows.size(), 4U * 25U + 1U);    // samples at 0, tau/25, ..., 4 tau
+  EXPECT_EQ(tr.rows[0].substr(0, 4), "0,1,");  // phi = 0, x = 1 (right after the impact)
   std::remove(events.c_str());
   std::remove(trajectory.c_str());
 }

@@ -88,17 +88,11 @@ TEST(SolveCli, TrajectoryCsvCoversOnePeriod) {
       "--trajectory " +
       path.string());
   ASSERT_EQ(r.status, 0) << r.out;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "phi,x,u,v");
-  int rows = 0;
-  std::string last;
-  while (std::getline(in, line)) {
-    ++rows;
-    last = line;
-  }
-  EXPECT_EQ(rows, 11);
+  const testing::CsvLines csv = testing::ReadCsv(path);
+  EXPECT_EQ(csv.comments.size(), 1U);  // the provenance (provenance_cli_test.cpp)
+  EXPECT_EQ(csv.header, "phi,x,u,v");
+  ASSERT_EQ(csv.rows.size(), 11U);
+  const std::string& last = csv.rows.back();
   EXPECT_EQ(last.substr(0, last.find(',')), "6.283185307179586");  // tau, shortest round-trip
   std::filesystem::remove(path);
 }

@@ -26,15 +26,18 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The result columns of these tests: what the design found, its numbers written as the CSV
-// writes numbers (FormatNumber: shortest round trip), so that equal text is equal doubles.
-DesignGridOptions Options(const std::string& output) {
+// writes numbers (FormatNumber: shortest round trip), so that equal text is equal doubles;
+// m2_kg only when m2 has no grid (else the grid's column is m2_kg).
+DesignGridOptions Options(const std::string& output, bool m2_gridded) {
   DesignGridOptions o;
   o.input = testing::ExampleRobot();
-  o.columns = {"status", "m2_kg", "frequency_hz", "speed_mm_s", "power_mw", "orbits"};
-  o.row = [](const Gait& g) {
-    return std::string(GaitStatusName(g.status)) + "," + FormatNumber(g.m2_kg) + "," +
-           FormatNumber(g.frequency_hz) + "," + FormatNumber(g.speed_mm_s) + "," +
-           FormatNumber(g.power_mw) + "," + std::to_string(g.orbits);
+  o.columns = {"status", "frequency_hz", "speed_mm_s", "power_mw", "orbits"};
+  if (!m2_gridded) o.columns.insert(o.columns.begin() + 1, "m2_kg");
+  o.row = [m2_gridded](const Gait& g) {
+    return std::string(GaitStatusName(g.status)) + "," +
+           (m2_gridded ? "" : FormatNumber(g.m2_kg) + ",") + FormatNumber(g.frequency_hz) + "," +
+           FormatNumber(g.speed_mm_s) + "," + FormatNumber(g.power_mw) + "," +
+           std::to_string(g.orbits);
   };
   o.output = output;
   o.threads = 2;
@@ -60,10 +63,10 @@ std::vector<std::string> Rows(const std::filesystem::path& path, const std::stri
   return rows;
 }
 
-std::string Expected(const std::vector<double>& grid, const Gait& g) {
+std::string Expected(const std::vector<double>& grid, const Gait& g, bool m2_gridded) {
   std::string row;
   for (double v : grid) row += FormatNumber(v) + ",";
-  return row + Options("").row(g);
+  return row + Options("", m2_gridded).row(g);
 }
 
 // A log grid over m2 (fixed inner mass at the fixed frequency: the robot's own gait,
@@ -71,11 +74,12 @@ std::string Expected(const std::vector<double>& grid, const Gait& g) {
 // changed by hand.
 TEST(DesignGrid, TwoAxesOverM2AndRestitutionEqualTheRobotsComputedOneByOne) {
   const auto csv = testing::TempPath("design_grid_m2_e.csv");
-  DesignGridOptions o = Options(csv.string());
+  DesignGridOptions o = Options(csv.string(), true);
   o.axes = {ParseDesignGridAxis("m2=0.2:0.26:4:log"), ParseDesignGridAxis("e=0.5,0.7")};
   RunDesignGrid(o);
+  // One column for the inner mass, the grid's: m2_kg.
   const std::vector<std::string> rows =
-      Rows(csv, "m2,e,status,m2_kg,frequency_hz,speed_mm_s,power_mw,orbits");
+      Rows(csv, "m2_kg,e,status,frequency_hz,speed_mm_s,power_mw,orbits");
   ASSERT_EQ(rows.size(), 8U);
   const double m2s[] = {0.2, 0.2 * std::cbrt(1.3), 0.2 * std::cbrt(1.3 * 1.3), 0.26};
   int checked = 0, ok = 0;
@@ -89,7 +93,7 @@ TEST(DesignGrid, TwoAxesOverM2AndRestitutionEqualTheRobotsComputedOneByOne) {
       const std::string tail = row.substr(row.find(',') + 1);
       EXPECT_TRUE(testing::RelNear(std::stod(row), m2s[i], 1e-15)) << row;
       const Gait exact = EvaluateGait(in, std::stod(row), 20.0);
-      EXPECT_EQ(tail, Expected({in.e}, exact)) << row;
+      EXPECT_EQ(tail, Expected({in.e}, exact, true)) << row;
       EXPECT_EQ(g.status, exact.status) << row;
       ok += exact.ok() ? 1 : 0;
       ++checked;
@@ -103,7 +107,7 @@ TEST(DesignGrid, TwoAxesOverM2AndRestitutionEqualTheRobotsComputedOneByOne) {
 // robot with the point's friction and frequency.
 TEST(DesignGrid, WithoutAnM2AxisEveryPointIsTheFullDesign) {
   const auto csv = testing::TempPath("design_grid_mu_f.csv");
-  DesignGridOptions o = Options(csv.string());
+  DesignGridOptions o = Options(csv.string(), false);
   o.axes = {ParseDesignGridAxis("mu=0.25,0.3"), ParseDesignGridAxis("frequency=18:20:2")};
   RunDesignGrid(o);
   const std::vector<std::string> rows =
@@ -115,7 +119,8 @@ TEST(DesignGrid, WithoutAnM2AxisEveryPointIsTheFullDesign) {
       DesignInput in = testing::ExampleRobot();
       in.mu = mu;
       in.frequency_min = in.frequency_max = f;
-      EXPECT_EQ(rows[static_cast<std::size_t>(checked)], Expected({mu, f}, Design(in).one_impact));
+      EXPECT_EQ(rows[static_cast<std::size_t>(checked)],
+                Expected({mu, f}, Design(in).one_impact, false));
       ++checked;
     }
   }
@@ -126,11 +131,11 @@ TEST(DesignGrid, WithoutAnM2AxisEveryPointIsTheFullDesign) {
 // infinite); 0.9 is the default robust requirement.
 TEST(DesignGrid, RhoMaxInfinityIsTheDesignWithoutStabilityRequirement) {
   const auto csv = testing::TempPath("design_grid_rho.csv");
-  DesignGridOptions o = Options(csv.string());
+  DesignGridOptions o = Options(csv.string(), true);
   o.axes = {ParseDesignGridAxis("m2=0.2,0.25"), ParseDesignGridAxis("rho-max=0.9,inf")};
   RunDesignGrid(o);
   const std::vector<std::string> rows =
-      Rows(csv, "m2,rho-max,status,m2_kg,frequency_hz,speed_mm_s,power_mw,orbits");
+      Rows(csv, "m2_kg,rho-max,status,frequency_hz,speed_mm_s,power_mw,orbits");
   ASSERT_EQ(rows.size(), 4U);
   int checked = 0;
   for (const double m2 : {0.2, 0.25}) {
@@ -138,7 +143,7 @@ TEST(DesignGrid, RhoMaxInfinityIsTheDesignWithoutStabilityRequirement) {
       DesignInput in = testing::ExampleRobot();
       in.rho_max = rho;
       EXPECT_EQ(rows[static_cast<std::size_t>(checked)],
-                Expected({m2, rho}, EvaluateGait(in, m2, 20.0)));
+                Expected({m2, rho}, EvaluateGait(in, m2, 20.0), true));
       ++checked;
     }
   }
@@ -152,7 +157,7 @@ struct Interrupt {};
 // file and checkpoint; the resume completes it byte for byte, rho-max = inf included.
 TEST(DesignGrid, AResumedRunIsByteIdenticalToAnUninterruptedOne) {
   const auto whole = testing::TempPath("design_grid_whole.csv");
-  DesignGridOptions o = Options(whole.string());
+  DesignGridOptions o = Options(whole.string(), true);
   o.axes = {ParseDesignGridAxis("m2=0.18:0.3:6:log"), ParseDesignGridAxis("rho-max=0.9,inf")};
   o.comments = {"capsubot test design grid"};
   RunDesignGrid(o);
@@ -213,7 +218,7 @@ TEST(DesignGrid, BadGridsAreRefusedNamingTheParameterItsValueAndTheRule) {
   }
   EXPECT_EQ(checked, 8);
 
-  DesignGridOptions o = Options(testing::TempPath("design_grid_bad.csv").string());
+  DesignGridOptions o = Options(testing::TempPath("design_grid_bad.csv").string(), true);
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "grid is missing: expected at least one axis (name=lo:hi:n, name=lo:hi:n:log or "
             "name=v1,v2,...)");
@@ -231,6 +236,12 @@ TEST(DesignGrid, BadGridsAreRefusedNamingTheParameterItsValueAndTheRule) {
   o.input.m2_min = 0.1;
   o.input.m2_max = 0.3;
   o.axes = {ParseDesignGridAxis("m2=0.2")};
+  // The inner mass has one column, the grid's: a result column of that name is refused.
+  o.columns = Options(o.output, false).columns;
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
+            "columns are invalid: m2_kg is the column of grid m2=0.2: expected each column once "
+            "(the grid's value)");
+  o.columns = Options(o.output, true).columns;
   o.threads = -1;
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { o.Validate(); }),
             "threads = -1 is invalid: expected 1 <= threads <= 1024 (0: all cores)");
