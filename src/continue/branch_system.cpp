@@ -14,6 +14,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // A chord iteration (the Jacobian of an earlier iterate) must cut the residual at least by this
 // factor; otherwise the Jacobian is recomputed at the current iterate.
 constexpr double kChordRate = 0.25;
+// The residual of a converged point may stay up to this factor above the tolerance once Newton's
+// update is below kUpdateRounding: the map's own rounding, amplified by its multipliers.
+constexpr double kRoundingFactor = 100.0;
+constexpr double kUpdateRounding = 1e-13;
 // The section is moved when an event lies closer to it than this fraction of half the largest
 // gap between events: the map is smooth only while no event crosses the section.
 constexpr double kSectionFraction = 0.25;
@@ -98,7 +102,7 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
                                             int* iterations) {
   const int d = dimension();
   const std::vector<int>& free = section_.free;
-  double previous = kInf;
+  double previous = kInf, update = kInf;
   bool fresh = false;  // J was computed at the current iterate
   for (int it = 0; it <= options_.max_corrector_iterations; ++it) {
     if (!(y[3] >= options_.from && y[3] <= options_.to)) return Outcome::kOutOfRange;
@@ -110,7 +114,12 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
     const double res = Residual({y[0], y[1], y[2]}, image.z);
     double constraint = -condition.b;
     for (std::size_t i = 0; i < 4; ++i) constraint += condition.a[i] * y[i];
-    if (res <= options_.residual_tolerance &&
+    // Converged: the residual is below the tolerance, or it has reached the rounding of the
+    // simulated map (a few times the tolerance where the motion is sensitive) and Newton's
+    // update has shrunk to the last digits of the state.
+    const bool rounding =
+        update <= kUpdateRounding && res <= kRoundingFactor * options_.residual_tolerance;
+    if ((res <= options_.residual_tolerance || rounding) &&
         std::abs(constraint) <= options_.residual_tolerance * (1.0 + std::abs(condition.b))) {
       *iterations = it;
       return Outcome::kConverged;
@@ -139,6 +148,7 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
     for (int r = 0; r < d; ++r)
       y[static_cast<std::size_t>(free[static_cast<std::size_t>(r)])] += dy(r);
     y[3] += dy(d);
+    update = dy.lpNorm<Eigen::Infinity>();
   }
   return Outcome::kFailed;
 }

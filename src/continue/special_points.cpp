@@ -51,10 +51,13 @@ double Sigma(const Node& a, const Node& b) {
 }
 
 // The motion of a at the parameter lambda_a + sigma t_lambda (the corrector with the
-// parameter fixed, from a's predictor): only its impacts and events.
-bool MotionAt(BranchSystem& system, const Node& a, double sigma, Node* node) {
+// parameter fixed, predicted from `near`, a point of a's motion at sigma_near): only its
+// impacts and events.
+bool MotionAt(BranchSystem& system, const Node& a, const Node& near, double sigma_near,
+              double sigma, Node* node) {
   Vec4 y;
-  for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + sigma * a.t[i];
+  for (std::size_t i = 0; i < 4; ++i) y[i] = near.y[i] + (sigma - sigma_near) * a.t[i];
+  y[3] = a.y[3] + sigma * a.t[3];
   int iterations = 0;
   return system.Correct(Condition::Parameter(y[3]), a.J, y, &iterations) ==
              BranchSystem::Outcome::kConverged &&
@@ -79,7 +82,7 @@ SpecialPoint LocateChange(BranchSystem& system, const Node& a, const Node& b, do
   for (int k = 0; k < kMaxLocationSteps && std::abs(lambda_hi - lambda_lo) > tolerance; ++k) {
     const double mid = 0.5 * (lo + hi);
     Node m;
-    const bool found = by_parameter ? MotionAt(system, a, mid, &m)
+    const bool found = by_parameter ? MotionAt(system, a, last, lo, mid, &m)
                                     : PointAt(system, a, b, sigma_b, mid, false, &m);
     if (found && SameEvents(m, a)) {
       lo = mid;
