@@ -16,5 +16,6 @@ Command AddPeriodicCommand(CLI::App& app);
 Command AddBasinsCommand(CLI::App& app);
 Command AddBifurcationCommand(CLI::App& app);
 Command AddMergeCommand(CLI::App& app);
+Command AddContinueCommand(CLI::App& app);
 
 }  // namespace capsubot::app

@@ -112,10 +112,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {
-      AddSolveCommand(app),  AddSimulateCommand(app),   AddOrbitsCommand(app),
-      AddSweepCommand(app),  AddMergeCommand(app),      AddOptimizeCommand(app),
-      AddDesignCommand(app), AddAttractorsCommand(app), AddPeriodicCommand(app),
-      AddBasinsCommand(app), AddBifurcationCommand(app)};
+      AddSolveCommand(app),  AddSimulateCommand(app),    AddOrbitsCommand(app),
+      AddSweepCommand(app),  AddMergeCommand(app),       AddOptimizeCommand(app),
+      AddDesignCommand(app), AddAttractorsCommand(app),  AddPeriodicCommand(app),
+      AddBasinsCommand(app), AddBifurcationCommand(app), AddContinueCommand(app)};
   UseStrictValues(app);
   std::vector<std::string> args = ReadHelpCommand(std::vector<std::string>(argv + 1, argv + argc));
   if (!args.empty()) {

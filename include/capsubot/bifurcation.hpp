@@ -29,6 +29,17 @@ std::string BifurcationParamName(BifurcationParam param, int harmonic = 0);
 /// std::invalid_argument naming the value and the choices.
 BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic = nullptr);
 
+/// Throws std::invalid_argument when `param` cannot be set on `forcing`: A needs the harmonic
+/// family, a_k and b_k a force with at least k harmonics (the message names the parameter).
+void CheckBifurcationParam(const Forcing& forcing, BifurcationParam param, int harmonic);
+/// Sets `param` (harmonic k of a_k, b_k) to `value` on the robot (forcing, params, alpha), the
+/// other inputs kept: the robot at one value of a diagram's parameter.
+void SetBifurcationParam(BifurcationParam param, int harmonic, double value, Forcing& forcing,
+                         Params& params, double& alpha);
+/// The robot's value of `param` (the inverse of SetBifurcationParam).
+double BifurcationParamValue(BifurcationParam param, int harmonic, const Forcing& forcing,
+                             const Params& params, double alpha);
+
 /// The most values of the second parameter of a study (BifurcationOptions::over_values): its
 /// plan holds a few hundred bytes per value before the first row.
 inline constexpr std::int64_t kMaxOverValues = 100000;

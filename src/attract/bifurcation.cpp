@@ -40,62 +40,10 @@ struct Robot {
   double alpha = 0.0;
 };
 
-// The force with its mean c (kC) or one Fourier coefficient a_k (kCos) or b_k (kSin) set to
-// value, the others kept.
-Forcing WithCoefficient(const Forcing& f, BifurcationParam param, int k, double value) {
-  std::vector<double> a, b;
-  for (int j = 1; j <= f.harmonics(); ++j) {
-    a.push_back(f.a(j));
-    b.push_back(f.b(j));
-  }
-  double c = f.mean();
-  if (param == BifurcationParam::kC) c = value;
-  if (param == BifurcationParam::kCos) a[k - 1] = value;
-  if (param == BifurcationParam::kSin) b[k - 1] = value;
-  return Forcing::Fourier(c, a, b, f.phi0());
-}
-
 Robot At(const Robot& base, BifurcationParam param, int harmonic, double value) {
   Robot r = base;
-  switch (param) {
-    case BifurcationParam::kA:
-      r.forcing = Forcing::Harmonic(value, base.forcing.mean(), base.forcing.phi0());
-      break;
-    case BifurcationParam::kC:
-    case BifurcationParam::kCos:
-    case BifurcationParam::kSin:
-      r.forcing = WithCoefficient(base.forcing, param, harmonic, value);
-      break;
-    case BifurcationParam::kAlpha:
-      r.alpha = value;
-      break;
-    case BifurcationParam::kT0:
-      r.params.T0 = value;
-      break;
-    case BifurcationParam::kE:
-      r.params.e = value;
-      break;
-    case BifurcationParam::kPhi0:
-      r.forcing = base.forcing.WithPhase(value);
-      break;
-  }
+  SetBifurcationParam(param, harmonic, value, r.forcing, r.params, r.alpha);
   return r;
-}
-
-// Checks that `param` can be set on `forcing`: A needs the harmonic family, a_k and b_k a
-// force with k harmonics.
-void CheckParam(const Forcing& forcing, BifurcationParam param, int harmonic) {
-  if (param == BifurcationParam::kA && !forcing.harmonic()) {
-    throw std::invalid_argument(
-        "parameter = A is invalid for a Fourier force: expected the harmonic family");
-  }
-  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
-  if (fourier && harmonic > forcing.harmonics()) {
-    throw std::invalid_argument(fmt::format(
-        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
-        "its harmonics",
-        BifurcationParamName(param, harmonic), forcing.harmonics()));
-  }
 }
 
 double Value(const BifurcationOptions& o, int i) {
@@ -229,8 +177,8 @@ Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
                 const BifurcationOptions& options) {
   options.Validate();
   const bool two = !options.over_values.empty();
-  CheckParam(forcing, options.param, options.harmonic);
-  if (two) CheckParam(forcing, options.over, options.over_harmonic);
+  CheckBifurcationParam(forcing, options.param, options.harmonic);
+  if (two) CheckBifurcationParam(forcing, options.over, options.over_harmonic);
   Study study;
   study.overs = two ? options.over_values : std::vector<double>{kNaN};
   for (double over : study.overs) {
@@ -357,6 +305,88 @@ BlockComputeFactory PartBlocks(const Forcing& forcing, const Params& params, dou
 }
 
 }  // namespace
+
+void CheckBifurcationParam(const Forcing& forcing, BifurcationParam param, int harmonic) {
+  if (param == BifurcationParam::kA && !forcing.harmonic()) {
+    throw std::invalid_argument(
+        "parameter = A is invalid for a Fourier force: expected the harmonic family");
+  }
+  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
+  if (fourier && harmonic > forcing.harmonics()) {
+    throw std::invalid_argument(fmt::format(
+        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
+        "its harmonics",
+        BifurcationParamName(param, harmonic), forcing.harmonics()));
+  }
+}
+
+namespace {
+
+// The force with its mean c (kC) or one Fourier coefficient a_k (kCos) or b_k (kSin) set to
+// value, the others kept.
+Forcing WithCoefficient(const Forcing& f, BifurcationParam param, int k, double value) {
+  std::vector<double> a, b;
+  for (int j = 1; j <= f.harmonics(); ++j) {
+    a.push_back(f.a(j));
+    b.push_back(f.b(j));
+  }
+  double c = f.mean();
+  if (param == BifurcationParam::kC) c = value;
+  if (param == BifurcationParam::kCos) a[k - 1] = value;
+  if (param == BifurcationParam::kSin) b[k - 1] = value;
+  return Forcing::Fourier(c, a, b, f.phi0());
+}
+
+}  // namespace
+
+void SetBifurcationParam(BifurcationParam param, int harmonic, double value, Forcing& forcing,
+                         Params& params, double& alpha) {
+  switch (param) {
+    case BifurcationParam::kA:
+      forcing = Forcing::Harmonic(value, forcing.mean(), forcing.phi0());
+      break;
+    case BifurcationParam::kC:
+    case BifurcationParam::kCos:
+    case BifurcationParam::kSin:
+      forcing = WithCoefficient(forcing, param, harmonic, value);
+      break;
+    case BifurcationParam::kAlpha:
+      alpha = value;
+      break;
+    case BifurcationParam::kT0:
+      params.T0 = value;
+      break;
+    case BifurcationParam::kE:
+      params.e = value;
+      break;
+    case BifurcationParam::kPhi0:
+      forcing = forcing.WithPhase(value);
+      break;
+  }
+}
+
+double BifurcationParamValue(BifurcationParam param, int harmonic, const Forcing& forcing,
+                             const Params& params, double alpha) {
+  switch (param) {
+    case BifurcationParam::kA:
+      return forcing.amplitude();
+    case BifurcationParam::kC:
+      return forcing.mean();
+    case BifurcationParam::kCos:
+      return forcing.a(harmonic);
+    case BifurcationParam::kSin:
+      return forcing.b(harmonic);
+    case BifurcationParam::kAlpha:
+      return alpha;
+    case BifurcationParam::kT0:
+      return params.T0;
+    case BifurcationParam::kE:
+      return params.e;
+    case BifurcationParam::kPhi0:
+      return forcing.phi0();
+  }
+  return kNaN;
+}
 
 std::string BifurcationParamName(BifurcationParam param, int harmonic) {
   static constexpr const char* kNames[] = {"A", "c", "alpha", "T0", "e", "phi0", "a", "b"};

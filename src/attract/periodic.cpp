@@ -12,6 +12,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "attract/period_map.hpp"
 #include "attract/stroboscopic.hpp"
 #include "model/enum_names.hpp"
 
@@ -33,72 +34,33 @@ constexpr int kMaxHalvings = 8;
 // more.
 constexpr double kSameOrbitTol = 1e-9;
 
-using Vec3 = std::array<double, 3>;  // (x, u, v)
-
-Vec3 ToVec(const PhaseState& z) { return {z.x, z.u, z.v}; }
-
-// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
-// velocity v (see periodic.hpp).
-std::vector<int> FreeCoordinates(SimMode mode, double v) {
-  switch (mode) {
-    case SimMode::kRest:
-      return {0, 1};
-    case SimMode::kSlideForward:
-    case SimMode::kSlideBackward:
-      return {0, 1, 2};
-    case SimMode::kOnRightWall:
-    case SimMode::kOnLeftWall:
-      return v != 0.0 ? std::vector<int>{2} : std::vector<int>{};
-  }
-  return {};
-}
-
-// The simulator's settings of the shooting's runs (the stroboscopic map takes them from
-// MotionOptions).
-MotionOptions SimulationOf(const ShootingOptions& o) {
-  MotionOptions mo;
-  mo.chatter_velocity = o.chatter_velocity;
-  mo.max_events_per_period = o.max_events_per_period;
-  mo.reuse_cycles = o.reuse_cycles;
-  return mo;
-}
+using detail::Vec3;
 
 class Shooter {
  public:
   Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : forcing_(forcing), params_(params), alpha_(alpha), motion_(SimulationOf(o)) {}
+      : map_(forcing, params, alpha, detail::SimulationOf(o)) {}
 
   // P^p(z): false if the simulation hit the work bound.
-  bool Map(const PhaseState& z, int p, detail::MapState* out, double* displacement = nullptr,
-           detail::Recorder* recorder = nullptr) {
-    *out = {z, SimMode::kRest};
-    const SimResult r =
-        detail::Advance(forcing_, params_, alpha_, motion_, *out, p, displacement, recorder);
-    return r.status != SimStatus::kEventLimit;
-  }
+  bool Map(const PhaseState& z, int p, detail::MapState* out) const { return map_.Map(z, p, out); }
+  const detail::PeriodMap& map() const { return map_; }
 
   // The section: events of `periods` periods from s, then s moved to the middle of their
   // largest gap.
   bool PlaceSection(detail::MapState& s, int periods) {
     detail::MapState probe = s;
     recorder_.Start(periods, false, true);
-    if (detail::Advance(forcing_, params_, alpha_, motion_, probe, periods, nullptr, &recorder_)
-            .status == SimStatus::kEventLimit) {
-      return false;
-    }
+    if (!map_.Shift(probe, periods, &recorder_)) return false;
     const double shift = detail::SectionShift(recorder_.event_phases);
     if (shift <= 0.0) return true;
-    return detail::Advance(forcing_, params_, alpha_, motion_, s, shift / kTau, nullptr).status !=
-           SimStatus::kEventLimit;
+    return map_.Shift(s, shift / kTau);
   }
 
   // The period whose iterate returns closest (the shortest within kReturnFactor).
   int ChoosePeriod(const detail::MapState& s, int max_period, bool* ok) {
     detail::MapState probe = s;
     recorder_.Start(max_period, true, false);
-    *ok = detail::Advance(forcing_, params_, alpha_, motion_, probe, max_period, nullptr,
-                          &recorder_, true)
-              .status != SimStatus::kEventLimit;
+    *ok = map_.Shift(probe, max_period, &recorder_, true);
     const std::vector<SimState>& S = recorder_.samples;
     if (!*ok || static_cast<int>(S.size()) != max_period + 1) return 1;
     std::vector<double> back(static_cast<std::size_t>(max_period) + 1, kInf);
@@ -120,22 +82,8 @@ class Shooter {
   detail::Recorder recorder_;
 
  private:
-  const Forcing& forcing_;
-  const Params& params_;
-  double alpha_;
-  MotionOptions motion_;
+  detail::PeriodMap map_;
 };
-
-double Residual(const Vec3& z, const PhaseState& image) {
-  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])});
-}
-
-PhaseState WithCoordinates(PhaseState base, const Vec3& z) {
-  base.x = z[0];
-  base.u = z[1];
-  base.v = z[2];
-  return base;
-}
 
 PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptions& o) {
   PeriodicMotion out;
@@ -147,42 +95,20 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
     return out;
   }
   const SimMode mode = image.mode;
-  const std::vector<int> free = FreeCoordinates(mode, image.z.v);
+  const std::vector<int> free = detail::FreeCoordinates(mode, image.z.v);
   const int d = static_cast<int>(free.size());
   // Fixed coordinates take the values the mode imposes (those of the image).
-  Vec3 z = ToVec(z0);
+  Vec3 z = detail::ToVec(z0);
   for (int i = 0; i < 3; ++i) {
     if (std::find(free.begin(), free.end(), i) == free.end())
-      z[static_cast<std::size_t>(i)] = ToVec(image.z)[static_cast<std::size_t>(i)];
+      z[static_cast<std::size_t>(i)] = detail::ToVec(image.z)[static_cast<std::size_t>(i)];
   }
-  const auto jacobian = [&](const Vec3& at, Eigen::MatrixXd* J) {
-    J->resize(d, d);
-    for (int c = 0; c < d; ++c) {
-      Vec3 plus = at, minus = at;
-      const auto k = static_cast<std::size_t>(free[static_cast<std::size_t>(c)]);
-      plus[k] += o.step;
-      minus[k] -= o.step;
-      detail::MapState ip, im;
-      if (!shooter.Map(WithCoordinates(z0, plus), p, &ip) ||
-          !shooter.Map(WithCoordinates(z0, minus), p, &im)) {
-        return false;
-      }
-      const Vec3 a = ToVec(ip.z), b = ToVec(im.z);
-      for (int r = 0; r < d; ++r) {
-        const auto kr = static_cast<std::size_t>(free[static_cast<std::size_t>(r)]);
-        (*J)(r, c) = (a[kr] - b[kr]) / (2.0 * o.step);
-      }
-    }
-    return true;
-  };
   const auto evaluate = [&](const Vec3& at, double* res, Vec3* f) {
     detail::MapState im;
-    if (!shooter.Map(WithCoordinates(z0, at), p, &im)) return false;
-    *res = Residual(at, im.z);
-    const Vec3 v = ToVec(im.z);
-    for (int i = 0; i < 3; ++i)
-      (*f)[static_cast<std::size_t>(i)] =
-          v[static_cast<std::size_t>(i)] - at[static_cast<std::size_t>(i)];
+    if (!shooter.Map(detail::WithCoordinates(z0, at), p, &im)) return false;
+    *res = detail::Residual(at, im.z);
+    const Vec3 v = detail::ToVec(im.z);
+    for (std::size_t i = 0; i < 3; ++i) (*f)[i] = v[i] - at[i];
     return true;
   };
 
@@ -195,7 +121,7 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   Eigen::MatrixXd J;
   int it = 0;
   for (; it < o.max_iterations && res > o.residual_tolerance && d > 0; ++it) {
-    if (!jacobian(z, &J)) {
+    if (!detail::CentralJacobian(shooter.map(), z0, z, p, free, o.step, &J)) {
       out.status = ShootingStatus::kEventLimit;
       break;
     }
@@ -225,42 +151,19 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   }
   out.iterations = it;
   out.residual = res;
-  out.state = WithCoordinates(z0, z);
+  out.state = detail::WithCoordinates(z0, z);
   out.mode = mode;
   out.dimension = d;
   if (out.status == ShootingStatus::kEventLimit) return out;
   out.status =
       res <= o.residual_tolerance ? ShootingStatus::kConverged : ShootingStatus::kNoConvergence;
   // Multipliers at the reported state.
-  if (d > 0 && jacobian(z, &J)) {
-    const Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
-    for (int i = 0; i < d; ++i) out.multipliers.push_back(es.eigenvalues()(i));
-    std::stable_sort(out.multipliers.begin(), out.multipliers.end(),
-                     [](const std::complex<double>& a, const std::complex<double>& b) {
-                       return std::abs(a) > std::abs(b);
-                     });
-    const std::complex<double> top = out.multipliers.front();
-    out.spectral_radius = std::abs(top);
-    out.distance_to_plus_one = std::abs(top - 1.0);
-    out.distance_to_minus_one = std::abs(top + 1.0);
-    out.distance_to_unit_circle = std::abs(std::abs(top) - 1.0);
-  } else if (d == 0) {
-    out.spectral_radius = 0.0;
-    out.distance_to_plus_one = out.distance_to_minus_one = out.distance_to_unit_circle = 1.0;
+  if (d == 0 || detail::CentralJacobian(shooter.map(), z0, z, p, free, o.step, &J)) {
+    detail::SetMultipliers(d == 0 ? std::vector<std::complex<double>>{} : detail::Multipliers(J),
+                           &out);
   }
-  // No verdict without a periodic motion: an unconverged state's multipliers say nothing.
-  out.stable = out.status == ShootingStatus::kConverged && out.spectral_radius < 1.0;
   // Impacts and displacement over one period p of the motion.
-  detail::MapState end;
-  double displacement = 0.0;
-  shooter.recorder_.Start(p, false, false);
-  if (shooter.Map(out.state, p, &end, &displacement, &shooter.recorder_)) {
-    for (int k = 0; k < p; ++k) {
-      out.impacts_right += shooter.recorder_.right[static_cast<std::size_t>(k)];
-      out.impacts_left += shooter.recorder_.left[static_cast<std::size_t>(k)];
-    }
-    out.mean_velocity = displacement / (p * kTau);
-  }
+  detail::MeasurePeriod(shooter.map(), p, shooter.recorder_, &out);
   return out;
 }
 
@@ -273,7 +176,8 @@ PeriodicMotion ShootMinimal(Shooter& shooter, const PhaseState& z0, int p,
   for (int d = 1; d < p; ++d) {
     if (p % d != 0) continue;
     detail::MapState image;
-    if (!shooter.Map(pm.state, d, &image) || Residual(ToVec(pm.state), image.z) > kSameOrbitTol) {
+    if (!shooter.Map(pm.state, d, &image) ||
+        detail::Residual(detail::ToVec(pm.state), image.z) > kSameOrbitTol) {
       continue;
     }
     PeriodicMotion shorter = Shoot(shooter, pm.state, d, o);
@@ -348,7 +252,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   PeriodicMotion fail;
   fail.status = ShootingStatus::kEventLimit;
-  const MotionOptions mo = SimulationOf(options);
+  const MotionOptions mo = detail::SimulationOf(options);
   if (options.transient > 0 &&
       detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
           SimStatus::kEventLimit) {

@@ -16,6 +16,7 @@ void Recorder::Start(int periods, bool samples_wanted, bool events_wanted, bool 
   keep_events_ = events_wanted;
   samples.clear();
   event_phases.clear();
+  event_marks.clear();
   right.assign(static_cast<std::size_t>(periods), 0);
   left.assign(static_cast<std::size_t>(periods), 0);
 }
@@ -25,6 +26,7 @@ void Recorder::OnEvent(const SimEvent& event) {
   if (phase < 0.0) return;
   if (keep_events_ && event_phases.size() < kMaxEvents) {
     event_phases.push_back(phase - kTau * std::floor(phase / kTau));
+    event_marks.push_back({event.kind, event.after.mode});
   }
   if (event.kind != EventKind::kImpactRight && event.kind != EventKind::kImpactLeft) return;
   if (periods_ <= 0) return;

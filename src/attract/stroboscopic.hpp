@@ -35,6 +35,13 @@ class Recorder : public SimObserver {
   std::vector<SimState> samples;          ///< state at phase k tau, k = 0..periods
   std::vector<std::int32_t> right, left;  ///< impacts in period k, k = 0..periods-1
   std::vector<double> event_phases;       ///< phase mod tau of every event (at most kMaxEvents)
+  /// The kind of every event of event_phases and the mode after it, in the order of the run.
+  struct Mark {
+    EventKind kind;
+    SimMode mode;
+    bool operator==(const Mark& o) const { return kind == o.kind && mode == o.mode; }
+  };
+  std::vector<Mark> event_marks;
   /// An impact: phase since the start of the run, wall, velocity before it, period index.
   struct Impact {
     double phase;

@@ -1,0 +1,217 @@
+// capsubot continue: pseudo-arclength continuation of a periodic motion in one model parameter,
+// with its special points (docs/continuation.md).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "attract_options.hpp"
+#include "capsubot/bifurcation.hpp"
+#include "capsubot/continue/continuation.hpp"
+#include "capsubot/io.hpp"
+#include "capsubot/robot_orbits.hpp"
+#include "capsubot/stability.hpp"
+#include "commands.hpp"
+#include "json/continuation_json.hpp"
+#include "provenance.hpp"
+
+namespace capsubot::app {
+namespace {
+
+struct ContinueCommandOptions {
+  RobotOptions robot;
+  ContinuationOptions continuation;
+  PhaseState start;
+  std::string param;
+  bool from_orbit = false;
+  bool json = false;
+  std::string output;
+  CLI::Option* state_options[4] = {};
+};
+
+// The valid one-impact orbit of the robot with the smallest spectral radius (docs/orbit.md,
+// `orbits`), as a start right after its impact.
+PhaseState OrbitStart(const Forcing& forcing, const Params& params, double alpha) {
+  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+  const Solution* best = nullptr;
+  double best_radius = 0.0;
+  for (const Solution& s : orbits) {
+    if (!s.validity.valid()) continue;
+    const double radius = ComputeStability(s.orbit).spectral_radius;
+    if (best == nullptr || radius < best_radius) {
+      best = &s;
+      best_radius = radius;
+    }
+  }
+  if (best == nullptr) {
+    throw std::invalid_argument(fmt::format(
+        "--from-orbit is invalid for this robot: it has no valid one-impact orbit at alpha = {} "
+        "(capsubot orbits lists them)",
+        alpha));
+  }
+  const Orbit& o = best->orbit;
+  return {1.0, -o.e * o.u, o.v_plus, o.forcing.phi0() - forcing.phi0()};
+}
+
+// The branch as CSV: '#' provenance line, header, one row per point.
+void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& provenance,
+                    const std::string& path) {
+  std::size_t columns = 0;
+  for (const BranchPoint& p : b.points) columns = std::max(columns, p.motion.multipliers.size());
+  AtomicFile file(path, "-o");
+  auto& out = file.stream();
+  out << "# " << provenance << '\n';
+  out << name << ",x,u,v,psi,period,impacts_right,impacts_left,mean_velocity,spectral_radius";
+  for (std::size_t k = 1; k <= columns; ++k) out << ",mu" << k << "_re,mu" << k << "_im";
+  out << ",stable,label\n";
+  for (const BranchPoint& p : b.points) {
+    const PeriodicMotion& m = p.motion;
+    out << FormatNumber(p.parameter) << ',' << FormatNumber(m.state.x) << ','
+        << FormatNumber(m.state.u) << ',' << FormatNumber(m.state.v) << ','
+        << FormatNumber(m.state.psi) << ',' << m.period << ',' << m.impacts_right << ','
+        << m.impacts_left << ',' << FormatNumber(m.mean_velocity) << ','
+        << FormatNumber(m.spectral_radius);
+    for (std::size_t k = 0; k < columns; ++k) {
+      if (k < m.multipliers.size()) {
+        out << ',' << FormatNumber(m.multipliers[k].real()) << ','
+            << FormatNumber(m.multipliers[k].imag());
+      } else {
+        out << ",,";
+      }
+    }
+    out << ',' << (m.stable ? 1 : 0) << ',' << p.label << '\n';
+  }
+  file.Commit();
+}
+
+int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
+  const Forcing forcing = opt.robot.forcing.Build();
+  int harmonic = 0;
+  const BifurcationParam param = ParseBifurcationParam(opt.param, &harmonic);
+  CheckBifurcationParam(forcing, param, harmonic);
+  int given = 0;
+  for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
+  if (opt.from_orbit && given > 0) {
+    throw std::invalid_argument(
+        "--from-orbit gives the start: do not give --x0, --u0, --v0 or --psi with it");
+  }
+  if (!opt.from_orbit && given < 4) {
+    throw std::invalid_argument(
+        "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
+  }
+  opt.robot.params.Validate();
+  PhaseState start =
+      opt.from_orbit ? OrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
+  RequirePhase("psi", start.psi);
+  ContinuationOptions o = opt.continuation;
+  o.start = BifurcationParamValue(param, harmonic, forcing, opt.robot.params, opt.robot.alpha);
+  ContinuationOptions range = o;  // the options' own rules first, the start's value aside
+  range.start = o.from;
+  range.Validate();
+  if (!(o.start >= o.from && o.start <= o.to)) {
+    throw std::invalid_argument(fmt::format(
+        "the robot's {} = {} is outside the range: expected --from = {} <= {} <= --to = {} (the "
+        "branch starts at the robot's value)",
+        opt.param, o.start, o.from, opt.param, o.to));
+  }
+  const RobotModel base{forcing, opt.robot.params, opt.robot.alpha};
+  const RobotFamily family = [&](double value) {
+    RobotModel r = base;
+    SetBifurcationParam(param, harmonic, value, r.forcing, r.params, r.alpha);
+    return r;
+  };
+  if (!opt.output.empty()) CheckWritable(opt.output, "-o");
+  const Branch branch = ContinueBranch(family, start, o);
+  if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
+    WriteBranchCsv(branch, opt.param, CommandProvenance(cmd, {"--output", "--json"}).CommandLine(),
+                   opt.output);
+  }
+  if (opt.json) {
+    nlohmann::json j = json::BranchJson(branch, opt.param);
+    AddProvenanceJson(j, cmd);
+    fmt::print("{}\n", j.dump());
+  } else {
+    fmt::print("{}", branch.Summary(opt.param));
+    if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
+      fmt::print("  written        {} points to {}\n", branch.points.size(), opt.output);
+    }
+  }
+  return 0;
+}
+
+// The continuation's fields as the flags that set them.
+const FlagNames& ContinueFlagNames() {
+  static const FlagNames names = {{"from", "--from"},
+                                  {"to", "--to"},
+                                  {"max_points", "--max-points"},
+                                  {"initial_step", "--initial-step"},
+                                  {"min_step", "--min-step"},
+                                  {"max_step", "--max-step"},
+                                  {"max_period", "--max-period"},
+                                  {"step", "--step"},
+                                  {"chatter_velocity", "--chatter-velocity"}};
+  return names;
+}
+
+}  // namespace
+
+Command AddContinueCommand(CLI::App& app) {
+  auto opt = std::make_shared<ContinueCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "continue",
+      "Follow a periodic motion through a range of one model parameter by pseudo-arclength "
+      "continuation of the fixed point of the stroboscopic map, with its folds, period "
+      "doublings, Neimark-Sacker points, grazings, segment changes and speed extrema "
+      "(docs/continuation.md). The parameter starts at the robot's value; the start is a state "
+      "(--x0 --u0 --v0 --psi) or the robot's one-impact orbit (--from-orbit).");
+  AddRobotOptions(*cmd, opt->robot, false);
+  cmd->add_option("--param", opt->param,
+                  "the parameter followed: A, c, alpha, T0, e, phi0, or a Fourier coefficient "
+                  "a1..a16, b1..b16")
+      ->required();
+  cmd->add_option("--from", opt->continuation.from, "lower end of the range")->required();
+  cmd->add_option("--to", opt->continuation.to, "upper end of the range")->required();
+  opt->state_options[0] =
+      cmd->add_option("--x0", opt->start.x, "start: position of the inner body");
+  opt->state_options[1] = cmd->add_option("--u0", opt->start.u, "start: relative velocity");
+  opt->state_options[2] = cmd->add_option("--v0", opt->start.v, "start: capsule velocity");
+  opt->state_options[3] = cmd->add_option("--psi", opt->start.psi,
+                                          "start: forcing phase (F = A sin(psi + phi0) + c there)")
+                              ->type_name(kPhase);
+  cmd->add_flag("--from-orbit", opt->from_orbit,
+                "start on the robot's valid one-impact orbit with the smallest spectral radius "
+                "(capsubot orbits), right after its impact");
+  cmd->add_option("--max-points", opt->continuation.max_points,
+                  "points of the branch, both directions together")
+      ->capture_default_str();
+  cmd->add_option("--initial-step", opt->continuation.initial_step, "first arclength step")
+      ->capture_default_str();
+  cmd->add_option("--min-step", opt->continuation.min_step,
+                  "smallest arclength step: a failure there ends the branch (lost)")
+      ->capture_default_str();
+  cmd->add_option("--max-step", opt->continuation.max_step, "largest arclength step")
+      ->capture_default_str();
+  cmd->add_option("--max-period", opt->continuation.shooting.max_period,
+                  "largest period searched at the start, in forcing periods")
+      ->capture_default_str();
+  cmd->add_option("--step", opt->continuation.shooting.step,
+                  "step of the central finite differences of the Jacobians")
+      ->capture_default_str();
+  cmd->add_option("--chatter-velocity", opt->continuation.shooting.chatter_velocity,
+                  "the simulator's chatter cut-off (omega L)")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", opt->output,
+                  "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
+                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label");
+  cmd->add_flag("--json", opt->json,
+                "print one JSON object: parameter, status, ends, points, special_points, "
+                "provenance");
+  return {
+      cmd,
+      [opt, cmd] { return RunNamingFlags(ContinueFlagNames(), [&] { return Run(*opt, *cmd); }); },
+      {}};
+}
+
+}  // namespace capsubot::app

@@ -1,0 +1,132 @@
+// The p-th iterate of the stroboscopic map, its central-difference Jacobian and multipliers
+// (docs/model.md section 13).
+
+#include "attract/period_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace capsubot::detail {
+
+PhaseState WithCoordinates(PhaseState base, const Vec3& z) {
+  base.x = z[0];
+  base.u = z[1];
+  base.v = z[2];
+  return base;
+}
+
+double Residual(const Vec3& z, const PhaseState& image) {
+  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])});
+}
+
+std::vector<int> FreeCoordinates(SimMode mode, double v) {
+  switch (mode) {
+    case SimMode::kRest:
+      return {0, 1};
+    case SimMode::kSlideForward:
+    case SimMode::kSlideBackward:
+      return {0, 1, 2};
+    case SimMode::kOnRightWall:
+    case SimMode::kOnLeftWall:
+      return v != 0.0 ? std::vector<int>{2} : std::vector<int>{};
+  }
+  return {};
+}
+
+MotionOptions SimulationOf(const ShootingOptions& o) {
+  MotionOptions mo;
+  mo.chatter_velocity = o.chatter_velocity;
+  mo.max_events_per_period = o.max_events_per_period;
+  mo.reuse_cycles = o.reuse_cycles;
+  return mo;
+}
+
+bool PeriodMap::Map(const PhaseState& z, int p, MapState* out, double* displacement,
+                    Recorder* recorder) const {
+  *out = {z, SimMode::kRest};
+  return Advance(forcing_, params_, alpha_, motion_, *out, p, displacement, recorder).status !=
+         SimStatus::kEventLimit;
+}
+
+bool PeriodMap::Shift(MapState& s, double periods, SimObserver* observer, bool sample) const {
+  return Advance(forcing_, params_, alpha_, motion_, s, periods, nullptr, observer, sample)
+             .status != SimStatus::kEventLimit;
+}
+
+void DifferenceColumn(const MapState& plus, const MapState& minus, double displacement_plus,
+                      double displacement_minus, const std::vector<int>& free, double h, int column,
+                      Eigen::MatrixXd* J, Eigen::VectorXd* gradient) {
+  const Vec3 a = ToVec(plus.z), b = ToVec(minus.z);
+  for (std::size_t r = 0; r < free.size(); ++r) {
+    const auto k = static_cast<std::size_t>(free[r]);
+    (*J)(static_cast<Eigen::Index>(r), column) = (a[k] - b[k]) / (2.0 * h);
+  }
+  if (gradient != nullptr)
+    (*gradient)(column) = (displacement_plus - displacement_minus) / (2.0 * h);
+}
+
+bool CentralJacobian(const PeriodMap& map, const PhaseState& base, const Vec3& at, int p,
+                     const std::vector<int>& free, double h, Eigen::MatrixXd* J,
+                     Eigen::VectorXd* gradient) {
+  const auto d = static_cast<Eigen::Index>(free.size());
+  if (J->rows() != d || J->cols() < d) J->resize(d, d);
+  if (gradient != nullptr && gradient->size() < d) gradient->resize(d);
+  for (Eigen::Index c = 0; c < d; ++c) {
+    Vec3 plus = at, minus = at;
+    const auto k = static_cast<std::size_t>(free[static_cast<std::size_t>(c)]);
+    plus[k] += h;
+    minus[k] -= h;
+    MapState ip, im;
+    double dp = 0.0, dm = 0.0;
+    if (!map.Map(WithCoordinates(base, plus), p, &ip, &dp) ||
+        !map.Map(WithCoordinates(base, minus), p, &im, &dm)) {
+      return false;
+    }
+    DifferenceColumn(ip, im, dp, dm, free, h, static_cast<int>(c), J, gradient);
+  }
+  return true;
+}
+
+std::vector<std::complex<double>> Multipliers(const Eigen::MatrixXd& J) {
+  std::vector<std::complex<double>> out;
+  if (J.rows() == 0) return out;
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
+  for (Eigen::Index i = 0; i < J.rows(); ++i) out.push_back(es.eigenvalues()(i));
+  std::stable_sort(out.begin(), out.end(),
+                   [](const std::complex<double>& a, const std::complex<double>& b) {
+                     return std::abs(a) > std::abs(b);
+                   });
+  return out;
+}
+
+void SetMultipliers(std::vector<std::complex<double>> multipliers, PeriodicMotion* m) {
+  m->multipliers = std::move(multipliers);
+  if (m->multipliers.empty()) {
+    m->spectral_radius = 0.0;
+    m->distance_to_plus_one = m->distance_to_minus_one = m->distance_to_unit_circle = 1.0;
+  } else {
+    const std::complex<double> top = m->multipliers.front();
+    m->spectral_radius = std::abs(top);
+    m->distance_to_plus_one = std::abs(top - 1.0);
+    m->distance_to_minus_one = std::abs(top + 1.0);
+    m->distance_to_unit_circle = std::abs(std::abs(top) - 1.0);
+  }
+  // No verdict without a periodic motion: an unconverged state's multipliers say nothing.
+  m->stable = m->status == ShootingStatus::kConverged && m->spectral_radius < 1.0;
+}
+
+bool MeasurePeriod(const PeriodMap& map, int p, Recorder& recorder, PeriodicMotion* m) {
+  MapState end;
+  double displacement = 0.0;
+  recorder.Start(p, false, true);
+  if (!map.Map(m->state, p, &end, &displacement, &recorder)) return false;
+  m->impacts_right = m->impacts_left = 0;
+  for (int k = 0; k < p; ++k) {
+    m->impacts_right += recorder.right[static_cast<std::size_t>(k)];
+    m->impacts_left += recorder.left[static_cast<std::size_t>(k)];
+  }
+  m->mean_velocity = displacement / (p * kTau);
+  return true;
+}
+
+}  // namespace capsubot::detail

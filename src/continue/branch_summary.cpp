@@ -1,0 +1,87 @@
+// The plain-words summary of a branch (Branch::Summary).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+#include "capsubot/continue/continuation.hpp"
+
+namespace capsubot {
+namespace {
+
+std::string Plural(std::int64_t n, const char* word) {
+  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+}
+
+std::string Signature(const PeriodicMotion& m) {
+  return fmt::format("period {}: {} right + {} left impacts per {}", m.period, m.impacts_right,
+                     m.impacts_left, Plural(m.period, "period"));
+}
+
+std::string Multipliers(const PeriodicMotion& m) {
+  std::string t;
+  for (const auto& mu : m.multipliers) {
+    t += fmt::format(" {:.6g}{}", mu.real(),
+                     mu.imag() != 0.0 ? fmt::format("{:+.6g}i", mu.imag()) : std::string());
+  }
+  return t.empty() ? " none" : t;
+}
+
+std::string EndText(BranchEnd end, const std::string& name, double lambda) {
+  switch (end) {
+    case BranchEnd::kRangeEnd:
+      return fmt::format("reached the end of the range, {} = {:.12g}", name, lambda);
+    case BranchEnd::kLost:
+      return fmt::format("lost at {} = {:.12g}: the corrector failed at the smallest step", name,
+                         lambda);
+    case BranchEnd::kMaxPoints:
+      return fmt::format("stopped at {} = {:.12g}: the most points were reached", name, lambda);
+    case BranchEnd::kNotRun:
+      break;
+  }
+  return "not followed";
+}
+
+}  // namespace
+
+std::string Branch::Summary(const std::string& name) const {
+  if (status != ContinuationStatus::kOk) {
+    return fmt::format("continuation in {}: {} ({})\n", name, ContinuationStatusName(status),
+                       message);
+  }
+  const BranchPoint& s = points[static_cast<std::size_t>(start_index)];
+  std::string t = fmt::format("continuation in {} of the periodic motion found at {} = {:.12g}\n",
+                              name, name, s.parameter);
+  t += fmt::format("  start          {}, mean velocity {:.10g}, {}\n", Signature(s.motion),
+                   s.motion.mean_velocity, s.motion.stable ? "stable" : "unstable");
+  const auto [lo, hi] = std::minmax_element(
+      points.begin(), points.end(),
+      [](const BranchPoint& a, const BranchPoint& b) { return a.parameter < b.parameter; });
+  t += fmt::format("  branch         {} over {} = {:.12g} .. {:.12g}\n",
+                   Plural(static_cast<std::int64_t>(points.size()), "point"), name, lo->parameter,
+                   hi->parameter);
+  const auto fastest = std::max_element(points.begin(), points.end(),
+                                        [](const BranchPoint& a, const BranchPoint& b) {
+                                          return a.motion.mean_velocity < b.motion.mean_velocity;
+                                        });
+  const auto stable = std::count_if(points.begin(), points.end(),
+                                    [](const BranchPoint& p) { return p.motion.stable; });
+  t += fmt::format("  fastest        mean velocity {:.10g} at {} = {:.12g} ({})\n",
+                   fastest->motion.mean_velocity, name, fastest->parameter,
+                   fastest->motion.stable ? "stable" : "unstable");
+  t += fmt::format("  stable points  {} of {}\n", stable, points.size());
+  t +=
+      fmt::format("  towards {:<6} {}\n", "lower", EndText(backward_end, name, backward_parameter));
+  t += fmt::format("  towards {:<6} {}\n", "upper", EndText(forward_end, name, forward_parameter));
+  t += fmt::format("  special points {}\n", special_points.size());
+  for (const SpecialPoint& sp : special_points) {
+    t += fmt::format("    {:<16} {} = {:.12g}{}  mean velocity {:.10g}  {}  multipliers{}\n",
+                     SpecialPointTypeName(sp.type), name, sp.parameter,
+                     sp.located ? "" : fmt::format(" (not located: +-{:.2g})", sp.accuracy),
+                     sp.motion.mean_velocity, Signature(sp.motion), Multipliers(sp.motion));
+  }
+  return t;
+}
+
+}  // namespace capsubot

@@ -1,0 +1,100 @@
+#pragma once
+// The extended system of the continuation (docs/continuation.md): the fixed-point equation
+// P^p(z; lambda) - z = 0 in the free coordinates of a section, its Jacobian [P_z - I, P_lambda]
+// by central differences, the corrector with one linear condition a . y = b, the tangent, and
+// everything a branch point carries (multipliers, impacts, mean velocity, events, test
+// functions).
+
+#include <Eigen/Dense>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "attract/period_map.hpp"
+#include "attract/stroboscopic.hpp"
+#include "capsubot/continue/continuation.hpp"
+
+namespace capsubot::detail {
+
+using Vec4 = std::array<double, 4>;  // (x, u, v, lambda); fixed coordinates carry their value
+
+/// The section of a branch: forcing phase, mode there and the free coordinates it leaves.
+struct Section {
+  double psi = 0.0;
+  SimMode mode = SimMode::kRest;
+  std::vector<int> free;  ///< indices into (x, u, v)
+};
+
+/// A converged point of the branch with everything derived from it.
+struct Node {
+  Vec4 y{};                           ///< the point
+  Vec4 t{};                           ///< unit tangent (0 in the fixed coordinates)
+  double s = 0.0;                     ///< arclength from the start along its direction
+  int iterations = 0;                 ///< corrector iterations that found it
+  Eigen::MatrixXd J;                  ///< [P_z, P_lambda], d x (d + 1)
+  Eigen::VectorXd grad;               ///< gradient of the displacement over p periods, d + 1
+  PeriodicMotion motion;              ///< state, impacts, mean velocity, multipliers
+  std::vector<Recorder::Mark> marks;  ///< events over p periods from the section, in order
+  std::vector<double> event_phases;   ///< their phases (mod tau)
+  double period_doubling = 0.0;       ///< det(P_z + I)
+  double neimark_sacker = 0.0;        ///< prod over pairs (mu_i mu_j - 1) (1 when d < 2)
+  double speed = 0.0;                 ///< d mean velocity / ds
+};
+
+/// One linear condition a . y = b that closes the extended system: the arclength condition
+/// t_i . (y - y_i) = sigma, or a fixed parameter.
+struct Condition {
+  Vec4 a{};
+  double b = 0.0;
+  static Condition Arclength(const Vec4& t, const Vec4& y, double sigma);
+  static Condition Parameter(double lambda);
+};
+
+class BranchSystem {
+ public:
+  BranchSystem(const RobotFamily& family, const ContinuationOptions& options, int period,
+               Section section);
+
+  const Section& section() const { return section_; }
+  int period() const { return p_; }
+  int dimension() const { return static_cast<int>(section_.free.size()); }
+
+  enum class Outcome { kConverged, kFailed, kOutOfRange };
+  /// Newton's method on the extended system closed by `condition`, from y (updated), starting
+  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly).
+  /// kOutOfRange when an iterate leaves [from, to] in the parameter (the robots there may not
+  /// exist; y is that iterate); kFailed when it does not converge within the options'
+  /// iterations, leaves [0, 1] in x, changes the mode at the section or hits the work bound.
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations);
+
+  /// Completes a corrected point: Jacobian, tangent oriented along `orient`, multipliers,
+  /// impacts, mean velocity, events and test functions. False at the work bound.
+  bool Complete(const Vec4& y, const Vec4& orient, Node* node);
+
+  /// Impacts, mean velocity and events of the motion through y (into node->motion, marks and
+  /// event_phases). False at the work bound.
+  bool Measure(const Vec4& y, Node* node);
+
+  /// Moves the section of `node` to the middle of the largest gap between its events when an
+  /// event lies closer to the section than a quarter of half that gap: the node is recomputed
+  /// at the new section, its tangent carried along by the flow. True when the node is usable
+  /// (moved or not).
+  bool Replace(Node* node);
+
+ private:
+  RobotModel Robot(double lambda) const { return family_(lambda); }
+  // P^p at y; displacement over the p periods into *displacement (if given).
+  bool Image(const Vec4& y, MapState* out, double* displacement = nullptr);
+  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad);
+  double LambdaStep(double lambda) const;
+  PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
+
+  const RobotFamily& family_;
+  const ContinuationOptions& options_;
+  MotionOptions motion_;
+  int p_;
+  Section section_;
+  Recorder recorder_;
+};
+
+}  // namespace capsubot::detail

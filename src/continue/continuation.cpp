@@ -1,0 +1,293 @@
+// Pseudo-arclength continuation of periodic motions (docs/continuation.md).
+
+#include "capsubot/continue/continuation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+
+#include "attract/period_map.hpp"
+#include "attract/stroboscopic.hpp"
+#include "continue/branch_system.hpp"
+#include "continue/special_points.hpp"
+#include "model/enum_names.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr int kMaxPointsLimit = 1000000;
+// The step grows by this factor after a correction that took at most kFastIterations
+// iterations (chord iterations: each cuts the residual by a factor of about the step times the
+// branch's curvature, so a few reach the tolerance from a good predictor).
+constexpr double kGrowth = 1.5;
+constexpr int kFastIterations = 4;
+// Consecutive tangents must agree this well (cosine of their angle), and the corrected point
+// must lie within one step of the predicted one: otherwise the corrector may have jumped to
+// another branch, and the step is halved.
+constexpr double kMinTangentCosine = 0.5;
+
+using detail::Node;
+using detail::Vec4;
+
+// One direction of the branch from the start.
+struct Direction {
+  std::vector<Node> nodes;  // in the order found, the start excluded
+  // Special points with after_point = k: between node k - 1 (the start for k = 0) and node k.
+  std::vector<SpecialPoint> special;
+  BranchEnd end = BranchEnd::kMaxPoints;
+};
+
+double Dot(const Vec4& a, const Vec4& b) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) s += a[i] * b[i];
+  return s;
+}
+
+using Outcome = detail::BranchSystem::Outcome;
+
+// The point found from a by a step h along its tangent. kOutOfRange: the predictor or an
+// iterate of the corrector left the range (*beyond is that point).
+Outcome Step(detail::BranchSystem& system, const Node& a, double h, const ContinuationOptions& o,
+             Node* b, Vec4* beyond) {
+  Vec4 y;
+  for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + h * a.t[i];
+  const Vec4 predicted = y;
+  *beyond = y;
+  if (y[3] > o.to || y[3] < o.from) return Outcome::kOutOfRange;
+  int iterations = 0;
+  const Outcome r = system.Correct(detail::Condition::Arclength(a.t, a.y, h), a.J, y, &iterations);
+  *beyond = y;
+  if (r != Outcome::kConverged) return r;
+  if (!system.Complete(y, a.t, b)) return Outcome::kFailed;
+  double moved = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) moved = std::max(moved, std::abs(y[i] - predicted[i]));
+  b->iterations = iterations;
+  b->s = a.s + h;
+  // Across a change of the events the branch may have a corner (a grazing impact bends it
+  // sharply): only a smooth stretch must keep its direction.
+  const bool same_events = a.motion.impacts_right == b->motion.impacts_right &&
+                           a.motion.impacts_left == b->motion.impacts_left && a.marks == b->marks;
+  return (Dot(a.t, b->t) >= kMinTangentCosine && moved <= h) || !same_events ? Outcome::kConverged
+                                                                             : Outcome::kFailed;
+}
+
+// The point at the end of the range that a step towards `beyond` passed: the corrector with
+// the parameter fixed at the end, from the chord between a and `beyond`.
+bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, double edge, Node* b) {
+  const double f = (edge - a.y[3]) / (beyond[3] - a.y[3]);
+  Vec4 y;
+  for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + f * (beyond[i] - a.y[i]);
+  y[3] = edge;
+  int iterations = 0;
+  if (system.Correct(detail::Condition::Parameter(edge), a.J, y, &iterations) !=
+          Outcome::kConverged ||
+      !system.Complete(y, a.t, b)) {
+    return false;
+  }
+  Vec4 d;
+  for (std::size_t i = 0; i < 4; ++i) d[i] = y[i] - a.y[i];
+  b->iterations = iterations;
+  b->s = a.s + Dot(a.t, d);
+  return true;
+}
+
+Direction Follow(detail::BranchSystem system, Node a, int budget, const ContinuationOptions& o) {
+  Direction out;
+  double h = o.initial_step;
+  // Every point costs at most one failed step per halving from max_step to min_step.
+  const int halvings = static_cast<int>(std::ceil(std::log2(o.max_step / o.min_step))) + 2;
+  const std::int64_t max_attempts = static_cast<std::int64_t>(budget + 1) * halvings;
+  for (std::int64_t attempt = 0; static_cast<int>(out.nodes.size()) < budget; ++attempt) {
+    if (attempt >= max_attempts) break;
+    Node b;
+    Vec4 beyond;
+    Outcome r = Step(system, a, h, o, &b, &beyond);
+    bool end = false;
+    if (r == Outcome::kOutOfRange) {
+      const double edge = beyond[3] > o.to ? o.to : o.from;
+      if (a.y[3] == edge) {  // already on the end
+        out.end = BranchEnd::kRangeEnd;
+        return out;
+      }
+      end = AtEnd(system, a, beyond, edge, &b);
+      r = end ? Outcome::kConverged : Outcome::kFailed;
+    }
+    if (r != Outcome::kConverged) {
+      if (h <= o.min_step) {
+        out.end = BranchEnd::kLost;
+        return out;
+      }
+      h = std::max(0.5 * h, o.min_step);
+      continue;
+    }
+    const int k = static_cast<int>(out.nodes.size());
+    const std::size_t before = out.special.size();
+    detail::FindSpecialPoints(system, a, b, o.location_tolerance, &out.special);
+    for (std::size_t i = before; i < out.special.size(); ++i) out.special[i].after_point = k;
+    out.nodes.push_back(std::move(b));
+    if (end) {
+      out.end = BranchEnd::kRangeEnd;
+      return out;
+    }
+    if (!system.Replace(&out.nodes.back())) {
+      out.end = BranchEnd::kLost;
+      return out;
+    }
+    if (out.nodes.back().iterations <= kFastIterations) h = std::min(kGrowth * h, o.max_step);
+    a = out.nodes.back();
+  }
+  out.end = BranchEnd::kMaxPoints;
+  return out;
+}
+
+BranchPoint PointOf(const Node& n, double sign) {
+  BranchPoint p;
+  p.parameter = n.y[3];
+  p.arclength = sign * n.s;
+  p.tangent = sign * n.t[3];
+  p.motion = n.motion;
+  p.corrector_iterations = n.iterations;
+  return p;
+}
+
+void AddLabel(BranchPoint& p, SpecialPointType type) {
+  if (!p.label.empty()) p.label += ";";
+  p.label += SpecialPointTypeName(type);
+}
+
+// The branch in increasing arclength: backward part reversed, start, forward part.
+void Assemble(const Node& start, const Direction& backward, const Direction& forward, Branch& b) {
+  const int nb = static_cast<int>(backward.nodes.size());
+  for (int k = nb - 1; k >= 0; --k) {
+    b.points.push_back(PointOf(backward.nodes[static_cast<std::size_t>(k)], -1.0));
+  }
+  b.start_index = nb;
+  b.points.push_back(PointOf(start, 1.0));
+  for (const Node& n : forward.nodes) b.points.push_back(PointOf(n, 1.0));
+  for (auto it = backward.special.rbegin(); it != backward.special.rend(); ++it) {
+    SpecialPoint sp = *it;
+    sp.after_point = nb - 1 - it->after_point;
+    sp.arclength = -sp.arclength;
+    b.special_points.push_back(std::move(sp));
+  }
+  for (SpecialPoint sp : forward.special) {
+    sp.after_point = nb + sp.after_point;
+    b.special_points.push_back(std::move(sp));
+  }
+  for (const SpecialPoint& sp : b.special_points) {
+    AddLabel(b.points[static_cast<std::size_t>(sp.after_point) + 1], sp.type);
+  }
+  b.backward_end = backward.end;
+  b.forward_end = forward.end;
+  b.backward_parameter = b.points.front().parameter;
+  b.forward_parameter = b.points.back().parameter;
+}
+
+void CheckRobot(const RobotFamily& family, double lambda, const PhaseState& start) {
+  const RobotModel r = family(lambda);
+  r.params.Validate();
+  detail::ValidateStart(r.alpha, start);
+}
+
+}  // namespace
+
+const char* SpecialPointTypeName(SpecialPointType type) {
+  static constexpr const char* kNames[] = {"fold",    "period_doubling", "neimark_sacker",
+                                           "grazing", "segment_change",  "speed_extremum"};
+  static_assert(std::size(kNames) ==
+                static_cast<std::size_t>(SpecialPointType::kSpeedExtremum) + 1);
+  return detail::EnumName(kNames, type);
+}
+
+const char* BranchEndName(BranchEnd end) {
+  static constexpr const char* kNames[] = {"not_run", "range_end", "lost", "max_points"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kMaxPoints) + 1);
+  return detail::EnumName(kNames, end);
+}
+
+const char* ContinuationStatusName(ContinuationStatus status) {
+  static constexpr const char* kNames[] = {"not_run", "ok", "no_motion", "event_limit"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(ContinuationStatus::kEventLimit) + 1);
+  return detail::EnumName(kNames, status);
+}
+
+void ContinuationOptions::Validate() const {
+  const auto fail = [](const char* name, double value, const std::string& rule) {
+    throw std::invalid_argument(fmt::format("{} = {} is invalid: expected {}", name, value, rule));
+  };
+  if (!std::isfinite(from)) fail("from", from, "a finite number");
+  if (!std::isfinite(to) || !(to > from))
+    fail("to", to, fmt::format("a finite number > from = {}", from));
+  if (!(start >= from && start <= to)) {
+    fail("start", start, fmt::format("from = {} <= start <= to = {}", from, to));
+  }
+  if (max_points < 2 || max_points > kMaxPointsLimit) {
+    fail("max_points", max_points, "2 <= max_points <= 1000000");
+  }
+  if (!(min_step > 0.0) || !std::isfinite(min_step))
+    fail("min_step", min_step, "a finite number > 0");
+  if (!(max_step >= min_step) || !std::isfinite(max_step)) {
+    fail("max_step", max_step, fmt::format("a finite number >= min_step = {}", min_step));
+  }
+  if (!(initial_step >= min_step && initial_step <= max_step)) {
+    fail("initial_step", initial_step,
+         fmt::format("min_step = {} <= initial_step <= max_step = {}", min_step, max_step));
+  }
+  if (!(residual_tolerance > 0.0) || !std::isfinite(residual_tolerance)) {
+    fail("residual_tolerance", residual_tolerance, "a finite number > 0");
+  }
+  if (max_corrector_iterations < 1) {
+    fail("max_corrector_iterations", max_corrector_iterations, ">= 1");
+  }
+  if (!(location_tolerance > 0.0) || !std::isfinite(location_tolerance)) {
+    fail("location_tolerance", location_tolerance, "a finite number > 0");
+  }
+  shooting.Validate();
+}
+
+Branch ContinueBranch(const RobotFamily& family, const PhaseState& start,
+                      const ContinuationOptions& options) {
+  options.Validate();
+  for (double lambda : {options.from, options.start, options.to}) CheckRobot(family, lambda, start);
+  Branch branch;
+  const RobotModel r = family(options.start);
+  const PeriodicMotion pm =
+      FindPeriodicMotion(r.forcing, r.params, r.alpha, start, options.shooting);
+  if (pm.status != ShootingStatus::kConverged) {
+    branch.status = pm.status == ShootingStatus::kEventLimit ? ContinuationStatus::kEventLimit
+                                                             : ContinuationStatus::kNoMotion;
+    branch.message = fmt::format("no periodic motion at the start: Newton shooting ended with {}",
+                                 ShootingStatusName(pm.status));
+    return branch;
+  }
+  detail::BranchSystem system(
+      family, options, pm.period,
+      {pm.state.psi, pm.mode, detail::FreeCoordinates(pm.mode, pm.state.v)});
+  Node first;
+  if (!system.Complete({pm.state.x, pm.state.u, pm.state.v, options.start}, {0.0, 0.0, 0.0, 1.0},
+                       &first)) {
+    branch.status = ContinuationStatus::kEventLimit;
+    branch.message = "the simulation of the start hit the work bound";
+    return branch;
+  }
+  const int forward_budget =
+      options.both_directions ? options.max_points / 2 : options.max_points - 1;
+  const Direction forward = Follow(system, first, forward_budget, options);
+  Direction backward;
+  backward.end = BranchEnd::kNotRun;
+  if (options.both_directions) {
+    Node reversed = first;
+    for (double& t : reversed.t) t = -t;
+    reversed.speed = -reversed.speed;
+    const int left = options.max_points - 1 - static_cast<int>(forward.nodes.size());
+    backward = Follow(system, reversed, left, options);
+  }
+  branch.status = ContinuationStatus::kOk;
+  Assemble(first, backward, forward, branch);
+  return branch;
+}
+
+}  // namespace capsubot

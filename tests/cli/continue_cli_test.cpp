@@ -1,0 +1,117 @@
+// `capsubot continue`: the branch as JSON and CSV, the summary, and bad input (one-line errors,
+// exit 2, no file). The numbers themselves are checked in tests/continue/.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "capsubot/validity.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::Near;
+using testing::RunCli;
+
+// A stable one-impact orbit with clearance (`solve ... --stability`: spectral radius 0.16).
+const std::string kSmallOrbit =
+    "--A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.2792869076315278";
+const std::string kAlphaBranch =
+    "continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.2 --to 0.3";
+
+TEST(ContinueCli, JsonHasThePointsTheSpecialPointsAndTheProvenance) {
+  const auto r = RunCli(kAlphaBranch + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["parameter"], "alpha");
+  ASSERT_GE(j["points"].size(), 10U);
+  // The start is the orbit of `solve` at the robot's phase: its mean velocity.
+  Params params;
+  params.T0 = 0.1;
+  params.e = 0.5;
+  const Solution s = Solve(Forcing::Harmonic(0.05, 0.02, -2.842), params);
+  const auto& start = j["points"][j["start_index"].get<std::size_t>()];
+  EXPECT_TRUE(Near(start["mean_velocity"].get<double>(), s.orbit.v_mean, 1e-9 * s.orbit.v_mean));
+  EXPECT_EQ(start["impacts_right"], 1);
+  bool fold = false;
+  for (const auto& sp : j["special_points"]) {
+    EXPECT_TRUE(sp.contains("alpha"));
+    EXPECT_TRUE(sp.contains("mean_velocity"));
+    if (sp["type"] == "fold") {
+      fold = true;
+      EXPECT_TRUE(Near(sp["alpha"].get<double>(), 0.29035, 1e-5));
+    }
+  }
+  EXPECT_TRUE(fold);
+  EXPECT_EQ(j["ends"]["lower"]["end"], "range_end");
+  EXPECT_EQ(j["provenance"]["command"], "continue");
+}
+
+TEST(ContinueCli, CsvHasOneRowPerPointAfterItsProvenanceLine) {
+  const auto path = testing::TempPath("branch.csv");
+  const auto r = RunCli(kAlphaBranch + " -o " + path.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("fold"), std::string::npos) << r.out;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# capsubot ", 0), 0U) << line;
+  EXPECT_NE(line.find("continue"), std::string::npos);
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "alpha,x,u,v,psi,period,impacts_right,impacts_left,mean_velocity,spectral_radius,"
+            "mu1_re,mu1_im,mu2_re,mu2_im,stable,label");
+  int rows = 0, labelled = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    if (line.back() != ',') ++labelled;
+  }
+  const auto j = nlohmann::json::parse(RunCli(kAlphaBranch + " --json").out);
+  EXPECT_EQ(static_cast<std::size_t>(rows), j["points"].size());
+  EXPECT_EQ(static_cast<std::size_t>(labelled), j["special_points"].size());
+  std::filesystem::remove(path);
+}
+
+TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
+  const auto path = testing::TempPath("bad_branch.csv");
+  const std::string o = " -o " + path.string() + " 2>&1";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"continue " + kSmallOrbit + " --from-orbit --param b2 --from 0.2 --to 0.3",
+       "capsubot continue: error: parameter = b2 is invalid for this force: expected a_k or b_k "
+       "with 1 <= k <= K = 1, its harmonics\n"},
+      {"continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.3 --to 0.2",
+       "capsubot continue: error: --to = 0.2 is invalid: expected a finite number > from = 0.3\n"},
+      {"continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.2 --to 0.25",
+       "capsubot continue: error: the robot's alpha = 0.2792869076315278 is outside the range: "
+       "expected --from = 0.2 <= alpha <= --to = 0.25 (the branch starts at the robot's value)\n"},
+      {kAlphaBranch + " --max-points 1",
+       "capsubot continue: error: --max-points = 1 is invalid: expected 2 <= max_points <= "
+       "1000000\n"},
+      {"continue " + kSmallOrbit + " --param alpha --from 0.2 --to 0.3 --x0 0.5",
+       "capsubot continue: error: the start is missing: give all of --x0, --u0, --v0, --psi (or "
+       "--from-orbit)\n"},
+      {kAlphaBranch + " --x0 0.5",
+       "capsubot continue: error: --from-orbit gives the start: do not give --x0, --u0, --v0 or "
+       "--psi with it\n"},
+      {"continue " + kSmallOrbit + " --from-orbit --param mu --from 0.2 --to 0.3",
+       "capsubot continue: error: parameter = mu is invalid: expected one of A, c, alpha, T0, e, "
+       "phi0, or a Fourier coefficient a1..a16, b1..b16\n"},
+  };
+  for (const auto& c : cases) {
+    const auto r = RunCli(c.args + o);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_EQ(r.out, c.message) << c.args;
+    EXPECT_FALSE(std::filesystem::exists(path)) << c.args;
+  }
+}
+
+}  // namespace
+}  // namespace capsubot
