@@ -55,14 +55,14 @@ PhaseState OrbitStart(const Forcing& forcing, const Params& params, double alpha
   return {1.0, -o.e * o.u, o.v_plus, o.forcing.phi0() - forcing.phi0()};
 }
 
-// The branch as CSV: '#' provenance line, header, one row per point.
-void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& provenance,
+// The branch as CSV: the '#' provenance line, header, one row per point.
+void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& comment,
                     const std::string& path) {
   std::size_t columns = 0;
   for (const BranchPoint& p : b.points) columns = std::max(columns, p.motion.multipliers.size());
   AtomicFile file(path, "-o");
   auto& out = file.stream();
-  out << "# " << provenance << '\n';
+  out << comment;
   out << name << ",x,u,v,psi,period,impacts_right,impacts_left,mean_velocity,spectral_radius";
   for (std::size_t k = 1; k <= columns; ++k) out << ",mu" << k << "_re,mu" << k << "_im";
   out << ",stable,label\n";
@@ -125,8 +125,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const Branch branch = ContinueBranch(family, start, o);
   if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
-    WriteBranchCsv(branch, opt.param, CommandProvenance(cmd, {"--output", "--json"}).CommandLine(),
-                   opt.output);
+    WriteBranchCsv(branch, opt.param, OutputProvenance(cmd).CommentLine(), opt.output);
   }
   if (opt.json) {
     nlohmann::json j = json::BranchJson(branch, opt.param);
