@@ -437,11 +437,10 @@ Command AddSweepCommand(CLI::App& app) {
                       "standard output",
                       "sweep --grid phi0=-3:-2.4:4 --grid e=0.5,1 --A 0.05 --c 0.02 "
                       "--T0 0.1 --stability -o -"},
-                     {"P2 at every point of a 65 x 41 grid, shard 0 of 3 (1/3 and 2/3 "
-                      "elsewhere; takes about 10 min on 2 cores; --progress for lines in a Slurm "
-                      "log)",
-                      "sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize "
-                      "forcing --shard 0/3 -o part0.csv"}});
+                     {"P2 at every point of a 17 x 11 grid, shard 0 of 3 (1/3 and 2/3 "
+                      "elsewhere, then `capsubot merge`; --progress for lines in a Slurm log)",
+                      "sweep --grid T0=0.01:1:17:log --grid e=0:1:11 --optimize forcing "
+                      "--shard 0/3 -o part0.csv"}});
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 
