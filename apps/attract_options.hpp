@@ -44,8 +44,8 @@ void AddThreadsOption(CLI::App& cmd, int& threads);
 /// its starts' mean velocities and whether their records are long enough.
 std::string AttractorWords(const Attractor& attractor, int max_period);
 
-/// A StartsProgress that draws the shared progress bar (ProgressBar, counting `what`, e.g.
-/// "starts") on stderr when it is a terminal; none otherwise.
-StartsProgress TerminalProgress(const char* what);
+/// A StartsProgress that shows the progress (ProgressBar, counting `what`, e.g. "starts") on
+/// stderr when progress is shown (progress.hpp); none otherwise.
+StartsProgress CountProgress(const char* what);
 
 }  // namespace capsubot::app

@@ -31,6 +31,7 @@
 #include "commands.hpp"
 #include "design_config.hpp"
 #include "from_rest_report.hpp"
+#include "help_format.hpp"
 #include "json/design_json.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
@@ -262,14 +263,12 @@ DesignFromRestOptions FromRestDesignOptions(const FromRestCliOptions& cli) {
   return o;
 }
 
-// The stage of the from-rest design on the progress line (a terminal only).
+// The stage of the from-rest design, shown when progress is (progress.hpp).
 DesignFromRestProgress StageProgress() {
-  if (!StderrIsTerminal()) return {};
+  if (!ProgressShown()) return {};
   return [](const std::string& stage, std::int64_t done, std::int64_t total) {
-    ShowStage(
-        fmt::format("design: 2/2 the fastest motion from rest, {} ({} of at most {} "
-                    "from-rest evaluations)",
-                    stage, done, total));
+    ShowStage(fmt::format("design: 2/2 the fastest motion from rest, {}", stage),
+              fmt::format("{} of at most {} from-rest evaluations", done, total));
   };
 }
 
@@ -368,7 +367,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   o.resume = opt.resume;
   o.threads = CapThreads(opt.from_rest.threads, "capsubot design");
-  const bool tty = StderrIsTerminal();
+  const bool shown = ProgressShown();
   ProgressBar bar("points");
   const SweepProgressCallback progress = GridProgress(bar);
   Ranks ranks;  // under mpirun: rank 0 runs the grid, the others compute blocks of points
@@ -379,7 +378,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   } catch (const SweepResumableError& e) {
     throw WriteError(std::string(e.what()) + ": run the same command with --resume to continue");
   }
-  if (tty) {
+  if (shown) {
     fmt::print(stderr, "capsubot design: {} points written to {} in {:.3f} s on {} threads\n",
                summary.points, o.output, summary.seconds, summary.threads);
   }
@@ -391,7 +390,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
   std::vector<std::pair<std::string, std::string>> settings;
   const DesignInput input = BuildDesignInput(opt.config, {}, &settings);
-  const DesignProgress progress = TerminalProgress("robots");
+  const DesignProgress progress = CountProgress("robots");
   const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
   from_rest_options.Validate();  // bad options fail before any work
@@ -452,7 +451,8 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("NAME=SPEC");
   cmd->add_option("-o,--output", opt->output,
                   "CSV file of --grid (built as FILE.partial with a checkpoint, renamed at the "
-                  "end; - for standard output)");
+                  "end; - for standard output)")
+      ->type_name("FILE");
   cmd->add_option("--shard", opt->shard,
                   "with --grid: compute only shard K of N (0 <= K < N), the points p with "
                   "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files; 0/1 "
@@ -460,6 +460,16 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("K/N");
   cmd->add_flag("--resume", opt->resume,
                 "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the example robot (examples/robot.toml): its inner mass, "
+                      "speed, power and cost of transport",
+                      "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude "
+                      "0.5 --force-bias 0.1 --frequency 20"},
+                     {"the same robot at 4 inner masses x 2 restitutions, one CSV row "
+                      "a point",
+                      "design --m1 0.2 --L 0.02 --mu 0.3 --force-amplitude 0.5 "
+                      "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
+                      "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [opt] { return !opt->grids.empty(); }};
 }

@@ -11,6 +11,7 @@
 
 #include "capsubot/basin_shards.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -43,8 +44,12 @@ Command AddMergeCommand(CLI::App& app) {
       "the shard files (docs/cluster.md).");
   cmd->add_option("OUT", opt->output,
                   "the CSV file to write (atomically; - : standard output), not a shard file")
-      ->required();
-  cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();
+      ->required()
+      ->type_name("FILE");
+  cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required()->type_name("FILE");
+  SetExamples(*cmd, {{"the 3 shard files of a sweep --shard K/3 (any order) into the "
+                      "file of the whole sweep",
+                      "merge p2.csv part0.csv part1.csv part2.csv"}});
   return {cmd, [opt] { return Run(*opt); }, {}};
 }
 

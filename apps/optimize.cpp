@@ -23,6 +23,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
@@ -497,9 +498,12 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "--bound, simulated, seeded with the robust P2 gait); P1, P2 and P3 name the "
                   "first three; default: the main job")
       ->transform(CLI::Transformer(
-          std::map<std::string, std::string>{{"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
-          CLI::ignore_case))
-      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}));
+                      std::map<std::string, std::string>{
+                          {"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
+                      CLI::ignore_case)
+                      .description(""))
+      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}).description(""))
+      ->type_name("phase|forcing|fourier|reach");  // the help and the completion show these
   opt->A_option =
       cmd->add_option("--A", opt->A,
                       "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
@@ -512,7 +516,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "main job: write the robust gait's promised mean velocity and the attractors "
                   "reached from rest (robust gait and fastest motion from rest) to this CSV file "
                   "(columns gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,"
-                  "one_impact_orbit)");
+                  "one_impact_orbit)")
+      ->type_name("FILE");
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
@@ -570,12 +575,21 @@ Command AddOptimizeCommand(CLI::App& app) {
                 "fastest, fastest_stable");
   cmd->add_option("-o,--output", opt->output,
                   "also write the JSON object (indented) to this file, atomically; nothing is "
-                  "written without it");
+                  "written without it")
+      ->type_name("FILE");
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
                   "columns phi,F) to this CSV file (main job: the robust gait's force; reach: the "
-                  "winner's)");
+                  "winner's)")
+      ->type_name("FILE");
   opt->cmd = cmd;
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the main job: the paper's problem, the fastest robust gait, "
+                      "the fastest motion from rest (takes about a minute)",
+                      "optimize -o optimum.json"},
+                     {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
+                      "radius is at most 0.95",
+                      "optimize --problem forcing --T0 1 --rho-max 0.95"}});
   return {cmd, [opt] { return Run(*opt); }, {}};
 }
 
