@@ -8,11 +8,8 @@
 #include <string>
 
 #include "attract_options.hpp"
-#include "capsubot/bifurcation.hpp"
-#include "capsubot/continue/continuation.hpp"
+#include "capsubot/continue/parameter_branch.hpp"
 #include "capsubot/io.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
 #include "commands.hpp"
 #include "json/continuation_json.hpp"
 #include "provenance.hpp"
@@ -30,30 +27,6 @@ struct ContinueCommandOptions {
   std::string output;
   CLI::Option* state_options[4] = {};
 };
-
-// The valid one-impact orbit of the robot with the smallest spectral radius (docs/orbit.md,
-// `orbits`), as a start right after its impact.
-PhaseState OrbitStart(const Forcing& forcing, const Params& params, double alpha) {
-  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
-  const Solution* best = nullptr;
-  double best_radius = 0.0;
-  for (const Solution& s : orbits) {
-    if (!s.validity.valid()) continue;
-    const double radius = ComputeStability(s.orbit).spectral_radius;
-    if (best == nullptr || radius < best_radius) {
-      best = &s;
-      best_radius = radius;
-    }
-  }
-  if (best == nullptr) {
-    throw std::invalid_argument(fmt::format(
-        "--from-orbit is invalid for this robot: it has no valid one-impact orbit at alpha = {} "
-        "(capsubot orbits lists them)",
-        alpha));
-  }
-  const Orbit& o = best->orbit;
-  return {1.0, -o.e * o.u, o.v_plus, o.forcing.phi0() - forcing.phi0()};
-}
 
 // The branch as CSV: '#' provenance line, header, one row per point.
 void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& provenance,
@@ -88,9 +61,6 @@ void WriteBranchCsv(const Branch& b, const std::string& name, const std::string&
 
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
-  int harmonic = 0;
-  const BifurcationParam param = ParseBifurcationParam(opt.param, &harmonic);
-  CheckBifurcationParam(forcing, param, harmonic);
   int given = 0;
   for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
   if (opt.from_orbit && given > 0) {
@@ -102,28 +72,13 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
         "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
   }
   opt.robot.params.Validate();
-  PhaseState start =
-      opt.from_orbit ? OrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
+  const PhaseState start =
+      opt.from_orbit ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha)
+                     : opt.start;
   RequirePhase("psi", start.psi);
-  ContinuationOptions o = opt.continuation;
-  o.start = BifurcationParamValue(param, harmonic, forcing, opt.robot.params, opt.robot.alpha);
-  ContinuationOptions range = o;  // the options' own rules first, the start's value aside
-  range.start = o.from;
-  range.Validate();
-  if (!(o.start >= o.from && o.start <= o.to)) {
-    throw std::invalid_argument(fmt::format(
-        "the robot's {} = {} is outside the range: expected --from = {} <= {} <= --to = {} (the "
-        "branch starts at the robot's value)",
-        opt.param, o.start, o.from, opt.param, o.to));
-  }
-  const RobotModel base{forcing, opt.robot.params, opt.robot.alpha};
-  const RobotFamily family = [&](double value) {
-    RobotModel r = base;
-    SetBifurcationParam(param, harmonic, value, r.forcing, r.params, r.alpha);
-    return r;
-  };
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
-  const Branch branch = ContinueBranch(family, start, o);
+  const Branch branch = ContinueParameter(forcing, opt.robot.params, opt.robot.alpha, opt.param,
+                                          start, opt.continuation);
   if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
     WriteBranchCsv(branch, opt.param, CommandProvenance(cmd, {"--output", "--json"}).CommandLine(),
                    opt.output);
@@ -151,7 +106,8 @@ const FlagNames& ContinueFlagNames() {
                                   {"max_step", "--max-step"},
                                   {"max_period", "--max-period"},
                                   {"step", "--step"},
-                                  {"chatter_velocity", "--chatter-velocity"}};
+                                  {"chatter_velocity", "--chatter-velocity"},
+                                  {"from_orbit", "--from-orbit"}};
   return names;
 }
 
