@@ -73,8 +73,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   }
   opt.robot.params.Validate();
   const PhaseState start =
-      opt.from_orbit ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha)
-                     : opt.start;
+      opt.from_orbit ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
   RequirePhase("psi", start.psi);
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const Branch branch = ContinueParameter(forcing, opt.robot.params, opt.robot.alpha, opt.param,

@@ -294,9 +294,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("");
   const double bound = std::isnan(opt.search.force_bound) ? p.T0 : opt.search.force_bound;
 
-  nlohmann::json j =
-      json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p, opt.search.rho_max,
-                        bound);
+  nlohmann::json j = json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p,
+                                       opt.search.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 

@@ -1,8 +1,6 @@
 // continue_branch: pseudo-arclength continuation of a periodic motion in one model parameter,
 // with its special points (docs/continuation.md), as `capsubot continue --json`.
 
-#include "capsubot/continue/parameter_branch.hpp"
-
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -15,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/continue/parameter_branch.hpp"
 #include "json/continuation_json.hpp"
 
 namespace capsubot::python {
@@ -48,10 +47,10 @@ py::object Column(const nlohmann::json& points, const std::string& key) {
   py::list values;
   for (const auto& p : points) values.append(ToPython(p.at(key)));
   const nlohmann::json& first = points.front().at(key);
-  const char* dtype = first.is_boolean()           ? "bool"
-                      : first.is_string()          ? "str"
-                      : first.is_number_integer()  ? "int64"
-                                                   : "float64";
+  const char* dtype = first.is_boolean()          ? "bool"
+                      : first.is_string()         ? "str"
+                      : first.is_number_integer() ? "int64"
+                                                  : "float64";
   if (std::string(dtype) == "float64") {
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (values[i].is_none()) values[i] = py::float_(kNaN);
@@ -67,7 +66,8 @@ py::dict BranchDict(const nlohmann::json& j) {
   py::dict columns;
   if (!points.empty()) {
     for (const auto& [key, value] : points.front().items()) {
-      columns[py::str(key)] = key == "multipliers" ? MultiplierColumns(points) : Column(points, key);
+      columns[py::str(key)] =
+          key == "multipliers" ? MultiplierColumns(points) : Column(points, key);
     }
   }
   d["points"] = columns;
@@ -80,7 +80,8 @@ PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::option
                  const Params& params, double alpha) {
   const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
   if (from_orbit && given > 0) {
-    throw std::invalid_argument("from_orbit gives the start: do not give x0, u0, v0 or psi with it");
+    throw std::invalid_argument(
+        "from_orbit gives the start: do not give x0, u0, v0 or psi with it");
   }
   if (!from_orbit && given < 4) {
     throw std::invalid_argument(

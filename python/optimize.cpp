@@ -69,10 +69,9 @@ py::dict MainJob(const Params& p, const SearchArgs& a) {
     stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
     if (robust.found()) robustness = ComputeGaitRobustness(robust.solution.orbit);
   }
-  return py::dict(
-      ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p,
-                                 a.search.rho_max,
-                                 std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
+  return py::dict(ToPython(
+      json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p, a.search.rho_max,
+                        std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
 }
 // The reach problem: the fastest motion from rest, seeded with the robust gait.
 py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {

@@ -31,6 +31,7 @@ MotionLimit NearestLimit(const Branch& b, bool forward) {
     limit.type = nearest->type;
     limit.parameter = nearest->parameter;
     limit.located = nearest->located;
+    limit.accuracy = nearest->accuracy;
     limit.motion = nearest->motion;
     return limit;
   }
@@ -50,7 +51,8 @@ ParameterRobustness Continue(const Orbit& orbit, const char* name, double from, 
   o.both_directions = true;
   const Branch b = ContinueParameter(orbit.forcing, params, orbit.alpha, name,
                                      OrbitImpactState(orbit, orbit.forcing), o);
-  r.value = b.status == ContinuationStatus::kOk ? b.points[b.start_index].parameter : MotionLimit::kNaN;
+  r.value =
+      b.status == ContinuationStatus::kOk ? b.points[b.start_index].parameter : MotionLimit::kNaN;
   r.from = from;
   r.to = to;
   r.status = b.status;
@@ -71,8 +73,8 @@ std::string LimitText(const MotionLimit& l, const std::string& name) {
         return fmt::format("lost at {} = {:.6g} (the continuation cannot proceed there)", name,
                            l.parameter);
       case BranchEnd::kMaxPoints:
-        return fmt::format("no limit found up to {} = {:.6g} (the most points were reached)",
-                           name, l.parameter);
+        return fmt::format("no limit found up to {} = {:.6g} (the most points were reached)", name,
+                           l.parameter);
       case BranchEnd::kNotRun:
         break;
     }
@@ -109,8 +111,8 @@ const char* MotionLimit::Name() const {
 
 void RobustnessOptions::Validate() const {
   if (!(t0_factor > 1.0) || !std::isfinite(t0_factor)) {
-    throw std::invalid_argument(fmt::format(
-        "t0_factor = {} is invalid: expected a finite number > 1", t0_factor));
+    throw std::invalid_argument(
+        fmt::format("t0_factor = {} is invalid: expected a finite number > 1", t0_factor));
   }
 }
 
@@ -121,8 +123,7 @@ GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions
   g.parameters.push_back(
       Continue(orbit, "T0", orbit.T0 / options.t0_factor, orbit.T0 * options.t0_factor, c));
   g.parameters.push_back(Continue(orbit, "e", 0.0, 1.0, c));
-  g.parameters.push_back(
-      Continue(orbit, "alpha", 0.5 * orbit.alpha, 0.5 * (1.0 + orbit.alpha), c));
+  g.parameters.push_back(Continue(orbit, "alpha", 0.5 * orbit.alpha, 0.5 * (1.0 + orbit.alpha), c));
   return g;
 }
 

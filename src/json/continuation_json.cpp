@@ -15,7 +15,10 @@ nlohmann::json End(BranchEnd end, const std::string& name, double lambda) {
 
 nlohmann::json Limit(const MotionLimit& l, const std::string& name) {
   nlohmann::json j = {{"type", l.Name()}, {name, l.parameter}, {"located", l.located}};
-  if (l.special) j["multipliers"] = Multipliers(l.motion);
+  if (l.special) {
+    j["accuracy"] = l.accuracy;
+    j["multipliers"] = Multipliers(l.motion);
+  }
   return j;
 }
 

@@ -20,8 +20,8 @@ nlohmann::json BranchJson(const Branch& branch, const std::string& name);
 
 /// {name: {"value", "from", "to", "status", "message", "down": limit, "up": limit}} for T0, e,
 /// alpha, each limit {"type": a special point's type or the branch end's ("range_end",
-/// "lost", "max_points"), name: its value, "located", and for a special point "multipliers"
-/// [[re, im], ...]}.
+/// "lost", "max_points"), name: its value, "located", and for a special point "accuracy" and
+/// "multipliers" [[re, im], ...]}.
 nlohmann::json RobustnessJson(const GaitRobustness& robustness);
 
 }  // namespace capsubot::json

@@ -19,12 +19,13 @@ namespace capsubot {
 struct MotionLimit {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  bool special = false;                          ///< a special point (else the branch's end)
+  bool special = false;                             ///< a special point (else the branch's end)
   SpecialPointType type = SpecialPointType::kFold;  ///< its type, when special
-  BranchEnd end = BranchEnd::kNotRun;            ///< how the branch ended, when not special
-  double parameter = kNaN;                       ///< the parameter's value there
-  bool located = false;  ///< the special point was located to the location tolerance
-  PeriodicMotion motion;  ///< the motion there (special points only)
+  BranchEnd end = BranchEnd::kNotRun;               ///< how the branch ended, when not special
+  double parameter = kNaN;                          ///< the parameter's value there
+  bool located = false;    ///< the special point was located to the location tolerance
+  double accuracy = kNaN;  ///< width of its final bracket in the parameter (special points)
+  PeriodicMotion motion;   ///< the motion there (special points only)
 
   /// The special point's type name ("fold", ...) or the end's ("range_end", "lost", ...).
   const char* Name() const;
@@ -34,14 +35,14 @@ struct MotionLimit {
 struct ParameterRobustness {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  std::string name;  ///< "T0", "e" or "alpha"
+  std::string name;     ///< "T0", "e" or "alpha"
   double value = kNaN;  ///< the gait's value
   double from = kNaN;   ///< the range searched
   double to = kNaN;
   ContinuationStatus status = ContinuationStatus::kNotRun;  ///< the branch's status
-  std::string message;  ///< why there is no branch, else empty
-  MotionLimit down;     ///< the nearest limit below the gait's value (the branch's backward part)
-  MotionLimit up;       ///< the nearest limit above it (the forward part)
+  std::string message;                                      ///< why there is no branch, else empty
+  MotionLimit down;  ///< the nearest limit below the gait's value (the branch's backward part)
+  MotionLimit up;    ///< the nearest limit above it (the forward part)
 };
 
 struct RobustnessOptions {
