@@ -8,6 +8,7 @@
 #include <string>
 
 #include "attract_options.hpp"
+#include "capsubot/continue/branch_switch.hpp"
 #include "capsubot/continue/parameter_branch.hpp"
 #include "capsubot/io.hpp"
 #include "commands.hpp"
@@ -23,6 +24,7 @@ struct ContinueCommandOptions {
   PhaseState start;
   std::string param;
   bool from_orbit = false;
+  bool switch_branch = false;
   bool json = false;
   std::string output;
   CLI::Option* state_options[4] = {};
@@ -59,6 +61,14 @@ void WriteBranchCsv(const Branch& b, const std::string& name, const std::string&
   file.Commit();
 }
 
+// The first located period doubling of the branch, or null.
+const SpecialPoint* FirstPeriodDoubling(const Branch& b) {
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type == SpecialPointType::kPeriodDoubling && sp.located) return &sp;
+  }
+  return nullptr;
+}
+
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   int given = 0;
@@ -82,12 +92,28 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
     WriteBranchCsv(branch, opt.param, CommandProvenance(cmd, {"--output", "--json"}).CommandLine(),
                    opt.output);
   }
+  const SpecialPoint* pd = opt.switch_branch ? FirstPeriodDoubling(branch) : nullptr;
+  const Branch switched =
+      pd == nullptr ? Branch{}
+                    : SwitchAtPeriodDoubling(NamedParameterFamily(forcing, opt.robot.params,
+                                                                  opt.robot.alpha, opt.param),
+                                             *pd, opt.continuation);
   if (opt.json) {
     nlohmann::json j = json::BranchJson(branch, opt.param);
+    if (opt.switch_branch) {
+      j["switched"] = pd == nullptr ? nlohmann::json() : json::BranchJson(switched, opt.param);
+    }
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", branch.Summary(opt.param));
+    if (opt.switch_branch) {
+      fmt::print("{}",
+                 pd == nullptr
+                     ? std::string("no located period doubling: no branch to switch to\n")
+                     : fmt::format("branch switched at the period doubling at {} = {:.12g}\n{}",
+                                   opt.param, pd->parameter, switched.Summary(opt.param)));
+    }
     if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
       fmt::print("  written        {} points to {}\n", branch.points.size(), opt.output);
     }
@@ -138,6 +164,9 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
+  cmd->add_flag("--switch", opt->switch_branch,
+                "also follow the period-2p branch born at the first located period doubling "
+                "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
   cmd->add_option("--max-points", opt->continuation.max_points,
                   "points of the branch, both directions together")
       ->capture_default_str();

@@ -40,8 +40,8 @@ MotionLimit NearestLimit(const Branch& b, bool forward) {
   return limit;
 }
 
-ParameterRobustness Continue(const Orbit& orbit, const char* name, double from, double to,
-                             const ContinuationOptions& continuation) {
+ParameterRobustness Continue(const Orbit& orbit, const char* name, double value, double from,
+                             double to, const ContinuationOptions& continuation) {
   ParameterRobustness r;
   r.name = name;
   const Params params{orbit.T0, orbit.e, 0.0};
@@ -51,8 +51,7 @@ ParameterRobustness Continue(const Orbit& orbit, const char* name, double from, 
   o.both_directions = true;
   const Branch b = ContinueParameter(orbit.forcing, params, orbit.alpha, name,
                                      OrbitImpactState(orbit, orbit.forcing), o);
-  r.value =
-      b.status == ContinuationStatus::kOk ? b.points[b.start_index].parameter : MotionLimit::kNaN;
+  r.value = value;
   r.from = from;
   r.to = to;
   r.status = b.status;
@@ -120,10 +119,11 @@ GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions
   options.Validate();
   GaitRobustness g;
   const ContinuationOptions& c = options.continuation;
+  g.parameters.push_back(Continue(orbit, "T0", orbit.T0, orbit.T0 / options.t0_factor,
+                                  orbit.T0 * options.t0_factor, c));
+  g.parameters.push_back(Continue(orbit, "e", orbit.e, 0.0, 1.0, c));
   g.parameters.push_back(
-      Continue(orbit, "T0", orbit.T0 / options.t0_factor, orbit.T0 * options.t0_factor, c));
-  g.parameters.push_back(Continue(orbit, "e", 0.0, 1.0, c));
-  g.parameters.push_back(Continue(orbit, "alpha", 0.5 * orbit.alpha, 0.5 * (1.0 + orbit.alpha), c));
+      Continue(orbit, "alpha", orbit.alpha, 0.5 * orbit.alpha, 0.5 * (1.0 + orbit.alpha), c));
   return g;
 }
 

@@ -36,13 +36,26 @@ PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, dou
   return OrbitImpactState(best->orbit, forcing);
 }
 
-Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
-                         const std::string& param, const PhaseState& start,
-                         ContinuationOptions options) {
+RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::string& param) {
   int harmonic = 0;
   const BifurcationParam which = ParseBifurcationParam(param, &harmonic);
   CheckBifurcationParam(forcing, which, harmonic);
+  const RobotModel base{forcing, params, alpha};
+  return [base, which, harmonic](double value) {
+    RobotModel r = base;
+    SetBifurcationParam(which, harmonic, value, r.forcing, r.params, r.alpha);
+    return r;
+  };
+}
+
+Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
+                         const std::string& param, const PhaseState& start,
+                         ContinuationOptions options) {
+  const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
   params.Validate();
+  int harmonic = 0;
+  const BifurcationParam which = ParseBifurcationParam(param, &harmonic);
   options.start = BifurcationParamValue(which, harmonic, forcing, params, alpha);
   ContinuationOptions range = options;  // the options' own rules first, the start's value aside
   range.start = options.from;
@@ -53,12 +66,6 @@ Branch ContinueParameter(const Forcing& forcing, const Params& params, double al
         "branch starts at the robot's value)",
         param, options.start, options.from, param, options.to));
   }
-  const RobotModel base{forcing, params, alpha};
-  const RobotFamily family = [&](double value) {
-    RobotModel r = base;
-    SetBifurcationParam(which, harmonic, value, r.forcing, r.params, r.alpha);
-    return r;
-  };
   return ContinueBranch(family, start, options);
 }
 

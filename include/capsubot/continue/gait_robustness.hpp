@@ -47,11 +47,11 @@ struct ParameterRobustness {
 
 struct RobustnessOptions {
   /// T0 is searched in [T0 / t0_factor, T0 t0_factor]; > 1. A friction coefficient is seldom
-  /// known better than to a factor 2.
+  /// known better than to a factor 2. (e is searched in [0, 1]; alpha halfway to each end of
+  /// (0, 1), [alpha / 2, (1 + alpha) / 2].)
   double t0_factor = 2.0;
-  /// alpha is searched halfway to each end of (0, 1): [alpha / 2, (1 + alpha) / 2]. e in [0, 1].
-  /// The continuation of each parameter (from, to and start are set per parameter; the
-  /// defaults of ContinuationOptions otherwise).
+  /// The continuation of each parameter: from, to and start are set per parameter, the rest
+  /// (steps, points, tolerances, shooting) is taken from here.
   ContinuationOptions continuation;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.

@@ -21,6 +21,12 @@ PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing);
 /// ("from_orbit is invalid for this robot: ...") when the robot has none.
 PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha);
 
+/// The robot at each value of the parameter named `param` (A, c, alpha, T0, e, phi0, a1..a16,
+/// b1..b16: the names of BifurcationParam), the rest as given. Throws std::invalid_argument for
+/// a name it does not know or a parameter the force does not have. The family holds copies.
+RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::string& param);
+
 /// Follows the periodic motion near `start` in the parameter named `param` (A, c, alpha, T0,
 /// e, phi0, a1..a16, b1..b16: the names of BifurcationParam) over [options.from, options.to],
 /// from the robot's own value of it (which sets options.start). Throws std::invalid_argument
