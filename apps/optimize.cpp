@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/io.hpp"
 #include "capsubot/scaling.hpp"
 #include "cli.hpp"
@@ -220,6 +221,13 @@ void Emit(nlohmann::json j, const std::string& text, const OptimizeCliOptions& o
   }
 }
 
+// How far T0, e and alpha can move before the robust gait's motion is lost, in plain words.
+std::string RobustnessText(const GaitRobustness& robustness) {
+  return "    robustness       how far T0, e and alpha can move before this motion is lost\n"
+         "                     (its continuation, docs/continuation.md):\n" +
+         robustness.Summary("                       ");
+}
+
 // Which gait to build, in plain words: the reach winner when it beats the robust gait from
 // rest, else the robust gait.
 std::string Advice(const OptimizeResult& robust, const ReachResult& reach) {
@@ -266,17 +274,20 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2,
   // best phase. Its force sits on the friction bound, so any stick margin would exclude it.
-  ShowStage("optimize: 1/4 the paper's problem (P1)");
+  ShowStage("optimize: 1/5 the paper's problem (P1)");
   const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
                                              PhaseOptionsFor(Request(opt).WithRhoMax(kInf)));
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. the exact optima, valid and stable, for comparison.
-  ShowStage("optimize: 2/4 the fastest robust gait (P2)");
+  ShowStage("optimize: 2/5 the fastest robust gait (P2)");
   const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
-  ShowStage("optimize: 3/4 the fastest motion from rest (simulated starts; up to a minute)");
+  ShowStage("optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach =
       OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, ReachOptions::kNaN));
-  ShowStage("optimize: 4/4 the exact optima without margins");
+  ShowStage("optimize: 4/5 how far T0, e and alpha can move (continuation of the robust gait)");
+  const GaitRobustness robustness =
+      robust.found() ? ComputeGaitRobustness(robust.solution.orbit) : GaitRobustness{};
+  ShowStage("optimize: 5/5 the exact optima without margins");
   const OptimizeResult fastest =
       OptimizeForcing(exact, ForcingOptionsFor(Request(opt).WithRhoMax(kInf)));
   const OptimizeResult stable =
@@ -284,8 +295,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("");
   const double bound = std::isnan(opt.search.force_bound) ? p.T0 : opt.search.force_bound;
 
-  nlohmann::json j =
-      json::MainJobJson(paper, robust, reach, fastest, stable, p, opt.search.rho_max, bound);
+  nlohmann::json j = json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p,
+                                       opt.search.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
@@ -331,7 +342,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
       "   above; checked from rest on {} starts.\n",
       bound, reach.seed.from_rest.attractors.starts);
-  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest)
+  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest) +
+                            RobustnessText(robustness)
                       : fmt::format("   Result: none found ({})\n", robust.message);
   t += fmt::format(
       "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"

@@ -24,14 +24,15 @@ namespace capsubot::python {
 namespace py = pybind11;
 
 // The functions of the module, one file per concept (solve.cpp, solve_grid.cpp, ...).
-void BindSolve(py::module_& m);       // solve, trajectory
-void BindSolveGrid(py::module_& m);   // solve_grid
-void BindSimulate(py::module_& m);    // simulate
-void BindOptimize(py::module_& m);    // optimize
-void BindOrbits(py::module_& m);      // orbits
-void BindAttractors(py::module_& m);  // attractors
-void BindPeriodic(py::module_& m);    // periodic
-void BindDesign(py::module_& m);      // design
+void BindSolve(py::module_& m);         // solve, trajectory
+void BindSolveGrid(py::module_& m);     // solve_grid
+void BindSimulate(py::module_& m);      // simulate
+void BindOptimize(py::module_& m);      // optimize
+void BindOrbits(py::module_& m);        // orbits
+void BindAttractors(py::module_& m);    // attractors
+void BindPeriodic(py::module_& m);      // periodic
+void BindDesign(py::module_& m);        // design
+void BindContinuation(py::module_& m);  // continue_branch
 
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin

@@ -48,8 +48,9 @@ ReachOptions ReachFor(const SearchArgs& a, double alpha) {
 }
 
 // The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
-// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, and the
-// exact optima without margins (valid; stable).
+// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, how far
+// T0, e and alpha can move before its motion is lost, and the exact optima without margins
+// (valid; stable).
 py::dict MainJob(const Params& p, const SearchArgs& a) {
   Params exact = p;
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
@@ -57,6 +58,7 @@ py::dict MainJob(const Params& p, const SearchArgs& a) {
   reach_options.Validate();
   OptimizeResult paper, robust, fastest, stable;
   ReachResult reach;
+  GaitRobustness robustness;
   {
     py::gil_scoped_release release;
     paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
@@ -65,10 +67,11 @@ py::dict MainJob(const Params& p, const SearchArgs& a) {
     reach = OptimizeReach(p, robust, reach_options);
     fastest = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
     stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
+    if (robust.found()) robustness = ComputeGaitRobustness(robust.solution.orbit);
   }
-  return py::dict(
-      ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.search.rho_max,
-                                 std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
+  return py::dict(ToPython(
+      json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p, a.search.rho_max,
+                        std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
 }
 // The reach problem: the fastest motion from rest, seeded with the robust gait.
 py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {

@@ -13,6 +13,15 @@ nlohmann::json End(BranchEnd end, const std::string& name, double lambda) {
   return {{"end", BranchEndName(end)}, {name, lambda}};
 }
 
+nlohmann::json Limit(const MotionLimit& l, const std::string& name) {
+  nlohmann::json j = {{"type", l.Name()}, {name, l.parameter}, {"located", l.located}};
+  if (l.special) {
+    j["accuracy"] = l.accuracy;
+    j["multipliers"] = Multipliers(l.motion);
+  }
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json BranchJson(const Branch& b, const std::string& name) {
@@ -57,6 +66,20 @@ nlohmann::json BranchJson(const Branch& b, const std::string& name) {
          {"state", {{"x", m.state.x}, {"u", m.state.u}, {"v", m.state.v}, {"psi", m.state.psi}}},
          {"multipliers", Multipliers(m)},
          {"stable", m.stable}});
+  }
+  return j;
+}
+
+nlohmann::json RobustnessJson(const GaitRobustness& robustness) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ParameterRobustness& p : robustness.parameters) {
+    j[p.name] = {{"value", p.value},
+                 {"from", p.from},
+                 {"to", p.to},
+                 {"status", ContinuationStatusName(p.status)},
+                 {"message", p.message},
+                 {"down", Limit(p.down, p.name)},
+                 {"up", Limit(p.up, p.name)}};
   }
   return j;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "capsubot/continue/continuation.hpp"
+#include "capsubot/continue/gait_robustness.hpp"
 
 namespace capsubot::json {
 
@@ -16,5 +17,11 @@ namespace capsubot::json {
 /// "mean_velocity", "period", "impacts_right", "impacts_left", "state" {x, u, v, psi},
 /// "multipliers", "stable"}]}; `name` is the parameter's name.
 nlohmann::json BranchJson(const Branch& branch, const std::string& name);
+
+/// {name: {"value", "from", "to", "status", "message", "down": limit, "up": limit}} for T0, e,
+/// alpha, each limit {"type": a special point's type or the branch end's ("range_end",
+/// "lost", "max_points"), name: its value, "located", and for a special point "accuracy" and
+/// "multipliers" [[re, im], ...]}.
+nlohmann::json RobustnessJson(const GaitRobustness& robustness);
 
 }  // namespace capsubot::json

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "json/attractors_json.hpp"
+#include "json/continuation_json.hpp"
 #include "json/solution_json.hpp"
 
 namespace capsubot::json {
@@ -105,8 +106,8 @@ nlohmann::json ReachProblemJson(const ReachResult& reach, const Params& params, 
 
 nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& robust,
                            const ReachResult& reach, const OptimizeResult& fastest,
-                           const OptimizeResult& fastest_stable, const Params& params,
-                           double rho_max, double force_bound) {
+                           const OptimizeResult& fastest_stable, const GaitRobustness& robustness,
+                           const Params& params, double rho_max, double force_bound) {
   nlohmann::json j;
   AddRequirementsJson(j, params, rho_max);
   j["force_bound"] = force_bound;
@@ -123,6 +124,7 @@ nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& ro
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = OptimizeResultJson(fastest_stable, "forcing");
   j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
+  j["robustness"] = robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(robustness);
   return j;
 }
 

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/gait_from_rest.hpp"
 #include "capsubot/optimize_reach.hpp"
 #include "capsubot/optimize_result.hpp"
@@ -41,10 +42,12 @@ nlohmann::json ReachProblemJson(const ReachResult& reach, const Params& params, 
 
 /// The main job: the requirements, "force_bound" and the results "paper" (P1 at c = A = T0/2
 /// without margins), "robust" (P2 with the margins, with "from_rest": the reach seed's
-/// check), "reach", "fastest" and "fastest_stable" (P2 without margins), each with a "note".
+/// check), "reach", "fastest" and "fastest_stable" (P2 without margins), each with a "note",
+/// and "robustness": the robust gait's motion continued in T0, e and alpha (RobustnessJson;
+/// null without a robust gait).
 nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& robust,
                            const ReachResult& reach, const OptimizeResult& fastest,
-                           const OptimizeResult& fastest_stable, const Params& params,
-                           double rho_max, double force_bound);
+                           const OptimizeResult& fastest_stable, const GaitRobustness& robustness,
+                           const Params& params, double rho_max, double force_bound);
 
 }  // namespace capsubot::json
