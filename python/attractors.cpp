@@ -49,10 +49,11 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
   mo.chatter_velocity = chatter_velocity;
   mo.max_events_per_period = max_events_per_period;
   fr.attractor.threads = CapThreads(threads);
-  // The progress of the starts is told on this thread, block by block: where Ctrl-C is seen.
+  // The library asks the interrupt on this thread after every block of starts: where Ctrl-C
+  // is seen.
   const Attractors a = RunWithoutGil([&](SignalCheck& check) {
-    return FindAttractors(forcing, params, alpha, fr,
-                          [&check](std::int64_t, std::int64_t) { check.Check(); });
+    fr.attractor.interrupt = check.AsInterrupt();
+    return FindAttractors(forcing, params, alpha, fr);
   });
   return py::dict(ToPython(json::AttractorsJson(a)));
 }

@@ -18,6 +18,7 @@
 
 #include "capsubot/attractors.hpp"
 #include "capsubot/forcing.hpp"
+#include "capsubot/interrupt.hpp"
 
 namespace capsubot::python {
 
@@ -100,11 +101,12 @@ struct Interrupted : std::exception {
   const char* what() const noexcept override { return "interrupted by a Python signal handler"; }
 };
 
-/// The Python signal check of a long library call that runs without the GIL, called from its
-/// progress callbacks or observers. On the thread that called the module (Python runs signal
-/// handlers on the main thread only) and at most every kInterval, it takes the GIL and runs the
-/// pending handlers; it throws Interrupted when one raised. Elsewhere, and in between, it costs
-/// a comparison (a clock read every kStride calls).
+/// The Python signal check of a long library call that runs without the GIL, called as its
+/// Interrupt (AsInterrupt) or from its progress callbacks or observers. On the thread that
+/// called the module (Python runs signal handlers on the main thread only) and at most every
+/// kInterval, it takes the GIL and runs the pending handlers; it throws Interrupted when one
+/// raised. Elsewhere, and in between, it costs a clock read (operator(): a comparison, and a
+/// clock read every kStride calls).
 class SignalCheck {
  public:
   static constexpr std::chrono::milliseconds kInterval{50};
@@ -115,6 +117,11 @@ class SignalCheck {
   }
   /// Checks now (still at most every kInterval): where a call is rare (once per start).
   void Check();
+  /// Check() as the library's Interrupt (capsubot/interrupt.hpp), for the options of a long
+  /// call; valid while this check lives (the call inside RunWithoutGil).
+  Interrupt AsInterrupt() {
+    return [this] { Check(); };
+  }
 
  private:
   const std::thread::id caller_ = std::this_thread::get_id();

@@ -101,10 +101,13 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   DesignResult r;
   DesignFromRestResult best;
   RunWithoutGil([&](SignalCheck& check) {
-    // Design tells its robots on this thread: where Ctrl-C is seen. The from-rest search stops
-    // at its own time limit (reach_seconds).
+    // Design tells its robots on this thread, and the from-rest search asks its interrupts
+    // there: where Ctrl-C is seen.
     r = Design(in, [&check](std::int64_t, std::int64_t) { check.Check(); });
-    if (from_rest) best = DesignFromRest(in, rest);
+    if (!from_rest) return;
+    rest.search.attractor.interrupt = check.AsInterrupt();
+    rest.check.attractor.interrupt = check.AsInterrupt();
+    best = DesignFromRest(in, rest);
   });
   nlohmann::json j = json::DesignJson(r);
   if (from_rest) j["from_rest_best"] = json::FromRestBestJson(in, best);
@@ -150,7 +153,7 @@ constexpr const char* kDesignDoc =
     "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
     "attractors}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL; Ctrl-C interrupts the search of the one-impact gait.";
+    "rule). Runs without the GIL; Ctrl-C interrupts it (KeyboardInterrupt).";
 
 }  // namespace
 

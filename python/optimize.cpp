@@ -23,13 +23,21 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The search the caller asks for, and the check from rest of every gait and the reach search.
+// The search the caller asks for, and the check from rest of every gait and the reach search;
+// search.interrupt is asked by every stage of the run.
 struct SearchArgs {
   SearchRequest search;
   std::string from_rest_starts, reach_starts;
   int reach_evaluations, reach_local_evaluations;
   double reach_seconds;
   int threads;
+
+  // The full check from rest of a gait, asking the run's interrupt.
+  FromRestOptions Check() const {
+    FromRestOptions check = FromRestCheck(from_rest_starts, threads);
+    check.attractor.interrupt = search.interrupt;
+    return check;
+  }
 };
 
 // The reach search (docs/model.md section 13): its grid and budgets, the full check from rest,
@@ -40,74 +48,53 @@ ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   r.alpha = alpha;
   ParseStarts("reach_starts", a.reach_starts, r.search);
   r.search.attractor.threads = CapThreads(a.threads);
-  r.check = FromRestCheck(a.from_rest_starts, a.threads);
+  r.search.attractor.interrupt = a.search.interrupt;
+  r.check = a.Check();
   r.global_evaluations = a.reach_evaluations;
   r.local_evaluations = a.reach_local_evaluations;
   r.max_seconds = a.reach_seconds;
+  r.Validate();
   return r;
 }
 
 // The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
 // (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, and the
 // exact optima without margins (valid; stable).
-py::dict MainJob(const Params& p, const SearchArgs& a) {
+nlohmann::json MainJob(const Params& p, const SearchArgs& a) {
   Params exact = p;
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   const ReachOptions reach_options = ReachFor(a, kNaN);
-  reach_options.Validate();
-  OptimizeResult paper, robust, fastest, stable;
-  ReachResult reach;
-  {
-    py::gil_scoped_release release;
-    paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
-                          PhaseOptionsFor(a.search.WithRhoMax(kInf)));
-    robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-    reach = OptimizeReach(p, robust, reach_options);
-    fastest = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
-    stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
-  }
-  return py::dict(
-      ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.search.rho_max,
-                                 std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
-}
-// The reach problem: the fastest motion from rest, seeded with the robust gait.
-py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
-  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
-  options.Validate();
-  ReachResult reach;
-  {
-    py::gil_scoped_release release;
-    const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-    reach = OptimizeReach(p, robust, options);
-  }
-  return py::dict(ToPython(json::ReachProblemJson(reach, p, a.search.rho_max)));
+  const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
+                                             PhaseOptionsFor(a.search.WithRhoMax(kInf)));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
+  const ReachResult reach = OptimizeReach(p, robust, reach_options);
+  const OptimizeResult fastest =
+      OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
+  const OptimizeResult stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
+  return json::MainJobJson(paper, robust, reach, fastest, stable, p, a.search.rho_max,
+                           std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound);
 }
 
-py::dict Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                 const Params& p, const SearchArgs& a) {
-  const FromRestOptions check = FromRestCheck(a.from_rest_starts, a.threads);
+// The reach problem: the fastest motion from rest, seeded with the robust gait.
+nlohmann::json Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
+  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
+  return json::ReachProblemJson(OptimizeReach(p, robust, options), p, a.search.rho_max);
+}
+
+nlohmann::json Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
+                       const Params& p, const SearchArgs& a) {
+  const FromRestOptions check = a.Check();
   OptimizeResult r;
   if (problem == "phase") {
-    if (!A || !c) {
-      throw std::invalid_argument(
-          "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)");
-    }
-    const Forcing shape = Forcing::Harmonic(*A, *c, 0.0);
-    py::gil_scoped_release release;
-    r = OptimizePhase(shape, p, PhaseOptionsFor(a.search));
+    r = OptimizePhase(Forcing::Harmonic(*A, *c, 0.0), p, PhaseOptionsFor(a.search));
   } else if (problem == "forcing") {
-    py::gil_scoped_release release;
     r = OptimizeForcing(p, ForcingOptionsFor(a.search));
   } else {
-    py::gil_scoped_release release;
     r = OptimizeFourier(p, FourierOptionsFor(a.search));
   }
-  GaitFromRest from_rest;
-  {
-    py::gil_scoped_release release;
-    from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
-  }
-  return py::dict(ToPython(json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max)));
+  const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
+  return json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max);
 }
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
@@ -126,6 +113,10 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   }
   if (problem == "phase" && a.search.starts) {
     reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
+  }
+  if (problem == "phase" && (!A || !c)) {
+    throw std::invalid_argument(
+        "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)");
   }
 }
 
@@ -174,8 +165,12 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   RejectUnused(name, A, c, alpha, args);
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
-  if (name.empty()) return MainJob(params, args);
-  return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
+  const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
+    args.search.interrupt = signals.AsInterrupt();
+    if (name.empty()) return MainJob(params, args);
+    return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
+  });
+  return py::dict(ToPython(result));
 }
 
 constexpr const char* kOptimizeDoc =
@@ -229,7 +224,8 @@ constexpr const char* kOptimizeOptionsDoc =
     "e, the margins, rho_max, force_bound and the results paper, robust (with from_rest), "
     "reach, fastest, fastest_stable (each but reach with a note).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL (other Python threads go on).\n\n";
+    "rule). Runs without the GIL (other Python threads go on); Ctrl-C interrupts it "
+    "(KeyboardInterrupt).\n\n";
 
 }  // namespace
 

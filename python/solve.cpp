@@ -45,7 +45,8 @@ constexpr const char* kSolveReturnsDoc =
     "orbit checked from rest on from_rest_starts (the dict of attractors() plus reached, the "
     "starts that end on the orbit, and summary; None without an orbit).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). The check from rest runs without the GIL.\n\n";
+    "rule). The check from rest runs without the GIL; Ctrl-C interrupts it "
+    "(KeyboardInterrupt).\n\n";
 
 constexpr const char* kTrajectoryDoc =
     "The state along one period of the one-impact orbit, as `capsubot solve --trajectory`: "
@@ -73,8 +74,11 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
   const Solution s = capsubot::Solve(forcing, params);
   GaitFromRest from_rest;
   if (stability) {
-    py::gil_scoped_release release;
-    from_rest = CheckGaitFromRest(s.orbit, params, check);
+    from_rest = RunWithoutGil([&](SignalCheck& signals) {
+      FromRestOptions o = check;
+      o.attractor.interrupt = signals.AsInterrupt();
+      return CheckGaitFromRest(s.orbit, params, o);
+    });
   }
   return py::dict(ToPython(json::SolveJson(s, stability, from_rest)));
 }

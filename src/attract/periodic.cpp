@@ -63,14 +63,30 @@ MotionOptions SimulationOf(const ShootingOptions& o) {
   return mo;
 }
 
+// Asks the interrupt at every forcing period of a run (the transient, however long): an
+// observer changes nothing in the run it watches.
+class InterruptObserver : public SimObserver {
+ public:
+  explicit InterruptObserver(const Interrupt& interrupt) : interrupt_(interrupt) {}
+  void OnPeriods(std::int64_t) override { Poll(interrupt_); }
+
+ private:
+  const Interrupt& interrupt_;
+};
+
 class Shooter {
  public:
   Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : forcing_(forcing), params_(params), alpha_(alpha), motion_(SimulationOf(o)) {}
+      : forcing_(forcing),
+        params_(params),
+        alpha_(alpha),
+        motion_(SimulationOf(o)),
+        interrupt_(o.interrupt) {}
 
-  // P^p(z): false if the simulation hit the work bound.
+  // P^p(z): false if the simulation hit the work bound. Asks the interrupt first.
   bool Map(const PhaseState& z, int p, detail::MapState* out, double* displacement = nullptr,
            detail::Recorder* recorder = nullptr) {
+    Poll(interrupt_);
     *out = {z, SimMode::kRest};
     const SimResult r =
         detail::Advance(forcing_, params_, alpha_, motion_, *out, p, displacement, recorder);
@@ -124,6 +140,7 @@ class Shooter {
   const Params& params_;
   double alpha_;
   MotionOptions motion_;
+  Interrupt interrupt_;
 };
 
 double Residual(const Vec3& z, const PhaseState& image) {
@@ -349,8 +366,9 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   PeriodicMotion fail;
   fail.status = ShootingStatus::kEventLimit;
   const MotionOptions mo = SimulationOf(options);
+  InterruptObserver watch(options.interrupt);
   if (options.transient > 0 &&
-      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
+      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr, &watch).status ==
           SimStatus::kEventLimit) {
     return fail;
   }
