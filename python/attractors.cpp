@@ -59,7 +59,8 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
 }
 
 constexpr const char* kAttractorsDoc =
-    "What the robot does from rest (docs/model.md sections 12 and 13): the exact simulator is "
+    "What the robot does from rest (capsubot documentation, model sections 12 and 13): the "
+    "exact simulator is "
     "started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/n_x and the "
     "forcing at phase psi = 2 pi j/n_psi; after a transient the long-run motion of each start "
     "is classified (period, impacts, mean velocity) and equal motions are grouped into "

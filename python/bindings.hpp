@@ -50,9 +50,10 @@ struct ForcingArgs {
 
 /// The units every docstring refers to (docs/model.md section 2).
 inline constexpr const char* kUnits =
-    "Units (dimensionless, docs/model.md section 2): phases in rad (period tau = 2 pi, phi = 0 "
-    "at the impact on the right wall); positions in L (walls at x = 0 and x = 1); velocities "
-    "in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = m2/(m1+m2).";
+    "Units (dimensionless; capsubot documentation, model section 2): phases in rad (period "
+    "tau = 2 pi, phi = 0 at the impact on the right wall); positions in L (walls at x = 0 and "
+    "x = 1); velocities in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = "
+    "m2/(m1+m2).";
 
 /// The docstring lines of the force arguments shared by several functions.
 inline constexpr const char* kForcingArgsDoc =
@@ -91,7 +92,7 @@ inline constexpr const char* kDefaultReachStarts = "4x4";
 /// The docstring lines of the from-rest check (from_rest_starts, threads).
 inline constexpr const char* kFromRestArgsDoc =
     "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"
-    "            (docs/model.md section 12; key from_rest)\n"
+    "            (capsubot documentation, model section 12; key from_rest)\n"
     "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
     "            are lowered to that); the result does not depend on it\n";
 
@@ -151,7 +152,8 @@ py::object ToPython(const nlohmann::json& value);
 inline constexpr const char* kMarginArgsDoc =
     "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
     "    margin_stroke  clearance relative to the stroke d_s: the clearance from both walls is\n"
-    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)\n"
+    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (capsubot\n"
+    "            documentation, model section 12)\n"
     "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
 
 }  // namespace capsubot::python

@@ -174,8 +174,9 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
 }
 
 constexpr const char* kOptimizeDoc =
-    "The fastest one-impact gait (docs/model.md section 7) with the margins of a robust gait "
-    "(section 12), every gait checked from rest, or the fastest motion from rest (section 13): "
+    "The fastest one-impact gait (capsubot documentation, model section 7) with the margins of a "
+    "robust gait (section 12), every gait checked from rest, or the fastest motion from rest "
+    "(section 13): "
     "the object `capsubot optimize [--problem <problem>] --json` prints for the same arguments "
     "(same defaults), without its provenance.\n\n"
     "Arguments (keyword only, named as the options of `capsubot optimize`):\n"
@@ -192,8 +193,8 @@ constexpr const char* kOptimizeDoc =
 constexpr const char* kOptimizeOptionsDoc =
     "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
     "            [force]; None: T0\n"
-    "    rho_max largest spectral radius of the impact map (docs/model.md sections 8, 12);\n"
-    "            float('inf'): no stability requirement; None: 0.9\n"
+    "    rho_max largest spectral radius of the impact map (capsubot documentation, model\n"
+    "            sections 8, 12); float('inf'): no stability requirement; None: 0.9\n"
     "    stable  the same as rho_max = 1 (not with rho_max)\n"
     "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
     "    harmonics  number K of harmonics of the Fourier force (fourier), 1..16\n"
@@ -220,7 +221,7 @@ constexpr const char* kOptimizeOptionsDoc =
     "'no_valid_orbit' the orbit is the point nearest to validity. For reach: A, c, phi0, "
     "alpha, mean_velocity (over the starts from rest), status, message, attractors, summary, "
     "spread, seed_won, robust_to_settings, evaluations, rejected_evaluations, "
-    "algorithm, seed and the requirements (docs/reach.md). For the main job: T0, "
+    "algorithm, seed and the requirements (capsubot documentation, reach). For the main job: T0, "
     "e, the margins, rho_max, force_bound and the results paper, robust (with from_rest), "
     "reach, fastest, fastest_stable (each but reach with a note).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "

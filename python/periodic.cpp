@@ -1,5 +1,5 @@
 // periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of the
-// stroboscopic map, with its multipliers (docs/model.md section 13), as
+// stroboscopic map, with its multipliers (capsubot documentation, model section 13), as
 // `capsubot periodic --json`.
 
 #include "capsubot/periodic.hpp"
@@ -75,8 +75,8 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
 
 constexpr const char* kPeriodicDoc =
     "A periodic motion of any kind (several impacts, both walls, period p) found exactly by "
-    "Newton's method on the p-th iterate of the stroboscopic map (docs/model.md section 13), "
-    "with its multipliers: the dict `capsubot periodic --json` prints.\n\n"
+    "Newton's method on the p-th iterate of the stroboscopic map (capsubot documentation, model "
+    "section 13), with its multipliers: the dict `capsubot periodic --json` prints.\n\n"
     "Arguments (keyword only, named as the options of `capsubot periodic`):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n"
     "            (required for the harmonic force; default 0 for a Fourier force)\n";

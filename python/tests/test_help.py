@@ -1,4 +1,5 @@
-"""The type stubs (python/capsubot.pyi, installed as capsubot-stubs) describe the module as it
+"""What an installed user reads, who has no source tree: the docstrings point to no file of it,
+and the type stubs (python/capsubot.pyi, installed as capsubot-stubs) describe the module as it
 is: the same public names, and for every function the same keyword-only parameters, in the same
 order, with the same defaults, and a return type of the same kind. The module's side is read
 from the signature pybind11 writes on the first line of each docstring."""
@@ -6,6 +7,7 @@ from the signature pybind11 writes on the first line of each docstring."""
 import ast
 import math
 import pathlib
+import re
 
 import pytest
 
@@ -62,6 +64,18 @@ def outer_type(annotation):
     """dict for `dict` or `dict[str, Any]`, list for `list[...]`."""
     node = annotation.value if isinstance(annotation, ast.Subscript) else annotation
     return ast.unparse(node)
+
+
+# A path into the source tree ("docs/model.md", "results/", "examples/robot.toml") or a file
+# of it by name.
+SOURCE_FILE = re.compile(
+    r"\b(docs|results|examples|scripts|python|src|include|tests)/|\.(md|cpp|hpp)\b|README")
+
+
+@pytest.mark.parametrize("name", ["capsubot"] + module_functions())
+def test_docstrings_point_to_no_file_of_the_source_tree(name):
+    doc = capsubot.__doc__ if name == "capsubot" else getattr(capsubot, name).__doc__
+    assert [m.group(0) for m in SOURCE_FILE.finditer(doc)] == []
 
 
 def test_stubs_and_module_have_the_same_public_names():
