@@ -176,9 +176,8 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
 constexpr const char* kOptimizeDoc =
     "The fastest one-impact gait (capsubot documentation, model section 7) with the margins of a "
     "robust gait (section 12), every gait checked from rest, or the fastest motion from rest "
-    "(section 13): "
-    "the object `capsubot optimize [--problem <problem>] --json` prints for the same arguments "
-    "(same defaults), without its provenance.\n\n"
+    "(section 13): the object `capsubot optimize [--problem <problem>] --json` prints for the "
+    "same arguments (same defaults), without its provenance.\n\n"
     "Arguments (keyword only, named as the options of `capsubot optimize`):\n"
     "    problem 'phase' (P1: the best impact phase phi0 for the force shape A, c), 'forcing'\n"
     "            (P2: the best A, c, phi0 with A + c <= bound), 'fourier' (P3: the best\n"

@@ -1,5 +1,5 @@
 // periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of the
-// stroboscopic map, with its multipliers (capsubot documentation, model section 13), as
+// stroboscopic map, with its multipliers (docs/model.md section 13), as
 // `capsubot periodic --json`.
 
 #include "capsubot/periodic.hpp"
