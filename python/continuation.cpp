@@ -121,7 +121,7 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
   o.shooting.step = step;
   o.shooting.chatter_velocity = chatter_velocity;
   const Branch branch = RunWithoutGil([&](SignalCheck& check) {
-    o.poll = [&check] { check.Check(); };
+    o.interrupt = check.AsInterrupt();
     return ContinueParameter(forcing, params, alpha, param, start, o);
   });
   return BranchDict(json::BranchJson(branch, param));

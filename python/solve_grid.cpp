@@ -351,7 +351,7 @@ constexpr const char* kSolveGridDoc =
     "    phi0    motor phase at the impact [rad]\n";
 
 constexpr const char* kSolveGridOptionsDoc =
-    "    stability  also spectral_radius and stable (docs/model.md section 8)\n"
+    "    stability  also spectral_radius and stable (capsubot documentation, model section 8)\n"
     "    threads number of threads, 1..1024 (more than 4 per core are lowered to that); None:\n"
     "            all cores\n\n"
     "Returns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "

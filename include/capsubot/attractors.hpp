@@ -20,6 +20,7 @@
 
 #include "capsubot/blocks.hpp"
 #include "capsubot/forcing.hpp"
+#include "capsubot/interrupt.hpp"
 #include "capsubot/orbit.hpp"
 #include "capsubot/params.hpp"
 #include "capsubot/simulator.hpp"
@@ -148,6 +149,9 @@ struct AttractorOptions {
   /// of the orbit's state (x, u, v, units of L and omega L); > 0.
   double orbit_tolerance = 1e-6;
   int threads = 0;  ///< worker threads; 0: all cores. The result does not depend on it.
+  /// Asked on the calling thread after every block of starts (interrupt.hpp); throws to
+  /// abandon the run (the worker threads finish their blocks first).
+  Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
@@ -203,8 +207,9 @@ std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params,
 using MotionSink = std::function<void(std::int64_t begin, std::int64_t end, const Motion* motions)>;
 
 /// LongRunMotions of starts [first, starts.size()) handed to `sink` block by block as they are
-/// done (a writer streams them to a file; what `sink` throws stops the run and is rethrown).
-/// The motions do not depend on `first`, the backend or the threads. Throws
+/// done (a writer streams them to a file; what `sink` throws stops the run and is rethrown),
+/// options.interrupt asked after each. The motions do not depend on `first`, the backend or
+/// the threads. Throws
 /// std::invalid_argument for bad inputs (naming the field) before any call of `sink`.
 void StreamLongRunMotions(const Forcing& forcing, const Params& params, double alpha,
                           const std::vector<PhaseState>& starts, const AttractorOptions& options,

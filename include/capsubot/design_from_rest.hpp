@@ -128,7 +128,9 @@ using DesignFromRestProgress =
 
 /// The fastest motion reached from rest in each direction over m2 in [M2Min, M2Max] (and f in
 /// the frequency range). The margins and rho_max of the input do not apply (they are those of
-/// the one-impact gait). Throws std::invalid_argument for invalid input or options.
+/// the one-impact gait). Throws std::invalid_argument for invalid input or options. Every
+/// evaluation asks options.search.attractor.interrupt, the re-checks
+/// options.check.attractor.interrupt (interrupt.hpp): set both to abandon the run from outside.
 DesignFromRestResult DesignFromRest(const DesignInput& input,
                                     const DesignFromRestOptions& options = {},
                                     const DesignFromRestProgress& progress = {});

@@ -5,6 +5,8 @@
 
 #include <limits>
 
+#include "capsubot/interrupt.hpp"
+
 namespace capsubot {
 
 /// The margins of a robust gait (docs/model.md section 12), reported when the optimum touches
@@ -42,6 +44,8 @@ struct OptimizeOptions {
   /// A constraint is reported active when its slack is at most this (units of L, or of T0
   /// when T0 < 1, for positions; of T0 for forces; plain for alpha and rho); >= 0.
   double active_tol = 1e-7;
+  /// Asked at every evaluation of the objective (interrupt.hpp); throws to abandon the run.
+  Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

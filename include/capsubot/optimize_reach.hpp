@@ -83,6 +83,9 @@ struct ReachOptions {
   /// The seed's stick margin s (Params::stick_margin for its P2); 0 <= seed_stick_margin < 1.
   double seed_stick_margin = kRobustStickMargin;
 
+  // Defined out of line: GCC 12 misreads the value-initialised temporaries of this aggregate
+  // (its interrupts "may be used uninitialized").
+  ReachOptions();
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
 };
@@ -135,11 +138,14 @@ struct ReachResult {
 
 /// The fastest motion from rest with A + c <= bound, seeded by the robust P2 gait (computed
 /// with options.seed_design on params with the seed's margins). Throws std::invalid_argument
-/// for bad params or options.
+/// for bad params or options. Every evaluation asks options.search.attractor.interrupt, the
+/// re-checks options.check.attractor.interrupt, the seed's P2 options.seed_design.interrupt
+/// (interrupt.hpp): set all three to abandon the run from outside.
 ReachResult OptimizeReach(const Params& params, const ReachOptions& options = {});
 
 /// The same, seeded by a given P2 result (e.g. one already computed by the caller; its force
 /// must be of the paper's family). Without a valid seed the search still runs, from the box.
+/// It asks the interrupts of options.search and options.check.
 ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                           const ReachOptions& options = {});
 

@@ -33,6 +33,8 @@ struct SearchRequest {
   int hops = ForcingDesignOptions{}.hops;
   /// Harmonics K of P3's force.
   int harmonics = FourierOptions{}.harmonics;
+  /// Asked by every problem built from the request (OptimizeOptions::interrupt).
+  Interrupt interrupt;
 
   /// The same request with another stability requirement (the exact optima: inf, or 1).
   SearchRequest WithRhoMax(double other) const {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "capsubot/attractors.hpp"
+#include "capsubot/interrupt.hpp"
 
 namespace capsubot {
 
@@ -34,6 +35,9 @@ struct ShootingOptions {
   /// The simulator's reuse of located events along repeated cycles
   /// (SimOptions::reuse_cycles): the same results bit for bit; false only to time the search.
   bool reuse_cycles = true;
+  /// Asked before every evaluation of the map and at every period of the transient
+  /// (interrupt.hpp); throws to abandon the run.
+  Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

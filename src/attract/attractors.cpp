@@ -166,6 +166,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
                 block.resize(count);
                 std::memcpy(static_cast<void*>(block.data()), bytes.data(), bytes.size());
                 sink(begin, end, block.data());
+                Poll(options.interrupt);  // here, on the calling thread: never on a worker
               });
 }
 

@@ -36,13 +36,27 @@ constexpr double kSameOrbitTol = 1e-9;
 
 using detail::Vec3;
 
+// Asks the interrupt at every forcing period of a run (the transient, however long): an
+// observer changes nothing in the run it watches.
+class InterruptObserver : public SimObserver {
+ public:
+  explicit InterruptObserver(const Interrupt& interrupt) : interrupt_(interrupt) {}
+  void OnPeriods(std::int64_t) override { Poll(interrupt_); }
+
+ private:
+  const Interrupt& interrupt_;
+};
+
 class Shooter {
  public:
   Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : map_(forcing, params, alpha, detail::SimulationOf(o)) {}
+      : map_(forcing, params, alpha, detail::SimulationOf(o)), interrupt_(o.interrupt) {}
 
-  // P^p(z): false if the simulation hit the work bound.
-  bool Map(const PhaseState& z, int p, detail::MapState* out) const { return map_.Map(z, p, out); }
+  // P^p(z): false if the simulation hit the work bound. Asks the interrupt first.
+  bool Map(const PhaseState& z, int p, detail::MapState* out) const {
+    Poll(interrupt_);
+    return map_.Map(z, p, out);
+  }
   const detail::PeriodMap& map() const { return map_; }
 
   // The section: events of `periods` periods from s, then s moved to the middle of their
@@ -83,6 +97,7 @@ class Shooter {
 
  private:
   detail::PeriodMap map_;
+  Interrupt interrupt_;
 };
 
 PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptions& o) {
@@ -253,8 +268,9 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   PeriodicMotion fail;
   fail.status = ShootingStatus::kEventLimit;
   const MotionOptions mo = detail::SimulationOf(options);
+  InterruptObserver watch(options.interrupt);
   if (options.transient > 0 &&
-      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
+      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr, &watch).status ==
           SimStatus::kEventLimit) {
     return fail;
   }

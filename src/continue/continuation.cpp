@@ -102,7 +102,7 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
   const std::int64_t max_attempts = static_cast<std::int64_t>(budget + 1) * halvings;
   for (std::int64_t attempt = 0; static_cast<int>(out.nodes.size()) < budget; ++attempt) {
     if (attempt >= max_attempts) break;
-    if (o.poll) o.poll();
+    Poll(o.interrupt);
     Node b;
     Vec4 beyond;
     Outcome r = Step(system, a, h, o, &b, &beyond);

@@ -21,7 +21,8 @@ struct BoxPoint {
 /// (clamped into the box): at most `evaluations` calls and `seconds` of wall-clock time,
 /// relative tolerance `rel_tol` on y and on the value, initial step `step_fraction` of each
 /// side. Never throws for NLopt's outcomes: they are the status (and `message` for an
-/// exception NLopt threw).
+/// exception NLopt threw); what `objective` throws (an Interrupt) is thrown again once NLopt
+/// stopped.
 OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, void* data,
                              const std::vector<double>& lower, const std::vector<double>& upper,
                              std::vector<double> y0, int evaluations, double seconds,

@@ -64,6 +64,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   }
   detail::Tracker tracker;
   tracker.deadline = detail::Deadline(options.harmonic.max_time);
+  tracker.interrupt = options.harmonic.interrupt;
   const OptimizeResult harmonic = OptimizeForcing(params, options.harmonic);
   detail::Pipeline pipeline;
   const double bound = detail::SetUpPipeline(pipeline, params, options.harmonic);

@@ -141,6 +141,8 @@ ForcingDesignOptions RobustSeedDesign() {
   return d;
 }
 
+ReachOptions::ReachOptions() = default;
+
 void ReachOptions::Validate() const {
   Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
           fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",

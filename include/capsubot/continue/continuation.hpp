@@ -26,6 +26,7 @@
 
 #include "capsubot/attractors.hpp"
 #include "capsubot/forcing.hpp"
+#include "capsubot/interrupt.hpp"
 #include "capsubot/params.hpp"
 #include "capsubot/periodic.hpp"
 
@@ -63,10 +64,9 @@ struct ContinuationOptions {
   /// The start's Newton shooting (max_period: the period is found there) and the simulator's
   /// settings along the branch (step: the finite-difference step of every Jacobian).
   ShootingOptions shooting;
-  /// Called once per attempted step (a few simulated periods apart, about a millisecond); what
-  /// it throws stops the continuation and is rethrown (a caller's progress report or
-  /// cancellation). Optional.
-  std::function<void()> poll;
+  /// Asked once per attempted step (a few simulated periods apart, about a millisecond); what
+  /// it throws stops the continuation and is rethrown (capsubot/interrupt.hpp). Optional.
+  Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
