@@ -8,7 +8,6 @@
 #include <string>
 
 #include "attract_options.hpp"
-#include "capsubot/bifurcation.hpp"
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/io.hpp"
 #include "capsubot/robot_orbits.hpp"
@@ -89,8 +88,8 @@ void WriteBranchCsv(const Branch& b, const std::string& name, const std::string&
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   int harmonic = 0;
-  const BifurcationParam param = ParseBifurcationParam(opt.param, &harmonic);
-  CheckBifurcationParam(forcing, param, harmonic);
+  const ModelParameter param = ParseRobotParameter(opt.param, &harmonic);
+  CheckRobotParameter(forcing, param, harmonic);
   int given = 0;
   for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
   if (opt.from_orbit && given > 0) {
@@ -106,7 +105,8 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
       opt.from_orbit ? OrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
   RequirePhase("psi", start.psi);
   ContinuationOptions o = opt.continuation;
-  o.start = BifurcationParamValue(param, harmonic, forcing, opt.robot.params, opt.robot.alpha);
+  const RobotModel base{forcing, opt.robot.params, opt.robot.alpha};
+  o.start = ParameterValue(base, param, harmonic);
   ContinuationOptions range = o;  // the options' own rules first, the start's value aside
   range.start = o.from;
   range.Validate();
@@ -116,10 +116,9 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
         "branch starts at the robot's value)",
         opt.param, o.start, o.from, opt.param, o.to));
   }
-  const RobotModel base{forcing, opt.robot.params, opt.robot.alpha};
   const RobotFamily family = [&](double value) {
     RobotModel r = base;
-    SetBifurcationParam(param, harmonic, value, r.forcing, r.params, r.alpha);
+    SetParameter(r, param, harmonic, value);
     return r;
   };
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
