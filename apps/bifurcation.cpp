@@ -43,7 +43,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
   BifurcationOptions o = opt.diagram;
   o.threads = CapThreads(o.threads, "capsubot bifurcation");
-  o.param = ParseBifurcationParam(opt.param, &o.harmonic);
+  o.param = ParseRobotParameter(opt.param, &o.harmonic);
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);
   o.analytic = !opt.no_analytic && !opt.summary.empty();
@@ -58,7 +58,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   if (two) {
     const GridAxis axis = ParseGridAxis(opt.over);
     over_name = axis.name();
-    o.over = ParseBifurcationParam(over_name, &o.over_harmonic);
+    o.over = ParseRobotParameter(over_name, &o.over_harmonic);
     if (axis.size() > kMaxOverValues) {  // before the values are held
       throw std::invalid_argument(
           fmt::format("--over = {} is invalid: {} values: expected at most {} values", opt.over,
@@ -72,8 +72,8 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   RequireShardForResume(cmd, sharded, "study");
   RequireCheckpointSeconds(opt.checkpoint_seconds);
   double alpha = opt.robot.alpha;
-  if (o.param == BifurcationParam::kAlpha) alpha = o.from;  // the swept value decides
-  if (two && o.over == BifurcationParam::kAlpha) alpha = o.over_values.front();
+  if (o.param == ModelParameter::kalpha) alpha = o.from;  // the swept value decides
+  if (two && o.over == ModelParameter::kalpha) alpha = o.over_values.front();
   if (std::isnan(alpha)) {
     throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
   }

@@ -130,7 +130,7 @@ void RejectConflicts(const SweepCliOptions& opt, const CLI::App& cmd) {
           fmt::format("{} = {} is invalid with --grid {}: expected the value from only one of them",
                       flag, option->as<std::string>(), axis.ToString()));
     }
-    if (axis.parameter == SweepParameter::krho_max && cmd.count("--stable-only") > 0) {
+    if (axis.parameter == ModelParameter::krho_max && cmd.count("--stable-only") > 0) {
       throw std::invalid_argument(fmt::format(
           "--stable-only (rho_max = 1) is invalid with --grid {}: expected the value from only "
           "one of them",
@@ -155,14 +155,14 @@ void BuildForcing(SweepCliOptions& opt) {
   const Grid& g = s.grid;
   if (ChoosesTheForce(s.optimize)) return;
   // A gridded A or c needs no option: the grid gives its value at every point.
-  if (g.Has(SweepParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
-  const bool phase_given_elsewhere = g.Has(SweepParameter::kphi0) ||
-                                     g.Has(SweepParameter::kalpha) ||
+  if (g.Has(ModelParameter::kc) && std::isnan(opt.forcing.c)) opt.forcing.c = 0.0;
+  const bool phase_given_elsewhere = g.Has(ModelParameter::kphi0) ||
+                                     g.Has(ModelParameter::kalpha) ||
                                      s.optimize == SweepOptimize::kPhase;
   if (std::isnan(opt.forcing.c)) {
     throw std::invalid_argument("option --c is missing: give the mean force c (or --grid c=...)");
   }
-  const bool amplitude_elsewhere = g.Has(SweepParameter::kA) || g.Has(SweepParameter::ksin, 1);
+  const bool amplitude_elsewhere = g.Has(ModelParameter::kA) || g.Has(ModelParameter::ksin, 1);
   if (amplitude_elsewhere && opt.forcing.fourier_option->count() == 0 &&
       opt.forcing.A_option->count() == 0) {
     s.forcing = Forcing::Harmonic(0.0, opt.forcing.c,
@@ -175,7 +175,7 @@ void BuildForcing(SweepCliOptions& opt) {
   } else {
     s.forcing = opt.forcing.Build(!phase_given_elsewhere);
   }
-  if ((s.optimize == SweepOptimize::kPhase || g.Has(SweepParameter::kalpha)) &&
+  if ((s.optimize == SweepOptimize::kPhase || g.Has(ModelParameter::kalpha)) &&
       opt.forcing.phi0_option->count() > 0) {
     throw std::invalid_argument(
         fmt::format("--phi0 = {} is invalid with {}: expected no --phi0 (the sweep finds phi0)",
@@ -312,7 +312,7 @@ Command AddSweepCommand(CLI::App& app) {
                   "an axis: name=lo:hi:n (n >= 1 equally spaced values from lo to hi inclusive; "
                   "lo, hi may be pi or -pi), name=lo:hi:n:log (geometric, lo, hi > 0) or "
                   "name=v1,v2,... (a list). name: " +
-                      SweepParameterNames() + ". Any number of axes (at most " +
+                      ModelParameterNames() + ". Any number of axes (at most " +
                       std::to_string(kMaxGridPoints) +
                       " points in all), the first slowest. alpha (robot mode) finds every "
                       "orbit of the robot with that mass ratio: one row per orbit, with columns "

@@ -14,31 +14,9 @@
 
 #include "capsubot/attractors.hpp"
 #include "capsubot/blocks.hpp"
+#include "capsubot/model/model_parameter.hpp"
 
 namespace capsubot {
-
-/// The parameter of a diagram. kCos and kSin are the Fourier coefficients a_k and b_k of the
-/// force F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)) (forcing.hpp), with k in
-/// BifurcationOptions::harmonic; the paper's family has a_1 = 0, b_1 = A.
-enum class BifurcationParam { kA, kC, kAlpha, kT0, kE, kPhi0, kCos, kSin };
-
-/// "A", "c", "alpha", "T0", "e", "phi0", and "a3", "b1", ... for kCos and kSin with harmonic k
-/// (as `sweep` names them).
-std::string BifurcationParamName(BifurcationParam param, int harmonic = 0);
-/// The parse of such a name; `harmonic` (if given) receives k of a_k and b_k, else 0. Throws
-/// std::invalid_argument naming the value and the choices.
-BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic = nullptr);
-
-/// Throws std::invalid_argument when `param` cannot be set on `forcing`: A needs the harmonic
-/// family, a_k and b_k a force with at least k harmonics (the message names the parameter).
-void CheckBifurcationParam(const Forcing& forcing, BifurcationParam param, int harmonic);
-/// Sets `param` (harmonic k of a_k, b_k) to `value` on the robot (forcing, params, alpha), the
-/// other inputs kept: the robot at one value of a diagram's parameter.
-void SetBifurcationParam(BifurcationParam param, int harmonic, double value, Forcing& forcing,
-                         Params& params, double& alpha);
-/// The robot's value of `param` (the inverse of SetBifurcationParam).
-double BifurcationParamValue(BifurcationParam param, int harmonic, const Forcing& forcing,
-                             const Params& params, double alpha);
 
 /// The most values of the second parameter of a study (BifurcationOptions::over_values): its
 /// plan holds a few hundred bytes per value before the first row.
@@ -47,8 +25,9 @@ inline constexpr std::int64_t kMaxOverValues = 100000;
 struct BifurcationOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  BifurcationParam param = BifurcationParam::kT0;  ///< the parameter stepped (A: harmonic force)
-  /// k of a_k (kCos) or b_k (kSin): 1 <= k <= the force's harmonics K; 0 for the others.
+  /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
+  ModelParameter param = ModelParameter::kT0;
+  /// k of a_k (kcos) or b_k (ksin): 1 <= k <= the force's harmonics K; 0 for the others.
   int harmonic = 0;
   double from = kNaN;                      ///< first value (finite)
   double to = kNaN;                        ///< last value (finite; may be below `from`)
@@ -64,8 +43,8 @@ struct BifurcationOptions {
   /// of over_values in turn, the other inputs kept); empty: one diagram, no second parameter.
   /// At most kMaxOverValues values.
   std::vector<double> over_values;
-  BifurcationParam over = BifurcationParam::kC;  ///< the second parameter (not `param`)
-  int over_harmonic = 0;                         ///< k of a_k, b_k when `over` is one, else 0
+  ModelParameter over = ModelParameter::kc;  ///< the second parameter (not `param`)
+  int over_harmonic = 0;                     ///< k of a_k, b_k when `over` is one, else 0
   /// Compute only shard `shard` of `shards` (0 <= shard < shards <= the continuations): the
   /// continuations q with q % shards = shard, q = i * D + d for over value i and direction d
   /// (D = 2 up and down, else 1; d = 0 up), with the analytic orbits of the values i whose

@@ -164,6 +164,16 @@ class Forcing {
   static Forcing Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
                          double phi0);
 
+  /// The same series with its mean c replaced, as Fourier(c, a, b, phi0()) builds it (phi0
+  /// reduced) without the lists: no allocation. Throws std::invalid_argument for a c that is
+  /// not finite.
+  Forcing WithMean(double c) const;
+  /// The same series with a_k (WithCosine) or b_k (WithSine) replaced, 1 <= k <= harmonics(),
+  /// as Fourier builds it (phi0 reduced): no allocation. Throws std::invalid_argument for a
+  /// coefficient that is not finite or a k out of range.
+  Forcing WithCosine(int k, double a_k) const;
+  Forcing WithSine(int k, double b_k) const;
+
   /// The same motor with the impact at motor phase phi0 instead (cheap: O(K)). phi0 is kept
   /// as given (the simulator's shifts phi0 + psi stay within two turns and keep their bits);
   /// |phi0| > kMaxPhase throws std::invalid_argument (RequirePhase).
@@ -208,6 +218,11 @@ class Forcing {
   double MaxAbs() const;
 
  private:
+  // The series c + sum_k a[k-1] cos k s + b[k-1] sin k s, K = `harmonics` terms, seen from
+  // motor phase phi0 (checked and reduced): what every constructor builds.
+  static Forcing Series(double c, const double* a, const double* b, int harmonics, double phi0);
+  // This series with a_k (sine: b_k) replaced, rebuilt by Series.
+  Forcing WithCoefficient(bool sine, int k, double value) const;
   void SetBase();  // R and the phase of one harmonic of the base series
   void Rotate();   // fill the coefficients seen from the impact phase
   double F(const Angle& at) const;

@@ -5,60 +5,28 @@
 // is any number of axes over different parameters; its points run row-major: the first axis
 // varies slowest, the last fastest.
 //
-// Every parameter a grid can vary is one row of a table (its name, its domain and the rule a
-// message states): SweepParameterName, ParseGridAxis and the checks all read it.
+// A grid can vary every model parameter (model_parameter.hpp): its name and its domain come
+// from the one table of parameters. An alpha axis gives the mass ratio of a robot whose
+// impact phases phi0 are then solved for (docs/model.md section 8); an A axis sets the sine
+// coefficient b_1 of the force (A of the harmonic family).
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace capsubot {
+#include "capsubot/model/model_parameter.hpp"
 
-/// A parameter a grid can vary (docs/model.md sections 2, 6, 7 and 8 for the symbols).
-enum class SweepParameter {
-  kA,        ///< amplitude A of F = A sin(phi + phi0) + c (the sine coefficient b_1)
-  kc,        ///< mean force c
-  kphi0,     ///< motor phase at the impact phi0 [rad]
-  kT0,       ///< friction bound T0
-  ke,        ///< restitution e
-  kmargin,   ///< clearance d
-  kalpha,    ///< mass ratio of a given robot: phi0 is then solved for (docs/model.md section 8)
-  kcos,      ///< cosine coefficient a_k of the Fourier force (GridAxis::harmonic = k)
-  ksin,      ///< sine coefficient b_k of the Fourier force (GridAxis::harmonic = k)
-  kbound,    ///< force bound of problems P2 and P3: A + c (max |F|) <= bound
-  krho_max,  ///< largest admissible spectral radius of a stability requirement
-  kmargin_stroke,  ///< clearance relative to the stroke d_s (docs/model.md section 12)
-  kstick_margin,   ///< stick margin s (docs/model.md section 12)
-};
+namespace capsubot {
 
 /// Largest number of points of a grid (the product of its axes' sizes), checked by
 /// Grid::Validate before any work: 10^9 rows of about 110 bytes are a 110 GB file.
 inline constexpr std::int64_t kMaxGridPoints = 1000000000;
-
-/// The parameter's name as written in a grid and in CSV headers ("A", "phi0", "a2", ...);
-/// `harmonic` is k for kcos and ksin ("a" and "b" alone when it is 0).
-std::string SweepParameterName(SweepParameter parameter, int harmonic = 0);
-
-/// Every name a grid accepts, for messages: "A, c, phi0, T0, e, margin, alpha, a1..a16, ...".
-std::string SweepParameterNames();
 
 /// How the values of an axis are spaced.
 enum class GridSpacing {
   kLinear,  ///< lo:hi:n, equal steps
   kLog,     ///< lo:hi:n:log, equal ratios (lo, hi > 0)
   kList,    ///< v1,v2,...: the listed values
-};
-
-/// Where a parameter's values may lie: [min, max], open ends excluded, and the rule a message
-/// states ("" when every finite value is admissible); `infinite`: +infinity is a value too
-/// (written `inf` in a list: a bound that is no bound, as rho_max = inf).
-struct GridDomain {
-  double min = 0.0;
-  bool min_open = false;
-  double max = 0.0;
-  bool max_open = false;
-  const char* rule = "";
-  bool infinite = false;
 };
 
 /// The values of one axis, whatever parameter it varies.
@@ -82,16 +50,16 @@ struct GridValues {
   /// Throws std::invalid_argument "grid <spec> is invalid: ..." naming the broken rule:
   /// 1 <= n <= kMaxGridPoints, finite values (or inf in a list, when the domain admits it) that
   /// do not overflow the spacing, lo, hi > 0 for a log axis, values inside `domain`.
-  void Check(const std::string& spec, const GridDomain& domain) const;
+  void Check(const std::string& spec, const ParameterDomain& domain) const;
 };
 
 /// One axis of a sweep's grid.
 struct GridAxis : GridValues {
-  SweepParameter parameter = SweepParameter::kphi0;  ///< what varies
+  ModelParameter parameter = ModelParameter::kphi0;  ///< what varies
   int harmonic = 0;                                  ///< k of a_k or b_k (1..kMaxHarmonics), else 0
 
   /// The parameter's name ("phi0", "a2").
-  std::string name() const { return SweepParameterName(parameter, harmonic); }
+  std::string name() const { return ModelParameterName(parameter, harmonic); }
   /// Throws std::invalid_argument "grid <axis> is invalid: ..." naming the broken rule
   /// (GridValues::Check with the parameter's domain: A >= 0, T0 > 0, 0 <= e <= 1, ...; inf
   /// only for rho_max).
@@ -108,7 +76,7 @@ std::string GridSpecName(const std::string& spec);
 /// The values of a grid spec `name=lo:hi:n`, `name=lo:hi:n:log` or `name=v1,v2,...` for a
 /// parameter of `domain` (the caller knows the name): the syntax and rules of ParseGridAxis.
 /// Throws std::invalid_argument "grid <spec> is invalid: ...".
-GridValues ParseGridValues(const std::string& spec, const GridDomain& domain);
+GridValues ParseGridValues(const std::string& spec, const ParameterDomain& domain);
 
 /// The value of axis `axis` at point index `point` of the row-major product of `axes` (the
 /// first slowest).
@@ -138,7 +106,7 @@ struct Grid {
   /// Number of points: the product of the axes' sizes.
   std::int64_t size() const;
   /// True when an axis varies `parameter` (with `harmonic` k for kcos and ksin; 0 means any k).
-  bool Has(SweepParameter parameter, int harmonic = 0) const;
+  bool Has(ModelParameter parameter, int harmonic = 0) const;
   /// The value of axis `axis` at point index `point` (row-major).
   double Value(std::int64_t point, std::size_t axis) const;
 };

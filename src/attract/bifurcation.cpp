@@ -33,16 +33,10 @@ constexpr int kMaxSteps = 10000000;
 constexpr std::int64_t kMaxRecordedPeriods = 100000000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The robot at one value of the parameter.
-struct Robot {
-  Forcing forcing;
-  Params params;
-  double alpha = 0.0;
-};
-
-Robot At(const Robot& base, BifurcationParam param, int harmonic, double value) {
-  Robot r = base;
-  SetBifurcationParam(param, harmonic, value, r.forcing, r.params, r.alpha);
+// The robot at `value` of `parameter` (with `harmonic`), the others those of `base`.
+RobotModel At(const RobotModel& base, ModelParameter parameter, int harmonic, double value) {
+  RobotModel r = base;
+  SetParameter(r, parameter, harmonic, value);
   return r;
 }
 
@@ -86,7 +80,7 @@ class ValuesDone {
 
 // One sweep in `direction`, the state carried from each value to the next.
 // `tick` is told each value done.
-void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direction,
+void Sweep(const RobotModel& base, const BifurcationOptions& o, SweepDirection direction,
            BifurcationDiagram& out, const std::function<void()>& tick) {
   detail::Recorder recorder;
   detail::MapState s{o.start, SimMode::kRest};
@@ -94,7 +88,7 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
   for (int n = 0; n < o.steps; ++n) {
     const int i = direction == SweepDirection::kUp ? n : o.steps - 1 - n;
     const double value = Value(o, i);
-    const Robot r = At(base, o.param, o.harmonic, value);
+    const RobotModel r = At(base, o.param, o.harmonic, value);
     BifurcationPoint point;
     point.param = value;
     point.direction = direction;
@@ -135,10 +129,10 @@ void Sweep(const Robot& base, const BifurcationOptions& o, SweepDirection direct
   }
 }
 
-void Analytic(const Robot& base, const BifurcationOptions& o, BifurcationDiagram& out) {
+void Analytic(const RobotModel& base, const BifurcationOptions& o, BifurcationDiagram& out) {
   for (int i = 0; i < o.steps; ++i) {
     const double value = Value(o, i);
-    const Robot r = At(base, o.param, o.harmonic, value);
+    const RobotModel r = At(base, o.param, o.harmonic, value);
     for (const Solution& s : FindRobotOrbits(r.forcing, r.params, r.alpha)) {
       if (!s.validity.valid()) continue;
       BifurcationPoint point;
@@ -167,7 +161,7 @@ struct Part {
   SweepDirection kind = SweepDirection::kUp;
 };
 struct Study {
-  std::vector<Robot> bases;
+  std::vector<RobotModel> bases;
   std::vector<double> overs;
   std::vector<Part> parts;
   int total_parts = 0;
@@ -177,25 +171,25 @@ Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
                 const BifurcationOptions& options) {
   options.Validate();
   const bool two = !options.over_values.empty();
-  CheckBifurcationParam(forcing, options.param, options.harmonic);
-  if (two) CheckBifurcationParam(forcing, options.over, options.over_harmonic);
+  CheckRobotParameter(forcing, options.param, options.harmonic);
+  if (two) CheckRobotParameter(forcing, options.over, options.over_harmonic);
   Study study;
   study.overs = two ? options.over_values : std::vector<double>{kNaN};
   for (double over : study.overs) {
-    const Robot base{forcing, params, alpha};
+    const RobotModel base{forcing, params, alpha};
     study.bases.push_back(two ? At(base, options.over, options.over_harmonic, over) : base);
     // Every robot of the range must be valid: check both ends and name the one that is not.
     for (double value : {options.from, options.to}) {
-      const Robot r = At(study.bases.back(), options.param, options.harmonic, value);
+      const RobotModel r = At(study.bases.back(), options.param, options.harmonic, value);
       try {
         r.params.Validate();
         detail::ValidateStart(r.alpha, options.start);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format(
             "{} = {}{} makes the robot invalid: {}",
-            BifurcationParamName(options.param, options.harmonic), value,
+            ModelParameterName(options.param, options.harmonic), value,
             two ? fmt::format(" at {} = {}",
-                              BifurcationParamName(options.over, options.over_harmonic), over)
+                              ModelParameterName(options.over, options.over_harmonic), over)
                 : std::string(),
             e.what()));
       }
@@ -306,117 +300,6 @@ BlockComputeFactory PartBlocks(const Forcing& forcing, const Params& params, dou
 
 }  // namespace
 
-void CheckBifurcationParam(const Forcing& forcing, BifurcationParam param, int harmonic) {
-  if (param == BifurcationParam::kA && !forcing.harmonic()) {
-    throw std::invalid_argument(
-        "parameter = A is invalid for a Fourier force: expected the harmonic family");
-  }
-  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
-  if (fourier && harmonic > forcing.harmonics()) {
-    throw std::invalid_argument(fmt::format(
-        "parameter = {} is invalid for this force: expected a_k or b_k with 1 <= k <= K = {}, "
-        "its harmonics",
-        BifurcationParamName(param, harmonic), forcing.harmonics()));
-  }
-}
-
-namespace {
-
-// The force with its mean c (kC) or one Fourier coefficient a_k (kCos) or b_k (kSin) set to
-// value, the others kept.
-Forcing WithCoefficient(const Forcing& f, BifurcationParam param, int k, double value) {
-  std::vector<double> a, b;
-  for (int j = 1; j <= f.harmonics(); ++j) {
-    a.push_back(f.a(j));
-    b.push_back(f.b(j));
-  }
-  double c = f.mean();
-  if (param == BifurcationParam::kC) c = value;
-  if (param == BifurcationParam::kCos) a[k - 1] = value;
-  if (param == BifurcationParam::kSin) b[k - 1] = value;
-  return Forcing::Fourier(c, a, b, f.phi0());
-}
-
-}  // namespace
-
-void SetBifurcationParam(BifurcationParam param, int harmonic, double value, Forcing& forcing,
-                         Params& params, double& alpha) {
-  switch (param) {
-    case BifurcationParam::kA:
-      forcing = Forcing::Harmonic(value, forcing.mean(), forcing.phi0());
-      break;
-    case BifurcationParam::kC:
-    case BifurcationParam::kCos:
-    case BifurcationParam::kSin:
-      forcing = WithCoefficient(forcing, param, harmonic, value);
-      break;
-    case BifurcationParam::kAlpha:
-      alpha = value;
-      break;
-    case BifurcationParam::kT0:
-      params.T0 = value;
-      break;
-    case BifurcationParam::kE:
-      params.e = value;
-      break;
-    case BifurcationParam::kPhi0:
-      forcing = forcing.WithPhase(value);
-      break;
-  }
-}
-
-double BifurcationParamValue(BifurcationParam param, int harmonic, const Forcing& forcing,
-                             const Params& params, double alpha) {
-  switch (param) {
-    case BifurcationParam::kA:
-      return forcing.amplitude();
-    case BifurcationParam::kC:
-      return forcing.mean();
-    case BifurcationParam::kCos:
-      return forcing.a(harmonic);
-    case BifurcationParam::kSin:
-      return forcing.b(harmonic);
-    case BifurcationParam::kAlpha:
-      return alpha;
-    case BifurcationParam::kT0:
-      return params.T0;
-    case BifurcationParam::kE:
-      return params.e;
-    case BifurcationParam::kPhi0:
-      return forcing.phi0();
-  }
-  return kNaN;
-}
-
-std::string BifurcationParamName(BifurcationParam param, int harmonic) {
-  static constexpr const char* kNames[] = {"A", "c", "alpha", "T0", "e", "phi0", "a", "b"};
-  static_assert(std::size(kNames) == static_cast<std::size_t>(BifurcationParam::kSin) + 1);
-  const std::string name = detail::EnumName(kNames, param);
-  if (param != BifurcationParam::kCos && param != BifurcationParam::kSin) return name;
-  return name + std::to_string(harmonic);
-}
-
-BifurcationParam ParseBifurcationParam(const std::string& name, int* harmonic) {
-  if (harmonic != nullptr) *harmonic = 0;
-  for (BifurcationParam p :
-       {BifurcationParam::kA, BifurcationParam::kC, BifurcationParam::kAlpha, BifurcationParam::kT0,
-        BifurcationParam::kE, BifurcationParam::kPhi0}) {
-    if (name == BifurcationParamName(p)) return p;
-  }
-  // a1 .. a16, b1 .. b16: the prefix, then k without a leading zero.
-  for (int k = 1; k <= kMaxHarmonics; ++k) {
-    for (BifurcationParam p : {BifurcationParam::kCos, BifurcationParam::kSin}) {
-      if (name != BifurcationParamName(p, k)) continue;
-      if (harmonic != nullptr) *harmonic = k;
-      return p;
-    }
-  }
-  throw std::invalid_argument(fmt::format(
-      "parameter = {} is invalid: expected one of A, c, alpha, T0, e, phi0, or a Fourier "
-      "coefficient a1..a{}, b1..b{}",
-      name, kMaxHarmonics, kMaxHarmonics));
-}
-
 const char* SweepDirectionName(SweepDirection direction) {
   static constexpr const char* kNames[] = {"up", "down", "analytic"};
   static_assert(std::size(kNames) == static_cast<std::size_t>(SweepDirection::kAnalytic) + 1);
@@ -443,21 +326,20 @@ void BifurcationOptions::Validate() const {
   if (!up && !down) {
     throw std::invalid_argument("direction is invalid: expected up, down or both");
   }
-  const bool fourier = param == BifurcationParam::kCos || param == BifurcationParam::kSin;
-  if (fourier ? harmonic < 1 || harmonic > kMaxHarmonics : harmonic != 0) {
+  if (IsFourierCoefficient(param) ? harmonic < 1 || harmonic > kMaxHarmonics : harmonic != 0) {
     throw std::invalid_argument(
         fmt::format("harmonic = {} is invalid: expected 1 <= k <= {} for a_k and b_k, else 0",
                     harmonic, kMaxHarmonics));
   }
   motion.Validate();
-  const bool over_fourier = over == BifurcationParam::kCos || over == BifurcationParam::kSin;
   if (!over_values.empty()) {
     if (static_cast<std::int64_t>(over_values.size()) > kMaxOverValues) {
-      throw std::invalid_argument(fmt::format(
-          "second parameter {} is invalid: {} values: expected at most {} values",
-          BifurcationParamName(over, over_harmonic), over_values.size(), kMaxOverValues));
+      throw std::invalid_argument(
+          fmt::format("second parameter {} is invalid: {} values: expected at most {} values",
+                      ModelParameterName(over, over_harmonic), over_values.size(), kMaxOverValues));
     }
-    if (over_fourier ? over_harmonic < 1 || over_harmonic > kMaxHarmonics : over_harmonic != 0) {
+    if (IsFourierCoefficient(over) ? over_harmonic < 1 || over_harmonic > kMaxHarmonics
+                                   : over_harmonic != 0) {
       throw std::invalid_argument(fmt::format(
           "over harmonic = {} is invalid: expected 1 <= k <= {} for a_k and b_k, else 0",
           over_harmonic, kMaxHarmonics));
@@ -465,13 +347,13 @@ void BifurcationOptions::Validate() const {
     if (over == param && over_harmonic == harmonic) {
       throw std::invalid_argument(fmt::format(
           "second parameter = {} is invalid: expected a parameter other than the diagram's",
-          BifurcationParamName(over, over_harmonic)));
+          ModelParameterName(over, over_harmonic)));
     }
     for (double v : over_values) {
       if (!std::isfinite(v)) {
         throw std::invalid_argument(
             fmt::format("second parameter {} = {} is invalid: expected finite values",
-                        BifurcationParamName(over, over_harmonic), v));
+                        ModelParameterName(over, over_harmonic), v));
       }
     }
   }

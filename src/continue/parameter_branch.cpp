@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/model/model_parameter.hpp"
 #include "capsubot/robot_orbits.hpp"
 #include "capsubot/stability.hpp"
 
@@ -39,12 +39,12 @@ PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, dou
 RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
                                  const std::string& param) {
   int harmonic = 0;
-  const BifurcationParam which = ParseBifurcationParam(param, &harmonic);
-  CheckBifurcationParam(forcing, which, harmonic);
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  CheckRobotParameter(forcing, which, harmonic);
   const RobotModel base{forcing, params, alpha};
   return [base, which, harmonic](double value) {
     RobotModel r = base;
-    SetBifurcationParam(which, harmonic, value, r.forcing, r.params, r.alpha);
+    SetParameter(r, which, harmonic, value);
     return r;
   };
 }
@@ -55,8 +55,8 @@ Branch ContinueParameter(const Forcing& forcing, const Params& params, double al
   const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
   params.Validate();
   int harmonic = 0;
-  const BifurcationParam which = ParseBifurcationParam(param, &harmonic);
-  options.start = BifurcationParamValue(which, harmonic, forcing, params, alpha);
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  options.start = ParameterValue(RobotModel{forcing, params, alpha}, which, harmonic);
   ContinuationOptions range = options;  // the options' own rules first, the start's value aside
   range.start = options.from;
   range.Validate();

@@ -58,13 +58,14 @@ Forcing Forcing::Harmonic(double A, double c, double phi0) {
   if (A < 0.0) {
     throw std::invalid_argument(fmt::format("A = {} is invalid: expected A >= 0", A));
   }
-  return Fourier(c, {0.0}, {A}, phi0);
+  const double a[] = {0.0}, b[] = {A};
+  return Series(c, a, b, 1, phi0);
 }
 
 Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
                          double phi0) {
-  RequireFinite("c", c);
-  const double phase = ReduceInputPhase("phi0", phi0);
+  RequireFinite("c", c);  // the checks in the order of the arguments
+  RequirePhase("phi0", phi0);
   if (a.size() != b.size()) {
     throw std::invalid_argument(fmt::format(
         "Fourier coefficients: {} cosine and {} sine terms given: expected as many of each",
@@ -74,10 +75,16 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
     throw std::invalid_argument(
         fmt::format("harmonics K = {} is invalid: expected K <= {}", a.size(), kMaxHarmonics));
   }
+  return Series(c, a.data(), b.data(), static_cast<int>(a.size()), phi0);
+}
+
+Forcing Forcing::Series(double c, const double* a, const double* b, int harmonics, double phi0) {
+  RequireFinite("c", c);
+  const double phase = ReduceInputPhase("phi0", phi0);
   Forcing f;
   f.c_ = c;
   f.phi0_ = phase;
-  f.K_ = static_cast<int>(a.size());
+  f.K_ = harmonics;
   for (int k = 0; k < f.K_; ++k) {
     if (!std::isfinite(a[k])) RequireFinite(fmt::format("a_{}", k + 1).c_str(), a[k]);
     if (!std::isfinite(b[k])) RequireFinite(fmt::format("b_{}", k + 1).c_str(), b[k]);
@@ -88,6 +95,23 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
   f.Rotate();
   return f;
 }
+
+Forcing Forcing::WithMean(double c) const { return Series(c, a_.data(), b_.data(), K_, phi0_); }
+
+Forcing Forcing::WithCoefficient(bool sine, int k, double value) const {
+  if (k < 1 || k > K_) {
+    throw std::invalid_argument(fmt::format(
+        "harmonic k = {} is invalid for {}_k: expected 1 <= k <= K = {}, the force's harmonics", k,
+        sine ? 'b' : 'a', K_));
+  }
+  std::array<double, kMaxHarmonics> a = a_, b = b_;
+  (sine ? b : a)[static_cast<std::size_t>(k - 1)] = value;
+  return Series(c_, a.data(), b.data(), K_, phi0_);
+}
+
+Forcing Forcing::WithCosine(int k, double a_k) const { return WithCoefficient(false, k, a_k); }
+
+Forcing Forcing::WithSine(int k, double b_k) const { return WithCoefficient(true, k, b_k); }
 
 Forcing Forcing::WithPhase(double phi0) const {
   if (std::abs(phi0) > kMaxPhase) RequirePhase("phi0", phi0);  // NaN passes, as before

@@ -20,7 +20,7 @@ namespace {
 // The name of the first column with a second parameter, with its comma ("" without).
 std::string OverColumn(const BifurcationOptions& o) {
   if (o.over_values.empty()) return "";
-  return BifurcationParamName(o.over, o.over_harmonic) + ',';
+  return ModelParameterName(o.over, o.over_harmonic) + ',';
 }
 
 // The cell of the second parameter before a row ("" without it).

@@ -26,7 +26,7 @@ constexpr int kFormatVersion = 3;
 struct DesignRule {
   DesignParameter parameter;
   const char* name;
-  GridDomain domain;
+  ParameterDomain domain;
   void (*set)(DesignInput& in, double value);
 };
 

@@ -14,58 +14,6 @@
 namespace capsubot {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// What a grid may vary: the name, the domain [min, max] (open ends excluded) and the rule
-// a message states. A new parameter is one row here, one enumerator and one case where the
-// sweep applies it (sweep_rows.cpp).
-struct ParameterRule {
-  SweepParameter parameter;
-  const char* name;  // with `indexed`, the prefix of a1, a2, ...
-  bool indexed;      // one parameter per harmonic k = 1..kMaxHarmonics
-  GridDomain domain;
-};
-
-static_assert(kMaxPhase == 1e6, "the phi0 rule below names kMaxPhase");
-constexpr ParameterRule kParameters[] = {
-    {SweepParameter::kA, "A", false, {0.0, false, kInf, false, "amplitudes A >= 0"}},
-    {SweepParameter::kc, "c", false, {-kInf, false, kInf, false, ""}},
-    {SweepParameter::kphi0,
-     "phi0",
-     false,
-     {-kMaxPhase, false, kMaxPhase, false, "phases |phi0| <= 1e6 rad (phases are in radians)"}},
-    {SweepParameter::kT0, "T0", false, {0.0, true, kInf, false, "friction bounds T0 > 0"}},
-    {SweepParameter::ke, "e", false, {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"}},
-    {SweepParameter::kmargin,
-     "margin",
-     false,
-     {0.0, false, 0.5, true, "margins 0 <= margin < 0.5"}},
-    {SweepParameter::kalpha, "alpha", false, {0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"}},
-    {SweepParameter::kcos, "a", true, {-kInf, false, kInf, false, ""}},
-    {SweepParameter::ksin, "b", true, {-kInf, false, kInf, false, ""}},
-    {SweepParameter::kbound, "bound", false, {0.0, true, kInf, false, "force bounds bound > 0"}},
-    // Infinity: no stability requirement (the optimisers' default).
-    {SweepParameter::krho_max,
-     "rho_max",
-     false,
-     {0.0, true, kInf, false, "spectral radius bounds rho_max > 0 (inf: no bound)", true}},
-    {SweepParameter::kmargin_stroke,
-     "margin_stroke",
-     false,
-     {0.0, false, 0.5, true, "stroke margins 0 <= margin_stroke < 0.5"}},
-    {SweepParameter::kstick_margin,
-     "stick_margin",
-     false,
-     {0.0, false, 1.0, true, "stick margins 0 <= stick_margin < 1"}},
-};
-
-const ParameterRule& RuleOf(SweepParameter parameter) {
-  for (const ParameterRule& r : kParameters) {
-    if (r.parameter == parameter) return r;
-  }
-  return kParameters[0];  // unreachable: every enumerator has a row
-}
-
 [[noreturn]] void Fail(const std::string& spec, const std::string& why) {
   throw std::invalid_argument(fmt::format("grid {} is invalid: {}", spec, why));
 }
@@ -90,33 +38,6 @@ bool ParseNumber(const std::string& text, double& value) {
   return first != last && r.ec == std::errc() && r.ptr == last;
 }
 
-// A name of the table: "phi0" -> kphi0; "a3" -> kcos with harmonic 3.
-bool ParseName(const std::string& name, GridAxis& axis) {
-  for (const ParameterRule& r : kParameters) {
-    if (!r.indexed) {
-      if (name == r.name) {
-        axis.parameter = r.parameter;
-        axis.harmonic = 0;
-        return true;
-      }
-      continue;
-    }
-    const std::string prefix = r.name;
-    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const char* first = name.data() + prefix.size();
-    const char* last = name.data() + name.size();
-    int k = 0;
-    const std::from_chars_result res = std::from_chars(first, last, k);
-    if (res.ec != std::errc() || res.ptr != last || *first == '0' || k < 1 || k > kMaxHarmonics) {
-      continue;
-    }
-    axis.parameter = r.parameter;
-    axis.harmonic = k;
-    return true;
-  }
-  return false;
-}
-
 std::vector<std::string> Split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   std::size_t start = 0;
@@ -129,20 +50,6 @@ std::vector<std::string> Split(const std::string& text, char separator) {
 }
 
 }  // namespace
-
-std::string SweepParameterName(SweepParameter parameter, int harmonic) {
-  const ParameterRule& r = RuleOf(parameter);
-  return r.indexed && harmonic > 0 ? fmt::format("{}{}", r.name, harmonic) : std::string(r.name);
-}
-
-std::string SweepParameterNames() {
-  std::string names;
-  for (const ParameterRule& r : kParameters) {
-    if (!names.empty()) names += ", ";
-    names += r.indexed ? fmt::format("{0}1..{0}{1}", r.name, kMaxHarmonics) : r.name;
-  }
-  return names;
-}
 
 std::int64_t GridValues::size() const {
   return spacing == GridSpacing::kList ? static_cast<std::int64_t>(values.size()) : n;
@@ -184,14 +91,13 @@ std::string GridValues::ValuesText() const {
 
 void GridAxis::Validate() const {
   const std::string spec = ToString();
-  const ParameterRule& r = RuleOf(parameter);
-  if (r.indexed && (harmonic < 1 || harmonic > kMaxHarmonics)) {
+  if (IsFourierCoefficient(parameter) && (harmonic < 1 || harmonic > kMaxHarmonics)) {
     Fail(spec, fmt::format("harmonic k = {}: expected 1 <= k <= {}", harmonic, kMaxHarmonics));
   }
-  Check(spec, r.domain);
+  Check(spec, ModelParameterDomain(parameter));
 }
 
-void GridValues::Check(const std::string& spec, const GridDomain& domain) const {
+void GridValues::Check(const std::string& spec, const ParameterDomain& domain) const {
   if (spacing == GridSpacing::kList) {
     if (values.empty()) Fail(spec, "expected at least one value");
     if (size() > kMaxGridPoints) {
@@ -222,7 +128,7 @@ void GridValues::Check(const std::string& spec, const GridDomain& domain) const 
     }
   }
   const double a = Min(), b = Max();
-  const GridDomain& d = domain;
+  const ParameterDomain& d = domain;
   if ((d.min_open ? a <= d.min : a < d.min) || (d.max_open ? b >= d.max : b > d.max)) {
     Fail(spec, fmt::format("expected {}", d.rule));
   }
@@ -235,7 +141,7 @@ std::string GridSpecName(const std::string& spec) {
   return spec.substr(0, eq);
 }
 
-GridValues ParseGridValues(const std::string& spec, const GridDomain& domain) {
+GridValues ParseGridValues(const std::string& spec, const ParameterDomain& domain) {
   GridValues axis;
   const std::string rest = spec.substr(GridSpecName(spec).size() + 1);
   if (rest.find(':') == std::string::npos) {  // a list (one value is a list of one)
@@ -279,12 +185,11 @@ GridValues ParseGridValues(const std::string& spec, const GridDomain& domain) {
 GridAxis ParseGridAxis(const std::string& spec) {
   GridAxis axis;
   const std::string name = GridSpecName(spec);
-  if (!ParseName(name, axis)) {
+  if (!ParseModelParameter(name, axis.parameter, axis.harmonic)) {
     Fail(spec,
-         fmt::format("unknown parameter '{}': expected one of {}", name, SweepParameterNames()));
+         fmt::format("unknown parameter '{}': expected one of {}", name, ModelParameterNames()));
   }
-  const ParameterRule& r = RuleOf(axis.parameter);
-  static_cast<GridValues&>(axis) = ParseGridValues(spec, r.domain);
+  static_cast<GridValues&>(axis) = ParseGridValues(spec, ModelParameterDomain(axis.parameter));
   return axis;
 }
 
@@ -305,12 +210,12 @@ void Grid::Validate() const {
       }
     }
   }
-  if (Has(SweepParameter::kalpha) && Has(SweepParameter::kphi0)) {
+  if (Has(ModelParameter::kalpha) && Has(ModelParameter::kphi0)) {
     throw std::invalid_argument(
         "grid alpha together with grid phi0 is invalid: a robot's mass ratio alpha "
         "determines its impact phases phi0: expected a grid over only one of them");
   }
-  if (Has(SweepParameter::kA) && Has(SweepParameter::ksin, 1)) {
+  if (Has(ModelParameter::kA) && Has(ModelParameter::ksin, 1)) {
     throw std::invalid_argument(
         "grid A together with grid b1 is invalid: A is the sine coefficient b1 of the "
         "harmonic force: expected a grid over only one of them");
@@ -342,7 +247,7 @@ std::int64_t Grid::size() const {
   return axes.empty() ? 0 : n;
 }
 
-bool Grid::Has(SweepParameter parameter, int harmonic) const {
+bool Grid::Has(ModelParameter parameter, int harmonic) const {
   for (const GridAxis& axis : axes) {
     if (axis.parameter == parameter && (harmonic == 0 || axis.harmonic == harmonic)) return true;
   }

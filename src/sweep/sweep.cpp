@@ -19,12 +19,12 @@ constexpr int kSolveBlockPoints = 2048;  // ~3 ms of Solve calls: cheap to hand 
 constexpr int kRobotBlockPoints = 32;
 constexpr int kPhaseBlockPoints = 2;
 
-constexpr unsigned Bit(SweepParameter p) { return 1U << static_cast<unsigned>(p); }
-constexpr unsigned kForceParameters = Bit(SweepParameter::kA) | Bit(SweepParameter::kc) |
-                                      Bit(SweepParameter::kcos) | Bit(SweepParameter::ksin);
+constexpr unsigned Bit(ModelParameter p) { return 1U << static_cast<unsigned>(p); }
+constexpr unsigned kForceParameters = Bit(ModelParameter::kA) | Bit(ModelParameter::kc) |
+                                      Bit(ModelParameter::kcos) | Bit(ModelParameter::ksin);
 constexpr unsigned kModelParameters =
-    Bit(SweepParameter::kT0) | Bit(SweepParameter::ke) | Bit(SweepParameter::kmargin) |
-    Bit(SweepParameter::kmargin_stroke) | Bit(SweepParameter::kstick_margin);
+    Bit(ModelParameter::kT0) | Bit(ModelParameter::ke) | Bit(ModelParameter::kmargin) |
+    Bit(ModelParameter::kmargin_stroke) | Bit(ModelParameter::kstick_margin);
 
 // What each mode computes: its name, the problem it solves, the parameters a grid may vary
 // with it (the others are chosen by the optimiser or unused), points per block.
@@ -38,16 +38,16 @@ struct ModeRule {
 
 constexpr ModeRule kModes[] = {
     {SweepOptimize::kNone, "none", "the orbit of the given force",
-     kForceParameters | kModelParameters | Bit(SweepParameter::kphi0) | Bit(SweepParameter::kalpha),
+     kForceParameters | kModelParameters | Bit(ModelParameter::kphi0) | Bit(ModelParameter::kalpha),
      kSolveBlockPoints},
     {SweepOptimize::kPhase, "phi0", "problem P1, the best impact phase phi0",
-     kForceParameters | kModelParameters | Bit(SweepParameter::krho_max), kPhaseBlockPoints},
+     kForceParameters | kModelParameters | Bit(ModelParameter::krho_max), kPhaseBlockPoints},
     {SweepOptimize::kForcing, "forcing", "problem P2, the best A, c and phi0",
-     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
     {SweepOptimize::kFourier, "fourier", "problem P3, the best K-harmonic force",
-     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
     {SweepOptimize::kReach, "reach", "the fastest motion from rest, seeded by P2",
-     kModelParameters | Bit(SweepParameter::kbound) | Bit(SweepParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
 };
 
 const ModeRule& RuleOf(SweepOptimize mode) {
@@ -62,15 +62,15 @@ std::string ParameterList(unsigned set) {
   std::string names;
   for (unsigned p = 0; p < 32; ++p) {
     if ((set & (1U << p)) == 0) continue;
-    const auto parameter = static_cast<SweepParameter>(p);
-    const bool indexed = parameter == SweepParameter::kcos || parameter == SweepParameter::ksin;
-    names += (names.empty() ? "" : ", ") + SweepParameterName(parameter) + (indexed ? "k" : "");
+    const auto parameter = static_cast<ModelParameter>(p);
+    names += (names.empty() ? "" : ", ") + ModelParameterName(parameter) +
+             (IsFourierCoefficient(parameter) ? "k" : "");
   }
   return names;
 }
 
 // Smallest and largest value of a parameter over the sweep: its axis, or `fixed`.
-std::pair<double, double> Extent(const Grid& grid, SweepParameter parameter, double fixed) {
+std::pair<double, double> Extent(const Grid& grid, ModelParameter parameter, double fixed) {
   for (const GridAxis& axis : grid.axes) {
     if (axis.parameter == parameter) return {axis.Min(), axis.Max()};
   }
@@ -82,8 +82,8 @@ std::pair<double, double> Extent(const Grid& grid, SweepParameter parameter, dou
 void CheckBoundAgainstT0(const SweepOptions& o, const SearchOptions& search) {
   SearchOptions worst = search;
   Params params = o.params;
-  params.T0 = Extent(o.grid, SweepParameter::kT0, o.params.T0).first;
-  worst.force_bound = Extent(o.grid, SweepParameter::kbound, search.force_bound).second;
+  params.T0 = Extent(o.grid, ModelParameter::kT0, o.params.T0).first;
+  worst.force_bound = Extent(o.grid, ModelParameter::kbound, search.force_bound).second;
   worst.BoundFor(params);
 }
 
@@ -139,7 +139,7 @@ void SweepOptions::Validate() const {
                       axis.ToString(), mode.name, mode.problem, ParameterList(mode.gridded)));
     }
   }
-  if (grid.Has(SweepParameter::kA) && !forcing.harmonic()) {
+  if (grid.Has(ModelParameter::kA) && !forcing.harmonic()) {
     throw std::invalid_argument(
         "grid A is invalid with a Fourier force: expected the harmonic force "
         "A sin(phi + phi0) + c, whose amplitude A the grid varies (or a grid over b1)");
@@ -183,10 +183,10 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
   std::vector<std::string> columns;
   for (const GridAxis& axis : o.grid.axes) {
     // In robot mode the computed alpha has its own column: the grid's is the robot's.
-    const bool robot = axis.parameter == SweepParameter::kalpha;
+    const bool robot = axis.parameter == ModelParameter::kalpha;
     columns.emplace_back(robot ? "robot_alpha" : axis.name());
   }
-  if (o.grid.Has(SweepParameter::kalpha)) {
+  if (o.grid.Has(ModelParameter::kalpha)) {
     columns.emplace_back("orbits");
     columns.emplace_back("orbit");
     columns.emplace_back("phi0");
@@ -242,7 +242,7 @@ BlockComputeFactory SweepBlocks(const SweepOptions& options) {
 
 std::int64_t SweepBlockPoints(const SweepOptions& options, std::int64_t points, int threads) {
   if (options.block_points > 0) return options.block_points;
-  const std::int64_t most = options.grid.Has(SweepParameter::kalpha)
+  const std::int64_t most = options.grid.Has(ModelParameter::kalpha)
                                 ? kRobotBlockPoints
                                 : RuleOf(options.optimize).block_points;
   return BalancedBlock(points, threads, most);

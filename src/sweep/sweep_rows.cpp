@@ -20,7 +20,7 @@ namespace {
 // Bumped whenever the bytes of a sweep change for the same options (invalidates checkpoints).
 constexpr int kFormatVersion = 5;
 
-bool RobotMode(const SweepOptions& o) { return o.grid.Has(SweepParameter::kalpha); }
+bool RobotMode(const SweepOptions& o) { return o.grid.Has(ModelParameter::kalpha); }
 
 void Append(RowBuffer& out, const char* text) { out.append(text); }
 
@@ -139,61 +139,56 @@ std::string SweepDescription(const SweepOptions& o) {
 }
 
 SweepPoint::SweepPoint(const SweepOptions& o)
-    : params(o.params), phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
+    : phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
+  robot.forcing = o.forcing;
+  robot.params = o.params;
   // The sweep's threads work on different points (the result does not depend on this).
   reach.search.attractor.threads = reach.check.attractor.threads = 1;
+  if (!std::any_of(o.grid.axes.begin(), o.grid.axes.end(), [](const GridAxis& axis) {
+        return axis.parameter == ModelParameter::kA || axis.parameter == ModelParameter::kc ||
+               IsFourierCoefficient(axis.parameter);
+      })) {
+    return;
+  }
+  // A gridded coefficient: the force as a series with every harmonic an axis names.
   const Forcing& f = o.forcing;
   const int K = SweepHarmonics(o);
-  a.assign(static_cast<std::size_t>(K), 0.0);
-  b.assign(static_cast<std::size_t>(K), 0.0);
+  std::vector<double> a(static_cast<std::size_t>(K), 0.0), b(static_cast<std::size_t>(K), 0.0);
   for (int k = 1; k <= f.harmonics(); ++k) {
     a[static_cast<std::size_t>(k - 1)] = f.a(k);
     b[static_cast<std::size_t>(k - 1)] = f.b(k);
   }
-  c = f.mean();
-  phi0 = f.phi0();
+  robot.forcing = Forcing::Fourier(f.mean(), a, b, f.phi0());
 }
 
 void SweepPoint::Set(const GridAxis& axis, double value) {
   switch (axis.parameter) {
-    case SweepParameter::kA:
-      b[0] = value;
+    case ModelParameter::kA:  // b_1 of a series that a_k and b_k axes may have extended
+      SetParameter(robot, ModelParameter::ksin, 1, value);
       break;
-    case SweepParameter::kc:
-      c = value;
+    case ModelParameter::kc:
+    case ModelParameter::kphi0:
+    case ModelParameter::kT0:
+    case ModelParameter::ke:
+    case ModelParameter::kalpha:
+    case ModelParameter::kcos:
+    case ModelParameter::ksin:
+      SetParameter(robot, axis.parameter, axis.harmonic, value);
       break;
-    case SweepParameter::kphi0:
-      phi0 = value;
+    case ModelParameter::kmargin:
+      robot.params.margin = value;
       break;
-    case SweepParameter::kT0:
-      params.T0 = value;
+    case ModelParameter::kmargin_stroke:
+      robot.params.margin_stroke = value;
       break;
-    case SweepParameter::ke:
-      params.e = value;
+    case ModelParameter::kstick_margin:
+      robot.params.stick_margin = value;
       break;
-    case SweepParameter::kmargin:
-      params.margin = value;
-      break;
-    case SweepParameter::kmargin_stroke:
-      params.margin_stroke = value;
-      break;
-    case SweepParameter::kstick_margin:
-      params.stick_margin = value;
-      break;
-    case SweepParameter::kalpha:
-      alpha = value;
-      break;
-    case SweepParameter::kcos:
-      a[static_cast<std::size_t>(axis.harmonic - 1)] = value;
-      break;
-    case SweepParameter::ksin:
-      b[static_cast<std::size_t>(axis.harmonic - 1)] = value;
-      break;
-    case SweepParameter::kbound:  // the reach search's bound is design.force_bound
+    case ModelParameter::kbound:  // the reach search's bound is design.force_bound
       design.force_bound = value;
       fourier.harmonic.force_bound = value;
       break;
-    case SweepParameter::krho_max:
+    case ModelParameter::krho_max:
       phase.rho_max = value;
       design.rho_max = value;
       fourier.harmonic.rho_max = value;
@@ -202,33 +197,24 @@ void SweepPoint::Set(const GridAxis& axis, double value) {
 }
 
 SweepRowWriter::SweepRowWriter(const SweepOptions& options)
-    : options_(options),
-      point_(options),
-      forcing_(options.forcing),
-      values_(options.grid.axes.size()) {
-  for (const GridAxis& axis : options.grid.axes) {
-    const SweepParameter p = axis.parameter;
-    rebuild_force_ = rebuild_force_ || p == SweepParameter::kA || p == SweepParameter::kc ||
-                     p == SweepParameter::kcos || p == SweepParameter::ksin;
+    : options_(options), point_(options), values_(options.grid.axes.size()) {
+  const std::vector<GridAxis>& axes = options.grid.axes;
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    if (axes[i].parameter == ModelParameter::kphi0) order_.push_back(i);
   }
-  if (rebuild_force_) forcing_ = Forcing::Fourier(point_.c, point_.a, point_.b, point_.phi0);
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    if (axes[i].parameter != ModelParameter::kphi0) order_.push_back(i);
+  }
   // robot mode, no orbit: orbits = 0, then an empty cell for every further column
-  const std::size_t cells = SweepColumns(options).size() - options.grid.axes.size() - 1;
+  const std::size_t cells = SweepColumns(options).size() - axes.size() - 1;
   no_orbit_cells_ = "0" + std::string(cells, ',') + "\n";
 }
 
 void SweepRowWriter::SetPoint(std::int64_t point) {
   const Grid& g = options_.grid;
-  bool phase_changed = false;
-  for (std::size_t i = 0; i < g.axes.size(); ++i) {
+  for (const std::size_t i : order_) {
     values_[i] = g.Value(point, i);
     point_.Set(g.axes[i], values_[i]);
-    phase_changed = phase_changed || g.axes[i].parameter == SweepParameter::kphi0;
-  }
-  if (rebuild_force_) {
-    forcing_ = Forcing::Fourier(point_.c, point_.a, point_.b, point_.phi0);  // no allocation
-  } else if (phase_changed) {
-    forcing_ = options_.forcing.WithPhase(point_.phi0);
   }
 }
 
@@ -331,8 +317,8 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
 void SweepRowWriter::AppendReach(RowBuffer& out) const {
   ReachOptions options = point_.reach;
   options.force_bound = point_.design.force_bound;
-  const ReachResult r =
-      OptimizeReach(point_.params, OptimizeForcing(point_.params, point_.design), options);
+  const ReachResult r = OptimizeReach(point_.robot.params,
+                                      OptimizeForcing(point_.robot.params, point_.design), options);
   for (const auto& cell : ReachCells(r)) {
     AppendNumber(out, cell.second);
     out.push_back(',');
@@ -343,13 +329,14 @@ void SweepRowWriter::AppendReach(RowBuffer& out) const {
 
 int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
   bool complete = true;
+  const RobotModel& robot = point_.robot;
   const std::vector<Solution> orbits =
-      FindRobotOrbits(forcing_, point_.params, point_.alpha, &complete);
+      FindRobotOrbits(robot.forcing, robot.params, robot.alpha, &complete);
   if (!complete) {  // never write a row set that may miss orbits
     throw std::runtime_error(fmt::format(
         "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "
         "orbits may be missing",
-        point, point_.alpha));
+        point, robot.alpha));
   }
   if (orbits.empty()) {
     AppendGridValues(out);
@@ -374,7 +361,7 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
   if (RobotMode(options_)) return AppendRobotPoint(point, out);
   AppendGridValues(out);
   if (options_.optimize == SweepOptimize::kNone) {
-    AppendSolution(Solve(forcing_, point_.params), out);
+    AppendSolution(Solve(point_.robot.forcing, point_.robot.params), out);
     out.push_back('\n');
     return 1;
   }
@@ -385,13 +372,13 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
   OptimizeResult r;
   switch (options_.optimize) {
     case SweepOptimize::kPhase:
-      r = OptimizePhase(forcing_, point_.params, point_.phase);
+      r = OptimizePhase(point_.robot.forcing, point_.robot.params, point_.phase);
       break;
     case SweepOptimize::kForcing:
-      r = OptimizeForcing(point_.params, point_.design);
+      r = OptimizeForcing(point_.robot.params, point_.design);
       break;
     case SweepOptimize::kFourier:
-      r = OptimizeFourier(point_.params, point_.fourier);
+      r = OptimizeFourier(point_.robot.params, point_.fourier);
       break;
     case SweepOptimize::kNone:  // handled above
     case SweepOptimize::kReach:

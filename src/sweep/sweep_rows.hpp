@@ -75,13 +75,11 @@ std::string SweepDescription(const SweepOptions& options);
 /// NaN (an empty cell) for what was not found.
 std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r);
 
-/// The values a sweep point sets: the force's coefficients, the model parameters, the robot's
-/// mass ratio and the optimisers' options.
+/// The values a sweep point sets: the robot (force, model parameters, mass ratio) and the
+/// optimisers' options.
 struct SweepPoint {
-  std::vector<double> a, b;  ///< Fourier coefficients of the force (A lives in b[0])
-  double c = 0.0, phi0 = 0.0;
-  Params params;
-  double alpha = 0.0;
+  /// The robot; with a_k or b_k axes its force has every harmonic an axis names (the others 0).
+  RobotModel robot;
   PhaseOptions phase;
   ForcingDesignOptions design;
   FourierOptions fourier;
@@ -89,8 +87,10 @@ struct SweepPoint {
 
   /// The sweep's fixed values (the grid not applied yet).
   explicit SweepPoint(const SweepOptions& options);
-  /// Sets the value of one gridded parameter (the one place that maps a SweepParameter to
-  /// what it changes).
+  /// Sets the value of one gridded parameter: a robot parameter by SetParameter (an A axis
+  /// sets b_1, the force being a series when a_k or b_k axes extend it), a requirement in the
+  /// options it bounds. Axes over phi0 go first: a coefficient set after the phase rebuilds
+  /// the force with the phase reduced, as one series (Forcing::Fourier).
   void Set(const GridAxis& axis, double value);
 };
 
@@ -102,7 +102,7 @@ class SweepRowWriter {
   int AppendPoint(std::int64_t point, RowBuffer& out);
 
  private:
-  // Sets point_ and forcing_ to grid point `point` and values_ to its grid values.
+  // Sets point_ to grid point `point` and values_ to its grid values.
   void SetPoint(std::int64_t point);
   void AppendGridValues(RowBuffer& out) const;
   void AppendSolution(const Solution& s, RowBuffer& out) const;
@@ -111,11 +111,10 @@ class SweepRowWriter {
   void AppendReach(RowBuffer& out) const;
 
   const SweepOptions& options_;
-  bool rebuild_force_ = false;  // a force coefficient is gridded: rebuilt at each point
   SweepPoint point_;
-  Forcing forcing_;
-  std::vector<double> values_;  // the grid values of the point, one per axis
-  std::string no_orbit_cells_;  // robot mode: the cells after the axes of a point without orbit
+  std::vector<std::size_t> order_;  // the axes in the order they are set: phi0 first
+  std::vector<double> values_;      // the grid values of the point, one per axis
+  std::string no_orbit_cells_;      // robot mode: the cells after the axes of a point without orbit
 };
 
 }  // namespace capsubot::detail

@@ -38,7 +38,7 @@ TEST(Bifurcation, UpAndDownSweepsDifferWhereTwoAttractorsCoexist) {
   Params params;
   params.T0 = 0.5;
   BifurcationOptions o;
-  o.param = BifurcationParam::kAlpha;
+  o.param = ModelParameter::kalpha;
   o.from = 0.66;
   o.to = 0.70;
   o.steps = 21;
@@ -89,7 +89,7 @@ TEST(Bifurcation, AnalyticRowsAreTheValidOneImpactOrbits) {
   params.T0 = 0.1;
   params.e = 0.5;
   BifurcationOptions o;
-  o.param = BifurcationParam::kAlpha;
+  o.param = ModelParameter::kalpha;
   o.from = 0.2792869076315278;
   o.to = 0.29;
   o.steps = 2;
@@ -134,13 +134,13 @@ struct StudyOverE {
   BifurcationOptions o;
 
   explicit StudyOverE(std::vector<double> over_e) {
-    o.param = BifurcationParam::kT0;
+    o.param = ModelParameter::kT0;
     o.from = 0.08;
     o.to = 0.12;
     o.steps = 3;
     o.motion.transient = 40;
     o.motion.record = 20;
-    o.over = BifurcationParam::kE;
+    o.over = ModelParameter::ke;
     o.over_values = std::move(over_e);
   }
 };
@@ -311,7 +311,7 @@ TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
   // series steps A, so both diagrams must be the same numbers.
   const double c = kOptimumForce.mean(), phi0 = kOptimumForce.phi0();
   BifurcationOptions o;
-  o.param = BifurcationParam::kA;
+  o.param = ModelParameter::kA;
   o.from = 0.30;
   o.to = 0.36;
   o.steps = 4;
@@ -319,7 +319,7 @@ TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
   o.analytic = false;
   const double alpha = 0.6435592358295166;
   const BifurcationDiagram by_A = ComputeBifurcation(kOptimumForce, Params{}, alpha, o);
-  o.param = BifurcationParam::kSin;
+  o.param = ModelParameter::ksin;
   o.harmonic = 1;
   const BifurcationDiagram by_b1 = ComputeBifurcation(
       Forcing::Fourier(c, {0.0}, {kOptimumForce.amplitude()}, phi0), Params{}, alpha, o);
@@ -346,7 +346,7 @@ TEST(Bifurcation, OverACosineCoefficientSimulatesTheForceWithThatCoefficient) {
   const double alpha = 0.6435592358295166;
   const Forcing base = Forcing::Fourier(c, {0.0, 0.0}, {A, 0.02}, phi0);
   BifurcationOptions o;
-  o.param = BifurcationParam::kCos;
+  o.param = ModelParameter::kcos;
   o.harmonic = 2;
   o.steps = 2;
   o.down = false;
@@ -390,18 +390,18 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
       "a1..a16, b1..b16";
   int checked = 0;
   for (const char* bad : {"mu", "a0", "b17", "a01", "a", "c1"}) {
-    EXPECT_EQ(message([&] { ParseBifurcationParam(bad); }),
+    EXPECT_EQ(message([&] { ParseRobotParameter(bad); }),
               std::string("parameter = ") + bad + choices);
     ++checked;
   }
   EXPECT_EQ(checked, 6);
   int k = 0;
-  EXPECT_EQ(ParseBifurcationParam("b12", &k), BifurcationParam::kSin);
+  EXPECT_EQ(ParseRobotParameter("b12", &k), ModelParameter::ksin);
   EXPECT_EQ(k, 12);
-  EXPECT_EQ(ParseBifurcationParam("phi0", &k), BifurcationParam::kPhi0);
+  EXPECT_EQ(ParseRobotParameter("phi0", &k), ModelParameter::kphi0);
   EXPECT_EQ(k, 0);
   BifurcationOptions fourier;
-  fourier.param = BifurcationParam::kCos;
+  fourier.param = ModelParameter::kcos;
   fourier.harmonic = 2;
   fourier.from = 0.0;
   fourier.to = 0.1;
@@ -412,7 +412,7 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
             "harmonic = 0 is invalid: expected 1 <= k <= 16 for a_k and b_k, else 0");
   BifurcationOptions o;
-  o.param = BifurcationParam::kE;
+  o.param = ModelParameter::ke;
   o.from = 0.5;
   o.to = 1.5;
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
@@ -428,7 +428,7 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   o.over_values = {0.5};
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
             "second parameter = e is invalid: expected a parameter other than the diagram's");
-  o.over = BifurcationParam::kT0;
+  o.over = ModelParameter::kT0;
   o.over_values = {0.5, std::nan("")};
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
             "second parameter T0 = nan is invalid: expected finite values");

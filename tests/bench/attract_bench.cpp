@@ -57,7 +57,7 @@ BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->U
 void Bifurcation1000Values(benchmark::State& state, double converged_tolerance, bool reuse = true) {
   const Robot r;
   capsubot::BifurcationOptions opt;
-  opt.param = capsubot::BifurcationParam::kT0;
+  opt.param = capsubot::ModelParameter::kT0;
   opt.from = 0.5;
   opt.to = 2.0;
   opt.steps = 1000;

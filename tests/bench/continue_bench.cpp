@@ -71,7 +71,7 @@ BENCHMARK(BM_ContinueThreeRightOneLeft200Points)->Unit(benchmark::kMillisecond)-
 void BM_BifurcationSameRange200Values(benchmark::State& state) {
   const RobotModel r = OptimumRobot(1.0);
   capsubot::BifurcationOptions opt;
-  opt.param = capsubot::BifurcationParam::kT0;
+  opt.param = capsubot::ModelParameter::kT0;
   opt.from = 0.9;
   opt.to = 1.1;
   opt.steps = 200;

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/model/model_parameter.hpp"
 #include "capsubot/periodic.hpp"
 
 namespace capsubot {
@@ -38,20 +38,15 @@ constexpr double kMultiplierTol = 1e-4;
 constexpr double kAcross = 1e-5;
 
 // The robot of the gait with parameter `name` set to `value`.
-struct Robot {
-  Forcing forcing;
-  Params params;
-  double alpha;
-};
-Robot At(const Orbit& o, const std::string& name, double value) {
-  Robot r{o.forcing, Params{o.T0, o.e, 0.0}, o.alpha};
-  SetBifurcationParam(ParseBifurcationParam(name), 0, value, r.forcing, r.params, r.alpha);
+RobotModel At(const Orbit& o, const std::string& name, double value) {
+  RobotModel r{o.forcing, Params{o.T0, o.e, 0.0}, o.alpha};
+  SetParameter(r, ParseRobotParameter(name), 0, value);
   return r;
 }
 
 PeriodicMotion Shoot(const Orbit& o, const std::string& name, double value,
                      const PhaseState& start) {
-  const Robot r = At(o, name, value);
+  const RobotModel r = At(o, name, value);
   return ShootPeriodicMotion(r.forcing, r.params, r.alpha, start, 1, ShootingOptions{});
 }
 

@@ -27,19 +27,14 @@
 #include "capsubot/attractors.hpp"
 #include "capsubot/forcing.hpp"
 #include "capsubot/interrupt.hpp"
+#include "capsubot/model/model_parameter.hpp"
 #include "capsubot/params.hpp"
 #include "capsubot/periodic.hpp"
 
 namespace capsubot {
 
-/// The robot at one value of the continued parameter.
-struct RobotModel {
-  Forcing forcing;                                          ///< the motor force
-  Params params;                                            ///< T0, e, ...
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< mass ratio, 0 < alpha < 1
-};
-
-/// A one-parameter family of robots: the robot at parameter value lambda. The continuation does
+/// A one-parameter family of robots (RobotModel, model_parameter.hpp): the robot at parameter
+/// value lambda. The continuation does
 /// not know which parameter it is; a family must be smooth in lambda where the motion is.
 using RobotFamily = std::function<RobotModel(double lambda)>;
 
