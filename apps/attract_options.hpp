@@ -6,9 +6,9 @@
 #include <string>
 #include <utility>
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 #include "cli.hpp"
-#include "json/attractors_json.hpp"
+#include "capsubot/report/attractors_json.hpp"
 
 namespace capsubot::app {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/start_map.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"

@@ -2,7 +2,7 @@
 // down, plus the analytic one-impact orbits (docs/model.md section 13); under mpirun its parts
 // are computed on the ranks (ranks.hpp).
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 #include <fmt/format.h>
 
@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/bifurcation_csv.hpp"
-#include "capsubot/grid.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/sweep/bifurcation_csv.hpp"
+#include "capsubot/sweep/grid.hpp"
+#include "capsubot/io/io.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"

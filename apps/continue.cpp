@@ -10,9 +10,9 @@
 #include "attract_options.hpp"
 #include "capsubot/continue/branch_switch.hpp"
 #include "capsubot/continue/parameter_branch.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "commands.hpp"
-#include "json/continuation_json.hpp"
+#include "capsubot/report/continuation_json.hpp"
 #include "provenance.hpp"
 
 namespace capsubot::app {

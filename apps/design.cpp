@@ -1,9 +1,9 @@
 // capsubot design: a real robot in SI units; the inner mass (and motor frequency) of its
 // fastest robust one-impact gait, with speed, power and cost of transport, and of the fastest
-// motion reached from rest in each direction (library: capsubot/design.hpp,
-// capsubot/design_from_rest.hpp).
+// motion reached from rest in each direction (library: capsubot/design/design.hpp,
+// capsubot/design/design_from_rest.hpp).
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -23,16 +23,16 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/design_grid.hpp"
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/sweep/design_grid.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/io/io.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
 #include "from_rest_report.hpp"
 #include "help_format.hpp"
-#include "json/design_json.hpp"
+#include "capsubot/report/design_json.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"

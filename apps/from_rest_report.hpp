@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/optimize_reach.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 #include "cli.hpp"
-#include "json/attractors_json.hpp"
-#include "json/optimize_json.hpp"
+#include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/optimize_json.hpp"
 
 namespace capsubot::app {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/version.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/model/version.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "ranks.hpp"

@@ -1,6 +1,6 @@
 // capsubot merge: joins the shard files of `capsubot sweep|basins|attractors|bifurcation --shard
 // K/N` and `capsubot design --grid ... --shard K/N` into the file of the whole run (library:
-// capsubot/sweep_merge.hpp, capsubot/basin_shards.hpp, capsubot/bifurcation_shards.hpp).
+// capsubot/sweep/sweep_merge.hpp, capsubot/sweep/basin_shards.hpp, capsubot/sweep/bifurcation_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/basin_shards.hpp"
+#include "capsubot/sweep/basin_shards.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 

@@ -5,7 +5,7 @@
 // without margins (valid; stable), and which gait to build. Prints a summary (or --json); -o
 // writes the JSON.
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 #include <fmt/format.h>
 
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "capsubot/continue/gait_robustness.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/scaling.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/orbit/scaling.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"

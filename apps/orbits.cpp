@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"

@@ -1,7 +1,7 @@
 // capsubot periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of
 // the stroboscopic map, with its multipliers (docs/model.md section 13).
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "attract_options.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "json/periodic_json.hpp"
+#include "capsubot/report/periodic_json.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 

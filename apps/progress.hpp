@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "capsubot/sweep.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 namespace capsubot::app {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 
 namespace capsubot::app {
 namespace {

@@ -4,10 +4,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "capsubot/energy.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/model/energy.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::app {
 

@@ -9,13 +9,13 @@
 #include <optional>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
-#include "capsubot/orbit_start.hpp"
-#include "capsubot/simulator.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/simulate/simulator.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "json/simulation_json.hpp"
+#include "capsubot/report/simulation_json.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/orbit_energy.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "help_format.hpp"

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
 

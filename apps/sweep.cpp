@@ -1,8 +1,8 @@
 // capsubot sweep: the orbit, its validity (and stability), or the optimum of P1, P2, P3 or the
 // reach problem at every point of a grid of parameters, to a CSV file (library:
-// capsubot/sweep.hpp).
+// capsubot/sweep/sweep.hpp).
 
-#include "capsubot/sweep.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/optimize_request.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"

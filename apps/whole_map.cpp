@@ -2,7 +2,7 @@
 
 #include "whole_map.hpp"
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "ranks.hpp"
 
 namespace capsubot::app {

@@ -1,7 +1,7 @@
 // attractors: the long-run motions reached from rest on a grid of starts (docs/model.md
 // sections 12 and 13), as `capsubot attractors --json`; motion options shared with periodic.
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "json/attractors_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/attractors_json.hpp"
 
 namespace capsubot::python {
 namespace {

@@ -16,9 +16,9 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/forcing.hpp"
-#include "capsubot/interrupt.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/interrupt.hpp"
 
 namespace capsubot::python {
 
@@ -119,7 +119,7 @@ class SignalCheck {
   }
   /// Checks now (still at most every kInterval): where a call is rare (once per start).
   void Check();
-  /// Check() as the library's Interrupt (capsubot/interrupt.hpp), for the options of a long
+  /// Check() as the library's Interrupt (capsubot/model/interrupt.hpp), for the options of a long
   /// call; valid while this check lives (the call inside RunWithoutGil).
   Interrupt AsInterrupt() {
     return [this] { Check(); };

@@ -15,7 +15,7 @@
 
 #include "bindings.hpp"
 #include "capsubot/continue/parameter_branch.hpp"
-#include "json/continuation_json.hpp"
+#include "capsubot/report/continuation_json.hpp"
 
 namespace capsubot::python {
 namespace {

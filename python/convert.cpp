@@ -13,7 +13,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
+#include "capsubot/model/limits.hpp"
 
 namespace capsubot::python {
 void RequireTerms(const char* name, const char* symbol,

@@ -1,7 +1,7 @@
 // design: a real robot in SI units; the inner mass (and motor frequency) of its fastest robust
 // one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/limits.hpp"
-#include "json/design_json.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/design_json.hpp"
 
 namespace capsubot::python {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 
 PYBIND11_MODULE(capsubot, m) {
   m.doc() =

@@ -2,7 +2,7 @@
 // (section 12), every gait checked from rest, as `capsubot optimize --json`: one problem, the
 // fastest motion from rest (reach, section 13), or the main job without one.
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -14,8 +14,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "json/optimize_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/optimize_json.hpp"
 
 namespace capsubot::python {
 namespace {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {

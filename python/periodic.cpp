@@ -2,7 +2,7 @@
 // stroboscopic map, with its multipliers (docs/model.md section 13), as
 // `capsubot periodic --json`.
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <pybind11/stl.h>
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "json/periodic_json.hpp"
+#include "capsubot/report/periodic_json.hpp"
 
 namespace capsubot::python {
 namespace {

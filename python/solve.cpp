@@ -9,9 +9,9 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/limits.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {

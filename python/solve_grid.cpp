@@ -21,9 +21,9 @@
 #include <thread>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 namespace capsubot::python {
 namespace {

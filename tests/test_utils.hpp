@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/params.hpp"
-#include "capsubot/simulator.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::testing {
 

@@ -1,7 +1,7 @@
 // Attractors from a set of starts (docs/model.md sections 12 and 13): the long-run motion of
 // every start, in parallel, grouped into classes; the one-impact orbit recognised by its state.
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 
 namespace capsubot {
 namespace {

@@ -1,6 +1,6 @@
 // Bifurcation diagrams by brute force with the state carried along (docs/model.md section 13).
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 #include <fmt/format.h>
 
@@ -19,10 +19,10 @@
 
 #include "attract/parallel.hpp"
 #include "attract/stroboscopic.hpp"
-#include "capsubot/periodic.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {

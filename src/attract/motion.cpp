@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 #include "attract/stroboscopic.hpp"
-#include "capsubot/attractors.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The computing threads of a run of blocks (capsubot/blocks.hpp) over independent items: each
+// The computing threads of a run of blocks (capsubot/parallel/blocks.hpp) over independent items: each
 // item's result depends only on the item, so the output does not depend on the number of
 // threads.
 

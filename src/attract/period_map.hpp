@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "attract/stroboscopic.hpp"
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 namespace capsubot::detail {
 

@@ -1,6 +1,6 @@
 // Newton shooting on the p-th iterate of the stroboscopic map (docs/model.md section 13).
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@
 
 #include "attract/period_map.hpp"
 #include "attract/stroboscopic.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {

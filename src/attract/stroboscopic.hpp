@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/periodic.hpp"
-#include "capsubot/simulator.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::detail {
 

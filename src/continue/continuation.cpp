@@ -13,7 +13,7 @@
 #include "attract/stroboscopic.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {

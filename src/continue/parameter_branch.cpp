@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "capsubot/model/model_parameter.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
 
 namespace capsubot {
 

@@ -1,9 +1,9 @@
-#include "optimize/nlopt_box.hpp"
+#include "capsubot/optimize/detail/nlopt_box.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot::detail {
 

@@ -1,4 +1,4 @@
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 #include <fmt/format.h>
 

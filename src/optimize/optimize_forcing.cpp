@@ -9,7 +9,7 @@
 // (A + c, c/(A + c)) with a coarse phase scan at each cell; restarts ("hops") perturb A and c
 // by relative and phi0 by absolute steps; a phase-exact polish refines the best point.
 
-#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
 
 #include <fmt/format.h>
 
@@ -17,9 +17,9 @@
 #include <cmath>
 #include <random>
 
-#include "capsubot/optimize_phase.hpp"
-#include "optimize/nlopt_status.hpp"
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
 #include "optimize/pipeline.hpp"
 
 namespace capsubot {

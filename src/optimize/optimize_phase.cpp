@@ -5,7 +5,7 @@
 // neighbouring scan points down to phase_tol (keeping the valid side), maximise I by Brent's
 // method (GSL) around every local maximum of the scan inside an arc, and return the best.
 
-#include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_errno.h>
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "optimize/nlopt_constraints.hpp"
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
 
 namespace capsubot {
 namespace {

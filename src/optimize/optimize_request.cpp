@@ -1,6 +1,6 @@
-// Each problem's options from the user's search settings (capsubot/optimize_request.hpp).
+// Each problem's options from the user's search settings (capsubot/optimize/optimize_request.hpp).
 
-#include "capsubot/optimize_request.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 
 namespace capsubot {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot::detail {
 

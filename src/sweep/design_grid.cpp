@@ -1,4 +1,4 @@
-#include "capsubot/design_grid.hpp"
+#include "capsubot/sweep/design_grid.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

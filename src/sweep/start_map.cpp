@@ -1,6 +1,6 @@
 // The CSV of a map of starts and the resumable file of one of its shards.
 
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "attract/stroboscopic.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "sweep/sweep_file.hpp"
 
 namespace capsubot {

@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

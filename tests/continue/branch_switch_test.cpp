@@ -10,8 +10,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 namespace capsubot {
 namespace {

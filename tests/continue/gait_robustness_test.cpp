@@ -11,7 +11,7 @@
 #include <string>
 
 #include "capsubot/model/model_parameter.hpp"
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 namespace capsubot {
 namespace {

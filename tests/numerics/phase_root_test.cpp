@@ -1,7 +1,7 @@
 // The root finder of the orbit and of the simulator's events: the parabola that starts it,
 // and its zeros and values against an independent bisection and Forcing::Values.
 
-#include "numerics/phase_root.hpp"
+#include "capsubot/model/detail/phase_root.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The zeros of trigonometric polynomials (Bernstein subdivision on half-angle charts) against
 // polynomials built from their roots, and against dense scans of random series.
 
-#include "numerics/trig_roots.hpp"
+#include "capsubot/model/detail/trig_roots.hpp"
 
 #include <gtest/gtest.h>
 

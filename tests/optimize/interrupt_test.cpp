@@ -1,8 +1,8 @@
-// The Interrupt of the long computations (capsubot/interrupt.hpp): each one asks it on the
+// The Interrupt of the long computations (capsubot/model/interrupt.hpp): each one asks it on the
 // calling thread only, is abandoned with the very exception it throws (through NLopt too, and
 // with nothing asked after the throw), and gives the same numbers when it never throws.
 
-#include "capsubot/interrupt.hpp"
+#include "capsubot/model/interrupt.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,16 +13,16 @@
 #include <thread>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/optimize_fourier.hpp"
-#include "capsubot/optimize_phase.hpp"
-#include "capsubot/optimize_reach.hpp"
-#include "capsubot/periodic.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/optimize/optimize_fourier.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "design/example_robot.hpp"
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot {
 namespace {

@@ -2,7 +2,7 @@
 // References: random valid samples and re-checks through Solve (the `solve` code path), the
 // scaling law of docs/model.md section 6, and the event-driven simulator.
 
-#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/simulator.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/simulate/simulator.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 

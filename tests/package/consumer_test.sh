@@ -18,7 +18,7 @@ echo "$out"
 # phi1 = 2.748... is the root of 3 phi1 = 2 pi + 2 sin(phi1/2) (docs/model.md, section 6).
 [[ $out == "capsubot $version: phi1 = 2.7482072884"* ]]
 [[ $("$work/prefix/bin/capsubot" --version) == "$version" ]]
-test -f "$work/prefix/include/capsubot/validity.hpp"
+test -f "$work/prefix/include/capsubot/orbit/validity.hpp"
 completion=$work/prefix/share/bash-completion/completions/capsubot
 test -f "$completion"
 # shellcheck disable=SC2016

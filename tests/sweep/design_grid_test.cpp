@@ -1,9 +1,9 @@
-// Designs over a grid of the robot's SI inputs (capsubot/design_grid.hpp): every row equals the
+// Designs over a grid of the robot's SI inputs (capsubot/sweep/design_grid.hpp): every row equals the
 // library design of that robot computed here point by point, rho-max = inf is the design
 // without a stability requirement, a resumed run gives the same bytes, and every bad grid is
 // refused with a message naming the parameter, its value and the rule.
 
-#include "capsubot/design_grid.hpp"
+#include "capsubot/sweep/design_grid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "design/example_robot.hpp"
 #include "test_utils.hpp"
 

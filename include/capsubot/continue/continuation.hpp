@@ -24,12 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/forcing.hpp"
-#include "capsubot/interrupt.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/model_parameter.hpp"
-#include "capsubot/params.hpp"
-#include "capsubot/periodic.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 namespace capsubot {
 
@@ -60,7 +60,7 @@ struct ContinuationOptions {
   /// settings along the branch (step: the finite-difference step of every Jacobian).
   ShootingOptions shooting;
   /// Asked once per attempted step (a few simulated periods apart, about a millisecond); what
-  /// it throws stops the continuation and is rethrown (capsubot/interrupt.hpp). Optional.
+  /// it throws stops the continuation and is rethrown (capsubot/model/interrupt.hpp). Optional.
   Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.

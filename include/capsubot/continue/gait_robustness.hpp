@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "capsubot/continue/continuation.hpp"
-#include "capsubot/orbit.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 

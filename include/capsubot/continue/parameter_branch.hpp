@@ -5,9 +5,9 @@
 #include <string>
 
 #include "capsubot/continue/continuation.hpp"
-#include "capsubot/forcing.hpp"
-#include "capsubot/orbit.hpp"
-#include "capsubot/params.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/orbit/orbit.hpp"
+#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 
