@@ -12,7 +12,7 @@
 
 namespace capsubot::app {
 
-// The JSON of motions is the shared layer's (src/json/), the same for the Python module.
+// The JSON of motions is the shared layer's (src/report/), the same for the Python module.
 using json::AttractorsJson;
 using json::MotionJson;
 

@@ -97,7 +97,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
 }
 
 // The numbers of gaits and motions from rest for the table and the CSV are those of their JSON
-// (src/json/).
+// (src/report/).
 using json::Dimensionless;
 using json::UserUnits;
 

@@ -16,7 +16,7 @@
 
 namespace capsubot::app {
 
-// The `from_rest` and `reach` objects are the shared layer's (src/json/), the same for the
+// The `from_rest` and `reach` objects are the shared layer's (src/report/), the same for the
 // Python module.
 using json::FromRestJson;
 using json::ReachJson;

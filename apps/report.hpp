@@ -11,7 +11,7 @@
 
 namespace capsubot::app {
 
-// The JSON of an orbit is the shared layer's (src/json/), the same for the Python module.
+// The JSON of an orbit is the shared layer's (src/report/), the same for the Python module.
 using json::AddEnergyJson;
 using json::AddStabilityJson;
 using json::SolutionJson;

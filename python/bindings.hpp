@@ -2,7 +2,7 @@
 // The Python module's pieces: one Bind function per library concept (each in its own file,
 // called by module.cpp), and the conversions they share (convert.cpp). The module is thin:
 // it converts Python arguments to the library's inputs, calls the library, builds the result
-// as the command line's --json does (the shared layer src/json/) and converts that JSON to
+// as the command line's --json does (the shared layer src/report/) and converts that JSON to
 // Python objects (same keys, null -> None).
 
 #include <pybind11/pybind11.h>

@@ -1,5 +1,5 @@
 // Conversions shared by the module's functions: the force arguments, and the JSON of the
-// results (src/json/, as the command line prints it) as Python objects.
+// results (src/report/, as the command line prints it) as Python objects.
 
 #include <fmt/format.h>
 #include <pybind11/complex.h>

@@ -1,6 +1,6 @@
 // The Python module `capsubot`: the library's computations with keyword arguments named as
 // the command-line options, results as the dicts of the command line's --json (built by its
-// JSON layer, src/json/; NumPy arrays for tables). pybind11 maps std::invalid_argument to
+// JSON layer, src/report/; NumPy arrays for tables). pybind11 maps std::invalid_argument to
 // ValueError and std::runtime_error to RuntimeError, with the library's message.
 
 #include <string>

@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "attract/parallel.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 
 namespace capsubot {
@@ -143,7 +143,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
                           std::int64_t first, const MotionSink& sink, const BlockBackend& backend) {
   params.Validate();
   options.Validate();
-  for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
+  for (const PhaseState& s : starts) ValidateStart(alpha, s);
   const auto n = static_cast<std::int64_t>(starts.size());
   if (first < 0 || first > n) {
     throw std::invalid_argument(fmt::format(

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "attract/parallel.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
@@ -183,7 +183,7 @@ Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
       const RobotModel r = At(study.bases.back(), options.param, options.harmonic, value);
       try {
         r.params.Validate();
-        detail::ValidateStart(r.alpha, options.start);
+        ValidateStart(r.alpha, options.start);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format(
             "{} = {}{} makes the robot invalid: {}",

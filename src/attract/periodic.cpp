@@ -12,8 +12,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "attract/period_map.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
@@ -261,7 +261,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
                                   const PhaseState& start, const ShootingOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ValidateStart(alpha, start);
+  ValidateStart(alpha, start);
   Shooter shooter(forcing, params, alpha, options);
   detail::MapState s{start, SimMode::kRest};
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
@@ -286,7 +286,7 @@ PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params,
                                    const ShootingOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ValidateStart(alpha, start);
+  ValidateStart(alpha, start);
   if (period < 1 || period > kMaxPeriodLimit) {
     throw std::invalid_argument(
         fmt::format("period = {} is invalid: expected 1 <= period <= 64", period));

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "attract/period_map.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
 
 namespace capsubot {
 namespace {

@@ -9,8 +9,8 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "attract/period_map.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
 #include "capsubot/model/detail/enum_names.hpp"

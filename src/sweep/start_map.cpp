@@ -8,7 +8,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "attract/stroboscopic.hpp"
 #include "capsubot/io/io.hpp"
 #include "sweep/sweep_file.hpp"
 
@@ -101,7 +100,7 @@ StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, 
   std::replace(description.begin(), description.end(), '\n', '\x1f');
   params.Validate();  // before the file is touched
   attractor.Validate();
-  for (const PhaseState& s : mine) detail::ValidateStart(alpha, s);
+  for (const PhaseState& s : mine) ValidateStart(alpha, s);
   detail::SweepFile file(options.output, description, head,
                          {static_cast<std::int64_t>(mine.size()), {}}, options.resume,
                          options.checkpoint_seconds, "shard");

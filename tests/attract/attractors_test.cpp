@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/bifurcation.hpp"
 #include "capsubot/attract/periodic.hpp"

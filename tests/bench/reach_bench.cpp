@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "capsubot/optimize/optimize.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 
 namespace {
 

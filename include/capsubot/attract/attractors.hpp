@@ -39,6 +39,10 @@ struct PhaseState {
   double psi = kNaN;  ///< forcing phase, in [0, tau)
 };
 
+/// Checks a mass ratio and a start state before a run: throws std::invalid_argument naming the
+/// bad value (the simulator's rules for alpha, x, u and v; a finite psi).
+void ValidateStart(double alpha, const PhaseState& start);
+
 /// The most periods a long run records (MotionOptions::record): the record holds about 50
 /// bytes a period per thread (its section states and impacts), 0.5 GB at this bound.
 inline constexpr int kMaxRecord = 10000000;

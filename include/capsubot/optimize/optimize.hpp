@@ -5,6 +5,5 @@
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_fourier.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/optimize/optimize_request.hpp"
 #include "capsubot/optimize/optimize_result.hpp"

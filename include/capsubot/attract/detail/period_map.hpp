@@ -9,7 +9,7 @@
 #include <complex>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/periodic.hpp"
 
 namespace capsubot::detail {

@@ -98,9 +98,6 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
                       const MotionOptions& options, MapState s, Recorder& recorder,
                       bool keep_impacts = false);
 
-/// Checks alpha and a start state (std::invalid_argument naming the bad value).
-void ValidateStart(double alpha, const PhaseState& start);
-
 /// The periodic motion of period p (or a divisor of it) through the state s (periodic.cpp):
 /// the section is moved off the events of the next p periods from s, then Newton's method on
 /// the p-th iterate with the simulator settings of `options`; the period is the smallest
