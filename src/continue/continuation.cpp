@@ -190,7 +190,7 @@ void Assemble(const Node& start, const Direction& backward, const Direction& for
 void CheckRobot(const RobotFamily& family, double lambda, const PhaseState& start) {
   const RobotModel r = family(lambda);
   r.params.Validate();
-  detail::ValidateStart(r.alpha, start);
+  ValidateStart(r.alpha, start);
 }
 
 }  // namespace
