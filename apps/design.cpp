@@ -272,19 +272,22 @@ DesignFromRestProgress StageProgress() {
   };
 }
 
-// Whether the user-unit key `key` of a gait is a result column: all but m2_kg when m2 has a
-// grid (the grid's column m2_kg holds it: DesignGridAxis::column).
-bool ResultColumn(const char* key, bool m2_gridded) {
-  return !m2_gridded || std::string_view(key) != "m2_kg";
+// The grid's columns (DesignGridAxis::column: m2_kg, frequency_hz, ...).
+using GridColumns = std::vector<std::string>;
+
+// Whether the user-unit key `key` of a gait is a result column: all but those a grid's column
+// holds (a gridded m2 is the column m2_kg, a gridded frequency frequency_hz).
+bool ResultColumn(const char* key, const GridColumns& grid) {
+  return std::find(grid.begin(), grid.end(), key) == grid.end();
 }
 
 // The result columns of a design grid, after the grid's: the gait's status, its numbers in
 // the user's units (ResultColumn) and dimensionless (those of its JSON), its orbits and
 // binding limits.
-std::vector<std::string> GaitColumns(bool m2_gridded) {
+std::vector<std::string> GaitColumns(const GridColumns& grid) {
   std::vector<std::string> columns = {"status"};
   for (const auto& [key, value] : UserUnits(Gait{})) {
-    if (ResultColumn(key, m2_gridded)) columns.emplace_back(key);
+    if (ResultColumn(key, grid)) columns.emplace_back(key);
   }
   for (const auto& [key, value] : Dimensionless(Gait{})) columns.emplace_back(key);
   columns.emplace_back("orbits");
@@ -292,11 +295,11 @@ std::vector<std::string> GaitColumns(bool m2_gridded) {
   return columns;
 }
 
-// The cells of GaitColumns(m2_gridded).
-std::string GaitCells(const Gait& g, bool m2_gridded) {
+// The cells of GaitColumns(grid).
+std::string GaitCells(const Gait& g, const GridColumns& grid) {
   std::vector<std::string> cells = {GaitStatusName(g.status)};
   for (const auto& [key, value] : UserUnits(g)) {
-    if (ResultColumn(key, m2_gridded)) cells.push_back(FormatNumber(value));
+    if (ResultColumn(key, grid)) cells.push_back(FormatNumber(value));
   }
   for (const auto& [key, value] : Dimensionless(g)) cells.push_back(FormatNumber(value));
   cells.push_back(std::to_string(g.orbits));
@@ -357,11 +360,10 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.output.empty()) {
     throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
   }
-  const bool m2_gridded = std::any_of(o.axes.begin(), o.axes.end(), [](const DesignGridAxis& axis) {
-    return axis.parameter == DesignParameter::km2;
-  });
-  o.columns = GaitColumns(m2_gridded);
-  o.row = [m2_gridded](const Gait& g) { return GaitCells(g, m2_gridded); };
+  GridColumns grid;
+  for (const DesignGridAxis& axis : o.axes) grid.push_back(axis.column());
+  o.columns = GaitColumns(grid);
+  o.row = [grid](const Gait& g) { return GaitCells(g, grid); };
   o.comments.push_back(GridProvenance(opt, cmd, settings));
   o.output = opt.output;
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);

@@ -49,8 +49,9 @@ struct DesignGridAxis : GridValues {
   DesignParameter parameter = DesignParameter::km2;  ///< what varies
 
   std::string name() const { return DesignParameterName(parameter); }
-  /// Its column in the CSV header: name(), but "m2_kg" for the inner mass (the name of a gait's
-  /// inner mass, Gait::m2_kg, with its unit: a file has one column for it).
+  /// Its column in the CSV header: name(), but "m2_kg" for the inner mass and "frequency_hz" for
+  /// the frequency (the names of a gait's Gait::m2_kg and Gait::frequency_hz, with their units:
+  /// a file has one column for each).
   std::string column() const;
   /// `name=` + ValuesText().
   std::string ToString() const { return name() + "=" + ValuesText(); }
