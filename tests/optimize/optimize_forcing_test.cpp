@@ -226,6 +226,19 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   EXPECT_TRUE(testing::Near(s.final_state.u, -o.e * o.u, 1e-9));
 }
 
+TEST(OptimizeForcing, ReturnsWhereTheStickConditionAndTheForceBoundCoincide) {
+  // Grid point 111 of `capsubot sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize
+  // forcing` (the sweep's options: no margins, bound T0). There max |F| <= T0 (stick, s = 0)
+  // and A + c <= T0 (force bound) are the same plane; given both, COBYLA's linear subproblem
+  // cycled without evaluating, past every evaluation and time limit (the test's ctest TIMEOUT
+  // catches that). Within the time limit the search ends with a valid optimum.
+  const Params params{0.011547819846894581, 0.725, 0.0};
+  const OptimizeResult r = OptimizeForcing(params);
+  EXPECT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  ASSERT_TRUE(r.found()) << r.message;
+  EXPECT_TRUE(r.solution.validity.valid());
+}
+
 class LocalAlgorithm : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LocalAlgorithm, AgreesWithTheDefaultOnTheOptimum) {
