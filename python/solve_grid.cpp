@@ -17,13 +17,12 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
-#include <system_error>
-#include <thread>
 
 #include "bindings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -155,11 +154,12 @@ class GridSolver {
   GridSolver(const Layout& layout, const Outputs& out, bool stability)
       : layout_(layout), out_(out), stability_(stability) {}
 
-  void SolveBlock(std::int64_t begin, std::int64_t end) {
+  // Returns the points solved: end - begin, or fewer when one was rejected.
+  std::int64_t SolveBlock(std::int64_t begin, std::int64_t end) {
     std::vector<double> a{0.0}, b{0.0};  // the harmonic force as a series: b_1 = A
     Cursor in(layout_, begin);
     for (std::int64_t p = begin; p < end; ++p, in.Next()) {
-      if (p > first_error_.load(std::memory_order_relaxed)) return;
+      if (p > first_error_.load(std::memory_order_relaxed)) return p - begin;
       try {
         const double A = in[kA], c = in[kc], phi0 = in[kphi0];
         // Anything but an amplitude: Harmonic throws the library's message.
@@ -170,17 +170,23 @@ class GridSolver {
         Store(p, capsubot::Solve(forcing, params));
       } catch (...) {
         Fail(p, std::current_exception());
-        return;
+        return p - begin;
       }
     }
+    return end - begin;
   }
 
   // Rethrows the error of the smallest failed index, naming it.
   void RethrowError() const {
-    if (!error_) return;
+    std::exception_ptr error;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      error = error_;
+    }
+    if (!error) return;
     const std::string where = "at index " + layout_.IndexText(first_error_.load());
     try {
-      std::rethrow_exception(error_);
+      std::rethrow_exception(error);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
     } catch (const std::bad_alloc&) {
@@ -189,10 +195,6 @@ class GridSolver {
       throw std::runtime_error(fmt::format("{}: {}", where, e.what()));
     }
   }
-
-  // Stops every thread (after an interrupt): marks no point as failed.
-  void Stop() { first_error_.store(-1); }
-  bool stopped() const { return first_error_.load() < 0; }
 
  private:
   void Store(std::int64_t p, const Solution& s) const {
@@ -226,14 +228,14 @@ class GridSolver {
   const Layout& layout_;
   const Outputs& out_;
   const bool stability_;
-  std::atomic<std::int64_t> first_error_{kNoError};  // -1: stopped by an interrupt
-  std::mutex mutex_;
+  std::atomic<std::int64_t> first_error_{kNoError};
+  mutable std::mutex mutex_;
   std::exception_ptr error_;
 };
 
 // The threads asked for (None: all cores), lowered to the command line's cap (limits.hpp).
 int ThreadCount(std::optional<int> threads) {
-  if (!threads) return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (!threads) return WorkerThreads(0);
   if (*threads < 1 || *threads > kMaxThreads) {
     throw std::invalid_argument(
         fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (None: all cores)",
@@ -272,29 +274,25 @@ Array NumbersArgument(const char* name, const py::object& value) {
   return Array::ensure(numbers);
 }
 
-// Runs the blocks on `threads` threads, the calling one included; the calling thread
-// checks for Ctrl-C (it takes the GIL for that) after each of its blocks.
-void RunBlocks(GridSolver& solver, std::int64_t size, int threads) {
-  const std::int64_t blocks = (size + kBlockPoints - 1) / kBlockPoints;
-  std::atomic<std::int64_t> next{0};
-  const auto work = [&](bool check_signals) {
-    for (std::int64_t k = next++; k < blocks && !solver.stopped(); k = next++) {
-      solver.SolveBlock(k * kBlockPoints, std::min(size, (k + 1) * kBlockPoints));
-      if (check_signals) {
-        py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) solver.Stop();  // the exception stays set
-      }
-    }
+// Solves the grid in blocks on `threads` computing threads (blocks.hpp); the calling thread
+// takes the blocks in order, checks for Ctrl-C and stops at the first block with a rejected
+// point (every block before it was whole: its rejected point is the first in C order).
+void RunBlocks(GridSolver& solver, std::int64_t size, int threads, SignalCheck& check) {
+  BlockPlan plan;
+  plan.end = size;
+  plan.block = kBlockPoints;
+  plan.threads = threads;
+  const BlockComputeFactory make = [&solver]() -> BlockCompute {
+    return [&solver](std::int64_t begin, std::int64_t end, std::string&) {
+      return solver.SolveBlock(begin, end);
+    };
   };
-  std::vector<std::thread> pool;
-  const auto helpers = std::min<std::int64_t>(threads, blocks) - 1;
-  try {
-    for (std::int64_t i = 0; i < helpers; ++i) pool.emplace_back(work, false);
-  } catch (const std::system_error&) {
-    // The system refused a thread: the ones started (and this one) do all the blocks.
-  }
-  work(true);
-  for (std::thread& t : pool) t.join();
+  LocalBlocks().Run(
+      plan, make,
+      [&](std::int64_t begin, std::int64_t end, const std::string&, std::int64_t solved) {
+        if (solved < end - begin) solver.RethrowError();
+        check.Check();
+      });
 }
 
 py::dict SolveGrid(const py::object& A, const py::object& c, const py::object& phi0,
@@ -331,12 +329,7 @@ py::dict SolveGrid(const py::object& A, const py::object& c, const py::object& p
   }
 
   GridSolver solver(layout, out, stability);
-  {
-    py::gil_scoped_release release;
-    RunBlocks(solver, layout.size, thread_count);
-  }
-  if (solver.stopped()) throw py::error_already_set();
-  solver.RethrowError();
+  RunWithoutGil([&](SignalCheck& check) { RunBlocks(solver, layout.size, thread_count, check); });
   return d;
 }
 

@@ -21,7 +21,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "ranks.hpp"
@@ -67,11 +66,7 @@ class Master : public BlockBackend {
     plan.Validate();
     BlockQueue queue(plan, static_cast<std::int64_t>(kWindowPerThread) * plan.threads * size_);
     std::vector<std::int64_t> held(static_cast<std::size_t>(size_), -1);  // block of each worker
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(plan.threads));
-    for (int i = 0; i < plan.threads; ++i) {
-      pool.emplace_back([&queue, &make] { ComputeBlocks(queue, make); });
-    }
+    ComputeThreads workers(queue, make, plan.threads);
     try {
       std::string bytes;
       while (!queue.done() && !queue.stopped()) {
@@ -98,7 +93,7 @@ class Master : public BlockBackend {
     } catch (...) {
       queue.Stop(std::current_exception());
     }
-    for (std::thread& t : pool) t.join();
+    workers.Join();
     // Blocks still out (after an error): take their answers, so that every worker waits for
     // its next order again.
     std::string bytes;
@@ -197,9 +192,7 @@ int Ranks::Serve(const BlockComputeFactory& make, int threads) {
       BlockPlan plan;
       plan.first = range[0];
       plan.end = range[1];
-      plan.threads = threads > 0
-                         ? threads
-                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+      plan.threads = WorkerThreads(threads);
       plan.block = BalancedBlock(plan.end - plan.first, threads, plan.end - plan.first);
       LocalBlocks().Run(plan, make,
                         [&](std::int64_t, std::int64_t, const std::string& b, std::int64_t c) {

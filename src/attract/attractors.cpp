@@ -14,7 +14,6 @@
 #include <type_traits>
 #include <utility>
 
-#include "attract/parallel.hpp"
 #include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 
@@ -152,7 +151,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
   BlockPlan plan;
   plan.first = first;
   plan.end = n;
-  plan.threads = detail::WorkerCount(options.threads, std::max<std::int64_t>(1, n - first));
+  plan.threads = WorkerThreads(options.threads, std::max<std::int64_t>(1, n - first));
   plan.block = BalancedBlock(n - first, backend.Threads(plan.threads), kStartsPerBlock);
   std::vector<Motion> block;
   backend.Run(plan, MotionBlocks(forcing, params, alpha, starts, options),

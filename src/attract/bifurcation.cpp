@@ -17,12 +17,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "attract/parallel.hpp"
 #include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/periodic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
-#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -410,7 +409,7 @@ void StreamBifurcation(const Forcing& forcing, const Params& params, double alph
   plan.first = first;
   plan.end = parts;
   plan.block = 1;  // a part a block: the parts are few and long
-  plan.threads = detail::WorkerCount(options.threads, std::max<std::int64_t>(1, parts - first));
+  plan.threads = WorkerThreads(options.threads, std::max<std::int64_t>(1, parts - first));
   backend.Run(plan, PartBlocks(forcing, params, alpha, options, &done),
               [&](std::int64_t k, std::int64_t, const std::string& bytes, std::int64_t) {
                 // Block k is part k alone (plan.block = 1).

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -25,18 +26,13 @@ class LocalBackend : public BlockBackend {
     plan.Validate();
     const std::int64_t blocks = plan.Blocks();
     BlockQueue queue(plan, static_cast<std::int64_t>(kWindowPerThread) * plan.threads);
-    const auto workers = std::min<std::int64_t>(plan.threads, blocks);
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(std::max<std::int64_t>(workers, 0)));
-    for (std::int64_t i = 0; i < workers; ++i) {
-      pool.emplace_back([&queue, &make] { ComputeBlocks(queue, make); });
-    }
+    ComputeThreads workers(queue, make, std::min<std::int64_t>(plan.threads, blocks));
     try {
       while (!queue.done() && !queue.stopped()) queue.DeliverNext(sink, kSinkWait);
     } catch (...) {
       queue.Stop(std::current_exception());
     }
-    for (std::thread& t : pool) t.join();
+    workers.Join();
     queue.RethrowError();
   }
 };
@@ -56,6 +52,12 @@ void BlockPlan::Validate() const {
   if (threads < 1) {
     throw std::invalid_argument(fmt::format("threads = {} is invalid: expected >= 1", threads));
   }
+}
+
+int WorkerThreads(int threads, std::int64_t units) {
+  const int wanted =
+      threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(wanted, units)));
 }
 
 std::int64_t BalancedBlock(std::int64_t units, int threads, std::int64_t most) {
@@ -168,6 +170,25 @@ void ComputeBlocks(BlockQueue& queue, const BlockComputeFactory& make) {
     }
   } catch (...) {
     queue.Stop(std::current_exception());
+  }
+}
+
+ComputeThreads::ComputeThreads(BlockQueue& queue, const BlockComputeFactory& make,
+                               std::int64_t threads) {
+  pool_.reserve(static_cast<std::size_t>(std::max<std::int64_t>(threads, 0)));
+  for (std::int64_t i = 0; i < threads; ++i) {
+    try {
+      pool_.emplace_back([&queue, &make] { ComputeBlocks(queue, make); });
+    } catch (const std::system_error&) {
+      if (pool_.empty()) throw;  // no thread at all: nothing would compute the blocks
+      return;                    // the threads started compute every block
+    }
+  }
+}
+
+void ComputeThreads::Join() {
+  for (std::thread& t : pool_) {
+    if (t.joinable()) t.join();
   }
 }
 

@@ -264,7 +264,7 @@ SweepSummary RunDesignGrid(const DesignGridOptions& o, const SweepProgressCallba
   run.resume = o.resume;
   run.checkpoint_seconds = o.checkpoint_seconds;
   run.points = detail::ShardCount(o.Points(), o.shard, o.shards);
-  run.threads = detail::GridThreads(o.threads);
+  run.threads = WorkerThreads(o.threads);
   // A point is one design (a robot: ~1 ms; a search over m2 or f: ~0.1 s): one per block.
   run.block_points = [](std::int64_t points, int threads) {
     return BalancedBlock(points, threads, 1);

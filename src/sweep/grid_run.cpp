@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
-#include <thread>
 
 #include "sweep/shard_set.hpp"
 #include "sweep/sweep_file.hpp"
@@ -40,11 +39,6 @@ PointRows GridPointRows(const GridRun& run) {
 }
 
 }  // namespace
-
-int GridThreads(int threads) {
-  if (threads > 0) return threads;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
 
 std::int64_t ShardCount(std::int64_t total, int shard, int shards) {
   return shards <= 1 ? total : (total - shard + shards - 1) / shards;

@@ -27,9 +27,6 @@ struct GridRun {
   std::function<std::int64_t(std::int64_t points, int threads)> block_points;
 };
 
-/// Worker threads: `threads`, or std::thread::hardware_concurrency() for 0.
-int GridThreads(int threads);
-
 /// Points of shard `shard` of `shards` of a grid of `total` points (p % shards == shard).
 std::int64_t ShardCount(std::int64_t total, int shard, int shards);
 

@@ -258,7 +258,7 @@ SweepSummary RunSweep(const SweepOptions& options, const SweepProgressCallback& 
   run.resume = options.resume;
   run.checkpoint_seconds = options.checkpoint_seconds;
   run.points = ShardPointCount(options);  // every grid point, or those of one shard
-  run.threads = detail::GridThreads(options.threads);
+  run.threads = WorkerThreads(options.threads);
   run.block_points = [&options](std::int64_t points, int threads) {
     return SweepBlockPoints(options, points, threads);
   };

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace capsubot {
@@ -122,6 +125,38 @@ TEST(BalancedBlock, GivesEveryThreadAboutEightBlocksUpToTheMost) {
   EXPECT_EQ(BalancedBlock(1000000, 2, 2048), 2048);  // capped
   EXPECT_EQ(BalancedBlock(1600, 2, 2048), 100);      // 1600 / (8 * 2)
   EXPECT_EQ(BalancedBlock(3, 4, 2048), 1);           // at least one unit
+}
+
+TEST(WorkerThreads, GivesTheThreadsAskedOrOnePerCoreAtMostOnePerUnit) {
+  const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  EXPECT_EQ(WorkerThreads(3), 3);
+  EXPECT_EQ(WorkerThreads(0), cores);
+  EXPECT_EQ(WorkerThreads(8, 2), 2);  // one per unit
+  EXPECT_EQ(WorkerThreads(0, 1), 1);
+  EXPECT_EQ(WorkerThreads(5, 0), 1);  // at least one
+  EXPECT_EQ(WorkerThreads(3, 1000), 3);
+}
+
+TEST(ComputeThreads, ComputeEveryBlockOfAQueueTakenInOrderByTheCaller) {
+  BlockPlan plan;
+  plan.end = 1000;
+  plan.block = 7;
+  plan.threads = 3;
+  BlockQueue queue(plan, 4);
+  std::string all;
+  const BlockComputeFactory make = NumberLines();
+  ComputeThreads workers(queue, make, plan.threads);
+  int deliveries = 0;
+  for (int i = 0; i < 1000 && !queue.done(); ++i) {  // each wait ends with a block or 1 s
+    if (queue.DeliverNext([&](std::int64_t, std::int64_t, const std::string& bytes,
+                              std::int64_t) { all += bytes; },
+                          std::chrono::seconds(1))) {
+      ++deliveries;
+    }
+  }
+  workers.Join();
+  EXPECT_EQ(deliveries, 143);  // ceil(1000 / 7)
+  EXPECT_EQ(all, SequentialLines(0, 1000));
 }
 
 }  // namespace

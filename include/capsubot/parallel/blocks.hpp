@@ -11,8 +11,10 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace capsubot {
@@ -40,6 +42,10 @@ struct BlockPlan {
   /// Throws std::invalid_argument naming the bad field.
   void Validate() const;
 };
+
+/// Computing threads of this process for `threads` asked: `threads`, or one per core of the
+/// machine for 0; at most one per unit when `units` is given, and at least one.
+int WorkerThreads(int threads, std::int64_t units = std::numeric_limits<std::int64_t>::max());
 
 /// Block size for `units` units on `threads` computing threads: at most `most` units, and
 /// small enough that every thread gets about 8 blocks (balance); at least 1.
@@ -108,5 +114,23 @@ class BlockQueue {
 /// A computing thread's loop: claims blocks of `queue`, computes them with `compute` and
 /// delivers them until none is left; an exception stops the queue.
 void ComputeBlocks(BlockQueue& queue, const BlockComputeFactory& make);
+
+/// The computing threads of this process in a run (the one pool of every backend): `threads`
+/// ComputeBlocks loops over `queue`, started at construction, joined by Join or at
+/// destruction (`queue` and `make` must outlive them). When the system refuses a thread, the
+/// ones started do the blocks (throws std::system_error only when it refuses the first).
+class ComputeThreads {
+ public:
+  ComputeThreads(BlockQueue& queue, const BlockComputeFactory& make, std::int64_t threads);
+  ~ComputeThreads() { Join(); }
+  ComputeThreads(const ComputeThreads&) = delete;
+  ComputeThreads& operator=(const ComputeThreads&) = delete;
+
+  /// Waits for every thread to end (the queue done or stopped).
+  void Join();
+
+ private:
+  std::vector<std::thread> pool_;
+};
 
 }  // namespace capsubot
