@@ -11,8 +11,9 @@
 #include "capsubot/continue/branch_switch.hpp"
 #include "capsubot/continue/parameter_branch.hpp"
 #include "capsubot/io/io.hpp"
-#include "commands.hpp"
 #include "capsubot/report/continuation_json.hpp"
+#include "commands.hpp"
+#include "help_format.hpp"
 #include "provenance.hpp"
 
 namespace capsubot::app {
@@ -187,10 +188,16 @@ Command AddContinueCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
-                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label");
+                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label")
+      ->type_name("FILE");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: parameter, status, ends, points, special_points, "
                 "provenance");
+  SetExamples(*cmd,
+              {{"a stable one-impact gait followed in alpha: born in a period doubling, "
+                "fastest at alpha = 0.2399, ended by a fold at 0.29035",
+                "continue --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
+                "--alpha 0.2792869076315278 --from-orbit --param alpha --from 0.2 --to 0.3"}});
   return {
       cmd,
       [opt, cmd] { return RunNamingFlags(ContinueFlagNames(), [&] { return Run(*opt, *cmd); }); },

@@ -178,6 +178,34 @@ def periodic(
 ) -> dict[str, Any]:
     """A periodic motion of any kind by Newton shooting, with its multipliers."""
 
+def continue_branch(
+    *,
+    A: float | None = None,
+    c: float,
+    phi0: float | None = None,
+    cos: Sequence[float] | None = None,
+    sin: Sequence[float] | None = None,
+    T0: float = 1.0,
+    e: float = 1.0,
+    alpha: float,
+    param: str,
+    from_: float,
+    to: float,
+    x0: float | None = None,
+    u0: float | None = None,
+    v0: float | None = None,
+    psi: float | None = None,
+    from_orbit: bool = False,
+    max_points: int = 200,
+    initial_step: float = 0.01,
+    min_step: float = 1e-7,
+    max_step: float = 0.05,
+    max_period: int = 8,
+    step: float = 1e-6,
+    chatter_velocity: float = 1e-6,
+) -> dict[str, Any]:
+    """A periodic motion followed through one parameter, with its special points."""
+
 def design(
     *,
     m1: float,

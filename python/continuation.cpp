@@ -129,7 +129,8 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
 
 constexpr const char* kContinueDoc =
     "Pseudo-arclength continuation of a periodic motion in one model parameter "
-    "(docs/continuation.md): the motion near the start is found by Newton shooting at the "
+    "(capsubot documentation, continuation): the motion near the start is found by Newton shooting "
+    "at the "
     "robot's value of the parameter and followed both ways through [from_, to], with its "
     "folds, period doublings, Neimark-Sacker points, grazings, segment changes and speed "
     "extrema: the dict `capsubot continue --json` prints, with the points as columns.\n\n"
