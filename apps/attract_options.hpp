@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "capsubot/attract/attractors.hpp"
-#include "cli.hpp"
 #include "capsubot/report/attractors_json.hpp"
+#include "cli.hpp"
 
 namespace capsubot::app {
 

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "attract_options.hpp"
+#include "capsubot/io/io.hpp"
 #include "capsubot/sweep/bifurcation_csv.hpp"
 #include "capsubot/sweep/grid.hpp"
-#include "capsubot/io/io.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"

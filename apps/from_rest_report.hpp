@@ -10,9 +10,9 @@
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
-#include "cli.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/optimize_json.hpp"
+#include "cli.hpp"
 
 namespace capsubot::app {
 

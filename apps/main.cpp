@@ -116,10 +116,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {
-      AddSolveCommand(app),  AddSimulateCommand(app),    AddOrbitsCommand(app),
-      AddSweepCommand(app),  AddMergeCommand(app),       AddOptimizeCommand(app),
-      AddDesignCommand(app), AddAttractorsCommand(app),  AddPeriodicCommand(app),
-      AddBasinsCommand(app), AddBifurcationCommand(app), AddContinueCommand(app),
+      AddSolveCommand(app),     AddSimulateCommand(app),    AddOrbitsCommand(app),
+      AddSweepCommand(app),     AddMergeCommand(app),       AddOptimizeCommand(app),
+      AddDesignCommand(app),    AddAttractorsCommand(app),  AddPeriodicCommand(app),
+      AddBasinsCommand(app),    AddBifurcationCommand(app), AddContinueCommand(app),
       AddCompletionCommand(app)};
   // After the commands are added, which would take it too (and print only their own help).
   app.set_help_all_flag("--help-all", "Print the help of every command and exit");

@@ -1,6 +1,7 @@
 // capsubot merge: joins the shard files of `capsubot sweep|basins|attractors|bifurcation --shard
 // K/N` and `capsubot design --grid ... --shard K/N` into the file of the whole run (library:
-// capsubot/sweep/sweep_merge.hpp, capsubot/sweep/basin_shards.hpp, capsubot/sweep/bifurcation_shards.hpp).
+// capsubot/sweep/sweep_merge.hpp, capsubot/sweep/basin_shards.hpp,
+// capsubot/sweep/bifurcation_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>

@@ -8,9 +8,9 @@
 #include <memory>
 
 #include "attract_options.hpp"
+#include "capsubot/report/periodic_json.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "capsubot/report/periodic_json.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 

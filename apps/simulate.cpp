@@ -9,13 +9,13 @@
 #include <optional>
 #include <stdexcept>
 
-#include "capsubot/io/io.hpp"
 #include "capsubot/attract/orbit_start.hpp"
-#include "capsubot/simulate/simulator.hpp"
+#include "capsubot/io/io.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/report/simulation_json.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "capsubot/report/simulation_json.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"

@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/model/limits.hpp"
 #include "capsubot/attract/orbit_start.hpp"
-#include "capsubot/simulate/simulator.hpp"
+#include "capsubot/model/limits.hpp"
 #include "capsubot/report/simulation_json.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::python {
 namespace {

@@ -9,8 +9,8 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {

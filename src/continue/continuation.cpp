@@ -11,9 +11,9 @@
 
 #include "capsubot/attract/detail/period_map.hpp"
 #include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
-#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {

@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "design/search.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/numerics/windows.hpp"
+#include "design/search.hpp"
 
 namespace capsubot {
 namespace {

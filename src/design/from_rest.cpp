@@ -16,13 +16,13 @@
 #include <stdexcept>
 
 #include "capsubot/design/design_from_rest.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
-#include "capsubot/simulate/simulator.hpp"
-#include "design/user_units.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/simulate/simulator.hpp"
+#include "design/user_units.hpp"
 
 namespace capsubot {
 namespace {

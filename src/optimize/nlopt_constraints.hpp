@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "capsubot/model/forcing.hpp"
-#include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/validity.hpp"
 
 namespace capsubot::detail {

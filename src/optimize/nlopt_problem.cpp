@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "capsubot/optimize/optimize_phase.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 
 namespace capsubot::detail {
 namespace {

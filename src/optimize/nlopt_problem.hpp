@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/optimize/detail/optimize_common.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/optimize/optimize_search.hpp"
 #include "optimize/nlopt_constraints.hpp"
-#include "capsubot/optimize/detail/optimize_common.hpp"
 
 namespace capsubot::detail {
 

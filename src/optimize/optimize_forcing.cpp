@@ -17,9 +17,9 @@
 #include <cmath>
 #include <random>
 
-#include "capsubot/optimize/optimize_phase.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 #include "optimize/pipeline.hpp"
 
 namespace capsubot {

@@ -17,8 +17,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "optimize/nlopt_constraints.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "optimize/nlopt_constraints.hpp"
 
 namespace capsubot {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/numerics/safe_newton.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 namespace {

@@ -15,10 +15,10 @@
 #include <nlopt.hpp>
 #include <stdexcept>
 
-#include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 
 namespace capsubot {
 namespace {

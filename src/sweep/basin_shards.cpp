@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "capsubot/sweep/bifurcation_shards.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/sweep/bifurcation_shards.hpp"
 #include "capsubot/sweep/start_map.hpp"
 #include "sweep/shard_set.hpp"
 

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "capsubot/sweep/bifurcation_shards.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/sweep/bifurcation_shards.hpp"
 #include "sweep/sweep_file.hpp"
 
 namespace capsubot {

@@ -8,8 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "capsubot/model/forcing.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/model/forcing.hpp"
 
 namespace capsubot {
 namespace {

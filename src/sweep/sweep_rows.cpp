@@ -9,9 +9,9 @@
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 #include "sweep/grid_run.hpp"
 
 namespace capsubot::detail {

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/bifurcation.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/model/model_parameter.hpp"
 #include "capsubot/attract/periodic.hpp"
+#include "capsubot/model/model_parameter.hpp"
 
 namespace capsubot {
 namespace {

@@ -14,15 +14,15 @@
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
-#include "capsubot/design/design_from_rest.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/optimize_fourier.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
-#include "capsubot/attract/periodic.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 #include "design/example_robot.hpp"
-#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot {
 namespace {

@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/simulate/simulator.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
-#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "capsubot/optimize/optimize_forcing.hpp"
-#include "capsubot/simulate/simulator.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 

@@ -1,8 +1,8 @@
 #pragma once
 // Helpers shared by the optimiser tests (tests/optimize_*_test.cpp).
 
-#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::testing {

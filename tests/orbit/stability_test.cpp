@@ -11,8 +11,8 @@
 #include <string>
 #include <utility>
 
-#include "capsubot/simulate/simulator.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "capsubot/attract/orbit_start.hpp"
-#include "capsubot/simulate/simulator.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

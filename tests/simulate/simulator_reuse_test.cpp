@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "capsubot/attract/orbit_start.hpp"
-#include "capsubot/simulate/simulator.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -1,5 +1,5 @@
-// Designs over a grid of the robot's SI inputs (capsubot/sweep/design_grid.hpp): every row equals the
-// library design of that robot computed here point by point, rho-max = inf is the design
+// Designs over a grid of the robot's SI inputs (capsubot/sweep/design_grid.hpp): every row equals
+// the library design of that robot computed here point by point, rho-max = inf is the design
 // without a stability requirement, a resumed run gives the same bytes, and every bad grid is
 // refused with a message naming the parameter, its value and the rule.
 

@@ -18,11 +18,11 @@
 #include <limits>
 #include <vector>
 
-#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
-#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
+#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
-#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/model/model_parameter.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
-#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 

@@ -25,11 +25,11 @@
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/periodic.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/model_parameter.hpp"
 #include "capsubot/model/params.hpp"
-#include "capsubot/attract/periodic.hpp"
 
 namespace capsubot {
 

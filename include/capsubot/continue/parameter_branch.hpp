@@ -6,8 +6,8 @@
 
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/model/forcing.hpp"
-#include "capsubot/orbit/orbit.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 
@@ -22,16 +22,17 @@ PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing);
 PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha);
 
 /// The robot at each value of the parameter named `param` (A, c, alpha, T0, e, phi0, a1..a16,
-/// b1..b16: the robot parameters of ModelParameter), the rest as given. Throws std::invalid_argument for
-/// a name it does not know or a parameter the force does not have. The family holds copies.
+/// b1..b16: the robot parameters of ModelParameter), the rest as given. Throws
+/// std::invalid_argument for a name it does not know or a parameter the force does not have. The
+/// family holds copies.
 RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
                                  const std::string& param);
 
 /// Follows the periodic motion near `start` in the parameter named `param` (A, c, alpha, T0,
-/// e, phi0, a1..a16, b1..b16: the robot parameters of ModelParameter) over [options.from, options.to],
-/// from the robot's own value of it (which sets options.start). Throws std::invalid_argument
-/// for a parameter the force does not have, bad params, bad options or the robot's value
-/// outside the range; outcomes are statuses of the Branch (ContinueBranch).
+/// e, phi0, a1..a16, b1..b16: the robot parameters of ModelParameter) over [options.from,
+/// options.to], from the robot's own value of it (which sets options.start). Throws
+/// std::invalid_argument for a parameter the force does not have, bad params, bad options or the
+/// robot's value outside the range; outcomes are statuses of the Branch (ContinueBranch).
 Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
                          const std::string& param, const PhaseState& start,
                          ContinuationOptions options);

@@ -17,8 +17,8 @@
 
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
-#include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
 

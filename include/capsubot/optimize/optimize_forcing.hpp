@@ -3,9 +3,9 @@
 // impact phase) that maximises the step I under the validity conditions, given to NLopt as
 // inequality constraints.
 
+#include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/optimize/optimize_search.hpp"
-#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 

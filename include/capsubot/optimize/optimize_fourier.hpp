@@ -2,10 +2,10 @@
 // P3 of docs/model.md section 7: a force given by K harmonics, F = c + sum_k (a_k cos k phi +
 // b_k sin k phi) seen from the impact, with mean c > 0 and max |F| <= bound, maximising I.
 
+#include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/optimize/optimize_search.hpp"
-#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 

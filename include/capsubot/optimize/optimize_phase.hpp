@@ -4,9 +4,9 @@
 // the spectral radius).
 
 #include "capsubot/model/forcing.hpp"
+#include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
-#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 

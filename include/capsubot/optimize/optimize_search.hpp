@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_options.hpp"
 
 namespace capsubot {
 

@@ -22,9 +22,9 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
-#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 

@@ -5,11 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
-#include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 
 namespace capsubot::json {
 

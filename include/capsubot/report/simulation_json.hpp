@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capsubot/simulate/simulator.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::json {
 

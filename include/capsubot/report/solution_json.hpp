@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "capsubot/model/energy.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/energy.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
 

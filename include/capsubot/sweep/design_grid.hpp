@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/design/design.hpp"
+#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/sweep/grid.hpp"
 #include "capsubot/sweep/grid_file.hpp"
 #include "capsubot/sweep/sweep.hpp"

@@ -39,16 +39,16 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/parallel/blocks.hpp"
-#include "capsubot/model/forcing.hpp"
-#include "capsubot/sweep/grid.hpp"
-#include "capsubot/sweep/grid_file.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_fourier.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/parallel/blocks.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
-#include "capsubot/model/params.hpp"
+#include "capsubot/sweep/grid.hpp"
+#include "capsubot/sweep/grid_file.hpp"
 
 namespace capsubot {
 
