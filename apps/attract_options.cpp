@@ -97,6 +97,21 @@ const FlagNames& MotionFlagNames() {
   return names;
 }
 
+void StartStateOptions::Add(CLI::App& cmd) {
+  options[0] = cmd.add_option("--x0", state.x, "start: position of the inner body");
+  options[1] = cmd.add_option("--u0", state.u, "start: relative velocity");
+  options[2] = cmd.add_option("--v0", state.v, "start: capsule velocity");
+  options[3] =
+      cmd.add_option("--psi", state.psi, "start: forcing phase (F = A sin(psi + phi0) + c there)")
+          ->type_name(kPhase);
+}
+
+int StartStateOptions::Given() const {
+  int given = 0;
+  for (const CLI::Option* o : options) given += o->count() > 0 ? 1 : 0;
+  return given;
+}
+
 void AddThreadsOption(CLI::App& cmd, int& threads) {
   cmd.add_option("--threads", threads,
                  "worker threads (0: all cores); the output does not depend on it")

@@ -40,6 +40,18 @@ const FlagNames& MotionFlagNames();
 /// Adds --threads (0: all cores).
 void AddThreadsOption(CLI::App& cmd, int& threads);
 
+/// The start state of a command given as --x0, --u0, --v0 and --psi (all four, or none when
+/// another option gives the start).
+struct StartStateOptions {
+  PhaseState state;
+  CLI::Option* options[4] = {};
+
+  /// Adds the four options to `cmd`.
+  void Add(CLI::App& cmd);
+  /// How many of the four were given.
+  int Given() const;
+};
+
 /// "period 1: 3 right + 1 left impacts per period", or for an irregular attractor the range of
 /// its starts' mean velocities and whether their records are long enough.
 std::string AttractorWords(const Attractor& attractor, int max_period);

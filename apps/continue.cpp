@@ -22,13 +22,12 @@ namespace {
 struct ContinueCommandOptions {
   RobotOptions robot;
   ContinuationOptions continuation;
-  PhaseState start;
+  StartStateOptions start_state;  // --x0, --u0, --v0, --psi
   std::string param;
   bool from_orbit = false;
   bool switch_branch = false;
   bool json = false;
   std::string output;
-  CLI::Option* state_options[4] = {};
 };
 
 // The branch as CSV: the '#' provenance line, header, one row per point.
@@ -72,8 +71,7 @@ const SpecialPoint* FirstPeriodDoubling(const Branch& b) {
 
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
-  int given = 0;
-  for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
+  const int given = opt.start_state.Given();
   if (opt.from_orbit && given > 0) {
     throw std::invalid_argument(
         "--from-orbit gives the start: do not give --x0, --u0, --v0 or --psi with it");
@@ -83,8 +81,9 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
         "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
   }
   opt.robot.params.Validate();
-  const PhaseState start =
-      opt.from_orbit ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
+  const PhaseState start = opt.from_orbit
+                               ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha)
+                               : opt.start_state.state;
   RequirePhase("psi", start.psi);
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const Branch branch = ContinueParameter(forcing, opt.robot.params, opt.robot.alpha, opt.param,
@@ -154,13 +153,7 @@ Command AddContinueCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--from", opt->continuation.from, "lower end of the range")->required();
   cmd->add_option("--to", opt->continuation.to, "upper end of the range")->required();
-  opt->state_options[0] =
-      cmd->add_option("--x0", opt->start.x, "start: position of the inner body");
-  opt->state_options[1] = cmd->add_option("--u0", opt->start.u, "start: relative velocity");
-  opt->state_options[2] = cmd->add_option("--v0", opt->start.v, "start: capsule velocity");
-  opt->state_options[3] = cmd->add_option("--psi", opt->start.psi,
-                                          "start: forcing phase (F = A sin(psi + phi0) + c there)")
-                              ->type_name(kPhase);
+  opt->start_state.Add(*cmd);
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");

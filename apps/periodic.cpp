@@ -20,18 +20,16 @@ namespace {
 struct PeriodicCommandOptions {
   RobotOptions robot;
   ShootingOptions shooting;
-  PhaseState start;
+  StartStateOptions start_state;  // --x0, --u0, --v0, --psi
   std::string from_rest;
   bool json = false;
-  CLI::Option* state_options[4] = {};
   CLI::Option* transient_option = nullptr;
 };
 
 int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
-  int given = 0;
-  for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
-  PhaseState start = opt.start;
+  const int given = opt.start_state.Given();
+  PhaseState start = opt.start_state.state;
   ShootingOptions so = opt.shooting;
   if (!opt.from_rest.empty()) {
     if (given > 0) {
@@ -98,13 +96,7 @@ Command AddPeriodicCommand(CLI::App& app) {
       "transient unless --transient is given) or from rest (--from-rest X0,PSI after "
       "--transient periods).");
   AddRobotOptions(*cmd, opt->robot, false);
-  opt->state_options[0] =
-      cmd->add_option("--x0", opt->start.x, "start: position of the inner body");
-  opt->state_options[1] = cmd->add_option("--u0", opt->start.u, "start: relative velocity");
-  opt->state_options[2] = cmd->add_option("--v0", opt->start.v, "start: capsule velocity");
-  opt->state_options[3] = cmd->add_option("--psi", opt->start.psi,
-                                          "start: forcing phase (F = A sin(psi + phi0) + c there)")
-                              ->type_name(kPhase);
+  opt->start_state.Add(*cmd);
   cmd->add_option("--from-rest", opt->from_rest,
                   "start from rest at x0 = X0 and forcing phase PSI, then run --transient periods")
       ->type_name("X0,PSI");
