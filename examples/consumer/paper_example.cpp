@@ -3,8 +3,8 @@
 // displacement per period.
 #include <cstdio>
 
-#include "capsubot/orbit/validity.hpp"
 #include "capsubot/model/version.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 int main() {
   const capsubot::Forcing force = capsubot::Forcing::Harmonic(0.5, 0.5, -2.944899971002);
