@@ -1,7 +1,8 @@
 """Builds the Python module `capsubot` with the project's CMake build (python/CMakeLists.txt).
 
 pip install --no-build-isolation .   configures and builds in build-pip/ (Release, only the
-                                     library and the module), then installs the module.
+                                     library and the module), then installs the module and its
+                                     type stubs (the package capsubot-stubs).
 CAPSUBOT_CMAKE_BUILD_DIR=DIR         uses an existing configured build folder instead (only its
                                      capsubot_python target is built).
 """
@@ -39,6 +40,9 @@ class CMakeBuild(build_ext):
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[-1], target)
+        # The stubs the CMake build put beside the module (python/CMakeLists.txt).
+        shutil.copytree(build / "python" / "capsubot-stubs", target.parent / "capsubot-stubs",
+                        dirs_exist_ok=True)
 
 
 setup(ext_modules=[CMakeModule("capsubot")], cmdclass={"build_ext": CMakeBuild})

@@ -125,8 +125,8 @@ std::string AttractorWords(const Attractor& a, int max_period) {
   return "not run";
 }
 
-StartsProgress TerminalProgress(const char* what) {
-  if (!StderrIsTerminal()) return {};
+StartsProgress CountProgress(const char* what) {
+  if (!ProgressShown()) return {};
   auto bar = std::make_shared<ProgressBar>(what);
   const auto start = std::chrono::steady_clock::now();
   return [bar, start](std::int64_t done, std::int64_t total) {

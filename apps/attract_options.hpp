@@ -6,13 +6,13 @@
 #include <string>
 #include <utility>
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/report/attractors_json.hpp"
 #include "cli.hpp"
-#include "json/attractors_json.hpp"
 
 namespace capsubot::app {
 
-// The JSON of motions is the shared layer's (src/json/), the same for the Python module.
+// The JSON of motions is the shared layer's (src/report/), the same for the Python module.
 using json::AttractorsJson;
 using json::MotionJson;
 
@@ -44,8 +44,8 @@ void AddThreadsOption(CLI::App& cmd, int& threads);
 /// its starts' mean velocities and whether their records are long enough.
 std::string AttractorWords(const Attractor& attractor, int max_period);
 
-/// A StartsProgress that draws the shared progress bar (ProgressBar, counting `what`, e.g.
-/// "starts") on stderr when it is a terminal; none otherwise.
-StartsProgress TerminalProgress(const char* what);
+/// A StartsProgress that shows the progress (ProgressBar, counting `what`, e.g. "starts") on
+/// stderr when progress is shown (progress.hpp); none otherwise.
+StartsProgress CountProgress(const char* what);
 
 }  // namespace capsubot::app

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
+#include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 #include "start_shard.hpp"
@@ -103,7 +105,8 @@ Command AddAttractorsCommand(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output,
                   "also write the motion of every start to this CSV (x0, psi, attractor, period, "
                   "impacts_right, impacts_left, mean_velocity, status: the map of `basins`; "
-                  "written atomically)");
+                  "written atomically)")
+      ->type_name("FILE");
   AddStartShardOptions(*cmd, opt->shard, "attractors");
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
@@ -111,6 +114,12 @@ Command AddAttractorsCommand(CLI::App& app) {
                 "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
                 "one_impact_orbit), mean_velocity (over the starts), event_limit_starts, "
                 "provenance");
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the fastest stable one-impact gait started from rest on an 8 x "
+                      "8 grid: every start settles into another motion",
+                      "attractors --A 0.34063197373861814 --c 0.06410131873607934 "
+                      "--phi0 -3.1181183398453047 --alpha 0.6435592358295166 --T0 1 "
+                      "--e 1"}});
   return {cmd,
           [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
           [] { return true; }};

@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/start_map.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
+#include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 #include "start_shard.hpp"
@@ -178,12 +180,20 @@ Command AddBasinsCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--u-min", opt->u_min, "smallest u0 of the x0-u0 plane")->capture_default_str();
   cmd->add_option("--u-max", opt->u_max, "largest u0 of the x0-u0 plane")->capture_default_str();
-  cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")->required();
-  cmd->add_option("--plot", opt->plot, "also draw the map into this PNG file (needs gnuplot)");
+  cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")
+      ->required()
+      ->type_name("FILE");
+  cmd->add_option("--plot", opt->plot, "also draw the map into this PNG file (needs gnuplot)")
+      ->type_name("FILE");
   AddStartShardOptions(*cmd, opt->shard, "basins");
   AddThreadsOption(*cmd, opt->threads);
   cmd->add_flag("--json", opt->json,
                 "print the attractors object of `attractors --json` with provenance");
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the basins of coexisting motions over 32 x 32 starts from rest",
+                      "basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
+                      "--alpha 0.2792869076315278 --max-period 16 --transient 1000 "
+                      "--starts 32x32 -o basins.csv"}});
   return {cmd,
           [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
           [] { return true; }};

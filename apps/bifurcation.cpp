@@ -2,7 +2,7 @@
 // down, plus the analytic one-impact orbits (docs/model.md section 13); under mpirun its parts
 // are computed on the ranks (ranks.hpp).
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 #include <fmt/format.h>
 
@@ -13,10 +13,12 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/bifurcation_csv.hpp"
-#include "capsubot/grid.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/bifurcation_csv.hpp"
+#include "capsubot/sweep/grid.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
+#include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
 
@@ -108,7 +110,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
     files.checkpoint_seconds = opt.checkpoint_seconds;
     const BifurcationShardSummary s =
         WriteBifurcationShard(forcing, opt.robot.params, alpha, o, files,
-                              TerminalProgress("parameter values"), ranks.backend());
+                              CountProgress("parameter values"), ranks.backend());
     fmt::print(
         "{}, shard {}/{} of {} continuations: {} impacts written to {}{}{}\n", study, o.shard,
         o.shards, BifurcationContinuations(o), s.impacts, opt.output, summary_note(s.summary_rows),
@@ -120,7 +122,7 @@ int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
   }
   CheckWritable(opt.output, "-o");  // fail on an unwritable path before the long run
   const BifurcationDiagram d = ComputeBifurcation(
-      forcing, opt.robot.params, alpha, o, TerminalProgress("parameter values"), ranks.backend());
+      forcing, opt.robot.params, alpha, o, CountProgress("parameter values"), ranks.backend());
   std::string rows = comments + BifurcationImpactsHeader(o);
   AppendImpactRows(rows, d, two);
   AtomicFile impacts(opt.output, "-o");
@@ -174,11 +176,13 @@ Command AddBifurcationCommand(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output,
                   "CSV of every recorded impact: param, direction, period_index, wall, phase, "
                   "velocity")
-      ->required();
+      ->required()
+      ->type_name("FILE");
   cmd->add_option("--summary", opt->summary,
                   "CSV, one row per value and direction: param, direction, period, "
                   "impacts_right, impacts_left, mean_velocity, largest_multiplier (real part), "
-                  "largest_multiplier_im, spectral_radius, status; plus the analytic orbits");
+                  "largest_multiplier_im, spectral_radius, status; plus the analytic orbits")
+      ->type_name("FILE");
   cmd->add_flag("--no-analytic", opt->no_analytic,
                 "leave the analytic one-impact orbits out of the summary");
   cmd->add_option("--over", opt->over,
@@ -203,6 +207,12 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "(written as FILE.partial, renamed at the end); 0: after every part")
       ->capture_default_str();
   AddThreadsOption(*cmd, opt->diagram.threads);
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"a diagram over T0, stepped up and down, for 3 values of e",
+                      "bifurcation --A 0.05 --c 0.02 --phi0 -2.842 --e 0.5 --alpha "
+                      "0.2792869076315278 --param T0 --from 0.08 --to 0.12 --steps 4 "
+                      "--transient 40 --record 20 --over e=0.4:0.6:3 -o i.csv --summary "
+                      "s.csv"}});
   return {cmd,
           [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
           [] { return true; }};

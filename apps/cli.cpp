@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "ranks.hpp"
 
 namespace capsubot::app {

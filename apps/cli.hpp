@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/forcing.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/params.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/model/params.hpp"
 
 namespace capsubot::app {
 

@@ -17,5 +17,7 @@ Command AddBasinsCommand(CLI::App& app);
 Command AddBifurcationCommand(CLI::App& app);
 Command AddMergeCommand(CLI::App& app);
 Command AddContinueCommand(CLI::App& app);
+/// `capsubot completion bash`: the completion script of every command of `app` (add it last).
+Command AddCompletionCommand(CLI::App& app);
 
 }  // namespace capsubot::app

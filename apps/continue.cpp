@@ -8,12 +8,12 @@
 #include <string>
 
 #include "attract_options.hpp"
-#include "capsubot/continue/continuation.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/continue/branch_switch.hpp"
+#include "capsubot/continue/parameter_branch.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/report/continuation_json.hpp"
 #include "commands.hpp"
-#include "json/continuation_json.hpp"
+#include "help_format.hpp"
 #include "provenance.hpp"
 
 namespace capsubot::app {
@@ -25,34 +25,11 @@ struct ContinueCommandOptions {
   PhaseState start;
   std::string param;
   bool from_orbit = false;
+  bool switch_branch = false;
   bool json = false;
   std::string output;
   CLI::Option* state_options[4] = {};
 };
-
-// The valid one-impact orbit of the robot with the smallest spectral radius (docs/orbit.md,
-// `orbits`), as a start right after its impact.
-PhaseState OrbitStart(const Forcing& forcing, const Params& params, double alpha) {
-  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
-  const Solution* best = nullptr;
-  double best_radius = 0.0;
-  for (const Solution& s : orbits) {
-    if (!s.validity.valid()) continue;
-    const double radius = ComputeStability(s.orbit).spectral_radius;
-    if (best == nullptr || radius < best_radius) {
-      best = &s;
-      best_radius = radius;
-    }
-  }
-  if (best == nullptr) {
-    throw std::invalid_argument(fmt::format(
-        "--from-orbit is invalid for this robot: it has no valid one-impact orbit at alpha = {} "
-        "(capsubot orbits lists them)",
-        alpha));
-  }
-  const Orbit& o = best->orbit;
-  return {1.0, -o.e * o.u, o.v_plus, o.forcing.phi0() - forcing.phi0()};
-}
 
 // The branch as CSV: the '#' provenance line, header, one row per point.
 void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& comment,
@@ -85,11 +62,16 @@ void WriteBranchCsv(const Branch& b, const std::string& name, const std::string&
   file.Commit();
 }
 
+// The first located period doubling of the branch, or null.
+const SpecialPoint* FirstPeriodDoubling(const Branch& b) {
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type == SpecialPointType::kPeriodDoubling && sp.located) return &sp;
+  }
+  return nullptr;
+}
+
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const Forcing forcing = opt.robot.forcing.Build();
-  int harmonic = 0;
-  const ModelParameter param = ParseRobotParameter(opt.param, &harmonic);
-  CheckRobotParameter(forcing, param, harmonic);
   int given = 0;
   for (CLI::Option* o : opt.state_options) given += o->count() > 0 ? 1 : 0;
   if (opt.from_orbit && given > 0) {
@@ -101,37 +83,37 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
         "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
   }
   opt.robot.params.Validate();
-  PhaseState start =
-      opt.from_orbit ? OrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
+  const PhaseState start =
+      opt.from_orbit ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha) : opt.start;
   RequirePhase("psi", start.psi);
-  ContinuationOptions o = opt.continuation;
-  const RobotModel base{forcing, opt.robot.params, opt.robot.alpha};
-  o.start = ParameterValue(base, param, harmonic);
-  ContinuationOptions range = o;  // the options' own rules first, the start's value aside
-  range.start = o.from;
-  range.Validate();
-  if (!(o.start >= o.from && o.start <= o.to)) {
-    throw std::invalid_argument(fmt::format(
-        "the robot's {} = {} is outside the range: expected --from = {} <= {} <= --to = {} (the "
-        "branch starts at the robot's value)",
-        opt.param, o.start, o.from, opt.param, o.to));
-  }
-  const RobotFamily family = [&](double value) {
-    RobotModel r = base;
-    SetParameter(r, param, harmonic, value);
-    return r;
-  };
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
-  const Branch branch = ContinueBranch(family, start, o);
+  const Branch branch = ContinueParameter(forcing, opt.robot.params, opt.robot.alpha, opt.param,
+                                          start, opt.continuation);
   if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
     WriteBranchCsv(branch, opt.param, OutputProvenance(cmd).CommentLine(), opt.output);
   }
+  const SpecialPoint* pd = opt.switch_branch ? FirstPeriodDoubling(branch) : nullptr;
+  const Branch switched =
+      pd == nullptr ? Branch{}
+                    : SwitchAtPeriodDoubling(NamedParameterFamily(forcing, opt.robot.params,
+                                                                  opt.robot.alpha, opt.param),
+                                             *pd, opt.continuation);
   if (opt.json) {
     nlohmann::json j = json::BranchJson(branch, opt.param);
+    if (opt.switch_branch) {
+      j["switched"] = pd == nullptr ? nlohmann::json() : json::BranchJson(switched, opt.param);
+    }
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("{}", branch.Summary(opt.param));
+    if (opt.switch_branch) {
+      fmt::print("{}",
+                 pd == nullptr
+                     ? std::string("no located period doubling: no branch to switch to\n")
+                     : fmt::format("branch switched at the period doubling at {} = {:.12g}\n{}",
+                                   opt.param, pd->parameter, switched.Summary(opt.param)));
+    }
     if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
       fmt::print("  written        {} points to {}\n", branch.points.size(), opt.output);
     }
@@ -149,7 +131,8 @@ const FlagNames& ContinueFlagNames() {
                                   {"max_step", "--max-step"},
                                   {"max_period", "--max-period"},
                                   {"step", "--step"},
-                                  {"chatter_velocity", "--chatter-velocity"}};
+                                  {"chatter_velocity", "--chatter-velocity"},
+                                  {"from_orbit", "--from-orbit"}};
   return names;
 }
 
@@ -181,6 +164,9 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
+  cmd->add_flag("--switch", opt->switch_branch,
+                "also follow the period-2p branch born at the first located period doubling "
+                "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
   cmd->add_option("--max-points", opt->continuation.max_points,
                   "points of the branch, both directions together")
       ->capture_default_str();
@@ -202,10 +188,16 @@ Command AddContinueCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
-                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label");
+                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label")
+      ->type_name("FILE");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: parameter, status, ends, points, special_points, "
                 "provenance");
+  SetExamples(*cmd,
+              {{"a stable one-impact gait followed in alpha: born in a period doubling, "
+                "fastest at alpha = 0.2399, ended by a fold at 0.29035",
+                "continue --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
+                "--alpha 0.2792869076315278 --from-orbit --param alpha --from 0.2 --to 0.3"}});
   return {
       cmd,
       [opt, cmd] { return RunNamingFlags(ContinueFlagNames(), [&] { return Run(*opt, *cmd); }); },

@@ -1,9 +1,9 @@
 // capsubot design: a real robot in SI units; the inner mass (and motor frequency) of its
 // fastest robust one-impact gait, with speed, power and cost of transport, and of the fastest
-// motion reached from rest in each direction (library: capsubot/design.hpp,
-// capsubot/design_from_rest.hpp).
+// motion reached from rest in each direction (library: capsubot/design/design.hpp,
+// capsubot/design/design_from_rest.hpp).
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -23,15 +23,16 @@
 #include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/design_grid.hpp"
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/report/design_json.hpp"
+#include "capsubot/sweep/design_grid.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
 #include "from_rest_report.hpp"
-#include "json/design_json.hpp"
+#include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
@@ -96,7 +97,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
 }
 
 // The numbers of gaits and motions from rest for the table and the CSV are those of their JSON
-// (src/json/).
+// (src/report/).
 using json::Dimensionless;
 using json::UserUnits;
 
@@ -262,30 +263,31 @@ DesignFromRestOptions FromRestDesignOptions(const FromRestCliOptions& cli) {
   return o;
 }
 
-// The stage of the from-rest design on the progress line (a terminal only).
+// The stage of the from-rest design, shown when progress is (progress.hpp).
 DesignFromRestProgress StageProgress() {
-  if (!StderrIsTerminal()) return {};
+  if (!ProgressShown()) return {};
   return [](const std::string& stage, std::int64_t done, std::int64_t total) {
-    ShowStage(
-        fmt::format("design: 2/2 the fastest motion from rest, {} ({} of at most {} "
-                    "from-rest evaluations)",
-                    stage, done, total));
+    ShowStage(fmt::format("design: 2/2 the fastest motion from rest, {}", stage),
+              fmt::format("{} of at most {} from-rest evaluations", done, total));
   };
 }
 
-// Whether the user-unit key `key` of a gait is a result column: all but m2_kg when m2 has a
-// grid (the grid's column m2_kg holds it: DesignGridAxis::column).
-bool ResultColumn(const char* key, bool m2_gridded) {
-  return !m2_gridded || std::string_view(key) != "m2_kg";
+// The grid's columns (DesignGridAxis::column: m2_kg, frequency_hz, ...).
+using GridColumns = std::vector<std::string>;
+
+// Whether the user-unit key `key` of a gait is a result column: all but those a grid's column
+// holds (a gridded m2 is the column m2_kg, a gridded frequency frequency_hz).
+bool ResultColumn(const char* key, const GridColumns& grid) {
+  return std::find(grid.begin(), grid.end(), key) == grid.end();
 }
 
 // The result columns of a design grid, after the grid's: the gait's status, its numbers in
 // the user's units (ResultColumn) and dimensionless (those of its JSON), its orbits and
 // binding limits.
-std::vector<std::string> GaitColumns(bool m2_gridded) {
+std::vector<std::string> GaitColumns(const GridColumns& grid) {
   std::vector<std::string> columns = {"status"};
   for (const auto& [key, value] : UserUnits(Gait{})) {
-    if (ResultColumn(key, m2_gridded)) columns.emplace_back(key);
+    if (ResultColumn(key, grid)) columns.emplace_back(key);
   }
   for (const auto& [key, value] : Dimensionless(Gait{})) columns.emplace_back(key);
   columns.emplace_back("orbits");
@@ -293,11 +295,11 @@ std::vector<std::string> GaitColumns(bool m2_gridded) {
   return columns;
 }
 
-// The cells of GaitColumns(m2_gridded).
-std::string GaitCells(const Gait& g, bool m2_gridded) {
+// The cells of GaitColumns(grid).
+std::string GaitCells(const Gait& g, const GridColumns& grid) {
   std::vector<std::string> cells = {GaitStatusName(g.status)};
   for (const auto& [key, value] : UserUnits(g)) {
-    if (ResultColumn(key, m2_gridded)) cells.push_back(FormatNumber(value));
+    if (ResultColumn(key, grid)) cells.push_back(FormatNumber(value));
   }
   for (const auto& [key, value] : Dimensionless(g)) cells.push_back(FormatNumber(value));
   cells.push_back(std::to_string(g.orbits));
@@ -358,17 +360,16 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (opt.output.empty()) {
     throw std::invalid_argument("output is missing: --grid writes its CSV to -o FILE");
   }
-  const bool m2_gridded = std::any_of(o.axes.begin(), o.axes.end(), [](const DesignGridAxis& axis) {
-    return axis.parameter == DesignParameter::km2;
-  });
-  o.columns = GaitColumns(m2_gridded);
-  o.row = [m2_gridded](const Gait& g) { return GaitCells(g, m2_gridded); };
+  GridColumns grid;
+  for (const DesignGridAxis& axis : o.axes) grid.push_back(axis.column());
+  o.columns = GaitColumns(grid);
+  o.row = [grid](const Gait& g) { return GaitCells(g, grid); };
   o.comments.push_back(GridProvenance(opt, cmd, settings));
   o.output = opt.output;
   if (!opt.shard.empty()) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   o.resume = opt.resume;
   o.threads = CapThreads(opt.from_rest.threads, "capsubot design");
-  const bool tty = StderrIsTerminal();
+  const bool shown = ProgressShown();
   ProgressBar bar("points");
   const SweepProgressCallback progress = GridProgress(bar);
   Ranks ranks;  // under mpirun: rank 0 runs the grid, the others compute blocks of points
@@ -379,7 +380,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   } catch (const SweepResumableError& e) {
     throw WriteError(std::string(e.what()) + ": run the same command with --resume to continue");
   }
-  if (tty) {
+  if (shown) {
     fmt::print(stderr, "capsubot design: {} points written to {} in {:.3f} s on {} threads\n",
                summary.points, o.output, summary.seconds, summary.threads);
   }
@@ -391,7 +392,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
   std::vector<std::pair<std::string, std::string>> settings;
   const DesignInput input = BuildDesignInput(opt.config, {}, &settings);
-  const DesignProgress progress = TerminalProgress("robots");
+  const DesignProgress progress = CountProgress("robots");
   const bool with_from_rest = opt.part_b;
   const DesignFromRestOptions from_rest_options = FromRestDesignOptions(opt.from_rest);
   from_rest_options.Validate();  // bad options fail before any work
@@ -452,7 +453,8 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("NAME=SPEC");
   cmd->add_option("-o,--output", opt->output,
                   "CSV file of --grid (built as FILE.partial with a checkpoint, renamed at the "
-                  "end; - for standard output)");
+                  "end; - for standard output)")
+      ->type_name("FILE");
   cmd->add_option("--shard", opt->shard,
                   "with --grid: compute only shard K of N (0 <= K < N), the points p with "
                   "p % N = K; `capsubot merge OUT SHARD_FILES...` joins the N files; 0/1 "
@@ -460,6 +462,16 @@ Command AddDesignCommand(CLI::App& app) {
       ->type_name("K/N");
   cmd->add_flag("--resume", opt->resume,
                 "with --grid: continue from FILE.checkpoint of the same run (killed or failed)");
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the example robot (examples/robot.toml): its inner mass, "
+                      "speed, power and cost of transport",
+                      "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude "
+                      "0.5 --force-bias 0.1 --frequency 20"},
+                     {"the same robot at 4 inner masses x 2 restitutions, one CSV row "
+                      "a point",
+                      "design --m1 0.2 --L 0.02 --mu 0.3 --force-amplitude 0.5 "
+                      "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
+                      "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [opt] { return !opt->grids.empty(); }};
 }

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot::app {
 namespace {

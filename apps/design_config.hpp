@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/design.hpp"
-#include "capsubot/design_grid.hpp"
+#include "capsubot/design/design.hpp"
+#include "capsubot/sweep/design_grid.hpp"
 
 namespace capsubot::app {
 

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "attract_options.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "report.hpp"
 
 namespace capsubot::app {

@@ -7,16 +7,16 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/optimize_reach.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/optimize_json.hpp"
 #include "cli.hpp"
-#include "json/attractors_json.hpp"
-#include "json/optimize_json.hpp"
 
 namespace capsubot::app {
 
-// The `from_rest` and `reach` objects are the shared layer's (src/json/), the same for the
+// The `from_rest` and `reach` objects are the shared layer's (src/report/), the same for the
 // Python module.
 using json::FromRestJson;
 using json::ReachJson;

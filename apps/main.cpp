@@ -12,13 +12,15 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/version.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/model/version.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
 #include "ranks.hpp"
 #include "suggest.hpp"
 
@@ -108,14 +110,19 @@ int main(int argc, char** argv) {
       "positions in units of the shell length L, velocities in omega*L, forces in "
       "(m1+m2)*omega^2*L.",
       "capsubot"};
+  // Before the commands are added: each command takes its parent's formatter.
+  app.formatter(std::make_shared<HelpFormatter>(HelpWidth()));
   app.set_version_flag("--version", capsubot::Version(), "Print the version and exit");
   app.require_subcommand(1, 1);
   app.failure_message(CLI::FailureMessage::simple);
   const std::vector<Command> commands = {
-      AddSolveCommand(app),  AddSimulateCommand(app),    AddOrbitsCommand(app),
-      AddSweepCommand(app),  AddMergeCommand(app),       AddOptimizeCommand(app),
-      AddDesignCommand(app), AddAttractorsCommand(app),  AddPeriodicCommand(app),
-      AddBasinsCommand(app), AddBifurcationCommand(app), AddContinueCommand(app)};
+      AddSolveCommand(app),     AddSimulateCommand(app),    AddOrbitsCommand(app),
+      AddSweepCommand(app),     AddMergeCommand(app),       AddOptimizeCommand(app),
+      AddDesignCommand(app),    AddAttractorsCommand(app),  AddPeriodicCommand(app),
+      AddBasinsCommand(app),    AddBifurcationCommand(app), AddContinueCommand(app),
+      AddCompletionCommand(app)};
+  // After the commands are added, which would take it too (and print only their own help).
+  app.set_help_all_flag("--help-all", "Print the help of every command and exit");
   UseStrictValues(app);
   std::vector<std::string> args = ReadHelpCommand(std::vector<std::string>(argv + 1, argv + argc));
   if (!args.empty()) {

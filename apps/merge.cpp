@@ -1,6 +1,7 @@
 // capsubot merge: joins the shard files of `capsubot sweep|basins|attractors|bifurcation --shard
 // K/N` and `capsubot design --grid ... --shard K/N` into the file of the whole run (library:
-// capsubot/sweep_merge.hpp, capsubot/basin_shards.hpp, capsubot/bifurcation_shards.hpp).
+// capsubot/sweep/sweep_merge.hpp, capsubot/sweep/basin_shards.hpp,
+// capsubot/sweep/bifurcation_shards.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -9,8 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/basin_shards.hpp"
+#include "capsubot/sweep/basin_shards.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -43,8 +45,12 @@ Command AddMergeCommand(CLI::App& app) {
       "the shard files (docs/cluster.md).");
   cmd->add_option("OUT", opt->output,
                   "the CSV file to write (atomically; - : standard output), not a shard file")
-      ->required();
-  cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required();
+      ->required()
+      ->type_name("FILE");
+  cmd->add_option("SHARD_FILES", opt->shards, "the N shard files")->required()->type_name("FILE");
+  SetExamples(*cmd, {{"the 3 shard files of a sweep --shard K/3 (any order) into the "
+                      "file of the whole sweep",
+                      "merge p2.csv part0.csv part1.csv part2.csv"}});
   return {cmd, [opt] { return Run(*opt); }, {}};
 }
 

@@ -5,7 +5,7 @@
 // without margins (valid; stable), and which gait to build. Prints a summary (or --json); -o
 // writes the JSON.
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 #include <fmt/format.h>
 
@@ -18,11 +18,13 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/scaling.hpp"
+#include "capsubot/continue/gait_robustness.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/orbit/scaling.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
@@ -219,6 +221,13 @@ void Emit(nlohmann::json j, const std::string& text, const OptimizeCliOptions& o
   }
 }
 
+// How far T0, e and alpha can move before the robust gait's motion is lost, in plain words.
+std::string RobustnessText(const GaitRobustness& robustness) {
+  return "    robustness       how far T0, e and alpha can move before this motion is lost\n"
+         "                     (its continuation, docs/continuation.md):\n" +
+         robustness.Summary("                       ");
+}
+
 // Which gait to build, in plain words: the reach winner when it beats the robust gait from
 // rest, else the robust gait.
 std::string Advice(const OptimizeResult& robust, const ReachResult& reach) {
@@ -265,17 +274,20 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2,
   // best phase. Its force sits on the friction bound, so any stick margin would exclude it.
-  ShowStage("optimize: 1/4 the paper's problem (P1)");
+  ShowStage("optimize: 1/5 the paper's problem (P1)");
   const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
                                              PhaseOptionsFor(Request(opt).WithRhoMax(kInf)));
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. the exact optima, valid and stable, for comparison.
-  ShowStage("optimize: 2/4 the fastest robust gait (P2)");
+  ShowStage("optimize: 2/5 the fastest robust gait (P2)");
   const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
-  ShowStage("optimize: 3/4 the fastest motion from rest (simulated starts; up to a minute)");
+  ShowStage("optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach =
       OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, ReachOptions::kNaN));
-  ShowStage("optimize: 4/4 the exact optima without margins");
+  ShowStage("optimize: 4/5 how far T0, e and alpha can move (continuation of the robust gait)");
+  const GaitRobustness robustness =
+      robust.found() ? ComputeGaitRobustness(robust.solution.orbit) : GaitRobustness{};
+  ShowStage("optimize: 5/5 the exact optima without margins");
   const OptimizeResult fastest =
       OptimizeForcing(exact, ForcingOptionsFor(Request(opt).WithRhoMax(kInf)));
   const OptimizeResult stable =
@@ -283,8 +295,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("");
   const double bound = std::isnan(opt.search.force_bound) ? p.T0 : opt.search.force_bound;
 
-  nlohmann::json j =
-      json::MainJobJson(paper, robust, reach, fastest, stable, p, opt.search.rho_max, bound);
+  nlohmann::json j = json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p,
+                                       opt.search.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
@@ -330,7 +342,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
       "   above; checked from rest on {} starts.\n",
       bound, reach.seed.from_rest.attractors.starts);
-  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest)
+  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest) +
+                            RobustnessText(robustness)
                       : fmt::format("   Result: none found ({})\n", robust.message);
   t += fmt::format(
       "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
@@ -497,9 +510,12 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "--bound, simulated, seeded with the robust P2 gait); P1, P2 and P3 name the "
                   "first three; default: the main job")
       ->transform(CLI::Transformer(
-          std::map<std::string, std::string>{{"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
-          CLI::ignore_case))
-      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}));
+                      std::map<std::string, std::string>{
+                          {"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
+                      CLI::ignore_case)
+                      .description(""))
+      ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}).description(""))
+      ->type_name("phase|forcing|fourier|reach");  // the help and the completion show these
   opt->A_option =
       cmd->add_option("--A", opt->A,
                       "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
@@ -512,7 +528,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "main job: write the robust gait's promised mean velocity and the attractors "
                   "reached from rest (robust gait and fastest motion from rest) to this CSV file "
                   "(columns gait,row,mean_velocity,fraction,period,impacts_right,impacts_left,"
-                  "one_impact_orbit)");
+                  "one_impact_orbit)")
+      ->type_name("FILE");
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
@@ -570,12 +587,21 @@ Command AddOptimizeCommand(CLI::App& app) {
                 "fastest, fastest_stable");
   cmd->add_option("-o,--output", opt->output,
                   "also write the JSON object (indented) to this file, atomically; nothing is "
-                  "written without it");
+                  "written without it")
+      ->type_name("FILE");
   cmd->add_option("--force-csv", opt->force_csv,
                   "write the optimal force F(phi) over one period (phi = 0 at the impact, "
                   "columns phi,F) to this CSV file (main job: the robust gait's force; reach: the "
-                  "winner's)");
+                  "winner's)")
+      ->type_name("FILE");
   opt->cmd = cmd;
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the main job: the paper's problem, the fastest robust gait, "
+                      "the fastest motion from rest (takes about a minute)",
+                      "optimize -o optimum.json"},
+                     {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
+                      "radius is at most 0.95",
+                      "optimize --problem forcing --T0 1 --rho-max 0.95"}});
   return {cmd, [opt] { return Run(*opt); }, {}};
 }
 

@@ -6,9 +6,10 @@
 #include <cstdint>
 #include <memory>
 
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
 #include "commands.hpp"
+#include "help_format.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 
@@ -91,6 +92,9 @@ Command AddOrbitsCommand(CLI::App& app) {
                 "phi0, with the keys of `solve --stability --json` without from_rest, and "
                 "complete: false when the search hit its work bound and orbits may be missing; a "
                 "note on stderr then says so) and provenance");
+  SetExamples(*cmd, {{"every one-impact orbit of the robot with mass ratio 0.28, none "
+                      "missed",
+                      "orbits --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --alpha 0.28"}});
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 

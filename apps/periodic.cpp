@@ -1,15 +1,16 @@
 // capsubot periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of
 // the stroboscopic map, with its multipliers (docs/model.md section 13).
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <fmt/format.h>
 
 #include <memory>
 
 #include "attract_options.hpp"
+#include "capsubot/report/periodic_json.hpp"
 #include "commands.hpp"
-#include "json/periodic_json.hpp"
+#include "help_format.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 
@@ -124,6 +125,11 @@ Command AddPeriodicCommand(CLI::App& app) {
                 "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
                 "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
                 "distance_to_unit_circle, residual, iterations, provenance");
+  SetExamples(*cmd, {{"that motion found exactly by Newton's method from the start at "
+                      "rest x0 = 0.5, psi = 1",
+                      "periodic --A 0.34063197373861814 --c 0.06410131873607934 "
+                      "--phi0 -3.1181183398453047 --alpha 0.6435592358295166 --T0 1 "
+                      "--e 1 --from-rest 0.5,1"}});
   return {cmd,
           [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
           {}};

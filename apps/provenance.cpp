@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -67,7 +67,9 @@ Provenance CommandProvenance(const CLI::App& command, const std::vector<std::str
   for (const CLI::Option* option : command.get_options()) {
     if (option->get_lnames().empty()) continue;  // positional arguments
     const std::string name = "--" + option->get_lnames().front();
-    if (name == "--help" || std::find(exclude.begin(), exclude.end(), name) != exclude.end()) {
+    // --help and the progress flags change only what the terminal shows, never the content.
+    if (name == "--help" || name == "--progress" || name == "--no-progress" ||
+        std::find(exclude.begin(), exclude.end(), name) != exclude.end()) {
       continue;
     }
     const bool flag = option->get_expected_max() == 0;

@@ -9,7 +9,7 @@
 
 #include <memory>
 
-#include "capsubot/blocks.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot::app {
 

@@ -4,14 +4,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "capsubot/energy.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/model/energy.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::app {
 
-// The JSON of an orbit is the shared layer's (src/json/), the same for the Python module.
+// The JSON of an orbit is the shared layer's (src/report/), the same for the Python module.
 using json::AddEnergyJson;
 using json::AddStabilityJson;
 using json::SolutionJson;

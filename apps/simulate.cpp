@@ -9,12 +9,13 @@
 #include <optional>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
-#include "capsubot/orbit_start.hpp"
-#include "capsubot/simulator.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/report/simulation_json.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "commands.hpp"
-#include "json/simulation_json.hpp"
+#include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
@@ -22,7 +23,7 @@
 namespace capsubot::app {
 namespace {
 
-// Runs of at least this many periods (about 0.2 s) show a progress bar on a terminal.
+// Runs of at least this many periods (about 0.2 s) show their progress (progress.hpp).
 constexpr double kProgressPeriods = 1e5;
 
 struct SimulateOptions {
@@ -176,7 +177,7 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
     trajectory_file->stream() << OutputProvenance(cmd).CommentLine();
   }
   std::optional<ProgressBar> bar;
-  if (sim.periods >= kProgressPeriods && StderrIsTerminal()) bar.emplace("periods");
+  if (sim.periods >= kProgressPeriods && ProgressShown()) bar.emplace("periods");
   CsvObserver observer(events_file.get(), trajectory_file.get(), bar ? &*bar : nullptr,
                        sim.periods);
   const bool observe = events_file || trajectory_file || bar;
@@ -246,11 +247,14 @@ Command AddSimulateCommand(CLI::App& app) {
                 "provenance");
   cmd->add_option("--events", opt->events,
                   "write every event to this CSV file: phase, kind, x, u, v, y (state right "
-                  "after the event), u_before, v_before, mode");
-  CLI::Option* trajectory = cmd->add_option(
-      "--trajectory", opt->trajectory,
-      "write the state phi, x, u, v, y, mode sampled on a grid to this CSV file (at most "
-      "10000000 rows: samples per period x (transient + periods) + 1)");
+                  "after the event), u_before, v_before, mode")
+      ->type_name("FILE");
+  CLI::Option* trajectory =
+      cmd->add_option(
+             "--trajectory", opt->trajectory,
+             "write the state phi, x, u, v, y, mode sampled on a grid to this CSV file (at most "
+             "10000000 rows: samples per period x (transient + periods) + 1)")
+          ->type_name("FILE");
   Bounded(cmd->add_option("--samples-per-period", opt->samples_per_period,
                           "grid of --trajectory: samples per forcing period"),
           1, kMaxSamplesPerPeriod)
@@ -265,6 +269,14 @@ Command AddSimulateCommand(CLI::App& app) {
                           "events per period"),
           10, kMaxEventsPerPeriod)
       ->capture_default_str();
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"that orbit simulated from right after its impact for 10 "
+                      "periods: it returns to its start",
+                      "simulate --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
+                      "--from-orbit --periods 10"},
+                     {"what a robot started at rest settles into after 2000 periods",
+                      "simulate --A 0.08 --c 0.015 --phi0 0 --T0 0.1 --e 1 --alpha "
+                      "0.3 --x0 0.5 --u0 0 --v0 0 --transient 2000 --periods 2"}});
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 

@@ -6,12 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/orbit_energy.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "help_format.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
 
@@ -106,11 +107,18 @@ Command AddSolveCommand(CLI::App& app) {
   CLI::Option* trajectory =
       cmd->add_option("--trajectory", opt->trajectory,
                       "write phi, x, u, v over one period to this CSV file (phi = 0 just after "
-                      "the impact)");
+                      "the impact)")
+          ->type_name("FILE");
   Bounded(cmd->add_option("--samples", opt->samples, "number of rows of --trajectory"), 2,
           kMaxTrajectoryRows)
       ->capture_default_str()
       ->needs(trajectory);
+  SetExamples(*cmd, {{"the paper's worked example: c = A = T0/2 at the paper's impact "
+                      "phase (not a valid orbit)",
+                      "solve --A 0.5 --c 0.5 --phi0 -2.944899971002"},
+                     {"a valid, stable orbit and the multipliers of its impact map",
+                      "solve --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
+                      "--stability"}});
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 

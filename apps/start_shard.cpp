@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
 
@@ -68,7 +68,7 @@ int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
   so.resume = options.resume;
   so.checkpoint_seconds = options.checkpoint_seconds;
   const StartShardSummary s = WriteStartShard(forcing, robot.params, robot.alpha, starts, attractor,
-                                              so, TerminalProgress("starts"), ranks.backend());
+                                              so, CountProgress("starts"), ranks.backend());
   fmt::print("{}: shard {}/{}: {} of {} starts written to {}{}\n", cmd.get_name(), so.shard,
              so.shards, s.starts, starts.size(), output,
              s.resumed > 0 ? fmt::format(" ({} resumed from the checkpoint)", s.resumed) : "");

@@ -1,7 +1,7 @@
 #pragma once
 // `--shard K/N` (with `--resume`, `--checkpoint-seconds`) of the commands that run a map of
 // starts, `basins` and `attractors`: the shard's starts computed (on the ranks of an MPI job
-// when started by mpirun) and written to a resumable shard file (capsubot/start_map.hpp).
+// when started by mpirun) and written to a resumable shard file (capsubot/sweep/start_map.hpp).
 
 #include <string>
 #include <utility>

@@ -70,11 +70,13 @@ std::optional<std::string> UnknownCommand(const CLI::App& app, const std::string
   for (const CLI::App* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
   const bool flag = !first.empty() && first.front() == '-';
   if (flag) {
-    if (first == "--help" || first == "-h" || first == "--version") return std::nullopt;
-    const auto near = Nearest(first, {"--help", "--version"});
-    return fmt::format("unknown option '{}'{}; expected a command ({}) or --help or --version",
-                       first, near ? fmt::format("; did you mean '{}'?", *near) : "",
-                       fmt::join(commands, ", "));
+    if (first == "--help" || first == "-h" || first == "--help-all" || first == "--version") {
+      return std::nullopt;
+    }
+    const auto near = Nearest(first, {"--help", "--help-all", "--version"});
+    return fmt::format(
+        "unknown option '{}'{}; expected a command ({}) or --help, --help-all or --version", first,
+        near ? fmt::format("; did you mean '{}'?", *near) : "", fmt::join(commands, ", "));
   }
   if (std::find(commands.begin(), commands.end(), first) != commands.end()) return std::nullopt;
   const auto near = Nearest(first, commands);

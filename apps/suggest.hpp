@@ -20,7 +20,8 @@ std::vector<std::string> ReadHelpCommand(std::vector<std::string> args);
 
 /// The one-line complaint about a first argument that names no command ("unknown command
 /// 'optimise'; did you mean 'optimize'?"), or none when the argument is fine for CLI11
-/// (a command, --help, --version, -h). Flags unknown at the top level get the same treatment.
+/// (a command, --help, --help-all, --version, -h). Flags unknown at the top level get the same
+/// treatment.
 std::optional<std::string> UnknownCommand(const CLI::App& app, const std::string& first);
 
 /// For CLI11's "arguments were not expected" of a command: the nearest flag of `command` to

@@ -1,8 +1,8 @@
 // capsubot sweep: the orbit, its validity (and stability), or the optimum of P1, P2, P3 or the
 // reach problem at every point of a grid of parameters, to a CSV file (library:
-// capsubot/sweep.hpp).
+// capsubot/sweep/sweep.hpp).
 
-#include "capsubot/sweep.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
@@ -19,10 +19,11 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/optimize_request.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
@@ -262,13 +263,13 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   s.comments.clear();
   if (!opt.no_header_comment) s.comments.push_back(ProvenanceLine(opt, cmd, unused));
   s.threads = CapThreads(s.threads, "capsubot sweep");
-  const bool tty = StderrIsTerminal();
+  const bool shown = ProgressShown();
   ProgressBar bar("points");
   const SweepProgressCallback progress = GridProgress(bar);
   Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
   if (ranks.worker()) return ranks.Serve(SweepBlocks(s), s.threads);  // rank 0 validates
   const SweepSummary summary = RunSweep(s, progress, ranks.backend());
-  if (tty) {
+  if (shown) {
     fmt::print(stderr,
                "capsubot sweep: {} points, {} rows written to {} in {:.3f} s on {} threads{}\n",
                summary.points, summary.rows, s.output, summary.seconds, summary.threads,
@@ -334,7 +335,8 @@ Command AddSweepCommand(CLI::App& app) {
   cmd->add_option(
          "--output,-o", opt->sweep.output,
          "the CSV file to write (required); - writes to standard output (no --resume then)")
-      ->required();
+      ->required()
+      ->type_name("FILE");
   cmd->add_flag("--stability", opt->sweep.stability,
                 "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
                 "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss "
@@ -426,6 +428,15 @@ Command AddSweepCommand(CLI::App& app) {
                   "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
                   "more than 4 per core is lowered to that, with a note")
       ->capture_default_str();
+  AddProgressOptions(*cmd);
+  SetExamples(*cmd, {{"the orbit and its stability at 4 phases x 2 restitutions, to "
+                      "standard output",
+                      "sweep --grid phi0=-3:-2.4:4 --grid e=0.5,1 --A 0.05 --c 0.02 "
+                      "--T0 0.1 --stability -o -"},
+                     {"P2 at every point of a 17 x 11 grid, shard 0 of 3 (1/3 and 2/3 "
+                      "elsewhere, then `capsubot merge`; --progress for lines in a Slurm log)",
+                      "sweep --grid T0=0.01:1:17:log --grid e=0:1:11 --optimize forcing "
+                      "--shard 0/3 -o part0.csv"}});
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 

@@ -2,7 +2,7 @@
 
 #include "whole_map.hpp"
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "ranks.hpp"
 
 namespace capsubot::app {
@@ -19,7 +19,7 @@ std::optional<Attractors> ClassifyWholeMap(const RobotOptions& robot, const Forc
   }
   if (!output.empty()) CheckWritable(output, "-o");  // before the long run
   return ClassifyStarts(forcing, robot.params, robot.alpha, starts, attractor,
-                        TerminalProgress("starts"), ranks.backend());
+                        CountProgress("starts"), ranks.backend());
 }
 
 }  // namespace capsubot::app

@@ -12,10 +12,11 @@
 namespace capsubot::app {
 
 /// ClassifyStarts of `starts` for `robot` (with `forcing`, its built force), the progress on
-/// the terminal. Rank 0 (or a run alone) first checks that `output` can be written (none when
-/// empty; the option -o names it), then returns the attractors, the same as on one machine. A
-/// worker computes blocks of starts for rank 0 and returns nothing: its command writes and
-/// prints nothing and exits 0. Throws as ClassifyStarts (bad options) and AtomicFile (IoError).
+/// stderr when shown (progress.hpp). Rank 0 (or a run alone) first checks that `output` can be
+/// written (none when empty; the option -o names it), then returns the attractors, the same as on
+/// one machine. A worker computes blocks of starts for rank 0 and returns nothing: its command
+/// writes and prints nothing and exits 0. Throws as ClassifyStarts (bad options) and AtomicFile
+/// (IoError).
 std::optional<Attractors> ClassifyWholeMap(const RobotOptions& robot, const Forcing& forcing,
                                            const std::vector<PhaseState>& starts,
                                            const AttractorOptions& attractor,

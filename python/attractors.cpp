@@ -1,7 +1,7 @@
 // attractors: the long-run motions reached from rest on a grid of starts (docs/model.md
 // sections 12 and 13), as `capsubot attractors --json`; motion options shared with periodic.
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "json/attractors_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/attractors_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -49,16 +49,18 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
   mo.chatter_velocity = chatter_velocity;
   mo.max_events_per_period = max_events_per_period;
   fr.attractor.threads = CapThreads(threads);
-  // The progress of the starts is told on this thread, block by block: where Ctrl-C is seen.
+  // The library asks the interrupt on this thread after every block of starts: where Ctrl-C
+  // is seen.
   const Attractors a = RunWithoutGil([&](SignalCheck& check) {
-    return FindAttractors(forcing, params, alpha, fr,
-                          [&check](std::int64_t, std::int64_t) { check.Check(); });
+    fr.attractor.interrupt = check.AsInterrupt();
+    return FindAttractors(forcing, params, alpha, fr);
   });
   return py::dict(ToPython(json::AttractorsJson(a)));
 }
 
 constexpr const char* kAttractorsDoc =
-    "What the robot does from rest (docs/model.md sections 12 and 13): the exact simulator is "
+    "What the robot does from rest (capsubot documentation, model sections 12 and 13): the "
+    "exact simulator is "
     "started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/n_x and the "
     "forcing at phase psi = 2 pi j/n_psi; after a transient the long-run motion of each start "
     "is classified (period, impacts, mean velocity) and equal motions are grouped into "

@@ -2,7 +2,7 @@
 // The Python module's pieces: one Bind function per library concept (each in its own file,
 // called by module.cpp), and the conversions they share (convert.cpp). The module is thin:
 // it converts Python arguments to the library's inputs, calls the library, builds the result
-// as the command line's --json does (the shared layer src/json/) and converts that JSON to
+// as the command line's --json does (the shared layer src/report/) and converts that JSON to
 // Python objects (same keys, null -> None).
 
 #include <pybind11/pybind11.h>
@@ -16,22 +16,24 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/forcing.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/interrupt.hpp"
 
 namespace capsubot::python {
 
 namespace py = pybind11;
 
 // The functions of the module, one file per concept (solve.cpp, solve_grid.cpp, ...).
-void BindSolve(py::module_& m);       // solve, trajectory
-void BindSolveGrid(py::module_& m);   // solve_grid
-void BindSimulate(py::module_& m);    // simulate
-void BindOptimize(py::module_& m);    // optimize
-void BindOrbits(py::module_& m);      // orbits
-void BindAttractors(py::module_& m);  // attractors
-void BindPeriodic(py::module_& m);    // periodic
-void BindDesign(py::module_& m);      // design
+void BindSolve(py::module_& m);         // solve, trajectory
+void BindSolveGrid(py::module_& m);     // solve_grid
+void BindSimulate(py::module_& m);      // simulate
+void BindOptimize(py::module_& m);      // optimize
+void BindOrbits(py::module_& m);        // orbits
+void BindAttractors(py::module_& m);    // attractors
+void BindPeriodic(py::module_& m);      // periodic
+void BindDesign(py::module_& m);        // design
+void BindContinuation(py::module_& m);  // continue_branch
 
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
@@ -49,9 +51,10 @@ struct ForcingArgs {
 
 /// The units every docstring refers to (docs/model.md section 2).
 inline constexpr const char* kUnits =
-    "Units (dimensionless, docs/model.md section 2): phases in rad (period tau = 2 pi, phi = 0 "
-    "at the impact on the right wall); positions in L (walls at x = 0 and x = 1); velocities "
-    "in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = m2/(m1+m2).";
+    "Units (dimensionless; capsubot documentation, model section 2): phases in rad (period "
+    "tau = 2 pi, phi = 0 at the impact on the right wall); positions in L (walls at x = 0 and "
+    "x = 1); velocities in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = "
+    "m2/(m1+m2).";
 
 /// The docstring lines of the force arguments shared by several functions.
 inline constexpr const char* kForcingArgsDoc =
@@ -90,7 +93,7 @@ inline constexpr const char* kDefaultReachStarts = "4x4";
 /// The docstring lines of the from-rest check (from_rest_starts, threads).
 inline constexpr const char* kFromRestArgsDoc =
     "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"
-    "            (docs/model.md section 12; key from_rest)\n"
+    "            (capsubot documentation, model section 12; key from_rest)\n"
     "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
     "            are lowered to that); the result does not depend on it\n";
 
@@ -100,11 +103,12 @@ struct Interrupted : std::exception {
   const char* what() const noexcept override { return "interrupted by a Python signal handler"; }
 };
 
-/// The Python signal check of a long library call that runs without the GIL, called from its
-/// progress callbacks or observers. On the thread that called the module (Python runs signal
-/// handlers on the main thread only) and at most every kInterval, it takes the GIL and runs the
-/// pending handlers; it throws Interrupted when one raised. Elsewhere, and in between, it costs
-/// a comparison (a clock read every kStride calls).
+/// The Python signal check of a long library call that runs without the GIL, called as its
+/// Interrupt (AsInterrupt) or from its progress callbacks or observers. On the thread that
+/// called the module (Python runs signal handlers on the main thread only) and at most every
+/// kInterval, it takes the GIL and runs the pending handlers; it throws Interrupted when one
+/// raised. Elsewhere, and in between, it costs a clock read (operator(): a comparison, and a
+/// clock read every kStride calls).
 class SignalCheck {
  public:
   static constexpr std::chrono::milliseconds kInterval{50};
@@ -115,6 +119,11 @@ class SignalCheck {
   }
   /// Checks now (still at most every kInterval): where a call is rare (once per start).
   void Check();
+  /// Check() as the library's Interrupt (capsubot/model/interrupt.hpp), for the options of a long
+  /// call; valid while this check lives (the call inside RunWithoutGil).
+  Interrupt AsInterrupt() {
+    return [this] { Check(); };
+  }
 
  private:
   const std::thread::id caller_ = std::this_thread::get_id();
@@ -144,7 +153,8 @@ py::object ToPython(const nlohmann::json& value);
 inline constexpr const char* kMarginArgsDoc =
     "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
     "    margin_stroke  clearance relative to the stroke d_s: the clearance from both walls is\n"
-    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)\n"
+    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (capsubot\n"
+    "            documentation, model section 12)\n"
     "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
 
 }  // namespace capsubot::python

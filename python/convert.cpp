@@ -1,5 +1,5 @@
 // Conversions shared by the module's functions: the force arguments, and the JSON of the
-// results (src/json/, as the command line prints it) as Python objects.
+// results (src/report/, as the command line prints it) as Python objects.
 
 #include <fmt/format.h>
 #include <pybind11/complex.h>
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
+#include "capsubot/model/limits.hpp"
 
 namespace capsubot::python {
 void RequireTerms(const char* name, const char* symbol,

@@ -1,7 +1,7 @@
 // design: a real robot in SI units; the inner mass (and motor frequency) of its fastest robust
 // one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/limits.hpp"
-#include "json/design_json.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/design_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -101,10 +101,13 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   DesignResult r;
   DesignFromRestResult best;
   RunWithoutGil([&](SignalCheck& check) {
-    // Design tells its robots on this thread: where Ctrl-C is seen. The from-rest search stops
-    // at its own time limit (reach_seconds).
+    // Design tells its robots on this thread, and the from-rest search asks its interrupts
+    // there: where Ctrl-C is seen.
     r = Design(in, [&check](std::int64_t, std::int64_t) { check.Check(); });
-    if (from_rest) best = DesignFromRest(in, rest);
+    if (!from_rest) return;
+    rest.search.attractor.interrupt = check.AsInterrupt();
+    rest.check.attractor.interrupt = check.AsInterrupt();
+    best = DesignFromRest(in, rest);
   });
   nlohmann::json j = json::DesignJson(r);
   if (from_rest) j["from_rest_best"] = json::FromRestBestJson(in, best);
@@ -115,7 +118,7 @@ constexpr const char* kDesignDoc =
     "Design a real robot in SI units: for the shell (m1, gap L, friction mu) and the motor "
     "force, the inner mass m2 (and the frequency, with frequency_range) of the fastest robust "
     "one-impact gait, with its speed, motor power, losses and cost of transport "
-    "(docs/design.md): the dict `capsubot design --json` prints.\n\n"
+    "(capsubot documentation, design): the dict `capsubot design --json` prints.\n\n"
     "Arguments (keyword only, named as the settings of `capsubot design` with _ for -):\n"
     "    m1      shell mass [kg], > 0\n"
     "    L       free gap of the inner body between the walls [m], > 0\n"
@@ -130,7 +133,7 @@ constexpr const char* kDesignDoc =
     "    frequency_range  (fmin, fmax) [Hz]: search the frequency too\n"
     "    m2_range  (m2min, m2max) [kg] searched, default (0.01 m1, 10 m1)\n"
     "    margin, margin_stroke, stick_margin  the robust gait's clearances and stick margin\n"
-    "            (docs/model.md section 12)\n"
+    "            (capsubot documentation, model section 12)\n"
     "    rho_max  largest admissible multiplier modulus, > 0 (inf: no stability requirement)\n"
     "    scan_points  log-spaced samples of each searched variable, >= 3\n"
     "    from_rest  also find the fastest motion reached from rest in each direction\n"
@@ -150,7 +153,7 @@ constexpr const char* kDesignDoc =
     "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
     "attractors}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL; Ctrl-C interrupts the search of the one-impact gait.";
+    "rule). Runs without the GIL; Ctrl-C interrupts it (KeyboardInterrupt).";
 
 }  // namespace
 

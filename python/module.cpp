@@ -1,12 +1,12 @@
 // The Python module `capsubot`: the library's computations with keyword arguments named as
 // the command-line options, results as the dicts of the command line's --json (built by its
-// JSON layer, src/json/; NumPy arrays for tables). pybind11 maps std::invalid_argument to
+// JSON layer, src/report/; NumPy arrays for tables). pybind11 maps std::invalid_argument to
 // ValueError and std::runtime_error to RuntimeError, with the library's message.
 
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 
 PYBIND11_MODULE(capsubot, m) {
   m.doc() =
@@ -16,7 +16,9 @@ PYBIND11_MODULE(capsubot, m) {
           "solve, trajectory, solve_grid: the periodic orbit and its validity; simulate: "
           "the exact event-driven simulation; orbits: every orbit of a given robot; "
           "optimize: the fastest gait; attractors: the long-run motions from rest; periodic: a "
-          "periodic motion of any kind by Newton shooting; design: a real robot in SI "
+          "periodic motion of any kind by Newton shooting; continue_branch: its continuation in "
+          "one "
+          "parameter; design: a real robot in SI "
           "units. Keyword arguments are named as the command-line "
           "options; results are the dicts that `capsubot <command> --json` prints (None "
           "for null), without its provenance. Bad input raises ValueError with the "
@@ -31,4 +33,5 @@ PYBIND11_MODULE(capsubot, m) {
   capsubot::python::BindAttractors(m);
   capsubot::python::BindPeriodic(m);
   capsubot::python::BindDesign(m);
+  capsubot::python::BindContinuation(m);
 }

@@ -2,7 +2,7 @@
 // (section 12), every gait checked from rest, as `capsubot optimize --json`: one problem, the
 // fastest motion from rest (reach, section 13), or the main job without one.
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -14,8 +14,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "json/optimize_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/optimize_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -23,13 +23,21 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The search the caller asks for, and the check from rest of every gait and the reach search.
+// The search the caller asks for, and the check from rest of every gait and the reach search;
+// search.interrupt is asked by every stage of the run.
 struct SearchArgs {
   SearchRequest search;
   std::string from_rest_starts, reach_starts;
   int reach_evaluations, reach_local_evaluations;
   double reach_seconds;
   int threads;
+
+  // The full check from rest of a gait, asking the run's interrupt.
+  FromRestOptions Check() const {
+    FromRestOptions check = FromRestCheck(from_rest_starts, threads);
+    check.attractor.interrupt = search.interrupt;
+    return check;
+  }
 };
 
 // The reach search (docs/model.md section 13): its grid and budgets, the full check from rest,
@@ -40,74 +48,56 @@ ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   r.alpha = alpha;
   ParseStarts("reach_starts", a.reach_starts, r.search);
   r.search.attractor.threads = CapThreads(a.threads);
-  r.check = FromRestCheck(a.from_rest_starts, a.threads);
+  r.search.attractor.interrupt = a.search.interrupt;
+  r.check = a.Check();
   r.global_evaluations = a.reach_evaluations;
   r.local_evaluations = a.reach_local_evaluations;
   r.max_seconds = a.reach_seconds;
+  r.Validate();
   return r;
 }
 
 // The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
-// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, and the
-// exact optima without margins (valid; stable).
-py::dict MainJob(const Params& p, const SearchArgs& a) {
+// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, how far
+// T0, e and alpha can move before its motion is lost, and the exact optima without margins
+// (valid; stable).
+nlohmann::json MainJob(const Params& p, const SearchArgs& a) {
   Params exact = p;
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   const ReachOptions reach_options = ReachFor(a, kNaN);
-  reach_options.Validate();
-  OptimizeResult paper, robust, fastest, stable;
-  ReachResult reach;
-  {
-    py::gil_scoped_release release;
-    paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
-                          PhaseOptionsFor(a.search.WithRhoMax(kInf)));
-    robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-    reach = OptimizeReach(p, robust, reach_options);
-    fastest = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
-    stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
-  }
-  return py::dict(
-      ToPython(json::MainJobJson(paper, robust, reach, fastest, stable, p, a.search.rho_max,
-                                 std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound)));
-}
-// The reach problem: the fastest motion from rest, seeded with the robust gait.
-py::dict Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
-  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
-  options.Validate();
-  ReachResult reach;
-  {
-    py::gil_scoped_release release;
-    const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-    reach = OptimizeReach(p, robust, options);
-  }
-  return py::dict(ToPython(json::ReachProblemJson(reach, p, a.search.rho_max)));
+  const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
+                                             PhaseOptionsFor(a.search.WithRhoMax(kInf)));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
+  const ReachResult reach = OptimizeReach(p, robust, reach_options);
+  const OptimizeResult fastest =
+      OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
+  const OptimizeResult stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
+  GaitRobustness robustness;
+  if (robust.found()) robustness = ComputeGaitRobustness(robust.solution.orbit);
+  return json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p, a.search.rho_max,
+                           std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound);
 }
 
-py::dict Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                 const Params& p, const SearchArgs& a) {
-  const FromRestOptions check = FromRestCheck(a.from_rest_starts, a.threads);
+// The reach problem: the fastest motion from rest, seeded with the robust gait.
+nlohmann::json Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
+  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
+  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
+  return json::ReachProblemJson(OptimizeReach(p, robust, options), p, a.search.rho_max);
+}
+
+nlohmann::json Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
+                       const Params& p, const SearchArgs& a) {
+  const FromRestOptions check = a.Check();
   OptimizeResult r;
   if (problem == "phase") {
-    if (!A || !c) {
-      throw std::invalid_argument(
-          "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)");
-    }
-    const Forcing shape = Forcing::Harmonic(*A, *c, 0.0);
-    py::gil_scoped_release release;
-    r = OptimizePhase(shape, p, PhaseOptionsFor(a.search));
+    r = OptimizePhase(Forcing::Harmonic(*A, *c, 0.0), p, PhaseOptionsFor(a.search));
   } else if (problem == "forcing") {
-    py::gil_scoped_release release;
     r = OptimizeForcing(p, ForcingOptionsFor(a.search));
   } else {
-    py::gil_scoped_release release;
     r = OptimizeFourier(p, FourierOptionsFor(a.search));
   }
-  GaitFromRest from_rest;
-  {
-    py::gil_scoped_release release;
-    from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
-  }
-  return py::dict(ToPython(json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max)));
+  const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
+  return json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max);
 }
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
@@ -126,6 +116,10 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   }
   if (problem == "phase" && a.search.starts) {
     reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
+  }
+  if (problem == "phase" && (!A || !c)) {
+    throw std::invalid_argument(
+        "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)");
   }
 }
 
@@ -174,15 +168,19 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   RejectUnused(name, A, c, alpha, args);
   const Params params{T0, e, margin, margin_stroke, stick_margin};
   params.Validate();
-  if (name.empty()) return MainJob(params, args);
-  return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
+  const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
+    args.search.interrupt = signals.AsInterrupt();
+    if (name.empty()) return MainJob(params, args);
+    return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
+  });
+  return py::dict(ToPython(result));
 }
 
 constexpr const char* kOptimizeDoc =
-    "The fastest one-impact gait (docs/model.md section 7) with the margins of a robust gait "
-    "(section 12), every gait checked from rest, or the fastest motion from rest (section 13): "
-    "the object `capsubot optimize [--problem <problem>] --json` prints for the same arguments "
-    "(same defaults), without its provenance.\n\n"
+    "The fastest one-impact gait (capsubot documentation, model section 7) with the margins of a "
+    "robust gait (section 12), every gait checked from rest, or the fastest motion from rest "
+    "(section 13): the object `capsubot optimize [--problem <problem>] --json` prints for the "
+    "same arguments (same defaults), without its provenance.\n\n"
     "Arguments (keyword only, named as the options of `capsubot optimize`):\n"
     "    problem 'phase' (P1: the best impact phase phi0 for the force shape A, c), 'forcing'\n"
     "            (P2: the best A, c, phi0 with A + c <= bound), 'fourier' (P3: the best\n"
@@ -197,8 +195,8 @@ constexpr const char* kOptimizeDoc =
 constexpr const char* kOptimizeOptionsDoc =
     "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
     "            [force]; None: T0\n"
-    "    rho_max largest spectral radius of the impact map (docs/model.md sections 8, 12);\n"
-    "            float('inf'): no stability requirement; None: 0.9\n"
+    "    rho_max largest spectral radius of the impact map (capsubot documentation, model\n"
+    "            sections 8, 12); float('inf'): no stability requirement; None: 0.9\n"
     "    stable  the same as rho_max = 1 (not with rho_max)\n"
     "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
     "    harmonics  number K of harmonics of the Fourier force (fourier), 1..16\n"
@@ -225,11 +223,12 @@ constexpr const char* kOptimizeOptionsDoc =
     "'no_valid_orbit' the orbit is the point nearest to validity. For reach: A, c, phi0, "
     "alpha, mean_velocity (over the starts from rest), status, message, attractors, summary, "
     "spread, seed_won, robust_to_settings, evaluations, rejected_evaluations, "
-    "algorithm, seed and the requirements (docs/reach.md). For the main job: T0, "
+    "algorithm, seed and the requirements (capsubot documentation, reach). For the main job: T0, "
     "e, the margins, rho_max, force_bound and the results paper, robust (with from_rest), "
     "reach, fastest, fastest_stable (each but reach with a note).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL (other Python threads go on).\n\n";
+    "rule). Runs without the GIL (other Python threads go on); Ctrl-C interrupts it "
+    "(KeyboardInterrupt).\n\n";
 
 }  // namespace
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -47,9 +47,9 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
 }
 
 constexpr const char* kOrbitsDoc =
-    "Every one-impact orbit of a given robot (mass ratio alpha fixed, docs/model.md section 8): "
-    "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, each with its validity and "
-    "stability: the list `orbits` of `capsubot orbits --json`.\n\n"
+    "Every one-impact orbit of a given robot (mass ratio alpha fixed; capsubot documentation, "
+    "model section 8): all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, each with "
+    "its validity and stability: the list `orbits` of `capsubot orbits --json`.\n\n"
     "Arguments (keyword only, named as the options of `capsubot orbits`):\n"
     "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n";
 

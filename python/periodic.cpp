@@ -2,7 +2,7 @@
 // stroboscopic map, with its multipliers (docs/model.md section 13), as
 // `capsubot periodic --json`.
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <pybind11/stl.h>
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "json/periodic_json.hpp"
+#include "capsubot/report/periodic_json.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -65,19 +65,18 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
   so.max_period = max_period;
   so.step = step;
   so.chatter_velocity = chatter_velocity;
-  PeriodicMotion m;
-  {
-    py::gil_scoped_release release;
-    m = period ? ShootPeriodicMotion(forcing, params, alpha, start, *period, so)
-               : FindPeriodicMotion(forcing, params, alpha, start, so);
-  }
+  const PeriodicMotion m = RunWithoutGil([&](SignalCheck& signals) {
+    so.interrupt = signals.AsInterrupt();
+    return period ? ShootPeriodicMotion(forcing, params, alpha, start, *period, so)
+                  : FindPeriodicMotion(forcing, params, alpha, start, so);
+  });
   return py::dict(ToPython(json::PeriodicJson(m)));
 }
 
 constexpr const char* kPeriodicDoc =
     "A periodic motion of any kind (several impacts, both walls, period p) found exactly by "
-    "Newton's method on the p-th iterate of the stroboscopic map (docs/model.md section 13), "
-    "with its multipliers: the dict `capsubot periodic --json` prints.\n\n"
+    "Newton's method on the p-th iterate of the stroboscopic map (capsubot documentation, model "
+    "section 13), with its multipliers: the dict `capsubot periodic --json` prints.\n\n"
     "Arguments (keyword only, named as the options of `capsubot periodic`):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n"
     "            (required for the harmonic force; default 0 for a Fourier force)\n";
@@ -98,7 +97,7 @@ constexpr const char* kPeriodicArgsDoc =
     "multipliers [[re, im], ...], spectral_radius, stable, distance_to_plus_one, "
     "distance_to_minus_one, distance_to_unit_circle, residual, iterations.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL.\n\n";
+    "rule). Runs without the GIL; Ctrl-C interrupts it (KeyboardInterrupt).\n\n";
 
 }  // namespace
 

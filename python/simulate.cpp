@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/orbit_start.hpp"
-#include "capsubot/simulator.hpp"
-#include "json/simulation_json.hpp"
+#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/simulation_json.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -206,10 +206,10 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
 }
 
 constexpr const char* kSimulateDoc =
-    "Exact event-driven simulation of the full non-smooth dynamics (docs/model.md sections 3 "
-    "and 10), independent of the analytic orbit: the object `capsubot simulate --json` "
-    "prints. The force is F(phi) = A sin(phi + phi0) + c (or a Fourier force) with phi = 0 "
-    "at the start.\n\n"
+    "Exact event-driven simulation of the full non-smooth dynamics (capsubot documentation, "
+    "model sections 3 and 10), independent of the analytic orbit: the object `capsubot simulate "
+    "--json` prints. The force is F(phi) = A sin(phi + phi0) + c (or a Fourier force) with phi "
+    "= 0 at the start.\n\n"
     "Arguments (keyword only, named as the options of `capsubot simulate`):\n";
 
 constexpr const char* kSimulateArgsDoc =
@@ -237,8 +237,8 @@ constexpr const char* kSimulateStateDoc =
     "state phi (rad), x (L), u, v (omega L), y (L), mode, displacement (y(end) - y0, L), "
     "v_mean (omega L), the counts impacts_right, impacts_left, stops, breakaways, sticks, "
     "releases, events, energy (a dict motor_work, motor_work_positive, friction_loss, "
-    "impact_loss in (m1+m2) omega^2 L^2, docs/model.md section 11), all over the recorded "
-    "periods; with transient > 0, transient (a dict periods and the same figures over the "
+    "impact_loss in (m1+m2) omega^2 L^2, capsubot documentation, model section 11), all over the "
+    "recorded periods; with transient > 0, transient (a dict periods and the same figures over the "
     "transient); with from_orbit, orbit (the dict of solve). With events: "
     "'event_table', a dict of NumPy arrays phase, kind, x, u, v, y (state right after the "
     "event), u_before, v_before, mode (the columns of --events). With trajectory: "

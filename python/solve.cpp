@@ -9,17 +9,17 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/gait_from_rest.hpp"
-#include "capsubot/limits.hpp"
-#include "json/solution_json.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::python {
 namespace {
 
 constexpr const char* kSolveDoc =
-    "The one-impact periodic orbit (docs/model.md section 4) for the force F(phi) = A sin(phi + "
-    "phi0) + c (or a Fourier force), with every validity condition of section 5: the object "
-    "`capsubot solve --json` prints.\n\n"
+    "The one-impact periodic orbit (capsubot documentation, model section 4) for the force "
+    "F(phi) = A sin(phi + phi0) + c (or a Fourier force), with every validity condition of "
+    "section 5: the object `capsubot solve --json` prints.\n\n"
     "Arguments (keyword only, named as the options of `capsubot solve`):\n";
 
 constexpr const char* kPhaseDoc =
@@ -27,8 +27,8 @@ constexpr const char* kPhaseDoc =
     "            at the impact; required with A, default 0 with sin/cos\n";
 
 constexpr const char* kStabilityArgDoc =
-    "    stability  also the stability of the orbit (docs/model.md section 8) and its check\n"
-    "            from rest (section 12)\n";
+    "    stability  also the stability of the orbit and its check from rest (capsubot\n"
+    "            documentation, model sections 8 and 12)\n";
 
 constexpr const char* kSolveReturnsDoc =
     "Returns a dict: A, c, phi0 (and cos, sin for a Fourier force, A is then None), T0, e, "
@@ -39,13 +39,14 @@ constexpr const char* kSolveReturnsDoc =
     "(x_max - x_min, L), clearance (the clearance required from both walls, L), valid (bool), "
     "violations (names of the violated conditions), energy (a dict motor_work, "
     "motor_work_positive, friction_loss, impact_loss: per period, in (m1+m2) omega^2 L^2, "
-    "docs/model.md section 11); None where a quantity does not exist. With stability: multipliers "
-    "(list of {'re', 'im'}: eigenvalues of the impact "
-    "map's Jacobian), spectral_radius and stable (spectral_radius < 1), and from_rest: the "
+    "capsubot documentation, model section 11); None where a quantity does not exist. With "
+    "stability: multipliers (list of {'re', 'im'}: eigenvalues of the impact map's Jacobian), "
+    "spectral_radius and stable (spectral_radius < 1), and from_rest: the "
     "orbit checked from rest on from_rest_starts (the dict of attractors() plus reached, the "
     "starts that end on the orbit, and summary; None without an orbit).\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). The check from rest runs without the GIL.\n\n";
+    "rule). The check from rest runs without the GIL; Ctrl-C interrupts it "
+    "(KeyboardInterrupt).\n\n";
 
 constexpr const char* kTrajectoryDoc =
     "The state along one period of the one-impact orbit, as `capsubot solve --trajectory`: "
@@ -73,8 +74,11 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
   const Solution s = capsubot::Solve(forcing, params);
   GaitFromRest from_rest;
   if (stability) {
-    py::gil_scoped_release release;
-    from_rest = CheckGaitFromRest(s.orbit, params, check);
+    from_rest = RunWithoutGil([&](SignalCheck& signals) {
+      FromRestOptions o = check;
+      o.attractor.interrupt = signals.AsInterrupt();
+      return CheckGaitFromRest(s.orbit, params, o);
+    });
   }
   return py::dict(ToPython(json::SolveJson(s, stability, from_rest)));
 }

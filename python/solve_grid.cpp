@@ -19,10 +19,10 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/blocks.hpp"
-#include "capsubot/limits.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -344,7 +344,7 @@ constexpr const char* kSolveGridDoc =
     "    phi0    motor phase at the impact [rad]\n";
 
 constexpr const char* kSolveGridOptionsDoc =
-    "    stability  also spectral_radius and stable (docs/model.md section 8)\n"
+    "    stability  also spectral_radius and stable (capsubot documentation, model section 8)\n"
     "    threads number of threads, 1..1024 (more than 4 per core are lowered to that); None:\n"
     "            all cores\n\n"
     "Returns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "

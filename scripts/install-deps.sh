@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(build-essential cmake pkg-config libeigen3-dev libnlopt-cxx-dev libgsl-dev libfmt-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libtomlplusplus-dev
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-pip
+  help2man pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-pip
   python3-setuptools python3-wheel python3-venv libopenmpi-dev
   openmpi-bin zlib1g-dev)
 # Optional extras: `scripts/install-deps.sh --figures` adds gnuplot for the figure script.

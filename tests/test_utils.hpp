@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/params.hpp"
-#include "capsubot/simulator.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::testing {
 
@@ -96,10 +96,9 @@ struct CommandResult {
   std::string out;
 };
 
-/// Runs `capsubot <args>` (the built program), capturing stdout (and stderr with "2>&1").
-inline CommandResult RunCli(const std::string& args) {
+/// Runs the shell command `command`, capturing stdout (and stderr with "2>&1").
+inline CommandResult RunShell(const std::string& command) {
   CommandResult r;
-  const std::string command = std::string(CAPSUBOT_CLI) + " " + args;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
   std::array<char, 4096> buffer{};
@@ -143,6 +142,11 @@ inline CsvLines ReadCsv(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return SplitCsv(text.str());
+}
+
+/// Runs `capsubot <args>` (the built program), capturing stdout (and stderr with "2>&1").
+inline CommandResult RunCli(const std::string& args) {
+  return RunShell(std::string(CAPSUBOT_CLI) + " " + args);
 }
 
 }  // namespace capsubot::testing

@@ -3,8 +3,8 @@
 // displacement per period.
 #include <cstdio>
 
-#include "capsubot/validity.hpp"
-#include "capsubot/version.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/model/version.hpp"
 
 int main() {
   const capsubot::Forcing force = capsubot::Forcing::Harmonic(0.5, 0.5, -2.944899971002);

@@ -24,7 +24,8 @@ BASINS=(basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 --alpha 0.279286
 DESIGN=(design --L 0.02 --mu 0.3 --force-amplitude 0.5 --force-bias 0.1 --frequency 20
         --grid e=0.3:0.9:61 --grid m1=0.05:0.5:91 -o design_e_m1.csv)
 
-# mpirun takes the ranks from the allocation (srun --mpi=pmix works the same).
-mpirun "$CAPSUBOT" "${SWEEP[@]}" --threads "$THREADS" --resume
-mpirun "$CAPSUBOT" "${BASINS[@]}" --threads "$THREADS"
-mpirun "$CAPSUBOT" "${DESIGN[@]}" --threads "$THREADS" --resume
+# mpirun takes the ranks from the allocation (srun --mpi=pmix works the same); --progress:
+# rank 0 writes a line every 5 % with the time elapsed and left into the Slurm log.
+mpirun "$CAPSUBOT" "${SWEEP[@]}" --threads "$THREADS" --resume --progress
+mpirun "$CAPSUBOT" "${BASINS[@]}" --threads "$THREADS" --progress
+mpirun "$CAPSUBOT" "${DESIGN[@]}" --threads "$THREADS" --resume --progress

@@ -63,5 +63,6 @@ fi
 K=${SLURM_ARRAY_TASK_ID:?run as a job array (sbatch --array=0-$((N - 1)))}
 EXTRA=()
 if [[ "$KIND" == bifurcation ]]; then EXTRA=(--summary "$(shard_file "$K" "$SUMMARY")"); fi
-"$CAPSUBOT" "${RUN[@]}" --shard "$K/$N" --threads "${SLURM_CPUS_PER_TASK:-1}" \
+# --progress: a line every 5 % with the time elapsed and left, into the task's Slurm log.
+"$CAPSUBOT" "${RUN[@]}" --shard "$K/$N" --threads "${SLURM_CPUS_PER_TASK:-1}" --progress \
   -o "$(shard_file "$K" "$OUT")" "${EXTRA[@]}"

@@ -72,12 +72,14 @@ def test_threads_are_lowered_to_four_per_core():
 
 
 # Calls that run for a minute or more without an interrupt (measured: simulate 6.5 us a
-# period of this chattering motion; 64 starts of 2e6 periods; up to 160 000 robots; the orbit
+# period of this chattering motion; 4096 starts of 2e4 periods; up to 160 000 robots; the orbit
 # search of a robot whose T0 is 5e9 times its force, refined to 1e9 evaluations).
 LONG_CALLS = {
     "simulate": (capsubot.simulate, dict(HARMONIC, **STATE, periods=1e7)),
+    # Many short starts: the interrupt is asked after every block of starts, so a block is
+    # what an interrupt waits for (4096 starts of 2e4 periods: minutes in all).
     "attractors": (capsubot.attractors,
-                   dict(ROBOT, starts="8x8", transient=10**6, record=10**6,
+                   dict(ROBOT, starts="64x64", transient=10**4, record=10**4,
                         converged_tolerance=0.0)),
     "design": (capsubot.design,
                dict(m1=0.2, L=0.02, mu=0.3, e=0.7, force_amplitude=0.5, force_bias=0.1,

@@ -1,7 +1,7 @@
 // Attractors from a set of starts (docs/model.md sections 12 and 13): the long-run motion of
 // every start, in parallel, grouped into classes; the one-impact orbit recognised by its state.
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 
 #include <fmt/format.h>
 
@@ -14,8 +14,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 
 namespace capsubot {
 namespace {
@@ -142,7 +142,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
                           std::int64_t first, const MotionSink& sink, const BlockBackend& backend) {
   params.Validate();
   options.Validate();
-  for (const PhaseState& s : starts) detail::ValidateStart(alpha, s);
+  for (const PhaseState& s : starts) ValidateStart(alpha, s);
   const auto n = static_cast<std::int64_t>(starts.size());
   if (first < 0 || first > n) {
     throw std::invalid_argument(fmt::format(
@@ -165,6 +165,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
                 block.resize(count);
                 std::memcpy(static_cast<void*>(block.data()), bytes.data(), bytes.size());
                 sink(begin, end, block.data());
+                Poll(options.interrupt);  // here, on the calling thread: never on a worker
               });
 }
 

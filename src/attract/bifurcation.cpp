@@ -1,6 +1,6 @@
 // Bifurcation diagrams by brute force with the state carried along (docs/model.md section 13).
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 #include <fmt/format.h>
 
@@ -17,11 +17,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/periodic.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
 
 namespace capsubot {
 namespace {
@@ -182,7 +182,7 @@ Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
       const RobotModel r = At(study.bases.back(), options.param, options.harmonic, value);
       try {
         r.params.Validate();
-        detail::ValidateStart(r.alpha, options.start);
+        ValidateStart(r.alpha, options.start);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format(
             "{} = {}{} makes the robot invalid: {}",

@@ -1,7 +1,7 @@
 // A one-impact gait checked from rest (docs/model.md section 12): the attractors of the
 // robot that the gait describes, the starts that end on the gait, and the sentence that says it.
 
-#include "capsubot/gait_from_rest.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
 
 #include <fmt/format.h>
 

@@ -9,9 +9,9 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/attractors.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -59,8 +59,6 @@ void MotionOptions::Validate() const {
   }
 }
 
-namespace detail {
-
 void ValidateStart(double alpha, const PhaseState& start) {
   SimOptions o;  // the simulator's own rules for alpha and the state
   o.alpha = alpha;
@@ -74,6 +72,7 @@ void ValidateStart(double alpha, const PhaseState& start) {
   }
 }
 
+namespace detail {
 namespace {
 
 // Early stop: a state whose section states repeated to converged_tolerance is taken as settled
@@ -356,7 +355,7 @@ Motion LongRunMotion(const Forcing& forcing, const Params& params, double alpha,
                      const PhaseState& start, const MotionOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ValidateStart(alpha, start);
+  ValidateStart(alpha, start);
   detail::Recorder recorder;
   return detail::ClassifyMotion(forcing, params, alpha, options, {start, SimMode::kRest}, recorder);
 }

@@ -1,4 +1,4 @@
-#include "capsubot/orbit_start.hpp"
+#include "capsubot/attract/orbit_start.hpp"
 
 #include <fmt/format.h>
 

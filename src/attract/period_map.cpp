@@ -1,7 +1,7 @@
 // The p-th iterate of the stroboscopic map, its central-difference Jacobian and multipliers
 // (docs/model.md section 13).
 
-#include "attract/period_map.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Newton shooting on the p-th iterate of the stroboscopic map (docs/model.md section 13).
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <fmt/format.h>
 
@@ -12,9 +12,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "attract/period_map.hpp"
-#include "attract/stroboscopic.hpp"
-#include "model/enum_names.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -36,13 +36,27 @@ constexpr double kSameOrbitTol = 1e-9;
 
 using detail::Vec3;
 
+// Asks the interrupt at every forcing period of a run (the transient, however long): an
+// observer changes nothing in the run it watches.
+class InterruptObserver : public SimObserver {
+ public:
+  explicit InterruptObserver(const Interrupt& interrupt) : interrupt_(interrupt) {}
+  void OnPeriods(std::int64_t) override { Poll(interrupt_); }
+
+ private:
+  const Interrupt& interrupt_;
+};
+
 class Shooter {
  public:
   Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : map_(forcing, params, alpha, detail::SimulationOf(o)) {}
+      : map_(forcing, params, alpha, detail::SimulationOf(o)), interrupt_(o.interrupt) {}
 
-  // P^p(z): false if the simulation hit the work bound.
-  bool Map(const PhaseState& z, int p, detail::MapState* out) const { return map_.Map(z, p, out); }
+  // P^p(z): false if the simulation hit the work bound. Asks the interrupt first.
+  bool Map(const PhaseState& z, int p, detail::MapState* out) const {
+    Poll(interrupt_);
+    return map_.Map(z, p, out);
+  }
   const detail::PeriodMap& map() const { return map_; }
 
   // The section: events of `periods` periods from s, then s moved to the middle of their
@@ -83,6 +97,7 @@ class Shooter {
 
  private:
   detail::PeriodMap map_;
+  Interrupt interrupt_;
 };
 
 PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptions& o) {
@@ -246,15 +261,16 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
                                   const PhaseState& start, const ShootingOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ValidateStart(alpha, start);
+  ValidateStart(alpha, start);
   Shooter shooter(forcing, params, alpha, options);
   detail::MapState s{start, SimMode::kRest};
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   PeriodicMotion fail;
   fail.status = ShootingStatus::kEventLimit;
   const MotionOptions mo = detail::SimulationOf(options);
+  InterruptObserver watch(options.interrupt);
   if (options.transient > 0 &&
-      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr).status ==
+      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr, &watch).status ==
           SimStatus::kEventLimit) {
     return fail;
   }
@@ -270,7 +286,7 @@ PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params,
                                    const ShootingOptions& options) {
   params.Validate();
   options.Validate();
-  detail::ValidateStart(alpha, start);
+  ValidateStart(alpha, start);
   if (period < 1 || period > kMaxPeriodLimit) {
     throw std::invalid_argument(
         fmt::format("period = {} is invalid: expected 1 <= period <= 64", period));

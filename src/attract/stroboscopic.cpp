@@ -1,4 +1,4 @@
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 
 #include <algorithm>
 #include <cmath>

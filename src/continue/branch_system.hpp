@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "attract/period_map.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/continue/continuation.hpp"
 
 namespace capsubot::detail {

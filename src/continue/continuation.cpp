@@ -9,11 +9,11 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "attract/period_map.hpp"
-#include "attract/stroboscopic.hpp"
+#include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
-#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {
@@ -102,6 +102,7 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
   const std::int64_t max_attempts = static_cast<std::int64_t>(budget + 1) * halvings;
   for (std::int64_t attempt = 0; static_cast<int>(out.nodes.size()) < budget; ++attempt) {
     if (attempt >= max_attempts) break;
+    Poll(o.interrupt);
     Node b;
     Vec4 beyond;
     Outcome r = Step(system, a, h, o, &b, &beyond);
@@ -189,7 +190,7 @@ void Assemble(const Node& start, const Direction& backward, const Direction& for
 void CheckRobot(const RobotFamily& family, double lambda, const PhaseState& start) {
   const RobotModel r = family(lambda);
   r.params.Validate();
-  detail::ValidateStart(r.alpha, start);
+  ValidateStart(r.alpha, start);
 }
 
 }  // namespace

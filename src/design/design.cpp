@@ -1,7 +1,7 @@
 // The design searches: the fastest robust one-impact gait over the inner mass (and the motor
 // frequency), and the gait of a robot of given inner mass (docs/model.md sections 9 and 12).
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <fmt/format.h>
 
@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/numerics/windows.hpp"
 #include "design/search.hpp"
-#include "model/enum_names.hpp"
-#include "numerics/windows.hpp"
 
 namespace capsubot {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "capsubot/design.hpp"
-#include "capsubot/limits.hpp"
+#include "capsubot/design/design.hpp"
+#include "capsubot/model/limits.hpp"
 
 namespace capsubot {
 namespace {

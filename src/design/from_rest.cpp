@@ -15,14 +15,14 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "capsubot/design_from_rest.hpp"
-#include "capsubot/optimize_reach.hpp"
-#include "capsubot/simulator.hpp"
+#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/optimize/detail/nlopt_box.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "design/user_units.hpp"
-#include "model/enum_names.hpp"
-#include "optimize/nlopt_box.hpp"
-#include "optimize/nlopt_status.hpp"
-#include "optimize/optimize_common.hpp"
 
 namespace capsubot {
 namespace {

@@ -7,14 +7,14 @@
 #include <iterator>
 #include <limits>
 
-#include "capsubot/design.hpp"
-#include "capsubot/optimize_options.hpp"
-#include "capsubot/orbit_energy.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/design/design.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/optimize/optimize_options.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "design/search.hpp"
 #include "design/user_units.hpp"
-#include "model/enum_names.hpp"
 
 namespace capsubot {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 namespace capsubot::detail {
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "capsubot/design.hpp"
-#include "capsubot/energy.hpp"
+#include "capsubot/design/design.hpp"
+#include "capsubot/model/energy.hpp"
 
 namespace capsubot::detail {
 

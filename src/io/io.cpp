@@ -1,6 +1,6 @@
 // Atomic output files: the text goes to a temporary file beside the target, renamed over it.
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 #include <fmt/format.h>
 #include <sys/stat.h>

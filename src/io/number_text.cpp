@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot {
 namespace {

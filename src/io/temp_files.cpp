@@ -8,7 +8,7 @@
 #include <atomic>
 #include <cstring>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot {
 

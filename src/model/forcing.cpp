@@ -1,4 +1,4 @@
-#include "capsubot/forcing.hpp"
+#include "capsubot/model/forcing.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "numerics/trig_roots.hpp"
+#include "capsubot/model/detail/trig_roots.hpp"
 
 namespace capsubot {
 namespace {

@@ -1,4 +1,4 @@
-#include "capsubot/limits.hpp"
+#include "capsubot/model/limits.hpp"
 
 #include <fmt/format.h>
 

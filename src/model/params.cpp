@@ -1,4 +1,4 @@
-#include "capsubot/params.hpp"
+#include "capsubot/model/params.hpp"
 
 #include <fmt/format.h>
 

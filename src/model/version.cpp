@@ -1,4 +1,4 @@
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 
 namespace capsubot {
 

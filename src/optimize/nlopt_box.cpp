@@ -1,9 +1,9 @@
-#include "optimize/nlopt_box.hpp"
+#include "capsubot/optimize/detail/nlopt_box.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot::detail {
 
@@ -12,11 +12,13 @@ OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, 
                              std::vector<double> y0, int evaluations, double seconds,
                              double rel_tol, double step_fraction, std::string& message) {
   const auto n = static_cast<unsigned>(lower.size());
+  NloptCallbacks callbacks;
+  OptimizeStatus status = OptimizeStatus::kNotRun;
   try {
     nlopt::opt opt(algorithm, n);
     opt.set_lower_bounds(lower);
     opt.set_upper_bounds(upper);
-    opt.set_max_objective(objective, data);
+    opt.set_max_objective(NloptCallbacks::Call, callbacks.Wrap(objective, data));
     opt.set_maxeval(evaluations);
     opt.set_maxtime(seconds);
     opt.set_xtol_rel(rel_tol);
@@ -26,10 +28,12 @@ OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, 
     opt.set_initial_step(step);
     for (unsigned i = 0; i < n; ++i) y0[i] = std::clamp(y0[i], lower[i], upper[i]);
     double value = 0.0;
-    return StatusFromNlopt(opt.optimize(y0, value));
+    status = StatusFromNlopt(opt.optimize(y0, value));
   } catch (...) {
-    return StatusFromCurrentException(message);
+    status = StatusFromCurrentException(message);
   }
+  callbacks.Rethrow();
+  return status;
 }
 
 std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floor, int count,

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/stability.hpp"
 
 namespace capsubot::detail {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/forcing.hpp"
-#include "capsubot/optimize_options.hpp"
-#include "capsubot/params.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_options.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 namespace capsubot::detail {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "capsubot/optimize_phase.hpp"
-#include "optimize/nlopt_status.hpp"
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 
 namespace capsubot::detail {
 namespace {
@@ -103,6 +103,7 @@ void Tracker::Offer(const Evaluation& ev, const double* y, int n) {
 }
 
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker) {
+  Poll(tracker.interrupt);
   ++tracker.evaluations;
   const double force =
       problem.force_total ? problem.force_total(y) : std::numeric_limits<double>::quiet_NaN();
@@ -121,15 +122,19 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
   }
   for (int j = 0; j < problem.n; ++j) y0[j] = std::clamp(y0[j], problem.lower[j], problem.upper[j]);
   Context ctx{&problem, &tracker, {}, 0.0, {}, {}, {}, false};
+  std::vector<ConstraintRef> refs;
+  NloptCallbacks callbacks;
   try {
     // Configured once and never copied (nlopt::opt copies share callback data).
     nlopt::opt opt(algorithm, static_cast<unsigned>(problem.n));
     opt.set_lower_bounds(problem.lower);
     opt.set_upper_bounds(problem.upper);
-    opt.set_max_objective(Objective, &ctx);
-    std::vector<ConstraintRef> refs;
+    opt.set_max_objective(NloptCallbacks::Call, callbacks.Wrap(Objective, &ctx));
     for (unsigned i = 0; i < problem.constraints.size(); ++i) refs.push_back({&ctx, i});
-    for (ConstraintRef& ref : refs) opt.add_inequality_constraint(Constraint, &ref, kConstraintTol);
+    for (ConstraintRef& ref : refs) {
+      opt.add_inequality_constraint(NloptCallbacks::Call, callbacks.Wrap(Constraint, &ref),
+                                    kConstraintTol);
+    }
     opt.set_xtol_rel(rel_tol);
     opt.set_ftol_rel(rel_tol);
     opt.set_maxeval(max_evaluations);
@@ -142,6 +147,7 @@ RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vect
   } catch (...) {
     run.status = StatusFromCurrentException(run.message);
   }
+  callbacks.Rethrow();  // an Interrupt asked by the evaluations abandons the whole search
   if (run.status == OptimizeStatus::kMaxTime) tracker.deadline.MarkReached();
   return run;
 }
@@ -162,6 +168,7 @@ Evaluation PolishPhase(const Problem& problem,
   PhaseOptions phase;
   phase.scan_points = kFinalPhaseScan;
   phase.rho_max = problem.setup.rho_max;
+  phase.interrupt = tracker.interrupt;
   const OptimizeResult p1 =
       OptimizePhase(problem.build(tracker.best_y.data()), problem.setup.params, phase);
   tracker.evaluations += p1.evaluations;

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/optimize_result.hpp"
-#include "capsubot/optimize_search.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
 #include "optimize/nlopt_constraints.hpp"
-#include "optimize/optimize_common.hpp"
 
 namespace capsubot::detail {
 
@@ -29,12 +29,13 @@ struct Problem {
 };
 
 /// The best point seen over every run (valid beats invalid, then larger I), the cost, and the
-/// time limit of the whole optimisation.
+/// time limit and the interrupt of the whole optimisation.
 struct Tracker {
   Evaluation best;
   std::vector<double> best_y;
   int evaluations = 0;
-  Deadline deadline;  ///< reached: the search stopped early
+  Deadline deadline;    ///< reached: the search stopped early
+  Interrupt interrupt;  ///< asked at every evaluation (OptimizeOptions::interrupt)
   void Offer(const Evaluation& ev, const double* y, int n);
 };
 
@@ -52,12 +53,14 @@ struct RunResult {
   std::vector<double> y;  ///< NLopt's final point
 };
 
-/// Evaluates the problem at y (counted in the tracker, offered to it).
+/// Evaluates the problem at y (counted in the tracker, offered to it), after asking the
+/// tracker's interrupt.
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker);
 
 /// Runs `algorithm` from y0 (clamped into the bounds) with relative tolerance rel_tol on y
 /// and on I, at most max_evaluations evaluations; initial_step may be empty (NLopt default).
 /// Every NLopt result and exception is mapped to the returned status; never throws for them.
+/// What an evaluation throws (the tracker's interrupt) is thrown again once NLopt stopped.
 /// Stops at the tracker's deadline (status kMaxTime, deadline reached); does not start
 /// after it.
 RunResult RunNlopt(nlopt::algorithm algorithm, const Problem& problem, std::vector<double> y0,

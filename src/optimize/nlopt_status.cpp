@@ -1,4 +1,4 @@
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 #include <fmt/format.h>
 
@@ -76,6 +76,27 @@ nlopt::algorithm AlgorithmFromName(const std::string& name, const std::vector<st
 bool NeedsGradient(nlopt::algorithm algorithm) {
   const char* name = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm));
   return name != nullptr && name[1] == 'D';
+}
+
+void* NloptCallbacks::Wrap(nlopt::func f, void* data) {
+  wrapped_.push_back({f, data, this});
+  return &wrapped_.back();
+}
+
+double NloptCallbacks::Call(unsigned n, const double* x, double* gradient, void* wrapped) {
+  const auto* w = static_cast<const Wrapped*>(wrapped);
+  // After a throw NLopt may still call (e.g. the constraints of the same point): stop again.
+  if (w->owner->thrown_) throw nlopt::forced_stop();
+  try {
+    return w->f(n, x, gradient, w->data);
+  } catch (...) {
+    w->owner->thrown_ = std::current_exception();
+    throw nlopt::forced_stop();
+  }
+}
+
+void NloptCallbacks::Rethrow() const {
+  if (thrown_) std::rethrow_exception(thrown_);
 }
 
 }  // namespace capsubot::detail

@@ -9,7 +9,7 @@
 // (A + c, c/(A + c)) with a coarse phase scan at each cell; restarts ("hops") perturb A and c
 // by relative and phi0 by absolute steps; a phase-exact polish refines the best point.
 
-#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
 
 #include <fmt/format.h>
 
@@ -17,9 +17,9 @@
 #include <cmath>
 #include <random>
 
-#include "capsubot/optimize_phase.hpp"
-#include "optimize/nlopt_status.hpp"
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 #include "optimize/pipeline.hpp"
 
 namespace capsubot {
@@ -110,14 +110,16 @@ std::string PhaseExactPolish(const detail::Problem& problem, const ForcingDesign
   NestedContext ctx{&problem, &tracker, PhaseOptions{}, bound};
   ctx.phase.scan_points = kNestedPhaseScan;
   ctx.phase.rho_max = options.rho_max;
+  ctx.phase.interrupt = tracker.interrupt;
   const double before = tracker.best.I;
   OptimizeStatus status = OptimizeStatus::kOk;
   std::string message;
+  detail::NloptCallbacks callbacks;
   try {
     nlopt::opt opt(nlopt::LN_SBPLX, 2);
     opt.set_lower_bounds({min_mean, min_mean});
     opt.set_upper_bounds({1.0, 1.0});
-    opt.set_max_objective(PhaseExactObjective, &ctx);
+    opt.set_max_objective(detail::NloptCallbacks::Call, callbacks.Wrap(PhaseExactObjective, &ctx));
     opt.set_xtol_rel(options.rel_tol);
     opt.set_ftol_rel(options.rel_tol);
     opt.set_maxeval(options.phase_exact_evaluations);
@@ -129,6 +131,7 @@ std::string PhaseExactPolish(const detail::Problem& problem, const ForcingDesign
   } catch (...) {
     status = detail::StatusFromCurrentException(message);
   }
+  callbacks.Rethrow();
   if (status == OptimizeStatus::kMaxTime) tracker.deadline.MarkReached();
   if (tracker.best.I > before) best_run = {status, message};
   return ", phase-exact LN_SBPLX";
@@ -157,6 +160,7 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
   }
   detail::Tracker tracker;
   tracker.deadline = detail::Deadline(options.max_time);
+  tracker.interrupt = options.interrupt;
   detail::Pipeline pipeline;
   const double bound = detail::SetUpPipeline(pipeline, params, options);
   detail::Problem& problem = pipeline.problem;

@@ -8,7 +8,7 @@
 // K = 1 member of the family), so the gain over P2 is never negative; restarts are random
 // perturbations of the best point so far; P1's optimum is the series seen from the impact.
 
-#include "capsubot/optimize_fourier.hpp"
+#include "capsubot/optimize/optimize_fourier.hpp"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 #include <cmath>
 #include <random>
 
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
 #include "optimize/pipeline.hpp"
 
 namespace capsubot {
@@ -64,6 +64,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   }
   detail::Tracker tracker;
   tracker.deadline = detail::Deadline(options.harmonic.max_time);
+  tracker.interrupt = options.harmonic.interrupt;
   const OptimizeResult harmonic = OptimizeForcing(params, options.harmonic);
   detail::Pipeline pipeline;
   const double bound = detail::SetUpPipeline(pipeline, params, options.harmonic);

@@ -5,7 +5,7 @@
 // neighbouring scan points down to phase_tol (keeping the valid side), maximise I by Brent's
 // method (GSL) around every local maximum of the scan inside an arc, and return the best.
 
-#include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_errno.h>
@@ -17,8 +17,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "capsubot/optimize/detail/optimize_common.hpp"
 #include "optimize/nlopt_constraints.hpp"
-#include "optimize/optimize_common.hpp"
 
 namespace capsubot {
 namespace {
@@ -44,8 +44,9 @@ struct GslMinimizerFree {
 
 class PhaseSearch {
  public:
-  PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup, double max_time)
-      : forcing_(forcing), setup_(setup), deadline_(max_time) {}
+  PhaseSearch(const Forcing& forcing, const detail::ConstraintSetup& setup, double max_time,
+              const Interrupt& interrupt)
+      : forcing_(forcing), setup_(setup), deadline_(max_time), interrupt_(interrupt) {}
 
   // The orbit at phi0, reduced into [-pi, pi) first: the search works on unwrapped phases
   // (arcs across -pi), and the evaluated numbers are then exactly the reported ones.
@@ -160,11 +161,18 @@ class PhaseSearch {
   int evaluations() const { return evaluations_; }
   /// True once the time limit has passed (every stage then stops at its next step).
   bool Expired() { return deadline_.Expired(); }
+  /// Asks the interrupt (which throws to abandon the search), then Expired(): before every
+  /// scan point and every edge or polish, each a bounded number of evaluations.
+  bool StopNow() {
+    Poll(interrupt_);
+    return Expired();
+  }
 
  private:
   Forcing forcing_;
   detail::ConstraintSetup setup_;
   detail::Deadline deadline_;
+  const Interrupt& interrupt_;
   int evaluations_ = 0;
   std::unique_ptr<gsl_min_fminimizer, GslMinimizerFree> minimizer_;
 };
@@ -184,7 +192,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   options.Validate();
   // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
   const detail::ConstraintSetup setup{params, HUGE_VAL, options.rho_max};
-  PhaseSearch search(forcing, setup, options.max_time);
+  PhaseSearch search(forcing, setup, options.max_time, options.interrupt);
   const int n = options.scan_points;
   const double h = kTau / n;
   std::vector<double> phase(n);
@@ -193,7 +201,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   int best = 0, valid_count = 0;
   for (int i = 0; i < n; ++i) {
     phase[i] = -kPi + h * i;
-    if (search.Expired()) {  // not scanned: outside every arc
+    if (search.StopNow()) {  // not scanned: outside every arc
       scan[i].violation = HUGE_VAL;
       continue;
     }
@@ -229,7 +237,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
       dips.resize(kMaxHiddenArcs);
     }
     for (int i : dips) {
-      if (search.Expired()) break;
+      if (search.StopNow()) break;
       search.HiddenArc(beside(i, prev(i)), phase[i], beside(i, next(i)), options.phase_tol, winner);
     }
   }
@@ -242,7 +250,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     for (int i = 0; i < n; ++i) {
       const int j = next(i);
-      if (arc[i] == arc[j] || search.Expired()) continue;
+      if (arc[i] == arc[j] || search.StopNow()) continue;
       const int v = arc[i] ? i : j, w = arc[i] ? j : i;
       double edge_phase = phase[v];
       detail::Evaluation edge =
@@ -252,7 +260,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
     }
     // Polish around every local maximum of I among the valid scan points.
     for (int i = 0; i < n; ++i) {
-      if (!arc[i] || search.Expired()) continue;
+      if (!arc[i] || search.StopNow()) continue;
       const int a = prev(i), b = next(i);
       if ((arc[a] && scan[a].I > scan[i].I) || (arc[b] && scan[b].I > scan[i].I)) continue;
       search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);

@@ -1,6 +1,6 @@
-// Each problem's options from the user's search settings (capsubot/optimize_request.hpp).
+// Each problem's options from the user's search settings (capsubot/optimize/optimize_request.hpp).
 
-#include "capsubot/optimize_request.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 
 namespace capsubot {
 namespace {
@@ -13,6 +13,7 @@ ForcingDesignOptions GaitOptionsFor(const SearchRequest& request) {
   d.local_algorithm = request.local_algorithm;
   d.rho_max = request.rho_max;
   d.max_time = request.max_time;
+  d.interrupt = request.interrupt;
   return d;
 }
 
@@ -22,6 +23,7 @@ PhaseOptions PhaseOptionsFor(const SearchRequest& request) {
   PhaseOptions p;
   p.rho_max = request.rho_max;
   p.max_time = request.max_time;
+  p.interrupt = request.interrupt;
   return p;
 }
 

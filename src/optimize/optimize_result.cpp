@@ -1,4 +1,4 @@
-#include "capsubot/optimize_result.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "model/enum_names.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 
 namespace capsubot {
 

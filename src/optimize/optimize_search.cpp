@@ -1,12 +1,12 @@
-#include "capsubot/optimize_search.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "optimize/nlopt_status.hpp"
-#include "optimize/optimize_common.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/optimize/detail/optimize_common.hpp"
 
 namespace capsubot {
 

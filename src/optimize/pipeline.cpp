@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
 
 namespace capsubot::detail {
 
@@ -13,8 +13,15 @@ double SetUpPipeline(Pipeline& pipeline, const Params& params, const SearchOptio
   const double bound = options.BoundFor(params);
   Problem& problem = pipeline.problem;
   problem.setup = {params, bound, options.rho_max};
+  // The stick condition max |F| on [phi1, tau] <= (1 - s) T0 follows from the force bound
+  // (max |F| <= A + c <= bound, docs/model.md section 7) when bound <= (1 - s) T0, and at the
+  // default bound T0 with s = 0 the two rows are one plane: NLopt is given the bound only.
+  // COBYLA's linear subproblem can cycle forever, without evaluating, on such a repeated
+  // active row. Validity (Evaluate) still checks the stick condition.
+  const bool stick_implied = bound <= (1.0 - params.stick_margin) * params.T0;
   problem.constraints.clear();
   for (int i = 0; i < kConstraintCount; ++i) {
+    if (i == kStickIndex && stick_implied) continue;
     if (problem.setup.Applies(i)) problem.constraints.push_back(i);
   }
   problem.objective_scale = params.T0;

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/optimize_result.hpp"
-#include "capsubot/optimize_search.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
 #include "optimize/nlopt_problem.hpp"
 
 namespace capsubot::detail {

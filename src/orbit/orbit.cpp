@@ -1,11 +1,11 @@
-#include "capsubot/orbit.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <utility>
 
-#include "model/enum_names.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {

@@ -1,4 +1,4 @@
-#include "capsubot/orbit_energy.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "capsubot/orbit.hpp"
-#include "numerics/safe_newton.hpp"
+#include "capsubot/numerics/safe_newton.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 namespace {

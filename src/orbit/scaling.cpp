@@ -1,4 +1,4 @@
-#include "capsubot/scaling.hpp"
+#include "capsubot/orbit/scaling.hpp"
 
 namespace capsubot {
 

@@ -1,4 +1,4 @@
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/stability.hpp"
 
 #include <cmath>
 #include <utility>

@@ -1,10 +1,10 @@
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 
-#include "model/enum_names.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
 #include "orbit/velocity_pieces.hpp"
 
 namespace capsubot {

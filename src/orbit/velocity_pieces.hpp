@@ -6,8 +6,8 @@
 // of F on the rest [phi1, tau] (docs/model.md sections 3 and 4). Cut at the crossings of those
 // levels, each piece has a monotone x' and so at most one zero of x'.
 
-#include "capsubot/orbit.hpp"
-#include "numerics/phase_root.hpp"
+#include "capsubot/model/detail/phase_root.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot::detail {
 

@@ -1,6 +1,6 @@
 // Blocks of units computed by threads (or other processes) and handed to one sink in order.
 
-#include "capsubot/blocks.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 #include <fmt/format.h>
 

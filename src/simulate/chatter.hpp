@@ -12,7 +12,7 @@
 #include <array>
 #include <limits>
 
-#include "capsubot/energy.hpp"
+#include "capsubot/model/energy.hpp"
 
 namespace capsubot::detail {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "numerics/trig_roots.hpp"
+#include "capsubot/model/detail/trig_roots.hpp"
 
 namespace capsubot::detail {
 namespace {

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-#include "capsubot/forcing.hpp"
+#include "capsubot/model/forcing.hpp"
 #include "simulate/local_sincos.hpp"
 
 namespace capsubot::detail {

@@ -1,4 +1,4 @@
-#include "capsubot/simulator.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 #include <fmt/format.h>
 
@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "model/enum_names.hpp"
-#include "numerics/phase_root.hpp"
-#include "numerics/safe_newton.hpp"
+#include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/model/detail/phase_root.hpp"
+#include "capsubot/numerics/safe_newton.hpp"
 #include "simulate/chatter.hpp"
 #include "simulate/cycle_memo.hpp"
 #include "simulate/segment_force.hpp"

@@ -1,7 +1,7 @@
 // Joining basin map shards: the rows read back into motions, regrouped over the whole map,
 // written with their attractor labels.
 
-#include "capsubot/basin_shards.hpp"
+#include "capsubot/sweep/basin_shards.hpp"
 
 #include <fmt/format.h>
 
@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "capsubot/bifurcation_shards.hpp"
-#include "capsubot/io.hpp"
-#include "capsubot/start_map.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/bifurcation_shards.hpp"
+#include "capsubot/sweep/start_map.hpp"
 #include "sweep/shard_set.hpp"
 
 namespace capsubot {

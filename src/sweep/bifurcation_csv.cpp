@@ -1,6 +1,6 @@
 // The CSV files of a bifurcation diagram and the resumable files of a shard of a study.
 
-#include "capsubot/bifurcation_csv.hpp"
+#include "capsubot/sweep/bifurcation_csv.hpp"
 
 #include <fmt/format.h>
 
@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "capsubot/bifurcation_shards.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/bifurcation_shards.hpp"
 #include "sweep/sweep_file.hpp"
 
 namespace capsubot {

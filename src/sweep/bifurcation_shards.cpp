@@ -1,6 +1,6 @@
 // Joining the shards of a bifurcation study: their parts put back in order.
 
-#include "capsubot/bifurcation_shards.hpp"
+#include "capsubot/sweep/bifurcation_shards.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "sweep/shard_set.hpp"
 
 namespace capsubot {

@@ -1,4 +1,4 @@
-#include "capsubot/design_grid.hpp"
+#include "capsubot/sweep/design_grid.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -137,7 +137,9 @@ const char* DesignParameterName(DesignParameter parameter) { return RuleOf(param
 void DesignGridAxis::Validate() const { Check(ToString(), RuleOf(parameter).domain); }
 
 std::string DesignGridAxis::column() const {
-  return parameter == DesignParameter::km2 ? "m2_kg" : name();
+  if (parameter == DesignParameter::km2) return "m2_kg";
+  if (parameter == DesignParameter::kfrequency) return "frequency_hz";
+  return name();
 }
 
 DesignGridAxis ParseDesignGridAxis(const std::string& spec) {

@@ -1,4 +1,4 @@
-#include "capsubot/grid.hpp"
+#include "capsubot/sweep/grid.hpp"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "capsubot/forcing.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/model/forcing.hpp"
 
 namespace capsubot {
 namespace {

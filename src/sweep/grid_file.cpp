@@ -1,6 +1,6 @@
-// The options of a grid command's CSV file, checked (capsubot/grid_file.hpp).
+// The options of a grid command's CSV file, checked (capsubot/sweep/grid_file.hpp).
 
-#include "capsubot/grid_file.hpp"
+#include "capsubot/sweep/grid_file.hpp"
 
 #include <fmt/format.h>
 

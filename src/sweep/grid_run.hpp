@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/blocks.hpp"
-#include "capsubot/sweep.hpp"
+#include "capsubot/parallel/blocks.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 namespace capsubot::detail {
 

@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "capsubot/grid.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/sweep/grid.hpp"
 
 namespace capsubot::detail {
 namespace {

@@ -1,6 +1,6 @@
 // The CSV of a map of starts and the resumable file of one of its shards.
 
-#include "capsubot/start_map.hpp"
+#include "capsubot/sweep/start_map.hpp"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "sweep/sweep_file.hpp"
 
 namespace capsubot {
@@ -101,7 +100,7 @@ StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, 
   std::replace(description.begin(), description.end(), '\n', '\x1f');
   params.Validate();  // before the file is touched
   attractor.Validate();
-  for (const PhaseState& s : mine) detail::ValidateStart(alpha, s);
+  for (const PhaseState& s : mine) ValidateStart(alpha, s);
   detail::SweepFile file(options.output, description, head,
                          {static_cast<std::int64_t>(mine.size()), {}}, options.resume,
                          options.checkpoint_seconds, "shard");

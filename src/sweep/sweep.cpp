@@ -1,4 +1,4 @@
-#include "capsubot/sweep.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 #include <fmt/format.h>
 

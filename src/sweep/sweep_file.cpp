@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot::detail {
 namespace {

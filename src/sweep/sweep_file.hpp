@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 namespace capsubot::detail {
 

@@ -1,11 +1,11 @@
-#include "capsubot/sweep_merge.hpp"
+#include "capsubot/sweep/sweep_merge.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "sweep/shard_set.hpp"
 
 namespace capsubot {

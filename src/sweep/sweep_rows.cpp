@@ -7,11 +7,11 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "capsubot/io.hpp"
-#include "capsubot/optimize_phase.hpp"
-#include "capsubot/optimize_reach.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 #include "sweep/grid_run.hpp"
 
 namespace capsubot::detail {

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/sweep.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 namespace capsubot::detail {
 

@@ -2,7 +2,7 @@
 // Reference numbers come from independent long runs of the simulator (Simulate called
 // directly, 10,000 periods) and from the analytic one-impact orbit (ComputeOrbit).
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -2,7 +2,7 @@
 // alpha with `capsubot bifurcation` and is checked here against the classification of each
 // motion (attractors_test, periodic_test validate those against independent simulations).
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 #include <gtest/gtest.h>
 

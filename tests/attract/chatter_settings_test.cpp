@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

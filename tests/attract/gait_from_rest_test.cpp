@@ -3,15 +3,15 @@
 // attractors_test.cpp; the orbits come from the analytic code (Solve), the motions from the
 // simulator, so `reached` compares the two independent computations.
 
-#include "capsubot/gait_from_rest.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

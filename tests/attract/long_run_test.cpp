@@ -12,12 +12,12 @@
 #include <utility>
 #include <vector>
 
-#include "attract/stroboscopic.hpp"
-#include "capsubot/attractors.hpp"
-#include "capsubot/bifurcation.hpp"
-#include "capsubot/periodic.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/bifurcation.hpp"
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

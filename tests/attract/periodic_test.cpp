@@ -2,15 +2,15 @@
 // one-impact orbit and its impact-map multipliers (orbit.hpp, stability.hpp), independent long
 // runs of the simulator, and the decay of perturbations along the simulated motion.
 
-#include "capsubot/periodic.hpp"
+#include "capsubot/attract/periodic.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -13,8 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/attractors.hpp"
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 
 namespace {
 

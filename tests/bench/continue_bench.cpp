@@ -4,9 +4,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/bifurcation.hpp"
+#include "capsubot/attract/bifurcation.hpp"
 #include "capsubot/continue/continuation.hpp"
-#include "capsubot/orbit.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 namespace {
 

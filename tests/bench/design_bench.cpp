@@ -4,8 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include "../design/example_robot.hpp"
-#include "capsubot/design.hpp"
-#include "capsubot/orbit_energy.hpp"
+#include "capsubot/design/design.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <map>
 #include <utility>
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
 
 namespace {
 

@@ -5,7 +5,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/optimize.hpp"
+#include "capsubot/optimize/optimize.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 
 namespace {
 

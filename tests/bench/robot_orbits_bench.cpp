@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 
 namespace {
 

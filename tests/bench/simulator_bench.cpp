@@ -7,9 +7,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/simulator.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace {
 

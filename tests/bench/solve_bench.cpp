@@ -3,7 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include <cstdio>
 #include <string>
 
-#include "capsubot/sweep.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/sweep/sweep.hpp"
 #include "sweep/sweep_rows.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -91,7 +91,7 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
        "capsubot continue: error: --to = 0.2 is invalid: expected a finite number > from = 0.3\n"},
       {"continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.2 --to 0.25",
        "capsubot continue: error: the robot's alpha = 0.2792869076315278 is outside the range: "
-       "expected --from = 0.2 <= alpha <= --to = 0.25 (the branch starts at the robot's value)\n"},
+       "expected from = 0.2 <= alpha <= to = 0.25 (the branch starts at the robot's value)\n"},
       {kAlphaBranch + " --max-points 1",
        "capsubot continue: error: --max-points = 1 is invalid: expected 2 <= max_points <= "
        "1000000\n"},

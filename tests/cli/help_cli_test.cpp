@@ -1,10 +1,13 @@
 // A command line that helps: mistyped commands and flags get the nearest name, `capsubot help
-// [COMMAND]` prints the help, the problems' short names P1 to P3 are understood.
+// [COMMAND]` prints the help wrapped to the terminal's width with examples, the problems'
+// short names P1 to P3 are understood.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
+#include "cli/cli_text.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -17,6 +20,7 @@ struct HelpCase {
   const char* args;
   int status;
   const char* expected;  // a substring of stdout + stderr
+  friend void PrintTo(const HelpCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class HelpCli : public ::testing::TestWithParam<HelpCase> {};
@@ -38,6 +42,8 @@ const HelpCase kHelpCases[] = {
     {"MisspeltVersion", "--versoin", 2, "unknown option '--versoin'; did you mean '--version'?"},
     {"HelpAlone", "help", 0, "Subcommands:"},
     {"HelpOfACommand", "help optimize", 0, "--problem"},
+    {"HelpOfEveryCommand", "--help-all", 0, "Usage: capsubot bifurcation [OPTIONS]"},
+    {"MisspeltHelpAll", "--help-al", 2, "did you mean '--help-all'?"},
     {"HelpOfAMisspeltCommand", "help optimise", 2, "did you mean 'optimize'?"},
     {"FlagInTheWrongCase", "solve --A 0.5 --c 0.5 --phi0 -2.9 --t0 1", 2,
      "--t0 is an unknown flag; did you mean --T0?"},
@@ -61,6 +67,68 @@ TEST(PhaseSyntax, PiMultiplesEqualTheirDecimalValue) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.out.find("--phi0 = 2pi is invalid: expected a phase in radians"), std::string::npos)
       << bad.out;
+}
+
+// The help is as wide as COLUMNS says, within [60, 200]; 80 when COLUMNS is not a number and
+// standard output is not a terminal (here a pipe).
+struct WidthCase {
+  const char* name;
+  const char* columns;  // the value of COLUMNS, or nullptr: unset
+  std::size_t width;    // the width expected
+  friend void PrintTo(const WidthCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class HelpWidth : public ::testing::TestWithParam<WidthCase> {};
+
+TEST_P(HelpWidth, WrapsEveryLineToTheWidth) {
+  const WidthCase& c = GetParam();
+  const std::string env = c.columns != nullptr ? std::string("COLUMNS=") + c.columns + " "
+                                               : std::string("env -u COLUMNS ");
+  for (const char* command : {"--help", "help sweep", "help optimize"}) {
+    const auto r = testing::RunShell(env + CAPSUBOT_CLI + " " + command);
+    ASSERT_EQ(r.status, 0) << r.out;
+    std::size_t widest = 0;
+    for (const std::string& line : testing::Lines(r.out)) {
+      EXPECT_LE(line.size(), c.width) << command << ": " << line;
+      widest = std::max(widest, line.size());
+    }
+    // The room is used: long descriptions fill the lines to within a word of the width.
+    EXPECT_GT(widest, c.width - 16) << command;
+  }
+}
+
+const WidthCase kWidthCases[] = {
+    {"Columns100", "100", 100},
+    {"Columns60", "60", 60},
+    {"BelowTheBound", "20", 60},
+    {"AboveTheBound", "500", 200},
+    {"NotATerminalNoColumns", nullptr, 80},
+    {"ColumnsNotANumber", "wide", 80},
+};
+
+INSTANTIATE_TEST_SUITE_P(Table, HelpWidth, ::testing::ValuesIn(kWidthCases),
+                         [](const ::testing::TestParamInfo<WidthCase>& info) {
+                           return std::string(info.param.name);
+                         });
+
+// Every command's help ends with one or two examples of the command itself; wrapped to 60
+// columns (lines ending in " \") they are the same command lines as at 200 columns.
+TEST(HelpExamples, EveryCommandEndsItsHelpWithExamplesThatWrapIntoTheSameCommand) {
+  const std::vector<std::string> commands = testing::HelpCommands();
+  ASSERT_GE(commands.size(), 12u);
+  for (const std::string& command : commands) {
+    const auto wide = testing::HelpExamples(command, 200);
+    const auto narrow = testing::HelpExamples(command, 60);
+    ASSERT_GE(wide.size(), 1u) << command;
+    EXPECT_LE(wide.size(), 2u) << command;
+    ASSERT_EQ(narrow.size(), wide.size()) << command;
+    for (std::size_t i = 0; i < wide.size(); ++i) {
+      EXPECT_EQ(wide[i].command.rfind("capsubot " + command + " ", 0), 0u) << wide[i].command;
+      EXPECT_FALSE(wide[i].what.empty()) << wide[i].command;
+      EXPECT_EQ(narrow[i].command, wide[i].command);
+      EXPECT_EQ(narrow[i].what, wide[i].what);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HelpCli, ::testing::ValuesIn(kHelpCases),

@@ -77,6 +77,19 @@ TEST(OptimizeCli, MainJobWritesTheOutputFileAndPrintsTheSameObject) {
   EXPECT_EQ(reach["seed"]["mean_velocity_from_rest"], from_rest["mean_velocity"]);
   EXPECT_EQ(reach["seed"]["A"], robust["A"]);
   EXPECT_EQ(reach["seed"]["alpha"], robust["alpha"]);
+  // How far T0, e and alpha can move: a limit each way, within the range searched
+  // (tests/continue/gait_robustness_test.cpp checks that the limits are special points).
+  for (const char* name : {"T0", "e", "alpha"}) {
+    const auto& p = written["robustness"][name];
+    EXPECT_EQ(p["status"], "ok") << name;
+    for (const char* way : {"down", "up"}) {
+      const double at = p[way][name].get<double>();
+      EXPECT_GE(at, p["from"].get<double>()) << name << ' ' << way;
+      EXPECT_LE(at, p["to"].get<double>()) << name << ' ' << way;
+      EXPECT_TRUE(p[way].contains("type")) << name << ' ' << way;
+    }
+  }
+  EXPECT_EQ(written["robustness"]["alpha"]["value"], robust["alpha"]);
 }
 
 TEST(OptimizeCli, MainJobSummarySaysWhatTheRobotReachesAndWhichToBuildAndWritesNothing) {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/version.hpp"
+#include "capsubot/model/version.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

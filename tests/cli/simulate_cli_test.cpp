@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

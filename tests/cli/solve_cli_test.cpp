@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "capsubot/orbit_energy.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -12,8 +12,8 @@
 #include <functional>
 #include <string>
 
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

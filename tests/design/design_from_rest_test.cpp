@@ -3,7 +3,7 @@
 // the simulator, the forward result against a direct simulation of every start, the fractions,
 // the energy budget of the reached motion, a motor that slides the shell, bad options.
 
-#include "capsubot/design_from_rest.hpp"
+#include "capsubot/design/design_from_rest.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/simulator.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "design/example_robot.hpp"
 #include "test_utils.hpp"
 

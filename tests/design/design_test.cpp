@@ -2,7 +2,7 @@
 // against the formulas written out here, the scaling laws of the model, the cost of transport,
 // and the example robot's best gait against an independent scan over m2.
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 #include "design/example_robot.hpp"
 #include "test_utils.hpp"
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 #include "design/search.hpp"
 
 namespace capsubot {

@@ -3,7 +3,7 @@
 // benchmarks: m1 = 0.2 kg, L = 20 mm, mu = 0.3, e = 0.7, motor 0.5 sin(omega t + phase) + 0.1 N
 // at 20 Hz, default robust-gait margins.
 
-#include "capsubot/design.hpp"
+#include "capsubot/design/design.hpp"
 
 namespace capsubot::testing {
 

@@ -1,7 +1,7 @@
 // Output files: atomic writes leave either the whole file or nothing, follow symlinks and
 // report failed writes; temporary files are registered for removal on signals.
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/io.hpp"
+#include "capsubot/io/io.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -1,7 +1,7 @@
 // Forcing: F, Pi, Phi of both families against GSL quadrature; exact crossings and bounds
 // against dense scans; input errors.
 
-#include "capsubot/forcing.hpp"
+#include "capsubot/model/forcing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/orbit.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/orbit.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

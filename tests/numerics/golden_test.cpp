@@ -1,7 +1,7 @@
 // GoldenRefine: smooth maxima, maxima at a cliff (the edge of a feasible set), at an end of the
 // bracket, and a narrow island; closed-form answers.
 
-#include "numerics/golden.hpp"
+#include "capsubot/numerics/golden.hpp"
 
 #include <gtest/gtest.h>
 

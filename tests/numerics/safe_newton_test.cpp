@@ -1,6 +1,6 @@
 // The private root finder: the bracketed (safeguarded) Newton iteration.
 
-#include "numerics/safe_newton.hpp"
+#include "capsubot/numerics/safe_newton.hpp"
 
 #include <gtest/gtest.h>
 

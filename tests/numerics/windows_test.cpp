@@ -2,7 +2,7 @@
 // local maximum of the measure and next to a fold where the branches end; the budget and the
 // halt; closed-form answers.
 
-#include "numerics/windows.hpp"
+#include "capsubot/numerics/windows.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "optimize/nlopt_constraints.hpp"
 #include "optimize/nlopt_problem.hpp"
 

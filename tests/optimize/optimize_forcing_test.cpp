@@ -2,7 +2,7 @@
 // References: random valid samples and re-checks through Solve (the `solve` code path), the
 // scaling law of docs/model.md section 6, and the event-driven simulator.
 
-#include "capsubot/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "capsubot/simulator.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
-#include "optimize/nlopt_status.hpp"
+#include "capsubot/optimize/detail/nlopt_status.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 
@@ -224,6 +224,19 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   EXPECT_EQ(s.impacts_left, 0);
   EXPECT_TRUE(testing::RelNear(s.displacement, o.I, 1e-9));
   EXPECT_TRUE(testing::Near(s.final_state.u, -o.e * o.u, 1e-9));
+}
+
+TEST(OptimizeForcing, ReturnsWhereTheStickConditionAndTheForceBoundCoincide) {
+  // Grid point 111 of `capsubot sweep --grid T0=0.01:1:65:log --grid e=0:1:41 --optimize
+  // forcing` (the sweep's options: no margins, bound T0). There max |F| <= T0 (stick, s = 0)
+  // and A + c <= T0 (force bound) are the same plane; given both, COBYLA's linear subproblem
+  // cycled without evaluating, past every evaluation and time limit (the test's ctest TIMEOUT
+  // catches that). Within the time limit the search ends with a valid optimum.
+  const Params params{0.011547819846894581, 0.725, 0.0};
+  const OptimizeResult r = OptimizeForcing(params);
+  EXPECT_EQ(r.status, OptimizeStatus::kOk) << r.message;
+  ASSERT_TRUE(r.found()) << r.message;
+  EXPECT_TRUE(r.solution.validity.valid());
 }
 
 class LocalAlgorithm : public ::testing::TestWithParam<std::string> {};

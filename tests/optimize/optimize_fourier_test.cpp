@@ -1,7 +1,7 @@
 // P3 (OptimizeFourier): the fastest K-harmonic force, docs/model.md section 7. References: the P2
 // optimum (the K = 1 member of the family), Solve on the rebuilt force, the simulator.
 
-#include "capsubot/optimize_fourier.hpp"
+#include "capsubot/optimize/optimize_fourier.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/optimize_forcing.hpp"
-#include "capsubot/simulator.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "optimize_test_utils.hpp"
 #include "test_utils.hpp"
 

@@ -1,7 +1,7 @@
 // P1 (OptimizePhase): the best impact phase for a given force shape, docs/model.md section 7.
 // References come from an independent dense scan of phi0 through Solve (the `solve` code path).
 
-#include "capsubot/optimize_phase.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -1,8 +1,8 @@
-// The options of P1, P2 and P3 built from one search request (capsubot/optimize_request.hpp):
-// every setting reaches the problems that use it, and an unset number of starts leaves each
-// problem its own default.
+// The options of P1, P2 and P3 built from one search request
+// (capsubot/optimize/optimize_request.hpp): every setting reaches the problems that use it, and an
+// unset number of starts leaves each problem its own default.
 
-#include "capsubot/optimize_request.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 #pragma once
 // Helpers shared by the optimiser tests (tests/optimize_*_test.cpp).
 
-#include "capsubot/orbit.hpp"
-#include "capsubot/params.hpp"
-#include "capsubot/simulator.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::testing {
 

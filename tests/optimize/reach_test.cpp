@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "capsubot/optimize_reach.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

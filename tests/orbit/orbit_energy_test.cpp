@@ -1,7 +1,7 @@
 // Energy of the one-impact orbit (docs/model.md section 11): the energy balance over many valid
 // orbits, and each closed-form integral against an independent adaptive quadrature.
 
-#include "capsubot/orbit_energy.hpp"
+#include "capsubot/orbit/orbit_energy.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

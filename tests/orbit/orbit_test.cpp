@@ -1,14 +1,14 @@
 // The one-impact orbit (docs/model.md section 4): phi1, alpha, periodicity, continuity, the
 // equations of motion, quadrature of the displacement, the scaling law, the paper's example.
 
-#include "capsubot/orbit.hpp"
+#include "capsubot/orbit/orbit.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -1,7 +1,7 @@
 // The one-impact orbits of a robot with a fixed mass ratio (docs/model.md section 8): every root
 // phi0 of alpha(phi0) = alpha, checked against an independent dense scan of the circle.
 
-#include "capsubot/robot_orbits.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // map against finite differences through the independent simulator, and the verdict against
 // what a simulation from a perturbed state does.
 
-#include "capsubot/stability.hpp"
+#include "capsubot/orbit/stability.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <string>
 #include <utility>
 
-#include "capsubot/simulator.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -1,7 +1,7 @@
 // Validity (docs/model.md section 5): exact extrema of x against dense sampling, and each
 // condition reported by name on an orbit that breaks it.
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 
 #include <gtest/gtest.h>
 

@@ -19,6 +19,10 @@ print(capsubot.__version__, capsubot.solve(A=0.5, c=0.5, phi0=-2.944899971002)['
 ")
 echo "$out"
 [[ $out == *" 0.35685746237742"* ]]  # the paper's example (README, 'capsubot solve')
-version=$("$work/venv/bin/python" -m pip show capsubot)
+version=$("$work/venv/bin/python" -m pip show -f capsubot)
 [[ $version == *"Version: 0.2.0"* ]]
+# The type stubs, installed as the package capsubot-stubs beside the module.
+location=$(sed -n 's/^Location: //p' <<<"$version")
+cmp "$location/capsubot-stubs/__init__.pyi" "$source_dir/python/capsubot.pyi"
+[[ $version == *"capsubot-stubs/__init__.pyi"* ]]
 echo "pip install: 1 passed, 0 failed"

@@ -9,6 +9,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 test -n "$(compgen -G "$work/prefix/$site/capsubot*.so")"
+# The type stubs beside it, as the package capsubot-stubs (PEP 561).
+test -f "$work/prefix/$site/capsubot-stubs/__init__.pyi"
 # Run from the temporary folder: the build tree is not on the path.
 out=$(cd "$work" && PYTHONPATH="$work/prefix/$site" "$python" -c "
 import capsubot

@@ -1,7 +1,7 @@
 // Blocks of work computed by threads reach the sink in order with the bytes a sequential loop
 // gives; an error of a computer or of the sink stops the run and comes back to the caller.
 
-#include "capsubot/blocks.hpp"
+#include "capsubot/parallel/blocks.hpp"
 
 #include <gtest/gtest.h>
 

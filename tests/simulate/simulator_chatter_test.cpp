@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/simulator.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

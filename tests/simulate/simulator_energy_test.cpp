@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/orbit_start.hpp"
-#include "capsubot/simulator.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

@@ -10,9 +10,9 @@
 #include <cstring>
 #include <vector>
 
-#include "capsubot/orbit_start.hpp"
-#include "capsubot/simulator.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

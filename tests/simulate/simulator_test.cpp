@@ -2,7 +2,7 @@
 // orbit against it. The simulator never calls the orbit code; these tests
 // compare the two.
 
-#include "capsubot/simulator.hpp"
+#include "capsubot/simulate/simulator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/validity.hpp"
+#include "capsubot/orbit/validity.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {

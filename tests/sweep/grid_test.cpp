@@ -1,7 +1,7 @@
 // Grids of sweep parameters: linear, log and list axes, any number of them, the values, every
 // rejection message, and a bounded random (fuzz) test of the parser.
 
-#include "capsubot/grid.hpp"
+#include "capsubot/sweep/grid.hpp"
 
 #include <gtest/gtest.h>
 

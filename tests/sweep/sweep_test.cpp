@@ -1,8 +1,8 @@
-// The sweep engine (capsubot/sweep.hpp): rows equal the single-point library calls, the file is
-// byte-identical for any thread count and block size, an interrupted sweep leaves no output
-// and resumes to the same bytes without recomputing finished points, bad options are named.
+// The sweep engine (capsubot/sweep/sweep.hpp): rows equal the single-point library calls, the file
+// is byte-identical for any thread count and block size, an interrupted sweep leaves no output and
+// resumes to the same bytes without recomputing finished points, bad options are named.
 
-#include "capsubot/sweep.hpp"
+#include "capsubot/sweep/sweep.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -24,15 +24,15 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/io.hpp"
-#include "capsubot/optimize_forcing.hpp"
-#include "capsubot/optimize_fourier.hpp"
-#include "capsubot/optimize_phase.hpp"
-#include "capsubot/optimize_reach.hpp"
-#include "capsubot/robot_orbits.hpp"
-#include "capsubot/stability.hpp"
-#include "capsubot/sweep_merge.hpp"
-#include "capsubot/validity.hpp"
+#include "capsubot/io/io.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_fourier.hpp"
+#include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/sweep/sweep_merge.hpp"
 #include "sweep/sweep_file.hpp"
 #include "sweep/sweep_rows.hpp"
 #include "test_utils.hpp"

@@ -24,9 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/attractors.hpp"
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/periodic.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/model_parameter.hpp"
-#include "capsubot/periodic.hpp"
+#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 
@@ -56,6 +59,9 @@ struct ContinuationOptions {
   /// The start's Newton shooting (max_period: the period is found there) and the simulator's
   /// settings along the branch (step: the finite-difference step of every Jacobian).
   ShootingOptions shooting;
+  /// Asked once per attempted step (a few simulated periods apart, about a millisecond); what
+  /// it throws stops the continuation and is rethrown (capsubot/model/interrupt.hpp). Optional.
+  Interrupt interrupt;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;

@@ -9,8 +9,8 @@
 #include <limits>
 #include <string>
 
-#include "capsubot/forcing.hpp"
-#include "capsubot/params.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/params.hpp"
 
 namespace capsubot {
 

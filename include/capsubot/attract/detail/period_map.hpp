@@ -1,0 +1,83 @@
+#pragma once
+// The p-th iterate of the stroboscopic map of one robot as a function of the free coordinates
+// at its section (docs/model.md section 13), with its Jacobian by central finite differences,
+// its multipliers and the impacts and mean velocity of one period. Shared by the Newton
+// shooting (periodic.cpp) and the continuation of periodic motions (src/continue/).
+
+#include <Eigen/Dense>
+#include <array>
+#include <complex>
+#include <vector>
+
+#include "capsubot/attract/detail/stroboscopic.hpp"
+#include "capsubot/attract/periodic.hpp"
+
+namespace capsubot::detail {
+
+using Vec3 = std::array<double, 3>;  // (x, u, v)
+
+inline Vec3 ToVec(const PhaseState& z) { return {z.x, z.u, z.v}; }
+
+/// `base` with (x, u, v) replaced by z (the forcing phase kept).
+PhaseState WithCoordinates(PhaseState base, const Vec3& z);
+
+/// max |P^p(z) - z| over x, u, v.
+double Residual(const Vec3& z, const PhaseState& image);
+
+/// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
+/// velocity v (periodic.hpp): at rest (x, u); sliding (x, u, v); on a wall v (none if v = 0).
+std::vector<int> FreeCoordinates(SimMode mode, double v);
+
+/// The simulator's settings of the shooting's runs.
+MotionOptions SimulationOf(const ShootingOptions& options);
+
+/// P^p of one robot. Holds references: the robot must outlive it.
+class PeriodMap {
+ public:
+  PeriodMap(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& motion)
+      : forcing_(forcing), params_(params), alpha_(alpha), motion_(motion) {}
+
+  /// P^p(z) into *out; adds the capsule displacement to *displacement (if given); the recorder
+  /// (if given) sees the run. False if the simulation hit the work bound.
+  bool Map(const PhaseState& z, int p, MapState* out, double* displacement = nullptr,
+           Recorder* recorder = nullptr) const;
+
+  /// Moves s by `periods` (> 0, any real) forcing periods (the observer, if given, sees the
+  /// run, sampled at whole periods with `sample`); false at the work bound.
+  bool Shift(MapState& s, double periods, SimObserver* observer = nullptr,
+             bool sample = false) const;
+
+ private:
+  const Forcing& forcing_;
+  const Params& params_;
+  double alpha_;
+  MotionOptions motion_;
+};
+
+/// Column `column` of a central difference: (plus - minus) / (2 h) in the free coordinates into
+/// (*J)(., column), and the difference of the displacements into (*gradient)(column) when
+/// `gradient` is given.
+void DifferenceColumn(const MapState& plus, const MapState& minus, double displacement_plus,
+                      double displacement_minus, const std::vector<int>& free, double h, int column,
+                      Eigen::MatrixXd* J, Eigen::VectorXd* gradient = nullptr);
+
+/// The Jacobian of P^p at `at` (x, u, v; forcing phase of `base`) in the free coordinates by
+/// central differences of step h into the first free.size() columns of *J (resized to at least
+/// that), with the gradient of the displacement over p periods into *gradient (if given).
+/// False at the work bound.
+bool CentralJacobian(const PeriodMap& map, const PhaseState& base, const Vec3& at, int p,
+                     const std::vector<int>& free, double h, Eigen::MatrixXd* J,
+                     Eigen::VectorXd* gradient = nullptr);
+
+/// The eigenvalues of J, largest modulus first.
+std::vector<std::complex<double>> Multipliers(const Eigen::MatrixXd& J);
+
+/// Sets the multipliers of `motion` and what follows from them (spectral radius, distances to
+/// +1, -1 and the unit circle; the stability verdict needs a converged motion).
+void SetMultipliers(std::vector<std::complex<double>> multipliers, PeriodicMotion* motion);
+
+/// Impacts and mean velocity over one period p of the motion through motion->state (recorded
+/// with `recorder`, whose events are then kept); false at the work bound.
+bool MeasurePeriod(const PeriodMap& map, int p, Recorder& recorder, PeriodicMotion* motion);
+
+}  // namespace capsubot::detail

@@ -1,0 +1,40 @@
+#pragma once
+// Continuation of a periodic motion in one named model parameter of a given robot
+// (docs/continuation.md): the job behind `capsubot continue` and capsubot.continue_branch.
+
+#include <string>
+
+#include "capsubot/continue/continuation.hpp"
+#include "capsubot/model/forcing.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/orbit/orbit.hpp"
+
+namespace capsubot {
+
+/// The state right after the impact of a one-impact orbit (docs/model.md section 4): the
+/// inner body on the right wall (x = 1) with u = -e u_impact, the capsule at v+, at the phase
+/// of the robot's force `forcing` where the orbit's impact falls (psi = phi0_orbit - phi0).
+PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing);
+
+/// The start on the robot's valid one-impact orbit with the smallest spectral radius
+/// (FindRobotOrbits, docs/orbit.md), right after its impact. Throws std::invalid_argument
+/// ("from_orbit is invalid for this robot: ...") when the robot has none.
+PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha);
+
+/// The robot at each value of the parameter named `param` (A, c, alpha, T0, e, phi0, a1..a16,
+/// b1..b16: the robot parameters of ModelParameter), the rest as given. Throws
+/// std::invalid_argument for a name it does not know or a parameter the force does not have. The
+/// family holds copies.
+RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::string& param);
+
+/// Follows the periodic motion near `start` in the parameter named `param` (A, c, alpha, T0,
+/// e, phi0, a1..a16, b1..b16: the robot parameters of ModelParameter) over [options.from,
+/// options.to], from the robot's own value of it (which sets options.start). Throws
+/// std::invalid_argument for a parameter the force does not have, bad params, bad options or the
+/// robot's value outside the range; outcomes are statuses of the Branch (ContinueBranch).
+Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
+                         const std::string& param, const PhaseState& start,
+                         ContinuationOptions options);
+
+}  // namespace capsubot

@@ -1,0 +1,152 @@
+#pragma once
+// The fastest motion from rest (docs/model.md sections 12 and 13): the force A sin(phi + phi0) + c
+// (A + c <= bound) and the mass ratio alpha that maximise the mean velocity, over a grid of
+// starts from rest, of the long-run motion the exact simulator reaches, whatever it is (one or
+// many impacts, one or both walls). Not an orbit formula: every evaluation simulates the robot.
+//
+// Variables y = (s, r[, alpha]) on a box: A = s (1 - r) bound, c = s r bound, so A + c <= bound
+// holds everywhere. A point where any start ends in event_limit (a Zeno sequence: the simulator
+// hit its work bound) is infeasible: it scores far below every motion and is never a winner.
+// The search (NLopt global stage, then a local polish) uses cheap from-rest settings; the best
+// points it found and the seed (the robust one-impact gait of P2) are then re-checked with the
+// full settings, and the best of them wins, so the result is never below the seed's own
+// from-rest mean velocity. A candidate wins only if it is re-simulated with other numerical
+// settings (the chatter cut-off 100 times smaller and larger, e = 0.999 for e = 1) without an
+// event_limit start and with nearly the same mean velocity: the motion must be the robot's, not
+// the simulator's.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_forcing.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
+
+namespace capsubot {
+
+/// The global algorithm names accepted by OptimizeReach (bound-constrained NLopt methods).
+std::vector<std::string> ReachGlobalAlgorithmNames();
+/// The local algorithm names accepted by OptimizeReach (derivative-free NLopt methods).
+std::vector<std::string> ReachLocalAlgorithmNames();
+
+/// The from-rest settings used inside the search by default: 4 x 4 starts, 100 + 32 periods.
+FromRestOptions CheapFromRestOptions();
+
+/// The default seed design: P2 restricted to gaits with spectral radius <= kRobustRhoMax (the
+/// clearance and stick margins of the robust gait are ReachOptions::seed_margin_stroke and
+/// seed_stick_margin).
+ForcingDesignOptions RobustSeedDesign();
+
+struct ReachOptions {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  /// Bound on the force: A + c <= force_bound; NaN means T0; 0 < force_bound <= T0.
+  double force_bound = kNaN;
+  /// A fixed mass ratio (0 < alpha < 1); NaN: alpha is a variable in [alpha_min, alpha_max].
+  double alpha = kNaN;
+  double alpha_min = 0.05;  ///< lower end of the alpha box; 0 < alpha_min < alpha_max
+  double alpha_max = 0.95;  ///< upper end of the alpha box; < 1 (widened to hold the seed's)
+  /// Global stage over the box, by NLopt name (ReachGlobalAlgorithmNames()).
+  std::string global_algorithm = "GN_DIRECT_L";
+  /// Local polish from the best point of the global stage (ReachLocalAlgorithmNames()).
+  std::string local_algorithm = "LN_SBPLX";
+  int global_evaluations = 150;  ///< from-rest evaluations of the global stage; >= 1
+  int local_evaluations = 50;    ///< from-rest evaluations of the local polish; >= 0
+  /// Wall-clock limit of the search (global + local stage), seconds; > 0. The re-checks of the
+  /// candidates with the full settings come on top (a handful of from-rest runs). Infinity:
+  /// none; the evaluation budgets alone bound the search, and the result no longer depends on
+  /// the machine's speed (deterministic: what a sweep needs).
+  double max_seconds = 20.0;
+  /// Relative tolerance of the local polish on y and on the mean velocity; > 0.
+  double rel_tol = 1e-4;
+  /// Best points of the search (besides the seed) re-checked with the full settings; >= 1.
+  int candidates = 3;
+  /// A candidate wins only if its mean velocity changes by at most this (relative) under the
+  /// other numerical settings of ReachSpread and no start ends in event_limit there; when no
+  /// candidate passes, the fastest is reported with robust_to_settings = false. >= 0.
+  double max_spread = 0.01;
+  unsigned seed = 1;  ///< seed of NLopt's random numbers (GN_CRS2_LM, GN_ISRES)
+  /// From-rest settings inside the search (cheap).
+  FromRestOptions search = CheapFromRestOptions();
+  /// From-rest settings of the re-check, the reported attractors and the spread (full).
+  FromRestOptions check;
+  /// The seed: the robust gait of P2 (docs/model.md section 12), the same as the main job of
+  /// `capsubot optimize`: spectral radius <= kRobustRhoMax here, force bound from force_bound.
+  ForcingDesignOptions seed_design = RobustSeedDesign();
+  /// The seed's clearance d_s in units of the stroke (Params::margin_stroke for its P2; the
+  /// other parameters are the robot's); 0 <= seed_margin_stroke < 0.5.
+  double seed_margin_stroke = kRobustMarginStroke;
+  /// The seed's stick margin s (Params::stick_margin for its P2); 0 <= seed_stick_margin < 1.
+  double seed_stick_margin = kRobustStickMargin;
+
+  // Defined out of line: GCC 12 misreads the value-initialised temporaries of this aggregate
+  // (its interrupts "may be used uninitialized").
+  ReachOptions();
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule.
+  void Validate() const;
+};
+
+/// The mean velocity of the winner re-simulated with other numerical settings (full from-rest
+/// settings); NaN when not computed or when a start ended in event_limit there.
+struct ReachSpread {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  double chatter_small = kNaN;  ///< chatter_velocity / 100
+  double chatter_large = kNaN;  ///< chatter_velocity * 100
+  double e_0999 = kNaN;         ///< restitution 0.999 (computed only when e = 1)
+  /// Largest |variant - mean_velocity| / |mean_velocity| over the computed variants (NaN if
+  /// none); +inf when a variant ended in event_limit.
+  double max_relative_deviation = kNaN;
+  std::int64_t event_limit_starts = 0;  ///< event_limit starts over the variants
+};
+
+/// The seed of the reach search: the robust one-impact gait and how it fares from rest.
+struct ReachSeed {
+  OptimizeResult gait;     ///< the P2 gait (its solution: force with impact phase, alpha, I)
+  GaitFromRest from_rest;  ///< checked from rest with the full settings (checked = false if none)
+};
+
+struct ReachResult {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  /// kOk (search converged or used its budget), kMaxTime (the wall-clock limit stopped the
+  /// search; the best point is kept), kNoValidOrbit (every candidate had an event_limit start).
+  OptimizeStatus status = OptimizeStatus::kNotRun;
+  std::string message;  ///< one readable sentence
+  /// The winner's force A sin(phi + phi0) + c; phi0 is the seed's impact phase (the motor phase
+  /// from which the start phases psi are counted).
+  Forcing forcing;
+  double alpha = kNaN;          ///< the winner's mass ratio
+  double mean_velocity = kNaN;  ///< mean over the full start grid (units of omega L)
+  Attractors attractors;        ///< of the winner, full settings
+  std::string summary;          ///< the attractors in one sentence (AttractorsSummary)
+  ReachSpread spread;           ///< dependence on the numerical settings
+  bool seed_won = false;        ///< the seed itself is the winner
+  /// The winner passed the spread test (max_relative_deviation <= max_spread).
+  bool robust_to_settings = false;
+  int evaluations = 0;  ///< from-rest evaluations (search and re-checks)
+  /// Search evaluations rejected because a start ended in event_limit.
+  int rejected_evaluations = 0;
+  double search_seconds = kNaN;  ///< wall-clock time of the search stage
+  std::string algorithm;         ///< e.g. "GN_DIRECT_L+LN_SBPLX"
+  ReachSeed seed;                ///< the seed and its from-rest check
+};
+
+/// The fastest motion from rest with A + c <= bound, seeded by the robust P2 gait (computed
+/// with options.seed_design on params with the seed's margins). Throws std::invalid_argument
+/// for bad params or options. Every evaluation asks options.search.attractor.interrupt, the
+/// re-checks options.check.attractor.interrupt, the seed's P2 options.seed_design.interrupt
+/// (interrupt.hpp): set all three to abandon the run from outside.
+ReachResult OptimizeReach(const Params& params, const ReachOptions& options = {});
+
+/// The same, seeded by a given P2 result (e.g. one already computed by the caller; its force
+/// must be of the paper's family). Without a valid seed the search still runs, from the box.
+/// It asks the interrupts of options.search and options.check.
+ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
+                          const ReachOptions& options = {});
+
+}  // namespace capsubot

@@ -1,0 +1,26 @@
+#pragma once
+// The long-run motions from rest as JSON (docs/model.md sections 12 and 13): the objects of
+// `capsubot attractors --json` and the `from_rest` check of a gait, as the command line prints
+// them and the Python module returns them.
+
+#include <nlohmann/json.hpp>
+
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+
+namespace capsubot::json {
+
+/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity"} of a motion (null
+/// for what was not found).
+nlohmann::json MotionJson(const Motion& motion);
+
+/// The attractors object: {"starts", "attractors": [...], "mean_velocity",
+/// "event_limit_starts"}; each attractor is a MotionJson with "fraction", "starts",
+/// "example_start" {"x0", "psi"} and "one_impact_orbit".
+nlohmann::json AttractorsJson(const Attractors& attractors);
+
+/// The `from_rest` object: the attractors object plus "reached" and "summary"; null when the
+/// gait was not checked (no orbit).
+nlohmann::json FromRestJson(const GaitFromRest& report);
+
+}  // namespace capsubot::json

@@ -1,0 +1,27 @@
+#pragma once
+// A branch of periodic motions (docs/continuation.md) as JSON: the object of
+// `capsubot continue --json`.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "capsubot/continue/continuation.hpp"
+#include "capsubot/continue/gait_robustness.hpp"
+
+namespace capsubot::json {
+
+/// {"parameter": name, "status", "message", "start_index", "ends": {"lower": {"end", name},
+/// "upper": {...}}, "points": [{name, "arclength", "x", "u", "v", "psi", "mode", "period",
+/// "impacts_right", "impacts_left", "mean_velocity", "spectral_radius", "multipliers" [[re,
+/// im], ...], "stable", "label"}], "special_points": [{"type", name, "located", "accuracy",
+/// "mean_velocity", "period", "impacts_right", "impacts_left", "state" {x, u, v, psi},
+/// "multipliers", "stable"}]}; `name` is the parameter's name.
+nlohmann::json BranchJson(const Branch& branch, const std::string& name);
+
+/// {name: {"value", "from", "to", "status", "message", "down": limit, "up": limit}} for T0, e,
+/// alpha, each limit {"type": a special point's type or the branch end's ("range_end",
+/// "lost", "max_points"), name: its value, "located", and for a special point "accuracy" and
+/// "multipliers" [[re, im], ...]}.
+nlohmann::json RobustnessJson(const GaitRobustness& robustness);
+
+}  // namespace capsubot::json

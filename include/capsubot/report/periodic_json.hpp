@@ -1,0 +1,17 @@
+#pragma once
+// A periodic motion found by Newton shooting (docs/model.md section 13) as JSON: the object of
+// `capsubot periodic --json`, as the Python module's periodic returns it.
+
+#include <nlohmann/json.hpp>
+
+#include "capsubot/attract/periodic.hpp"
+
+namespace capsubot::json {
+
+/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity", "state" {x, u, v,
+/// psi}, "mode", "dimension", "multipliers" [[re, im], ...], "spectral_radius", "stable",
+/// "distance_to_plus_one", "distance_to_minus_one", "distance_to_unit_circle", "residual",
+/// "iterations"}.
+nlohmann::json PeriodicJson(const PeriodicMotion& motion);
+
+}  // namespace capsubot::json

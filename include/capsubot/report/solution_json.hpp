@@ -1,0 +1,38 @@
+#pragma once
+// The one-impact orbit as JSON (docs/model.md sections 4, 5, 8, 11): the object that
+// `capsubot solve --json` prints and the Python module's solve returns. Numbers that do not
+// exist (NaN) are written as null.
+
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/model/energy.hpp"
+#include "capsubot/orbit/stability.hpp"
+#include "capsubot/orbit/validity.hpp"
+
+namespace capsubot::json {
+
+/// A solved orbit: A, c, phi0 ("cos"/"sin" for a Fourier force, A null), T0, e, status, phi1,
+/// alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations.
+nlohmann::json SolutionJson(const Solution& solution);
+
+/// Adds the stability of docs/model.md section 8: "multipliers" (array of {"re", "im"}),
+/// "spectral_radius" and "stable" (null, null, false when not computed).
+void AddStabilityJson(nlohmann::json& j, const Stability& stability);
+
+/// Adds the energy budget of docs/model.md section 11: "energy" with the keys motor_work,
+/// motor_work_positive, friction_loss, impact_loss (dimensionless, per period; null when not
+/// computed).
+void AddEnergyJson(nlohmann::json& j, const Energy& energy);
+
+/// The object of `capsubot solve`: SolutionJson with the energy; with `stability` also the
+/// stability and "from_rest" (FromRestJson of `from_rest`, the orbit checked from rest).
+nlohmann::json SolveJson(const Solution& solution, bool stability, const GaitFromRest& from_rest);
+
+/// Every orbit of a robot (`capsubot orbits`): one object per orbit, sorted as given, with the
+/// keys of SolutionJson, the energy, the stability and "complete" (false: the search hit its
+/// work bound and orbits may be missing).
+nlohmann::json RobotOrbitsJson(const std::vector<Solution>& orbits, bool complete);
+
+}  // namespace capsubot::json

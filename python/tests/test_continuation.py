@@ -1,0 +1,56 @@
+"""continue_branch: the continuation of a periodic motion in one parameter, as the command line
+follows it."""
+
+import numpy as np
+import pytest
+
+import capsubot
+from conftest import cli_json, same
+
+# The stable one-impact orbit with clearance of docs/orbit.md, followed in alpha
+# (docs/continuation.md's example, fewer points).
+ROBOT = dict(A=0.05, c=0.02, phi0=-2.842, T0=0.1, e=0.5, alpha=0.2792869076315278)
+CLI_ROBOT = ["--A", 0.05, "--c", 0.02, "--phi0", -2.842, "--T0", 0.1, "--e", 0.5, "--alpha",
+             0.2792869076315278]
+
+
+def test_equals_the_command_line():
+    found = capsubot.continue_branch(**ROBOT, from_orbit=True, param="alpha", from_=0.2, to=0.3,
+                                     max_points=30)
+    cli = cli_json("continue", *CLI_ROBOT, "--from-orbit", "--param", "alpha", "--from", 0.2,
+                   "--to", 0.3, "--max-points", 30)
+    points = found.pop("points")
+    cli_points = cli.pop("points")
+    assert same(found, cli)
+    assert found["status"] == "ok" and len(cli_points) == 30
+    # The points as columns: one NumPy array per key of the command line's points.
+    assert set(points) == set(cli_points[0])
+    for key, column in points.items():
+        if key == "multipliers":
+            want = np.array([[complex(*z) for z in p["multipliers"]] for p in cli_points])
+            assert column.dtype == complex and column.shape == (30, 2)
+        else:
+            want = np.array([p[key] for p in cli_points])
+            assert column.shape == (30,)
+        assert np.array_equal(column, want), key
+    assert points["alpha"].dtype == float and points["period"].dtype == np.int64
+    assert points["stable"].dtype == bool and points["label"].dtype.kind == "U"
+    # The branch passes its fold near alpha = 0.29035 (docs/continuation.md).
+    folds = [s for s in found["special_points"] if s["type"] == "fold"]
+    assert len(folds) == 1 and abs(folds[0]["alpha"] - 0.29035) < 1e-5
+
+
+def test_bad_input_names_the_parameter():
+    base = dict(ROBOT, param="alpha", from_=0.2, to=0.3)
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**base, from_orbit=True, max_points=1)
+    assert str(err.value) == "max_points = 1 is invalid: expected 2 <= max_points <= 1000000"
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**base, x0=0.5)
+    assert str(err.value) == "the start is missing: give all of x0, u0, v0, psi (or from_orbit=True)"
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**dict(base, to=0.25), from_orbit=True)
+    assert str(err.value).startswith("the robot's alpha = 0.2792869076315278 is outside the range")
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**dict(base, param="mu"), from_orbit=True)
+    assert str(err.value).startswith("parameter = mu is invalid")

@@ -1,0 +1,72 @@
+#include "capsubot/continue/parameter_branch.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "capsubot/model/model_parameter.hpp"
+#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/orbit/stability.hpp"
+
+namespace capsubot {
+
+PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing) {
+  return {1.0, -orbit.e * orbit.u, orbit.v_plus, orbit.forcing.phi0() - forcing.phi0()};
+}
+
+PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha) {
+  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+  const Solution* best = nullptr;
+  double best_radius = 0.0;
+  for (const Solution& s : orbits) {
+    if (!s.validity.valid()) continue;
+    const double radius = ComputeStability(s.orbit).spectral_radius;
+    if (best == nullptr || radius < best_radius) {
+      best = &s;
+      best_radius = radius;
+    }
+  }
+  if (best == nullptr) {
+    throw std::invalid_argument(fmt::format(
+        "from_orbit is invalid for this robot: it has no valid one-impact orbit at alpha = {} "
+        "(capsubot orbits lists them)",
+        alpha));
+  }
+  return OrbitImpactState(best->orbit, forcing);
+}
+
+RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
+                                 const std::string& param) {
+  int harmonic = 0;
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  CheckRobotParameter(forcing, which, harmonic);
+  const RobotModel base{forcing, params, alpha};
+  return [base, which, harmonic](double value) {
+    RobotModel r = base;
+    SetParameter(r, which, harmonic, value);
+    return r;
+  };
+}
+
+Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
+                         const std::string& param, const PhaseState& start,
+                         ContinuationOptions options) {
+  const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
+  params.Validate();
+  int harmonic = 0;
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  options.start = ParameterValue(RobotModel{forcing, params, alpha}, which, harmonic);
+  ContinuationOptions range = options;  // the options' own rules first, the start's value aside
+  range.start = options.from;
+  range.Validate();
+  if (!(options.start >= options.from && options.start <= options.to)) {
+    throw std::invalid_argument(fmt::format(
+        "the robot's {} = {} is outside the range: expected from = {} <= {} <= to = {} (the "
+        "branch starts at the robot's value)",
+        param, options.start, options.from, param, options.to));
+  }
+  return ContinueBranch(family, start, options);
+}
+
+}  // namespace capsubot

@@ -1,0 +1,92 @@
+#include "capsubot/report/design_json.hpp"
+
+#include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/solution_json.hpp"
+
+namespace capsubot::json {
+
+std::vector<std::pair<const char*, double>> Dimensionless(const Gait& g) {
+  const bool ok = g.ok();
+  const Orbit& o = g.solution.orbit;
+  const Forcing& f = o.forcing;
+  const double nan = Gait::kNaN;
+  return {{"T0", ok ? o.T0 : nan},
+          {"A", ok && f.harmonic() ? f.amplitude() : nan},
+          {"c", ok ? f.mean() : nan},
+          {"alpha", ok ? o.alpha : nan},
+          {"phi0", ok ? f.phi0() : nan},
+          {"I", ok ? o.I : nan},
+          {"spectral_radius", ok ? g.stability.spectral_radius : nan},
+          {"x_min", ok ? g.solution.validity.x_min : nan},
+          {"x_max", ok ? g.solution.validity.x_max : nan}};
+}
+
+nlohmann::json GaitJson(const Gait& g) {
+  nlohmann::json j;
+  j["status"] = GaitStatusName(g.status);
+  for (const auto& [key, value] : UserUnits(g)) j[key] = value;  // NaN is written as null
+  nlohmann::json d;
+  for (const auto& [key, value] : Dimensionless(g)) d[key] = value;
+  if (g.ok() && !g.solution.orbit.forcing.harmonic()) {
+    const Forcing& f = g.solution.orbit.forcing;
+    std::vector<double> a, b;
+    for (int k = 1; k <= f.harmonics(); ++k) {
+      a.push_back(f.a(k));
+      b.push_back(f.b(k));
+    }
+    d["cos"] = a;
+    d["sin"] = b;
+  }
+  if (g.ok()) AddEnergyJson(d, g.energy);
+  j["dimensionless"] = d;
+  j["orbits"] = g.orbits;
+  j["binding"] = g.binding;
+  return j;
+}
+
+nlohmann::json DesignJson(const DesignResult& r) {
+  nlohmann::json j;
+  j["status"] = DesignStatusName(r.status);
+  j["message"] = r.message;
+  j["one_impact"] = GaitJson(r.one_impact);
+  j["robots"] = r.robots;
+  j["complete"] = r.complete;
+  return j;
+}
+
+nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
+  const double nan = Gait::kNaN;
+  nlohmann::json out;
+  for (const FromRestBest* b : {&r.forward, &r.backward}) {
+    nlohmann::json j;
+    j["status"] = FromRestStatusName(b->status);
+    j["message"] = b->message;
+    for (const auto& [key, value] : UserUnits(*b)) j[key] = value;  // NaN is written as null
+    const DesignModel& m = b->model;
+    const bool ran = b->status != FromRestStatus::kNotRun;
+    nlohmann::json d;
+    d["T0"] = ran ? m.params.T0 : nan;
+    d["A"] = ran && m.forcing.harmonic() ? m.forcing.amplitude() : nan;
+    d["c"] = ran ? m.forcing.mean() : nan;
+    d["alpha"] = ran ? m.alpha : nan;
+    d["phi0"] = nan;  // no single impact phase: the starts cover every motor phase
+    d["mean_velocity"] = b->mean_velocity;
+    if (b->ok()) AddEnergyJson(d, b->energy);
+    j["dimensionless"] = d;
+    j["forward_fraction"] = b->forward_fraction;
+    j["backward_fraction"] = b->backward_fraction;
+    nlohmann::json a = AttractorsJson(b->attractors);
+    for (std::size_t k = 0; k < b->attractors.attractors.size(); ++k) {
+      a["attractors"][k]["speed_mm_s"] =
+          1e3 * m.omega * in.L * b->attractors.attractors[k].mean_velocity;
+    }
+    j["attractors"] = a;
+    out[DirectionName(b->direction)] = j;
+  }
+  out["evaluations"] = r.evaluations;
+  out["rejected_evaluations"] = r.rejected_evaluations;
+  out["max_time"] = r.max_time;
+  return out;
+}
+
+}  // namespace capsubot::json

@@ -1,0 +1,131 @@
+#include "capsubot/report/optimize_json.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/continuation_json.hpp"
+#include "capsubot/report/solution_json.hpp"
+
+namespace capsubot::json {
+namespace {
+
+std::vector<std::string> BindingNames(const OptimizeResult& r) {
+  std::vector<std::string> names;
+  for (Margin m : r.binding) names.emplace_back(MarginName(m));
+  return names;
+}
+
+}  // namespace
+
+nlohmann::json OptimizeResultJson(const OptimizeResult& r, const char* problem) {
+  const Forcing& f = r.solution.orbit.forcing;
+  nlohmann::json j = SolutionJson(r.solution);
+  j["problem"] = problem;
+  j["status"] = OptimizeStatusName(r.status);
+  j["message"] = r.message;
+  j["active_constraints"] = r.active_constraints;
+  j["binding"] = BindingNames(r);
+  j["evaluations"] = r.evaluations;
+  j["algorithm"] = r.algorithm;
+  if (!std::isnan(r.spectral_radius)) {
+    j["spectral_radius"] = r.spectral_radius;
+    j["stable"] = r.spectral_radius < 1.0;
+  }
+  if (!f.harmonic()) {
+    j["coefficients"] = {{"c", f.mean()}, {"cos", j["cos"]}, {"sin", j["sin"]}};
+  }
+  return j;
+}
+
+void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
+  j["T0"] = p.T0;
+  j["e"] = p.e;
+  j["margin"] = p.margin;
+  j["margin_stroke"] = p.margin_stroke;
+  j["stick_margin"] = p.stick_margin;
+  j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
+}
+
+nlohmann::json ProblemJson(const OptimizeResult& r, const char* problem,
+                           const GaitFromRest& from_rest, const Params& params, double rho_max) {
+  nlohmann::json j = OptimizeResultJson(r, problem);
+  j["from_rest"] = FromRestJson(from_rest);
+  AddRequirementsJson(j, params, rho_max);
+  if (std::string(problem) == "fourier") {
+    j["baseline_I"] = r.baseline_I;
+    j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : OptimizeResult::kNaN;
+  }
+  return j;
+}
+
+nlohmann::json ReachJson(const ReachResult& r) {
+  const bool found = !std::isnan(r.mean_velocity);
+  nlohmann::json j;
+  j["status"] = OptimizeStatusName(r.status);
+  j["message"] = r.message;
+  j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
+  j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
+  j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
+  j["alpha"] = r.alpha;
+  j["mean_velocity"] = r.mean_velocity;
+  j["attractors"] = found ? AttractorsJson(r.attractors) : nlohmann::json(nullptr);
+  j["summary"] = r.summary;
+  j["spread"] = {{"chatter_small", r.spread.chatter_small},
+                 {"chatter_large", r.spread.chatter_large},
+                 {"e_0999", r.spread.e_0999},
+                 {"max_relative_deviation", r.spread.max_relative_deviation},
+                 {"event_limit_starts", r.spread.event_limit_starts}};
+  j["seed_won"] = r.seed_won;
+  j["robust_to_settings"] = r.robust_to_settings;
+  j["evaluations"] = r.evaluations;
+  j["rejected_evaluations"] = r.rejected_evaluations;
+  j["algorithm"] = r.algorithm;
+  const Orbit& so = r.seed.gait.solution.orbit;
+  if (r.seed.from_rest.checked) {
+    j["seed"] = {{"A", so.forcing.amplitude()},
+                 {"c", so.forcing.mean()},
+                 {"phi0", so.forcing.phi0()},
+                 {"alpha", so.alpha},
+                 {"I", so.I},
+                 {"v_mean", so.v_mean},
+                 {"mean_velocity_from_rest", r.seed.from_rest.attractors.mean_velocity},
+                 {"reached", r.seed.from_rest.reached}};
+  } else {
+    j["seed"] = nullptr;
+  }
+  return j;
+}
+
+nlohmann::json ReachProblemJson(const ReachResult& reach, const Params& params, double rho_max) {
+  nlohmann::json j = ReachJson(reach);
+  AddRequirementsJson(j, params, rho_max);
+  return j;
+}
+
+nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& robust,
+                           const ReachResult& reach, const OptimizeResult& fastest,
+                           const OptimizeResult& fastest_stable, const GaitRobustness& robustness,
+                           const Params& params, double rho_max, double force_bound) {
+  nlohmann::json j;
+  AddRequirementsJson(j, params, rho_max);
+  j["force_bound"] = force_bound;
+  j["paper"] = OptimizeResultJson(paper, "phase");
+  j["paper"]["note"] =
+      "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no margins)";
+  j["robust"] = OptimizeResultJson(robust, "forcing");
+  j["robust"]["note"] =
+      "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= "
+      "rho_max; checked from rest";
+  j["robust"]["from_rest"] = FromRestJson(reach.seed.from_rest);
+  j["reach"] = ReachJson(reach);
+  j["fastest"] = OptimizeResultJson(fastest, "forcing");
+  j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
+  j["fastest_stable"] = OptimizeResultJson(fastest_stable, "forcing");
+  j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
+  j["robustness"] = robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(robustness);
+  return j;
+}
+
+}  // namespace capsubot::json

@@ -1,0 +1,47 @@
+#include "capsubot/report/simulation_json.hpp"
+
+#include "capsubot/report/solution_json.hpp"
+
+namespace capsubot::json {
+namespace {
+
+// The figures of a span of the run (the record, or the transient) as keys of `j`.
+void AddTallyJson(nlohmann::json& j, const SimTally& t) {
+  j["displacement"] = t.displacement;
+  j["v_mean"] = t.v_mean;
+  j["impacts_right"] = t.impacts_right;
+  j["impacts_left"] = t.impacts_left;
+  j["stops"] = t.stops;
+  j["breakaways"] = t.breakaways;
+  j["sticks"] = t.sticks;
+  j["releases"] = t.releases;
+  j["events"] = t.events;
+  AddEnergyJson(j, t.energy);
+}
+
+}  // namespace
+
+nlohmann::json SimulationJson(const SimResult& r, const SimOptions& sim, const Solution* orbit) {
+  const SimState& f = r.final_state;
+  nlohmann::json j;
+  j["status"] = SimStatusName(r.status);
+  j["message"] = r.message;
+  j["alpha"] = sim.alpha;
+  j["phi"] = f.phi;
+  j["x"] = f.x;
+  j["u"] = f.u;
+  j["v"] = f.v;
+  j["y"] = f.y;
+  j["mode"] = SimModeName(f.mode);
+  AddTallyJson(j, r);
+  if (sim.transient > 0.0) {
+    nlohmann::json t;
+    t["periods"] = sim.transient;
+    AddTallyJson(t, r.transient);
+    j["transient"] = t;
+  }
+  if (orbit != nullptr) j["orbit"] = SolutionJson(*orbit);
+  return j;
+}
+
+}  // namespace capsubot::json

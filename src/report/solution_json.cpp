@@ -1,0 +1,91 @@
+#include "capsubot/report/solution_json.hpp"
+
+#include "capsubot/orbit/orbit_energy.hpp"
+#include "capsubot/report/attractors_json.hpp"
+
+namespace capsubot::json {
+namespace {
+
+std::vector<double> Coefficients(const Forcing& f, bool sine) {
+  std::vector<double> out;
+  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json SolutionJson(const Solution& s) {
+  const Orbit& o = s.orbit;
+  const Validity& v = s.validity;
+  const Forcing& f = o.forcing;
+  nlohmann::json j;
+  j["A"] = f.harmonic() ? nlohmann::json(f.amplitude()) : nlohmann::json();
+  j["c"] = f.mean();
+  j["phi0"] = f.phi0();
+  if (!f.harmonic()) {
+    j["cos"] = Coefficients(f, false);
+    j["sin"] = Coefficients(f, true);
+  }
+  j["T0"] = o.T0;
+  j["e"] = o.e;
+  j["status"] = StatusName(o.status);
+  // nlohmann::json writes NaN as null: a quantity that does not exist is null.
+  j["phi1"] = o.phi1;
+  j["alpha"] = o.alpha;
+  j["u"] = o.u;
+  j["v_plus"] = o.v_plus;
+  j["I"] = o.I;
+  j["v_mean"] = o.v_mean;
+  j["x_min"] = v.x_min;
+  j["x_max"] = v.x_max;
+  j["stroke"] = v.stroke;
+  j["clearance"] = v.clearance;
+  j["valid"] = v.valid();
+  j["violations"] = v.ViolationNames();
+  return j;
+}
+
+void AddStabilityJson(nlohmann::json& j, const Stability& st) {
+  if (!st.computed) {
+    j["multipliers"] = nullptr;
+    j["spectral_radius"] = nullptr;
+    j["stable"] = false;
+    return;
+  }
+  nlohmann::json m = nlohmann::json::array();
+  for (const auto& z : st.multipliers) m.push_back({{"re", z.real()}, {"im", z.imag()}});
+  j["multipliers"] = m;
+  j["spectral_radius"] = st.spectral_radius;
+  j["stable"] = st.stable;
+}
+
+void AddEnergyJson(nlohmann::json& j, const Energy& en) {
+  j["energy"] = {{"motor_work", en.motor_work},
+                 {"motor_work_positive", en.motor_work_positive},
+                 {"friction_loss", en.friction_loss},
+                 {"impact_loss", en.impact_loss}};
+}
+
+nlohmann::json SolveJson(const Solution& s, bool stability, const GaitFromRest& from_rest) {
+  nlohmann::json j = SolutionJson(s);
+  AddEnergyJson(j, OrbitEnergy(s.orbit));
+  if (stability) {
+    AddStabilityJson(j, ComputeStability(s.orbit));
+    j["from_rest"] = FromRestJson(from_rest);
+  }
+  return j;
+}
+
+nlohmann::json RobotOrbitsJson(const std::vector<Solution>& orbits, bool complete) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const Solution& s : orbits) {
+    nlohmann::json j = SolutionJson(s);
+    AddEnergyJson(j, OrbitEnergy(s.orbit));
+    AddStabilityJson(j, ComputeStability(s.orbit));
+    j["complete"] = complete;
+    all.push_back(j);
+  }
+  return all;
+}
+
+}  // namespace capsubot::json
