@@ -129,7 +129,7 @@ FromRestOptions CheapFromRestOptions() {
 
 ForcingDesignOptions RobustSeedDesign() {
   ForcingDesignOptions d;
-  d.rho_max = kRobustRhoMax;
+  d.gait.rho_max = kRobustRhoMax;
   return d;
 }
 
@@ -176,7 +176,7 @@ ReachResult OptimizeReach(const Params& params, const ReachOptions& options) {
   options.Validate();
   params.Validate();
   ForcingDesignOptions design = options.seed_design;
-  design.force_bound = options.force_bound;
+  design.gait.force_bound = options.force_bound;
   Params seed_params = params;
   seed_params.margin_stroke = options.seed_margin_stroke;
   seed_params.stick_margin = options.seed_stick_margin;
@@ -187,9 +187,9 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                           const ReachOptions& options) {
   options.Validate();
   params.Validate();
-  SearchOptions bound_options;  // the force bound's rule is that of P2 and P3
-  bound_options.force_bound = options.force_bound;
-  const double bound = bound_options.BoundFor(params);
+  GaitRequirements gait;  // the force bound's rule is that of P2 and P3
+  gait.force_bound = options.force_bound;
+  const double bound = gait.BoundFor(params);
   ReachResult out;
   out.seed.gait = seed;
   const Orbit& so = seed.solution.orbit;
