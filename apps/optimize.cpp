@@ -282,8 +282,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   ShowStage("optimize: 2/5 the fastest robust gait (P2)");
   const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
   ShowStage("optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
-  const ReachResult reach =
-      OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, ReachOptions::kNaN));
+  const ReachResult reach = OptimizeReach(
+      p, robust, opt.from_rest.Reach(opt.search.gait.force_bound, ReachOptions::kNaN));
   ShowStage("optimize: 4/5 how far T0, e and alpha can move (continuation of the robust gait)");
   const GaitRobustness robustness =
       robust.found() ? ComputeGaitRobustness(robust.solution.orbit) : GaitRobustness{};
@@ -293,10 +293,10 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
   const OptimizeResult stable =
       OptimizeForcing(exact, ForcingOptionsFor(Request(opt).WithRhoMax(1.0)));
   ShowStage("");
-  const double bound = std::isnan(opt.search.force_bound) ? p.T0 : opt.search.force_bound;
+  const double bound = std::isnan(opt.search.gait.force_bound) ? p.T0 : opt.search.gait.force_bound;
 
   nlohmann::json j = json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p,
-                                       opt.search.rho_max, bound);
+                                       opt.search.gait.rho_max, bound);
   WriteForceCsv(robust.solution.orbit.forcing, files.force_csv.get());
   if (files.from_rest_csv != nullptr) WriteFromRestCsv(*files.from_rest_csv, robust, reach);
 
@@ -310,7 +310,7 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
       "omega L\n"
       "(change them with --T0, --e, --margin, --margin-stroke, --stick-margin, --rho-max)\n\n",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max);
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.gait.rho_max);
   t += fmt::format(
       "1. The paper's problem (P1): force F = A sin(phi + phi0) + c with c = A = T0/2 = {:g},\n"
       "   best impact phase phi0 over the whole circle, valid orbits as the paper asks (no\n"
@@ -342,8 +342,8 @@ int RunMainJob(const OptimizeCliOptions& opt, OutputFiles& files) {
       "\n2. The fastest robust gait (P2): A, c and phi0 free, A + c <= {:g}, with the margins\n"
       "   above; checked from rest on {} starts.\n",
       bound, reach.seed.from_rest.attractors.starts);
-  t += robust.found() ? GaitText(robust, opt.search.rho_max) + FromRestText(reach.seed.from_rest) +
-                            RobustnessText(robustness)
+  t += robust.found() ? GaitText(robust, opt.search.gait.rho_max) +
+                            FromRestText(reach.seed.from_rest) + RobustnessText(robustness)
                       : fmt::format("   Result: none found ({})\n", robust.message);
   t += fmt::format(
       "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
@@ -378,14 +378,14 @@ int RunReach(const OptimizeCliOptions& opt, OutputFiles& files) {
   const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(Request(opt)));
   ShowStage("optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
   const ReachResult reach =
-      OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.force_bound, opt.alpha));
+      OptimizeReach(p, robust, opt.from_rest.Reach(opt.search.gait.force_bound, opt.alpha));
   ShowStage("");
-  nlohmann::json j = json::ReachProblemJson(reach, p, opt.search.rho_max);
+  nlohmann::json j = json::ReachProblemJson(reach, p, opt.search.gait.rho_max);
   WriteForceCsv(reach.forcing, files.force_csv.get());
   const std::string t = fmt::format(
       "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
       "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  {}\n{}",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max,
+      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.gait.rho_max,
       OptimizeStatusName(reach.status), reach.message, ReachText(reach));
   Emit(j, t, opt, files.json.get());
   return 0;
@@ -409,15 +409,16 @@ int RunProblem(const OptimizeCliOptions& opt, const FromRestOptions& check, Outp
   ShowStage("optimize: the optimum checked from rest (simulated starts)");
   const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
   ShowStage("");
-  nlohmann::json j = json::ProblemJson(r, opt.problem.c_str(), from_rest, p, opt.search.rho_max);
+  nlohmann::json j =
+      json::ProblemJson(r, opt.problem.c_str(), from_rest, p, opt.search.gait.rho_max);
   WriteForceCsv(r.solution.orbit.forcing, files.force_csv.get());
   std::string t;
   t += fmt::format(
       "capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, "
       "s = {:g}, spectral radius <= {:g}\n",
-      opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.rho_max);
+      opt.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, opt.search.gait.rho_max);
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r, opt.search.rho_max) + FromRestText(from_rest);
+  t += GaitText(r, opt.search.gait.rho_max) + FromRestText(from_rest);
   if (opt.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",
@@ -445,16 +446,16 @@ int Run(const OptimizeCliOptions& opt) {
   RequireGiven(opt.c_option, std::isfinite(opt.c), fmt::format("{}", opt.c),
                "a finite mean force c");
   RequireGiven(opt.bound_option,
-               std::isfinite(opt.search.force_bound) && opt.search.force_bound > 0.0,
-               fmt::format("{}", opt.search.force_bound), "a finite bound > 0 (at most T0)");
+               std::isfinite(opt.search.gait.force_bound) && opt.search.gait.force_bound > 0.0,
+               fmt::format("{}", opt.search.gait.force_bound), "a finite bound > 0 (at most T0)");
   // Every size is bounded before any work starts.
   if (opt.starts_option->count() > 0) RequireInRange("--starts", opt.starts, 1, kMaxStarts);
   RequireInRange("--hops", opt.search.hops, 0, kMaxStarts);
   RequireInRange("--global-evaluations", opt.search.global_evaluations, 10, kMaxStageEvaluations);
-  if (!(opt.search.rho_max > 0.0)) {
+  if (!(opt.search.gait.rho_max > 0.0)) {
     throw std::invalid_argument(fmt::format(
         "--rho-max = {} is invalid: expected rho_max > 0 (inf: no stability requirement)",
-        opt.search.rho_max));
+        opt.search.gait.rho_max));
   }
   if (!(opt.search.max_time > 0.0)) {
     throw std::invalid_argument(
@@ -465,12 +466,12 @@ int Run(const OptimizeCliOptions& opt) {
   // The options of the work to come, checked before any of it starts.
   const FromRestOptions check = opt.from_rest.Check();
   if (opt.problem.empty() || opt.problem == "reach") {
-    opt.from_rest.Reach(opt.search.force_bound, opt.alpha).Validate();
+    opt.from_rest.Reach(opt.search.gait.force_bound, opt.alpha).Validate();
   }
   if (opt.problem != "phase") {
     const ForcingDesignOptions design = ForcingOptionsFor(Request(opt));
     design.Validate();
-    design.BoundFor(opt.params);
+    design.gait.BoundFor(opt.params);
   }
   RequireDistinctOutputs(
       {{opt.output, "-o"}, {opt.force_csv, "--force-csv"}, {opt.from_rest_csv, "--from-rest-csv"}});
@@ -493,7 +494,7 @@ Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
   opt->params.margin_stroke = kRobustMarginStroke;
   opt->params.stick_margin = kRobustStickMargin;
-  opt->search.rho_max = kRobustRhoMax;  // the robust default; the library's is inf
+  opt->search.gait.rho_max = kRobustRhoMax;  // the robust default; the library's is inf
   CLI::App* cmd = app.add_subcommand(
       "optimize",
       "The fastest gait (docs/model.md section 7) with the margins of a robust gait (section "
@@ -533,17 +534,17 @@ Command AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   opt->bound_option =
-      cmd->add_option("--bound", opt->search.force_bound,
+      cmd->add_option("--bound", opt->search.gait.force_bound,
                       "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
                       "same unit as A (default: T0)");
   CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt->search.rho_max,
+      cmd->add_option("--rho-max", opt->search.gait.rho_max,
                       "largest spectral radius of the impact map (docs/model.md sections 8, 12); "
                       "inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf);
   cmd->add_flag_callback(
-         "--stable", [opt] { opt->search.rho_max = 1.0; },
+         "--stable", [opt] { opt->search.gait.rho_max = 1.0; },
          "the same as --rho-max 1: stable orbits, up to marginal stability")
       ->excludes(rho_max);
   cmd->add_option("--max-time", opt->search.max_time,

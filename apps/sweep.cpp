@@ -206,14 +206,14 @@ void SetOptimizerOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   if (s.optimize == SweepOptimize::kReach) {
     for (const auto& [flag, value] : kReachDefaults) {
       if (!Defaulted(cmd, s.grid, flag)) continue;
-      if (std::strcmp(flag, "--rho-max") == 0) opt.search.rho_max = value;
+      if (std::strcmp(flag, "--rho-max") == 0) opt.search.gait.rho_max = value;
       if (std::strcmp(flag, "--margin-stroke") == 0) s.params.margin_stroke = value;
       if (std::strcmp(flag, "--stick-margin") == 0) s.params.stick_margin = value;
     }
     RequireInRange("--reach-evaluations", opt.from_rest.reach_evaluations, 1, kMaxStageEvaluations);
     RequireInRange("--reach-local-evaluations", opt.from_rest.reach_local_evaluations, 0,
                    kMaxStageEvaluations);
-    s.reach = opt.from_rest.Reach(opt.search.force_bound, opt.alpha);
+    s.reach = opt.from_rest.Reach(opt.search.gait.force_bound, opt.alpha);
     s.reach.max_seconds = SweepReachOptions().max_seconds;  // the budgets bound each point
   }
   if (opt.global_evaluations_option->count() > 0) {
@@ -226,7 +226,7 @@ void SetOptimizerOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   }
   SearchRequest search = opt.search;
   if (opt.starts_option->count() > 0) search.starts = opt.starts;
-  s.phase.rho_max = search.rho_max;
+  s.phase.gait.rho_max = search.gait.rho_max;
   s.design = ForcingOptionsFor(search);
   s.fourier = FourierOptionsFor(search);
 }
@@ -357,14 +357,14 @@ Command AddSweepCommand(CLI::App& app) {
              "status column")
           ->type_name(modes);
   CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt->search.rho_max,
+      cmd->add_option("--rho-max", opt->search.gait.rho_max,
                       "with --optimize: maximise over orbits whose spectral radius is at most "
                       "rho_max > 0 (docs/model.md sections 8, 12); inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf)
           ->needs(optimize);
   cmd->add_flag_callback(
-         "--stable-only", [opt] { opt->search.rho_max = 1.0; },
+         "--stable-only", [opt] { opt->search.gait.rho_max = 1.0; },
          "with --optimize: the same as --rho-max 1 (valid and stable orbits only)")
       ->excludes(rho_max)
       ->needs(optimize);
@@ -374,7 +374,7 @@ Command AddSweepCommand(CLI::App& app) {
                               kMinScanPoints, kMaxScanPoints))
       ->capture_default_str()
       ->needs(optimize);
-  cmd->add_option("--bound", opt->search.force_bound,
+  cmd->add_option("--bound", opt->search.gait.force_bound,
                   "with --optimize forcing|fourier|reach: the force bound A + c (max |F|) <= "
                   "bound <= T0 (default: T0)");
   cmd->add_option("--harmonics", opt->search.harmonics,

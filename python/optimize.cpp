@@ -44,7 +44,7 @@ struct SearchArgs {
 // alpha fixed if given (NaN: free).
 ReachOptions ReachFor(const SearchArgs& a, double alpha) {
   ReachOptions r;
-  r.force_bound = a.search.force_bound;
+  r.force_bound = a.search.gait.force_bound;
   r.alpha = alpha;
   ParseStarts("reach_starts", a.reach_starts, r.search);
   r.search.attractor.threads = CapThreads(a.threads);
@@ -74,15 +74,16 @@ nlohmann::json MainJob(const Params& p, const SearchArgs& a) {
   const OptimizeResult stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
   GaitRobustness robustness;
   if (robust.found()) robustness = ComputeGaitRobustness(robust.solution.orbit);
-  return json::MainJobJson(paper, robust, reach, fastest, stable, robustness, p, a.search.rho_max,
-                           std::isnan(a.search.force_bound) ? p.T0 : a.search.force_bound);
+  return json::MainJobJson(
+      paper, robust, reach, fastest, stable, robustness, p, a.search.gait.rho_max,
+      std::isnan(a.search.gait.force_bound) ? p.T0 : a.search.gait.force_bound);
 }
 
 // The reach problem: the fastest motion from rest, seeded with the robust gait.
 nlohmann::json Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
   const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
   const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-  return json::ReachProblemJson(OptimizeReach(p, robust, options), p, a.search.rho_max);
+  return json::ReachProblemJson(OptimizeReach(p, robust, options), p, a.search.gait.rho_max);
 }
 
 nlohmann::json Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
@@ -97,7 +98,7 @@ nlohmann::json Problem(const std::string& problem, std::optional<double> A, std:
     r = OptimizeFourier(p, FourierOptionsFor(a.search));
   }
   const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
-  return json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.rho_max);
+  return json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.gait.rho_max);
 }
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
@@ -111,7 +112,7 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
   if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
-  if (problem == "phase" && !std::isnan(a.search.force_bound)) {
+  if (problem == "phase" && !std::isnan(a.search.gait.force_bound)) {
     reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
   }
   if (problem == "phase" && a.search.starts) {
@@ -156,8 +157,8 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   reach_local_evaluations,
                   reach_seconds,
                   threads};
-  args.search.force_bound = bound.value_or(kNaN);
-  args.search.rho_max = stable ? 1.0 : rho_max.value_or(kRobustRhoMax);
+  args.search.gait.force_bound = bound.value_or(kNaN);
+  args.search.gait.rho_max = stable ? 1.0 : rho_max.value_or(kRobustRhoMax);
   args.search.max_time = max_time;
   args.search.global_algorithm = global_algorithm;
   args.search.local_algorithm = local_algorithm;
@@ -245,9 +246,9 @@ void BindOptimize(py::module_& m) {
         py::arg("stick_margin") = kRobustStickMargin, py::arg("bound") = py::none(),
         py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
         py::arg("max_time") = p2.max_time, py::arg("harmonics") = FourierOptions{}.harmonics,
-        py::arg("global_algorithm") = p2.global_algorithm,
+        py::arg("global_algorithm") = p2.effort.global_algorithm,
         py::arg("local_algorithm") = p2.local_algorithm,
-        py::arg("global_evaluations") = p2.global_evaluations, py::arg("hops") = p2.hops,
+        py::arg("global_evaluations") = p2.effort.global_evaluations, py::arg("hops") = p2.hops,
         py::arg("starts") = py::none(), py::arg("alpha") = py::none(),
         py::arg("from_rest_starts") = kDefaultFromRestStarts,
         py::arg("reach_starts") = kDefaultReachStarts,

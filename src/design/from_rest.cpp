@@ -33,8 +33,6 @@ using detail::Require;
 // can reach (its shell moves by millimetres per second, and the motor cannot throw it at
 // kilometres per second).
 constexpr double kInfeasibleSpeed = -1e3;
-// Initial step of the local polish, fraction of each box side.
-constexpr double kLocalStep = 0.05;
 // Two search points are the same robot when log m2 (and log f) differ by at most this.
 constexpr double kSamePoint = 1e-9;
 
@@ -166,29 +164,28 @@ FromRestBest Search(const DesignInput& in, const DesignFromRestOptions& o, Direc
   };
   const char* dir = DirectionName(direction);
   ctx.sign = direction == Direction::kForward ? 1.0 : -1.0;
-  std::string message;
-  std::vector<double> y0(lower.size());
-  for (std::size_t i = 0; i < y0.size(); ++i) y0[i] = 0.5 * (lower[i] + upper[i]);
-  const auto stage = [&](const char* name, const std::string& algorithm, int evaluations,
-                         const std::vector<double>& from) {
-    const double seconds = left();
-    if (evaluations <= 0 || !(seconds > 0.0)) {
-      out.max_time = out.max_time || evaluations > 0;
-      return;
-    }
-    ctx.stage = fmt::format("{}: {}", dir, name);
-    const nlopt::algorithm a = detail::AlgorithmFromName(
-        algorithm, name[0] == 'g' ? ReachGlobalAlgorithmNames() : ReachLocalAlgorithmNames(),
-        name[0] == 'g' ? "global_algorithm" : "local_algorithm");
-    const OptimizeStatus s =
-        detail::MaximizeOnBox(a, Objective, &ctx, lower, upper, from, evaluations, seconds,
-                              o.rel_tol, kLocalStep, message);
-    if (s == OptimizeStatus::kMaxTime) out.max_time = true;
-  };
-  stage("global search", o.global_algorithm, o.global_evaluations, y0);
-  const std::vector<detail::BoxPoint> best =
-      detail::BestDistinctPoints(ctx.Scored(), kInfeasibleSpeed, 1, kSamePoint);
-  if (!best.empty()) stage("local polish", o.local_algorithm, o.local_evaluations, best.front().y);
+  detail::BoxSearch search;
+  search.objective = Objective;
+  search.data = &ctx;
+  search.seen = [&ctx] { return ctx.Scored(); };
+  search.seconds_left = left;
+  search.on_stage = [&](const char* name) { ctx.stage = fmt::format("{}: {}", dir, name); };
+  search.lower = lower;
+  search.upper = upper;
+  search.start.resize(lower.size());
+  for (std::size_t i = 0; i < lower.size(); ++i) search.start[i] = 0.5 * (lower[i] + upper[i]);
+  search.global = detail::AlgorithmFromName(o.global_algorithm, ReachGlobalAlgorithmNames(),
+                                            "global_algorithm");
+  search.local =
+      detail::AlgorithmFromName(o.local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
+  search.global_evaluations = o.global_evaluations;
+  search.local_evaluations = o.local_evaluations;
+  search.rel_tol = o.rel_tol;
+  search.infeasible = kInfeasibleSpeed;
+  search.same = kSamePoint;
+  search.candidates = o.candidates;
+  const detail::BoxSearchResult found = detail::SearchBox(search);
+  out.max_time = out.max_time || found.max_time;
 
   // Re-check the best distinct robots with the full settings; the best one in the direction
   // wins (a robot that no longer moves that way, or has an event_limit start, loses).
@@ -198,8 +195,7 @@ FromRestBest Search(const DesignInput& in, const DesignFromRestOptions& o, Direc
   const auto rank = [&](const FromRestBest& b) {
     return b.status == FromRestStatus::kEventLimit ? kInfeasibleSpeed : ctx.sign * b.speed_mm_s;
   };
-  for (const detail::BoxPoint& p :
-       detail::BestDistinctPoints(ctx.Scored(), kInfeasibleSpeed, o.candidates, kSamePoint)) {
+  for (const detail::BoxPoint& p : found.candidates) {
     const Robot r = ctx.At(p.y.data(), static_cast<unsigned>(p.y.size()));
     FromRestBest b = EvaluateFromRest(in, r.m2, r.frequency, direction, o.check);
     ++out.evaluations;

@@ -55,4 +55,34 @@ std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floo
   return best;
 }
 
+BoxSearchResult SearchBox(const BoxSearch& search) {
+  constexpr double kLocalStep = 0.05;  // initial step of a stage, fraction of each box side
+  BoxSearchResult out;
+  bool ran = false;
+  const auto stage = [&](const char* name, nlopt::algorithm algorithm, int evaluations,
+                         const std::vector<double>& from) {
+    const double seconds = search.seconds_left();
+    if (evaluations <= 0 || !(seconds > 0.0)) {
+      out.max_time = out.max_time || evaluations > 0;
+      return;
+    }
+    if (search.on_stage) search.on_stage(name);
+    const OptimizeStatus s =
+        MaximizeOnBox(algorithm, search.objective, search.data, search.lower, search.upper, from,
+                      evaluations, seconds, search.rel_tol, kLocalStep, out.message);
+    out.max_time = out.max_time || s == OptimizeStatus::kMaxTime;
+    if (!ran || s == OptimizeStatus::kMaxTime || out.status != OptimizeStatus::kMaxTime) {
+      out.status = s;
+    }
+    ran = true;
+  };
+  stage("global search", search.global, search.global_evaluations, search.start);
+  const std::vector<BoxPoint> best =
+      BestDistinctPoints(search.seen(), search.infeasible, 1, search.same);
+  if (!best.empty()) stage("local polish", search.local, search.local_evaluations, best.front().y);
+  out.candidates =
+      BestDistinctPoints(search.seen(), search.infeasible, search.candidates, search.same);
+  return out;
+}
+
 }  // namespace capsubot::detail

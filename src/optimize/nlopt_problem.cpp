@@ -167,7 +167,7 @@ Evaluation PolishPhase(const Problem& problem,
   if (tracker.best_y.empty()) return best;
   PhaseOptions phase;
   phase.scan_points = kFinalPhaseScan;
-  phase.rho_max = problem.setup.rho_max;
+  phase.gait.rho_max = problem.setup.rho_max;
   phase.interrupt = tracker.interrupt;
   const OptimizeResult p1 =
       OptimizePhase(problem.build(tracker.best_y.data()), problem.setup.params, phase);

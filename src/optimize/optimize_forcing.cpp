@@ -67,7 +67,9 @@ detail::Seeds GridSeeds(const detail::Problem& problem, const ForcingDesignOptio
     }
   }
   std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) { return a.I > b.I; });
-  if (cells.size() > static_cast<std::size_t>(options.starts)) cells.resize(options.starts);
+  if (cells.size() > static_cast<std::size_t>(options.effort.starts)) {
+    cells.resize(options.effort.starts);
+  }
   detail::Seeds seeds;
   for (Cell& cell : cells) seeds.starts.push_back(std::move(cell.y));
   if (seeds.starts.empty() && !tracker.best_y.empty()) seeds.starts.push_back(tracker.best_y);
@@ -109,7 +111,7 @@ std::string PhaseExactPolish(const detail::Problem& problem, const ForcingDesign
   std::vector<double> sr = {std::min(total, 1.0), f.mean() / (f.amplitude() + f.mean())};
   NestedContext ctx{&problem, &tracker, PhaseOptions{}, bound};
   ctx.phase.scan_points = kNestedPhaseScan;
-  ctx.phase.rho_max = options.rho_max;
+  ctx.phase.gait.rho_max = options.gait.rho_max;
   ctx.phase.interrupt = tracker.interrupt;
   const double before = tracker.best.I;
   OptimizeStatus status = OptimizeStatus::kOk;
@@ -120,8 +122,8 @@ std::string PhaseExactPolish(const detail::Problem& problem, const ForcingDesign
     opt.set_lower_bounds({min_mean, min_mean});
     opt.set_upper_bounds({1.0, 1.0});
     opt.set_max_objective(detail::NloptCallbacks::Call, callbacks.Wrap(PhaseExactObjective, &ctx));
-    opt.set_xtol_rel(options.rel_tol);
-    opt.set_ftol_rel(options.rel_tol);
+    opt.set_xtol_rel(options.effort.rel_tol);
+    opt.set_ftol_rel(options.effort.rel_tol);
     opt.set_maxeval(options.phase_exact_evaluations);
     const double remaining = tracker.deadline.Remaining();
     if (remaining < HUGE_VAL) opt.set_maxtime(remaining);
@@ -151,10 +153,10 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
   options.Validate();
   params.Validate();
   if (params.T0 < detail::kReferenceT0) {
-    return detail::AtReferenceScale(params, options.BoundFor(params), options,
+    return detail::AtReferenceScale(params, options.gait.BoundFor(params), options,
                                     [&](const Params& reference, double bound) {
                                       ForcingDesignOptions o = options;
-                                      o.force_bound = bound;
+                                      o.gait.force_bound = bound;
                                       return OptimizeForcing(reference, o);
                                     });
   }
@@ -204,7 +206,7 @@ OptimizeResult OptimizeForcing(const Params& params, const ForcingDesignOptions&
     return detail::EvaluateAt(problem, y, t);
   };
 
-  detail::PipelineRun run = detail::RunPipeline(pipeline, options, options, tracker);
+  detail::PipelineRun run = detail::RunPipeline(pipeline, options, options.effort, tracker);
   std::string detail_text;
   if (run.best.valid) {
     const Forcing& f = run.best.solution.orbit.forcing;

@@ -55,10 +55,10 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   options.Validate();
   params.Validate();
   if (params.T0 < detail::kReferenceT0) {
-    return detail::AtReferenceScale(params, options.harmonic.BoundFor(params), options.harmonic,
-                                    [&](const Params& reference, double bound) {
+    return detail::AtReferenceScale(params, options.harmonic.gait.BoundFor(params),
+                                    options.harmonic, [&](const Params& reference, double bound) {
                                       FourierOptions o = options;
-                                      o.harmonic.force_bound = bound;
+                                      o.harmonic.gait.force_bound = bound;
                                       return OptimizeFourier(reference, o);
                                     });
   }

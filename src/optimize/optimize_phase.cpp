@@ -191,7 +191,7 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   params.Validate();
   options.Validate();
   // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
-  const detail::ConstraintSetup setup{params, HUGE_VAL, options.rho_max};
+  const detail::ConstraintSetup setup{params, HUGE_VAL, options.gait.rho_max};
   PhaseSearch search(forcing, setup, options.max_time, options.interrupt);
   const int n = options.scan_points;
   const double h = kTau / n;

@@ -9,9 +9,8 @@ namespace {
 // search. P3 asks it too, for the P2 optimum it starts from.
 ForcingDesignOptions GaitOptionsFor(const SearchRequest& request) {
   ForcingDesignOptions d;
-  d.force_bound = request.force_bound;
+  d.gait = request.gait;
   d.local_algorithm = request.local_algorithm;
-  d.rho_max = request.rho_max;
   d.max_time = request.max_time;
   d.interrupt = request.interrupt;
   return d;
@@ -21,7 +20,7 @@ ForcingDesignOptions GaitOptionsFor(const SearchRequest& request) {
 
 PhaseOptions PhaseOptionsFor(const SearchRequest& request) {
   PhaseOptions p;
-  p.rho_max = request.rho_max;
+  p.gait.rho_max = request.gait.rho_max;  // P1 optimises the phase of a given force: no bound
   p.max_time = request.max_time;
   p.interrupt = request.interrupt;
   return p;
@@ -29,9 +28,9 @@ PhaseOptions PhaseOptionsFor(const SearchRequest& request) {
 
 ForcingDesignOptions ForcingOptionsFor(const SearchRequest& request) {
   ForcingDesignOptions d = GaitOptionsFor(request);
-  d.global_algorithm = request.global_algorithm;
-  if (request.starts) d.starts = *request.starts;
-  d.global_evaluations = request.global_evaluations;
+  d.effort.global_algorithm = request.global_algorithm;
+  if (request.starts) d.effort.starts = *request.starts;
+  d.effort.global_evaluations = request.global_evaluations;
   d.hops = request.hops;
   return d;
 }

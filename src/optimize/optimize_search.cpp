@@ -32,22 +32,9 @@ void SearchEffort::Validate() const {
 }
 
 void SearchOptions::Validate() const {
-  Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
-          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
-                      force_bound));
-  SearchEffort::Validate();
+  effort.Validate();
   detail::AlgorithmFromName(local_algorithm, LocalAlgorithmNames(), "local_algorithm");
   OptimizeOptions::Validate();
-}
-
-double SearchOptions::BoundFor(const Params& params) const {
-  const double bound = std::isnan(force_bound) ? params.T0 : force_bound;
-  Require(bound <= params.T0,
-          fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
-                      "above the friction bound moves the capsule without impacts, docs/model.md "
-                      "section 6)",
-                      bound, params.T0));
-  return bound;
 }
 
 }  // namespace capsubot

@@ -10,9 +10,9 @@ namespace capsubot::detail {
 
 double SetUpPipeline(Pipeline& pipeline, const Params& params, const SearchOptions& options) {
   params.Validate();
-  const double bound = options.BoundFor(params);
+  const double bound = options.gait.BoundFor(params);
   Problem& problem = pipeline.problem;
-  problem.setup = {params, bound, options.rho_max};
+  problem.setup = {params, bound, options.gait.rho_max};
   // The stick condition max |F| on [phi1, tau] <= (1 - s) T0 follows from the force bound
   // (max |F| <= A + c <= bound, docs/model.md section 7) when bound <= (1 - s) T0, and at the
   // default bound T0 with s = 0 the two rows are one plane: NLopt is given the bound only.
@@ -140,8 +140,8 @@ OptimizeResult AtReferenceScale(
   if (r.solution.orbit.status == OrbitStatus::kNotRun) return r;
   // The optimum at the reference may lie on rho = rho_max: scaled, its spectral radius holds
   // the bound to rounding, as the force bound does (kForceBoundRelTol).
-  const ConstraintSetup setup{params, bound, options.rho_max, kForceBoundRelTol};
-  const ConstraintSetup reference_setup{reference, bound / k, options.rho_max};
+  const ConstraintSetup setup{params, bound, options.gait.rho_max, kForceBoundRelTol};
+  const ConstraintSetup reference_setup{reference, bound / k, options.gait.rho_max};
   // Whether a scale-dependent condition binds at the reference: then T0 may do better.
   const Evaluation at_reference = Evaluate(r.solution.orbit.forcing, reference_setup);
   const bool exact = !(std::abs(at_reference.g[kLeftWallIndex]) <= options.active_tol) &&

@@ -32,8 +32,6 @@ constexpr double kInfeasibleScore = -1e3;
 constexpr double kChatterFactor = 100.0;
 // Restitution of the spread run of an elastic robot.
 constexpr double kNearlyElastic = 0.999;
-// Initial step of the local polish, fraction of each box side.
-constexpr double kLocalStep = 0.05;
 // Two search points are the same candidate when every coordinate differs by at most this.
 constexpr double kSamePoint = 1e-6;
 // Search points kept for the re-check, at most (the best by score).
@@ -74,12 +72,6 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
   if (!(score > ctx->penalty)) ++ctx->rejected_evaluations;
   ctx->seen.push_back({std::vector<double>(y, y + n), score});
   return score;
-}
-
-// The best distinct feasible points seen, best first, at most `count`.
-std::vector<Point> BestPoints(std::vector<Point> seen, double penalty, int count) {
-  return detail::BestDistinctPoints(std::move(seen), penalty,
-                                    std::min(count, static_cast<int>(kMaxCandidates)), kSamePoint);
 }
 
 // Mean velocity of a spread run, NaN if a start hit the work bound (counted in `spread`).
@@ -137,7 +129,7 @@ FromRestOptions CheapFromRestOptions() {
 
 ForcingDesignOptions RobustSeedDesign() {
   ForcingDesignOptions d;
-  d.rho_max = kRobustRhoMax;
+  d.gait.rho_max = kRobustRhoMax;
   return d;
 }
 
@@ -184,7 +176,7 @@ ReachResult OptimizeReach(const Params& params, const ReachOptions& options) {
   options.Validate();
   params.Validate();
   ForcingDesignOptions design = options.seed_design;
-  design.force_bound = options.force_bound;
+  design.gait.force_bound = options.force_bound;
   Params seed_params = params;
   seed_params.margin_stroke = options.seed_margin_stroke;
   seed_params.stick_margin = options.seed_stick_margin;
@@ -195,9 +187,9 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                           const ReachOptions& options) {
   options.Validate();
   params.Validate();
-  SearchOptions bound_options;  // the force bound's rule is that of P2 and P3
-  bound_options.force_bound = options.force_bound;
-  const double bound = bound_options.BoundFor(params);
+  GaitRequirements gait;  // the force bound's rule is that of P2 and P3
+  gait.force_bound = options.force_bound;
+  const double bound = gait.BoundFor(params);
   ReachResult out;
   out.seed.gait = seed;
   const Orbit& so = seed.solution.orbit;
@@ -237,22 +229,27 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   nlopt::srand(options.seed);
-  std::string message;
-  const nlopt::algorithm global = detail::AlgorithmFromName(
-      options.global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
-  OptimizeStatus status =
-      detail::MaximizeOnBox(global, Objective, &ctx, lower, upper, y0, options.global_evaluations,
-                            options.max_seconds, options.rel_tol, kLocalStep, message);
-  const std::vector<Point> after_global = BestPoints(ctx.seen, ctx.penalty, 1);
-  const double left = options.max_seconds - elapsed();
-  if (options.local_evaluations > 0 && !after_global.empty() && left > 0.0) {
-    const nlopt::algorithm local = detail::AlgorithmFromName(
-        options.local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
-    const OptimizeStatus s = detail::MaximizeOnBox(
-        local, Objective, &ctx, lower, upper, after_global.front().y, options.local_evaluations,
-        left, options.rel_tol, kLocalStep, message);
-    if (s == OptimizeStatus::kMaxTime || status != OptimizeStatus::kMaxTime) status = s;
-  }
+  detail::BoxSearch search;
+  search.objective = Objective;
+  search.data = &ctx;
+  search.seen = [&ctx] { return ctx.seen; };
+  search.seconds_left = [&] { return options.max_seconds - elapsed(); };
+  search.lower = lower;
+  search.upper = upper;
+  search.start = y0;
+  search.global = detail::AlgorithmFromName(options.global_algorithm, ReachGlobalAlgorithmNames(),
+                                            "global_algorithm");
+  search.local = detail::AlgorithmFromName(options.local_algorithm, ReachLocalAlgorithmNames(),
+                                           "local_algorithm");
+  search.global_evaluations = options.global_evaluations;
+  search.local_evaluations = options.local_evaluations;
+  search.rel_tol = options.rel_tol;
+  search.infeasible = ctx.penalty;
+  search.same = kSamePoint;
+  search.candidates = std::min(options.candidates, static_cast<int>(kMaxCandidates));
+  const detail::BoxSearchResult found = detail::SearchBox(search);
+  const OptimizeStatus status = found.status;
+  const std::string& message = found.message;
   out.search_seconds = elapsed();
   out.algorithm = options.global_algorithm + "+" + options.local_algorithm;
 
@@ -264,7 +261,7 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
     bool is_seed;
   };
   std::vector<Candidate> candidates;
-  for (const Point& p : BestPoints(ctx.seen, ctx.penalty, options.candidates)) {
+  for (const Point& p : found.candidates) {
     const Forcing f = ctx.ForceAt(p.y.data());
     const double alpha = ctx.AlphaAt(p.y.data());
     candidates.push_back({f, alpha, FindAttractors(f, params, alpha, options.check), false});

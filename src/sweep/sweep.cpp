@@ -79,11 +79,11 @@ std::pair<double, double> Extent(const Grid& grid, ModelParameter parameter, dou
 
 // The bound of P2 and P3 against T0 at the worst point of the grid (largest bound, smallest
 // T0): no point can then fail part-way.
-void CheckBoundAgainstT0(const SweepOptions& o, const SearchOptions& search) {
-  SearchOptions worst = search;
+void CheckBoundAgainstT0(const SweepOptions& o, const GaitRequirements& gait) {
+  GaitRequirements worst = gait;
   Params params = o.params;
   params.T0 = Extent(o.grid, ModelParameter::kT0, o.params.T0).first;
-  worst.force_bound = Extent(o.grid, ModelParameter::kbound, search.force_bound).second;
+  worst.force_bound = Extent(o.grid, ModelParameter::kbound, gait.force_bound).second;
   worst.BoundFor(params);
 }
 
@@ -153,11 +153,11 @@ void SweepOptions::Validate() const {
       break;
     case SweepOptimize::kForcing:
       design.Validate();
-      CheckBoundAgainstT0(*this, design);
+      CheckBoundAgainstT0(*this, design.gait);
       break;
     case SweepOptimize::kFourier:
       fourier.Validate();
-      CheckBoundAgainstT0(*this, fourier.harmonic);
+      CheckBoundAgainstT0(*this, fourier.harmonic.gait);
       break;
     case SweepOptimize::kReach:
       design.Validate();
@@ -174,7 +174,7 @@ void SweepOptions::Validate() const {
             "stability = true is invalid with optimize = reach: expected no stability columns "
             "(the motion reached from rest is not one orbit)");
       }
-      CheckBoundAgainstT0(*this, design);
+      CheckBoundAgainstT0(*this, design.gait);
       break;
   }
 }

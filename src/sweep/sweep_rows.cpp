@@ -36,7 +36,7 @@ int SweepHarmonics(const SweepOptions& o) {
 
 // The shared optimiser options (OptimizeOptions).
 std::string GoalDescription(const OptimizeOptions& g) {
-  return fmt::format(" rho_max={} max_time={} active_tol={}", Hex(g.rho_max), Hex(g.max_time),
+  return fmt::format(" rho_max={} max_time={} active_tol={}", Hex(g.gait.rho_max), Hex(g.max_time),
                      Hex(g.active_tol));
 }
 
@@ -47,8 +47,9 @@ std::string EffortDescription(const SearchEffort& s) {
 }
 
 std::string SearchDescription(const SearchOptions& s) {
-  return fmt::format(" bound={} local={} seed={}", Hex(s.force_bound), s.local_algorithm, s.seed) +
-         EffortDescription(s) + GoalDescription(s);
+  return fmt::format(" bound={} local={} seed={}", Hex(s.gait.force_bound), s.local_algorithm,
+                     s.seed) +
+         EffortDescription(s.effort) + GoalDescription(s);
 }
 
 std::string DesignDescription(const ForcingDesignOptions& p) {
@@ -139,7 +140,7 @@ std::string SweepDescription(const SweepOptions& o) {
 }
 
 SweepPoint::SweepPoint(const SweepOptions& o)
-    : phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
+    : mode(o.optimize), phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
   robot.forcing = o.forcing;
   robot.params = o.params;
   // The sweep's threads work on different points (the result does not depend on this).
@@ -159,6 +160,20 @@ SweepPoint::SweepPoint(const SweepOptions& o)
     b[static_cast<std::size_t>(k - 1)] = f.b(k);
   }
   robot.forcing = Forcing::Fourier(f.mean(), a, b, f.phi0());
+}
+
+GaitRequirements& SweepPoint::Gait() {
+  switch (mode) {
+    case SweepOptimize::kPhase:
+      return phase.gait;
+    case SweepOptimize::kFourier:
+      return fourier.harmonic.gait;
+    case SweepOptimize::kNone:  // no requirement axis (SweepOptions::Validate)
+    case SweepOptimize::kForcing:
+    case SweepOptimize::kReach:  // the reach search's bound is its seed's
+      break;
+  }
+  return design.gait;
 }
 
 void SweepPoint::Set(const GridAxis& axis, double value) {
@@ -184,14 +199,11 @@ void SweepPoint::Set(const GridAxis& axis, double value) {
     case ModelParameter::kstick_margin:
       robot.params.stick_margin = value;
       break;
-    case ModelParameter::kbound:  // the reach search's bound is design.force_bound
-      design.force_bound = value;
-      fourier.harmonic.force_bound = value;
+    case ModelParameter::kbound:
+      Gait().force_bound = value;
       break;
     case ModelParameter::krho_max:
-      phase.rho_max = value;
-      design.rho_max = value;
-      fourier.harmonic.rho_max = value;
+      Gait().rho_max = value;
       break;
   }
 }
@@ -316,7 +328,7 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
 // `capsubot optimize --problem reach` does): the bound is design.force_bound.
 void SweepRowWriter::AppendReach(RowBuffer& out) const {
   ReachOptions options = point_.reach;
-  options.force_bound = point_.design.force_bound;
+  options.force_bound = point_.design.gait.force_bound;
   const ReachResult r = OptimizeReach(point_.robot.params,
                                       OptimizeForcing(point_.robot.params, point_.design), options);
   for (const auto& cell : ReachCells(r)) {

@@ -78,6 +78,7 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r);
 /// The values a sweep point sets: the robot (force, model parameters, mass ratio) and the
 /// optimisers' options.
 struct SweepPoint {
+  SweepOptimize mode;  ///< what the point computes
   /// The robot; with a_k or b_k axes its force has every harmonic an axis names (the others 0).
   RobotModel robot;
   PhaseOptions phase;
@@ -88,10 +89,13 @@ struct SweepPoint {
   /// The sweep's fixed values (the grid not applied yet).
   explicit SweepPoint(const SweepOptions& options);
   /// Sets the value of one gridded parameter: a robot parameter by SetParameter (an A axis
-  /// sets b_1, the force being a series when a_k or b_k axes extend it), a requirement in the
-  /// options it bounds. Axes over phi0 go first: a coefficient set after the phase rebuilds
-  /// the force with the phase reduced, as one series (Forcing::Fourier).
+  /// sets b_1, the force being a series when a_k or b_k axes extend it), a margin in the
+  /// robot's params, the force bound or rho_max in the mode's GaitRequirements. Axes over phi0
+  /// go first: a coefficient set after the phase rebuilds the force with the phase reduced, as
+  /// one series (Forcing::Fourier).
   void Set(const GridAxis& axis, double value);
+  /// The gait the mode asks for (the reach search's bound is that of its seed, `design`).
+  GaitRequirements& Gait();
 };
 
 /// Formats the rows of grid points. One per worker thread (holds scratch space).

@@ -52,12 +52,12 @@ double ReferenceI(const Params& params, bool stable) {
     for (const char* local : {"LN_COBYLA", "LD_SLSQP"}) {
       capsubot::ForcingDesignOptions o;
       o.grid = 24;
-      o.starts = 24;
+      o.effort.starts = 24;
       o.hops = 40;
-      o.rel_tol = 1e-14;
-      o.local_evaluations = 100000;
+      o.effort.rel_tol = 1e-14;
+      o.effort.local_evaluations = 100000;
       o.local_algorithm = local;
-      if (stable) o.rho_max = 1.0;
+      if (stable) o.gait.rho_max = 1.0;
       const auto r = capsubot::OptimizeForcing(params, o);
       if (r.found()) best = std::max(best, r.solution.orbit.I);
     }
@@ -74,7 +74,7 @@ void BM_OptimizeForcing(benchmark::State& state) {
   const bool stable = state.range(1) != 0;
   const Params params = state.range(2) != 0 ? Model(T0, 0.6, 0.1) : Model(T0);
   capsubot::ForcingDesignOptions o;
-  if (stable) o.rho_max = 1.0;
+  if (stable) o.gait.rho_max = 1.0;
   const double reference = ReferenceI(params, stable);
   double I = 0.0;
   int evaluations = 0;

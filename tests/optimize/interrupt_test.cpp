@@ -95,7 +95,7 @@ std::vector<LongCall> LongCalls() {
       {"P2_NLopt_global",
        [](const Interrupt& i) {
          ForcingDesignOptions o;
-         o.global_algorithm = "GN_ISRES";
+         o.effort.global_algorithm = "GN_ISRES";
          o.interrupt = i;
          OptimizeForcing(Params{}, o);
        }},
@@ -162,7 +162,7 @@ INSTANTIATE_TEST_SUITE_P(LongCalls, InterruptOf, ::testing::ValuesIn(LongCalls()
 TEST(Interrupt, ThatNeverThrowsIsAskedOnTheCallingThreadAndChangesNoNumber) {
   {
     ForcingDesignOptions o;
-    o.starts = 2;
+    o.effort.starts = 2;
     o.hops = 1;
     const OptimizeResult plain = OptimizeForcing(Params{}, o);
     CountingInterrupt interrupt(0);

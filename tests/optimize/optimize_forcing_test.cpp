@@ -50,8 +50,8 @@ std::ostream& operator<<(std::ostream& os, const DesignCase& k) {
 
 ForcingDesignOptions OptionsFor(const DesignCase& k) {
   ForcingDesignOptions o;
-  o.force_bound = k.bound_ratio * k.T0;
-  if (k.stable) o.rho_max = 1.0;
+  o.gait.force_bound = k.bound_ratio * k.T0;
+  if (k.stable) o.gait.rho_max = 1.0;
   return o;
 }
 
@@ -130,20 +130,20 @@ TEST(OptimizeForcing, RobustOptimumHoldsEveryMarginAndNamesTheOnesThatBind) {
   // the same margins and through the stability of the orbit.
   const Params params{1.0, 1.0, 0.0, 0.02, 0.02};
   ForcingDesignOptions o;
-  o.rho_max = 0.9;
+  o.gait.rho_max = 0.9;
   const OptimizeResult r = OptimizeForcing(params, o);
   ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
   const Solution s = Solve(r.solution.orbit.forcing, params);
   ASSERT_TRUE(s.validity.valid()) << s.validity.violations;
   const double rho = ComputeStability(s.orbit).spectral_radius;
-  EXPECT_LE(rho, o.rho_max);
+  EXPECT_LE(rho, o.gait.rho_max);
   const double clearance = 0.02 * s.validity.stroke;
   EXPECT_GE(s.validity.x_min, clearance);
   // Each margin reported as binding is reached within the reporting tolerance.
   int binding = 0;
   for (Margin m : r.binding) {
     if (m == Margin::kRhoMax) {
-      EXPECT_NEAR(rho, o.rho_max, o.active_tol);
+      EXPECT_NEAR(rho, o.gait.rho_max, o.active_tol);
     } else if (m == Margin::kClearanceStroke) {
       EXPECT_NEAR(s.validity.x_min, clearance, o.active_tol);
     }
@@ -152,7 +152,7 @@ TEST(OptimizeForcing, RobustOptimumHoldsEveryMarginAndNamesTheOnesThatBind) {
   EXPECT_EQ(binding, 2) << r.message;
   // Robustness costs speed: the exact stable optimum (no margins, rho <= 1) is faster.
   ForcingDesignOptions stable;
-  stable.rho_max = 1.0;
+  stable.gait.rho_max = 1.0;
   EXPECT_LT(r.solution.orbit.I, OptimizeForcing(Params{}, stable).solution.orbit.I);
 }
 
@@ -162,7 +162,7 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
   // at 1e-3 scaled by 1e-4 (the left wall does not bind there).
   const Params reference{1e-3, 1.0, 0.0, 0.02, 0.02}, tiny{1e-7, 1.0, 0.0, 0.02, 0.02};
   ForcingDesignOptions o;
-  o.rho_max = 0.9;
+  o.gait.rho_max = 0.9;
   const OptimizeResult at_reference = OptimizeForcing(reference, o);
   const OptimizeResult at_tiny = OptimizeForcing(tiny, o);
   ASSERT_EQ(at_tiny.status, OptimizeStatus::kOk) << at_tiny.message;
@@ -214,7 +214,7 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   // resolves only by chattering). One simulated period from the post-impact state returns.
   const Params params{0.1, 1.0, 0.0};
   ForcingDesignOptions options;
-  options.force_bound = 0.09;
+  options.gait.force_bound = 0.09;
   const OptimizeResult r = OptimizeForcing(params, options);
   ASSERT_TRUE(r.found()) << r.message;
   const Orbit& o = r.solution.orbit;
@@ -262,8 +262,8 @@ TEST_P(GlobalAlgorithm, ReturnsAValidGaitNoBetterThanTheMultistartOptimum) {
   // cannot beat the multistart optimum (up to its accuracy).
   const Params params{0.1, 1.0, 0.0};
   ForcingDesignOptions o;
-  o.global_algorithm = GetParam();
-  o.global_evaluations = 3000;  // keeps GN_ORIG_DIRECT (quadratic bookkeeping) fast
+  o.effort.global_algorithm = GetParam();
+  o.effort.global_evaluations = 3000;  // keeps GN_ORIG_DIRECT (quadratic bookkeeping) fast
   const OptimizeResult r = OptimizeForcing(params, o);
   const OptimizeResult reference = OptimizeForcing(params);
   ASSERT_TRUE(r.found()) << r.message;
@@ -291,7 +291,7 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
             "local_algorithm = \"LN_FOO\" is invalid: expected one of LN_COBYLA, LD_SLSQP, "
             "LD_MMA, LD_CCSAQ");
   ForcingDesignOptions unconstrained_global;
-  unconstrained_global.global_algorithm = "GN_CRS2_LM";  // an NLopt name without constraints
+  unconstrained_global.effort.global_algorithm = "GN_CRS2_LM";  // an NLopt name without constraints
   const std::string message = ErrorOf(Params{}, unconstrained_global);
   EXPECT_NE(message.find("global_algorithm = \"GN_CRS2_LM\" is invalid: expected one of "
                          "multistart, GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS"),
@@ -299,11 +299,11 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
       << message;
   EXPECT_NE(message.find("cannot take nonlinear inequality constraints"), std::string::npos);
   ForcingDesignOptions negative;
-  negative.force_bound = -1.0;
+  negative.gait.force_bound = -1.0;
   EXPECT_EQ(ErrorOf(Params{}, negative),
             "force_bound = -1 is invalid: expected a finite bound > 0 (or NaN for T0)");
   ForcingDesignOptions above;  // bound above T0: inverted relative to the friction bound
-  above.force_bound = 2.0;
+  above.gait.force_bound = 2.0;
   EXPECT_EQ(ErrorOf(Params{}, above),
             "force_bound = 2 is invalid: expected force_bound <= T0 = 1 (a force above the "
             "friction bound moves the capsule without impacts, docs/model.md section 6)");
@@ -319,7 +319,7 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   EXPECT_EQ(ErrorOf(Params{}, no_time),
             "max_time = 0 is invalid: expected a time limit max_time > 0 [s] (infinity: none)");
   ForcingDesignOptions no_starts;
-  no_starts.starts = 0;
+  no_starts.effort.starts = 0;
   EXPECT_EQ(ErrorOf(Params{}, no_starts), "starts = 0 is invalid: expected 1 <= starts <= 1000");
 }
 

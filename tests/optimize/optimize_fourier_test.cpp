@@ -50,18 +50,18 @@ TEST(OptimizeFourier, KeepsTheHarmonicOptimumWhenTheForceBoundBinds) {
   FourierOptions o;
   o.harmonics = 3;
   o.search.starts = 2;
-  o.harmonic.force_bound = 0.24;
+  o.harmonic.gait.force_bound = 0.24;
   const OptimizeResult r = OptimizeFourier(params, o);
   ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
   EXPECT_GE(r.solution.orbit.I, r.baseline_I * (1.0 - kSameValueTol));
   EXPECT_TRUE(Solve(r.solution.orbit.forcing, params).validity.valid());
-  EXPECT_TRUE(WithinForceBound(r.solution.validity.max_force, o.harmonic.force_bound));
+  EXPECT_TRUE(WithinForceBound(r.solution.validity.max_force, o.harmonic.gait.force_bound));
 }
 
 TEST(OptimizeFourier, OptimumSatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   const Params params{0.3, 0.8, 0.02};
   FourierOptions o = Quick(2);
-  o.harmonic.force_bound = 0.25;
+  o.harmonic.gait.force_bound = 0.25;
   const OptimizeResult r = OptimizeFourier(params, o);
   ASSERT_TRUE(r.found()) << r.message;
   const Forcing& f = r.solution.orbit.forcing;
@@ -109,7 +109,7 @@ TEST(OptimizeFourier, BadOptionsAreRejectedWithTheRule) {
             "local_algorithm = \"cobyla\" is invalid: expected one of LN_COBYLA, LD_SLSQP, "
             "LD_MMA, LD_CCSAQ");
   FourierOptions above;
-  above.harmonic.force_bound = 1.5;
+  above.harmonic.gait.force_bound = 1.5;
   EXPECT_NE(error(above).find("force_bound = 1.5 is invalid: expected force_bound <= T0 = 1"),
             std::string::npos);
 }

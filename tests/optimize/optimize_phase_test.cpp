@@ -200,7 +200,7 @@ TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
   const Params params{0.3, 1.0, 0.0};
   const Forcing shape = Forcing::Harmonic(0.09, 0.03, 0.0);
   PhaseOptions options;
-  options.rho_max = 1.0;
+  options.gait.rho_max = 1.0;
   const ScanBest scan = DenseScan(shape, params, true, 1.0);
   const OptimizeResult r = OptimizePhase(shape, params, options);
   ASSERT_GT(scan.valid, 0) << "test case without stable valid orbits";
@@ -224,7 +224,7 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
               "scan_points = 3 is invalid: expected 16 <= scan_points <= 1000000");
   }
   PhaseOptions rho;
-  rho.rho_max = 0.0;
+  rho.gait.rho_max = 0.0;
   try {
     OptimizePhase(shape, Params{}, rho);
     FAIL() << "expected std::invalid_argument";

@@ -8,13 +8,15 @@
 
 #include <cmath>
 
+#include "test_utils.hpp"
+
 namespace capsubot {
 namespace {
 
 SearchRequest Request() {
   SearchRequest r;
-  r.force_bound = 0.7;
-  r.rho_max = 0.8;
+  r.gait.force_bound = 0.7;
+  r.gait.rho_max = 0.8;
   r.max_time = 12.0;
   r.global_algorithm = "GN_ISRES";
   r.local_algorithm = "LD_SLSQP";
@@ -24,23 +26,51 @@ SearchRequest Request() {
   return r;
 }
 
+TEST(GaitRequirements, TheBoundIsT0UnlessGivenAndNeverAboveT0) {
+  Params params;
+  params.T0 = 0.5;
+  GaitRequirements gait;
+  EXPECT_EQ(gait.BoundFor(params), 0.5);  // NaN: T0
+  gait.force_bound = 0.25;
+  EXPECT_EQ(gait.BoundFor(params), 0.25);
+  gait.force_bound = 0.75;
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.BoundFor(params); }),
+            "force_bound = 0.75 is invalid: expected force_bound <= T0 = 0.5 (a force above the "
+            "friction bound moves the capsule without impacts, docs/model.md section 6)");
+}
+
+TEST(GaitRequirements, ValidateNamesTheBadFieldItsValueAndTheRule) {
+  GaitRequirements gait;
+  EXPECT_NO_THROW(gait.Validate());
+  gait.force_bound = -1.0;
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.Validate(); }),
+            "force_bound = -1 is invalid: expected a finite bound > 0 (or NaN for T0)");
+  gait.force_bound = 1.0;
+  gait.rho_max = 0.0;
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.Validate(); }),
+            "rho_max = 0 is invalid: expected rho_max > 0 (infinity: no stability requirement)");
+  gait.rho_max = GaitRequirements::kInf;  // no stability requirement
+  EXPECT_NO_THROW(gait.Validate());
+}
+
 TEST(SearchRequest, ReachesP1) {
   const PhaseOptions p = PhaseOptionsFor(Request());
-  EXPECT_EQ(p.rho_max, 0.8);
+  EXPECT_EQ(p.gait.rho_max, 0.8);
+  EXPECT_TRUE(std::isnan(p.gait.force_bound));  // P1 optimises the phase of a given force
   EXPECT_EQ(p.max_time, 12.0);
   EXPECT_EQ(p.scan_points, PhaseOptions{}.scan_points);
 }
 
 TEST(SearchRequest, ReachesP2) {
   const ForcingDesignOptions d = ForcingOptionsFor(Request());
-  EXPECT_EQ(d.force_bound, 0.7);
-  EXPECT_EQ(d.rho_max, 0.8);
+  EXPECT_EQ(d.gait.force_bound, 0.7);
+  EXPECT_EQ(d.gait.rho_max, 0.8);
   EXPECT_EQ(d.max_time, 12.0);
-  EXPECT_EQ(d.global_algorithm, "GN_ISRES");
+  EXPECT_EQ(d.effort.global_algorithm, "GN_ISRES");
   EXPECT_EQ(d.local_algorithm, "LD_SLSQP");
-  EXPECT_EQ(d.global_evaluations, 777);
+  EXPECT_EQ(d.effort.global_evaluations, 777);
   EXPECT_EQ(d.hops, 3);
-  EXPECT_EQ(d.starts, ForcingDesignOptions{}.starts);
+  EXPECT_EQ(d.effort.starts, ForcingDesignOptions{}.effort.starts);
   EXPECT_NO_THROW(d.Validate());
 }
 
@@ -51,11 +81,11 @@ TEST(SearchRequest, ReachesP3AndItsHarmonicSeed) {
   EXPECT_EQ(f.search.global_evaluations, 777);
   EXPECT_EQ(f.search.starts, FourierOptions{}.search.starts);
   // The seed asks P3's gait (bound, stability, time, polish) with P2's default search effort.
-  EXPECT_EQ(f.harmonic.force_bound, 0.7);
-  EXPECT_EQ(f.harmonic.rho_max, 0.8);
+  EXPECT_EQ(f.harmonic.gait.force_bound, 0.7);
+  EXPECT_EQ(f.harmonic.gait.rho_max, 0.8);
   EXPECT_EQ(f.harmonic.max_time, 12.0);
   EXPECT_EQ(f.harmonic.local_algorithm, "LD_SLSQP");
-  EXPECT_EQ(f.harmonic.global_algorithm, ForcingDesignOptions{}.global_algorithm);
+  EXPECT_EQ(f.harmonic.effort.global_algorithm, ForcingDesignOptions{}.effort.global_algorithm);
   EXPECT_EQ(f.harmonic.hops, ForcingDesignOptions{}.hops);
   EXPECT_NO_THROW(f.Validate());
 }
@@ -63,26 +93,26 @@ TEST(SearchRequest, ReachesP3AndItsHarmonicSeed) {
 TEST(SearchRequest, GivenStartsReachP2AndP3) {
   SearchRequest r = Request();
   r.starts = 4;
-  EXPECT_EQ(ForcingOptionsFor(r).starts, 4);
+  EXPECT_EQ(ForcingOptionsFor(r).effort.starts, 4);
   EXPECT_EQ(FourierOptionsFor(r).search.starts, 4);
 }
 
 TEST(SearchRequest, WithRhoMaxChangesOnlyTheStabilityRequirement) {
-  const SearchRequest exact = Request().WithRhoMax(SearchRequest{}.rho_max);
-  EXPECT_TRUE(std::isinf(exact.rho_max));
+  const SearchRequest exact = Request().WithRhoMax(SearchRequest{}.gait.rho_max);
+  EXPECT_TRUE(std::isinf(exact.gait.rho_max));
   EXPECT_EQ(ForcingOptionsFor(exact).hops, 3);
-  EXPECT_EQ(ForcingOptionsFor(exact).force_bound, 0.7);
+  EXPECT_EQ(ForcingOptionsFor(exact).gait.force_bound, 0.7);
 }
 
 TEST(SearchRequest, DefaultsAreEachProblemsDefaults) {
   const SearchRequest r;
   const ForcingDesignOptions d = ForcingOptionsFor(r), defaults;
-  EXPECT_EQ(d.starts, defaults.starts);
+  EXPECT_EQ(d.effort.starts, defaults.effort.starts);
   EXPECT_EQ(d.hops, defaults.hops);
-  EXPECT_EQ(d.global_evaluations, defaults.global_evaluations);
+  EXPECT_EQ(d.effort.global_evaluations, defaults.effort.global_evaluations);
   EXPECT_EQ(d.local_algorithm, defaults.local_algorithm);
   EXPECT_EQ(d.max_time, defaults.max_time);
-  EXPECT_TRUE(std::isnan(d.force_bound));
+  EXPECT_TRUE(std::isnan(d.gait.force_bound));
   EXPECT_EQ(FourierOptionsFor(r).harmonics, FourierOptions{}.harmonics);
 }
 

@@ -30,7 +30,7 @@ ReachOptions QuickOptions() {
   o.check.n_x = 4;
   o.check.n_psi = 4;
   o.seed_design.hops = 2;
-  o.seed_design.starts = 3;
+  o.seed_design.effort.starts = 3;
   return o;
 }
 

@@ -432,7 +432,7 @@ TEST(SweepOptions, RejectsBadCombinationsWithAMessageNamingParametersNotFlags) {
       {[](SweepOptions& o) {
          o.grid.axes = {ParseGridAxis("T0=0.05,0.2")};
          o.optimize = SweepOptimize::kForcing;
-         o.design.force_bound = 0.1;  // above the smallest T0
+         o.design.gait.force_bound = 0.1;  // above the smallest T0
        },
        "force_bound = 0.1 is invalid..."},
       {[](SweepOptions& o) {
@@ -554,7 +554,7 @@ TEST(Sweep, RhoMaxInfinityInAListEqualsTheDefaultRunAndSurvivesMerge) {
   RunSweep(o);
   SweepOptions plain = o;
   plain.grid.axes = {o.grid.axes[0]};
-  ASSERT_EQ(plain.phase.rho_max, std::numeric_limits<double>::infinity());
+  ASSERT_EQ(plain.phase.gait.rho_max, std::numeric_limits<double>::infinity());
   plain.output = dir.File("default.csv");
   RunSweep(plain);
   const auto rows = ReadCsv(o.output);
@@ -684,7 +684,7 @@ TEST(Sweep, ForcingPerPointEqualsOptimizeForcing) {
   SweepOptions o;
   o.grid.axes = {ParseGridAxis("T0=0.05,0.08,0.1,0.2,1")};
   o.optimize = SweepOptimize::kForcing;
-  o.design.starts = 2;
+  o.design.effort.starts = 2;
   o.design.hops = 2;
   o.stability = true;
   o.output = dir.File("p2.csv");
@@ -752,8 +752,8 @@ TEST(Sweep, ReachPerPointEqualsOptimizeReachSeededByOptimizeForcing) {
   o.optimize = SweepOptimize::kReach;
   o.params.margin_stroke = kRobustMarginStroke;
   o.params.stick_margin = kRobustStickMargin;
-  o.design.rho_max = kRobustRhoMax;
-  o.design.starts = 2;
+  o.design.gait.rho_max = kRobustRhoMax;
+  o.design.effort.starts = 2;
   o.design.hops = 1;
   o.reach.global_evaluations = 8;
   o.reach.local_evaluations = 4;

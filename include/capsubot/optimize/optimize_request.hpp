@@ -15,17 +15,16 @@
 namespace capsubot {
 
 struct SearchRequest {
-  /// Bound on max |F|; NaN means T0 (SearchOptions::force_bound).
-  double force_bound = std::numeric_limits<double>::quiet_NaN();
-  /// Largest admissible spectral radius; infinity: no stability requirement.
-  double rho_max = OptimizeOptions::kInf;
+  /// The gait asked for: the force bound (NaN: T0) and rho_max (infinity: no stability
+  /// requirement); the margins are those of the problems' Params.
+  GaitRequirements gait;
   /// Wall-clock limit of one optimisation [s].
   double max_time = OptimizeOptions{}.max_time;
   /// Global stage of P2 and P3 ("multistart" or an NLopt global algorithm).
   std::string global_algorithm = kMultistart;
   /// Local polish of P2 and P3 (an NLopt local algorithm).
   std::string local_algorithm = SearchOptions{}.local_algorithm;
-  /// Local polishes of P2 and P3; none: each problem's own default.
+  /// Local polishes of P2 and P3; none: each problem's own default (SearchEffort::starts).
   std::optional<int> starts;
   /// Evaluation budget of an NLopt global stage of P2 and P3.
   int global_evaluations = SearchEffort{}.global_evaluations;
@@ -39,7 +38,7 @@ struct SearchRequest {
   /// The same request with another stability requirement (the exact optima: inf, or 1).
   SearchRequest WithRhoMax(double other) const {
     SearchRequest r = *this;
-    r.rho_max = other;
+    r.gait.rho_max = other;
     return r;
   }
 };

@@ -1,6 +1,7 @@
 #pragma once
-// What the NLopt problems P2 and P3 of docs/model.md section 7 share: the force bound, the global
-// and local stages and their budgets, the stability requirement and the time limit.
+// What the NLopt problems P2 and P3 of docs/model.md section 7 share: the gait asked for
+// (GaitRequirements: the force bound, the stability requirement), the time limit, the global
+// and local stages and their budgets (SearchEffort).
 
 #include <limits>
 #include <string>
@@ -44,15 +45,15 @@ struct SearchEffort {
   void Validate() const;
 };
 
-/// The gait asked of P2 (and of P3, which starts from P2's optimum for the same request):
-/// stability, time limit, force bound, local algorithm and seed, with P2's search effort.
-struct SearchOptions : OptimizeOptions, SearchEffort {
-  // Not an aggregate: value-initialised through this constructor (GCC 12 misreads the
-  // aggregate initialisation of a struct with two bases holding strings).
+/// P2's options besides its own scan and restarts (and those of the P2 optimum P3 starts from):
+/// the gait asked for, the time limit and report tolerance (OptimizeOptions), the search
+/// effort, the local algorithm and the seed.
+struct SearchOptions : OptimizeOptions {
+  // Not an aggregate: GCC 12 misreads the aggregate initialisation of a struct whose base
+  // holds strings (ForcingDesignOptions{} warns -Wmaybe-uninitialized without this).
   SearchOptions() {}  // NOLINT(modernize-use-equals-default)
-  /// Bound on the force, max |F| (A + c for the harmonic force); NaN means T0. Must satisfy
-  /// 0 < force_bound <= T0 (a larger force moves the capsule without impacts, section 6).
-  double force_bound = std::numeric_limits<double>::quiet_NaN();
+  /// How hard the problem is searched: global stage, local polishes and their budgets.
+  SearchEffort effort;
   /// Local constrained polish, by NLopt name (LocalAlgorithmNames(); gradients of the LD_
   /// algorithms by central differences).
   std::string local_algorithm = "LN_COBYLA";
@@ -62,9 +63,6 @@ struct SearchOptions : OptimizeOptions, SearchEffort {
   /// Throws std::invalid_argument naming the first bad field, its value and the rule
   /// (unknown algorithm names list the valid ones).
   void Validate() const;
-  /// The bound in force for these params: force_bound, or T0 when it is NaN; throws
-  /// std::invalid_argument when it exceeds T0.
-  double BoundFor(const Params& params) const;
 };
 
 }  // namespace capsubot

@@ -3,6 +3,7 @@
 // saw: the search stage of the simulated objectives (the fastest motion from rest, docs/model.md
 // section 13), where every evaluation simulates the robot.
 
+#include <functional>
 #include <nlopt.hpp>
 #include <string>
 #include <vector>
@@ -32,5 +33,44 @@ OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, 
 /// `count`: two points are the same when every coordinate differs by at most `same`.
 std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floor, int count,
                                          double same);
+
+/// A search of a box whose objective simulates (the fastest motion from rest, the design's
+/// motion from rest): a global stage from `start`, a local polish from the best distinct
+/// feasible point the objective has seen, then the best distinct candidates, which the caller
+/// re-checks with its full settings.
+struct BoxSearch {
+  nlopt::func objective = nullptr;  ///< maximised; it records every point it scores
+  void* data = nullptr;             ///< the objective's data
+  /// The points the objective has seen, with their scores (the search ranks them).
+  std::function<std::vector<BoxPoint>()> seen;
+  /// Wall-clock seconds left for a stage; a stage with none left is skipped.
+  std::function<double()> seconds_left;
+  /// Told the name of each stage before it runs ("global search", "local polish"); optional.
+  std::function<void(const char* stage)> on_stage;
+  std::vector<double> lower, upper;  ///< the box
+  std::vector<double> start;         ///< first point of the global stage
+  nlopt::algorithm global = nlopt::GN_DIRECT_L;
+  nlopt::algorithm local = nlopt::LN_SBPLX;
+  int global_evaluations = 0;  ///< budget of the global stage (0: skipped)
+  int local_evaluations = 0;   ///< budget of the local polish (0: skipped)
+  double rel_tol = 0.0;        ///< relative tolerance of both stages (y and value)
+  double infeasible = 0.0;     ///< the score of an infeasible point: never a candidate
+  double same = 0.0;           ///< two points are one candidate within this (BestDistinctPoints)
+  int candidates = 1;          ///< distinct candidates returned, at most
+};
+
+/// What a box search found.
+struct BoxSearchResult {
+  /// The global stage's status, replaced by the local polish's unless only the global one
+  /// stopped at the time limit.
+  OptimizeStatus status = OptimizeStatus::kOk;
+  bool max_time = false;             ///< a stage stopped at, or was skipped at, the limit
+  std::string message;               ///< NLopt's exceptions, if any
+  std::vector<BoxPoint> candidates;  ///< the best distinct feasible points, best first
+};
+
+/// Runs the stages of `search` (global, then local polish with an initial step of 5 % of each
+/// side) and returns the candidates to re-check.
+BoxSearchResult SearchBox(const BoxSearch& search);
 
 }  // namespace capsubot::detail
