@@ -22,7 +22,8 @@ declare -A allowed=(
   [reach]="numerics model parallel orbit simulate attract optimize"
   [design]="numerics model parallel orbit simulate attract optimize reach"
   [sweep]="numerics model parallel io orbit simulate attract optimize reach design"
-  [report]="numerics model parallel io orbit simulate attract continue optimize reach design sweep"
+  [job]="numerics model parallel io orbit simulate attract continue optimize reach design sweep"
+  [report]="numerics model parallel io orbit simulate attract continue optimize reach design sweep job"
 )
 # The front ends may use every stage, through its public headers.
 front_ends="${!allowed[*]}"
