@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -39,6 +40,13 @@ std::vector<double> ParseCoefficients(const char* option, const std::string& tex
 
 constexpr const char* kIntegerValidator = "integer";
 
+// A phase beyond one turn is valid (up to kMaxPhase, where the refusal says the same), but often
+// a value meant in degrees: say how it is read.
+void NotePhaseInRadians(const std::string& name, const std::string& text, double value) {
+  fmt::print(stderr, "capsubot: note: {} = {} is {:.4g} turns: phases are in radians\n", name, text,
+             value / kTau);
+}
+
 // The transform of a numeric option: the strict parse, then the value in a form CLI11's own
 // conversion reads back exactly (shortest round-trip, plain decimal integers).
 // `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max);
@@ -48,7 +56,10 @@ CLI::Validator NumberText(const std::string& name, bool allow_inf, bool phase) {
       [name, allow_inf, phase](std::string& text) {
         if (allow_inf && text == "inf") return std::string();
         try {
-          text = FormatNumber(phase ? ParsePhase(text, name) : ParseNumber(text, name));
+          const double value = phase ? ParsePhase(text, name) : ParseNumber(text, name);
+          if (phase && std::abs(value) > kTau && std::abs(value) <= kMaxPhase)
+            NotePhaseInRadians(name, text, value);
+          text = FormatNumber(value);
           return std::string();
         } catch (const std::invalid_argument& e) {
           return std::string(e.what());

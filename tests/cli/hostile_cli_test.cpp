@@ -533,7 +533,12 @@ std::vector<Case> Cases() {
        "psi = 1e+300 is invalid: expected a phase |psi| <= 1e+06 rad", none},
       // -2.9 + 10^5 turns as a double: its exact remainder (300-bit arithmetic), not -2.9.
       {"SolveLargePhaseIsReducedExactly", "solve --A 0.5 --c 0.5 --phi0 628315.6307179587 --json",
-       0, "", none, "", "", "\"phi0\":-2.899999999974789"},
+       0, "--phi0 = 628315.6307179587 is 1e+05 turns: phases are in radians", none, "", "",
+       "\"phi0\":-2.899999999974789"},
+      // A phase of more than a turn is most often meant in degrees: the note says how it is read.
+      {"SolvePhaseInDegreesGetsANote", "solve --A 0.3 --c 0.4 --phi0 90", 0,
+       "capsubot: note: --phi0 = 90 is 14.32 turns: phases are in radians", none, "", "",
+       "one-impact periodic orbit"},
       // A friction bound that dwarfs the motor: the design answers after a bounded number of
       // robots (it refined every orbit search to its bound, a minute and more).
       {"DesignHugeFrictionStopsAtItsWorkBound",
@@ -543,7 +548,7 @@ std::vector<Case> Cases() {
   };
 }
 
-constexpr int kCaseCount = 111;
+constexpr int kCaseCount = 112;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
