@@ -10,7 +10,9 @@
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/reach/reach_effort.hpp"
 #include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/from_rest_text.hpp"
 #include "capsubot/report/optimize_json.hpp"
 #include "cli.hpp"
 
@@ -20,6 +22,8 @@ namespace capsubot::app {
 // Python module.
 using json::FromRestJson;
 using json::ReachJson;
+using report::FromRestText;
+using report::ReachText;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {
@@ -33,6 +37,9 @@ struct FromRestCliOptions {
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
   /// naming the option for a bad grid.
   FromRestOptions Check() const;
+  /// The effort of the reach search (grid of --reach-starts, budgets, time limit); throws
+  /// std::invalid_argument naming the option for a bad grid.
+  ReachEffort Effort() const;
   /// The reach options: search grid, budgets, time limit, full check; alpha fixed if given
   /// (not NaN), force bound (NaN: T0).
   ReachOptions Reach(double force_bound, double alpha) const;
@@ -46,18 +53,5 @@ void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& options);
 /// Adds the evaluation budgets of the reach search: --reach-starts, --reach-evaluations,
 /// --reach-local-evaluations (not its wall-clock limit --reach-seconds).
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
-
-/// CSV for the figure of what the robot reaches (columns gait, row, mean_velocity, fraction,
-/// period, impacts_right, impacts_left, one_impact_orbit): the robust gait's promised speed
-/// (row "promised", empty fraction), its attractors from rest, the reach winner's attractors.
-/// Written into `file` (opened before the work), then committed.
-void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const ReachResult& reach);
-
-/// "from rest        reached from rest in ..." (one line) after `indent` spaces.
-std::string FromRestText(const GaitFromRest& report, int indent = 4);
-
-/// The fastest motion from rest in a few indented lines: force, alpha, speed, attractors,
-/// spread.
-std::string ReachText(const ReachResult& reach);
 
 }  // namespace capsubot::app

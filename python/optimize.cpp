@@ -2,8 +2,6 @@
 // (section 12), every gait checked from rest, as `capsubot optimize --json`: one problem, the
 // fastest motion from rest (reach, section 13), or the main job without one.
 
-#include "capsubot/optimize/optimize.hpp"
-
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -14,6 +12,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/job/optimize_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/optimize_json.hpp"
 
@@ -21,89 +20,10 @@ namespace capsubot::python {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The search the caller asks for, and the check from rest of every gait and the reach search;
-// search.interrupt is asked by every stage of the run.
-struct SearchArgs {
-  SearchRequest search;
-  std::string from_rest_starts, reach_starts;
-  int reach_evaluations, reach_local_evaluations;
-  double reach_seconds;
-  int threads;
-
-  // The full check from rest of a gait, asking the run's interrupt.
-  FromRestOptions Check() const {
-    FromRestOptions check = FromRestCheck(from_rest_starts, threads);
-    check.attractor.interrupt = search.interrupt;
-    return check;
-  }
-};
-
-// The reach search (docs/model.md section 13): its grid and budgets, the full check from rest,
-// alpha fixed if given (NaN: free).
-ReachOptions ReachFor(const SearchArgs& a, double alpha) {
-  ReachOptions r;
-  r.force_bound = a.search.gait.force_bound;
-  r.alpha = alpha;
-  ParseStarts("reach_starts", a.reach_starts, r.search);
-  r.search.attractor.threads = CapThreads(a.threads);
-  r.search.attractor.interrupt = a.search.interrupt;
-  r.check = a.Check();
-  r.global_evaluations = a.reach_evaluations;
-  r.local_evaluations = a.reach_local_evaluations;
-  r.max_seconds = a.reach_seconds;
-  r.Validate();
-  return r;
-}
-
-// The main job: the paper's problem P1 at c = A = T0/2 (no margins), the fastest robust gait
-// (P2 with the margins) checked from rest, the fastest motion from rest seeded with it, how far
-// T0, e and alpha can move before its motion is lost, and the exact optima without margins
-// (valid; stable).
-nlohmann::json MainJob(const Params& p, const SearchArgs& a) {
-  Params exact = p;
-  exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
-  const ReachOptions reach_options = ReachFor(a, kNaN);
-  const OptimizeResult paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
-                                             PhaseOptionsFor(a.search.WithRhoMax(kInf)));
-  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-  const ReachResult reach = OptimizeReach(p, robust, reach_options);
-  const OptimizeResult fastest =
-      OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(kInf)));
-  const OptimizeResult stable = OptimizeForcing(exact, ForcingOptionsFor(a.search.WithRhoMax(1.0)));
-  GaitRobustness robustness;
-  if (robust.found()) robustness = ComputeGaitRobustness(robust.solution.orbit);
-  return json::MainJobJson(
-      paper, robust, reach, fastest, stable, robustness, p, a.search.gait.rho_max,
-      std::isnan(a.search.gait.force_bound) ? p.T0 : a.search.gait.force_bound);
-}
-
-// The reach problem: the fastest motion from rest, seeded with the robust gait.
-nlohmann::json Reach(const Params& p, const SearchArgs& a, std::optional<double> alpha) {
-  const ReachOptions options = ReachFor(a, alpha.value_or(kNaN));
-  const OptimizeResult robust = OptimizeForcing(p, ForcingOptionsFor(a.search));
-  return json::ReachProblemJson(OptimizeReach(p, robust, options), p, a.search.gait.rho_max);
-}
-
-nlohmann::json Problem(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                       const Params& p, const SearchArgs& a) {
-  const FromRestOptions check = a.Check();
-  OptimizeResult r;
-  if (problem == "phase") {
-    r = OptimizePhase(Forcing::Harmonic(*A, *c, 0.0), p, PhaseOptionsFor(a.search));
-  } else if (problem == "forcing") {
-    r = OptimizeForcing(p, ForcingOptionsFor(a.search));
-  } else {
-    r = OptimizeFourier(p, FourierOptionsFor(a.search));
-  }
-  const GaitFromRest from_rest = CheckGaitFromRest(r.solution.orbit, p, check);
-  return json::ProblemJson(r, problem.c_str(), from_rest, p, a.search.gait.rho_max);
-}
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
 void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                  std::optional<double> alpha, const SearchArgs& a) {
+                  std::optional<double> alpha, const SearchRequest& search) {
   const auto reject = [&problem](const char* name, const char* runs) {
     throw std::invalid_argument(fmt::format(
         "{} conflicts with {}: expected {} only with {}", name,
@@ -112,10 +32,10 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
   if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
-  if (problem == "phase" && !std::isnan(a.search.gait.force_bound)) {
+  if (problem == "phase" && !std::isnan(search.gait.force_bound)) {
     reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
   }
-  if (problem == "phase" && a.search.starts) {
+  if (problem == "phase" && search.starts) {
     reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
   }
   if (problem == "phase" && (!A || !c)) {
@@ -150,29 +70,38 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
     throw std::invalid_argument(
         fmt::format("bound = {} is invalid: expected a finite bound > 0 (at most T0)", *bound));
   }
-  SearchArgs args{{},
-                  from_rest_starts,
-                  reach_starts,
-                  reach_evaluations,
-                  reach_local_evaluations,
-                  reach_seconds,
-                  threads};
-  args.search.gait.force_bound = bound.value_or(kNaN);
-  args.search.gait.rho_max = stable ? 1.0 : rho_max.value_or(kRobustRhoMax);
-  args.search.max_time = max_time;
-  args.search.global_algorithm = global_algorithm;
-  args.search.local_algorithm = local_algorithm;
-  args.search.starts = starts;
-  args.search.global_evaluations = global_evaluations;
-  args.search.hops = hops;
-  args.search.harmonics = harmonics;
-  RejectUnused(name, A, c, alpha, args);
-  const Params params{T0, e, margin, margin_stroke, stick_margin};
-  params.Validate();
+  OptimizeJobOptions job;
+  job.search.gait.force_bound = bound.value_or(kNaN);
+  if (stable || rho_max) job.search.gait.rho_max = stable ? 1.0 : *rho_max;
+  job.search.max_time = max_time;
+  job.search.global_algorithm = global_algorithm;
+  job.search.local_algorithm = local_algorithm;
+  job.search.starts = starts;
+  job.search.global_evaluations = global_evaluations;
+  job.search.hops = hops;
+  job.search.harmonics = harmonics;
+  RejectUnused(name, A, c, alpha, job.search);
+  job.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  job.check = FromRestCheck(from_rest_starts, threads);
+  ReachEffort effort;
+  effort.global_evaluations = reach_evaluations;
+  effort.local_evaluations = reach_local_evaluations;
+  effort.max_seconds = reach_seconds;
+  if (name.empty() || name == "reach") {
+    FromRestOptions grid;
+    ParseStarts("reach_starts", reach_starts, grid);
+    effort.n_x = grid.n_x;
+    effort.n_psi = grid.n_psi;
+  }
+  if (name.empty()) job.mode = MainJob{effort};
+  if (name == "phase") job.mode = PhaseProblem{*A, *c};
+  if (name == "forcing") job.mode = ForcingProblem{};
+  if (name == "fourier") job.mode = FourierProblem{};
+  if (name == "reach") job.mode = ReachProblem{effort, alpha.value_or(kNaN)};
+  job.Validate();
   const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
-    args.search.interrupt = signals.AsInterrupt();
-    if (name.empty()) return MainJob(params, args);
-    return name == "reach" ? Reach(params, args, alpha) : Problem(name, A, c, params, args);
+    job.search.interrupt = signals.AsInterrupt();
+    return json::OptimizeJobJson(RunOptimizeJob(job));
   });
   return py::dict(ToPython(result));
 }
@@ -239,11 +168,12 @@ void BindOptimize(py::module_& m) {
                           kFromRestArgsDoc + kOptimizeOptionsDoc + kUnits;
   const ForcingDesignOptions p2;
   const ReachOptions reach;
+  const Params robust = OptimizeJobOptions::RobustParams();
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
         py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("margin_stroke") = kRobustMarginStroke,
-        py::arg("stick_margin") = kRobustStickMargin, py::arg("bound") = py::none(),
+        py::arg("margin_stroke") = robust.margin_stroke,
+        py::arg("stick_margin") = robust.stick_margin, py::arg("bound") = py::none(),
         py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
         py::arg("max_time") = p2.max_time, py::arg("harmonics") = FourierOptions{}.harmonics,
         py::arg("global_algorithm") = p2.effort.global_algorithm,

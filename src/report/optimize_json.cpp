@@ -48,12 +48,14 @@ void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
   j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
 }
 
-nlohmann::json ProblemJson(const OptimizeResult& r, const char* problem,
-                           const GaitFromRest& from_rest, const Params& params, double rho_max) {
-  nlohmann::json j = OptimizeResultJson(r, problem);
-  j["from_rest"] = FromRestJson(from_rest);
-  AddRequirementsJson(j, params, rho_max);
-  if (std::string(problem) == "fourier") {
+namespace {
+
+nlohmann::json Json(const ProblemJobResult& pr) {
+  const OptimizeResult& r = pr.result;
+  nlohmann::json j = OptimizeResultJson(r, pr.problem.c_str());
+  j["from_rest"] = FromRestJson(pr.from_rest);
+  AddRequirementsJson(j, pr.params, pr.rho_max);
+  if (pr.problem == "fourier") {
     j["baseline_I"] = r.baseline_I;
     j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : OptimizeResult::kNaN;
   }
@@ -98,34 +100,38 @@ nlohmann::json ReachJson(const ReachResult& r) {
   return j;
 }
 
-nlohmann::json ReachProblemJson(const ReachResult& reach, const Params& params, double rho_max) {
-  nlohmann::json j = ReachJson(reach);
-  AddRequirementsJson(j, params, rho_max);
+nlohmann::json Json(const ReachJobResult& r) {
+  nlohmann::json j = ReachJson(r.reach);
+  AddRequirementsJson(j, r.params, r.rho_max);
   return j;
 }
 
-nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& robust,
-                           const ReachResult& reach, const OptimizeResult& fastest,
-                           const OptimizeResult& fastest_stable, const GaitRobustness& robustness,
-                           const Params& params, double rho_max, double force_bound) {
+nlohmann::json Json(const MainJobResult& r) {
   nlohmann::json j;
-  AddRequirementsJson(j, params, rho_max);
-  j["force_bound"] = force_bound;
-  j["paper"] = OptimizeResultJson(paper, "phase");
+  AddRequirementsJson(j, r.params, r.gait.rho_max);
+  j["force_bound"] = r.gait.force_bound;
+  j["paper"] = OptimizeResultJson(r.paper, "phase");
   j["paper"]["note"] =
       "P1: F = A sin(phi + phi0) + c with c = A = T0/2, best phi0 over valid orbits (no margins)";
-  j["robust"] = OptimizeResultJson(robust, "forcing");
+  j["robust"] = OptimizeResultJson(r.robust, "forcing");
   j["robust"]["note"] =
       "P2: A, c, phi0 free with A + c <= force_bound, the margins and spectral radius <= "
       "rho_max; checked from rest";
-  j["robust"]["from_rest"] = FromRestJson(reach.seed.from_rest);
-  j["reach"] = ReachJson(reach);
-  j["fastest"] = OptimizeResultJson(fastest, "forcing");
+  j["robust"]["from_rest"] = FromRestJson(r.reach.seed.from_rest);
+  j["reach"] = ReachJson(r.reach);
+  j["fastest"] = OptimizeResultJson(r.fastest, "forcing");
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
-  j["fastest_stable"] = OptimizeResultJson(fastest_stable, "forcing");
+  j["fastest_stable"] = OptimizeResultJson(r.stable, "forcing");
   j["fastest_stable"]["note"] = "P2 without margins, spectral radius <= 1";
-  j["robustness"] = robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(robustness);
+  j["robustness"] =
+      r.robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.robustness);
   return j;
+}
+
+}  // namespace
+
+nlohmann::json OptimizeJobJson(const OptimizeJobResult& result) {
+  return std::visit([](const auto& r) { return Json(r); }, result);
 }
 
 }  // namespace capsubot::json

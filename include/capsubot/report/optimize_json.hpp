@@ -7,6 +7,7 @@
 
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/continue/gait_robustness.hpp"
+#include "capsubot/job/optimize_job.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
@@ -23,12 +24,6 @@ nlohmann::json OptimizeResultJson(const OptimizeResult& result, const char* prob
 /// "margin_stroke", "stick_margin", "rho_max" (null: infinity, no requirement).
 void AddRequirementsJson(nlohmann::json& j, const Params& params, double rho_max);
 
-/// The object of one problem (phase, forcing, fourier): OptimizeResultJson, the requirements,
-/// "from_rest" (FromRestJson of the optimum checked from rest) and, for fourier, "baseline_I"
-/// and "gain" (I / baseline_I - 1, null without a valid gait).
-nlohmann::json ProblemJson(const OptimizeResult& result, const char* problem,
-                           const GaitFromRest& from_rest, const Params& params, double rho_max);
-
 /// The `reach` object: A, c, phi0, alpha, mean_velocity, status, message, attractors,
 /// summary, spread {chatter_small, chatter_large, e_0999, max_relative_deviation,
 /// event_limit_starts}, seed_won, robust_to_settings, evaluations, rejected_evaluations,
@@ -36,18 +31,15 @@ nlohmann::json ProblemJson(const OptimizeResult& result, const char* problem,
 /// alpha, I, v_mean, mean_velocity_from_rest, reached} (null without a checked seed).
 nlohmann::json ReachJson(const ReachResult& reach);
 
-/// The object of the reach problem: ReachJson with the requirements of its seed (the robust
-/// gait).
-nlohmann::json ReachProblemJson(const ReachResult& reach, const Params& params, double rho_max);
-
-/// The main job: the requirements, "force_bound" and the results "paper" (P1 at c = A = T0/2
-/// without margins), "robust" (P2 with the margins, with "from_rest": the reach seed's
-/// check), "reach", "fastest" and "fastest_stable" (P2 without margins), each with a "note",
-/// and "robustness": the robust gait's motion continued in T0, e and alpha (RobustnessJson;
-/// null without a robust gait).
-nlohmann::json MainJobJson(const OptimizeResult& paper, const OptimizeResult& robust,
-                           const ReachResult& reach, const OptimizeResult& fastest,
-                           const OptimizeResult& fastest_stable, const GaitRobustness& robustness,
-                           const Params& params, double rho_max, double force_bound);
+/// The object of the job's result. One problem (phase, forcing, fourier): OptimizeResultJson,
+/// the requirements, "from_rest" (FromRestJson of the optimum checked from rest) and, for
+/// fourier, "baseline_I" and "gain" (I / baseline_I - 1, null without a valid gait). The reach
+/// problem: ReachJson with the requirements of its seed (the robust gait). The main job: the
+/// requirements, "force_bound" and the results "paper" (P1 at c = A = T0/2 without margins),
+/// "robust" (P2 with the margins, with "from_rest": the reach seed's check), "reach",
+/// "fastest" and "fastest_stable" (P2 without margins), each with a "note", and "robustness":
+/// the robust gait's motion continued in T0, e and alpha (RobustnessJson; null without a
+/// robust gait).
+nlohmann::json OptimizeJobJson(const OptimizeJobResult& result);
 
 }  // namespace capsubot::json

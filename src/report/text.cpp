@@ -1,10 +1,10 @@
-#include "report.hpp"
+#include "capsubot/report/text.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-namespace capsubot::app {
+namespace capsubot::report {
 
 std::string Num(double value, int digits) {
   return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
@@ -82,4 +82,4 @@ std::string StabilityTable(const Stability& st) {
   return t;
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::report

@@ -1,0 +1,110 @@
+#pragma once
+// The job of `capsubot optimize` (and the Python module's optimize) in one call: the main job
+// (the paper's problem, the fastest robust gait checked from rest, the fastest motion from rest,
+// how far the robust gait's motion carries, the exact optima), one problem P1, P2 or P3 checked
+// from rest, or the reach problem (docs/model.md sections 7, 12, 13).
+
+#include <limits>
+#include <string>
+#include <variant>
+
+#include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/continue/gait_robustness.hpp"
+#include "capsubot/job/stage_callback.hpp"
+#include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
+#include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/reach/optimize_reach.hpp"
+#include "capsubot/reach/reach_effort.hpp"
+
+namespace capsubot {
+
+/// The main job: P1 at c = A = T0/2 without margins, P2 with the job's margins checked from
+/// rest, the reach search seeded with it, its continuation in T0, e and alpha, P2 without
+/// margins (valid; stable).
+struct MainJob {
+  ReachEffort reach;
+};
+/// P1: the best impact phase phi0 for the force shape F = A sin(phi + phi0) + c.
+struct PhaseProblem {
+  double A = std::numeric_limits<double>::quiet_NaN();  ///< amplitude, finite and >= 0
+  double c = std::numeric_limits<double>::quiet_NaN();  ///< mean force, finite
+};
+/// P2: the best A, c, phi0 with A + c <= the force bound.
+struct ForcingProblem {};
+/// P3: the best force of SearchRequest::harmonics harmonics with max |F| <= the force bound.
+struct FourierProblem {};
+/// The fastest motion from rest, seeded with the robust gait (P2).
+struct ReachProblem {
+  ReachEffort reach;
+  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< fixed 0 < alpha < 1; NaN: free
+};
+
+/// What the job runs: each mode holds the settings only it uses.
+using OptimizeMode =
+    std::variant<MainJob, PhaseProblem, ForcingProblem, FourierProblem, ReachProblem>;
+
+/// The name of a mode: "" (the main job), "phase", "forcing", "fourier", "reach".
+const char* OptimizeModeName(const OptimizeMode& mode);
+
+struct OptimizeJobOptions {
+  OptimizeMode mode;
+  /// The robot and the margins of a robust gait (docs/model.md section 12).
+  Params params = RobustParams();
+  /// The gait asked for (force bound, rho_max) and the search of P1-P3; its interrupt is asked
+  /// by every stage of the job.
+  SearchRequest search = RobustRequest();
+  /// The from-rest check of every reported gait (the reach winner's re-check too).
+  FromRestOptions check;
+  /// Told each stage of the job.
+  StageCallback on_stage;
+
+  /// The defaults of a robust gait: Params{} with the stroke and stick margins of
+  /// docs/model.md section 12.
+  static Params RobustParams();
+  /// SearchRequest{} with the stability requirement of a robust gait (kRobustRhoMax).
+  static SearchRequest RobustRequest();
+
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule.
+  void Validate() const;
+};
+
+/// The main job's results (MainJob).
+struct MainJobResult {
+  Params params;
+  GaitRequirements gait;      ///< the force bound (T0 when not given) and rho_max
+  OptimizeResult paper;       ///< P1 at c = A = T0/2, no margins
+  OptimizeResult robust;      ///< P2 with the margins (its from-rest check: reach.seed)
+  ReachResult reach;          ///< the fastest motion from rest
+  GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
+  OptimizeResult fastest;     ///< P2 without margins
+  OptimizeResult stable;      ///< P2 without margins, spectral radius <= 1
+};
+
+/// One problem P1, P2 or P3 and its optimum checked from rest.
+struct ProblemJobResult {
+  std::string problem;  ///< "phase", "forcing" or "fourier"
+  Params params;
+  double rho_max;
+  OptimizeResult result;
+  GaitFromRest from_rest;
+};
+
+/// The reach problem's result.
+struct ReachJobResult {
+  Params params;
+  double rho_max;  ///< the seed's stability requirement
+  ReachResult reach;
+};
+
+using OptimizeJobResult = std::variant<MainJobResult, ProblemJobResult, ReachJobResult>;
+
+/// Runs the job (options.Validate() first). Throws what the interrupt throws.
+OptimizeJobResult RunOptimizeJob(const OptimizeJobOptions& options);
+
+/// The force the job recommends: the robust gait's (main job), the winner's (reach), the
+/// optimum's (a problem).
+const Forcing& RecommendedForcing(const OptimizeJobResult& result);
+
+}  // namespace capsubot

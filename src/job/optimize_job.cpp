@@ -1,0 +1,161 @@
+#include "capsubot/job/optimize_job.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "capsubot/model/limits.hpp"
+#include "capsubot/optimize/optimize.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+// The full check from rest, asking the job's interrupt.
+FromRestOptions CheckOf(const OptimizeJobOptions& o) {
+  FromRestOptions check = o.check;
+  check.attractor.interrupt = o.search.interrupt;
+  return check;
+}
+
+// The reach search of the job: its effort, the request's force bound, the job's check.
+ReachOptions ReachOf(const OptimizeJobOptions& o, const ReachEffort& effort, double alpha) {
+  return effort.Options(o.search.gait.force_bound, alpha, CheckOf(o));
+}
+
+MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
+  const Params& p = o.params;
+  Params exact = p;  // the exact optima: no margins
+  exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
+  MainJobResult r;
+  r.params = p;
+  r.gait = o.search.gait;
+  r.gait.force_bound = o.search.gait.BoundFor(p);
+  // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2, best
+  // phase. Its force sits on the friction bound, so any stick margin would exclude it.
+  TellStage(o.on_stage, "optimize: 1/5 the paper's problem (P1)");
+  r.paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
+                          PhaseOptionsFor(o.search.WithRhoMax(kInf)));
+  // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
+  // seeded with it; 4. how far it carries; 5. the exact optima, valid and stable.
+  TellStage(o.on_stage, "optimize: 2/5 the fastest robust gait (P2)");
+  r.robust = OptimizeForcing(p, ForcingOptionsFor(o.search));
+  TellStage(o.on_stage,
+            "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
+  r.reach = OptimizeReach(p, r.robust, ReachOf(o, job.reach, kNaN));
+  TellStage(o.on_stage,
+            "optimize: 4/5 how far T0, e and alpha can move (continuation of the robust gait)");
+  if (r.robust.found()) r.robustness = ComputeGaitRobustness(r.robust.solution.orbit);
+  TellStage(o.on_stage, "optimize: 5/5 the exact optima without margins");
+  r.fastest = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(kInf)));
+  r.stable = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(1.0)));
+  TellStage(o.on_stage, "");
+  return r;
+}
+
+ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
+  TellStage(o.on_stage, "optimize: 1/2 the robust gait that seeds the search (P2)");
+  const OptimizeResult robust = OptimizeForcing(o.params, ForcingOptionsFor(o.search));
+  TellStage(o.on_stage,
+            "optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
+  ReachJobResult r{o.params, o.search.gait.rho_max,
+                   OptimizeReach(o.params, robust, ReachOf(o, job.reach, job.alpha))};
+  TellStage(o.on_stage, "");
+  return r;
+}
+
+ProblemJobResult RunProblem(const OptimizeJobOptions& o) {
+  const std::string name = OptimizeModeName(o.mode);
+  TellStage(o.on_stage, fmt::format("optimize: --problem {}", name));
+  OptimizeResult result = std::visit(
+      Overloaded{
+          [&](const PhaseProblem& shape) {
+            return OptimizePhase(Forcing::Harmonic(shape.A, shape.c, 0.0), o.params,
+                                 PhaseOptionsFor(o.search));
+          },
+          [&](const FourierProblem&) {
+            return OptimizeFourier(o.params, FourierOptionsFor(o.search));
+          },
+          [&](const auto&) { return OptimizeForcing(o.params, ForcingOptionsFor(o.search)); }},
+      o.mode);
+  TellStage(o.on_stage, "optimize: the optimum checked from rest (simulated starts)");
+  GaitFromRest from_rest = CheckGaitFromRest(result.solution.orbit, o.params, CheckOf(o));
+  TellStage(o.on_stage, "");
+  return {name, o.params, o.search.gait.rho_max, std::move(result), std::move(from_rest)};
+}
+
+}  // namespace
+
+const char* OptimizeModeName(const OptimizeMode& mode) {
+  static constexpr const char* kNames[] = {"", "phase", "forcing", "fourier", "reach"};
+  return kNames[mode.index()];
+}
+
+Params OptimizeJobOptions::RobustParams() {
+  Params p;
+  p.margin_stroke = kRobustMarginStroke;
+  p.stick_margin = kRobustStickMargin;
+  return p;
+}
+
+SearchRequest OptimizeJobOptions::RobustRequest() {
+  SearchRequest r;
+  r.gait.rho_max = kRobustRhoMax;
+  return r;
+}
+
+void OptimizeJobOptions::Validate() const {
+  params.Validate();
+  if (const auto* shape = std::get_if<PhaseProblem>(&mode)) {
+    if (!(std::isfinite(shape->A) && shape->A >= 0.0)) {
+      throw std::invalid_argument(fmt::format(
+          "A = {} is invalid: expected a finite amplitude A >= 0 of F = A sin(phi + phi0) + c",
+          shape->A));
+    }
+    if (!std::isfinite(shape->c)) {
+      throw std::invalid_argument(
+          fmt::format("c = {} is invalid: expected a finite mean force c", shape->c));
+    }
+    PhaseOptionsFor(search).Validate();
+  } else {
+    const ForcingDesignOptions design = ForcingOptionsFor(search);
+    design.Validate();
+    design.gait.BoundFor(params);
+    if (std::holds_alternative<FourierProblem>(mode)) FourierOptionsFor(search).Validate();
+  }
+  check.Validate();
+  if (const auto* job = std::get_if<MainJob>(&mode)) ReachOf(*this, job->reach, kNaN).Validate();
+  if (const auto* job = std::get_if<ReachProblem>(&mode)) {
+    ReachOf(*this, job->reach, job->alpha).Validate();
+  }
+}
+
+OptimizeJobResult RunOptimizeJob(const OptimizeJobOptions& options) {
+  options.Validate();
+  if (const auto* job = std::get_if<MainJob>(&options.mode)) return RunMain(options, *job);
+  if (const auto* job = std::get_if<ReachProblem>(&options.mode)) return RunReach(options, *job);
+  return RunProblem(options);
+}
+
+const Forcing& RecommendedForcing(const OptimizeJobResult& result) {
+  return std::visit(
+      Overloaded{
+          [](const MainJobResult& r) -> const Forcing& { return r.robust.solution.orbit.forcing; },
+          [](const ProblemJobResult& r) -> const Forcing& {
+            return r.result.solution.orbit.forcing;
+          },
+          [](const ReachJobResult& r) -> const Forcing& { return r.reach.forcing; }},
+      result);
+}
+
+}  // namespace capsubot

@@ -1,0 +1,128 @@
+// The optimize job is the calls it stands for, in one: its results equal those of the stages
+// called directly, it tells its stages, lets an interrupt through, and refuses bad options
+// before any work, naming the parameter.
+
+#include "capsubot/job/optimize_job.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "capsubot/optimize/optimize.hpp"
+
+namespace capsubot {
+namespace {
+
+// A small check from rest: 3 x 3 starts.
+FromRestOptions SmallCheck() {
+  FromRestOptions check;
+  check.n_x = check.n_psi = 3;
+  return check;
+}
+
+OptimizeJobOptions PhaseJob(double A, double c) {
+  OptimizeJobOptions job;
+  job.mode = PhaseProblem{A, c};
+  job.check = SmallCheck();
+  return job;
+}
+
+TEST(OptimizeJob, PhaseProblemIsP1CheckedFromRest) {
+  const OptimizeJobOptions job = PhaseJob(0.3, 0.4);
+  const auto result = std::get<ProblemJobResult>(RunOptimizeJob(job));
+  const OptimizeResult direct =
+      OptimizePhase(Forcing::Harmonic(0.3, 0.4, 0.0), job.params, PhaseOptionsFor(job.search));
+  EXPECT_EQ(result.problem, "phase");
+  EXPECT_EQ(result.result.status, direct.status);
+  EXPECT_EQ(result.result.solution.orbit.forcing.phi0(), direct.solution.orbit.forcing.phi0());
+  EXPECT_EQ(result.result.solution.orbit.I, direct.solution.orbit.I);
+  const GaitFromRest from_rest = CheckGaitFromRest(direct.solution.orbit, job.params, job.check);
+  EXPECT_EQ(result.from_rest.attractors.starts, 9);
+  EXPECT_EQ(result.from_rest.reached, from_rest.reached);
+  EXPECT_EQ(result.from_rest.attractors.mean_velocity, from_rest.attractors.mean_velocity);
+  EXPECT_EQ(result.rho_max, kRobustRhoMax);  // the robust default of the job
+  EXPECT_EQ(result.params.margin_stroke, kRobustMarginStroke);
+  EXPECT_EQ(RecommendedForcing(OptimizeJobResult(result)).phi0(),
+            direct.solution.orbit.forcing.phi0());
+}
+
+TEST(OptimizeJob, TellsItsStagesInOrderAndEndsWithEmpty) {
+  OptimizeJobOptions job = PhaseJob(0.3, 0.4);
+  std::vector<std::string> stages;
+  job.on_stage = [&stages](const std::string& s) { stages.push_back(s); };
+  RunOptimizeJob(job);
+  ASSERT_EQ(stages.size(), 3U);
+  EXPECT_EQ(stages[0], "optimize: --problem phase");
+  EXPECT_EQ(stages[1], "optimize: the optimum checked from rest (simulated starts)");
+  EXPECT_EQ(stages[2], "");
+}
+
+TEST(OptimizeJob, AnInterruptAbandonsTheJob) {
+  struct Stop {};
+  OptimizeJobOptions job = PhaseJob(0.3, 0.4);
+  int asked = 0;
+  job.search.interrupt = [&asked] {
+    if (++asked == 3) throw Stop{};
+  };
+  EXPECT_THROW(RunOptimizeJob(job), Stop);
+  EXPECT_EQ(asked, 3);
+}
+
+TEST(OptimizeJob, ModeNamesAreTheProblemNames) {
+  EXPECT_STREQ(OptimizeModeName(MainJob{}), "");
+  EXPECT_STREQ(OptimizeModeName(PhaseProblem{}), "phase");
+  EXPECT_STREQ(OptimizeModeName(ForcingProblem{}), "forcing");
+  EXPECT_STREQ(OptimizeModeName(FourierProblem{}), "fourier");
+  EXPECT_STREQ(OptimizeModeName(ReachProblem{}), "reach");
+}
+
+// The message of Validate() for `job`, empty when it passes.
+std::string Refusal(const OptimizeJobOptions& job) {
+  try {
+    job.Validate();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OptimizeJob, BadOptionsAreRefusedNamingTheParameter) {
+  EXPECT_EQ(Refusal(PhaseJob(0.3, 0.4)), "");
+  EXPECT_NE(Refusal(PhaseJob(std::nan(""), 0.4)).find("A = nan"), std::string::npos);
+  EXPECT_NE(Refusal(PhaseJob(-1.0, 0.4)).find("A = -1"), std::string::npos);
+  EXPECT_NE(Refusal(PhaseJob(0.3, HUGE_VAL)).find("c = inf"), std::string::npos);
+
+  OptimizeJobOptions job;  // the main job
+  EXPECT_EQ(Refusal(job), "");
+  job.search.gait.rho_max = 0.0;
+  EXPECT_NE(Refusal(job).find("rho_max = 0"), std::string::npos);
+  job = OptimizeJobOptions{};
+  job.search.gait.force_bound = 2.0;  // above T0 = 1
+  EXPECT_NE(Refusal(job).find("force_bound = 2"), std::string::npos);
+  job = OptimizeJobOptions{};
+  job.mode = ReachProblem{ReachEffort{}, 1.5};
+  EXPECT_NE(Refusal(job).find("alpha = 1.5"), std::string::npos);
+  job.mode = MainJob{ReachEffort{0, 4}};
+  EXPECT_NE(Refusal(job).find("n_x = 0"), std::string::npos);
+  job = OptimizeJobOptions{};
+  job.check.n_psi = 0;
+  EXPECT_NE(Refusal(job).find("n_psi = 0"), std::string::npos);
+  job = OptimizeJobOptions{};
+  job.params.e = 1.5;
+  EXPECT_NE(Refusal(job).find("e = 1.5"), std::string::npos);
+}
+
+TEST(OptimizeJob, RunValidatesFirst) {
+  OptimizeJobOptions job = PhaseJob(0.3, 0.4);
+  bool told = false;
+  job.on_stage = [&told](const std::string&) { told = true; };
+  job.check.n_x = 0;
+  EXPECT_THROW(RunOptimizeJob(job), std::invalid_argument);
+  EXPECT_FALSE(told);  // no stage began
+}
+
+}  // namespace
+}  // namespace capsubot
