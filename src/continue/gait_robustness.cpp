@@ -40,17 +40,16 @@ MotionLimit NearestLimit(const Branch& b, bool forward) {
   return limit;
 }
 
-ParameterRobustness Continue(const Orbit& orbit, const char* name, double value, double from,
+// The motion through `start` continued in one parameter over [from, to], both ways.
+ParameterRobustness Continue(const MotionToContinue& m, const char* name, double value, double from,
                              double to, const ContinuationOptions& continuation) {
   ParameterRobustness r;
   r.name = name;
-  const Params params{orbit.T0, orbit.e, 0.0};
   ContinuationOptions o = continuation;
   o.from = from;
   o.to = to;
   o.both_directions = true;
-  const Branch b = ContinueParameter(orbit.forcing, params, orbit.alpha, name,
-                                     OrbitImpactState(orbit, orbit.forcing), o);
+  const Branch b = ContinueParameter(m.forcing, m.params, m.alpha, name, m.start, o);
   r.value = value;
   r.from = from;
   r.to = to;
@@ -115,16 +114,22 @@ void RobustnessOptions::Validate() const {
   }
 }
 
-GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options) {
+GaitRobustness ComputeMotionRobustness(const MotionToContinue& m,
+                                       const RobustnessOptions& options) {
   options.Validate();
   GaitRobustness g;
   const ContinuationOptions& c = options.continuation;
-  g.parameters.push_back(Continue(orbit, "T0", orbit.T0, orbit.T0 / options.t0_factor,
-                                  orbit.T0 * options.t0_factor, c));
-  g.parameters.push_back(Continue(orbit, "e", orbit.e, 0.0, 1.0, c));
-  g.parameters.push_back(
-      Continue(orbit, "alpha", orbit.alpha, 0.5 * orbit.alpha, 0.5 * (1.0 + orbit.alpha), c));
+  const double T0 = m.params.T0, e = m.params.e, alpha = m.alpha;
+  g.parameters.push_back(Continue(m, "T0", T0, T0 / options.t0_factor, T0 * options.t0_factor, c));
+  g.parameters.push_back(Continue(m, "e", e, 0.0, 1.0, c));
+  g.parameters.push_back(Continue(m, "alpha", alpha, 0.5 * alpha, 0.5 * (1.0 + alpha), c));
   return g;
+}
+
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options) {
+  return ComputeMotionRobustness({orbit.forcing, Params{orbit.T0, orbit.e, 0.0}, orbit.alpha,
+                                  OrbitImpactState(orbit, orbit.forcing)},
+                                 options);
 }
 
 std::string GaitRobustness::Summary(const std::string& indent) const {

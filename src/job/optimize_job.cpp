@@ -33,6 +33,14 @@ ReachOptions ReachOf(const OptimizeJobOptions& o, const ReachEffort& effort, dou
   return effort.Options(o.search.gait.force_bound, alpha, CheckOf(o));
 }
 
+// The reach winner's most common motion from rest when it is periodic (its section state is on
+// it; the continuation's own Newton shooting refines it), else null.
+const Motion* PeriodicMotionFromRest(const ReachResult& reach) {
+  if (std::isnan(reach.mean_velocity) || reach.attractors.attractors.empty()) return nullptr;
+  const Motion& m = reach.attractors.attractors.front().motion;
+  return m.status == MotionStatus::kPeriodic ? &m : nullptr;
+}
+
 MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
   const Params& p = o.params;
   Params exact = p;  // the exact optima: no margins
@@ -54,8 +62,12 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
             "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
   r.reach = OptimizeReach(p, r.robust, ReachOf(o, job.reach, kNaN));
   TellStage(o.on_stage,
-            "optimize: 4/5 how far T0, e and alpha can move (continuation of the robust gait)");
+            "optimize: 4/5 how far T0, e and alpha can move (continuation of both motions)");
   if (r.robust.found()) r.robustness = ComputeGaitRobustness(r.robust.solution.orbit);
+  if (const Motion* motion = PeriodicMotionFromRest(r.reach)) {
+    r.reach_robustness =
+        ComputeMotionRobustness({r.reach.forcing, p, r.reach.alpha, motion->section});
+  }
   TellStage(o.on_stage, "optimize: 5/5 the exact optima without margins");
   r.fastest = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(kInf)));
   r.stable = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(1.0)));

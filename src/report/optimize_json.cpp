@@ -119,6 +119,8 @@ nlohmann::json Json(const MainJobResult& r) {
       "rho_max; checked from rest";
   j["robust"]["from_rest"] = FromRestJson(r.reach.seed.from_rest);
   j["reach"] = ReachJson(r.reach);
+  j["reach"]["robustness"] =
+      r.reach_robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.reach_robustness);
   j["fastest"] = OptimizeResultJson(r.fastest, "forcing");
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = OptimizeResultJson(r.stable, "forcing");

@@ -85,10 +85,12 @@ std::string GaitText(const OptimizeResult& r, double rho_max) {
   return t;
 }
 
-// How far T0, e and alpha can move before the robust gait's motion is lost, in plain words.
-std::string RobustnessText(const GaitRobustness& robustness) {
-  return "    robustness       how far T0, e and alpha can move before this motion is lost\n"
-         "                     (its continuation, docs/continuation.md):\n" +
+// How far T0, e and alpha can move before a motion is lost, in plain words.
+std::string RobustnessText(const GaitRobustness& robustness, const char* motion) {
+  return fmt::format(
+             "    robustness       how far T0, e and alpha can move before {} is lost\n"
+             "                     (its continuation, docs/continuation.md):\n",
+             motion) +
          robustness.Summary("                       ");
 }
 
@@ -197,13 +199,20 @@ std::string ResultsText(const MainJobResult& r) {
       "   above; checked from rest on {} starts.\n",
       bound, reach.seed.from_rest.attractors.starts);
   t += robust.found() ? GaitText(robust, r.gait.rho_max) + FromRestText(reach.seed.from_rest) +
-                            RobustnessText(r.robustness)
+                            RobustnessText(r.robustness, "this motion")
                       : fmt::format("   Result: none found ({})\n", robust.message);
   t += fmt::format(
       "\n3. The fastest motion from rest (any number of impacts, A + c <= {:g}, alpha free),\n"
       "   simulated from every start:\n",
       bound);
   t += ReachText(reach);
+  if (!std::isnan(reach.mean_velocity)) {
+    t += r.reach_robustness.parameters.empty()
+             ? std::string(
+                   "    robustness       not followed: its most common motion from rest "
+                   "is not periodic\n")
+             : RobustnessText(r.reach_robustness, "its most common motion from rest");
+  }
   t += "\n4. For comparison, the exact optima without margins (they graze the walls: a robot\n"
        "   with slightly different parameters does something else).\n"
        "   The fastest valid gait:\n";

@@ -49,6 +49,39 @@ TEST(OptimizeJob, PhaseProblemIsP1CheckedFromRest) {
             direct.solution.orbit.forcing.phi0());
 }
 
+// The main job with a small effort: 3 x 3 starts, a reach search of 2 x 2 starts and 12
+// evaluations (about half a second).
+TEST(OptimizeJob, MainJobContinuesBothMotionsAsTheStagesDo) {
+  OptimizeJobOptions job;
+  job.mode = MainJob{ReachEffort{2, 2, 8, 4}};
+  job.check = SmallCheck();
+  const auto r = std::get<MainJobResult>(RunOptimizeJob(job));
+  ASSERT_TRUE(r.robust.found());
+  EXPECT_EQ(r.gait.force_bound, job.params.T0);  // not given: T0
+  const GaitRobustness gait = ComputeGaitRobustness(r.robust.solution.orbit);
+  ASSERT_EQ(r.robustness.parameters.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(r.robustness.parameters[i].down.parameter, gait.parameters[i].down.parameter);
+    EXPECT_EQ(r.robustness.parameters[i].up.parameter, gait.parameters[i].up.parameter);
+  }
+  // The reach winner's most common motion is periodic here: it is continued from its state.
+  ASSERT_FALSE(r.reach.attractors.attractors.empty());
+  const Motion& motion = r.reach.attractors.attractors.front().motion;
+  ASSERT_EQ(motion.status, MotionStatus::kPeriodic);
+  const GaitRobustness reached =
+      ComputeMotionRobustness({r.reach.forcing, job.params, r.reach.alpha, motion.section});
+  ASSERT_EQ(r.reach_robustness.parameters.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const ParameterRobustness& p = r.reach_robustness.parameters[i];
+    EXPECT_EQ(p.status, ContinuationStatus::kOk) << p.name << ": " << p.message;
+    EXPECT_EQ(p.down.parameter, reached.parameters[i].down.parameter);
+    EXPECT_EQ(p.up.parameter, reached.parameters[i].up.parameter);
+    // The motion is followed some way each way before it is lost.
+    EXPECT_LT(p.down.parameter, p.value) << p.name;
+    EXPECT_TRUE(p.up.parameter > p.value || p.up.parameter == p.to) << p.name;
+  }
+}
+
 TEST(OptimizeJob, TellsItsStagesInOrderAndEndsWithEmpty) {
   OptimizeJobOptions job = PhaseJob(0.3, 0.4);
   std::vector<std::string> stages;

@@ -66,10 +66,25 @@ struct GaitRobustness {
   std::string Summary(const std::string& indent = "  ") const;
 };
 
+/// A periodic motion to continue: the robot (force, T0 and e of `params`, alpha) and a state
+/// on the motion (a fixed point of its period map, as Newton shooting refines it).
+struct MotionToContinue {
+  Forcing forcing;
+  Params params;
+  double alpha;
+  PhaseState start;
+};
+
+/// Continues the periodic motion through `motion.start` in T0, e and alpha over the ranges of
+/// `options` and reports the nearest limit each way. Throws std::invalid_argument for bad
+/// options or invalid parameters.
+GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion,
+                                       const RobustnessOptions& options = {});
+
 /// Continues the one-impact orbit `orbit` (the gait: its force, alpha, T0 and e), started right
 /// after its impact (OrbitImpactState), in T0, e and alpha over the ranges of `options`, and
 /// reports the nearest limit each way. Throws std::invalid_argument for bad options or an
-/// orbit whose parameters are invalid.
+/// orbit whose parameters are invalid (ComputeMotionRobustness of that state).
 GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options = {});
 
 }  // namespace capsubot

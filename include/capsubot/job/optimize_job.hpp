@@ -21,8 +21,8 @@
 namespace capsubot {
 
 /// The main job: P1 at c = A = T0/2 without margins, P2 with the job's margins checked from
-/// rest, the reach search seeded with it, its continuation in T0, e and alpha, P2 without
-/// margins (valid; stable).
+/// rest, the reach search seeded with it, both motions continued in T0, e and alpha, P2
+/// without margins (valid; stable).
 struct MainJob {
   ReachEffort reach;
 };
@@ -78,8 +78,11 @@ struct MainJobResult {
   OptimizeResult robust;      ///< P2 with the margins (its from-rest check: reach.seed)
   ReachResult reach;          ///< the fastest motion from rest
   GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
-  OptimizeResult fastest;     ///< P2 without margins
-  OptimizeResult stable;      ///< P2 without margins, spectral radius <= 1
+  /// The most common motion from rest of the reach winner continued, when it is periodic;
+  /// empty otherwise.
+  GaitRobustness reach_robustness;
+  OptimizeResult fastest;  ///< P2 without margins
+  OptimizeResult stable;   ///< P2 without margins, spectral radius <= 1
 };
 
 /// One problem P1, P2 or P3 and its optimum checked from rest.

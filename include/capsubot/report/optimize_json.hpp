@@ -36,7 +36,8 @@ nlohmann::json ReachJson(const ReachResult& reach);
 /// fourier, "baseline_I" and "gain" (I / baseline_I - 1, null without a valid gait). The reach
 /// problem: ReachJson with the requirements of its seed (the robust gait). The main job: the
 /// requirements, "force_bound" and the results "paper" (P1 at c = A = T0/2 without margins),
-/// "robust" (P2 with the margins, with "from_rest": the reach seed's check), "reach",
+/// "robust" (P2 with the margins, with "from_rest": the reach seed's check), "reach" (with
+/// "robustness": its most common motion from rest continued, null unless it is periodic),
 /// "fastest" and "fastest_stable" (P2 without margins), each with a "note", and "robustness":
 /// the robust gait's motion continued in T0, e and alpha (RobustnessJson; null without a
 /// robust gait).
