@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/model/force_spec.hpp"
 #include "ranks.hpp"
 
 namespace capsubot::app {
@@ -131,20 +132,15 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
 }
 
 Forcing ForcingOptions::Build(bool need_phase) const {
-  const bool has_phase = phi0_option != nullptr && phi0_option->count() > 0;
+  ForceSpec spec;
+  if (A_option->count() > 0) spec.A = A;
+  spec.c = c;
+  if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = phi0;
   if (fourier_option->count() > 0) {
-    const std::vector<double> b = ParseCoefficients("--sin", sin_text);
-    const std::vector<double> a = cos_text.empty() ? std::vector<double>(b.size(), 0.0)
-                                                   : ParseCoefficients("--cos", cos_text);
-    return Forcing::Fourier(c, a, b, has_phase ? phi0 : 0.0);
+    spec.sin = ParseCoefficients("--sin", sin_text);
+    if (!cos_text.empty()) spec.cos = ParseCoefficients("--cos", cos_text);
   }
-  if (A_option->count() == 0) {
-    throw std::invalid_argument("option --A is missing: give the amplitude A (or --sin/--cos)");
-  }
-  if (need_phase && !has_phase) {
-    throw std::invalid_argument("option --phi0 is missing: give the impact phase phi0 [rad]");
-  }
-  return Forcing::Harmonic(A, c, has_phase ? phi0 : 0.0);
+  return spec.Build(need_phase, "--");
 }
 
 void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "capsubot/orbit/robot_orbits.hpp"
-#include "capsubot/orbit/stability.hpp"
+#include "capsubot/job/orbits_job.hpp"
+#include "capsubot/report/orbits_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
@@ -18,53 +18,25 @@ namespace {
 
 struct OrbitsOptions {
   ForcingOptions forcing;
-  Params params;
-  double alpha = std::numeric_limits<double>::quiet_NaN();
-  std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations;
+  OrbitsJobOptions job;
   bool json = false;
 };
 
-// Said when the search hit its work bound: the list is then not known to be complete.
-constexpr const char* kIncompleteNote =
-    "the search stopped at its work bound (--max-evaluations): orbits may be missing";
-
-int Run(const OrbitsOptions& opt, const CLI::App& cmd) {
-  opt.params.Validate();
-  const Forcing forcing = opt.forcing.Build(false);
-  bool complete = true;
-  const std::vector<Solution> found =
-      FindRobotOrbits(forcing, opt.params, opt.alpha, &complete, opt.max_evaluations);
-  if (opt.json) {
-    nlohmann::json j = {{"orbits", json::RobotOrbitsJson(found, complete)}};
-    AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
-    if (!complete) fmt::print(stderr, "capsubot orbits: note: {}\n", kIncompleteNote);
+int Run(OrbitsOptions& opt, const CLI::App& cmd) {
+  opt.job.params.Validate();
+  opt.job.forcing = opt.forcing.Build(false);
+  const OrbitsJobResult result = RunOrbitsJob(opt.job);
+  if (!opt.json) {
+    fmt::print("{}", report::OrbitsJobText(result, "--max-evaluations"));
     return 0;
   }
-  std::string t = fmt::format("one-impact orbits of the robot with alpha = {}\n", Num(opt.alpha));
-  t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
-                   ForceFormula(forcing.WithPhase(0.0)));
-  t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", opt.params.T0, opt.params.e,
-                   opt.params.margin);
-  t += fmt::format("  {} orbit(s)\n", found.size());
-  if (!complete) t += fmt::format("  note: {}\n", kIncompleteNote);
-  if (!found.empty()) {
-    t += fmt::format("  {:>14}  {:>10}  {:>14}  {:>15}  {:>8}  {}\n", "phi0", "phi1", "v_mean",
-                     "spectral_radius", "stable", "valid");
+  nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
+  AddProvenanceJson(j, cmd);
+  fmt::print("{}\n", j.dump());
+  if (!result.complete) {
+    fmt::print(stderr, "capsubot orbits: note: {}\n",
+               report::OrbitsIncompleteNote("--max-evaluations"));
   }
-  for (const Solution& s : found) {
-    const Stability st = ComputeStability(s.orbit);
-    std::string valid = "yes";
-    if (!s.validity.valid()) {
-      valid = "no:";
-      for (const auto& n : s.validity.ViolationNames()) valid += " " + n;
-    }
-    t += fmt::format("  {:>14}  {:>10}  {:>14}  {:>15}  {:>8}  {}\n",
-                     NumFixed(s.orbit.forcing.phi0(), 10), NumFixed(s.orbit.phi1, 6),
-                     Num(s.orbit.v_mean, 8), Num(st.spectral_radius, 6), st.stable ? "yes" : "no",
-                     valid);
-  }
-  fmt::print("{}", t);
   return 0;
 }
 
@@ -78,10 +50,10 @@ Command AddOrbitsCommand(CLI::App& app) {
       "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, none missed, each with "
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);
-  AddParamsOptions(*cmd, opt->params);
-  cmd->add_option("--alpha", opt->alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
+  AddParamsOptions(*cmd, opt->job.params);
+  cmd->add_option("--alpha", opt->job.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
-  Bounded(cmd->add_option("--max-evaluations", opt->max_evaluations,
+  Bounded(cmd->add_option("--max-evaluations", opt->job.max_evaluations,
                           "work bound of the search: evaluations of the orbit equation while "
                           "refining the circle (default 4000000, far above what the tested "
                           "forces need); when it is hit, orbits may be missing: a note says so"),

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/force_spec.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 
@@ -38,16 +39,9 @@ void BindContinuation(py::module_& m);  // continue_branch
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
 /// k(phi+phi0)) given by `cos` and `sin`.
-struct ForcingArgs {
-  std::optional<double> A;
-  double c = 0.0;
-  std::optional<double> phi0;
-  std::optional<std::vector<double>> cos, sin;
-
-  /// The force; throws std::invalid_argument naming what is missing or contradictory. With
-  /// `need_phase` false, phi0 may be absent (0: a function that solves for it).
-  Forcing Build(bool need_phase = true) const;
-};
+/// The force arguments of the module's functions (A, c, phi0, cos, sin), built with the
+/// command line's rules and messages.
+using ForcingArgs = ForceSpec;
 
 /// The units every docstring refers to (docs/model.md section 2).
 inline constexpr const char* kUnits =

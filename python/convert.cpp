@@ -26,30 +26,6 @@ void RequireTerms(const char* name, const char* symbol,
   }
 }
 
-Forcing ForcingArgs::Build(bool need_phase) const {
-  RequireTerms("sin", "b", sin);
-  RequireTerms("cos", "a", cos);
-  if (sin) {
-    if (A) {
-      throw std::invalid_argument(
-          "A and sin are exclusive: give the amplitude A of A sin(phi + phi0) + c, or the "
-          "Fourier coefficients sin (and cos)");
-    }
-    const std::vector<double> a = cos ? *cos : std::vector<double>(sin->size(), 0.0);
-    return Forcing::Fourier(c, a, *sin, phi0.value_or(0.0));
-  }
-  if (cos) {
-    throw std::invalid_argument(
-        "cos needs sin: give the sine coefficients b_1..b_K of the Fourier force too (zeros "
-        "are allowed)");
-  }
-  if (!A) throw std::invalid_argument("A is missing: give the amplitude A (or sin/cos)");
-  if (need_phase && !phi0) {
-    throw std::invalid_argument("phi0 is missing: give the impact phase phi0 [rad]");
-  }
-  return Forcing::Harmonic(*A, c, phi0.value_or(0.0));
-}
-
 void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) {
   static const std::regex grid("([0-9]{1,9})[xX]([0-9]{1,9})");
   std::smatch parts;

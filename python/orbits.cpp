@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/model/limits.hpp"
-#include "capsubot/orbit/robot_orbits.hpp"
+#include "capsubot/job/orbits_job.hpp"
+#include "capsubot/report/orbits_text.hpp"
 #include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::python {
@@ -20,26 +20,24 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
                 std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                 double T0, double e, double margin, double margin_stroke, double stick_margin,
                 std::int64_t max_evaluations) {
-  const Params params{T0, e, margin, margin_stroke, stick_margin};
-  params.Validate();
-  const Forcing forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
-  if (max_evaluations < 1 || max_evaluations > kMaxOrbitEvaluations) {
-    throw std::invalid_argument(
-        fmt::format("max_evaluations = {} is invalid: expected 1 <= max_evaluations <= {}",
-                    max_evaluations, kMaxOrbitEvaluations));
-  }
-  bool complete = true;
-  const std::vector<Solution> found = RunWithoutGil([&](SignalCheck& check) {
-    return FindRobotOrbits(forcing, params, alpha, &complete, max_evaluations,
-                           [&check] { check.Check(); });
+  OrbitsJobOptions job;
+  job.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  job.params.Validate();
+  job.forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
+  job.alpha = alpha;
+  job.max_evaluations = max_evaluations;
+  job.Validate();
+  const OrbitsJobResult result = RunWithoutGil([&](SignalCheck& check) {
+    job.interrupt = check.AsInterrupt();
+    return RunOrbitsJob(job);
   });
+  const bool complete = result.complete;
+  const std::vector<Solution>& found = result.orbits;
   py::list all(ToPython(json::RobotOrbitsJson(found, complete)));
   if (!complete) {
     // Said as a warning, as the command line says it on stderr.
-    if (PyErr_WarnEx(PyExc_RuntimeWarning,
-                     "the search stopped at its work bound (max_evaluations): orbits may be "
-                     "missing",
-                     1) != 0) {
+    const std::string note = report::OrbitsIncompleteNote("max_evaluations");
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 1) != 0) {
       throw py::error_already_set();
     }
   }

@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "capsubot solve: error: The following argument was not expected: --frobnicate "
                  "(see capsubot solve --help)"},
         BadInput{"solve --A 0.5 --c 0.5",
-                 "capsubot solve: error: option --phi0 is missing: give the impact phase phi0 "
+                 "capsubot solve: error: --phi0 is missing: give the impact phase phi0 "
                  "[rad]"},
         BadInput{"solve --A 0.5 --c 0.5 --phi0 1 --samples 1",
                  "capsubot solve: error: --samples = 1 is invalid: expected an integer 2 <= n <= "

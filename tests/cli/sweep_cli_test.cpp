@@ -227,7 +227,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"--grid alpha=0.1:0.5:3 --grid phi0=0:1:3 --A 0.5 --c 0.5",
                    "--grid alpha together with grid phi0 is invalid"},
         BadCommand{"--grid phi0=nan:1:3 --A 0.5 --c 0.5", "expected finite bounds"},
-        BadCommand{"--grid c=0:1:3 --A 0.5", "option --phi0 is missing"},
+        BadCommand{"--grid c=0:1:3 --A 0.5", "error: --phi0 is missing"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5", "option --c is missing"},
         BadCommand{"--grid A=0:1:3 --c 0.5 --optimize phi1",
                    "--optimize = phi1 is invalid: expected one of phi0, forcing, fourier"},
