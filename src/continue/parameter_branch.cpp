@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "capsubot/model/model_parameter.hpp"
@@ -45,6 +46,30 @@ RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, d
   return [base, which, harmonic](double value) {
     RobotModel r = base;
     SetParameter(r, which, harmonic, value);
+    return r;
+  };
+}
+
+RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::string& param, const std::string& param2) {
+  int h1 = 0, h2 = 0;
+  const ModelParameter p1 = ParseRobotParameter(param, &h1);
+  CheckRobotParameter(forcing, p1, h1);
+  const ModelParameter p2 = ParseRobotParameter(param2, &h2);
+  CheckRobotParameter(forcing, p2, h2);
+  // A is the sine coefficient b1 of the harmonic family: the same parameter.
+  const auto key = [](ModelParameter p, int h) {
+    return p == ModelParameter::kA ? std::make_pair(ModelParameter::ksin, 1) : std::make_pair(p, h);
+  };
+  if (key(p1, h1) == key(p2, h2)) {
+    throw std::invalid_argument(fmt::format(
+        "param2 = {} is invalid: expected a parameter other than param = {}", param2, param));
+  }
+  const RobotModel base{forcing, params, alpha};
+  return [base, p1, h1, p2, h2](double lambda, double mu) {
+    RobotModel r = base;
+    SetParameter(r, p1, h1, lambda);
+    SetParameter(r, p2, h2, mu);
     return r;
   };
 }
