@@ -50,6 +50,20 @@ RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, d
   };
 }
 
+double RobotValueInRange(const RobotModel& robot, const std::string& param, const RangeEnd& from,
+                         const RangeEnd& to, const char* what) {
+  int harmonic = 0;
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  const double value = ParameterValue(robot, which, harmonic);
+  if (!(value >= from.value && value <= to.value)) {
+    throw std::invalid_argument(fmt::format(
+        "the robot's {} = {} is outside the range: expected {} = {} <= {} <= {} = {} (the {} "
+        "starts at the robot's value)",
+        param, value, from.name, from.value, param, to.name, to.value, what));
+  }
+  return value;
+}
+
 RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
                                    const std::string& param, const std::string& param2) {
   int h1 = 0, h2 = 0;
@@ -79,18 +93,11 @@ Branch ContinueParameter(const Forcing& forcing, const Params& params, double al
                          ContinuationOptions options) {
   const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
   params.Validate();
-  int harmonic = 0;
-  const ModelParameter which = ParseRobotParameter(param, &harmonic);
-  options.start = ParameterValue(RobotModel{forcing, params, alpha}, which, harmonic);
   ContinuationOptions range = options;  // the options' own rules first, the start's value aside
   range.start = options.from;
   range.Validate();
-  if (!(options.start >= options.from && options.start <= options.to)) {
-    throw std::invalid_argument(fmt::format(
-        "the robot's {} = {} is outside the range: expected from = {} <= {} <= to = {} (the "
-        "branch starts at the robot's value)",
-        param, options.start, options.from, param, options.to));
-  }
+  options.start = RobotValueInRange({forcing, params, alpha}, param, {"from", options.from},
+                                    {"to", options.to}, "branch");
   return ContinueBranch(family, start, options);
 }
 

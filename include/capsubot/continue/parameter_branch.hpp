@@ -29,6 +29,19 @@ PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, dou
 RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
                                  const std::string& param);
 
+/// One end of a parameter's range with the name a message gives it ("from", "to2").
+struct RangeEnd {
+  const char* name;
+  double value;
+};
+
+/// The robot's own value of the parameter named `param` (a robot parameter, as
+/// NamedParameterFamily), which must lie in [from, to]: else std::invalid_argument "the robot's
+/// <param> = <value> is outside the range: expected from = .. <= <param> <= to = .. (the <what>
+/// starts at the robot's value)".
+double RobotValueInRange(const RobotModel& robot, const std::string& param, const RangeEnd& from,
+                         const RangeEnd& to, const char* what);
+
 /// The robot at each pair of values of the parameters named `param` and `param2` (two different
 /// robot parameters, as NamedParameterFamily), the rest as given. Throws std::invalid_argument
 /// as NamedParameterFamily does for either name, and when both name the same parameter
