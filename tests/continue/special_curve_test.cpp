@@ -112,7 +112,7 @@ TEST(SpecialCurve, PeriodDoublingCurveHasAMultiplierMinusOneAtEveryPoint) {
 }
 
 TEST(SpecialCurve, FoldCurveIsWhereTheAnalyticMassRatioIsLargest) {
-  for (double max_step : {0.05, 0.01}) {  // the step changes the cost, not the curve
+  for (double max_step : {0.05, 0.005}) {  // the step changes the cost, not the curve
     const Curve c = AlphaACurve(SpecialPointType::kFold, max_step);
     ASSERT_EQ(c.status, ContinuationStatus::kOk) << c.message;
     ASSERT_GE(c.points.size(), 5u);
