@@ -3,17 +3,18 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <memory>
 #include <string>
 
 #include "attract_options.hpp"
-#include "capsubot/continue/branch_switch.hpp"
-#include "capsubot/continue/parameter_branch.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/continue_job.hpp"
 #include "capsubot/report/continuation_json.hpp"
+#include "capsubot/report/continue_csv.hpp"
+#include "capsubot/report/continue_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
+#include "progress.hpp"
 #include "provenance.hpp"
 
 namespace capsubot::app {
@@ -21,56 +22,17 @@ namespace {
 
 struct ContinueCommandOptions {
   RobotOptions robot;
-  ContinuationOptions continuation;
+  ContinueJobOptions job;
   StartStateOptions start_state;  // --x0, --u0, --v0, --psi
-  std::string param;
   bool from_orbit = false;
-  bool switch_branch = false;
+  FollowOptions follow;
+  std::string follow_type;
+  CLI::Option* param2 = nullptr;
   bool json = false;
   std::string output;
 };
 
-// The branch as CSV: the '#' provenance line, header, one row per point.
-void WriteBranchCsv(const Branch& b, const std::string& name, const std::string& comment,
-                    const std::string& path) {
-  std::size_t columns = 0;
-  for (const BranchPoint& p : b.points) columns = std::max(columns, p.motion.multipliers.size());
-  AtomicFile file(path, "-o");
-  auto& out = file.stream();
-  out << comment;
-  out << name << ",x,u,v,psi,period,impacts_right,impacts_left,mean_velocity,spectral_radius";
-  for (std::size_t k = 1; k <= columns; ++k) out << ",mu" << k << "_re,mu" << k << "_im";
-  out << ",stable,label\n";
-  for (const BranchPoint& p : b.points) {
-    const PeriodicMotion& m = p.motion;
-    out << FormatNumber(p.parameter) << ',' << FormatNumber(m.state.x) << ','
-        << FormatNumber(m.state.u) << ',' << FormatNumber(m.state.v) << ','
-        << FormatNumber(m.state.psi) << ',' << m.period << ',' << m.impacts_right << ','
-        << m.impacts_left << ',' << FormatNumber(m.mean_velocity) << ','
-        << FormatNumber(m.spectral_radius);
-    for (std::size_t k = 0; k < columns; ++k) {
-      if (k < m.multipliers.size()) {
-        out << ',' << FormatNumber(m.multipliers[k].real()) << ','
-            << FormatNumber(m.multipliers[k].imag());
-      } else {
-        out << ",,";
-      }
-    }
-    out << ',' << (m.stable ? 1 : 0) << ',' << p.label << '\n';
-  }
-  file.Commit();
-}
-
-// The first located period doubling of the branch, or null.
-const SpecialPoint* FirstPeriodDoubling(const Branch& b) {
-  for (const SpecialPoint& sp : b.special_points) {
-    if (sp.type == SpecialPointType::kPeriodDoubling && sp.located) return &sp;
-  }
-  return nullptr;
-}
-
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
-  const Forcing forcing = opt.robot.forcing.Build();
   const int given = opt.start_state.Given();
   if (opt.from_orbit && given > 0) {
     throw std::invalid_argument(
@@ -80,42 +42,35 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
     throw std::invalid_argument(
         "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
   }
-  opt.robot.params.Validate();
-  const PhaseState start = opt.from_orbit
-                               ? OneImpactOrbitStart(forcing, opt.robot.params, opt.robot.alpha)
-                               : opt.start_state.state;
-  RequirePhase("psi", start.psi);
-  if (!opt.output.empty()) CheckWritable(opt.output, "-o");
-  const Branch branch = ContinueParameter(forcing, opt.robot.params, opt.robot.alpha, opt.param,
-                                          start, opt.continuation);
-  if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
-    WriteBranchCsv(branch, opt.param, OutputProvenance(cmd).CommentLine(), opt.output);
+  ContinueJobOptions& job = opt.job;
+  job.forcing = opt.robot.forcing.Build();
+  job.params = opt.robot.params;
+  job.alpha = opt.robot.alpha;
+  job.start = opt.from_orbit ? ContinueStart(FromOneImpactOrbit{}) : opt.start_state.state;
+  if (opt.param2->count() > 0) {
+    opt.follow.type = ParseFollowType(opt.follow_type);
+    job.follow = opt.follow;
   }
-  const SpecialPoint* pd = opt.switch_branch ? FirstPeriodDoubling(branch) : nullptr;
-  const Branch switched =
-      pd == nullptr ? Branch{}
-                    : SwitchAtPeriodDoubling(NamedParameterFamily(forcing, opt.robot.params,
-                                                                  opt.robot.alpha, opt.param),
-                                             *pd, opt.continuation);
+  job.on_stage = [](const std::string& stage) { ShowStage(stage); };
+  job.Validate();
+  if (!opt.output.empty()) CheckWritable(opt.output, "-o");
+  const ContinueJobResult result = RunContinueJob(job);
+  const CsvTable table = ContinueJobCsv(result);
+  if (!opt.output.empty() && table.rows > 0) {
+    AtomicFile file(opt.output, "-o");
+    file.stream() << OutputProvenance(cmd).CommentLine() << table.text;
+    file.Commit();
+  }
   if (opt.json) {
-    nlohmann::json j = json::BranchJson(branch, opt.param);
-    if (opt.switch_branch) {
-      j["switched"] = pd == nullptr ? nlohmann::json() : json::BranchJson(switched, opt.param);
-    }
+    nlohmann::json j = json::ContinueJobJson(result);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
-  } else {
-    fmt::print("{}", branch.Summary(opt.param));
-    if (opt.switch_branch) {
-      fmt::print("{}",
-                 pd == nullptr
-                     ? std::string("no located period doubling: no branch to switch to\n")
-                     : fmt::format("branch switched at the period doubling at {} = {:.12g}\n{}",
-                                   opt.param, pd->parameter, switched.Summary(opt.param)));
-    }
-    if (!opt.output.empty() && branch.status == ContinuationStatus::kOk) {
-      fmt::print("  written        {} points to {}\n", branch.points.size(), opt.output);
-    }
+    return 0;
+  }
+  fmt::print("{}", ContinueJobText(result));
+  if (!opt.output.empty() && table.rows > 0) {
+    fmt::print("  written        {} {}points to {}\n", table.rows, job.follow ? "curve " : "",
+               opt.output);
   }
   return 0;
 }
@@ -131,7 +86,11 @@ const FlagNames& ContinueFlagNames() {
                                   {"max_period", "--max-period"},
                                   {"step", "--step"},
                                   {"chatter_velocity", "--chatter-velocity"},
-                                  {"from_orbit", "--from-orbit"}};
+                                  {"from_orbit", "--from-orbit"},
+                                  {"param2", "--param2"},
+                                  {"from2", "--from2"},
+                                  {"to2", "--to2"},
+                                  {"follow", "--follow"}};
   return names;
 }
 
@@ -147,45 +106,62 @@ Command AddContinueCommand(CLI::App& app) {
       "(docs/continuation.md). The parameter starts at the robot's value; the start is a state "
       "(--x0 --u0 --v0 --psi) or the robot's one-impact orbit (--from-orbit).");
   AddRobotOptions(*cmd, opt->robot, false);
-  cmd->add_option("--param", opt->param,
+  cmd->add_option("--param", opt->job.param,
                   "the parameter followed: A, c, alpha, T0, e, phi0, or a Fourier coefficient "
                   "a1..a16, b1..b16")
       ->required();
-  cmd->add_option("--from", opt->continuation.from, "lower end of the range")->required();
-  cmd->add_option("--to", opt->continuation.to, "upper end of the range")->required();
+  cmd->add_option("--from", opt->job.continuation.from, "lower end of the range")->required();
+  cmd->add_option("--to", opt->job.continuation.to, "upper end of the range")->required();
   opt->start_state.Add(*cmd);
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
-  cmd->add_flag("--switch", opt->switch_branch,
+  cmd->add_flag("--switch", opt->job.switch_branch,
                 "also follow the period-2p branch born at the first located period doubling "
                 "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
-  cmd->add_option("--max-points", opt->continuation.max_points,
-                  "points of the branch, both directions together")
+  opt->param2 =
+      cmd->add_option("--param2", opt->follow.param2,
+                      "also follow the branch's first located special point of the --follow "
+                      "type in two parameters, this one the second (a parameter other than "
+                      "--param)");
+  CLI::Option* from2 =
+      cmd->add_option("--from2", opt->follow.from2, "lower end of the --param2 range");
+  CLI::Option* to2 = cmd->add_option("--to2", opt->follow.to2, "upper end of the --param2 range");
+  CLI::Option* follow =
+      cmd->add_option("--follow", opt->follow_type,
+                      "the special point followed with --param2: fold, period_doubling, "
+                      "grazing or speed_extremum");
+  opt->param2->needs(from2)->needs(to2)->needs(follow);
+  from2->needs(opt->param2);
+  to2->needs(opt->param2);
+  follow->needs(opt->param2);
+  cmd->add_option("--max-points", opt->job.continuation.max_points,
+                  "points of the branch (and of the curve), both directions together")
       ->capture_default_str();
-  cmd->add_option("--initial-step", opt->continuation.initial_step, "first arclength step")
+  cmd->add_option("--initial-step", opt->job.continuation.initial_step, "first arclength step")
       ->capture_default_str();
-  cmd->add_option("--min-step", opt->continuation.min_step,
+  cmd->add_option("--min-step", opt->job.continuation.min_step,
                   "smallest arclength step: a failure there ends the branch (lost)")
       ->capture_default_str();
-  cmd->add_option("--max-step", opt->continuation.max_step, "largest arclength step")
+  cmd->add_option("--max-step", opt->job.continuation.max_step, "largest arclength step")
       ->capture_default_str();
-  cmd->add_option("--max-period", opt->continuation.shooting.max_period,
+  cmd->add_option("--max-period", opt->job.continuation.shooting.max_period,
                   "largest period searched at the start, in forcing periods")
       ->capture_default_str();
-  cmd->add_option("--step", opt->continuation.shooting.step,
+  cmd->add_option("--step", opt->job.continuation.shooting.step,
                   "step of the central finite differences of the Jacobians")
       ->capture_default_str();
-  cmd->add_option("--chatter-velocity", opt->continuation.shooting.chatter_velocity,
+  cmd->add_option("--chatter-velocity", opt->job.continuation.shooting.chatter_velocity,
                   "the simulator's chatter cut-off (omega L)")
       ->capture_default_str();
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
-                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label")
+                  "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label; "
+                  "with --param2 the curve: parameter, parameter2, x, ..., stable, condition")
       ->type_name("FILE");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: parameter, status, ends, points, special_points, "
-                "provenance");
+                "(switched, follow, curve,) provenance");
   SetExamples(*cmd,
               {{"a stable one-impact gait followed in alpha: born in a period doubling, "
                 "fastest at alpha = 0.2399, ended by a fold at 0.29035",

@@ -196,6 +196,11 @@ def continue_branch(
     v0: float | None = None,
     psi: float | None = None,
     from_orbit: bool = False,
+    switch: bool = False,
+    param2: str | None = None,
+    from2: float | None = None,
+    to2: float | None = None,
+    follow: str | None = None,
     max_points: int = 200,
     initial_step: float = 0.01,
     min_step: float = 1e-7,
@@ -204,7 +209,8 @@ def continue_branch(
     step: float = 1e-6,
     chatter_velocity: float = 1e-6,
 ) -> dict[str, Any]:
-    """A periodic motion followed through one parameter, with its special points."""
+    """A periodic motion followed through one parameter, with its special points; on request
+    the period-2p branch (switch) and a special point's curve in two parameters (param2)."""
 
 def design(
     *,

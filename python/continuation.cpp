@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/continue/parameter_branch.hpp"
+#include "capsubot/job/continue_job.hpp"
 #include "capsubot/report/continuation_json.hpp"
 
 namespace capsubot::python {
@@ -60,25 +60,34 @@ py::object Column(const nlohmann::json& points, const std::string& key) {
   return np.attr("asarray")(values, py::arg("dtype") = dtype);
 }
 
-// The dict of `capsubot continue --json` with "points" as columns: {key: array}.
-py::dict BranchDict(const nlohmann::json& j) {
-  py::dict d = ToPython(j);
-  const nlohmann::json& points = j.at("points");
+// Rows of a branch or curve (a JSON array of objects with the same keys) as columns: {key:
+// array}.
+py::dict Columns(const nlohmann::json& rows) {
   py::dict columns;
-  if (!points.empty()) {
-    for (const auto& [key, value] : points.front().items()) {
-      columns[py::str(key)] =
-          key == "multipliers" ? MultiplierColumns(points) : Column(points, key);
+  if (!rows.empty()) {
+    for (const auto& [key, value] : rows.front().items()) {
+      columns[py::str(key)] = key == "multipliers" ? MultiplierColumns(rows) : Column(rows, key);
     }
   }
-  d["points"] = columns;
+  return columns;
+}
+
+// The dict of `capsubot continue --json` with the points of the branch, of the switched branch
+// and of the curve as columns.
+py::dict JobDict(const nlohmann::json& j) {
+  py::dict d = ToPython(j);
+  d["points"] = Columns(j.at("points"));
+  if (j.contains("switched") && !j.at("switched").is_null()) {
+    py::dict switched = d["switched"];
+    switched["points"] = Columns(j.at("switched").at("points"));
+  }
+  if (j.contains("curve")) d["curve"] = Columns(j.at("curve"));
   return d;
 }
 
 // The start: a state (x0, u0, v0 at phase psi) or the robot's one-impact orbit.
-PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
-                 std::optional<double> psi, bool from_orbit, const Forcing& forcing,
-                 const Params& params, double alpha) {
+ContinueStart Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
+                    std::optional<double> psi, bool from_orbit) {
   const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
   if (from_orbit && given > 0) {
     throw std::invalid_argument(
@@ -88,13 +97,26 @@ PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::option
     throw std::invalid_argument(
         "the start is missing: give all of x0, u0, v0, psi (or from_orbit=True)");
   }
-  if (from_orbit) return OneImpactOrbitStart(forcing, params, alpha);
-  PhaseState s;
-  s.x = *x0;
-  s.u = *u0;
-  s.v = *v0;
-  s.psi = *psi;
-  return s;
+  if (from_orbit) return FromOneImpactOrbit{};
+  return PhaseState{*x0, *u0, *v0, *psi};
+}
+
+// The curve's options: all of param2, from2, to2 and follow, or none.
+std::optional<FollowOptions> Follow(const std::optional<std::string>& param2,
+                                    std::optional<double> from2, std::optional<double> to2,
+                                    const std::optional<std::string>& follow) {
+  const int given = (param2 ? 1 : 0) + (from2 ? 1 : 0) + (to2 ? 1 : 0) + (follow ? 1 : 0);
+  if (given == 0) return std::nullopt;
+  if (given < 4) {
+    throw std::invalid_argument(
+        "the curve is incomplete: give all of param2, from2, to2, follow (or none)");
+  }
+  FollowOptions f;
+  f.param2 = *param2;
+  f.from2 = *from2;
+  f.to2 = *to2;
+  f.type = ParseFollowType(*follow);
+  return f;
 }
 
 py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<double> phi0,
@@ -103,14 +125,20 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
                             double alpha, const std::string& param, double from, double to,
                             std::optional<double> x0, std::optional<double> u0,
                             std::optional<double> v0, std::optional<double> psi, bool from_orbit,
-                            int max_points, double initial_step, double min_step, double max_step,
-                            int max_period, double step, double chatter_velocity) {
-  const Params params{T0, e, 0.0};
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  params.Validate();
-  const PhaseState start = Start(x0, u0, v0, psi, from_orbit, forcing, params, alpha);
-  RequirePhase("psi", start.psi);
-  ContinuationOptions o;
+                            bool switch_branch, std::optional<std::string> param2,
+                            std::optional<double> from2, std::optional<double> to2,
+                            std::optional<std::string> follow, int max_points, double initial_step,
+                            double min_step, double max_step, int max_period, double step,
+                            double chatter_velocity) {
+  ContinueJobOptions job;
+  job.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  job.params = Params{T0, e, 0.0};
+  job.alpha = alpha;
+  job.param = param;
+  job.start = Start(x0, u0, v0, psi, from_orbit);
+  job.switch_branch = switch_branch;
+  job.follow = Follow(param2, from2, to2, follow);
+  ContinuationOptions& o = job.continuation;
   o.from = from;
   o.to = to;
   o.max_points = max_points;
@@ -120,11 +148,11 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
   o.shooting.max_period = max_period;
   o.shooting.step = step;
   o.shooting.chatter_velocity = chatter_velocity;
-  const Branch branch = RunWithoutGil([&](SignalCheck& check) {
-    o.interrupt = check.AsInterrupt();
-    return ContinueParameter(forcing, params, alpha, param, start, o);
+  const ContinueJobResult result = RunWithoutGil([&](SignalCheck& check) {
+    job.continuation.interrupt = check.AsInterrupt();
+    return RunContinueJob(job);
   });
-  return BranchDict(json::BranchJson(branch, param));
+  return JobDict(json::ContinueJobJson(result));
 }
 
 constexpr const char* kContinueDoc =
@@ -133,7 +161,9 @@ constexpr const char* kContinueDoc =
     "at the "
     "robot's value of the parameter and followed both ways through [from_, to], with its "
     "folds, period doublings, Neimark-Sacker points, grazings, segment changes and speed "
-    "extrema: the dict `capsubot continue --json` prints, with the points as columns.\n\n"
+    "extrema; on request the period-2p branch born at its first period doubling (switch) and "
+    "the curve of its first special point of a type in two parameters (param2, from2, to2, "
+    "follow): the dict `capsubot continue --json` prints, with the points as columns.\n\n"
     "Arguments (keyword only, named as the options of `capsubot continue`; `from_` is "
     "--from):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n";
@@ -145,7 +175,11 @@ constexpr const char* kContinueArgsDoc =
     "    x0, u0, v0, psi  the start state (all four), or\n"
     "    from_orbit  start on the robot's valid one-impact orbit with the smallest spectral\n"
     "            radius, right after its impact\n"
-    "    max_points  points of the branch, both directions together, >= 2\n"
+    "    switch  also follow the period-2p branch born at the first located period doubling\n"
+    "    param2, from2, to2, follow  also follow the first located special point of type\n"
+    "            follow ('fold', 'period_doubling', 'grazing', 'speed_extremum') in (param,\n"
+    "            param2), param2 over [from2, to2] (all four, or none)\n"
+    "    max_points  points of the branch (and of the curve), both directions together, >= 2\n"
     "    initial_step, min_step, max_step  arclength steps\n"
     "    max_period  largest period searched at the start, 1 to 64\n"
     "    step    step of the central finite differences of the Jacobians\n"
@@ -155,7 +189,12 @@ constexpr const char* kContinueArgsDoc =
     "psi, mode, period, impacts_right, impacts_left, mean_velocity, spectral_radius, stable, "
     "label: 1-D NumPy arrays; multipliers: a complex array, points x largest dimension, NaN "
     "padded}, special_points [{type, <param>, located, accuracy, mean_velocity, period, "
-    "impacts_right, impacts_left, state, multipliers, stable}].\n\n"
+    "impacts_right, impacts_left, state, multipliers, stable}]; with switch: switched (the "
+    "same dict for the period-2p branch, None without a located period doubling); with "
+    "param2: follow {type, parameter2, status, message, start, start_index, ends {backward, "
+    "forward}} and curve {<param>, <param2>, arclength, condition, x, u, v, psi, mode, period, "
+    "impacts_right, impacts_left, mean_velocity, spectral_radius, stable: 1-D NumPy arrays; "
+    "multipliers: complex}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
     "rule). Runs without the GIL; Ctrl-C stops it (KeyboardInterrupt).\n\n";
 
@@ -171,6 +210,8 @@ void BindContinuation(py::module_& m) {
         py::arg("e") = Params{}.e, py::arg("alpha"), py::arg("param"), py::arg("from_"),
         py::arg("to"), py::arg("x0") = py::none(), py::arg("u0") = py::none(),
         py::arg("v0") = py::none(), py::arg("psi") = py::none(), py::arg("from_orbit") = false,
+        py::arg("switch") = false, py::arg("param2") = py::none(), py::arg("from2") = py::none(),
+        py::arg("to2") = py::none(), py::arg("follow") = py::none(),
         py::arg("max_points") = o.max_points, py::arg("initial_step") = o.initial_step,
         py::arg("min_step") = o.min_step, py::arg("max_step") = o.max_step,
         py::arg("max_period") = o.shooting.max_period, py::arg("step") = o.shooting.step,

@@ -17,6 +17,9 @@
 #   p3_vs_p2_forcing.csv, p3_vs_p2_fourier{2,3}.csv, p3_vs_p2.png: P2 against P3 over T0
 #   three_axis_e_T0_phi0.csv, three_axis_e_T0_phi0.png: a 3-axis sweep (list, log, linear)
 #   fourier_a2_b2.csv, fourier_a2_b2.png: P1 over a grid of second-harmonic coefficients
+#   continuation_alpha_A{,_fold,_period_doubling}.csv, continuation_alpha_A.png: the fold and
+#                                 the period doubling of a one-impact orbit followed in
+#                                 (alpha, A) over the long-run motions of the same robots
 # Usage, from anywhere, after building (scripts/build.sh):  scripts/figures.sh
 # The program is $CAPSUBOT (default build/capsubot). Installs nothing: without gnuplot it
 # writes the CSVs, says how to get gnuplot and exits with status 1.
@@ -106,6 +109,17 @@ say "P1 over a grid of second-harmonic coefficients (a2, b2)"
 "$cli" sweep --grid a2=-0.03:0.03:31 --grid b2=-0.03:0.03:31 --A 0.05 --c 0.02 --T0 0.1 \
   --optimize phi0 --stability -o "$out/fourier_a2_b2.csv"
 
+say "curves of special points in (alpha, A) over the long runs of the same robots (~10 s)"
+curve_robot="$small --alpha 0.2792869076315278 --from-orbit --param alpha --from 0.12 --to 0.4"
+for follow in fold period_doubling; do
+  "$cli" continue $curve_robot --param2 A --from2 0.02 --to2 0.08 --follow $follow \
+    -o "$out/continuation_alpha_A_$follow.csv" > /dev/null
+done
+impacts=$(mktemp)  # the bifurcation's impacts (-o) are not kept: the map is its summary
+"$cli" bifurcation $small --param alpha --from 0.12 --to 0.4 --steps 101 --over A=0.02:0.08:41 \
+  --start 0.5,1 --no-analytic -o "$impacts" --summary "$out/continuation_alpha_A.csv"
+rm -f "$impacts"
+
 # --- marks read off the CSVs ----------------------------------------------------------------
 # The paper's rule phi0 + phi1/2 = -pi/2: the first row pair where h = phi0 + phi1/2 + pi/2
 # changes sign, interpolated linearly (NaN when h keeps its sign).
@@ -189,4 +203,9 @@ gnuplot -e "term='$term'; out='$out/three_axis_e_T0_phi0.png'; data='$out/three_
   T_hi=1; e1=0.5; e2=0.75; e3=1" "$gp/three_axis.gp"
 gnuplot -e "term='$term'; out='$out/fourier_a2_b2.png'; data='$out/fourier_a2_b2.csv';
   A=0.05; c=0.02; T0=0.1; e=1; d=0.001" "$gp/fourier_a2_b2.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* loss_* p3_* three_* fourier_* | tr '\n' ' ')"
+gnuplot -e "term='$term'; out='$out/continuation_alpha_A.png'; map='$out/continuation_alpha_A.csv';
+  fold='$out/continuation_alpha_A_fold.csv'; flip='$out/continuation_alpha_A_period_doubling.csv';
+  da=0.0014; dA=0.00075; a_lo=0.12; a_hi=0.4; A_lo=0.02; A_hi=0.08; robot_alpha=0.2792869076315278;
+  robot_A=0.05; title_text='The one-impact orbit of F = A sin({/Symbol f} - 2.842) + 0.02 (T_0 = 0.1, e = 0.5): its fold and period doubling followed in ({/Symbol a}, A)'" \
+  "$gp/continuation_alpha_A.gp"
+say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* loss_* p3_* three_* fourier_* continuation_* | tr '\n' ' ')"

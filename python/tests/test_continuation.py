@@ -54,3 +54,42 @@ def test_bad_input_names_the_parameter():
     with pytest.raises(ValueError) as err:
         capsubot.continue_branch(**dict(base, param="mu"), from_orbit=True)
     assert str(err.value).startswith("parameter = mu is invalid")
+
+
+def test_switch_and_curve_equal_the_command_line():
+    # The period doubling at alpha = 0.2229 followed in (alpha, A) over A in [0.04, 0.06], and
+    # the period-2 branch born there (docs/continuation.md).
+    args = dict(ROBOT, from_orbit=True, param="alpha", from_=0.2, to=0.3)
+    found = capsubot.continue_branch(**args, switch=True, param2="A", from2=0.04, to2=0.06,
+                                     follow="period_doubling")
+    cli = cli_json("continue", *CLI_ROBOT, "--from-orbit", "--param", "alpha", "--from", 0.2,
+                   "--to", 0.3, "--switch", "--param2", "A", "--from2", 0.04,
+                   "--to2", 0.06, "--follow", "period_doubling")
+    curve, cli_curve = found.pop("curve"), cli.pop("curve")
+    assert set(curve) == set(cli_curve[0]) and len(cli_curve) >= 10
+    for key, column in curve.items():
+        want = [p[key] for p in cli_curve]
+        if key == "multipliers":
+            want = [[complex(*z) for z in m] for m in want]
+        assert np.array_equal(column, np.array(want)), key
+    # Every point of the curve has the multiplier -1.
+    assert np.abs(curve["multipliers"] + 1).min(axis=1).max() < 1e-8
+    assert found["follow"] == cli["follow"] and found["follow"]["status"] == "ok"
+    switched, cli_switched = found.pop("switched"), cli.pop("switched")
+    assert switched["status"] == "ok" and switched["points"]["period"].tolist() == [
+        p["period"] for p in cli_switched["points"]]
+    found.pop("points"), cli.pop("points")
+    assert same(found, cli)
+
+
+def test_bad_curve_input_names_the_parameter():
+    base = dict(ROBOT, param="alpha", from_=0.2, to=0.3, from_orbit=True)
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**base, param2="A", from2=0.04, to2=0.06)
+    assert str(err.value) == "the curve is incomplete: give all of param2, from2, to2, follow (or none)"
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**base, param2="A", from2=0.04, to2=0.06, follow="hopf")
+    assert str(err.value).startswith("follow = hopf is invalid: expected one of fold,")
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**base, param2="alpha", from2=0.04, to2=0.06, follow="fold")
+    assert str(err.value) == "param2 = alpha is invalid: expected a parameter other than param = alpha"

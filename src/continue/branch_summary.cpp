@@ -37,6 +37,8 @@ std::string EndText(BranchEnd end, const std::string& name, double lambda) {
                          lambda);
     case BranchEnd::kMaxPoints:
       return fmt::format("stopped at {} = {:.12g}: the most points were reached", name, lambda);
+    case BranchEnd::kEventChange:
+      return fmt::format("stopped at {} = {:.12g}: the motion's events change there", name, lambda);
     case BranchEnd::kNotRun:
       break;
   }

@@ -213,14 +213,18 @@ bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
   return true;
 }
 
-bool BranchSystem::Replace(Node* node) {
-  std::vector<double> phases = node->event_phases;
-  if (phases.empty()) return true;
+bool EventNearSection(std::vector<double> phases) {
+  if (phases.empty()) return false;
   std::sort(phases.begin(), phases.end());
   double gap = phases.front() + kTau - phases.back();
-  double nearest = std::min(phases.front(), kTau - phases.back());
+  const double nearest = std::min(phases.front(), kTau - phases.back());
   for (std::size_t i = 1; i < phases.size(); ++i) gap = std::max(gap, phases[i] - phases[i - 1]);
-  if (nearest >= kSectionFraction * 0.5 * gap) return true;
+  return nearest < kSectionFraction * 0.5 * gap;
+}
+
+bool BranchSystem::Replace(Node* node) {
+  if (!EventNearSection(node->event_phases)) return true;
+  std::vector<double> phases = node->event_phases;
   const double shift = SectionShift(phases) / kTau;
   // The node and two neighbours along its tangent, carried to the new section by the flow.
   const double h = options_.shooting.step;

@@ -25,6 +25,10 @@ struct Section {
   std::vector<int> free;  ///< indices into (x, u, v)
 };
 
+/// Whether an event of `phases` (mod tau) lies closer to the section (phase 0) than a quarter
+/// of half the largest gap between them: then the section is moved to the middle of that gap.
+bool EventNearSection(std::vector<double> phases);
+
 /// A converged point of the branch with everything derived from it.
 struct Node {
   Vec4 y{};                           ///< the point

@@ -204,8 +204,9 @@ const char* SpecialPointTypeName(SpecialPointType type) {
 }
 
 const char* BranchEndName(BranchEnd end) {
-  static constexpr const char* kNames[] = {"not_run", "range_end", "lost", "max_points"};
-  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kMaxPoints) + 1);
+  static constexpr const char* kNames[] = {"not_run", "range_end", "lost", "max_points",
+                                           "event_change"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kEventChange) + 1);
   return detail::EnumName(kNames, end);
 }
 

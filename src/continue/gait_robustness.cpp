@@ -74,6 +74,7 @@ std::string LimitText(const MotionLimit& l, const std::string& name) {
         return fmt::format("no limit found up to {} = {:.6g} (the most points were reached)", name,
                            l.parameter);
       case BranchEnd::kNotRun:
+      case BranchEnd::kEventChange:  // ends curves, never branches
         break;
     }
     return "not computed";

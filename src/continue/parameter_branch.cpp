@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "capsubot/model/model_parameter.hpp"
@@ -49,23 +50,54 @@ RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, d
   };
 }
 
+double RobotValueInRange(const RobotModel& robot, const std::string& param, const RangeEnd& from,
+                         const RangeEnd& to, const char* what) {
+  int harmonic = 0;
+  const ModelParameter which = ParseRobotParameter(param, &harmonic);
+  const double value = ParameterValue(robot, which, harmonic);
+  if (!(value >= from.value && value <= to.value)) {
+    throw std::invalid_argument(fmt::format(
+        "the robot's {} = {} is outside the range: expected {} = {} <= {} <= {} = {} (the {} "
+        "starts at the robot's value)",
+        param, value, from.name, from.value, param, to.name, to.value, what));
+  }
+  return value;
+}
+
+RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::string& param, const std::string& param2) {
+  int h1 = 0, h2 = 0;
+  const ModelParameter p1 = ParseRobotParameter(param, &h1);
+  CheckRobotParameter(forcing, p1, h1);
+  const ModelParameter p2 = ParseRobotParameter(param2, &h2);
+  CheckRobotParameter(forcing, p2, h2);
+  // A is the sine coefficient b1 of the harmonic family: the same parameter.
+  const auto key = [](ModelParameter p, int h) {
+    return p == ModelParameter::kA ? std::make_pair(ModelParameter::ksin, 1) : std::make_pair(p, h);
+  };
+  if (key(p1, h1) == key(p2, h2)) {
+    throw std::invalid_argument(fmt::format(
+        "param2 = {} is invalid: expected a parameter other than param = {}", param2, param));
+  }
+  const RobotModel base{forcing, params, alpha};
+  return [base, p1, h1, p2, h2](double lambda, double mu) {
+    RobotModel r = base;
+    SetParameter(r, p1, h1, lambda);
+    SetParameter(r, p2, h2, mu);
+    return r;
+  };
+}
+
 Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
                          const std::string& param, const PhaseState& start,
                          ContinuationOptions options) {
   const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
   params.Validate();
-  int harmonic = 0;
-  const ModelParameter which = ParseRobotParameter(param, &harmonic);
-  options.start = ParameterValue(RobotModel{forcing, params, alpha}, which, harmonic);
   ContinuationOptions range = options;  // the options' own rules first, the start's value aside
   range.start = options.from;
   range.Validate();
-  if (!(options.start >= options.from && options.start <= options.to)) {
-    throw std::invalid_argument(fmt::format(
-        "the robot's {} = {} is outside the range: expected from = {} <= {} <= to = {} (the "
-        "branch starts at the robot's value)",
-        param, options.start, options.from, param, options.to));
-  }
+  options.start = RobotValueInRange({forcing, params, alpha}, param, {"from", options.from},
+                                    {"to", options.to}, "branch");
   return ContinueBranch(family, start, options);
 }
 

@@ -1,5 +1,8 @@
 #include "capsubot/report/continuation_json.hpp"
 
+#include <limits>
+#include <utility>
+
 namespace capsubot::json {
 namespace {
 
@@ -7,6 +10,22 @@ nlohmann::json Multipliers(const PeriodicMotion& m) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& l : m.multipliers) j.push_back({l.real(), l.imag()});
   return j;
+}
+
+// The motion of a point of a branch or curve: state, events, speed, multipliers.
+nlohmann::json MotionPoint(const PeriodicMotion& m) {
+  return {{"x", m.state.x},
+          {"u", m.state.u},
+          {"v", m.state.v},
+          {"psi", m.state.psi},
+          {"mode", SimModeName(m.mode)},
+          {"period", m.period},
+          {"impacts_right", m.impacts_right},
+          {"impacts_left", m.impacts_left},
+          {"mean_velocity", m.mean_velocity},
+          {"spectral_radius", m.spectral_radius},
+          {"multipliers", Multipliers(m)},
+          {"stable", m.stable}};
 }
 
 nlohmann::json End(BranchEnd end, const std::string& name, double lambda) {
@@ -18,6 +37,44 @@ nlohmann::json Limit(const MotionLimit& l, const std::string& name) {
   if (l.special) {
     j["accuracy"] = l.accuracy;
     j["multipliers"] = Multipliers(l.motion);
+  }
+  return j;
+}
+
+// One end of a curve: how it ended and its last point.
+nlohmann::json CurveEnd(BranchEnd end, const FollowResult& f, const std::string& name,
+                        const CurvePoint* last) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {{"end", BranchEndName(end)},
+          {name, last != nullptr ? last->parameter : nan},
+          {f.param2, last != nullptr ? last->parameter2 : nan}};
+}
+
+nlohmann::json FollowJson(const FollowResult& f, const std::string& name) {
+  const Curve& c = f.curve;
+  const bool any = !c.points.empty();
+  return {{"type", SpecialPointTypeName(f.type)},
+          {"parameter2", f.param2},
+          {"status", ContinuationStatusName(c.status)},
+          {"message", c.message},
+          {"start",
+           {{name, f.at ? f.at->parameter : std::numeric_limits<double>::quiet_NaN()},
+            {f.param2, f.value2}}},
+          {"start_index", c.start_index},
+          {"ends",
+           {{"backward", CurveEnd(c.backward_end, f, name, any ? &c.points.front() : nullptr)},
+            {"forward", CurveEnd(c.forward_end, f, name, any ? &c.points.back() : nullptr)}}}};
+}
+
+nlohmann::json CurveJson(const Curve& c, const std::string& name, const std::string& name2) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const CurvePoint& p : c.points) {
+    nlohmann::json point = MotionPoint(p.motion);
+    point[name] = p.parameter;
+    point[name2] = p.parameter2;
+    point["arclength"] = p.arclength;
+    point["condition"] = p.condition;
+    j.push_back(std::move(point));
   }
   return j;
 }
@@ -34,22 +91,11 @@ nlohmann::json BranchJson(const Branch& b, const std::string& name) {
                {"upper", End(b.forward_end, name, b.forward_parameter)}};
   j["points"] = nlohmann::json::array();
   for (const BranchPoint& p : b.points) {
-    const PeriodicMotion& m = p.motion;
-    j["points"].push_back({{name, p.parameter},
-                           {"arclength", p.arclength},
-                           {"x", m.state.x},
-                           {"u", m.state.u},
-                           {"v", m.state.v},
-                           {"psi", m.state.psi},
-                           {"mode", SimModeName(m.mode)},
-                           {"period", m.period},
-                           {"impacts_right", m.impacts_right},
-                           {"impacts_left", m.impacts_left},
-                           {"mean_velocity", m.mean_velocity},
-                           {"spectral_radius", m.spectral_radius},
-                           {"multipliers", Multipliers(m)},
-                           {"stable", m.stable},
-                           {"label", p.label}});
+    nlohmann::json point = MotionPoint(p.motion);
+    point[name] = p.parameter;
+    point["arclength"] = p.arclength;
+    point["label"] = p.label;
+    j["points"].push_back(std::move(point));
   }
   j["special_points"] = nlohmann::json::array();
   for (const SpecialPoint& s : b.special_points) {
@@ -66,6 +112,18 @@ nlohmann::json BranchJson(const Branch& b, const std::string& name) {
          {"state", {{"x", m.state.x}, {"u", m.state.u}, {"v", m.state.v}, {"psi", m.state.psi}}},
          {"multipliers", Multipliers(m)},
          {"stable", m.stable}});
+  }
+  return j;
+}
+
+nlohmann::json ContinueJobJson(const ContinueJobResult& r) {
+  nlohmann::json j = BranchJson(r.branch, r.param);
+  if (r.switched) {
+    j["switched"] = r.switched->at ? BranchJson(r.switched->branch, r.param) : nlohmann::json();
+  }
+  if (r.follow) {
+    j["follow"] = FollowJson(*r.follow, r.param);
+    j["curve"] = CurveJson(r.follow->curve, r.param, r.follow->param2);
   }
   return j;
 }

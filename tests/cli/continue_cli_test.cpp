@@ -78,6 +78,41 @@ TEST(ContinueCli, CsvHasOneRowPerPointAfterItsProvenanceLine) {
   std::filesystem::remove(path);
 }
 
+TEST(ContinueCli, CurveCsvHasBothParametersAndTheConditionPerPoint) {
+  // The period doubling at alpha = 0.2229 followed in (alpha, A) (docs/continuation.md).
+  const std::string curve =
+      kAlphaBranch + " --param2 A --from2 0.04 --to2 0.06 --follow period_doubling";
+  const auto path = testing::TempPath("curve.csv");
+  const auto r = RunCli(curve + " -o " + path.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("curve of the period_doubling at alpha = 0.2229"), std::string::npos)
+      << r.out;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# capsubot ", 0), 0U) << line;
+  EXPECT_NE(line.find("--param2 A --from2 0.04 --to2 0.06 --follow period_doubling"),
+            std::string::npos)
+      << line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "alpha,A,x,u,v,psi,period,impacts_right,impacts_left,mean_velocity,spectral_radius,"
+            "mu1_re,mu1_im,mu2_re,mu2_im,stable,condition");
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  const auto j = nlohmann::json::parse(RunCli(curve + " --json").out);
+  EXPECT_EQ(j["follow"]["status"], "ok");
+  EXPECT_EQ(j["follow"]["type"], "period_doubling");
+  ASSERT_GE(j["curve"].size(), 10U);
+  EXPECT_EQ(static_cast<std::size_t>(rows), j["curve"].size());
+  for (const auto& p : j["curve"]) {
+    EXPECT_TRUE(p.contains("alpha") && p.contains("A") && p.contains("condition"));
+    EXPECT_GE(p["A"].get<double>(), 0.04);
+    EXPECT_LE(p["A"].get<double>(), 0.06);
+  }
+  std::filesystem::remove(path);
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
   const auto path = testing::TempPath("bad_branch.csv");
   const std::string o = " -o " + path.string() + " 2>&1";
@@ -104,6 +139,20 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
       {"continue " + kSmallOrbit + " --from-orbit --param mu --from 0.2 --to 0.3",
        "capsubot continue: error: parameter = mu is invalid: expected one of A, c, alpha, T0, e, "
        "phi0, or a Fourier coefficient a1..a16, b1..b16\n"},
+      {kAlphaBranch + " --param2 A --to2 0.06 --follow fold",
+       "capsubot continue: error: --param2 requires --from2 (see capsubot continue --help)\n"},
+      {kAlphaBranch + " --param2 A --from2 0.04 --to2 0.06 --follow hopf",
+       "capsubot continue: error: --follow = hopf is invalid: expected one of fold, "
+       "period_doubling, grazing, speed_extremum\n"},
+      {kAlphaBranch + " --param2 alpha --from2 0.2 --to2 0.3 --follow fold",
+       "capsubot continue: error: --param2 = alpha is invalid: expected a parameter other than "
+       "param = alpha\n"},
+      {kAlphaBranch + " --param2 A --from2 0.06 --to2 0.04 --follow fold",
+       "capsubot continue: error: --to2 = 0.04 is invalid: expected a finite number > from2 = "
+       "0.06\n"},
+      {kAlphaBranch + " --param2 A --from2 0.06 --to2 0.07 --follow fold",
+       "capsubot continue: error: the robot's A = 0.05 is outside the range: expected from2 = "
+       "0.06 <= A <= to2 = 0.07 (the curve starts at the robot's value)\n"},
   };
   for (const auto& c : cases) {
     const auto r = RunCli(c.args + o);

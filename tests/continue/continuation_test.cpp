@@ -1,6 +1,6 @@
 // Continuation of periodic motions (docs/continuation.md). References: the analytic one-impact
 // orbit and its impact-map multipliers (orbit.hpp, validity.hpp, stability.hpp), root finders on
-// the analytic family written here, Newton shooting (periodic.hpp) and long runs of the
+// the analytic family (one_impact_family.hpp), Newton shooting (periodic.hpp) and long runs of the
 // simulator (attractors.hpp).
 
 #include "capsubot/continue/continuation.hpp"
@@ -14,13 +14,28 @@
 
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
+#include "continue/one_impact_family.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
 namespace {
 
+using testing::AfterImpact;
+using testing::AlphaBranch;
+using testing::Bisect;
+using testing::Find;
+using testing::ImpactPhase;
+using testing::kA;
+using testing::kC;
+using testing::kPhi0;
+using testing::LargestMassRatio;
 using testing::Near;
+using testing::OrbitAt;
+using testing::OrbitParams;
+using testing::Range;
 using testing::RelNear;
+using testing::Robot;
+using testing::RobotOrbitPhase;
 
 // The corrector's residual is 1e-12 and the impact phase is exact to rounding: the mean
 // velocity agrees with the analytic orbit's to 1e-9 relative (the required bar).
@@ -32,79 +47,6 @@ constexpr double kMultiplierTol = 1e-7;
 constexpr double kParameterTol = 1e-9;
 // Special points are located to this in the parameter (required).
 constexpr double kLocationTol = 1e-8;
-
-// The stable one-impact orbit with clearance (docs/orbit.md, `solve --stability`): A = 0.05,
-// c = 0.02, T0 = 0.1, e = 0.5, impact at motor phase -2.842.
-constexpr double kA = 0.05, kC = 0.02, kPhi0 = -2.842;
-
-Params OrbitParams() {
-  Params p;
-  p.T0 = 0.1;
-  p.e = 0.5;
-  return p;
-}
-
-// The orbit of the force with impact at motor phase phi0 (docs/model.md section 4).
-Orbit OrbitAt(double A, double phi0) {
-  return ComputeOrbit(Forcing::Harmonic(A, kC, phi0), OrbitParams());
-}
-
-// The state right after the impact at forcing phase psi = 0 of a robot whose motor phase is
-// kPhi0: the orbit with impact phase phi0 is at psi = phi0 - kPhi0.
-PhaseState AfterImpact(const Orbit& o, double phi0) {
-  return {1.0, -o.e * o.u, o.v_plus, phi0 - kPhi0};
-}
-
-// The motor phase of the first right-wall impact after the section of a branch point (the
-// exact simulator: its event phase).
-double ImpactPhase(const RobotModel& r, const PeriodicMotion& m) {
-  struct FirstImpact : SimObserver {
-    double phase = std::nan("");
-    void OnEvent(const SimEvent& e) override {
-      if (e.kind == EventKind::kImpactRight && std::isnan(phase)) phase = e.after.phi;
-    }
-  } observer;
-  const SimOptions o = testing::StartAt(r.alpha, m.state.x, m.state.u, m.state.v, 1.0);
-  Simulate(r.forcing.WithPhase(r.forcing.phi0() + m.state.psi), r.params, o, &observer);
-  return r.forcing.phi0() + m.state.psi + observer.phase;
-}
-
-RobotModel Robot(double alpha, double A = kA) {
-  return {Forcing::Harmonic(A, kC, kPhi0), OrbitParams(), alpha};
-}
-
-ContinuationOptions Range(double from, double to, double start) {
-  ContinuationOptions o;
-  o.from = from;
-  o.to = to;
-  o.start = start;
-  return o;
-}
-
-// The root of f in [lo, hi] (f(lo) f(hi) < 0) by bisection to the spacing of doubles.
-double Bisect(const std::function<double(double)>& f, double lo, double hi) {
-  const bool rising = f(hi) > 0.0;
-  for (int i = 0; i < 200 && lo < hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid == lo || mid == hi) break;
-    ((f(mid) > 0.0) == rising ? hi : lo) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-const SpecialPoint* Find(const Branch& b, SpecialPointType type) {
-  const auto it = std::find_if(b.special_points.begin(), b.special_points.end(),
-                               [&](const SpecialPoint& s) { return s.type == type; });
-  return it == b.special_points.end() ? nullptr : &*it;
-}
-
-Branch AlphaBranch(double max_step) {
-  const Orbit o = OrbitAt(kA, kPhi0);
-  ContinuationOptions opt = Range(0.2, 0.3, o.alpha);
-  opt.max_step = max_step;
-  opt.initial_step = std::min(opt.initial_step, max_step);
-  return ContinueBranch([](double alpha) { return Robot(alpha); }, AfterImpact(o, kPhi0), opt);
-}
 
 TEST(Continuation, OneImpactBranchInAlphaIsTheAnalyticOrbitAtEveryPoint) {
   const Branch b = AlphaBranch(0.05);
@@ -134,14 +76,9 @@ TEST(Continuation, OneImpactBranchInAlphaIsTheAnalyticOrbitAtEveryPoint) {
 }
 
 TEST(Continuation, FoldIsWhereTheAnalyticMassRatioIsLargest) {
-  // d alpha / d phi0 = 0 of the analytic family: the root of its central difference (step 1e-5,
-  // error ~1e-10 in the slope) by bisection between -3.14 and -3.0, where a scan of
-  // `capsubot solve` shows alpha rising then falling; alpha there is insensitive to the phase.
-  const auto slope = [](double phi0) {
-    return (OrbitAt(kA, phi0 + 1e-5).alpha - OrbitAt(kA, phi0 - 1e-5).alpha) / 2e-5;
-  };
-  const double phi_fold = Bisect([&](double p) { return -slope(p); }, -3.14, -3.0);
-  const double alpha_fold = OrbitAt(kA, phi_fold).alpha;
+  // d alpha / d phi0 = 0 of the analytic family between -3.14 and -3.0, where a scan of
+  // `capsubot solve` shows alpha rising then falling.
+  const double alpha_fold = LargestMassRatio(kA, -3.14, -3.0);
   for (double max_step : {0.05, 0.005}) {  // the step changes the cost, not the fold
     const Branch b = AlphaBranch(max_step);
     const SpecialPoint* fold = Find(b, SpecialPointType::kFold);
@@ -164,21 +101,10 @@ TEST(Continuation, GrazingIsWhereTheAnalyticOrbitTouchesTheRightWall) {
   // continued in A: its interior maximum of x reaches the right wall near A = 0.063 (x_max =
   // 0.974 at A = 0.06 and 1.135 at 0.08), where a second impact appears.
   const double alpha = OrbitAt(kA, kPhi0).alpha;
-  // The orbit of the robot at amplitude A: Newton on alpha(phi0) = alpha from phi0.
-  const auto robot_orbit_phase = [&](double A, double phi0) {
-    for (int i = 0; i < 60; ++i) {
-      const double f = OrbitAt(A, phi0).alpha - alpha;
-      const double df = (OrbitAt(A, phi0 + 1e-7).alpha - OrbitAt(A, phi0 - 1e-7).alpha) / 2e-7;
-      const double step = f / df;
-      phi0 -= step;
-      if (std::abs(step) < 1e-15) break;
-    }
-    return phi0;
-  };
-  const double phi_start = robot_orbit_phase(kA, 2.9423);
+  const double phi_start = RobotOrbitPhase(kA, alpha, 2.9423);
   double phi = phi_start;
   const auto x_max_minus_one = [&](double A) {
-    phi = robot_orbit_phase(A, phi);
+    phi = RobotOrbitPhase(A, alpha, phi);
     const Solution s = Solve(Forcing::Harmonic(A, kC, phi), OrbitParams());
     return s.validity.x_max - 1.0;
   };

@@ -111,9 +111,12 @@ enum class BranchEnd {
   kRangeEnd,   ///< reached `from` or `to` (the last point lies on the end)
   kLost,       ///< the corrector failed at the smallest step: the motion is lost here
   kMaxPoints,  ///< max_points reached
+  /// A two-parameter curve (special_curve.hpp) cannot go on at the smallest step without
+  /// changing the motion's events (impacts, stick/slide pattern): its condition ends there.
+  kEventChange,
 };
 
-/// "not_run", "range_end", "lost", "max_points".
+/// "not_run", "range_end", "lost", "max_points", "event_change".
 const char* BranchEndName(BranchEnd end);
 
 enum class ContinuationStatus {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "capsubot/continue/continuation.hpp"
+#include "capsubot/continue/special_curve.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/orbit/orbit.hpp"
@@ -27,6 +28,26 @@ PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, dou
 /// family holds copies.
 RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
                                  const std::string& param);
+
+/// One end of a parameter's range with the name a message gives it ("from", "to2").
+struct RangeEnd {
+  const char* name;
+  double value;
+};
+
+/// The robot's own value of the parameter named `param` (a robot parameter, as
+/// NamedParameterFamily), which must lie in [from, to]: else std::invalid_argument "the robot's
+/// <param> = <value> is outside the range: expected from = .. <= <param> <= to = .. (the <what>
+/// starts at the robot's value)".
+double RobotValueInRange(const RobotModel& robot, const std::string& param, const RangeEnd& from,
+                         const RangeEnd& to, const char* what);
+
+/// The robot at each pair of values of the parameters named `param` and `param2` (two different
+/// robot parameters, as NamedParameterFamily), the rest as given. Throws std::invalid_argument
+/// as NamedParameterFamily does for either name, and when both name the same parameter
+/// ("param2 = A is invalid: expected a parameter other than param = A").
+RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
+                                   const std::string& param, const std::string& param2);
 
 /// Follows the periodic motion near `start` in the parameter named `param` (A, c, alpha, T0,
 /// e, phi0, a1..a16, b1..b16: the robot parameters of ModelParameter) over [options.from,

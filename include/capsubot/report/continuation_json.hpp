@@ -7,6 +7,7 @@
 
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/continue/gait_robustness.hpp"
+#include "capsubot/job/continue_job.hpp"
 
 namespace capsubot::json {
 
@@ -17,6 +18,15 @@ namespace capsubot::json {
 /// "mean_velocity", "period", "impacts_right", "impacts_left", "state" {x, u, v, psi},
 /// "multipliers", "stable"}]}; `name` is the parameter's name.
 nlohmann::json BranchJson(const Branch& branch, const std::string& name);
+
+/// The object of `capsubot continue --json` (the provenance aside): BranchJson(result.branch,
+/// param); with switch_branch "switched": BranchJson of the period-2p branch (null without a
+/// located period doubling); with follow "follow": {"type", "parameter2", "status", "message",
+/// "start" {param, param2}, "start_index", "ends": {"backward": {"end", param, param2},
+/// "forward": {...}}} and "curve": [{param, param2, "arclength", "condition", "x", "u", "v",
+/// "psi", "mode", "period", "impacts_right", "impacts_left", "mean_velocity",
+/// "spectral_radius", "multipliers" [[re, im], ...], "stable"}].
+nlohmann::json ContinueJobJson(const ContinueJobResult& result);
 
 /// {name: {"value", "from", "to", "status", "message", "down": limit, "up": limit}} for T0, e,
 /// alpha, each limit {"type": a special point's type or the branch end's ("range_end",

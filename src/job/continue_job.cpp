@@ -1,0 +1,111 @@
+// `capsubot continue` as one call (docs/continuation.md).
+
+#include "capsubot/job/continue_job.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "capsubot/continue/branch_switch.hpp"
+#include "capsubot/continue/parameter_branch.hpp"
+
+namespace capsubot {
+namespace {
+
+// The branch's first located special point of the type (null if none).
+const SpecialPoint* FirstLocated(const Branch& b, SpecialPointType type) {
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type == type && sp.located) return &sp;
+  }
+  return nullptr;
+}
+
+RobotModel RobotOf(const ContinueJobOptions& o) { return {o.forcing, o.params, o.alpha}; }
+
+FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
+  const FollowOptions& f = *o.follow;
+  FollowResult r;
+  r.param2 = f.param2;
+  r.type = f.type;
+  r.value2 = RobotValueInRange(RobotOf(o), f.param2, {"from2", f.from2}, {"to2", f.to2}, "curve");
+  r.curve.type = f.type;
+  const SpecialPoint* sp = FirstLocated(branch, f.type);
+  if (sp == nullptr) {
+    r.curve.message = fmt::format("no located {} on the branch in {}: no curve to follow",
+                                  SpecialPointTypeName(f.type), o.param);
+    return r;
+  }
+  r.at = *sp;
+  CurveOptions c;
+  c.from2 = f.from2;
+  c.to2 = f.to2;
+  c.start2 = r.value2;
+  c.continuation = o.continuation;
+  r.curve = FollowSpecialPoint(
+      NamedParameterSurface(o.forcing, o.params, o.alpha, o.param, f.param2), *sp, c);
+  return r;
+}
+
+}  // namespace
+
+void ContinueJobOptions::Validate() const {
+  params.Validate();
+  if (const PhaseState* state = std::get_if<PhaseState>(&start)) RequirePhase("psi", state->psi);
+  NamedParameterFamily(forcing, params, alpha, param);  // the name, and the force has it
+  ContinuationOptions range = continuation;  // the options' own rules, the start's value aside
+  range.start = range.from;
+  range.Validate();
+  RobotValueInRange(RobotOf(*this), param, {"from", continuation.from}, {"to", continuation.to},
+                    "branch");
+  if (!follow) return;
+  NamedParameterSurface(forcing, params, alpha, param, follow->param2);
+  if (!IsFollowable(follow->type)) {
+    throw std::invalid_argument(fmt::format(
+        "follow = {} is invalid: expected one of fold, period_doubling, grazing, speed_extremum",
+        SpecialPointTypeName(follow->type)));
+  }
+  CurveOptions curve;
+  curve.from2 = follow->from2;
+  curve.to2 = follow->to2;
+  curve.start2 = follow->from2;  // the range's own rules, the robot's value aside
+  curve.continuation = range;
+  curve.Validate();
+  RobotValueInRange(RobotOf(*this), follow->param2, {"from2", follow->from2}, {"to2", follow->to2},
+                    "curve");
+}
+
+ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
+  options.Validate();
+  const int stages = 1 + (options.switch_branch ? 1 : 0) + (options.follow ? 1 : 0);
+  int stage = 0;
+  const auto tell = [&](const std::string& what) {
+    TellStage(options.on_stage, fmt::format("continue: {}/{} {}", ++stage, stages, what));
+  };
+  ContinueJobResult result;
+  result.param = options.param;
+  tell(fmt::format("the branch in {}", options.param));
+  const PhaseState start = std::holds_alternative<FromOneImpactOrbit>(options.start)
+                               ? OneImpactOrbitStart(options.forcing, options.params, options.alpha)
+                               : std::get<PhaseState>(options.start);
+  result.branch = ContinueParameter(options.forcing, options.params, options.alpha, options.param,
+                                    start, options.continuation);
+  if (options.switch_branch) {
+    tell("the period-2p branch born at its first period doubling");
+    SwitchResult& s = result.switched.emplace();
+    if (const SpecialPoint* pd = FirstLocated(result.branch, SpecialPointType::kPeriodDoubling)) {
+      s.at = *pd;
+      s.branch = SwitchAtPeriodDoubling(
+          NamedParameterFamily(options.forcing, options.params, options.alpha, options.param), *pd,
+          options.continuation);
+    }
+  }
+  if (options.follow) {
+    tell(fmt::format("the {} in ({}, {})", SpecialPointTypeName(options.follow->type),
+                     options.param, options.follow->param2));
+    result.follow = FollowCurve(options, result.branch);
+  }
+  TellStage(options.on_stage, "");
+  return result;
+}
+
+}  // namespace capsubot
