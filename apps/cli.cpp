@@ -119,12 +119,19 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
       ->needs(o.fourier_option);
 }
 
+std::vector<double> ForcingOptions::Sines() const {
+  return sin_text.empty() ? std::vector<double>() : ParseCoefficients("--sin", sin_text);
+}
+
+std::vector<double> ForcingOptions::Cosines() const {
+  return cos_text.empty() ? std::vector<double>() : ParseCoefficients("--cos", cos_text);
+}
+
 Forcing ForcingOptions::Build(bool need_phase) const {
   const bool has_phase = phi0_option != nullptr && phi0_option->count() > 0;
   if (fourier_option->count() > 0) {
-    const std::vector<double> b = ParseCoefficients("--sin", sin_text);
-    const std::vector<double> a = cos_text.empty() ? std::vector<double>(b.size(), 0.0)
-                                                   : ParseCoefficients("--cos", cos_text);
+    const std::vector<double> b = Sines();
+    const std::vector<double> a = cos_text.empty() ? std::vector<double>(b.size(), 0.0) : Cosines();
     return Forcing::Fourier(c, a, b, has_phase ? phi0 : 0.0);
   }
   if (A_option->count() == 0) {
@@ -180,6 +187,10 @@ int RunNamingFlags(const FlagNames& names, const std::function<int()>& run) {
     return run();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(WithFlagNames(e.what(), names));
+  } catch (const WriteError& e) {
+    throw WriteError(WithFlagNames(e.what(), names));
+  } catch (const IoError& e) {
+    throw IoError(WithFlagNames(e.what(), names));
   }
 }
 
