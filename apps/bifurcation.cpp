@@ -1,20 +1,18 @@
 // capsubot bifurcation: brute-force bifurcation diagram with the state carried along, up and
-// down, plus the analytic one-impact orbits (docs/model.md section 13); under mpirun its parts
-// are computed on the ranks (ranks.hpp).
-
-#include "capsubot/attract/bifurcation.hpp"
+// down, plus the analytic one-impact orbits (docs/model.md section 13; library:
+// capsubot/job/bifurcation_job.hpp); under mpirun its parts are computed on the ranks
+// (ranks.hpp).
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <tuple>
-#include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/io/io.hpp"
-#include "capsubot/sweep/bifurcation_csv.hpp"
+#include "capsubot/job/bifurcation_job.hpp"
+#include "capsubot/report/bifurcation_text.hpp"
 #include "capsubot/sweep/grid.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
@@ -31,113 +29,82 @@ struct BifurcationCommandOptions {
   std::string param;
   std::string direction = "both";
   std::string start = "0.5,0";
-  std::string over;   // "NAME=lo:hi:n" (the sweep's axis syntax), empty: one diagram
-  std::string shard;  // "K/N", empty: the whole study
-  std::string output, summary;
+  std::string over;             // "NAME=lo:hi:n" (the sweep's axis syntax), empty: one diagram
+  std::string shard;            // "K/N", empty: the whole study
+  BifurcationShardFiles files;  // -o, --summary, --resume, --checkpoint-seconds
   bool no_analytic = false;
-  bool resume = false;
-  double checkpoint_seconds = 0.5;
 };
 
-int Run(BifurcationCommandOptions& opt, const CLI::App& cmd) {
-  const Forcing forcing = opt.robot.forcing.Build();
-  BifurcationOptions o = opt.diagram;
+// Library messages name the job's options; the user typed these flags.
+const FlagNames& BifurcationFlagNames() {
+  static const FlagNames names = [] {
+    FlagNames n = MotionFlagNames();
+    n.insert(n.end(), {{"impacts", "-o"},
+                       {"summary", "--summary"},
+                       {"to", "--to"},
+                       {"checkpoint_seconds", "--checkpoint-seconds"}});
+    return n;
+  }();
+  return names;
+}
+
+// --over NAME=...: the second parameter and its values (at most kMaxOverValues, checked
+// before they are held).
+void SetOver(const std::string& text, BifurcationOptions& o) {
+  const GridAxis axis = ParseGridAxis(text);
+  o.over = ParseRobotParameter(axis.name(), &o.over_harmonic);
+  if (axis.size() > kMaxOverValues) {
+    throw std::invalid_argument(
+        fmt::format("--over = {} is invalid: {} values: expected at most {} values", text,
+                    axis.size(), kMaxOverValues));
+  }
+  for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
+}
+
+// The job the command line describes.
+BifurcationJobOptions JobOptions(const BifurcationCommandOptions& opt, const CLI::App& cmd) {
+  BifurcationJobOptions job;
+  job.robot.forcing = opt.robot.forcing.Build();
+  job.robot.params = opt.robot.params;
+  job.robot.alpha = opt.robot.alpha;
+  BifurcationOptions& o = job.diagram;
+  o = opt.diagram;
   o.threads = CapThreads(o.threads, "capsubot bifurcation");
   o.param = ParseRobotParameter(opt.param, &o.harmonic);
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);
-  o.analytic = !opt.no_analytic && !opt.summary.empty();
+  o.analytic = !opt.no_analytic;
   if (opt.direction != "up" && opt.direction != "down" && opt.direction != "both") {
     throw std::invalid_argument(
         fmt::format("--direction = {} is invalid: expected up, down or both", opt.direction));
   }
   o.up = opt.direction != "down";
   o.down = opt.direction != "up";
-  const bool two = !opt.over.empty();
-  std::string over_name;
-  if (two) {
-    const GridAxis axis = ParseGridAxis(opt.over);
-    over_name = axis.name();
-    o.over = ParseRobotParameter(over_name, &o.over_harmonic);
-    if (axis.size() > kMaxOverValues) {  // before the values are held
-      throw std::invalid_argument(
-          fmt::format("--over = {} is invalid: {} values: expected at most {} values", opt.over,
-                      axis.size(), kMaxOverValues));
-    }
-    for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
-  }
-  RequireDistinctOutputs({{opt.output, "-o"}, {opt.summary, "--summary"}});
+  if (!opt.over.empty()) SetOver(opt.over, o);
   const bool sharded = SplitsRun(opt.shard);  // --shard 0/1: the files of the whole study
   if (sharded) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   RequireShardForResume(cmd, sharded, "study");
-  RequireCheckpointSeconds(opt.checkpoint_seconds);
-  double alpha = opt.robot.alpha;
-  if (o.param == ModelParameter::kalpha) alpha = o.from;  // the swept value decides
-  if (two && o.over == ModelParameter::kalpha) alpha = o.over_values.front();
-  if (std::isnan(alpha)) {
-    throw std::invalid_argument("option --alpha is missing: give the mass ratio of the robot");
-  }
-  if (o.from == o.to) {  // one value: no diagram (and "up" and "down" would be the same)
-    throw std::invalid_argument(fmt::format(
-        "--to = {} is invalid with --from = {}: expected a range, --to other than --from",
-        FormatNumber(o.to), FormatNumber(o.from)));
-  }
+  job.files = opt.files;
+  // The run's name, in both files: the same for a shard and the whole study (the join writes
+  // it), without the paths and how it runs.
+  job.files.comments = OutputProvenance(cmd).CommentLine();
+  job.progress = CountProgress("parameter values");
+  return job;
+}
+
+int Run(const BifurcationCommandOptions& opt, const CLI::App& cmd) {
+  const BifurcationJobOptions job = JobOptions(opt, cmd);
   // Every rank checks the whole study (both ends of the range at every robot, a bad --shard)
   // before the processes of an MPI job meet: bad input fails at once, before any file is
   // touched.
-  ValidateBifurcation(forcing, opt.robot.params, alpha, o);
+  const BifurcationJobPlan plan = PlanBifurcationJob(job);
   Ranks ranks;  // under mpirun: rank 0 runs the study, the others compute its parts
   if (ranks.worker()) {
-    return ranks.Serve(BifurcationBlocks(forcing, opt.robot.params, alpha, o), o.threads);
+    const RobotModel& robot = plan.robot;
+    return ranks.Serve(BifurcationBlocks(robot.forcing, robot.params, robot.alpha, plan.diagram),
+                       plan.diagram.threads);
   }
-  const std::string study = fmt::format(
-      "bifurcation diagram over {} = {} .. {} ({} values, {}){}", opt.param, o.from, o.to, o.steps,
-      opt.direction,
-      two ? fmt::format(" for {} values of {}", o.over_values.size(), over_name) : std::string());
-  const auto summary_note = [&](std::int64_t rows) {
-    return opt.summary.empty() ? std::string()
-                               : fmt::format(", {} summary rows to {}", rows, opt.summary);
-  };
-  // The run's name, in both files: the same for a shard and the whole study (the join writes
-  // it), without the paths and how it runs.
-  const std::string comments = OutputProvenance(cmd).CommentLine();
-  if (sharded) {
-    BifurcationShardFiles files;
-    files.impacts = opt.output;
-    files.summary = opt.summary;
-    files.comments = comments;
-    files.resume = opt.resume;
-    files.checkpoint_seconds = opt.checkpoint_seconds;
-    const BifurcationShardSummary s =
-        WriteBifurcationShard(forcing, opt.robot.params, alpha, o, files,
-                              CountProgress("parameter values"), ranks.backend());
-    fmt::print(
-        "{}, shard {}/{} of {} continuations: {} impacts written to {}{}{}\n", study, o.shard,
-        o.shards, BifurcationContinuations(o), s.impacts, opt.output, summary_note(s.summary_rows),
-        s.resumed > 0 ? fmt::format(" ({} of the shard's {} parts computed, {} resumed from the "
-                                    "checkpoint)",
-                                    s.parts - s.resumed, s.parts, s.resumed)
-                      : std::string());
-    return 0;
-  }
-  CheckWritable(opt.output, "-o");  // fail on an unwritable path before the long run
-  const BifurcationDiagram d = ComputeBifurcation(
-      forcing, opt.robot.params, alpha, o, CountProgress("parameter values"), ranks.backend());
-  std::string rows = comments + BifurcationImpactsHeader(o);
-  AppendImpactRows(rows, d, two);
-  AtomicFile impacts(opt.output, "-o");
-  impacts.stream() << rows;
-  std::unique_ptr<AtomicFile> summary;
-  if (!opt.summary.empty()) {
-    rows = comments + BifurcationSummaryHeader(o);
-    AppendSummaryRows(rows, d, two);
-    summary = std::make_unique<AtomicFile>(opt.summary, "--summary");
-    summary->stream() << rows;
-  }
-  impacts.Commit();
-  if (summary) summary->Commit();
-  fmt::print("{}: {} impacts written to {}{}\n", study, d.impacts.size(), opt.output,
-             summary_note(static_cast<std::int64_t>(d.summary.size())));
+  fmt::print("{}", BifurcationJobText(RunBifurcationJob(job, ranks.backend())));
   return 0;
 }
 
@@ -173,12 +140,12 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "start of each sweep: from rest at x0 = X0, forcing phase PSI")
       ->type_name("X0,PSI")
       ->capture_default_str();
-  cmd->add_option("-o,--output", opt->output,
+  cmd->add_option("-o,--output", opt->files.impacts,
                   "CSV of every recorded impact: param, direction, period_index, wall, phase, "
                   "velocity")
       ->required()
       ->type_name("FILE");
-  cmd->add_option("--summary", opt->summary,
+  cmd->add_option("--summary", opt->files.summary,
                   "CSV, one row per value and direction: param, direction, period, "
                   "impacts_right, impacts_left, mean_velocity, largest_multiplier (real part), "
                   "largest_multiplier_im, spectral_radius, status; plus the analytic orbits")
@@ -199,10 +166,10 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "of -o (or of --summary) into the file of the whole study (docs/cluster.md); a "
                   "shard's files are written as FILE.partial with checkpoints (--resume); 0/1 "
                   "writes the files of the whole study");
-  cmd->add_flag("--resume", opt->resume,
+  cmd->add_flag("--resume", opt->files.resume,
                 "with --shard: continue a killed shard from the checkpoints FILE.checkpoint of "
                 "-o and --summary (same options required; their checksums are verified)");
-  cmd->add_option("--checkpoint-seconds", opt->checkpoint_seconds,
+  cmd->add_option("--checkpoint-seconds", opt->files.checkpoint_seconds,
                   "with --shard: minimum time [s] between two checkpoints of each shard file "
                   "(written as FILE.partial, renamed at the end); 0: after every part")
       ->capture_default_str();
@@ -214,7 +181,9 @@ Command AddBifurcationCommand(CLI::App& app) {
                       "--transient 40 --record 20 --over e=0.4:0.6:3 -o i.csv --summary "
                       "s.csv"}});
   return {cmd,
-          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
+          [opt, cmd] {
+            return RunNamingFlags(BifurcationFlagNames(), [&] { return Run(*opt, *cmd); });
+          },
           [] { return true; }};
 }
 

@@ -131,14 +131,22 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
       ->needs(o.fourier_option);
 }
 
+std::vector<double> ForcingOptions::Sines() const {
+  return sin_text.empty() ? std::vector<double>() : ParseCoefficients("--sin", sin_text);
+}
+
+std::vector<double> ForcingOptions::Cosines() const {
+  return cos_text.empty() ? std::vector<double>() : ParseCoefficients("--cos", cos_text);
+}
+
 Forcing ForcingOptions::Build(bool need_phase) const {
   ForceSpec spec;
   if (A_option->count() > 0) spec.A = A;
   spec.c = c;
   if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = phi0;
   if (fourier_option->count() > 0) {
-    spec.sin = ParseCoefficients("--sin", sin_text);
-    if (!cos_text.empty()) spec.cos = ParseCoefficients("--cos", cos_text);
+    spec.sin = Sines();
+    if (!cos_text.empty()) spec.cos = Cosines();
   }
   return spec.Build(need_phase, "--");
 }
@@ -187,6 +195,10 @@ int RunNamingFlags(const FlagNames& names, const std::function<int()>& run) {
     return run();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(WithFlagNames(e.what(), names));
+  } catch (const WriteError& e) {
+    throw WriteError(WithFlagNames(e.what(), names));
+  } catch (const IoError& e) {
+    throw IoError(WithFlagNames(e.what(), names));
   }
 }
 

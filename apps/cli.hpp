@@ -36,6 +36,11 @@ struct ForcingOptions {
   CLI::Option* phi0_option = nullptr;
   CLI::Option* fourier_option = nullptr;
 
+  /// The coefficients b_1..b_K of --sin (empty when not given); throws std::invalid_argument
+  /// naming the option for an element that is not a number.
+  std::vector<double> Sines() const;
+  /// The coefficients a_1..a_K of --cos (empty when not given), as Sines().
+  std::vector<double> Cosines() const;
   /// The force the options describe; throws std::invalid_argument naming what is missing.
   /// With `need_phase` false, phi0 may be absent (it is then 0: a command that solves for it).
   Forcing Build(bool need_phase = true) const;
@@ -82,7 +87,8 @@ using FlagNames = std::vector<std::pair<const char*, const char*>>;
 /// followed by ' ' or ':' ("--record = 3 is invalid: ..."); otherwise `message` unchanged.
 std::string WithFlagNames(const std::string& message, const FlagNames& names);
 
-/// Runs `run`; a std::invalid_argument it throws is thrown again WithFlagNames(names).
+/// Runs `run`; a std::invalid_argument, WriteError or IoError it throws is thrown again (the
+/// same type) WithFlagNames(names).
 int RunNamingFlags(const FlagNames& names, const std::function<int()>& run);
 
 /// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX, 0 <= K < N; throws

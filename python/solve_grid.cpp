@@ -27,7 +27,6 @@
 namespace capsubot::python {
 namespace {
 
-constexpr int kMaxThreads = 1024;            // as the sweep's --threads
 constexpr std::int64_t kBlockPoints = 2048;  // ~2 ms of Solve calls: the unit of work
 constexpr std::int64_t kNoError = std::numeric_limits<std::int64_t>::max();
 

@@ -20,6 +20,7 @@
 #include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/model/limits.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
 
@@ -368,9 +369,10 @@ void BifurcationOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("shard K = {} is invalid: expected 0 <= K < N = {}", shard, shards));
   }
-  if (threads < 0 || threads > 1024) {
-    throw std::invalid_argument(fmt::format(
-        "threads = {} is invalid: expected 1 <= threads <= 1024 (0: all cores)", threads));
+  if (threads < 0 || threads > kMaxThreads) {
+    throw std::invalid_argument(
+        fmt::format("threads = {} is invalid: expected 1 <= threads <= {} (0: all cores)", threads,
+                    kMaxThreads));
   }
 }
 

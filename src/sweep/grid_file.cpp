@@ -6,12 +6,9 @@
 
 #include <stdexcept>
 
+#include "capsubot/model/limits.hpp"
+
 namespace capsubot {
-namespace {
-
-constexpr int kMaxThreads = 1024;
-
-}  // namespace
 
 void GridFileOptions::ValidateFile(std::int64_t points) const {
   if (output.empty()) {

@@ -362,7 +362,7 @@ TEST(OptimizeCli, SizeOptionsAreBoundedBeforeAnyWork) {
        "--global-evaluations = 2000000000 is invalid: expected 10 <= global-evaluations <= "
        "10000000"},
       {"sweep --grid A=0:1:2 --c 0.1 --optimize phi0 --scan-points 2000000000 -o -",
-       "--scan-points = 2000000000 is invalid: expected 16 <= scan-points <= 1000000"},
+       "--scan-points = 2000000000 is invalid: expected 16 <= scan_points <= 1000000"},
   };
   int checked = 0;
   for (const Case& c : cases) {

@@ -21,6 +21,10 @@ inline constexpr std::int64_t kMaxEventsPerPeriod = 1'000'000'000;
 /// most: 250 times its default.
 inline constexpr std::int64_t kMaxOrbitEvaluations = 1'000'000'000;
 
+/// Worker threads a caller may ask for at most (0 asks for one per core): the --threads of the
+/// commands, the threads of the library's options and of the Python module's arguments.
+inline constexpr int kMaxThreads = 1024;
+
 /// Worker threads per core at most: more only add overhead, and each thread of a long run
 /// holds its own record (attractors.hpp, kMaxRecord).
 inline constexpr int kThreadsPerCore = 4;

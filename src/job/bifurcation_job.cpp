@@ -1,0 +1,95 @@
+// `capsubot bifurcation` as one call (capsubot/job/bifurcation_job.hpp).
+
+#include "capsubot/job/bifurcation_job.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "capsubot/io/io.hpp"
+
+namespace capsubot {
+namespace {
+
+// The whole study's files, written once the diagram is computed: both or neither.
+void WriteDiagram(const BifurcationDiagram& rows, const BifurcationOptions& diagram,
+                  const BifurcationShardFiles& files) {
+  const bool over = !diagram.over_values.empty();
+  std::string text = files.comments + BifurcationImpactsHeader(diagram);
+  AppendImpactRows(text, rows, over);
+  AtomicFile impacts(files.impacts, "impacts");
+  impacts.stream() << text;
+  std::unique_ptr<AtomicFile> summary;
+  if (!files.summary.empty()) {
+    text = files.comments + BifurcationSummaryHeader(diagram);
+    AppendSummaryRows(text, rows, over);
+    summary = std::make_unique<AtomicFile>(files.summary, "summary");
+    summary->stream() << text;
+  }
+  impacts.Commit();
+  if (summary) summary->Commit();
+}
+
+}  // namespace
+
+BifurcationJobPlan PlanBifurcationJob(const BifurcationJobOptions& options) {
+  const BifurcationShardFiles& files = options.files;
+  RequireDistinctOutputs({{files.impacts, "impacts"}, {files.summary, "summary"}});
+  files.Validate();
+  BifurcationJobPlan plan{options.robot, options.diagram};
+  BifurcationOptions& d = plan.diagram;
+  if (files.resume && d.shards < 2) {
+    throw std::invalid_argument(
+        "resume = true is invalid for the whole study: expected it only for a shard (shards >= "
+        "2; the whole study is not checkpointed)");
+  }
+  d.analytic = d.analytic && !files.summary.empty();  // the analytic orbits are summary rows
+  double& alpha = plan.robot.alpha;
+  if (d.param == ModelParameter::kalpha) alpha = d.from;  // the stepped value decides
+  if (!d.over_values.empty() && d.over == ModelParameter::kalpha) alpha = d.over_values.front();
+  if (std::isnan(alpha)) {
+    throw std::invalid_argument("alpha is missing: give the mass ratio of the robot");
+  }
+  if (d.from == d.to) {  // one value: no diagram (and "up" and "down" would be the same)
+    throw std::invalid_argument(
+        fmt::format("to = {} is invalid with from = {}: expected a range, to other than from",
+                    FormatNumber(d.to), FormatNumber(d.from)));
+  }
+  ValidateBifurcation(plan.robot.forcing, plan.robot.params, alpha, d);
+  return plan;
+}
+
+void BifurcationJobOptions::Validate() const { (void)PlanBifurcationJob(*this); }
+
+BifurcationJobResult RunBifurcationJob(const BifurcationJobOptions& options,
+                                       const BlockBackend& backend) {
+  const BifurcationJobPlan plan = PlanBifurcationJob(options);
+  const RobotModel& robot = plan.robot;
+  BifurcationJobResult result;
+  result.diagram = plan.diagram;
+  result.impacts = options.files.impacts;
+  result.summary = options.files.summary;
+  if (plan.diagram.shards > 1) {
+    const BifurcationShardSummary s =
+        WriteBifurcationShard(robot.forcing, robot.params, robot.alpha, plan.diagram, options.files,
+                              options.progress, backend);
+    result.impact_rows = s.impacts;
+    result.summary_rows = s.summary_rows;
+    result.parts = s.parts;
+    result.parts_resumed = s.resumed;
+    return result;
+  }
+  CheckWritable(options.files.impacts, "impacts");  // fail on an unwritable path before the run
+  result.rows = ComputeBifurcation(robot.forcing, robot.params, robot.alpha, plan.diagram,
+                                   options.progress, backend);
+  WriteDiagram(result.rows, plan.diagram, options.files);
+  result.impact_rows = static_cast<std::int64_t>(result.rows.impacts.size());
+  if (!result.summary.empty()) {
+    result.summary_rows = static_cast<std::int64_t>(result.rows.summary.size());
+  }
+  return result;
+}
+
+}  // namespace capsubot
