@@ -565,15 +565,6 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
                       fmt::join(group, " or "), group.front(), group.front()));
     }
   }
-  // The default inner-mass range is 0.01 m1 .. 10 m1: where it leaves double precision, the
-  // mass the user gave is the bad input, not a range the user never gave.
-  if (std::isnan(in.m2_min) && std::isnan(in.m2_max) && std::isfinite(in.m1) &&
-      !std::isfinite(in.M2Max())) {
-    throw std::invalid_argument(
-        fmt::format("shell mass m1 = {} kg is invalid: expected m1 <= {} kg, so that the default "
-                    "inner mass range 0.01 m1:10 m1 is finite (or give m2-range)",
-                    FormatNumber(in.m1), FormatNumber(std::numeric_limits<double>::max() / 10)));
-  }
   in.Validate();
   if (settings != nullptr) {
     // A grid gives its settings (m2: the range searched) at every point.
