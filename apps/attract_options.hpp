@@ -7,12 +7,14 @@
 #include <utility>
 
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/report/attractor_text.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
 
-// The JSON of motions is the shared layer's (src/report/), the same for the Python module.
+// The JSON of motions and their words (AttractorWords) are the shared layer's (src/report/), the
+// same for the Python module.
 using json::AttractorsJson;
 using json::MotionJson;
 
@@ -51,10 +53,6 @@ struct StartStateOptions {
   /// How many of the four were given.
   int Given() const;
 };
-
-/// "period 1: 3 right + 1 left impacts per period", or for an irregular attractor the range of
-/// its starts' mean velocities and whether their records are long enough.
-std::string AttractorWords(const Attractor& attractor, int max_period);
 
 /// A StartsProgress that shows the progress (ProgressBar, counting `what`, e.g. "starts") on
 /// stderr when progress is shown (progress.hpp); none otherwise.

@@ -291,106 +291,144 @@ std::string Show(const toml::node& node) {
 // thousands deep would exhaust the stack. A robot's file needs 2.
 constexpr int kMaxTomlDepth = 32;
 
-// Refuses a TOML text nested deeper than kMaxTomlDepth, scanning it before it is parsed:
-// keys' dots, headers' dots and the brackets and braces of values, outside strings and
-// comments. Tracks only what nests; the parser checks the rest of the syntax.
-void RequireTomlDepth(const std::string& text, const std::string& path) {
-  int header = 0;          // parts of the last [table] header: the depth of the keys below it
-  std::vector<int> depth;  // depth of the elements of each open array or inline table
-  std::vector<char> open;  // '[' or '{' of each
-  int value_depth = 0;     // depth of the value after the last '='
-  bool at_key = true;      // reading a key: its dots separate its parts
-  int parts = 1;
-  int line = 1;
-  const auto check = [&](int d) {
+// The scan of RequireTomlDepth: keys' dots, headers' dots and the brackets and braces of values,
+// outside strings and comments. Tracks only what nests; the parser checks the rest of the
+// syntax.
+class TomlDepthScan {
+ public:
+  TomlDepthScan(const std::string& text, const std::string& path) : text_(text), path_(path) {}
+
+  // Throws at the first place nested deeper than kMaxTomlDepth. Every step moves i_ forward.
+  void Run() {
+    while (i_ < text_.size()) {
+      const char c = text_[i_];
+      if (c == '#') {
+        while (i_ < text_.size() && text_[i_] != '\n') ++i_;
+      } else if (c == '"' || c == '\'') {
+        SkipString();
+      } else if (c == '\n') {
+        NewLine();
+      } else if (at_key_ && open_.empty() && c == '[') {  // a [table] or [[array]] header
+        Header();
+      } else if (at_key_ && c == '}' && !open_.empty() && open_.back() == '{') {  // {} or {a=1,}
+        Close();
+        at_key_ = false;
+        ++i_;
+      } else if (at_key_) {
+        KeyChar(c);
+      } else {
+        ValueChar(c);
+      }
+    }
+  }
+
+ private:
+  void Check(int d) const {
     if (d > kMaxTomlDepth) {
       throw std::invalid_argument(fmt::format(
           "config file {} line {} is invalid: keys and values nested more than {} deep: "
           "expected at most {} levels (parts of dotted keys and table headers, nested arrays "
           "and inline tables)",
-          path, line, kMaxTomlDepth, kMaxTomlDepth));
-    }
-  };
-  const auto context = [&] { return depth.empty() ? header : depth.back(); };
-  const std::size_t n = text.size();
-  std::size_t i = 0;
-  // Moves past the string that starts at i (basic or literal, one line or several).
-  const auto skip_string = [&] {
-    const char quote = text[i];
-    const bool multi = text.compare(i, 3, std::string(3, quote)) == 0;
-    i += multi ? 3 : 1;
-    while (i < n) {
-      if (text[i] == '\n') ++line;
-      if (quote == '"' && text[i] == '\\') {
-        i += 2;
-        continue;
-      }
-      if (text[i] == quote && (!multi || text.compare(i, 3, std::string(3, quote)) == 0)) {
-        i += multi ? 3 : 1;
-        return;
-      }
-      if (text[i] == '\n' && !multi) return;
-      ++i;
-    }
-  };
-  while (i < n) {
-    const char c = text[i];
-    if (c == '#') {
-      while (i < n && text[i] != '\n') ++i;
-    } else if (c == '"' || c == '\'') {
-      skip_string();
-    } else if (c == '\n') {
-      ++line;
-      ++i;
-      if (open.empty()) {
-        at_key = true;
-        parts = 1;
-      }
-    } else if (at_key && open.empty() && c == '[') {  // a [table] or [[array]] header
-      int header_parts = 1;
-      for (++i; i < n && text[i] != ']' && text[i] != '\n';) {
-        if (text[i] == '"' || text[i] == '\'') {
-          skip_string();
-          continue;
-        }
-        if (text[i] == '.') check(++header_parts);
-        ++i;
-      }
-      header = header_parts;
-      while (i < n && text[i] == ']') ++i;
-    } else if (at_key && c == '}' && !open.empty() && open.back() == '{') {  // {} or {a = 1,}
-      depth.pop_back();
-      open.pop_back();
-      at_key = false;
-      ++i;
-    } else if (at_key) {
-      if (c == '.') check(context() + ++parts);
-      if (c == '=') {
-        at_key = false;
-        value_depth = context() + parts;
-        check(value_depth);
-      }
-      ++i;
-    } else {
-      if (c == '[' || c == '{') {
-        const int d = (!open.empty() && open.back() == '[' ? depth.back() : value_depth) + 1;
-        check(d);
-        depth.push_back(d);
-        open.push_back(c);
-        if (c == '{') {
-          at_key = true;
-          parts = 1;
-        }
-      } else if ((c == ']' || c == '}') && !open.empty()) {
-        depth.pop_back();
-        open.pop_back();
-      } else if (c == ',' && !open.empty() && open.back() == '{') {
-        at_key = true;
-        parts = 1;
-      }
-      ++i;
+          path_, line_, kMaxTomlDepth, kMaxTomlDepth));
     }
   }
+
+  int Context() const { return depth_.empty() ? header_ : depth_.back(); }
+
+  // Moves past the string that starts at i_ (basic or literal, one line or several).
+  void SkipString() {
+    const std::size_t n = text_.size();
+    const char quote = text_[i_];
+    const bool multi = text_.compare(i_, 3, std::string(3, quote)) == 0;
+    i_ += multi ? 3 : 1;
+    while (i_ < n) {
+      if (text_[i_] == '\n') ++line_;
+      if (quote == '"' && text_[i_] == '\\') {
+        i_ += 2;
+        continue;
+      }
+      if (text_[i_] == quote && (!multi || text_.compare(i_, 3, std::string(3, quote)) == 0)) {
+        i_ += multi ? 3 : 1;
+        return;
+      }
+      if (text_[i_] == '\n' && !multi) return;
+      ++i_;
+    }
+  }
+
+  void NewLine() {
+    ++line_;
+    ++i_;
+    if (open_.empty()) {
+      at_key_ = true;
+      parts_ = 1;
+    }
+  }
+
+  // A [table] or [[array]] header: its dotted parts give the depth of the keys below it.
+  void Header() {
+    int header_parts = 1;
+    for (++i_; i_ < text_.size() && text_[i_] != ']' && text_[i_] != '\n';) {
+      if (text_[i_] == '"' || text_[i_] == '\'') {
+        SkipString();
+        continue;
+      }
+      if (text_[i_] == '.') Check(++header_parts);
+      ++i_;
+    }
+    header_ = header_parts;
+    while (i_ < text_.size() && text_[i_] == ']') ++i_;
+  }
+
+  void Close() {
+    depth_.pop_back();
+    open_.pop_back();
+  }
+
+  void KeyChar(char c) {
+    if (c == '.') Check(Context() + ++parts_);
+    if (c == '=') {
+      at_key_ = false;
+      value_depth_ = Context() + parts_;
+      Check(value_depth_);
+    }
+    ++i_;
+  }
+
+  void ValueChar(char c) {
+    if (c == '[' || c == '{') {
+      const int d = (!open_.empty() && open_.back() == '[' ? depth_.back() : value_depth_) + 1;
+      Check(d);
+      depth_.push_back(d);
+      open_.push_back(c);
+      if (c == '{') {
+        at_key_ = true;
+        parts_ = 1;
+      }
+    } else if ((c == ']' || c == '}') && !open_.empty()) {
+      Close();
+    } else if (c == ',' && !open_.empty() && open_.back() == '{') {
+      at_key_ = true;
+      parts_ = 1;
+    }
+    ++i_;
+  }
+
+  const std::string& text_;
+  const std::string& path_;
+  std::size_t i_ = 0;
+  int line_ = 1;
+  int header_ = 0;          // parts of the last [table] header: the depth of the keys below it
+  std::vector<int> depth_;  // depth of the elements of each open array or inline table
+  std::vector<char> open_;  // '[' or '{' of each
+  int value_depth_ = 0;     // depth of the value after the last '='
+  bool at_key_ = true;      // reading a key: its dots separate its parts
+  int parts_ = 1;
+};
+
+// Refuses a TOML text nested deeper than kMaxTomlDepth, scanning it before it is parsed.
+void RequireTomlDepth(const std::string& text, const std::string& path) {
+  TomlDepthScan(text, path).Run();
 }
 
 // A setting's value from the config file: numbers as TOML numbers, lists and ranges as arrays
@@ -477,6 +515,61 @@ std::string Names() {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
+// The settings of the config file `path` (none when empty) into `in`; returns their names.
+std::set<std::string> ReadConfigFile(const std::string& path, DesignInput& in) {
+  std::set<std::string> from_file;
+  if (path.empty()) return from_file;
+  const std::string text = ReadTextFile(path, "--config");
+  RequireTomlDepth(text, path);
+  toml::table table;
+  try {
+    table = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw std::invalid_argument(fmt::format("config file {} line {} is invalid: {}", path,
+                                            e.source().begin.line, e.description()));
+  }
+  for (const auto& [key, node] : table) {
+    const std::string name(key.str());
+    const int i = Find(name);
+    if (i < 0) {
+      throw std::invalid_argument(
+          fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", Clip(name),
+                      Show(node), path, Names()));
+    }
+    const Setting& s = kSettings[i];
+    s.set(in, FromToml(s, " in " + path, node));
+    from_file.insert(name);
+  }
+  CheckExclusive(from_file, "in " + path);
+  return from_file;
+}
+
+// A grid's axis gives its setting (added to `given`) the axis's first value, a valid one (the
+// run sets each point's, DesignGridOptions); a flag for it or an alternative of it (in
+// `from_flags`) is refused.
+void SetFromGrid(const DesignGridAxis& axis, const DesignConfigOptions& o,
+                 const std::set<std::string>& from_flags, DesignInput& in,
+                 std::set<std::string>& given) {
+  const int i = Find(axis.name());
+  // m2 is not a setting: its grid fixes what m2-range searches, so the two exclude each other.
+  std::vector<std::string> flags = {i < 0 ? std::string("m2-range") : axis.name()};
+  for (const auto& [a, b] : kExclusive) {
+    if (axis.name() == a) flags.emplace_back(b);
+    if (axis.name() == b) flags.emplace_back(a);
+  }
+  for (const std::string& flag : flags) {
+    if (from_flags.count(flag) == 0) continue;
+    throw std::invalid_argument(
+        fmt::format("--{} = {} is invalid with --grid {}: expected the value from only one of them",
+                    flag, o.values[Find(flag)], axis.ToString()));
+  }
+  if (i < 0) return;
+  Value v;
+  v.number = axis.Value(0);
+  kSettings[i].set(in, v);
+  given.insert(axis.name());
+}
+
 }  // namespace
 
 void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
@@ -500,33 +593,7 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
 DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<DesignGridAxis>& grid,
                              std::vector<std::pair<std::string, std::string>>* settings) {
   DesignInput in;
-  std::set<std::string> given;
-  if (!o.config.empty()) {
-    const std::string text = ReadTextFile(o.config, "--config");
-    RequireTomlDepth(text, o.config);
-    toml::table table;
-    try {
-      table = toml::parse(text, o.config);
-    } catch (const toml::parse_error& e) {
-      throw std::invalid_argument(fmt::format("config file {} line {} is invalid: {}", o.config,
-                                              e.source().begin.line, e.description()));
-    }
-    std::set<std::string> from_file;
-    for (const auto& [key, node] : table) {
-      const std::string name(key.str());
-      const int i = Find(name);
-      if (i < 0) {
-        throw std::invalid_argument(
-            fmt::format("{} = {} in {} is invalid: unknown key, expected one of {}", Clip(name),
-                        Show(node), o.config, Names()));
-      }
-      const Setting& s = kSettings[i];
-      s.set(in, FromToml(s, " in " + o.config, node));
-      from_file.insert(name);
-    }
-    CheckExclusive(from_file, "in " + o.config);
-    given = from_file;
-  }
+  std::set<std::string> given = ReadConfigFile(o.config, in);
   std::set<std::string> from_flags;
   for (int i = 0; i < kSettingCount; ++i) {
     if (o.options[i]->count() == 0) continue;
@@ -536,26 +603,7 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
   }
   CheckExclusive(from_flags, "as flags");
   given.insert(from_flags.begin(), from_flags.end());
-  for (const DesignGridAxis& axis : grid) {
-    const int i = Find(axis.name());
-    // m2 is not a setting: its grid fixes what m2-range searches, so the two exclude each other.
-    std::vector<std::string> flags = {i < 0 ? std::string("m2-range") : axis.name()};
-    for (const auto& [a, b] : kExclusive) {
-      if (axis.name() == a) flags.emplace_back(b);
-      if (axis.name() == b) flags.emplace_back(a);
-    }
-    for (const std::string& flag : flags) {
-      if (from_flags.count(flag) == 0) continue;
-      throw std::invalid_argument(fmt::format(
-          "--{} = {} is invalid with --grid {}: expected the value from only one of them", flag,
-          o.values[Find(flag)], axis.ToString()));
-    }
-    if (i < 0) continue;
-    Value v;
-    v.number = axis.Value(0);  // a valid value: the run sets each point's (DesignGridOptions)
-    kSettings[i].set(in, v);
-    given.insert(axis.name());
-  }
+  for (const DesignGridAxis& axis : grid) SetFromGrid(axis, o, from_flags, in, given);
   for (const auto& group : kRequired) {
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;
@@ -564,15 +612,6 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
           fmt::format("setting {} is missing: give --{} (or {} in the --config file)",
                       fmt::join(group, " or "), group.front(), group.front()));
     }
-  }
-  // The default inner-mass range is 0.01 m1 .. 10 m1: where it leaves double precision, the
-  // mass the user gave is the bad input, not a range the user never gave.
-  if (std::isnan(in.m2_min) && std::isnan(in.m2_max) && std::isfinite(in.m1) &&
-      !std::isfinite(in.M2Max())) {
-    throw std::invalid_argument(
-        fmt::format("shell mass m1 = {} kg is invalid: expected m1 <= {} kg, so that the default "
-                    "inner mass range 0.01 m1:10 m1 is finite (or give m2-range)",
-                    FormatNumber(in.m1), FormatNumber(std::numeric_limits<double>::max() / 10)));
   }
   in.Validate();
   if (settings != nullptr) {

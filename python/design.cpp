@@ -1,8 +1,6 @@
 // design: a real robot in SI units; the inner mass (and motor frequency) of its fastest robust
 // one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
 
-#include "capsubot/design/design.hpp"
-
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -14,7 +12,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/job/design_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/design_json.hpp"
 
@@ -44,6 +42,13 @@ void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
   }
 }
 
+// The grid of starts "NXxNPSI" of argument `name` (the job checks its sizes).
+RestStartsGrid Starts(const char* name, const std::string& text) {
+  FromRestOptions o;
+  ParseStarts(name, text, o);
+  return {o.n_x, o.n_psi};
+}
+
 py::dict DesignDict(double m1, double L, double mu, double g, double e,
                     std::optional<double> force_amplitude, double force_bias,
                     std::optional<std::vector<double>> force_cos,
@@ -64,7 +69,8 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   RequireTerms("force_cos", "a", force_cos);
   RequireRange("frequency_range", frequency_range);
   RequireRange("m2_range", m2_range);
-  DesignInput in;
+  DesignJobOptions options;
+  DesignInput& in = options.input;
   in.m1 = m1;
   in.L = L;
   in.mu = mu;
@@ -86,32 +92,27 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   in.stick_margin = stick_margin;
   in.rho_max = rho_max;
   in.scan_points = scan_points;
-  in.Validate();
-  DesignFromRestOptions rest;
-  ParseStarts("reach_starts", reach_starts, rest.search);
-  rest.search.attractor.threads = CapThreads(threads);
-  const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
-  rest.check.n_x = check.n_x;  // the grid and threads; the record stays long
-  rest.check.n_psi = check.n_psi;
-  rest.check.attractor.threads = check.attractor.threads;
-  rest.global_evaluations = reach_evaluations;
-  rest.local_evaluations = reach_local_evaluations;
-  rest.max_seconds = reach_seconds;
-  rest.Validate();
-  DesignResult r;
-  DesignFromRestResult best;
-  RunWithoutGil([&](SignalCheck& check) {
-    // Design tells its robots on this thread, and the from-rest search asks its interrupts
+  DesignFromRestPart part;
+  part.from_rest_starts = Starts("from_rest_starts", from_rest_starts);
+  part.reach_starts = Starts("reach_starts", reach_starts);
+  part.reach_evaluations = reach_evaluations;
+  part.reach_local_evaluations = reach_local_evaluations;
+  part.reach_seconds = reach_seconds;
+  part.threads = CapThreads(threads);
+  if (!from_rest) part.Validate();  // refused as with from_rest: a bad value is never ignored
+  const DesignJobResult r = RunWithoutGil([&](SignalCheck& check) {
+    // Design tells its robots on this thread, and the from-rest search asks its interrupt
     // there: where Ctrl-C is seen.
-    r = Design(in, [&check](std::int64_t, std::int64_t) { check.Check(); });
-    if (!from_rest) return;
-    rest.search.attractor.interrupt = check.AsInterrupt();
-    rest.check.attractor.interrupt = check.AsInterrupt();
-    best = DesignFromRest(in, rest);
+    DesignOneMode one;
+    one.progress = [&check](std::int64_t, std::int64_t) { check.Check(); };
+    if (from_rest) {
+      part.interrupt = check.AsInterrupt();
+      one.from_rest = part;
+    }
+    options.mode = one;
+    return RunDesignJob(options);
   });
-  nlohmann::json j = json::DesignJson(r);
-  if (from_rest) j["from_rest_best"] = json::FromRestBestJson(in, best);
-  return py::dict(ToPython(j));
+  return py::dict(ToPython(json::DesignJobJson(r)));
 }
 
 constexpr const char* kDesignDoc =
@@ -159,7 +160,7 @@ constexpr const char* kDesignDoc =
 
 void BindDesign(py::module_& m) {
   const DesignInput in;
-  const DesignFromRestOptions rest;
+  const DesignFromRestPart rest;
   m.def("design", &DesignDict, kDesignDoc, py::kw_only(), py::arg("m1"), py::arg("L"),
         py::arg("mu"), py::arg("g") = in.g, py::arg("e"), py::arg("force_amplitude") = py::none(),
         py::arg("force_bias"), py::arg("force_cos") = py::none(), py::arg("force_sin") = py::none(),
@@ -170,10 +171,9 @@ void BindDesign(py::module_& m) {
         py::arg("from_rest").noconvert() = false,
         py::arg("from_rest_starts") = kDefaultFromRestStarts,
         py::arg("reach_starts") = kDefaultReachStarts,
-        py::arg("reach_evaluations") = rest.global_evaluations,
-        py::arg("reach_local_evaluations") = rest.local_evaluations,
-        py::arg("reach_seconds") = rest.max_seconds,
-        py::arg("threads") = AttractorOptions{}.threads);
+        py::arg("reach_evaluations") = rest.reach_evaluations,
+        py::arg("reach_local_evaluations") = rest.reach_local_evaluations,
+        py::arg("reach_seconds") = rest.reach_seconds, py::arg("threads") = rest.threads);
 }
 
 }  // namespace capsubot::python

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "capsubot/design/design.hpp"
@@ -62,6 +63,12 @@ double DesignInput::M2Max() const { return std::isnan(m2_max) ? kDefaultM2MaxRat
 
 void DesignInput::Validate() const {
   RequirePositive(m1, "shell mass", "m1", " [kg]");
+  // The default inner-mass range is 0.01 m1 .. 10 m1: where it leaves double precision, the
+  // mass given is the bad input, not a range never given.
+  Require(!std::isnan(m2_min) || !std::isnan(m2_max) || std::isfinite(M2Max()),
+          fmt::format("shell mass m1 = {} kg is invalid: expected m1 <= {} kg, so that the default "
+                      "inner mass range 0.01 m1:10 m1 is finite (or give the inner mass range)",
+                      m1, std::numeric_limits<double>::max() / kDefaultM2MaxRatio));
   RequirePositive(L, "gap", "L", " [m]");
   RequirePositive(mu, "friction coefficient", "mu", "");
   RequirePositive(g, "gravity", "g", " [m/s^2]");

@@ -232,8 +232,8 @@ void DesignFromRestOptions::Validate() const {
   check.Validate();
   detail::AlgorithmFromName(global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
   detail::AlgorithmFromName(local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
-  detail::RequireCount("global_evaluations", global_evaluations, 1, 100000);
-  detail::RequireCount("local_evaluations", local_evaluations, 0, 100000);
+  detail::RequireCount("global_evaluations", global_evaluations, 1, kMaxDesignFromRestEvaluations);
+  detail::RequireCount("local_evaluations", local_evaluations, 0, kMaxDesignFromRestEvaluations);
   detail::RequireCount("candidates", candidates, 1, 64);
   Require(std::isfinite(max_seconds) && max_seconds > 0.0,
           fmt::format("max_seconds = {} is invalid: expected a finite time > 0", max_seconds));

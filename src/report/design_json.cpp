@@ -5,22 +5,6 @@
 
 namespace capsubot::json {
 
-std::vector<std::pair<const char*, double>> Dimensionless(const Gait& g) {
-  const bool ok = g.ok();
-  const Orbit& o = g.solution.orbit;
-  const Forcing& f = o.forcing;
-  const double nan = Gait::kNaN;
-  return {{"T0", ok ? o.T0 : nan},
-          {"A", ok && f.harmonic() ? f.amplitude() : nan},
-          {"c", ok ? f.mean() : nan},
-          {"alpha", ok ? o.alpha : nan},
-          {"phi0", ok ? f.phi0() : nan},
-          {"I", ok ? o.I : nan},
-          {"spectral_radius", ok ? g.stability.spectral_radius : nan},
-          {"x_min", ok ? g.solution.validity.x_min : nan},
-          {"x_max", ok ? g.solution.validity.x_max : nan}};
-}
-
 nlohmann::json GaitJson(const Gait& g) {
   nlohmann::json j;
   j["status"] = GaitStatusName(g.status);
@@ -87,6 +71,12 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
   out["rejected_evaluations"] = r.rejected_evaluations;
   out["max_time"] = r.max_time;
   return out;
+}
+
+nlohmann::json DesignJobJson(const DesignJobResult& r) {
+  nlohmann::json j = DesignJson(r.design);
+  if (r.from_rest) j["from_rest_best"] = FromRestBestJson(r.input, *r.from_rest);
+  return j;
 }
 
 }  // namespace capsubot::json

@@ -291,7 +291,7 @@ std::vector<BadCase> BadCases() {
        "--m2-range = 0.1:x is invalid: expected MIN:MAX with MIN < MAX"},
       {"reach_starts", "--from-rest --reach-starts 0x4" + cfg, "--reach-starts = 0x4 is invalid"},
       {"reach_evaluations", "--from-rest --reach-evaluations 0" + cfg,
-       "global_evaluations = 0 is invalid: expected 1 <= global_evaluations <= 100000"},
+       "reach_evaluations = 0 is invalid: expected 1 <= reach_evaluations <= 100000"},
       {"frequency_range_inverted", "--frequency-range 30:20" + cfg,
        "--frequency-range = 30:20 is invalid: expected MIN:MAX with MIN < MAX"},
       {"frequency_range_empty", "--frequency-range 20:20" + cfg,

@@ -247,6 +247,9 @@ struct BadInput {
 const BadInput kBadInputs[] = {
     {"m1", [](DesignInput& in) { in.m1 = 0.0; },
      "shell mass m1 = 0 is invalid: expected a finite m1 > 0 [kg]"},
+    {"m1_default_m2_range", [](DesignInput& in) { in.m1 = 1e308; },
+     "shell mass m1 = 1e+308 kg is invalid: expected m1 <= 1.7976931348623158e+307 kg, so that "
+     "the default inner mass range 0.01 m1:10 m1 is finite (or give the inner mass range)"},
     {"L", [](DesignInput& in) { in.L = -0.02; },
      "gap L = -0.02 is invalid: expected a finite L > 0 [m]"},
     {"mu", [](DesignInput& in) { in.mu = NAN; },
@@ -313,7 +316,7 @@ TEST(Design, EveryBadInputIsRejectedNamingTheParameterItsValueAndTheRule) {
     EXPECT_THROW(Design(in), std::invalid_argument) << b.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 18);
+  EXPECT_EQ(checked, 19);
 }
 
 TEST(Design, GaitOfAGivenInnerMassRejectsABadMass) {

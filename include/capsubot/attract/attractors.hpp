@@ -252,6 +252,8 @@ BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, d
 
 /// Most starts of a grid from rest (n_x * n_psi): a 2048 x 2048 map, about 0.5 GB of results.
 inline constexpr std::int64_t kMaxRestStarts = 4194304;
+/// Most positions (n_x) or phases (n_psi) of a grid from rest.
+inline constexpr int kMaxRestGridSide = 100000;
 
 /// Starts from rest on the grid of GridStart.
 struct FromRestOptions {

@@ -56,7 +56,8 @@ struct MotorForce {
 struct DesignInput {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  double m1 = kNaN;  ///< shell mass [kg], > 0
+  /// Shell mass [kg], > 0; with the default inner-mass range, small enough that 10 m1 is finite.
+  double m1 = kNaN;
   double L = kNaN;   ///< free gap of the inner body between the walls [m], > 0
   double mu = kNaN;  ///< Coulomb friction coefficient of the shell on the floor, > 0
   double g = 9.81;   ///< gravity [m/s^2], > 0

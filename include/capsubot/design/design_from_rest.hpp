@@ -29,6 +29,10 @@ namespace capsubot {
 /// statistical error falls like one over its square root.
 inline constexpr int kCheckRecord = 1000;
 
+/// Most from-rest evaluations of a stage (global or local) of the from-rest design, per
+/// direction.
+inline constexpr int kMaxDesignFromRestEvaluations = 100000;
+
 /// How the from-rest design searches and checks; defaults sized so that the example robot
 /// takes a few seconds on one core.
 struct DesignFromRestOptions {

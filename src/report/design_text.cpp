@@ -1,0 +1,186 @@
+#include "capsubot/report/design_text.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "capsubot/design/gait_numbers.hpp"
+#include "capsubot/report/attractor_text.hpp"
+
+namespace capsubot {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string Num(double value, const char* unit) {
+  return std::isnan(value) ? "-" : fmt::format("{:.6g}{}", value, unit);
+}
+
+std::string MotorFormula(const MotorForce& f) {
+  if (!f.fourier()) {
+    return fmt::format("F_N = {:g} sin(omega t + phase) + {:g} N", f.amplitude, f.bias);
+  }
+  std::string s = fmt::format("F_N = {:g}", f.bias);
+  for (std::size_t k = 0; k < f.sin.size(); ++k) {
+    const double a = f.cos.empty() ? 0.0 : f.cos[k];
+    s += fmt::format(" + {:g} cos {}s + {:g} sin {}s", a, k + 1, f.sin[k], k + 1);
+  }
+  return s + " N, s = omega t + phase";
+}
+
+// Shortest text that reads back as the same double ("0.7", not "0.69999999999999996").
+std::string Shortest(double value) { return fmt::format("{}", value); }
+
+// The `capsubot solve` command that reproduces the gait's orbit (round-trip numbers).
+std::string SolveCommand(const Gait& g) {
+  const Orbit& o = g.solution.orbit;
+  const Forcing& f = o.forcing;
+  std::string force;
+  if (f.harmonic()) {
+    force = fmt::format("--A {} --c {}", Shortest(f.amplitude()), Shortest(f.mean()));
+  } else {
+    std::vector<std::string> a, b;
+    for (int k = 1; k <= f.harmonics(); ++k) {
+      a.push_back(Shortest(f.a(k)));
+      b.push_back(Shortest(f.b(k)));
+    }
+    force = fmt::format("--c {} --cos {} --sin {}", Shortest(f.mean()), fmt::join(a, ","),
+                        fmt::join(b, ","));
+  }
+  return fmt::format("capsubot solve {} --phi0 {} --T0 {} --e {} --stability", force,
+                     Shortest(f.phi0()), Shortest(o.T0), Shortest(o.e));
+}
+
+// Part (a): the robot, what was searched and the gait found.
+std::string OneImpactText(const DesignInput& in, const DesignResult& r) {
+  const Gait& g = r.one_impact;
+  std::string t = "robot design: the fastest robust one-impact gait\n";
+  t += fmt::format(
+      "  robot             m1 = {:g} kg, L = {:g} mm, mu = {:g}, g = {:g} m/s^2, e = {:g}\n", in.m1,
+      1e3 * in.L, in.mu, in.g, in.e);
+  t += fmt::format("  motor             {}\n", MotorFormula(in.force));
+  t += fmt::format("  searched          m2 in [{:g}, {:g}] kg, f {}\n", in.M2Min(), in.M2Max(),
+                   in.frequency_min == in.frequency_max
+                       ? fmt::format("= {:g} Hz", in.frequency_min)
+                       : fmt::format("in [{:g}, {:g}] Hz", in.frequency_min, in.frequency_max));
+  t += fmt::format("  robust gait       d = {:g}, d_s = {:g}, s = {:g}, rho_max = {:g}\n",
+                   in.margin, in.margin_stroke, in.stick_margin, in.rho_max);
+  t += fmt::format("  status            {}: {}\n", DesignStatusName(r.status), r.message);
+  if (!r.complete)
+    t += "  note              an orbit search hit its work bound: orbits may be missing\n";
+  if (!g.ok()) return t;
+  const Orbit& o = g.solution.orbit;
+  t += fmt::format("  inner mass        m2 = {}   (alpha = m2/(m1+m2) = {:.6g})\n",
+                   Num(g.m2_kg, " kg"), o.alpha);
+  t += fmt::format("  frequency         f = {}\n", Num(g.frequency_hz, " Hz"));
+  t += fmt::format("  mean speed        {}\n", Num(g.speed_mm_s, " mm/s"));
+  t += fmt::format("  step per period   {}\n", Num(g.displacement_mm, " mm"));
+  t += fmt::format("  impact velocity   {}   (inner body relative to the shell)\n",
+                   Num(g.impact_velocity_m_s, " m/s"));
+  t += fmt::format("  motor energy      {} per period\n", Num(g.energy_mj, " mJ"));
+  t += fmt::format("  mean motor power  {} net, {} positive part\n", Num(g.power_mw, " mW"),
+                   Num(g.power_positive_mw, " mW"));
+  t += fmt::format("  losses            friction {}, impacts {} per period\n",
+                   Num(g.friction_loss_mj, " mJ"), Num(g.impact_loss_mj, " mJ"));
+  t += fmt::format("  cost of transport COT = {} (>= mu = {:g}), efficiency mu/COT = {}\n",
+                   Num(g.cot, ""), in.mu, Num(g.efficiency, ""));
+  const auto d = Dimensionless(g);
+  t += fmt::format("  dimensionless     T0 = {}, A = {}, c = {}, alpha = {}, phi0 = {}\n",
+                   Num(d[0].second, ""), Num(d[1].second, ""), Num(d[2].second, ""),
+                   Num(d[3].second, ""), Num(d[4].second, ""));
+  t +=
+      fmt::format("  orbit             x_min = {}, x_max = {}, spectral radius = {}, {} orbit(s)\n",
+                  Num(g.solution.validity.x_min, ""), Num(g.solution.validity.x_max, ""),
+                  Num(g.stability.spectral_radius, ""), g.orbits);
+  t += fmt::format("  binding           {}\n", g.binding.empty()
+                                                   ? "none (an interior maximum)"
+                                                   : fmt::format("{}", fmt::join(g.binding, ", ")));
+  t += fmt::format("  check             {}\n", SolveCommand(g));
+  return t;
+}
+
+// Attractors listed one by one in the text (the rest are summed).
+constexpr std::size_t kListedAttractors = 4;
+
+// The attractors of a motion from rest: the first kListedAttractors, then the rest summed.
+std::string AttractorLines(const DesignInput& in, const FromRestBest& b, int max_period) {
+  std::string t;
+  const auto& list = b.attractors.attractors;
+  for (std::size_t k = 0; k < list.size() && k < kListedAttractors; ++k) {
+    const Attractor& a = list[k];
+    t += fmt::format("    attractor {:<5} {:.0f} % of the starts: {}, {}\n", k + 1,
+                     100.0 * a.fraction, AttractorWords(a, max_period),
+                     Num(1e3 * b.model.omega * in.L * a.mean_velocity, " mm/s"));
+  }
+  if (list.size() > kListedAttractors) {
+    double rest = 0.0;
+    for (std::size_t k = kListedAttractors; k < list.size(); ++k) rest += list[k].fraction;
+    t += fmt::format("    and             {} more attractors, {:.0f} % of the starts\n",
+                     list.size() - kListedAttractors, 100.0 * rest);
+  }
+  return t;
+}
+
+// One direction of the from-rest design in lines of the table.
+std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_period) {
+  std::string t = fmt::format("  {:<17} {}: {}\n", DirectionName(b.direction),
+                              FromRestStatusName(b.status), b.message);
+  if (!b.ok()) return t;
+  const DesignModel& m = b.model;
+  t += fmt::format("    inner mass      m2 = {}   (alpha = {:.6g}), f = {}\n", Num(b.m2_kg, " kg"),
+                   m.alpha, Num(b.frequency_hz, " Hz"));
+  t += fmt::format("    mean speed      {} over the starts, {} per period\n",
+                   Num(b.speed_mm_s, " mm/s"), Num(b.displacement_mm, " mm"));
+  t += fmt::format("    impact velocity {}\n",
+                   std::isnan(b.impact_velocity_m_s)
+                       ? std::string("- (the most common motion has several impacts per period)")
+                       : Num(b.impact_velocity_m_s, " m/s"));
+  t +=
+      fmt::format("    motor           {} per period, {} net, {} positive part\n",
+                  Num(b.energy_mj, " mJ"), Num(b.power_mw, " mW"), Num(b.power_positive_mw, " mW"));
+  t += fmt::format("    losses          friction {}, impacts {} per period\n",
+                   Num(b.friction_loss_mj, " mJ"), Num(b.impact_loss_mj, " mJ"));
+  t += fmt::format("    cost            COT = {}, efficiency mu/COT = {}\n", Num(b.cot, ""),
+                   Num(b.efficiency, ""));
+  t +=
+      fmt::format("    dimensionless   T0 = {}, A = {}, c = {}, alpha = {}\n", Num(m.params.T0, ""),
+                  Num(m.forcing.harmonic() ? m.forcing.amplitude() : kNaN, ""),
+                  Num(m.forcing.mean(), ""), Num(m.alpha, ""));
+  return t + AttractorLines(in, b, max_period);
+}
+
+// Part (b): the fastest motion from rest in each direction, checked with `options.check`.
+std::string FromRestText(const DesignInput& in, const DesignFromRestOptions& options,
+                         const DesignFromRestResult& r) {
+  const int max_period = options.check.attractor.motion.max_period;
+  std::string t = fmt::format(
+      "robot design: the fastest motion reached from rest, each direction ({}x{} starts from "
+      "rest)\n",
+      options.check.n_x, options.check.n_psi);
+  t += FromRestLines(in, r.forward, max_period);
+  t += FromRestLines(in, r.backward, max_period);
+  t += fmt::format(
+      "  search            {} from-rest evaluations ({} rejected: event_limit), "
+      "{:.1f} s{}\n",
+      r.evaluations, r.rejected_evaluations, r.search_seconds,
+      r.max_time ? "; the time limit (--reach-seconds) stopped a search stage" : "");
+  return t;
+}
+
+}  // namespace
+
+std::string DesignJobText(const DesignJobResult& r) {
+  if (r.grid) {
+    const SweepSummary& s = r.grid->summary;
+    return fmt::format("{} points written to {} in {:.3f} s on {} threads\n", s.points,
+                       r.grid->output, s.seconds, s.threads);
+  }
+  std::string t = OneImpactText(r.input, r.design);
+  if (r.from_rest) t += FromRestText(r.input, r.from_rest_options, *r.from_rest);
+  return t;
+}
+
+}  // namespace capsubot
