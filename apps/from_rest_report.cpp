@@ -81,10 +81,6 @@ void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const Reac
   file.Commit();
 }
 
-std::string FromRestText(const GaitFromRest& r, int indent) {
-  return fmt::format("{:{}}from rest        {}\n", "", indent, r.summary);
-}
-
 std::string ReachText(const ReachResult& r) {
   if (std::isnan(r.mean_velocity)) return fmt::format("    none: {}\n", r.message);
   std::string t;

@@ -11,6 +11,7 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/attractors_text.hpp"
 #include "capsubot/report/optimize_json.hpp"
 #include "cli.hpp"
 
@@ -20,6 +21,7 @@ namespace capsubot::app {
 // Python module.
 using json::FromRestJson;
 using json::ReachJson;
+using text::FromRestText;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {
@@ -52,9 +54,6 @@ void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
 /// (row "promised", empty fraction), its attractors from rest, the reach winner's attractors.
 /// Written into `file` (opened before the work), then committed.
 void WriteFromRestCsv(AtomicFile& file, const OptimizeResult& robust, const ReachResult& reach);
-
-/// "from rest        reached from rest in ..." (one line) after `indent` spaces.
-std::string FromRestText(const GaitFromRest& report, int indent = 4);
 
 /// The fastest motion from rest in a few indented lines: force, alpha, speed, attractors,
 /// spread.
