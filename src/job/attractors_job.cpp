@@ -18,7 +18,8 @@ void AttractorsJobOptions::Validate() const {
 
 AttractorsJobResult RunAttractorsJob(const AttractorsJobOptions& options) {
   options.Validate();
-  return detail::RunStartMap(options, GridStarts(options.starts.n_x, options.starts.n_psi), false);
+  return detail::RunStartMap(options, GridStarts(options.starts.n_x, options.starts.n_psi), false,
+                             "attractors");
 }
 
 StartMapWork AttractorsJobWork(const AttractorsJobOptions& options) {

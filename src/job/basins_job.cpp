@@ -46,7 +46,7 @@ BasinsJobResult RunBasinsJob(const BasinsJobOptions& options) {
   BasinsJobResult result;
   result.plane = options.plane;
   result.map = detail::RunStartMap(options.map, BasinStarts(options),
-                                   std::holds_alternative<VelocityPlane>(options.plane));
+                                   std::holds_alternative<VelocityPlane>(options.plane), "basins");
   return result;
 }
 

@@ -35,6 +35,8 @@ PeriodicJobResult RunPeriodicJob(const PeriodicJobOptions& options) {
   result.options = options;
   result.options.shooting = shooting;
   result.options.shooting.interrupt = {};
+  result.options.on_stage = {};
+  TellStage(options.on_stage, "periodic: Newton shooting");
   const PhaseState state = StartState(options.start);
   const Forcing& f = options.forcing;
   if (const auto* known = std::get_if<PeriodicOfPeriod>(&options.start)) {
@@ -43,6 +45,7 @@ PeriodicJobResult RunPeriodicJob(const PeriodicJobOptions& options) {
   } else {
     result.motion = FindPeriodicMotion(f, options.params, options.alpha, state, shooting);
   }
+  TellStage(options.on_stage, "");
   return result;
 }
 

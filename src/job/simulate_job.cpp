@@ -48,6 +48,7 @@ SimulateJobResult RunSimulateJob(const SimulateJobOptions& options) {
   SimulateJobResult result;
   result.options = options;
   result.options.observer = nullptr;
+  result.options.on_stage = {};
   result.sim = options.sim;
   if (const auto* state = std::get_if<SimulateFromState>(&options.start)) {
     result.sim = WithState(options.sim, *state);
@@ -61,7 +62,10 @@ SimulateJobResult RunSimulateJob(const SimulateJobOptions& options) {
     result.sim.sample_step = kTau / static_cast<double>(options.samples_per_period);
   }
   result.sim.Validate();
+  TellStage(options.on_stage,
+            fmt::format("simulate: {:g} periods", result.sim.transient + result.sim.periods));
   result.run = Simulate(options.forcing, options.params, result.sim, options.observer);
+  TellStage(options.on_stage, "");
   if (result.run.status == SimStatus::kNonFinite) throw std::runtime_error(result.run.message);
   return result;
 }

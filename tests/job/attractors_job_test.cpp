@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "attract_job_cases.hpp"
 #include "test_utils.hpp"
@@ -62,6 +63,8 @@ TEST(AttractorsJob, WritesTheMapOfTheLibraryAndTellsTheStartsDone) {
   AttractorsJobOptions o = SmallMap();
   const std::filesystem::path path = testing::TempPath("attractors_job_map.csv");
   o.run = WholeStartMap{path.string(), "# the run\n"};
+  std::vector<std::string> stages;
+  o.on_stage = [&stages](const std::string& stage) { stages.push_back(stage); };
   std::int64_t told = 0;
   o.progress = [&told](std::int64_t done, std::int64_t total) {
     EXPECT_EQ(total, 6);
@@ -69,7 +72,9 @@ TEST(AttractorsJob, WritesTheMapOfTheLibraryAndTellsTheStartsDone) {
   };
   const AttractorsJobResult r = RunAttractorsJob(o);
   EXPECT_EQ(told, 6);
+  EXPECT_EQ(stages, (std::vector<std::string>{"attractors: 6 starts", ""}));
   EXPECT_FALSE(r.options.progress);  // the result holds no callback of the caller
+  EXPECT_FALSE(r.options.on_stage);
   const std::filesystem::path expected = testing::TempPath("attractors_job_expected.csv");
   WriteStartMap(expected.string(), GridStarts(2, 3), r.attractors, false, "# the run\n");
   EXPECT_EQ(ReadText(path), ReadText(expected));

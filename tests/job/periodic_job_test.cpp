@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "attract_job_cases.hpp"
 #include "test_utils.hpp"
@@ -42,7 +43,11 @@ TEST(PeriodicJob, FromRestRunsItsTransientThenShoots) {
   PeriodicFromRest rest;
   rest.x0 = 0.5;
   rest.psi = 1.0;
-  const PeriodicJobResult r = RunPeriodicJob(Robot(robot, rest));
+  PeriodicJobOptions o = Robot(robot, rest);
+  std::vector<std::string> stages;
+  o.on_stage = [&stages](const std::string& stage) { stages.push_back(stage); };
+  const PeriodicJobResult r = RunPeriodicJob(o);
+  EXPECT_EQ(stages, (std::vector<std::string>{"periodic: Newton shooting", ""}));
   ShootingOptions so;
   so.transient = 200;  // the start's default
   EXPECT_TRUE(SameMotion(r.motion, FindPeriodicMotion(robot.forcing, robot.params, robot.alpha,

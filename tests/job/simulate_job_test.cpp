@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "attract_job_cases.hpp"
 #include "capsubot/attract/orbit_start.hpp"
@@ -68,7 +69,10 @@ TEST(SimulateJob, FromAStateWithItsTrajectoryTellsTheObserverEverySample) {
   o.samples_per_period = 7;
   Counter counter;
   o.observer = &counter;
+  std::vector<std::string> stages;
+  o.on_stage = [&stages](const std::string& stage) { stages.push_back(stage); };
   const SimulateJobResult r = RunSimulateJob(o);
+  EXPECT_EQ(stages, (std::vector<std::string>{"simulate: 12 periods", ""}));
   EXPECT_FALSE(r.orbit.has_value());
   EXPECT_EQ(r.options.observer, nullptr);
   EXPECT_EQ(counter.samples, 7 * 12 + 1);  // the transient sampled too, both ends

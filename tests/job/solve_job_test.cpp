@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "attract_job_cases.hpp"
 #include "capsubot/orbit/orbit_energy.hpp"
@@ -45,7 +46,11 @@ TEST(SolveJob, StabilityAddsTheMultipliersAndTheCheckFromRest) {
   check.n_x = 2;
   check.n_psi = 2;
   o.stability = check;
+  std::vector<std::string> stages;
+  o.on_stage = [&stages](const std::string& stage) { stages.push_back(stage); };
   const SolveJobResult r = RunSolveJob(o);
+  EXPECT_EQ(stages, (std::vector<std::string>{"solve: 1/2 the orbit",
+                                              "solve: 2/2 its stability and check from rest", ""}));
   const Solution s = Solve(o.forcing, o.params);
   const Stability st = ComputeStability(s.orbit);
   EXPECT_TRUE(SameBits(r.stability.spectral_radius, st.spectral_radius));

@@ -11,6 +11,7 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/start_grid.hpp"
+#include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/parallel/blocks.hpp"
@@ -48,6 +49,7 @@ struct AttractorsJobOptions {
   AttractorOptions attractor;  ///< each start's simulation, the grouping, threads, interrupt
   StartMapRun run;             ///< the whole map (default) or one shard
   StartsProgress progress;     ///< told the starts done (of the shard); empty: nobody
+  StageCallback on_stage;      ///< told the stage ("attractors: 64 starts"), "" when done
   /// Computes the blocks of starts (this process's threads, or the ranks of an MPI job as
   /// well); null: LocalBlocks().
   const BlockBackend* backend = nullptr;
@@ -71,7 +73,7 @@ struct StartMapWork {
 };
 
 struct AttractorsJobResult {
-  /// The options the job ran with (its progress, interrupt and backend cleared).
+  /// The options the job ran with (its callbacks, interrupt and backend cleared).
   AttractorsJobOptions options;
   Attractors attractors;    ///< the whole map: its attractors (none for a shard)
   StartShardSummary shard;  ///< a shard: the starts written to its file, and those resumed

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "capsubot/attract/periodic.hpp"
+#include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
 
@@ -45,6 +46,7 @@ struct PeriodicJobOptions {
   /// Newton's method and the simulator (max_period, step, chatter_velocity, ..., interrupt);
   /// its transient is the start's (set by the job).
   ShootingOptions shooting;
+  StageCallback on_stage;  ///< told the stage ("periodic: Newton shooting"), "" when done
 
   /// Throws std::invalid_argument for a start phase that is no phase (RequirePhase, naming psi);
   /// the other fields are checked by the shooting itself.
@@ -52,7 +54,7 @@ struct PeriodicJobOptions {
 };
 
 struct PeriodicJobResult {
-  PeriodicJobOptions options;  ///< the options it ran with (its interrupt cleared)
+  PeriodicJobOptions options;  ///< the options it ran with (its callbacks cleared)
   PeriodicMotion motion;       ///< the motion found (its status says whether Newton converged)
 };
 

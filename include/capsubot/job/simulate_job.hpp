@@ -9,6 +9,7 @@
 #include <optional>
 #include <variant>
 
+#include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/orbit/validity.hpp"
@@ -48,6 +49,7 @@ struct SimulateJobOptions {
   /// kMaxTrajectoryRows samples over transient + periods.
   std::int64_t samples_per_period = 100;
   SimObserver* observer = nullptr;  ///< told every event, sample and period; null: nobody
+  StageCallback on_stage;           ///< told the stage ("simulate: 10 periods"), "" when done
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule (params,
   /// samples_per_period, max_events_per_period, the trajectory's rows; the simulator's options
@@ -56,7 +58,7 @@ struct SimulateJobOptions {
 };
 
 struct SimulateJobResult {
-  SimulateJobOptions options;     ///< the options it ran with (its observer cleared)
+  SimulateJobOptions options;     ///< the options it ran with (its observer, callback cleared)
   SimOptions sim;                 ///< the simulator's options as run (the start filled in)
   std::optional<Solution> orbit;  ///< from the orbit: the orbit started from (its validity too)
   SimResult run;                  ///< the simulation (status ok, impact_limit or event_limit)

@@ -7,6 +7,7 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
@@ -21,6 +22,8 @@ struct SolveJobOptions {
   /// Also the stability of the orbit and its check from rest on this grid of starts (with
   /// its threads and interrupt); none: the orbit alone.
   std::optional<FromRestOptions> stability;
+  /// Told the stage ("solve: 1/2 the orbit", "solve: 2/2 its check from rest"), "" when done.
+  StageCallback on_stage;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule (params,
   /// the grid and options of the check from rest).
@@ -28,7 +31,7 @@ struct SolveJobOptions {
 };
 
 struct SolveJobResult {
-  SolveJobOptions options;  ///< the options it ran with (the interrupt cleared)
+  SolveJobOptions options;  ///< the options it ran with (the interrupt and callback cleared)
   Solution solution;        ///< the orbit and its validity
   Energy energy;            ///< the energy budget per period of the orbit (OrbitEnergy)
   Stability stability;      ///< with options.stability: the multipliers (else not computed)
