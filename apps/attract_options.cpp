@@ -46,28 +46,20 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
 }
 
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
-  const std::size_t x = text.find_first_of("xX");
-  const auto whole = [&](const std::string& part, int* value) {  // digits only, 1 to 100000
-    if (part.empty() || part.size() > 6 ||
-        part.find_first_not_of("0123456789") != std::string::npos) {
-      return false;
-    }
-    const long n = std::stol(part);
-    if (n < 1 || n > 100000) return false;
-    *value = static_cast<int>(n);
-    return true;
-  };
-  int a = 0, b = 0;
-  if (x == std::string::npos || !whole(text.substr(0, x), &a) || !whole(text.substr(x + 1), &b)) {
-    throw std::invalid_argument(fmt::format(
-        "{} = {} is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 (e.g. 8x8)", name,
-        text));
-  }
-  if (static_cast<std::int64_t>(a) * b > kMaxRestStarts) {
-    throw std::invalid_argument(
-        fmt::format("{} = {} is invalid: expected at most {} starts", name, text, kMaxRestStarts));
-  }
-  return {a, b};
+  const StartGrid grid = ParseStartGrid(name, text);
+  return {grid.n_x, grid.n_psi};
+}
+
+AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
+                                   int threads, const char* who) {
+  AttractorsJobOptions o;
+  o.forcing = robot.forcing.Build();
+  o.params = robot.params;
+  o.alpha = robot.alpha;
+  o.starts = ParseStartGrid("--starts", starts);
+  o.attractor.motion = robot.motion;
+  o.attractor.threads = CapThreads(threads, who);
+  return o;
 }
 
 PhaseState ParseRestStart(const char* name, const std::string& text) {

@@ -7,16 +7,18 @@
 #include <utility>
 
 #include "capsubot/attract/attractors.hpp"
-#include "capsubot/report/attractor_text.hpp"
+#include "capsubot/job/attractors_job.hpp"
 #include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/attractors_text.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
 
-// The JSON of motions and their words (AttractorWords) are the shared layer's (src/report/), the
-// same for the Python module.
+// The JSON and words of motions are the report stage's (src/report/), the same for the Python
+// module.
 using json::AttractorsJson;
 using json::MotionJson;
+using text::AttractorWords;
 
 /// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
 struct RobotOptions {
@@ -30,8 +32,15 @@ struct RobotOptions {
 /// --max-period, --chatter-velocity, --max-events-per-period.
 void AddRobotOptions(CLI::App& cmd, RobotOptions& options, bool with_motion = true);
 
-/// "8x8" -> (8, 8) for option `name`; throws std::invalid_argument naming it and the rule.
+/// "8x8" -> (8, 8) for option `name`: the library's ParseStartGrid as a pair; throws
+/// std::invalid_argument naming the option and the rule.
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
+
+/// The map job of `robot` (force, T0, e, alpha, motion options) over the grid `starts` (the
+/// option --starts) with `threads` worker threads (CapThreads: a note naming `who` when it
+/// lowers them). Throws std::invalid_argument for a bad grid or force.
+AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
+                                   int threads, const char* who);
 
 /// "0.5,1" -> RestStart(0.5, 1) for option `name`; throws std::invalid_argument naming it.
 PhaseState ParseRestStart(const char* name, const std::string& text);

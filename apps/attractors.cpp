@@ -4,20 +4,17 @@
 #include <fmt/format.h>
 
 #include <memory>
-#include <optional>
 #include <stdexcept>
-#include <tuple>
-#include <vector>
 
 #include "attract_options.hpp"
-#include "capsubot/sweep/start_map.hpp"
+#include "capsubot/job/attractors_job.hpp"
+#include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/attractors_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 #include "start_shard.hpp"
-#include "whole_map.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -32,59 +29,24 @@ struct AttractorsCommandOptions {
 };
 
 int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
-  const Forcing forcing = opt.robot.forcing.Build();
-  int n_x = 0, n_psi = 0;
-  std::tie(n_x, n_psi) = ParseGridSize("--starts", opt.starts);  // the rules of FromRestOptions
-  const std::vector<PhaseState> starts = GridStarts(n_x, n_psi);
-  AttractorOptions ao;
-  ao.motion = opt.robot.motion;
-  ao.threads = CapThreads(opt.threads, "capsubot attractors");
-  RequireShardForResume(cmd, opt.shard);
-  if (SplitsRun(opt.shard.shard)) {
-    if (opt.output.empty()) {
-      throw std::invalid_argument(
-          "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
-    }
-    return RunStartShard(opt.shard, cmd, opt.robot, forcing, starts, ao, false, opt.output,
-                         {{"--json", opt.json}});
+  AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads, "capsubot attractors");
+  if (SplitsRun(opt.shard.shard) && opt.output.empty()) {
+    throw std::invalid_argument(
+        "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
   }
-  // The starts from rest of FindAttractors, classified on the ranks under mpirun.
-  const std::optional<Attractors> map =
-      ClassifyWholeMap(opt.robot, forcing, starts, ao, opt.output);
-  if (!map) return 0;  // a worker of an MPI job: rank 0 writes and prints
-  const Attractors& a = *map;
-  if (!opt.output.empty()) {
-    WriteStartMap(opt.output, starts, a, false, OutputProvenance(cmd).CommentLine());
-  }
+  o.run = MapRun(opt.shard, cmd, o.starts.Starts(), opt.output, {{"--json", opt.json}});
+  Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts
+  if (ranks.worker()) return ServeMap(ranks, AttractorsJobWork(o));
+  o.backend = &ranks.backend();
+  o.progress = CountProgress("starts");
+  const AttractorsJobResult r = RunAttractorsJob(o);
   if (opt.json) {
-    nlohmann::json j = AttractorsJson(a);
+    nlohmann::json j = json::AttractorsJobJson(r);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
-    return 0;
+  } else {
+    fmt::print("{}", text::AttractorsJobText(r));
   }
-  const MotionOptions& mo = ao.motion;
-  std::string t =
-      fmt::format("attractors from rest: {} starts ({} x0 x {} phases), {} + {} periods\n",
-                  a.starts, n_x, n_psi, mo.transient, mo.record);
-  t += fmt::format("  force          {}\n", ForceFormula(forcing));
-  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", opt.robot.params.T0,
-                   opt.robot.params.e, opt.robot.alpha);
-  int k = 0;
-  for (const Attractor& at : a.attractors) {
-    t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13} {}{}\n", ++k,
-                     100.0 * at.fraction, Num(at.mean_velocity, 10),
-                     AttractorWords(at, mo.max_period),
-                     at.one_impact_orbit ? "  (the analytic one-impact orbit)" : "");
-    t += fmt::format("      e.g. from x0 = {:.6g}, psi = {:.6g}\n", at.example.x, at.example.psi);
-  }
-  t += fmt::format("  mean velocity over the starts: {} (omega L)", Num(a.mean_velocity, 10));
-  if (a.event_limit_starts > 0) {
-    t += fmt::format(", {} starts hit the work bound and are left out", a.event_limit_starts);
-  }
-  t += "\n";
-  if (!opt.output.empty())
-    t += fmt::format("  the motion of every start written to {}\n", opt.output);
-  fmt::print("{}", t);
   return 0;
 }
 

@@ -104,7 +104,7 @@ int Run(const BifurcationCommandOptions& opt, const CLI::App& cmd) {
     return ranks.Serve(BifurcationBlocks(robot.forcing, robot.params, robot.alpha, plan.diagram),
                        plan.diagram.threads);
   }
-  fmt::print("{}", BifurcationJobText(RunBifurcationJob(job, ranks.backend())));
+  fmt::print("{}", text::BifurcationJobText(RunBifurcationJob(job, ranks.backend())));
   return 0;
 }
 

@@ -55,7 +55,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   job.Validate();
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const ContinueJobResult result = RunContinueJob(job);
-  const CsvTable table = ContinueJobCsv(result);
+  const CsvTable table = text::ContinueJobCsv(result);
   if (!opt.output.empty() && table.rows > 0) {
     AtomicFile file(opt.output, "-o");
     file.stream() << OutputProvenance(cmd).CommentLine() << table.text;
@@ -67,7 +67,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
     fmt::print("{}\n", j.dump());
     return 0;
   }
-  fmt::print("{}", ContinueJobText(result));
+  fmt::print("{}", text::ContinueJobText(result));
   if (!opt.output.empty() && table.rows > 0) {
     fmt::print("  written        {} {}points to {}\n", table.rows, job.follow ? "curve " : "",
                opt.output);

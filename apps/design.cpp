@@ -139,8 +139,8 @@ std::string GridProvenance(const DesignCliOptions& opt, const CLI::App& cmd,
 // Part (b) from the from-rest options shared with `optimize --problem reach`.
 DesignFromRestPart FromRestPart(const FromRestCliOptions& cli) {
   DesignFromRestPart part;
-  part.reach_starts = ParseGridSize("--reach-starts", cli.reach_starts);
-  part.from_rest_starts = ParseGridSize("--from-rest-starts", cli.starts);
+  part.reach_starts = ParseStartGrid("--reach-starts", cli.reach_starts);
+  part.from_rest_starts = ParseStartGrid("--from-rest-starts", cli.starts);
   part.reach_evaluations = cli.reach_evaluations;
   part.reach_local_evaluations = cli.reach_local_evaluations;
   part.reach_seconds = cli.reach_seconds;
@@ -205,7 +205,7 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   } catch (const SweepResumableError& e) {
     throw WriteError(std::string(e.what()) + ": run the same command with --resume to continue");
   }
-  if (ProgressShown()) fmt::print(stderr, "capsubot design: {}", DesignJobText(r));
+  if (ProgressShown()) fmt::print(stderr, "capsubot design: {}", text::DesignJobText(r));
   return 0;
 }
 
@@ -227,7 +227,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
                           .Json();
     fmt::print("{}\n", j.dump());
   } else {
-    fmt::print("{}", DesignJobText(r));
+    fmt::print("{}", text::DesignJobText(r));
   }
   return 0;
 }

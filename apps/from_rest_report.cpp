@@ -14,14 +14,18 @@ namespace capsubot::app {
 
 FromRestOptions FromRestCliOptions::Check() const {
   FromRestOptions o;
-  std::tie(o.n_x, o.n_psi) = ParseGridSize("--from-rest-starts", starts);
+  const StartGrid grid = ParseStartGrid("--from-rest-starts", starts);
+  o.n_x = grid.n_x;
+  o.n_psi = grid.n_psi;
   o.attractor.threads = threads;
   return o;
 }
 
 ReachEffort FromRestCliOptions::Effort() const {
   ReachEffort effort;
-  std::tie(effort.n_x, effort.n_psi) = ParseGridSize("--reach-starts", reach_starts);
+  const StartGrid grid = ParseStartGrid("--reach-starts", reach_starts);
+  effort.n_x = grid.n_x;
+  effort.n_psi = grid.n_psi;
   effort.global_evaluations = reach_evaluations;
   effort.local_evaluations = reach_local_evaluations;
   effort.max_seconds = reach_seconds;

@@ -22,8 +22,8 @@ namespace capsubot::app {
 // Python module.
 using json::FromRestJson;
 using json::ReachJson;
-using report::FromRestText;
-using report::ReachText;
+using text::FromRestText;
+using text::ReachText;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {

@@ -177,12 +177,12 @@ int Run(const OptimizeCliOptions& opt) {
   const Provenance provenance = OutputProvenance(*opt.cmd, UnusedOptionsOf(opt));
   if (force_csv != nullptr) {
     force_csv->stream() << provenance.CommentLine();
-    report::WriteForceCsv(RecommendedForcing(result), force_csv->stream());
+    text::WriteForceCsv(RecommendedForcing(result), force_csv->stream());
     force_csv->Commit();
   }
   if (from_rest_csv != nullptr) {
     from_rest_csv->stream() << provenance.CommentLine();
-    report::WriteFromRestCsv(std::get<MainJobResult>(result), from_rest_csv->stream());
+    text::WriteFromRestCsv(std::get<MainJobResult>(result), from_rest_csv->stream());
     from_rest_csv->Commit();
   }
   nlohmann::json j = json::OptimizeJobJson(result);
@@ -194,7 +194,7 @@ int Run(const OptimizeCliOptions& opt) {
   if (opt.json) {
     fmt::print("{}\n", j.dump());
   } else {
-    fmt::print("{}{}", report::OptimizeJobText(result),
+    fmt::print("{}{}", text::OptimizeJobText(result),
                opt.output.empty() ? "" : fmt::format("\nwritten: {}\n", opt.output));
   }
   return 0;

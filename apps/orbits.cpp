@@ -27,7 +27,7 @@ int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   opt.job.forcing = opt.forcing.Build(false);
   const OrbitsJobResult result = RunOrbitsJob(opt.job);
   if (!opt.json) {
-    fmt::print("{}", report::OrbitsJobText(result, "--max-evaluations"));
+    fmt::print("{}", text::OrbitsJobText(result, "--max-evaluations"));
     return 0;
   }
   nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
@@ -35,7 +35,7 @@ int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   fmt::print("{}\n", j.dump());
   if (!result.complete) {
     fmt::print(stderr, "capsubot orbits: note: {}\n",
-               report::OrbitsIncompleteNote("--max-evaluations"));
+               text::OrbitsIncompleteNote("--max-evaluations"));
   }
   return 0;
 }

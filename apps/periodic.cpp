@@ -1,18 +1,18 @@
 // capsubot periodic: a periodic motion of any kind by Newton shooting on the p-th iterate of
 // the stroboscopic map, with its multipliers (docs/model.md section 13).
 
-#include "capsubot/attract/periodic.hpp"
-
 #include <fmt/format.h>
 
 #include <memory>
+#include <stdexcept>
 
 #include "attract_options.hpp"
+#include "capsubot/job/periodic_job.hpp"
 #include "capsubot/report/periodic_json.hpp"
+#include "capsubot/report/periodic_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -22,64 +22,53 @@ struct PeriodicCommandOptions {
   ShootingOptions shooting;
   StartStateOptions start_state;  // --x0, --u0, --v0, --psi
   std::string from_rest;
+  int transient = 0;
   bool json = false;
   CLI::Option* transient_option = nullptr;
 };
 
-int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
-  const Forcing forcing = opt.robot.forcing.Build();
+// The start --from-rest or --x0, --u0, --v0, --psi give, with --transient when given (else
+// the start's default).
+PeriodicStart Start(const PeriodicCommandOptions& opt) {
   const int given = opt.start_state.Given();
-  PhaseState start = opt.start_state.state;
-  ShootingOptions so = opt.shooting;
+  const bool transient = opt.transient_option->count() > 0;
   if (!opt.from_rest.empty()) {
     if (given > 0) {
       throw std::invalid_argument(
           "--from-rest gives the start: do not give --x0, --u0, --v0 or --psi with it");
     }
-    start = ParseRestStart("--from-rest", opt.from_rest);
-  } else {
-    if (given < 4) {
-      throw std::invalid_argument(
-          "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-rest X0,PSI)");
-    }
-    if (opt.transient_option->count() == 0) so.transient = 0;  // start near the motion itself
+    const PhaseState rest = ParseRestStart("--from-rest", opt.from_rest);
+    PeriodicFromRest start;
+    start.x0 = rest.x;
+    start.psi = rest.psi;
+    if (transient) start.transient = opt.transient;
+    return start;
   }
-  RequirePhase("psi", start.psi);  // a start phase in radians, as phi0
-  const PeriodicMotion m =
-      FindPeriodicMotion(forcing, opt.robot.params, opt.robot.alpha, start, so);
+  if (given < 4) {
+    throw std::invalid_argument(
+        "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-rest X0,PSI)");
+  }
+  PeriodicFromState start;
+  start.state = opt.start_state.state;
+  if (transient) start.transient = opt.transient;
+  return start;
+}
+
+int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {
+  PeriodicJobOptions o;
+  o.forcing = opt.robot.forcing.Build();
+  o.params = opt.robot.params;
+  o.alpha = opt.robot.alpha;
+  o.start = Start(opt);
+  o.shooting = opt.shooting;
+  const PeriodicJobResult r = RunPeriodicJob(o);
   if (opt.json) {
-    nlohmann::json j = json::PeriodicJson(m);
+    nlohmann::json j = json::PeriodicJobJson(r);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
-    return 0;
-  }
-  std::string t = "periodic motion by Newton shooting on the stroboscopic map\n";
-  t += fmt::format("  force          {}\n", ForceFormula(forcing));
-  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", opt.robot.params.T0,
-                   opt.robot.params.e, opt.robot.alpha);
-  t += fmt::format("  status         {} (residual {:.3g} after {} Newton iterations)\n",
-                   ShootingStatusName(m.status), m.residual, m.iterations);
-  t += fmt::format("  period         {}: {} right + {} left impacts per {} period{}\n", m.period,
-                   m.impacts_right, m.impacts_left, m.period, m.period == 1 ? "" : "s");
-  t += fmt::format("  mean velocity  {:.12g} (omega L)\n", m.mean_velocity);
-  t += fmt::format("  state          x = {:.12g}, u = {:.12g}, v = {:.12g} at psi = {:.12g} ({})\n",
-                   m.state.x, m.state.u, m.state.v, m.state.psi, SimModeName(m.mode));
-  t += "  multipliers   ";
-  for (const auto& l : m.multipliers) {
-    t += fmt::format(" {:.10g}{}", l.real(),
-                     l.imag() != 0.0 ? fmt::format("{:+.10g}i", l.imag()) : std::string());
-  }
-  t += fmt::format("   ({} free coordinates at the section)\n", m.dimension);
-  if (m.status != ShootingStatus::kConverged) {
-    t += "  verdict        none: Newton did not converge, so no periodic motion is known here\n";
   } else {
-    t += fmt::format(
-        "  verdict        {} (spectral radius {:.10g}; largest multiplier is {:.3g} "
-        "from +1, {:.3g} from -1)\n",
-        m.stable ? "stable" : "unstable", m.spectral_radius, m.distance_to_plus_one,
-        m.distance_to_minus_one);
+    fmt::print("{}", text::PeriodicJobText(r));
   }
-  fmt::print("{}", t);
   return 0;
 }
 
@@ -87,7 +76,6 @@ int Run(PeriodicCommandOptions& opt, const CLI::App& cmd) {
 
 Command AddPeriodicCommand(CLI::App& app) {
   auto opt = std::make_shared<PeriodicCommandOptions>();
-  opt->shooting.transient = 200;
   CLI::App* cmd = app.add_subcommand(
       "periodic",
       "A periodic motion of any kind (several impacts, both walls, period p) found exactly by "
@@ -101,7 +89,7 @@ Command AddPeriodicCommand(CLI::App& app) {
                   "start from rest at x0 = X0 and forcing phase PSI, then run --transient periods")
       ->type_name("X0,PSI");
   opt->transient_option =
-      cmd->add_option("--transient", opt->shooting.transient,
+      cmd->add_option("--transient", opt->transient,
                       "periods simulated before shooting (default 200 with --from-rest, else 0)");
   cmd->add_option("--max-period", opt->shooting.max_period,
                   "largest period searched, in forcing periods")

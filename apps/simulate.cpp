@@ -7,18 +7,17 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <stdexcept>
+#include <string>
 
-#include "capsubot/attract/orbit_start.hpp"
 #include "capsubot/io/io.hpp"
-#include "capsubot/orbit/validity.hpp"
+#include "capsubot/job/simulate_job.hpp"
+#include "capsubot/model/limits.hpp"
+#include "capsubot/report/simulate_text.hpp"
 #include "capsubot/report/simulation_json.hpp"
-#include "capsubot/simulate/simulator.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -34,7 +33,7 @@ struct SimulateOptions {
   bool json = false;
   std::string events;
   std::string trajectory;
-  int samples_per_period = 100;
+  int samples_per_period = static_cast<int>(SimulateJobOptions{}.samples_per_period);
   CLI::Option* alpha_option = nullptr;
   CLI::Option* x0_option = nullptr;
   CLI::Option* u0_option = nullptr;
@@ -69,9 +68,13 @@ class CsvObserver : public SimObserver {
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
     bar_->Update(static_cast<double>(periods), periods_, elapsed.count());
   }
-  // The bar's last line (100 %), however the run ended.
+  ~CsvObserver() override { Finish(); }
+  CsvObserver(const CsvObserver&) = delete;
+  CsvObserver& operator=(const CsvObserver&) = delete;
+  // The bar's last line (100 %), however the run ended (also when it threw).
   void Finish() {
     if (bar_ != nullptr) OnPeriods(static_cast<std::int64_t>(std::ceil(periods_)));
+    bar_ = nullptr;
   }
 
  private:
@@ -82,89 +85,47 @@ class CsvObserver : public SimObserver {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// The printed report of a run `r` of `sim` (`orbit`: the analytic orbit it starts from, or null).
-std::string ReportText(const Forcing& forcing, const SimulateOptions& opt, const SimOptions& sim,
-                       const SimResult& r, const Solution* orbit) {
-  const SimState& f = r.final_state;
-  std::string t = "event-driven simulation\n";
-  t += fmt::format("  force            {}\n", ForceFormula(forcing));
-  t += fmt::format("  model            T0 = {}, e = {}, alpha = {}\n", opt.params.T0, opt.params.e,
-                   std::isnan(sim.alpha) ? "-" : FormatNumber(sim.alpha));
-  t += fmt::format("  start            x = {}, u = {}, v = {}{}\n", Num(sim.x0), Num(sim.u0),
-                   Num(sim.v0),
-                   opt.from_orbit ? "   (right after the analytic orbit's impact)" : "");
-  t += fmt::format("  status           {}   (phase {} = {} periods)\n", SimStatusName(r.status),
-                   Num(f.phi), Num(f.phi / kTau, 6));
-  if (sim.transient > 0.0) {
-    t += fmt::format(
-        "  transient        {:g} periods: displacement {}, mean velocity {}, {} right "
-        "and {} left impacts (not in the figures below)\n",
-        sim.transient, Num(r.transient.displacement), Num(r.transient.v_mean),
-        r.transient.impacts_right, r.transient.impacts_left);
+// The start the options give: the analytic orbit (--from-orbit; CLI11 refuses --alpha, --x0,
+// --u0, --v0 with it) or the state of --alpha, --x0, --u0, --v0.
+SimulateStart Start(const SimulateOptions& opt) {
+  if (opt.from_orbit) return SimulateFromOrbit{};
+  if (opt.alpha_option->count() == 0) {
+    throw std::invalid_argument("option --alpha is missing: give the mass ratio (or --from-orbit)");
   }
-  t += fmt::format("  final state      x = {}, u = {}, v = {}, y = {} ({})\n", Num(f.x), Num(f.u),
-                   Num(f.v), Num(f.y), SimModeName(f.mode));
-  t += fmt::format("  displacement     {}   (L)\n", Num(r.displacement));
-  t += fmt::format("  mean velocity    {}   (omega L)", Num(r.v_mean));
-  if (orbit) t += fmt::format("   analytic: {}", Num(orbit->orbit.v_mean));
-  t += "\n";
-  t += fmt::format("  events           {} right impacts, {} left impacts, {} stops, {} break-aways",
-                   r.impacts_right, r.impacts_left, r.stops, r.breakaways);
-  if (r.sticks + r.releases > 0) {
-    t += fmt::format(", {} sticks on a wall (chattering), {} releases", r.sticks, r.releases);
+  if (opt.x0_option->count() == 0 || opt.u0_option->count() == 0 || opt.v0_option->count() == 0) {
+    throw std::invalid_argument(
+        "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)");
   }
-  t += "\n";
-  const Energy& en = r.energy;
-  t += fmt::format(
-      "  energy           motor work {:.10g} (positive part {:.10g}); losses: friction "
-      "{:.10g}, impacts {:.10g}   ((m1+m2) omega^2 L^2)\n",
-      en.motor_work, en.motor_work_positive, en.friction_loss, en.impact_loss);
-  return t;
+  return SimulateFromState{opt.sim.alpha, opt.sim.x0, opt.sim.u0, opt.sim.v0};
 }
 
-int Run(SimulateOptions& opt, const CLI::App& cmd) {
-  opt.params.Validate();
-  const Forcing forcing = opt.forcing.Build();
-  SimOptions sim = opt.sim;
-  std::optional<Solution> orbit;
-  if (opt.from_orbit) {  // CLI11 refuses --alpha, --x0, --u0, --v0 with it
-    orbit = Solve(forcing, opt.params);
-    const Orbit& o = orbit->orbit;
-    if (!o.ok()) {
-      throw std::invalid_argument(
-          fmt::format("--from-orbit: no one-impact orbit exists for this force, T0 and e ({})",
-                      StatusName(o.status)));
+// The notes on stderr: an analytic orbit started from that is not valid, a run stopped early.
+void PrintNotes(const SimulateJobResult& r) {
+  if (r.orbit && !r.orbit->validity.valid()) {
+    std::string names;
+    for (const auto& n : r.orbit->validity.ViolationNames()) {
+      names += (names.empty() ? "" : ", ") + n;
     }
-    if (!orbit->validity.valid()) {
-      std::string names;
-      for (const auto& n : orbit->validity.ViolationNames())
-        names += (names.empty() ? "" : ", ") + n;
-      fmt::print(stderr, "capsubot simulate: note: the analytic orbit is not valid ({})\n", names);
-    }
-    const SimOptions start = StartAfterImpact(o);
-    sim.alpha = start.alpha;
-    sim.x0 = start.x0;
-    sim.u0 = start.u0;
-    sim.v0 = start.v0;
-  } else {
-    if (opt.alpha_option->count() == 0) {
-      throw std::invalid_argument(
-          "option --alpha is missing: give the mass ratio (or --from-orbit)");
-    }
-    if (opt.x0_option->count() == 0 || opt.u0_option->count() == 0 || opt.v0_option->count() == 0) {
-      throw std::invalid_argument(
-          "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)");
-    }
+    fmt::print(stderr, "capsubot simulate: note: the analytic orbit is not valid ({})\n", names);
   }
-  sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
-  sim.Validate();
-  if (!opt.trajectory.empty()) {
-    // The samples cover the whole run, the transient too.
-    RequireTrajectoryRows(sim.transient + sim.periods, opt.samples_per_period,
-                          "--samples-per-period", "--transient + --periods");
-    sim.sample_step = kTau / opt.samples_per_period;
+  if (r.run.status == SimStatus::kEventLimit) {
+    fmt::print(stderr, "capsubot simulate: note: stopped early: {}\n", r.run.message);
   }
+}
 
+int Run(const SimulateOptions& opt, const CLI::App& cmd) {
+  SimulateJobOptions o;
+  o.params = opt.params;
+  o.forcing = opt.forcing.Build();
+  o.start = Start(opt);
+  o.sim = opt.sim;
+  o.trajectory = !opt.trajectory.empty();
+  o.samples_per_period = opt.samples_per_period;
+  if (o.trajectory) {  // the job's rule, in the names of the options, before any file
+    RequireTrajectoryRows(o.sim.transient + o.sim.periods, opt.samples_per_period,
+                          "--samples-per-period", "--transient + --periods");
+  }
+  o.Validate();
   RequireDistinctOutputs({{opt.events, "--events"}, {opt.trajectory, "--trajectory"}});
   // Each file starts with its provenance: the events do not depend on the trajectory's grid.
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
@@ -172,31 +133,27 @@ int Run(SimulateOptions& opt, const CLI::App& cmd) {
     events_file = std::make_unique<AtomicFile>(opt.events, "--events");
     events_file->stream() << OutputProvenance(cmd, {"--samples-per-period"}).CommentLine();
   }
-  if (!opt.trajectory.empty()) {
+  if (o.trajectory) {
     trajectory_file = std::make_unique<AtomicFile>(opt.trajectory, "--trajectory");
     trajectory_file->stream() << OutputProvenance(cmd).CommentLine();
   }
   std::optional<ProgressBar> bar;
-  if (sim.periods >= kProgressPeriods && ProgressShown()) bar.emplace("periods");
+  if (o.sim.periods >= kProgressPeriods && ProgressShown()) bar.emplace("periods");
   CsvObserver observer(events_file.get(), trajectory_file.get(), bar ? &*bar : nullptr,
-                       sim.periods);
-  const bool observe = events_file || trajectory_file || bar;
-  const SimResult r = Simulate(forcing, opt.params, sim, observe ? &observer : nullptr);
+                       o.sim.periods);
+  if (events_file || trajectory_file || bar) o.observer = &observer;
+  const SimulateJobResult r = RunSimulateJob(o);
   observer.Finish();
-  if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
   if (events_file) events_file->Commit();
   if (trajectory_file) trajectory_file->Commit();
-  if (r.status == SimStatus::kEventLimit) {
-    fmt::print(stderr, "capsubot simulate: note: stopped early: {}\n", r.message);
-  }
-
+  PrintNotes(r);
   if (opt.json) {
-    nlohmann::json j = json::SimulationJson(r, sim, orbit ? &*orbit : nullptr);
+    nlohmann::json j = json::SimulateJobJson(r);
     AddProvenanceJson(j, cmd);
     fmt::print("{}\n", j.dump());
-    return 0;
+  } else {
+    fmt::print("{}", text::SimulateJobText(r));
   }
-  fmt::print("{}", ReportText(forcing, opt, sim, r, orbit ? &*orbit : nullptr));
   return 0;
 }
 
@@ -277,7 +234,9 @@ Command AddSimulateCommand(CLI::App& app) {
                      {"what a robot started at rest settles into after 2000 periods",
                       "simulate --A 0.08 --c 0.015 --phi0 0 --T0 0.1 --e 1 --alpha "
                       "0.3 --x0 0.5 --u0 0 --v0 0 --transient 2000 --periods 2"}});
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
+  // The job names the start from the orbit by its field: the message names the flag.
+  static const FlagNames kFlags = {{"from_orbit", "--from-orbit"}};
+  return {cmd, [opt, cmd] { return RunNamingFlags(kFlags, [&] { return Run(*opt, *cmd); }); }, {}};
 }
 
 }  // namespace capsubot::app

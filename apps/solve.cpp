@@ -7,14 +7,13 @@
 #include <vector>
 
 #include "capsubot/io/io.hpp"
-#include "capsubot/orbit/orbit_energy.hpp"
-#include "capsubot/orbit/stability.hpp"
-#include "capsubot/orbit/validity.hpp"
+#include "capsubot/job/solve_job.hpp"
+#include "capsubot/report/solution_json.hpp"
+#include "capsubot/report/solve_text.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -48,33 +47,30 @@ void WriteTrajectory(const Orbit& o, const std::string& path, int samples, const
 }
 
 int Run(const SolveOptions& opt, const CLI::App& cmd) {
-  opt.params.Validate();
-  const FromRestOptions from_rest_options = opt.from_rest.Check();  // bad grids before any work
-  const Forcing forcing = opt.forcing.Build();
-  const Solution s = Solve(forcing, opt.params);
+  SolveJobOptions o;
+  o.params = opt.params;
+  const FromRestOptions from_rest = opt.from_rest.Check();  // bad grids before any work
+  o.forcing = opt.forcing.Build();
+  if (opt.stability) o.stability = from_rest;
+  const SolveJobResult r = RunSolveJob(o);
+  const Orbit& orbit = r.solution.orbit;
   if (!opt.trajectory.empty()) {
-    if (s.orbit.ok()) {
-      WriteTrajectory(s.orbit, opt.trajectory, opt.samples, cmd);
+    if (orbit.ok()) {
+      WriteTrajectory(orbit, opt.trajectory, opt.samples, cmd);
     } else {
       fmt::print(stderr, "capsubot solve: note: --trajectory not written: no orbit ({})\n",
-                 StatusName(s.orbit.status));
+                 StatusName(orbit.status));
     }
   }
-  const GaitFromRest from_rest =
-      opt.stability ? CheckGaitFromRest(s.orbit, opt.params, from_rest_options) : GaitFromRest{};
   if (opt.json) {
-    nlohmann::json j = json::SolveJson(s, opt.stability, from_rest);
+    nlohmann::json j = json::SolveJobJson(r);
     // Without --stability the orbit is not checked from rest: its grid does not shape the output.
     AddProvenanceJson(j, cmd,
                       opt.stability ? std::vector<std::string>{}
                                     : std::vector<std::string>{"--from-rest-starts"});
     fmt::print("{}\n", j.dump());
   } else {
-    fmt::print("{}", SolutionTable(s, opt.params));
-    fmt::print("{}", EnergyTable(OrbitEnergy(s.orbit)));
-    if (opt.stability) {
-      fmt::print("{}{}", StabilityTable(ComputeStability(s.orbit)), FromRestText(from_rest, 2));
-    }
+    fmt::print("{}", text::SolveJobText(r));
   }
   return 0;
 }

@@ -7,9 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "capsubot/sweep/start_map.hpp"
 #include "provenance.hpp"
-#include "ranks.hpp"
 
 namespace capsubot::app {
 
@@ -30,22 +28,22 @@ void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const ch
       ->capture_default_str();
 }
 
-void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options) {
-  RequireShardForResume(cmd, SplitsRun(options.shard), "map");
-}
-
-int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
-                  const RobotOptions& robot, const Forcing& forcing,
-                  const std::vector<PhaseState>& starts, const AttractorOptions& attractor, bool u0,
-                  const std::string& output,
-                  const std::vector<std::pair<const char*, bool>>& refused) {
-  StartShardOptions so;
-  std::tie(so.shard, so.shards) = ParseShard(options.shard);
-  if (static_cast<std::size_t>(so.shards) > starts.size()) {
+StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std::int64_t starts,
+                   const std::string& output,
+                   const std::vector<std::pair<const char*, bool>>& refused) {
+  const bool sharded = SplitsRun(options.shard);
+  RequireShardForResume(cmd, sharded, "map");
+  // The comment lines of the whole map's file; a shard carries them for the join.
+  const std::string comments = OutputProvenance(cmd).CommentLine();
+  if (!sharded) return WholeStartMap{output, comments};
+  StartMapShard run;
+  StartShardOptions& file = run.file;
+  std::tie(file.shard, file.shards) = ParseShard(options.shard);
+  if (file.shards > starts) {
     throw std::invalid_argument(
         fmt::format("--shard = {} is invalid: the map has only {} starts: expected at most as "
                     "many shards as starts",
-                    options.shard, starts.size()));
+                    options.shard, starts));
   }
   RequireCheckpointSeconds(options.checkpoint_seconds);
   for (const auto& [flag, set] : refused) {
@@ -56,23 +54,15 @@ int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
           flag));
     }
   }
-  Ranks ranks;  // under mpirun: rank 0 writes, the others compute blocks of the shard's starts
-  if (ranks.worker()) {
-    const std::vector<PhaseState> mine = ShardStarts(starts, so.shard, so.shards);
-    return ranks.Serve(MotionBlocks(forcing, robot.params, robot.alpha, mine, attractor),
-                       attractor.threads);
-  }
-  so.output = output;
-  so.comments = OutputProvenance(cmd).CommentLine();  // that of the whole map's file
-  so.u0 = u0;
-  so.resume = options.resume;
-  so.checkpoint_seconds = options.checkpoint_seconds;
-  const StartShardSummary s = WriteStartShard(forcing, robot.params, robot.alpha, starts, attractor,
-                                              so, CountProgress("starts"), ranks.backend());
-  fmt::print("{}: shard {}/{}: {} of {} starts written to {}{}\n", cmd.get_name(), so.shard,
-             so.shards, s.starts, starts.size(), output,
-             s.resumed > 0 ? fmt::format(" ({} resumed from the checkpoint)", s.resumed) : "");
-  return 0;
+  file.output = output;
+  file.comments = comments;
+  file.resume = options.resume;
+  file.checkpoint_seconds = options.checkpoint_seconds;
+  return run;
+}
+
+int ServeMap(Ranks& ranks, const StartMapWork& work) {
+  return ranks.Serve(work.Blocks(), work.attractor.threads);
 }
 
 }  // namespace capsubot::app

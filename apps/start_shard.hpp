@@ -1,13 +1,15 @@
 #pragma once
-// `--shard K/N` (with `--resume`, `--checkpoint-seconds`) of the commands that run a map of
-// starts, `basins` and `attractors`: the shard's starts computed (on the ranks of an MPI job
-// when started by mpirun) and written to a resumable shard file (capsubot/sweep/start_map.hpp).
+// How `basins` and `attractors` run their map of starts: the whole map or `--shard K/N` (with
+// `--resume`, `--checkpoint-seconds`), and on the ranks of an MPI job when started by mpirun
+// (ranks.hpp). The run itself is the library's (capsubot/job/attractors_job.hpp).
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "attract_options.hpp"
+#include "ranks.hpp"
 
 namespace capsubot::app {
 
@@ -20,17 +22,17 @@ struct StartShardCliOptions {
 /// Adds --shard, --resume and --checkpoint-seconds to `cmd` (of command `name`).
 void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const char* name);
 
-/// Refuses --resume or a changed --checkpoint-seconds without --shard K/N, N >= 2
-/// (std::invalid_argument).
-void RequireShardForResume(const CLI::App& cmd, const StartShardCliOptions& options);
+/// The run of the map of `starts` starts of command `cmd`: one shard (--shard K/N, N >= 2)
+/// written to `output`, or the whole map (written to `output` when given), with the run's
+/// provenance as the file's comment lines. Refuses --resume or --checkpoint-seconds without a
+/// shard, more shards than starts, and the `refused` options (flag, given) with a shard: they
+/// need the whole map (std::invalid_argument naming the option).
+StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std::int64_t starts,
+                   const std::string& output,
+                   const std::vector<std::pair<const char*, bool>>& refused);
 
-/// Runs shard options.shard of the map `starts` of command `cmd` (output `output`, second
-/// column u0 when `u0`). `refused`: options (flag, given) that need the whole map. Returns the
-/// exit code; throws std::invalid_argument for bad input (naming the option).
-int RunStartShard(const StartShardCliOptions& options, const CLI::App& cmd,
-                  const RobotOptions& robot, const Forcing& forcing,
-                  const std::vector<PhaseState>& starts, const AttractorOptions& attractor, bool u0,
-                  const std::string& output,
-                  const std::vector<std::pair<const char*, bool>>& refused);
+/// A worker of an MPI job computes the blocks of `work` that rank 0 sends, until it says stop;
+/// returns the exit status (0).
+int ServeMap(Ranks& ranks, const StartMapWork& work);
 
 }  // namespace capsubot::app

@@ -309,7 +309,7 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
   if (ranks.worker()) return ranks.Serve(SweepBlocks(sweep), sweep.threads);
   const SweepJobResult result = RunSweepJob(job, ranks.backend());
-  if (shown) fmt::print(stderr, "capsubot sweep: {}", SweepJobText(result));
+  if (shown) fmt::print(stderr, "capsubot sweep: {}", text::SweepJobText(result));
   return 0;
 }
 

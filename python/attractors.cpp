@@ -1,9 +1,6 @@
 // attractors: the long-run motions reached from rest on a grid of starts (docs/model.md
 // sections 12 and 13), as `capsubot attractors --json`; motion options shared with periodic.
 
-#include "capsubot/attract/attractors.hpp"
-
-#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <cstdint>
@@ -13,6 +10,8 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_grid.hpp"
+#include "capsubot/job/attractors_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/attractors_json.hpp"
 
@@ -27,20 +26,21 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
                             double state_tolerance, double converged_tolerance,
                             double chatter_velocity, std::int64_t max_events_per_period,
                             int threads) {
-  const Params params{T0, e, 0.0};
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  FromRestOptions fr;
+  AttractorsJobOptions o;
+  o.params = Params{T0, e, 0.0};
+  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.alpha = alpha;
   if (starts) {
     if (n_x || n_psi) {
       throw std::invalid_argument(
           "starts and n_x, n_psi are exclusive: give the grid as starts='NXxNPSI' or as n_x "
           "and n_psi");
     }
-    ParseStarts("starts", *starts, fr);
+    o.starts = ParseStartGrid("starts", *starts);
   }
-  fr.n_x = n_x.value_or(fr.n_x);
-  fr.n_psi = n_psi.value_or(fr.n_psi);
-  MotionOptions& mo = fr.attractor.motion;
+  o.starts.n_x = n_x.value_or(o.starts.n_x);
+  o.starts.n_psi = n_psi.value_or(o.starts.n_psi);
+  MotionOptions& mo = o.attractor.motion;
   mo.transient = transient;
   mo.record = record;
   mo.max_period = max_period;
@@ -48,14 +48,14 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
   mo.converged_tolerance = converged_tolerance;
   mo.chatter_velocity = chatter_velocity;
   mo.max_events_per_period = max_events_per_period;
-  fr.attractor.threads = CapThreads(threads);
+  o.attractor.threads = CapThreads(threads);
   // The library asks the interrupt on this thread after every block of starts: where Ctrl-C
   // is seen.
-  const Attractors a = RunWithoutGil([&](SignalCheck& check) {
-    fr.attractor.interrupt = check.AsInterrupt();
-    return FindAttractors(forcing, params, alpha, fr);
+  const AttractorsJobResult r = RunWithoutGil([&](SignalCheck& check) {
+    o.attractor.interrupt = check.AsInterrupt();
+    return RunAttractorsJob(o);
   });
-  return py::dict(ToPython(json::AttractorsJson(a)));
+  return py::dict(ToPython(json::AttractorsJobJson(r)));
 }
 
 constexpr const char* kAttractorsDoc =

@@ -69,8 +69,8 @@ void RequireTerms(const char* name, const char* symbol,
                   const std::optional<std::vector<double>>& terms);
 
 /// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
-/// options.n_psi; throws std::invalid_argument naming the argument (the library checks the
-/// sizes).
+/// options.n_psi (the library's ParseStartGrid: its syntax and limits); throws
+/// std::invalid_argument naming the argument.
 void ParseStarts(const char* name, const std::string& text, FromRestOptions& options);
 
 /// How the module checks a gait from rest, as the command line's --from-rest-starts and

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
-#include <regex>
 #include <stdexcept>
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/model/limits.hpp"
 
 namespace capsubot::python {
@@ -27,14 +27,9 @@ void RequireTerms(const char* name, const char* symbol,
 }
 
 void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) {
-  static const std::regex grid("([0-9]{1,9})[xX]([0-9]{1,9})");
-  std::smatch parts;
-  if (!std::regex_match(text, parts, grid)) {
-    throw std::invalid_argument(fmt::format(
-        "{} = '{}' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')", name, text));
-  }
-  o.n_x = std::stoi(parts[1].str());
-  o.n_psi = std::stoi(parts[2].str());
+  const StartGrid grid = ParseStartGrid(name, text);
+  o.n_x = grid.n_x;
+  o.n_psi = grid.n_psi;
 }
 
 FromRestOptions FromRestCheck(const std::string& starts, int threads) {

@@ -42,13 +42,6 @@ void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
   }
 }
 
-// The grid of starts "NXxNPSI" of argument `name` (the job checks its sizes).
-RestStartsGrid Starts(const char* name, const std::string& text) {
-  FromRestOptions o;
-  ParseStarts(name, text, o);
-  return {o.n_x, o.n_psi};
-}
-
 py::dict DesignDict(double m1, double L, double mu, double g, double e,
                     std::optional<double> force_amplitude, double force_bias,
                     std::optional<std::vector<double>> force_cos,
@@ -93,8 +86,8 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   in.rho_max = rho_max;
   in.scan_points = scan_points;
   DesignFromRestPart part;
-  part.from_rest_starts = Starts("from_rest_starts", from_rest_starts);
-  part.reach_starts = Starts("reach_starts", reach_starts);
+  part.from_rest_starts = ParseStartGrid("from_rest_starts", from_rest_starts);
+  part.reach_starts = ParseStartGrid("reach_starts", reach_starts);
   part.reach_evaluations = reach_evaluations;
   part.reach_local_evaluations = reach_local_evaluations;
   part.reach_seconds = reach_seconds;

@@ -36,7 +36,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
   py::list all(ToPython(json::RobotOrbitsJson(found, complete)));
   if (!complete) {
     // Said as a warning, as the command line says it on stderr.
-    const std::string note = report::OrbitsIncompleteNote("max_evaluations");
+    const std::string note = text::OrbitsIncompleteNote("max_evaluations");
     if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 1) != 0) {
       throw py::error_already_set();
     }

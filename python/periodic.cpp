@@ -2,8 +2,6 @@
 // stroboscopic map, with its multipliers (docs/model.md section 13), as
 // `capsubot periodic --json`.
 
-#include "capsubot/attract/periodic.hpp"
-
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -13,36 +11,48 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/job/periodic_job.hpp"
 #include "capsubot/report/periodic_json.hpp"
 
 namespace capsubot::python {
 namespace {
 
-// The CLI's default transient with a start from rest (a given state starts near the motion).
-constexpr int kFromRestTransient = 200;
-
-// The start: a state (x0, u0, v0 at phase psi) or from rest (from_rest = (x0, psi)).
-PhaseState Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
-                 std::optional<double> psi,
-                 const std::optional<std::pair<double, double>>& from_rest) {
+// The start: a state (x0, u0, v0 at phase psi) or from rest (from_rest = (x0, psi)), with the
+// period when known (Newton from the start itself) or a transient when given.
+PeriodicStart Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
+                    std::optional<double> psi,
+                    const std::optional<std::pair<double, double>>& from_rest,
+                    std::optional<int> transient, std::optional<int> period) {
   const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
-  if (from_rest) {
-    if (given > 0) {
-      throw std::invalid_argument(
-          "from_rest gives the start: do not give x0, u0, v0 or psi with it");
-    }
-    return RestStart(from_rest->first, from_rest->second);
+  if (from_rest && given > 0) {
+    throw std::invalid_argument("from_rest gives the start: do not give x0, u0, v0 or psi with it");
   }
-  if (given < 4) {
+  if (!from_rest && given < 4) {
     throw std::invalid_argument(
         "the start is missing: give all of x0, u0, v0, psi (or from_rest=(x0, psi))");
   }
-  PhaseState s;
-  s.x = *x0;
-  s.u = *u0;
-  s.v = *v0;
-  s.psi = *psi;
-  return s;
+  if (period && transient) {
+    throw std::invalid_argument(
+        "period and transient are exclusive: with the period given, Newton starts at the start "
+        "itself");
+  }
+  PhaseState state;
+  if (from_rest) {
+    state = RestStart(from_rest->first, from_rest->second);
+  } else {
+    state.x = *x0;
+    state.u = *u0;
+    state.v = *v0;
+    state.psi = *psi;
+  }
+  if (period) return PeriodicOfPeriod{state, *period};
+  if (!from_rest)
+    return PeriodicFromState{state, transient.value_or(PeriodicFromState{}.transient)};
+  PeriodicFromRest rest;
+  rest.x0 = from_rest->first;
+  rest.psi = from_rest->second;
+  rest.transient = transient.value_or(rest.transient);
+  return rest;
 }
 
 py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
@@ -51,26 +61,19 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
                   std::optional<double> u0, std::optional<double> v0, std::optional<double> psi,
                   std::optional<std::pair<double, double>> from_rest, std::optional<int> transient,
                   std::optional<int> period, int max_period, double step, double chatter_velocity) {
-  const Params params{T0, e, 0.0};
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  const PhaseState start = Start(x0, u0, v0, psi, from_rest);
-  RequirePhase("psi", start.psi);  // a start phase in radians, as phi0
-  if (period && transient) {
-    throw std::invalid_argument(
-        "period and transient are exclusive: with the period given, Newton starts at the start "
-        "itself");
-  }
-  ShootingOptions so;
-  so.transient = transient.value_or(from_rest ? kFromRestTransient : 0);
-  so.max_period = max_period;
-  so.step = step;
-  so.chatter_velocity = chatter_velocity;
-  const PeriodicMotion m = RunWithoutGil([&](SignalCheck& signals) {
-    so.interrupt = signals.AsInterrupt();
-    return period ? ShootPeriodicMotion(forcing, params, alpha, start, *period, so)
-                  : FindPeriodicMotion(forcing, params, alpha, start, so);
+  PeriodicJobOptions o;
+  o.params = Params{T0, e, 0.0};
+  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.alpha = alpha;
+  o.start = Start(x0, u0, v0, psi, from_rest, transient, period);
+  o.shooting.max_period = max_period;
+  o.shooting.step = step;
+  o.shooting.chatter_velocity = chatter_velocity;
+  const PeriodicJobResult r = RunWithoutGil([&](SignalCheck& signals) {
+    o.shooting.interrupt = signals.AsInterrupt();
+    return RunPeriodicJob(o);
   });
-  return py::dict(ToPython(json::PeriodicJson(m)));
+  return py::dict(ToPython(json::PeriodicJobJson(r)));
 }
 
 constexpr const char* kPeriodicDoc =

@@ -13,10 +13,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/attract/orbit_start.hpp"
+#include "capsubot/job/simulate_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/simulation_json.hpp"
-#include "capsubot/simulate/simulator.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -116,6 +115,27 @@ py::dict EventTable(const TableObserver& o) {
   return d;
 }
 
+// The start: the analytic orbit (from_orbit) or the state alpha, x0, u0, v0.
+SimulateStart Start(std::optional<double> alpha, std::optional<double> x0, std::optional<double> u0,
+                    std::optional<double> v0, bool from_orbit) {
+  if (from_orbit) {
+    if (alpha || x0 || u0 || v0) {
+      throw std::invalid_argument(
+          "from_orbit takes the state and alpha from the analytic orbit: do not give alpha, "
+          "x0, u0 or v0 with it");
+    }
+    return SimulateFromOrbit{};
+  }
+  if (!alpha) {
+    throw std::invalid_argument("alpha is missing: give the mass ratio (or from_orbit=True)");
+  }
+  if (!x0 || !u0 || !v0) {
+    throw std::invalid_argument(
+        "the initial state is missing: give all of x0, u0, v0 (or from_orbit=True)");
+  }
+  return SimulateFromState{*alpha, *x0, *u0, *v0};
+}
+
 py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                   double T0, double e, std::optional<double> alpha, std::optional<double> x0,
@@ -123,72 +143,24 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
                   double periods, double transient, double chatter_velocity,
                   std::int64_t max_events_per_period, bool events, bool trajectory,
                   long samples_per_period) {
-  const Params params{T0, e, 0.0};
-  params.Validate();
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  SimOptions sim;
-  sim.y0 = y0;
-  sim.periods = periods;
-  sim.transient = transient;
-  sim.chatter_velocity = chatter_velocity;
-  sim.max_events_per_period = max_events_per_period;
-  std::optional<Solution> orbit;
-  if (from_orbit) {
-    if (alpha || x0 || u0 || v0) {
-      throw std::invalid_argument(
-          "from_orbit takes the state and alpha from the analytic orbit: do not give alpha, "
-          "x0, u0 or v0 with it");
-    }
-    orbit = capsubot::Solve(forcing, params);
-    const Orbit& o = orbit->orbit;
-    if (!o.ok()) {
-      throw std::invalid_argument(
-          fmt::format("from_orbit: no one-impact orbit exists for this force, T0 and e ({})",
-                      StatusName(o.status)));
-    }
-    const SimOptions start = StartAfterImpact(o);
-    sim.alpha = start.alpha;
-    sim.x0 = start.x0;
-    sim.u0 = start.u0;
-    sim.v0 = start.v0;
-  } else {
-    if (!alpha) {
-      throw std::invalid_argument("alpha is missing: give the mass ratio (or from_orbit=True)");
-    }
-    if (!x0 || !u0 || !v0) {
-      throw std::invalid_argument(
-          "the initial state is missing: give all of x0, u0, v0 (or from_orbit=True)");
-    }
-    sim.alpha = *alpha;
-    sim.x0 = *x0;
-    sim.u0 = *u0;
-    sim.v0 = *v0;
-  }
-  if (samples_per_period < 1 || samples_per_period > kMaxSamplesPerPeriod) {
-    throw std::invalid_argument(
-        fmt::format("samples_per_period = {} is invalid: expected 1 <= samples_per_period <= {}",
-                    samples_per_period, kMaxSamplesPerPeriod));
-  }
-  if (max_events_per_period > kMaxEventsPerPeriod) {
-    throw std::invalid_argument(fmt::format(
-        "max_events_per_period = {} is invalid: expected 10 <= max_events_per_period <= {}",
-        max_events_per_period, kMaxEventsPerPeriod));
-  }
-  if (trajectory) {
-    // The samples cover the whole run, the transient too.
-    RequireTrajectoryRows(transient + periods, static_cast<double>(samples_per_period),
-                          "samples_per_period", "transient + periods");
-    sim.sample_step = kTau / static_cast<double>(samples_per_period);
-  }
-  sim.energy = true;  // a few hundred nanoseconds per period: nothing for one run
-  sim.Validate();
-
+  SimulateJobOptions o;
+  o.params = Params{T0, e, 0.0};
+  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.start = Start(alpha, x0, u0, v0, from_orbit);
+  o.sim.y0 = y0;
+  o.sim.periods = periods;
+  o.sim.transient = transient;
+  o.sim.chatter_velocity = chatter_velocity;
+  o.sim.max_events_per_period = max_events_per_period;
+  o.trajectory = trajectory;
+  o.samples_per_period = samples_per_period;
   TableObserver observer(events, trajectory);
-  SimResult r;
+  o.observer = &observer;
+  SimulateJobResult r;
   try {
     r = RunWithoutGil([&](SignalCheck& check) {
       observer.Watch(&check);
-      const SimResult result = capsubot::Simulate(forcing, params, sim, &observer);
+      SimulateJobResult result = RunSimulateJob(o);
       observer.Watch(nullptr);
       return result;
     });
@@ -198,8 +170,7 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
         "memory: expected a shorter run (fewer periods)",
         kMaxTrajectoryRows));
   }
-  if (r.status == SimStatus::kNonFinite) throw std::runtime_error(r.message);
-  py::dict d(ToPython(json::SimulationJson(r, sim, orbit ? &*orbit : nullptr)));
+  py::dict d(ToPython(json::SimulateJobJson(r)));
   if (events) d["event_table"] = EventTable(observer);
   if (trajectory) d["trajectory"] = StateDict(observer.samples, "phi");
   return d;
@@ -263,7 +234,7 @@ void BindSimulate(py::module_& m) {
         py::arg("chatter_velocity") = defaults.chatter_velocity,
         py::arg("max_events_per_period") = defaults.max_events_per_period,
         py::arg("events").noconvert() = false, py::arg("trajectory").noconvert() = false,
-        py::arg("samples_per_period") = 100);
+        py::arg("samples_per_period") = SimulateJobOptions{}.samples_per_period);
 }
 
 }  // namespace capsubot::python

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/job/solve_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/solution_json.hpp"
 
@@ -67,20 +67,16 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
                std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                double T0, double e, double margin, double margin_stroke, double stick_margin,
                bool stability, const std::string& from_rest_starts, int threads) {
-  const Params params{T0, e, margin, margin_stroke, stick_margin};
-  params.Validate();
+  SolveJobOptions o;
+  o.params = Params{T0, e, margin, margin_stroke, stick_margin};
   const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
-  const Solution s = capsubot::Solve(forcing, params);
-  GaitFromRest from_rest;
-  if (stability) {
-    from_rest = RunWithoutGil([&](SignalCheck& signals) {
-      FromRestOptions o = check;
-      o.attractor.interrupt = signals.AsInterrupt();
-      return CheckGaitFromRest(s.orbit, params, o);
-    });
-  }
-  return py::dict(ToPython(json::SolveJson(s, stability, from_rest)));
+  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  if (stability) o.stability = check;
+  const SolveJobResult r = RunWithoutGil([&](SignalCheck& signals) {
+    if (o.stability) o.stability->attractor.interrupt = signals.AsInterrupt();
+    return RunSolveJob(o);
+  });
+  return py::dict(ToPython(json::SolveJobJson(r)));
 }
 
 py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi0,

@@ -26,7 +26,7 @@ def test_bad_input_names_the_parameter():
     with pytest.raises(ValueError) as err:
         capsubot.attractors(**ROBOT, starts="2by2")
     assert str(err.value) == (
-        "starts = '2by2' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')")
+        "starts = 2by2 is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 (e.g. 8x8)")
     with pytest.raises(ValueError) as err:
         capsubot.attractors(**ROBOT, starts="2x2", n_x=3)
     assert str(err.value).startswith("starts and n_x, n_psi are exclusive")

@@ -124,8 +124,11 @@ def test_optimize_messages():
     assert message(opt, problem="forcing", alpha=0.3) == (
         "alpha conflicts with problem 'forcing': expected alpha only with problem 'reach'")
     assert message(opt, problem="phase", A=0.2, c=0.03, from_rest_starts="8by8") == (
-        "from_rest_starts = '8by8' is invalid: expected 'NXxNPSI', two whole numbers (e.g. '8x8')")
-    assert message(opt, problem="reach", reach_starts="0x4").startswith("n_x = 0 is invalid")
+        "from_rest_starts = 8by8 is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 "
+        "(e.g. 8x8)")
+    # The command line's grammar and limits: a size of 0 is no grid.
+    assert message(opt, problem="reach", reach_starts="0x4").startswith(
+        "reach_starts = 0x4 is invalid: expected NXxNPSI")
     assert message(opt, problem="reach", reach_evaluations=0).startswith(
         "global_evaluations = 0 is invalid")
     assert message(opt, problem="phase", A=0.2, c=0.03, stick_margin=1.0).startswith(

@@ -85,20 +85,7 @@ void AttractorOptions::Validate() const {
 }
 
 void FromRestOptions::Validate() const {
-  if (n_x < 1 || n_x > kMaxRestGridSide) {
-    throw std::invalid_argument(fmt::format(
-        "n_x = {} is invalid: expected 1 <= n_x <= {} starting positions", n_x, kMaxRestGridSide));
-  }
-  if (n_psi < 1 || n_psi > kMaxRestGridSide) {
-    throw std::invalid_argument(
-        fmt::format("n_psi = {} is invalid: expected 1 <= n_psi <= {} starting phases", n_psi,
-                    kMaxRestGridSide));
-  }
-  if (static_cast<std::int64_t>(n_x) * n_psi > kMaxRestStarts) {
-    throw std::invalid_argument(
-        fmt::format("starts = {}x{} is invalid: expected n_x * n_psi <= {} starts", n_x, n_psi,
-                    kMaxRestStarts));
-  }
+  StartGrid{n_x, n_psi}.Validate();
   attractor.Validate();
 }
 

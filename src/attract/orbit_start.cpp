@@ -22,4 +22,16 @@ SimOptions StartAfterImpact(const Orbit& orbit, double periods) {
   return opt;
 }
 
+OrbitStart StartFromOrbit(const Forcing& forcing, const Params& params) {
+  OrbitStart s;
+  s.orbit = Solve(forcing, params);
+  if (!s.orbit.orbit.ok()) {
+    throw std::invalid_argument(
+        fmt::format("from_orbit: no one-impact orbit exists for this force, T0 and e ({})",
+                    StatusName(s.orbit.orbit.status)));
+  }
+  s.start = StartAfterImpact(s.orbit.orbit);
+  return s;
+}
+
 }  // namespace capsubot

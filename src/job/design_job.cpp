@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/gait_numbers.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
@@ -19,15 +20,10 @@
 namespace capsubot {
 namespace {
 
-// "reach_starts = 0x4 is invalid: ..." unless both sides of `grid` lie in 1..kMaxRestGridSide
-// and it holds at most kMaxRestStarts starts.
-void RequireStarts(const char* name, const RestStartsGrid& grid) {
-  const auto [n_x, n_psi] = grid;
-  const bool sides = n_x >= 1 && n_x <= kMaxRestGridSide && n_psi >= 1 && n_psi <= kMaxRestGridSide;
-  if (sides && static_cast<std::int64_t>(n_x) * n_psi <= kMaxRestStarts) return;
-  throw std::invalid_argument(fmt::format(
-      "{} = {}x{} is invalid: expected NXxNPSI with 1 <= NX, NPSI <= {} and at most {} starts",
-      name, n_x, n_psi, kMaxRestGridSide, kMaxRestStarts));
+// The one rule of a grid of starts (ParseStartGrid's), for a grid given as its two sizes:
+// "reach_starts = 0x4 is invalid: ..." names the part's field.
+void RequireStarts(const char* name, const StartGrid& grid) {
+  ParseStartGrid(name, fmt::format("{}x{}", grid.n_x, grid.n_psi));
 }
 
 // The columns of a grid's axes (DesignGridAxis::column: m2_kg, frequency_hz, ...).
@@ -117,10 +113,12 @@ void DesignFromRestPart::Validate() const {
 
 DesignFromRestOptions DesignFromRestPart::Options() const {
   DesignFromRestOptions o;
-  std::tie(o.search.n_x, o.search.n_psi) = reach_starts;
+  o.search.n_x = reach_starts.n_x;
+  o.search.n_psi = reach_starts.n_psi;
   o.search.attractor.threads = threads;
   // The check's grid and threads; its record stays the long one of DesignFromRestOptions.
-  std::tie(o.check.n_x, o.check.n_psi) = from_rest_starts;
+  o.check.n_x = from_rest_starts.n_x;
+  o.check.n_psi = from_rest_starts.n_psi;
   o.check.attractor.threads = threads;
   o.global_evaluations = reach_evaluations;
   o.local_evaluations = reach_local_evaluations;

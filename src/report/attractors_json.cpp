@@ -35,6 +35,14 @@ nlohmann::json AttractorsJson(const Attractors& a) {
   return j;
 }
 
+nlohmann::json AttractorsJobJson(const AttractorsJobResult& result) {
+  return AttractorsJson(result.attractors);
+}
+
+nlohmann::json BasinsJobJson(const BasinsJobResult& result) {
+  return AttractorsJobJson(result.map);
+}
+
 nlohmann::json FromRestJson(const GaitFromRest& r) {
   if (!r.checked) return nullptr;
   nlohmann::json j = AttractorsJson(r.attractors);

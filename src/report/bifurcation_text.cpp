@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace capsubot {
+namespace capsubot::text {
 namespace {
 
 // "bifurcation diagram over T0 = 0.08 .. 0.12 (4 values, both)", with " for 3 values of e" in
@@ -40,4 +40,4 @@ std::string BifurcationJobText(const BifurcationJobResult& r) {
                      r.impacts, summary, resumed);
 }
 
-}  // namespace capsubot
+}  // namespace capsubot::text

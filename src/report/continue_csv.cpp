@@ -8,7 +8,7 @@
 
 #include "capsubot/io/io.hpp"
 
-namespace capsubot {
+namespace capsubot::text {
 namespace {
 
 // The columns every row has after its parameters, for rows whose motions have at most
@@ -79,4 +79,4 @@ CsvTable ContinueJobCsv(const ContinueJobResult& r) {
   return r.branch.status == ContinuationStatus::kOk ? BranchTable(r.branch, r.param) : CsvTable{};
 }
 
-}  // namespace capsubot
+}  // namespace capsubot::text

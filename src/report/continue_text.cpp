@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace capsubot {
+namespace capsubot::text {
 namespace {
 
 std::string SwitchText(const SwitchResult& s, const std::string& name) {
@@ -71,4 +71,4 @@ std::string ContinueJobText(const ContinueJobResult& r) {
   return t;
 }
 
-}  // namespace capsubot
+}  // namespace capsubot::text

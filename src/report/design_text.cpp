@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "capsubot/design/gait_numbers.hpp"
-#include "capsubot/report/attractor_text.hpp"
+#include "capsubot/report/attractors_text.hpp"
 
-namespace capsubot {
+namespace capsubot::text {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -183,4 +183,4 @@ std::string DesignJobText(const DesignJobResult& r) {
   return t;
 }
 
-}  // namespace capsubot
+}  // namespace capsubot::text

@@ -5,9 +5,10 @@
 #include <cmath>
 #include <utility>
 
-#include "capsubot/report/text.hpp"
+#include "capsubot/report/solve_text.hpp"
+#include "capsubot/report/text_format.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 std::string FromRestText(const GaitFromRest& r, int indent) {
   return fmt::format("{:{}}from rest        {}\n", "", indent, r.summary);
@@ -42,4 +43,4 @@ std::string ReachText(const ReachResult& r) {
   return t;
 }
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

@@ -2,7 +2,7 @@
 
 #include "capsubot/io/io.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 void WriteForceCsv(const Forcing& f, std::ostream& out) {
   out << "phi,F\n";  // phi = 0 is the impact
@@ -29,4 +29,4 @@ void WriteFromRestCsv(const MainJobResult& result, std::ostream& out) {
   rows("reach", result.reach.attractors);
 }
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

@@ -8,9 +8,10 @@
 
 #include "capsubot/orbit/scaling.hpp"
 #include "capsubot/report/from_rest_text.hpp"
-#include "capsubot/report/text.hpp"
+#include "capsubot/report/solve_text.hpp"
+#include "capsubot/report/text_format.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -272,4 +273,4 @@ std::string OptimizeJobText(const OptimizeJobResult& result) {
   return std::visit([](const auto& r) { return Text(r); }, result);
 }
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

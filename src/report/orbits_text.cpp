@@ -3,9 +3,10 @@
 #include <fmt/format.h>
 
 #include "capsubot/orbit/stability.hpp"
-#include "capsubot/report/text.hpp"
+#include "capsubot/report/solve_text.hpp"
+#include "capsubot/report/text_format.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 std::string OrbitsIncompleteNote(const char* bound_name) {
   return fmt::format("the search stopped at its work bound ({}): orbits may be missing",
@@ -40,4 +41,4 @@ std::string OrbitsJobText(const OrbitsJobResult& r, const char* bound_name) {
   return t;
 }
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

@@ -24,4 +24,8 @@ nlohmann::json PeriodicJson(const PeriodicMotion& m) {
   return j;
 }
 
+nlohmann::json PeriodicJobJson(const PeriodicJobResult& result) {
+  return PeriodicJson(result.motion);
+}
+
 }  // namespace capsubot::json

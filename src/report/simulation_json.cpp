@@ -44,4 +44,8 @@ nlohmann::json SimulationJson(const SimResult& r, const SimOptions& sim, const S
   return j;
 }
 
+nlohmann::json SimulateJobJson(const SimulateJobResult& result) {
+  return SimulationJson(result.run, result.sim, result.orbit ? &*result.orbit : nullptr);
+}
+
 }  // namespace capsubot::json

@@ -66,12 +66,12 @@ void AddEnergyJson(nlohmann::json& j, const Energy& en) {
                  {"impact_loss", en.impact_loss}};
 }
 
-nlohmann::json SolveJson(const Solution& s, bool stability, const GaitFromRest& from_rest) {
-  nlohmann::json j = SolutionJson(s);
-  AddEnergyJson(j, OrbitEnergy(s.orbit));
-  if (stability) {
-    AddStabilityJson(j, ComputeStability(s.orbit));
-    j["from_rest"] = FromRestJson(from_rest);
+nlohmann::json SolveJobJson(const SolveJobResult& r) {
+  nlohmann::json j = SolutionJson(r.solution);
+  AddEnergyJson(j, r.energy);
+  if (r.options.stability) {
+    AddStabilityJson(j, r.stability);
+    j["from_rest"] = FromRestJson(r.from_rest);
   }
   return j;
 }

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace capsubot {
+namespace capsubot::text {
 
 std::string SweepJobText(const SweepJobResult& result) {
   const SweepSummary& s = result.summary;
@@ -13,4 +13,4 @@ std::string SweepJobText(const SweepJobResult& result) {
                          : std::string());
 }
 
-}  // namespace capsubot
+}  // namespace capsubot::text

@@ -18,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
@@ -250,18 +251,14 @@ BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, d
                                  const std::vector<PhaseState>& starts,
                                  const AttractorOptions& options);
 
-/// Most starts of a grid from rest (n_x * n_psi): a 2048 x 2048 map, about 0.5 GB of results.
-inline constexpr std::int64_t kMaxRestStarts = 4194304;
-/// Most positions (n_x) or phases (n_psi) of a grid from rest.
-inline constexpr int kMaxRestGridSide = 100000;
-
 /// Starts from rest on the grid of GridStart.
 struct FromRestOptions {
-  int n_x = 8;                 ///< starting positions x0 = (i + 0.5)/n_x; >= 1
-  int n_psi = 8;               ///< starting forcing phases psi = tau j/n_psi; >= 1
+  int n_x = 8;                 ///< starting positions x0 = (i + 0.5)/n_x (StartGrid's rules)
+  int n_psi = 8;               ///< starting forcing phases psi = tau j/n_psi (StartGrid's rules)
   AttractorOptions attractor;  ///< classification and grouping
 
-  /// Throws std::invalid_argument naming the first bad field, its value and the rule.
+  /// Throws std::invalid_argument naming the first bad field, its value and the rule (the
+  /// sizes: StartGrid::Validate).
   void Validate() const;
 };
 

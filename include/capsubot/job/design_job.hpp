@@ -17,23 +17,21 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/parallel/blocks.hpp"
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/sweep/design_grid.hpp"
 #include "capsubot/sweep/grid_file.hpp"
 #include "capsubot/sweep/sweep.hpp"
 
 namespace capsubot {
 
-/// A grid of starts from rest: n_x positions by n_psi phases (FromRestOptions::n_x, n_psi).
-using RestStartsGrid = std::pair<int, int>;
-
 /// Part (b) of one design: the fastest motion reached from rest in each direction, sized by
 /// the parameters both front ends name alike (`--reach-evaluations` on the command line,
 /// `reach_evaluations` in Python, and so on); the messages of Validate use these names.
 struct DesignFromRestPart {
   /// Starts on which the best robots are re-checked and their attractors reported; each side
-  /// 1..kMaxRestGridSide, at most kMaxRestStarts starts. Default: those of DesignFromRestOptions.
-  RestStartsGrid from_rest_starts;
-  RestStartsGrid reach_starts;  ///< starts inside the search; the same ranges
+  /// 1..kMaxGridSide, at most kMaxRestStarts starts (ParseStartGrid). Default: those of DesignFromRestOptions.
+  StartGrid from_rest_starts;
+  StartGrid reach_starts;  ///< starts inside the search; the same ranges
   /// From-rest evaluations of the global stage per direction, 1..kMaxDesignFromRestEvaluations.
   int reach_evaluations = 0;
   /// From-rest evaluations of the local polish per direction, 0..kMaxDesignFromRestEvaluations.

@@ -7,6 +7,8 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/job/attractors_job.hpp"
+#include "capsubot/job/basins_job.hpp"
 
 namespace capsubot::json {
 
@@ -18,6 +20,13 @@ nlohmann::json MotionJson(const Motion& motion);
 /// "event_limit_starts"}; each attractor is a MotionJson with "fraction", "starts",
 /// "example_start" {"x0", "psi"} and "one_impact_orbit".
 nlohmann::json AttractorsJson(const Attractors& attractors);
+
+/// What `capsubot attractors --json` prints (without provenance): AttractorsJson of the whole
+/// map's attractors.
+nlohmann::json AttractorsJobJson(const AttractorsJobResult& result);
+
+/// What `capsubot basins --json` prints (without provenance): the same object.
+nlohmann::json BasinsJobJson(const BasinsJobResult& result);
 
 /// The `from_rest` object: the attractors object plus "reached" and "summary"; null when the
 /// gait was not checked (no orbit).

@@ -8,7 +8,7 @@
 
 #include "capsubot/job/continue_job.hpp"
 
-namespace capsubot {
+namespace capsubot::text {
 
 /// A CSV table: the header line and one line per row.
 struct CsvTable {
@@ -23,4 +23,4 @@ struct CsvTable {
 /// curve, was not followed (status not ok).
 CsvTable ContinueJobCsv(const ContinueJobResult& result);
 
-}  // namespace capsubot
+}  // namespace capsubot::text

@@ -6,11 +6,11 @@
 
 #include "capsubot/job/continue_job.hpp"
 
-namespace capsubot {
+namespace capsubot::text {
 
 /// The branch's summary (Branch::Summary), then the switched branch's (or why there is none)
 /// when it was asked, then the curve's: the special point it starts from, its points and range
 /// in both parameters, how each direction ended.
 std::string ContinueJobText(const ContinueJobResult& result);
 
-}  // namespace capsubot
+}  // namespace capsubot::text

@@ -5,7 +5,7 @@
 
 #include "capsubot/job/design_job.hpp"
 
-namespace capsubot {
+namespace capsubot::text {
 
 /// One design: the robot, what was searched, the fastest robust one-impact gait (its numbers in
 /// the user's units and dimensionless, the `capsubot solve` command of its orbit) and, when part
@@ -13,4 +13,4 @@ namespace capsubot {
 /// "N points written to FILE in S s on T threads".
 std::string DesignJobText(const DesignJobResult& result);
 
-}  // namespace capsubot
+}  // namespace capsubot::text

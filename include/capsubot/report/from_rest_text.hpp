@@ -7,7 +7,7 @@
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 /// "from rest        reached from rest in ..." (one line) after `indent` spaces.
 std::string FromRestText(const GaitFromRest& report, int indent = 4);
@@ -16,4 +16,4 @@ std::string FromRestText(const GaitFromRest& report, int indent = 4);
 /// spread.
 std::string ReachText(const ReachResult& reach);
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

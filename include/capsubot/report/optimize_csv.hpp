@@ -6,7 +6,7 @@
 
 #include "capsubot/job/optimize_job.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 /// Rows of the force CSV: phi = 0 (the impact) to 2 pi.
 inline constexpr int kForceCsvRows = 1001;
@@ -19,4 +19,4 @@ void WriteForceCsv(const Forcing& forcing, std::ostream& out);
 /// attractors from rest, then the reach winner's attractors (header included).
 void WriteFromRestCsv(const MainJobResult& result, std::ostream& out);
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

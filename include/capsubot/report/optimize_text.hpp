@@ -7,9 +7,9 @@
 
 #include "capsubot/job/optimize_job.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 /// The plain-text report of `result`, lines ending in '\n'.
 std::string OptimizeJobText(const OptimizeJobResult& result);
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

@@ -6,7 +6,7 @@
 
 #include "capsubot/job/orbits_job.hpp"
 
-namespace capsubot::report {
+namespace capsubot::text {
 
 /// Said when the search hit its work bound, with the name of the bound's option or argument.
 std::string OrbitsIncompleteNote(const char* bound_name);
@@ -14,4 +14,4 @@ std::string OrbitsIncompleteNote(const char* bound_name);
 /// The plain-text report of `result`; `bound_name` names the work bound in the note.
 std::string OrbitsJobText(const OrbitsJobResult& result, const char* bound_name);
 
-}  // namespace capsubot::report
+}  // namespace capsubot::text

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "capsubot/attract/periodic.hpp"
+#include "capsubot/job/periodic_job.hpp"
 
 namespace capsubot::json {
 
@@ -13,5 +14,8 @@ namespace capsubot::json {
 /// "distance_to_plus_one", "distance_to_minus_one", "distance_to_unit_circle", "residual",
 /// "iterations"}.
 nlohmann::json PeriodicJson(const PeriodicMotion& motion);
+
+/// What `capsubot periodic --json` prints (without provenance): PeriodicJson of the motion.
+nlohmann::json PeriodicJobJson(const PeriodicJobResult& result);
 
 }  // namespace capsubot::json

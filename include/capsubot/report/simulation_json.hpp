@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capsubot/job/simulate_job.hpp"
 #include "capsubot/orbit/validity.hpp"
 #include "capsubot/simulate/simulator.hpp"
 
@@ -16,5 +17,9 @@ namespace capsubot::json {
 /// analytic orbit the run started from, or null) "orbit" (SolutionJson).
 nlohmann::json SimulationJson(const SimResult& result, const SimOptions& options,
                               const Solution* orbit);
+
+/// What `capsubot simulate --json` prints (without provenance): SimulationJson of the run, the
+/// simulator's options as run and the orbit it started from (if any).
+nlohmann::json SimulateJobJson(const SimulateJobResult& result);
 
 }  // namespace capsubot::json

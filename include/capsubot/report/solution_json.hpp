@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/job/solve_job.hpp"
 #include "capsubot/model/energy.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
@@ -26,9 +27,10 @@ void AddStabilityJson(nlohmann::json& j, const Stability& stability);
 /// computed).
 void AddEnergyJson(nlohmann::json& j, const Energy& energy);
 
-/// The object of `capsubot solve`: SolutionJson with the energy; with `stability` also the
-/// stability and "from_rest" (FromRestJson of `from_rest`, the orbit checked from rest).
-nlohmann::json SolveJson(const Solution& solution, bool stability, const GaitFromRest& from_rest);
+/// The object of `capsubot solve --json` (without provenance): SolutionJson with the energy;
+/// with the stability asked also the stability and "from_rest" (FromRestJson: the orbit checked
+/// from rest).
+nlohmann::json SolveJobJson(const SolveJobResult& result);
 
 /// Every orbit of a robot (`capsubot orbits`): one object per orbit, sorted as given, with the
 /// keys of SolutionJson, the energy, the stability and "complete" (false: the search hit its

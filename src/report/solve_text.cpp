@@ -1,30 +1,16 @@
-#include "capsubot/report/text.hpp"
+// The one-impact orbit as plain text.
+
+#include "capsubot/report/solve_text.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-namespace capsubot::report {
+#include "capsubot/report/attractors_text.hpp"
+#include "capsubot/report/from_rest_text.hpp"
+#include "capsubot/report/text_format.hpp"
 
-std::string Num(double value, int digits) {
-  return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
-}
-
-std::string NumFixed(double value, int decimals) {
-  return std::isnan(value) ? "-" : fmt::format("{:.{}f}", value, decimals);
-}
-
-std::string ForceFormula(const Forcing& f) {
-  if (f.harmonic()) {
-    return fmt::format("F(phi) = {:.6g} sin(phi {} {:.6g}) + {:.6g}", f.amplitude(),
-                       f.phi0() < 0 ? '-' : '+', std::abs(f.phi0()), f.mean());
-  }
-  std::string s = fmt::format("F(phi) = {:.6g}", f.mean());
-  for (int k = 1; k <= f.harmonics(); ++k) {
-    s += fmt::format(" + {:.6g} cos {}t + {:.6g} sin {}t", f.a(k), k, f.b(k), k);
-  }
-  return s + fmt::format(",  t = phi + {:.6g}", f.phi0());
-}
+namespace capsubot::text {
 
 std::string SolutionTable(const Solution& s, const Params& p) {
   const Orbit& o = s.orbit;
@@ -82,4 +68,10 @@ std::string StabilityTable(const Stability& st) {
   return t;
 }
 
-}  // namespace capsubot::report
+std::string SolveJobText(const SolveJobResult& r) {
+  std::string t = SolutionTable(r.solution, r.options.params) + EnergyTable(r.energy);
+  if (r.options.stability) t += StabilityTable(r.stability) + FromRestText(r.from_rest, 2);
+  return t;
+}
+
+}  // namespace capsubot::text

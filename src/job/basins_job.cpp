@@ -1,0 +1,57 @@
+// capsubot basins as one call: the map of starts of a plane.
+
+#include "capsubot/job/basins_job.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "start_map_run.hpp"
+
+namespace capsubot {
+
+void BasinsJobOptions::Validate() const {
+  if (const auto* p = std::get_if<VelocityPlane>(&plane)) {
+    if (!(p->u_min < p->u_max)) {
+      throw std::invalid_argument(fmt::format(
+          "u_min = {} and u_max = {} are invalid: expected u_min < u_max", p->u_min, p->u_max));
+    }
+  }
+  map.Validate();
+}
+
+const char* StartPlaneName(const StartPlane& plane) {
+  return std::holds_alternative<VelocityPlane>(plane) ? "x0-u0" : "x0-psi";
+}
+
+std::vector<PhaseState> BasinStarts(const BasinsJobOptions& options) {
+  const int nx = options.map.starts.n_x;
+  const int ny = options.map.starts.n_psi;
+  std::vector<PhaseState> starts = GridStarts(nx, ny);
+  const auto* p = std::get_if<VelocityPlane>(&options.plane);
+  if (p == nullptr) return starts;
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      PhaseState& s = starts[static_cast<std::size_t>(i) * static_cast<std::size_t>(ny) +
+                             static_cast<std::size_t>(j)];
+      s = RestStart((i + 0.5) / nx, p->psi);
+      s.u = p->u_min + (j + 0.5) * (p->u_max - p->u_min) / ny;
+    }
+  }
+  return starts;
+}
+
+BasinsJobResult RunBasinsJob(const BasinsJobOptions& options) {
+  options.Validate();
+  BasinsJobResult result;
+  result.plane = options.plane;
+  result.map = detail::RunStartMap(options.map, BasinStarts(options),
+                                   std::holds_alternative<VelocityPlane>(options.plane), "basins");
+  return result;
+}
+
+StartMapWork BasinsJobWork(const BasinsJobOptions& options) {
+  return detail::StartMapWorkOf(options.map, BasinStarts(options));
+}
+
+}  // namespace capsubot
