@@ -55,7 +55,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   job.Validate();
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const ContinueJobResult result = RunContinueJob(job);
-  const CsvTable table = text::ContinueJobCsv(result);
+  const text::CsvTable table = text::ContinueJobCsv(result);
   if (!opt.output.empty() && table.rows > 0) {
     AtomicFile file(opt.output, "-o");
     file.stream() << OutputProvenance(cmd).CommentLine() << table.text;
