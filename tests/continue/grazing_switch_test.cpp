@@ -37,8 +37,8 @@ constexpr double kShootingTol = 1e-9;
 // grows by the spectral radius rho at each return, so it stays within kStay for
 // log(kStay / kStartError) / log(rho) returns: that many are checked. For the gait's switched
 // motion below (period 5, rho = 101, residual 1e-14) that is 2 returns; measured, the run stays
-// within 1e-6 for 4 returns and leaves the motion after 7 (its impacts change), as any run
-// from a motion that unstable does.
+// within 1e-6 for 4 returns and its impacts change at the 8th, as any run from a motion that
+// unstable leaves it.
 constexpr double kStay = 1e-6;
 constexpr double kStartError = 1e-12;
 
