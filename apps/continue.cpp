@@ -25,6 +25,8 @@ struct ContinueCommandOptions {
   ContinueJobOptions job;
   StartStateOptions start_state;  // --x0, --u0, --v0, --psi
   bool from_orbit = false;
+  bool switch_branch = false;
+  std::string switch_at;
   FollowOptions follow;
   std::string follow_type;
   CLI::Option* param2 = nullptr;
@@ -47,6 +49,8 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   job.params = opt.robot.params;
   job.alpha = opt.robot.alpha;
   job.start = opt.from_orbit ? ContinueStart(FromOneImpactOrbit{}) : opt.start_state.state;
+  if (opt.switch_branch) job.switch_at = SwitchPoint::kPeriodDoubling;
+  if (!opt.switch_at.empty()) job.switch_at = ParseSwitchPoint(opt.switch_at);
   if (opt.param2->count() > 0) {
     opt.follow.type = ParseFollowType(opt.follow_type);
     job.follow = opt.follow;
@@ -90,7 +94,8 @@ const FlagNames& ContinueFlagNames() {
                                   {"param2", "--param2"},
                                   {"from2", "--from2"},
                                   {"to2", "--to2"},
-                                  {"follow", "--follow"}};
+                                  {"follow", "--follow"},
+                                  {"switch", "--switch-at"}};
   return names;
 }
 
@@ -116,9 +121,16 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
-  cmd->add_flag("--switch", opt->job.switch_branch,
-                "also follow the period-2p branch born at the first located period doubling "
-                "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
+  CLI::Option* switch_flag = cmd->add_flag(
+      "--switch", opt->switch_branch,
+      "also follow the period-2p branch born at the first located period doubling "
+      "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
+  cmd->add_option("--switch-at", opt->switch_at,
+                  "also follow a branch switched to at the first point of this kind: "
+                  "period_doubling (as --switch) or grazing (the motion with other impacts per "
+                  "period just beyond the first grazing, by Newton shooting from its state)")
+      ->type_name("POINT")
+      ->excludes(switch_flag);
   opt->param2 =
       cmd->add_option("--param2", opt->follow.param2,
                       "also follow the branch's first located special point of the --follow "

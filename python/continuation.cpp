@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -101,6 +102,15 @@ ContinueStart Start(std::optional<double> x0, std::optional<double> u0, std::opt
   return PhaseState{*x0, *u0, *v0, *psi};
 }
 
+// The switch: False (none), True (the first period doubling, as --switch) or the name of the
+// kind of point (as --switch-at).
+std::optional<SwitchPoint> SwitchAt(const std::variant<bool, std::string>& at) {
+  if (const bool* on = std::get_if<bool>(&at)) {
+    return *on ? std::optional<SwitchPoint>(SwitchPoint::kPeriodDoubling) : std::nullopt;
+  }
+  return ParseSwitchPoint(std::get<std::string>(at));
+}
+
 // The curve's options: all of param2, from2, to2 and follow, or none.
 std::optional<FollowOptions> Follow(const std::optional<std::string>& param2,
                                     std::optional<double> from2, std::optional<double> to2,
@@ -125,18 +135,18 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
                             double alpha, const std::string& param, double from, double to,
                             std::optional<double> x0, std::optional<double> u0,
                             std::optional<double> v0, std::optional<double> psi, bool from_orbit,
-                            bool switch_branch, std::optional<std::string> param2,
-                            std::optional<double> from2, std::optional<double> to2,
-                            std::optional<std::string> follow, int max_points, double initial_step,
-                            double min_step, double max_step, int max_period, double step,
-                            double chatter_velocity) {
+                            const std::variant<bool, std::string>& switch_at,
+                            std::optional<std::string> param2, std::optional<double> from2,
+                            std::optional<double> to2, std::optional<std::string> follow,
+                            int max_points, double initial_step, double min_step, double max_step,
+                            int max_period, double step, double chatter_velocity) {
   ContinueJobOptions job;
   job.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
   job.params = Params{T0, e, 0.0};
   job.alpha = alpha;
   job.param = param;
   job.start = Start(x0, u0, v0, psi, from_orbit);
-  job.switch_branch = switch_branch;
+  job.switch_at = SwitchAt(switch_at);
   job.follow = Follow(param2, from2, to2, follow);
   ContinuationOptions& o = job.continuation;
   o.from = from;
@@ -161,9 +171,10 @@ constexpr const char* kContinueDoc =
     "at the "
     "robot's value of the parameter and followed both ways through [from_, to], with its "
     "folds, period doublings, Neimark-Sacker points, grazings, segment changes and speed "
-    "extrema; on request the period-2p branch born at its first period doubling (switch) and "
-    "the curve of its first special point of a type in two parameters (param2, from2, to2, "
-    "follow): the dict `capsubot continue --json` prints, with the points as columns.\n\n"
+    "extrema; on request the branch switched to at its first period doubling or grazing "
+    "(switch) and the curve of its first special point of a type in two parameters (param2, "
+    "from2, to2, follow): the dict `capsubot continue --json` prints, with the points as "
+    "columns.\n\n"
     "Arguments (keyword only, named as the options of `capsubot continue`; `from_` is "
     "--from):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n";
@@ -175,7 +186,9 @@ constexpr const char* kContinueArgsDoc =
     "    x0, u0, v0, psi  the start state (all four), or\n"
     "    from_orbit  start on the robot's valid one-impact orbit with the smallest spectral\n"
     "            radius, right after its impact\n"
-    "    switch  also follow the period-2p branch born at the first located period doubling\n"
+    "    switch  also follow a switched branch: True or 'period_doubling' (the period-2p\n"
+    "            branch born at the first located period doubling), 'grazing' (the motion\n"
+    "            with other impacts per period just beyond the first grazing); False: none\n"
     "    param2, from2, to2, follow  also follow the first located special point of type\n"
     "            follow ('fold', 'period_doubling', 'grazing', 'speed_extremum') in (param,\n"
     "            param2), param2 over [from2, to2] (all four, or none)\n"
@@ -190,7 +203,8 @@ constexpr const char* kContinueArgsDoc =
     "label: 1-D NumPy arrays; multipliers: a complex array, points x largest dimension, NaN "
     "padded}, special_points [{type, <param>, located, accuracy, mean_velocity, period, "
     "impacts_right, impacts_left, state, multipliers, stable}]; with switch: switched (the "
-    "same dict for the period-2p branch, None without a located period doubling); with "
+    "same dict for the switched branch, None without a located period doubling or a grazing; "
+    "status 'no_motion' with a message when the motion ends at the grazing); with "
     "param2: follow {type, parameter2, status, message, start, start_index, ends {backward, "
     "forward}} and curve {<param>, <param2>, arclength, condition, x, u, v, psi, mode, period, "
     "impacts_right, impacts_left, mean_velocity, spectral_radius, stable: 1-D NumPy arrays; "

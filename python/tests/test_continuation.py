@@ -93,3 +93,45 @@ def test_bad_curve_input_names_the_parameter():
     with pytest.raises(ValueError) as err:
         capsubot.continue_branch(**base, param2="alpha", from2=0.04, to2=0.06, follow="fold")
     assert str(err.value) == "param2 = alpha is invalid: expected a parameter other than param = alpha"
+
+
+# The robust gait of results/optimum.json followed in alpha over the range of its robustness: it
+# grazes the left wall at alpha = 0.6319608 with alpha falling (docs/continuation.md).
+GAIT = dict(A=0.31611673290226067, c=0.0623092212807503, phi0=-3.089378590956282, T0=1.0, e=1.0,
+            alpha=0.6322584367241656)
+CLI_GAIT = ["--A", 0.31611673290226067, "--c", 0.0623092212807503, "--phi0", -3.089378590956282,
+            "--T0", 1.0, "--e", 1.0, "--alpha", 0.6322584367241656]
+
+
+def test_switch_at_grazing_equals_the_command_line():
+    found = capsubot.continue_branch(**GAIT, from_orbit=True, param="alpha",
+                                     from_=0.3161292183620828, to=0.8161292183620828,
+                                     switch="grazing")
+    cli = cli_json("continue", *CLI_GAIT, "--from-orbit", "--param", "alpha", "--from",
+                   0.3161292183620828, "--to", 0.8161292183620828, "--switch-at", "grazing")
+    switched, cli_switched = found.pop("switched"), cli.pop("switched")
+    points, cli_points = switched.pop("points"), cli_switched.pop("points")
+    assert same(switched, cli_switched) and switched["status"] == "ok"
+    assert set(points) == set(cli_points[0]) and len(cli_points) >= 10
+    for key, column in points.items():
+        want = [p[key] for p in cli_points]
+        if key == "multipliers":
+            want = [[complex(*z) for z in m] for m in want]
+        assert np.array_equal(column, np.array(want)), key
+    # Beyond the grazing, with other impacts per period than the gait's one right impact.
+    start = switched["start_index"]
+    grazing = [s for s in found["special_points"] if s["type"] == "grazing"][0]
+    assert points["alpha"][start] < grazing["alpha"]
+    assert points["impacts_left"][start] > 0
+    found.pop("points"), cli.pop("points")
+    assert same(found, cli)
+    # False: no switch (True, the period doubling, is tested above).
+    assert "switched" not in capsubot.continue_branch(**GAIT, from_orbit=True, param="alpha",
+                                                      from_=0.6, to=0.7, switch=False)
+
+
+def test_bad_switch_names_the_parameter():
+    with pytest.raises(ValueError) as err:
+        capsubot.continue_branch(**ROBOT, from_orbit=True, param="alpha", from_=0.2, to=0.3,
+                                 switch="fold")
+    assert str(err.value) == "switch = fold is invalid: expected period_doubling or grazing"

@@ -12,15 +12,35 @@
 namespace capsubot {
 namespace {
 
-// The branch's first located special point of the type (null if none).
-const SpecialPoint* FirstLocated(const Branch& b, SpecialPointType type) {
+// The branch's first special point of the type, a located one if `located` (null if none).
+const SpecialPoint* First(const Branch& b, SpecialPointType type, bool located) {
   for (const SpecialPoint& sp : b.special_points) {
-    if (sp.type == type && sp.located) return &sp;
+    if (sp.type == type && (sp.located || !located)) return &sp;
   }
   return nullptr;
 }
 
 RobotModel RobotOf(const ContinueJobOptions& o) { return {o.forcing, o.params, o.alpha}; }
+
+SpecialPointType TypeOf(SwitchPoint point) {
+  return point == SwitchPoint::kGrazing ? SpecialPointType::kGrazing
+                                        : SpecialPointType::kPeriodDoubling;
+}
+
+// The branch switched to at the branch's first located period doubling or first grazing
+// (located or not: the grazing switch steps far wider than its bracket).
+SwitchResult Switch(const ContinueJobOptions& o, const Branch& branch) {
+  SwitchResult s;
+  s.point = *o.switch_at;
+  const bool grazing = s.point == SwitchPoint::kGrazing;
+  const SpecialPoint* at = First(branch, TypeOf(s.point), !grazing);
+  if (at == nullptr) return s;
+  s.at = *at;
+  const RobotFamily family = NamedParameterFamily(o.forcing, o.params, o.alpha, o.param);
+  s.branch = grazing ? SwitchAtGrazing(family, branch, *at, o.continuation)
+                     : SwitchAtPeriodDoubling(family, *at, o.continuation);
+  return s;
+}
 
 FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
   const FollowOptions& f = *o.follow;
@@ -29,7 +49,7 @@ FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
   r.type = f.type;
   r.value2 = RobotValueInRange(RobotOf(o), f.param2, {"from2", f.from2}, {"to2", f.to2}, "curve");
   r.curve.type = f.type;
-  const SpecialPoint* sp = FirstLocated(branch, f.type);
+  const SpecialPoint* sp = First(branch, f.type, true);
   if (sp == nullptr) {
     r.curve.message = fmt::format("no located {} on the branch in {}: no curve to follow",
                                   SpecialPointTypeName(f.type), o.param);
@@ -47,6 +67,16 @@ FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
 }
 
 }  // namespace
+
+const char* SwitchPointName(SwitchPoint point) { return SpecialPointTypeName(TypeOf(point)); }
+
+SwitchPoint ParseSwitchPoint(const std::string& name) {
+  for (SwitchPoint point : {SwitchPoint::kPeriodDoubling, SwitchPoint::kGrazing}) {
+    if (name == SwitchPointName(point)) return point;
+  }
+  throw std::invalid_argument(
+      fmt::format("switch = {} is invalid: expected period_doubling or grazing", name));
+}
 
 void ContinueJobOptions::Validate() const {
   params.Validate();
@@ -76,7 +106,7 @@ void ContinueJobOptions::Validate() const {
 
 ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
   options.Validate();
-  const int stages = 1 + (options.switch_branch ? 1 : 0) + (options.follow ? 1 : 0);
+  const int stages = 1 + (options.switch_at ? 1 : 0) + (options.follow ? 1 : 0);
   int stage = 0;
   const auto tell = [&](const std::string& what) {
     TellStage(options.on_stage, fmt::format("continue: {}/{} {}", ++stage, stages, what));
@@ -89,15 +119,11 @@ ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
                                : std::get<PhaseState>(options.start);
   result.branch = ContinueParameter(options.forcing, options.params, options.alpha, options.param,
                                     start, options.continuation);
-  if (options.switch_branch) {
-    tell("the period-2p branch born at its first period doubling");
-    SwitchResult& s = result.switched.emplace();
-    if (const SpecialPoint* pd = FirstLocated(result.branch, SpecialPointType::kPeriodDoubling)) {
-      s.at = *pd;
-      s.branch = SwitchAtPeriodDoubling(
-          NamedParameterFamily(options.forcing, options.params, options.alpha, options.param), *pd,
-          options.continuation);
-    }
+  if (options.switch_at) {
+    tell(*options.switch_at == SwitchPoint::kGrazing
+             ? "the branch beyond its first grazing"
+             : "the period-2p branch born at its first period doubling");
+    result.switched = Switch(options, result.branch);
   }
   if (options.follow) {
     tell(fmt::format("the {} in ({}, {})", SpecialPointTypeName(options.follow->type),

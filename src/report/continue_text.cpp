@@ -10,9 +10,18 @@ namespace capsubot::text {
 namespace {
 
 std::string SwitchText(const SwitchResult& s, const std::string& name) {
-  if (!s.at) return "no located period doubling: no branch to switch to\n";
-  return fmt::format("branch switched at the period doubling at {} = {:.12g}\n{}", name,
-                     s.at->parameter, s.branch.Summary(name));
+  const bool grazing = s.point == SwitchPoint::kGrazing;
+  if (!s.at) {
+    return fmt::format("no {}: no branch to switch to\n",
+                       grazing ? "grazing" : "located period doubling");
+  }
+  const std::string at = fmt::format(
+      "the {} at {} = {:.12g}", grazing ? "grazing" : "period doubling", name, s.at->parameter);
+  if (s.branch.status != ContinuationStatus::kOk) {
+    return fmt::format("no branch to switch to at {}: {} ({})\n", at,
+                       ContinuationStatusName(s.branch.status), s.branch.message);
+  }
+  return fmt::format("branch switched at {}\n{}", at, s.branch.Summary(name));
 }
 
 // How one direction of the curve ended, `at` its last point.

@@ -113,6 +113,68 @@ TEST(ContinueCli, CurveCsvHasBothParametersAndTheConditionPerPoint) {
   std::filesystem::remove(path);
 }
 
+// The robust gait of results/optimum.json followed in alpha over the range of its robustness
+// (docs/continuation.md): it grazes the left wall at alpha = 0.6319608 with alpha falling.
+const std::string kGaitBranch =
+    "continue --A 0.31611673290226067 --c 0.0623092212807503 --phi0 -3.089378590956282 --T0 1 "
+    "--e 1 --alpha 0.6322584367241656 --from-orbit --param alpha --from 0.3161292183620828 --to "
+    "0.8161292183620828";
+
+// The JSON of a run without its provenance (times and versions differ between runs).
+nlohmann::json WithoutProvenance(const std::string& args) {
+  auto j = nlohmann::json::parse(RunCli(args + " --json").out);
+  j.erase("provenance");
+  return j;
+}
+
+TEST(ContinueCli, SwitchAtGrazingFollowsTheMotionBeyondIt) {
+  const auto j = WithoutProvenance(kGaitBranch + " --switch-at grazing");
+  double grazing = 0.0;
+  for (const auto& sp : j["special_points"]) {
+    if (sp["type"] == "grazing") grazing = sp["alpha"].get<double>();
+  }
+  EXPECT_TRUE(Near(grazing, 0.6319608, 1e-7));
+  const auto& b = j["switched"];
+  ASSERT_EQ(b["status"], "ok") << b.dump();
+  const auto& first = b["points"][b["start_index"].get<std::size_t>()];
+  // Beyond the grazing (alpha below it), with other impacts per period than the gait's one
+  // right-wall impact per period.
+  EXPECT_LT(first["alpha"].get<double>(), grazing);
+  const auto period = first["period"].get<std::int64_t>();
+  EXPECT_TRUE(first["impacts_right"].get<std::int64_t>() != period ||
+              first["impacts_left"].get<std::int64_t>() != 0)
+      << first.dump();
+  const auto text = RunCli(kGaitBranch + " --switch-at grazing").out;
+  EXPECT_NE(text.find("branch switched at the grazing at alpha = 0.6319608"), std::string::npos)
+      << text;
+}
+
+TEST(ContinueCli, SwitchAtGrazingSaysWhenTheMotionEndsThere) {
+  // The unstable one-impact orbit of the example robot in A (tests/continue/): its branch turns
+  // back at the grazing at A = 0.0631462.
+  const std::string unstable = "continue " + kSmallOrbit +
+                               " --x0 1 --u0 -0.20810169637703732 --v0 0.17436023776205364 "
+                               "--psi 5.7843183107095015 --param A --from 0.03 --to 0.079 "
+                               "--switch-at grazing";
+  const auto j = WithoutProvenance(unstable);
+  EXPECT_EQ(j["switched"]["status"], "no_motion");
+  EXPECT_NE(j["switched"]["message"].get<std::string>().find("the motion ends at the grazing"),
+            std::string::npos);
+  const auto r = RunCli(unstable);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("no branch to switch to at the grazing at A = 0.0631462"), std::string::npos)
+      << r.out;
+  // Without a grazing on the branch there is nothing to switch to.
+  const auto none = WithoutProvenance(kAlphaBranch + " --switch-at grazing");
+  EXPECT_TRUE(none["switched"].is_null());
+}
+
+TEST(ContinueCli, SwitchIsSwitchAtPeriodDoubling) {
+  const auto plain = WithoutProvenance(kAlphaBranch + " --switch");
+  EXPECT_EQ(plain["switched"]["status"], "ok");
+  EXPECT_EQ(plain, WithoutProvenance(kAlphaBranch + " --switch-at period_doubling"));
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
   const auto path = testing::TempPath("bad_branch.csv");
   const std::string o = " -o " + path.string() + " 2>&1";
@@ -150,6 +212,11 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
       {kAlphaBranch + " --param2 A --from2 0.06 --to2 0.04 --follow fold",
        "capsubot continue: error: --to2 = 0.04 is invalid: expected a finite number > from2 = "
        "0.06\n"},
+      {kAlphaBranch + " --switch --switch-at grazing",
+       "capsubot continue: error: --switch excludes --switch-at (see capsubot continue --help)\n"},
+      {kAlphaBranch + " --switch-at fold",
+       "capsubot continue: error: --switch-at = fold is invalid: expected period_doubling or "
+       "grazing\n"},
       {kAlphaBranch + " --param2 A --from2 0.06 --to2 0.07 --follow fold",
        "capsubot continue: error: the robot's A = 0.05 is outside the range: expected from2 = "
        "0.06 <= A <= to2 = 0.07 (the curve starts at the robot's value)\n"},

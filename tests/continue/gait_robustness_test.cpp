@@ -12,19 +12,12 @@
 
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/model/model_parameter.hpp"
+#include "continue/one_impact_family.hpp"
 
 namespace capsubot {
 namespace {
 
-// The robust gait of results/optimum.json (`capsubot optimize` at T0 = 1, e = 1, default
-// margins): its force and the analytic one-impact orbit of docs/model.md section 4.
-Orbit RobustGait() {
-  Params p;
-  p.T0 = 1.0;
-  p.e = 1.0;
-  return ComputeOrbit(
-      Forcing::Harmonic(0.31611673290226067, 0.0623092212807503, -3.089378590956282), p);
-}
+using testing::RobustGait;
 
 // At a fold the multiplier differs from +1 like the square root of the distance to it: the
 // location tolerance 1e-10 in the parameter leaves about 1e-5; the shooting's own central

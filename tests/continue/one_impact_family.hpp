@@ -106,6 +106,28 @@ inline Branch AlphaBranch(double max_step) {
   return ContinueBranch([](double alpha) { return Robot(alpha); }, AfterImpact(o, kPhi0), opt);
 }
 
+// The unstable one-impact orbit of the robot with kA (impact near motor phase 2.94, `capsubot
+// orbits`) continued in A over [0.03, 0.079] towards larger A: it grazes the right wall at
+// A = 0.0631462, where the analytic orbit's x_max = 1 (continuation_test.cpp).
+inline Branch UnstableBranchInA() {
+  const double alpha = OrbitAt(kA, kPhi0).alpha;
+  const double phi_start = RobotOrbitPhase(kA, alpha, 2.9423);
+  ContinuationOptions opt = Range(0.03, 0.079, kA);
+  opt.both_directions = false;
+  return ContinueBranch([alpha](double A) { return Robot(alpha, A); },
+                        AfterImpact(OrbitAt(kA, phi_start), phi_start), opt);
+}
+
+// The robust gait of results/optimum.json (`capsubot optimize` at T0 = 1, e = 1, default
+// margins): its force and the analytic one-impact orbit of docs/model.md section 4.
+inline Orbit RobustGait() {
+  Params p;
+  p.T0 = 1.0;
+  p.e = 1.0;
+  return ComputeOrbit(
+      Forcing::Harmonic(0.31611673290226067, 0.0623092212807503, -3.089378590956282), p);
+}
+
 // The first special point of the type on the branch (null if none).
 inline const SpecialPoint* Find(const Branch& b, SpecialPointType type) {
   for (const SpecialPoint& s : b.special_points) {

@@ -22,7 +22,6 @@
 namespace capsubot {
 namespace {
 
-using testing::AfterImpact;
 using testing::AlphaBranch;
 using testing::Find;
 using testing::ImpactPhase;
@@ -36,7 +35,7 @@ using testing::OrbitParams;
 using testing::Range;
 using testing::RelNear;
 using testing::Robot;
-using testing::RobotOrbitPhase;
+using testing::UnstableBranchInA;
 
 // Required: a followed period doubling has a multiplier -1 to 1e-8 (the curve holds
 // det(P_z + I) to 1e-9; the shooting's own central differences agree to about 1e-10).
@@ -131,12 +130,8 @@ TEST(SpecialCurve, GrazingCurveIsWhereTheAnalyticOrbitTouchesTheRightWall) {
   // The unstable orbit of the example robot continued in A grazes the right wall at A = 0.0631
   // (continuation_test.cpp); its grazing followed in (A, alpha), alpha in [0.2, 0.35].
   const double alpha = OrbitAt(kA, kPhi0).alpha;
-  const double phi_start = RobotOrbitPhase(kA, alpha, 2.9423);
-  ContinuationOptions opt = Range(0.03, 0.079, kA);
-  opt.both_directions = false;
   const auto robot = [](double A, double a) { return Robot(a, A); };
-  const Branch b = ContinueBranch([&](double A) { return robot(A, alpha); },
-                                  AfterImpact(OrbitAt(kA, phi_start), phi_start), opt);
+  const Branch b = UnstableBranchInA();
   const SpecialPoint* graze = Find(b, SpecialPointType::kGrazing);
   ASSERT_NE(graze, nullptr);
   CurveOptions o = Box(0.03, 0.079, 0.2, 0.35, alpha);

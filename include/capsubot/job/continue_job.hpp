@@ -1,8 +1,9 @@
 #pragma once
 // `capsubot continue` as one call (docs/continuation.md): a periodic motion followed through a
-// range of one model parameter with its special points, and on request the period-2p branch
-// born at its first period doubling and the two-parameter curve of its first special point of
-// a given type. The command line and the Python module's continue_branch make this call.
+// range of one model parameter with its special points, and on request the branch switched to
+// at its first period doubling (period 2p) or grazing (other impacts per period) and the
+// two-parameter curve of its first special point of a given type. The command line and the
+// Python module's continue_branch make this call.
 
 #include <limits>
 #include <optional>
@@ -36,6 +37,20 @@ struct FollowOptions {
   SpecialPointType type = SpecialPointType::kPeriodDoubling;
 };
 
+/// Where the branch is left for another (`--switch-at`, SwitchAtPeriodDoubling and
+/// SwitchAtGrazing of branch_switch.hpp).
+enum class SwitchPoint {
+  kPeriodDoubling,  ///< the first located period doubling: the period-2p branch born there
+  kGrazing,         ///< the first grazing: the motion with other impacts per period just beyond it
+};
+
+/// "period_doubling", "grazing".
+const char* SwitchPointName(SwitchPoint point);
+
+/// The SwitchPoint of that name; std::invalid_argument "switch = <name> is invalid: expected
+/// period_doubling or grazing" otherwise.
+SwitchPoint ParseSwitchPoint(const std::string& name);
+
 struct ContinueJobOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -50,8 +65,9 @@ struct ContinueJobOptions {
   /// `start` is set to it), steps, points, tolerances, the shooting and the interrupt; the
   /// switched branch and the curve take the same settings.
   ContinuationOptions continuation;
-  /// Also follow the period-2p branch born at the branch's first located period doubling.
-  bool switch_branch = false;
+  /// Also follow the branch switched to at the branch's first point of this kind (none: no
+  /// switch).
+  std::optional<SwitchPoint> switch_at;
   /// Also follow the branch's first located special point of follow->type in (param, param2).
   std::optional<FollowOptions> follow;
   /// Told "continue: k/n <stage>" as the job enters each stage, and "" when it is done.
@@ -63,10 +79,14 @@ struct ContinueJobOptions {
   void Validate() const;
 };
 
-/// The period-2p branch of `switch_branch`.
+/// The branch of `switch_at`.
 struct SwitchResult {
-  std::optional<SpecialPoint> at;  ///< the period doubling switched at (none located: empty)
-  Branch branch;                   ///< the period-2p branch (status not_run without `at`)
+  SwitchPoint point = SwitchPoint::kPeriodDoubling;  ///< the kind of point switched at
+  /// The point switched at: the first located period doubling, the first grazing (none: empty).
+  std::optional<SpecialPoint> at;
+  /// The branch switched to (status not_run without `at`; no_motion, with a message, when the
+  /// motion ends at the grazing).
+  Branch branch;
 };
 
 /// The curve of `follow`.
@@ -81,14 +101,15 @@ struct FollowResult {
 struct ContinueJobResult {
   std::string param;                     ///< the branch's parameter
   Branch branch;                         ///< the branch
-  std::optional<SwitchResult> switched;  ///< when switch_branch was asked
+  std::optional<SwitchResult> switched;  ///< when switch_at was asked
   std::optional<FollowResult> follow;    ///< when follow was asked
 };
 
 /// Validates `options`, follows the branch (ContinueParameter), then the switched branch
-/// (SwitchAtPeriodDoubling) and the curve (FollowSpecialPoint) when asked and the branch has
-/// such a point. Throws std::invalid_argument for bad options, a robot without a one-impact
-/// orbit (FromOneImpactOrbit) or a range whose ends are no robots; outcomes are statuses.
+/// (SwitchAtPeriodDoubling or SwitchAtGrazing) and the curve (FollowSpecialPoint) when asked
+/// and the branch has such a point. Throws std::invalid_argument for bad options, a robot without a
+/// one-impact orbit (FromOneImpactOrbit) or a range whose ends are no robots; outcomes are
+/// statuses.
 ContinueJobResult RunContinueJob(const ContinueJobOptions& options);
 
 }  // namespace capsubot

@@ -20,11 +20,11 @@ namespace capsubot::json {
 nlohmann::json BranchJson(const Branch& branch, const std::string& name);
 
 /// The object of `capsubot continue --json` (the provenance aside): BranchJson(result.branch,
-/// param); with switch_branch "switched": BranchJson of the period-2p branch (null without a
-/// located period doubling); with follow "follow": {"type", "parameter2", "status", "message",
-/// "start" {param, param2}, "start_index", "ends": {"backward": {"end", param, param2},
-/// "forward": {...}}} and "curve": [{param, param2, "arclength", "condition", "x", "u", "v",
-/// "psi", "mode", "period", "impacts_right", "impacts_left", "mean_velocity",
+/// param); with switch_at "switched": BranchJson of the branch switched to (null without a
+/// located period doubling, or without a grazing); with follow "follow": {"type", "parameter2",
+/// "status", "message", "start" {param, param2}, "start_index", "ends": {"backward": {"end", param,
+/// param2}, "forward": {...}}} and "curve": [{param, param2, "arclength", "condition", "x", "u",
+/// "v", "psi", "mode", "period", "impacts_right", "impacts_left", "mean_velocity",
 /// "spectral_radius", "multipliers" [[re, im], ...], "stable"}].
 nlohmann::json ContinueJobJson(const ContinueJobResult& result);
 
