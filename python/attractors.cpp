@@ -28,7 +28,7 @@ py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<dou
                             int threads) {
   AttractorsJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   o.alpha = alpha;
   if (starts) {
     if (n_x || n_psi) {

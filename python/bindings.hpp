@@ -39,9 +39,6 @@ void BindContinuation(py::module_& m);  // continue_branch
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
 /// k(phi+phi0)) given by `cos` and `sin`.
-/// The force arguments of the module's functions (A, c, phi0, cos, sin), built with the
-/// command line's rules and messages.
-using ForcingArgs = ForceSpec;
 
 /// The units every docstring refers to (docs/model.md section 2).
 inline constexpr const char* kUnits =

@@ -141,7 +141,7 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
                             int max_points, double initial_step, double min_step, double max_step,
                             int max_period, double step, double chatter_velocity) {
   ContinueJobOptions job;
-  job.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  job.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   job.params = Params{T0, e, 0.0};
   job.alpha = alpha;
   job.param = param;

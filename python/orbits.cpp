@@ -23,7 +23,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
   OrbitsJobOptions job;
   job.params = Params{T0, e, margin, margin_stroke, stick_margin};
   job.params.Validate();
-  job.forcing = ForcingArgs{A, c, std::nullopt, cos, sin}.Build(false);
+  job.forcing = ForceSpec{A, c, std::nullopt, cos, sin}.Build(false);
   job.alpha = alpha;
   job.max_evaluations = max_evaluations;
   job.Validate();

@@ -63,7 +63,7 @@ py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
                   std::optional<int> period, int max_period, double step, double chatter_velocity) {
   PeriodicJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   o.alpha = alpha;
   o.start = Start(x0, u0, v0, psi, from_rest, transient, period);
   o.shooting.max_period = max_period;

@@ -145,7 +145,7 @@ py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
                   long samples_per_period) {
   SimulateJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   o.start = Start(alpha, x0, u0, v0, from_orbit);
   o.sim.y0 = y0;
   o.sim.periods = periods;

@@ -70,7 +70,7 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
   SolveJobOptions o;
   o.params = Params{T0, e, margin, margin_stroke, stick_margin};
   const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
-  o.forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   if (stability) o.stability = check;
   const SolveJobResult r = RunWithoutGil([&](SignalCheck& signals) {
     if (o.stability) o.stability->attractor.interrupt = signals.AsInterrupt();
@@ -84,7 +84,7 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
                     double T0, double e, long samples) {
   const Params params{T0, e, 0.0};
   params.Validate();
-  const Forcing forcing = ForcingArgs{A, c, phi0, cos, sin}.Build();
+  const Forcing forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   if (samples < 2 || samples > kMaxTrajectoryRows) {
     throw std::invalid_argument(fmt::format("samples = {} is invalid: expected 2 <= samples <= {}",
                                             samples, kMaxTrajectoryRows));
