@@ -32,10 +32,6 @@ ReachEffort FromRestCliOptions::Effort() const {
   return effort;
 }
 
-ReachOptions FromRestCliOptions::Reach(double force_bound, double alpha) const {
-  return Effort().Options(force_bound, alpha, Check());
-}
-
 void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--from-rest-starts", o.starts,
                  "grid NXxNPSI of starts from rest on which every reported gait is checked "

@@ -40,9 +40,6 @@ struct FromRestCliOptions {
   /// The effort of the reach search (grid of --reach-starts, budgets, time limit); throws
   /// std::invalid_argument naming the option for a bad grid.
   ReachEffort Effort() const;
-  /// The reach options: search grid, budgets, time limit, full check; alpha fixed if given
-  /// (not NaN), force bound (NaN: T0).
-  ReachOptions Reach(double force_bound, double alpha) const;
 };
 
 /// Adds --from-rest-starts and --threads; with `reach` also --reach-starts,

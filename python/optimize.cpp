@@ -88,8 +88,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   effort.local_evaluations = reach_local_evaluations;
   effort.max_seconds = reach_seconds;
   if (name.empty() || name == "reach") {
-    FromRestOptions grid;
-    ParseStarts("reach_starts", reach_starts, grid);
+    const StartGrid grid = ParseStartGrid("reach_starts", reach_starts);
     effort.n_x = grid.n_x;
     effort.n_psi = grid.n_psi;
   }
