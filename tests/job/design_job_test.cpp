@@ -250,14 +250,13 @@ INSTANTIATE_TEST_SUITE_P(
                    [](DesignJobOptions& o) {
                      Part(o).reach_starts = {0, 4};
                    },
-                   "reach_starts = 0x4 is invalid: expected NXxNPSI with 1 <= NX, NPSI <= 100000 "
-                   "and at most 4194304 starts"},
+                   "reach_starts = 0x4 is invalid: expected NXxNPSI, two whole numbers from 1 to "
+                   "100000 (e.g. 8x8)"},
         BadOptions{"from_rest_starts",
                    [](DesignJobOptions& o) {
                      Part(o).from_rest_starts = {3000, 3000};
                    },
-                   "from_rest_starts = 3000x3000 is invalid: expected NXxNPSI with 1 <= NX, "
-                   "NPSI <= 100000 and at most 4194304 starts"},
+                   "from_rest_starts = 3000x3000 is invalid: expected at most 4194304 starts"},
         BadOptions{"threads", [](DesignJobOptions& o) { Part(o).threads = -1; },
                    "threads = -1 is invalid: expected 1 <= threads <= "},
         BadOptions{"grid_missing", [](DesignJobOptions& o) { GridOf(o).axes.clear(); },
