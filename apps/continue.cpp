@@ -99,6 +99,60 @@ const FlagNames& ContinueFlagNames() {
   return names;
 }
 
+// Beyond the branch: --switch, --switch-at, and the two-parameter curve (--param2, --from2,
+// --to2, --follow).
+void AddBranchOptions(CLI::App& cmd, ContinueCommandOptions& opt) {
+  CLI::Option* switch_flag = cmd.add_flag(
+      "--switch", opt.switch_branch,
+      "also follow the period-2p branch born at the first located period doubling "
+      "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
+  cmd.add_option("--switch-at", opt.switch_at,
+                 "also follow a branch switched to at the first point of this kind: "
+                 "period_doubling (as --switch) or grazing (the motion with other impacts per "
+                 "period just beyond the first grazing, by Newton shooting from its state)")
+      ->type_name("POINT")
+      ->excludes(switch_flag);
+  opt.param2 =
+      cmd.add_option("--param2", opt.follow.param2,
+                     "also follow the branch's first located special point of the --follow "
+                     "type in two parameters, this one the second (a parameter other than "
+                     "--param)");
+  CLI::Option* from2 =
+      cmd.add_option("--from2", opt.follow.from2, "lower end of the --param2 range");
+  CLI::Option* to2 = cmd.add_option("--to2", opt.follow.to2, "upper end of the --param2 range");
+  CLI::Option* follow =
+      cmd.add_option("--follow", opt.follow_type,
+                     "the special point followed with --param2: fold, period_doubling, "
+                     "grazing or speed_extremum");
+  opt.param2->needs(from2)->needs(to2)->needs(follow);
+  from2->needs(opt.param2);
+  to2->needs(opt.param2);
+  follow->needs(opt.param2);
+}
+
+// The steps of the continuation and of its shooting.
+void AddStepOptions(CLI::App& cmd, ContinueCommandOptions& opt) {
+  cmd.add_option("--max-points", opt.job.continuation.max_points,
+                 "points of the branch (and of the curve), both directions together")
+      ->capture_default_str();
+  cmd.add_option("--initial-step", opt.job.continuation.initial_step, "first arclength step")
+      ->capture_default_str();
+  cmd.add_option("--min-step", opt.job.continuation.min_step,
+                 "smallest arclength step: a failure there ends the branch (lost)")
+      ->capture_default_str();
+  cmd.add_option("--max-step", opt.job.continuation.max_step, "largest arclength step")
+      ->capture_default_str();
+  cmd.add_option("--max-period", opt.job.continuation.shooting.max_period,
+                 "largest period searched at the start, in forcing periods")
+      ->capture_default_str();
+  cmd.add_option("--step", opt.job.continuation.shooting.step,
+                 "step of the central finite differences of the Jacobians")
+      ->capture_default_str();
+  cmd.add_option("--chatter-velocity", opt.job.continuation.shooting.chatter_velocity,
+                 "the simulator's chatter cut-off (omega L)")
+      ->capture_default_str();
+}
+
 }  // namespace
 
 Command AddContinueCommand(CLI::App& app) {
@@ -121,51 +175,8 @@ Command AddContinueCommand(CLI::App& app) {
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
-  CLI::Option* switch_flag = cmd->add_flag(
-      "--switch", opt->switch_branch,
-      "also follow the period-2p branch born at the first located period doubling "
-      "(predictor along the eigenvector of the multiplier -1, shooting with period 2p)");
-  cmd->add_option("--switch-at", opt->switch_at,
-                  "also follow a branch switched to at the first point of this kind: "
-                  "period_doubling (as --switch) or grazing (the motion with other impacts per "
-                  "period just beyond the first grazing, by Newton shooting from its state)")
-      ->type_name("POINT")
-      ->excludes(switch_flag);
-  opt->param2 =
-      cmd->add_option("--param2", opt->follow.param2,
-                      "also follow the branch's first located special point of the --follow "
-                      "type in two parameters, this one the second (a parameter other than "
-                      "--param)");
-  CLI::Option* from2 =
-      cmd->add_option("--from2", opt->follow.from2, "lower end of the --param2 range");
-  CLI::Option* to2 = cmd->add_option("--to2", opt->follow.to2, "upper end of the --param2 range");
-  CLI::Option* follow =
-      cmd->add_option("--follow", opt->follow_type,
-                      "the special point followed with --param2: fold, period_doubling, "
-                      "grazing or speed_extremum");
-  opt->param2->needs(from2)->needs(to2)->needs(follow);
-  from2->needs(opt->param2);
-  to2->needs(opt->param2);
-  follow->needs(opt->param2);
-  cmd->add_option("--max-points", opt->job.continuation.max_points,
-                  "points of the branch (and of the curve), both directions together")
-      ->capture_default_str();
-  cmd->add_option("--initial-step", opt->job.continuation.initial_step, "first arclength step")
-      ->capture_default_str();
-  cmd->add_option("--min-step", opt->job.continuation.min_step,
-                  "smallest arclength step: a failure there ends the branch (lost)")
-      ->capture_default_str();
-  cmd->add_option("--max-step", opt->job.continuation.max_step, "largest arclength step")
-      ->capture_default_str();
-  cmd->add_option("--max-period", opt->job.continuation.shooting.max_period,
-                  "largest period searched at the start, in forcing periods")
-      ->capture_default_str();
-  cmd->add_option("--step", opt->job.continuation.shooting.step,
-                  "step of the central finite differences of the Jacobians")
-      ->capture_default_str();
-  cmd->add_option("--chatter-velocity", opt->job.continuation.shooting.chatter_velocity,
-                  "the simulator's chatter cut-off (omega L)")
-      ->capture_default_str();
+  AddBranchOptions(*cmd, *opt);
+  AddStepOptions(*cmd, *opt);
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
                   "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label; "

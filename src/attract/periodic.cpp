@@ -100,6 +100,31 @@ class Shooter {
   Interrupt interrupt_;
 };
 
+// A damped Newton step from *z along dz on the free coordinates: halved while the residual
+// does not decrease (at most kMaxHalvings times); *z, *res, *f move to the first trial that
+// lowers the residual. False when none does.
+template <class Evaluate>
+bool DampedStep(const Evaluate& evaluate, const std::vector<int>& free, const Eigen::VectorXd& dz,
+                Vec3* z, double* res, Vec3* f) {
+  double scale = 1.0;
+  for (int h = 0; h <= kMaxHalvings; ++h, scale *= 0.5) {
+    Vec3 trial = *z;
+    for (std::size_t r = 0; r < free.size(); ++r) {
+      trial[static_cast<std::size_t>(free[r])] += scale * dz(static_cast<Eigen::Index>(r));
+    }
+    trial[0] = std::clamp(trial[0], 0.0, 1.0);
+    double tres = kInf;
+    Vec3 tf{};
+    if (evaluate(trial, &tres, &tf) && tres < *res) {
+      *z = trial;
+      *res = tres;
+      *f = tf;
+      return true;
+    }
+  }
+  return false;
+}
+
 PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptions& o) {
   PeriodicMotion out;
   out.period = p;
@@ -144,25 +169,7 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
     for (int r = 0; r < d; ++r)
       rhs(r) = -f[static_cast<std::size_t>(free[static_cast<std::size_t>(r)])];
     const Eigen::MatrixXd A = J - Eigen::MatrixXd::Identity(d, d);
-    const Eigen::VectorXd dz = A.fullPivLu().solve(rhs);
-    // Damped step: halve while the residual does not decrease.
-    double scale = 1.0;
-    bool improved = false;
-    for (int h = 0; h <= kMaxHalvings && !improved; ++h, scale *= 0.5) {
-      Vec3 trial = z;
-      for (int r = 0; r < d; ++r)
-        trial[static_cast<std::size_t>(free[static_cast<std::size_t>(r)])] += scale * dz(r);
-      trial[0] = std::clamp(trial[0], 0.0, 1.0);
-      double tres = kInf;
-      Vec3 tf{};
-      if (evaluate(trial, &tres, &tf) && tres < res) {
-        z = trial;
-        res = tres;
-        f = tf;
-        improved = true;
-      }
-    }
-    if (!improved) break;
+    if (!DampedStep(evaluate, free, A.fullPivLu().solve(rhs), &z, &res, &f)) break;
   }
   out.iterations = it;
   out.residual = res;

@@ -12,12 +12,12 @@
 #include <variant>
 #include <vector>
 
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/design.hpp"
 #include "capsubot/design/design_from_rest.hpp"
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/parallel/blocks.hpp"
-#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/sweep/design_grid.hpp"
 #include "capsubot/sweep/grid_file.hpp"
 #include "capsubot/sweep/sweep.hpp"
@@ -29,7 +29,8 @@ namespace capsubot {
 /// `reach_evaluations` in Python, and so on); the messages of Validate use these names.
 struct DesignFromRestPart {
   /// Starts on which the best robots are re-checked and their attractors reported; each side
-  /// 1..kMaxGridSide, at most kMaxRestStarts starts (ParseStartGrid). Default: those of DesignFromRestOptions.
+  /// 1..kMaxGridSide, at most kMaxRestStarts starts (ParseStartGrid). Default: those of
+  /// DesignFromRestOptions.
   StartGrid from_rest_starts;
   StartGrid reach_starts;  ///< starts inside the search; the same ranges
   /// From-rest evaluations of the global stage per direction, 1..kMaxDesignFromRestEvaluations.
