@@ -94,10 +94,11 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   part.threads = CapThreads(threads);
   if (!from_rest) part.Validate();  // refused as with from_rest: a bad value is never ignored
   const DesignJobResult r = RunWithoutGil([&](SignalCheck& check) {
-    // Design tells its robots on this thread, and the from-rest search asks its interrupt
-    // there: where Ctrl-C is seen.
+    // Design tells its robots on this thread, and the robustness's continuations and the
+    // from-rest search ask their interrupt there: where Ctrl-C is seen.
     DesignOneMode one;
     one.progress = [&check](std::int64_t, std::int64_t) { check.Check(); };
+    one.interrupt = check.AsInterrupt();
     if (from_rest) {
       part.interrupt = check.AsInterrupt();
       one.from_rest = part;
@@ -143,7 +144,9 @@ constexpr const char* kDesignDoc =
     "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
     "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
     "efficiency, dimensionless {T0, A, c, alpha, phi0, I, spectral_radius, x_min, x_max, "
-    "cos, sin (Fourier), energy}, orbits, binding}, robots, complete; with from_rest, "
+    "cos, sin (Fourier), energy}, orbits, binding}, robots, complete, robustness (with a "
+    "gait: {mu, e, m2_kg: {value, from, to, status, message, down, up}}, each limit {type, "
+    "the parameter's value, located, ...}; else None); with from_rest, "
     "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
     "attractors}.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "

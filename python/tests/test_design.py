@@ -15,6 +15,11 @@ def test_equals_the_command_line():
     found = capsubot.design(**ROBOT, frequency=20)
     assert same(found, cli_json("design", *CLI_ROBOT, "--frequency", 20))
     assert found["status"] == "ok" and found["one_impact"]["status"] == "ok"
+    # The gait's robustness, in mu, e and kg (docs/design.md): its lower limit in m2 is the
+    # period doubling where the stable design sits, 0.2128 kg.
+    assert set(found["robustness"]) == {"mu", "e", "m2_kg"}
+    assert found["robustness"]["m2_kg"]["down"]["type"] == "period_doubling"
+    assert found["robustness"]["m2_kg"]["down"]["m2_kg"] == pytest.approx(0.2128, abs=1e-4)
     ranged = capsubot.design(**ROBOT, frequency_range=(15, 25), m2_range=(0.01, 1),
                              scan_points=8, rho_max=0.8)
     assert same(ranged, cli_json("design", *CLI_ROBOT, "--frequency-range", "15:25", "--m2-range",

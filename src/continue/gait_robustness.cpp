@@ -40,39 +40,27 @@ MotionLimit NearestLimit(const Branch& b, bool forward) {
   return limit;
 }
 
-// The motion through `start` continued in one parameter over [from, to], both ways.
+// The motion through `m.start` continued in the model parameter `name` over [from, to].
 ParameterRobustness Continue(const MotionToContinue& m, const char* name, double value, double from,
                              double to, const ContinuationOptions& continuation) {
-  ParameterRobustness r;
-  r.name = name;
-  ContinuationOptions o = continuation;
-  o.from = from;
-  o.to = to;
-  o.both_directions = true;
-  const Branch b = ContinueParameter(m.forcing, m.params, m.alpha, name, m.start, o);
-  r.value = value;
-  r.from = from;
-  r.to = to;
-  r.status = b.status;
-  r.message = b.message;
-  if (b.status == ContinuationStatus::kOk) {
-    r.down = NearestLimit(b, false);
-    r.up = NearestLimit(b, true);
-  }
-  return r;
+  m.params.Validate();
+  return ContinueRobustness(NamedParameterFamily(m.forcing, m.params, m.alpha, name), m.start, name,
+                            value, from, to, continuation);
 }
 
-std::string LimitText(const MotionLimit& l, const std::string& name) {
+}  // namespace
+
+std::string MotionLimit::Text(const std::string& name, const std::string& value) const {
+  const MotionLimit& l = *this;
   if (!l.special) {
     switch (l.end) {
       case BranchEnd::kRangeEnd:
-        return fmt::format("no limit up to the end of the range, {} = {:.6g}", name, l.parameter);
+        return fmt::format("no limit up to the end of the range, {} = {}", name, value);
       case BranchEnd::kLost:
-        return fmt::format("lost at {} = {:.6g} (the continuation cannot proceed there)", name,
-                           l.parameter);
+        return fmt::format("lost at {} = {} (the continuation cannot proceed there)", name, value);
       case BranchEnd::kMaxPoints:
-        return fmt::format("no limit found up to {} = {:.6g} (the most points were reached)", name,
-                           l.parameter);
+        return fmt::format("no limit found up to {} = {} (the most points were reached)", name,
+                           value);
       case BranchEnd::kNotRun:
       case BranchEnd::kEventChange:  // ends curves, never branches
         break;
@@ -99,10 +87,8 @@ std::string LimitText(const MotionLimit& l, const std::string& name) {
     case SpecialPointType::kSpeedExtremum:
       break;
   }
-  return fmt::format("{} at {} = {:.6g}", meaning, name, l.parameter);
+  return fmt::format("{} at {} = {}", meaning, name, value);
 }
-
-}  // namespace
 
 const char* MotionLimit::Name() const {
   return special ? SpecialPointTypeName(type) : BranchEndName(end);
@@ -113,6 +99,29 @@ void RobustnessOptions::Validate() const {
     throw std::invalid_argument(
         fmt::format("t0_factor = {} is invalid: expected a finite number > 1", t0_factor));
   }
+}
+
+ParameterRobustness ContinueRobustness(const RobotFamily& family, const PhaseState& start,
+                                       const std::string& name, double value, double from,
+                                       double to, const ContinuationOptions& continuation) {
+  ParameterRobustness r;
+  r.name = name;
+  ContinuationOptions o = continuation;
+  o.from = from;
+  o.to = to;
+  o.start = value;
+  o.both_directions = true;
+  const Branch b = ContinueBranch(family, start, o);
+  r.value = value;
+  r.from = from;
+  r.to = to;
+  r.status = b.status;
+  r.message = b.message;
+  if (b.status == ContinuationStatus::kOk) {
+    r.down = NearestLimit(b, false);
+    r.up = NearestLimit(b, true);
+  }
+  return r;
 }
 
 GaitRobustness ComputeMotionRobustness(const MotionToContinue& m,
@@ -142,8 +151,10 @@ std::string GaitRobustness::Summary(const std::string& indent) const {
     }
     t += fmt::format("{}{} = {:.6g}, searched in [{:.6g}, {:.6g}]:\n", indent, p.name, p.value,
                      p.from, p.to);
-    t += fmt::format("{}  down: {}\n", indent, LimitText(p.down, p.name));
-    t += fmt::format("{}  up:   {}\n", indent, LimitText(p.up, p.name));
+    t += fmt::format("{}  down: {}\n", indent,
+                     p.down.Text(p.name, fmt::format("{:.6g}", p.down.parameter)));
+    t += fmt::format("{}  up:   {}\n", indent,
+                     p.up.Text(p.name, fmt::format("{:.6g}", p.up.parameter)));
   }
   return t;
 }

@@ -63,12 +63,19 @@ std::string GaitCells(const Gait& g, const GridColumns& grid) {
 DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one) {
   DesignJobResult r;
   r.input = options.input;
-  const bool part_b = one.from_rest.has_value();
+  const int stages = one.from_rest ? 3 : 2;
   TellStage(options.on_stage,
-            fmt::format("design: 1/{} the fastest robust one-impact gait", part_b ? 2 : 1));
+            fmt::format("design: 1/{} the fastest robust one-impact gait", stages));
   r.design = Design(options.input, one.progress);
-  if (part_b) {
-    TellStage(options.on_stage, "design: 2/2 the fastest motion from rest");
+  if (r.design.one_impact.ok()) {
+    TellStage(options.on_stage,
+              fmt::format("design: 2/{} how far mu, e and m2 carry the gait", stages));
+    RobustnessOptions robustness;
+    robustness.continuation.interrupt = one.interrupt;
+    r.robustness = ComputeDesignRobustness(options.input, r.design.one_impact, robustness);
+  }
+  if (one.from_rest) {
+    TellStage(options.on_stage, "design: 3/3 the fastest motion from rest");
     r.from_rest_options = one.from_rest->Options();
     DesignFromRestOptions run = r.from_rest_options;
     run.search.attractor.interrupt = one.from_rest->interrupt;

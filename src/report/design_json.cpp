@@ -1,6 +1,7 @@
 #include "capsubot/report/design_json.hpp"
 
 #include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::json {
@@ -75,6 +76,8 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
 
 nlohmann::json DesignJobJson(const DesignJobResult& r) {
   nlohmann::json j = DesignJson(r.design);
+  j["robustness"] =
+      r.robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.robustness);
   if (r.from_rest) j["from_rest_best"] = FromRestBestJson(r.input, *r.from_rest);
   return j;
 }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/design/gait_numbers.hpp"
 #include "capsubot/report/attractors_text.hpp"
 
@@ -102,6 +103,35 @@ std::string OneImpactText(const DesignInput& in, const DesignResult& r) {
   return t;
 }
 
+// One limit of the robustness: its words, the value with its unit and its change in percent.
+std::string RobustnessLimit(const MotionLimit& l, const std::string& name, const char* unit,
+                            double value) {
+  return l.Text(name, fmt::format("{:.6g}{} ({:+.3g} %)", l.parameter, unit,
+                                  100.0 * (l.parameter - value) / value));
+}
+
+// How far mu, e and m2 carry the gait, one line per parameter and direction.
+std::string RobustnessText(const GaitRobustness& robustness) {
+  std::string t =
+      "  robustness        how far mu, e and m2 can move, the rest of the robot fixed, before\n"
+      "                    the gait's motion is lost (its continuation, docs/design.md):\n";
+  const std::string indent = "                      ";
+  for (const ParameterRobustness& p : robustness.parameters) {
+    const bool mass = p.name == "m2_kg";
+    const std::string name = mass ? "m2" : p.name;
+    const char* unit = mass ? " kg" : "";
+    if (p.status != ContinuationStatus::kOk) {
+      t += fmt::format("{}{}: not followed ({})\n", indent, name, p.message);
+      continue;
+    }
+    t += fmt::format("{}{} = {:.6g}{}, searched in [{:.6g}, {:.6g}]{}:\n", indent, name, p.value,
+                     unit, p.from, p.to, unit);
+    t += fmt::format("{}  down: {}\n", indent, RobustnessLimit(p.down, name, unit, p.value));
+    t += fmt::format("{}  up:   {}\n", indent, RobustnessLimit(p.up, name, unit, p.value));
+  }
+  return t;
+}
+
 // Attractors listed one by one in the text (the rest are summed).
 constexpr std::size_t kListedAttractors = 4;
 
@@ -179,6 +209,7 @@ std::string DesignJobText(const DesignJobResult& r) {
                        r.grid->output, s.seconds, s.threads);
   }
   std::string t = OneImpactText(r.input, r.design);
+  if (!r.robustness.parameters.empty()) t += RobustnessText(r.robustness);
   if (r.from_rest) t += FromRestText(r.input, r.from_rest_options, *r.from_rest);
   return t;
 }

@@ -192,6 +192,32 @@ TEST(DesignCli, JsonHoldsTheFastestMotionFromRestInEachDirection) {
   EXPECT_GT(j["evaluations"].get<int>(), 0);
 }
 
+// The gait's robustness in the user's units: mu, e and m2 [kg] with their limits, each limit
+// named by its parameter (the library test checks the limits against the design's own
+// evaluation of the robot); null without a gait.
+TEST(DesignCli, JsonHoldsTheRobustnessInMuEAndKilograms) {
+  const auto r = RunCli("design --config " + ExampleConfig() + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out).at("robustness");
+  for (const char* name : {"mu", "e", "m2_kg"}) {
+    const auto& p = j.at(name);
+    EXPECT_EQ(p["status"], "ok") << name;
+    for (const char* side : {"down", "up"}) {
+      EXPECT_TRUE(p.at(side).at("type").is_string()) << name << " " << side;
+      EXPECT_TRUE(p.at(side).at(name).is_number()) << name << " " << side;
+    }
+  }
+  EXPECT_EQ(j["mu"]["value"].get<double>(), 0.3);
+  EXPECT_EQ(j["m2_kg"]["value"], nlohmann::json::parse(r.out)["one_impact"]["m2_kg"]);
+  // docs/design.md: the stable design's inner mass, 0.2128 kg, is the lower limit.
+  EXPECT_EQ(j["m2_kg"]["down"]["type"], "period_doubling");
+  EXPECT_NEAR(j["m2_kg"]["down"]["m2_kg"].get<double>(), 0.2128, 1e-4);
+  const auto none = RunCli("design --config " + ExampleConfig() +
+                           " --force-amplitude 5 --m2-range 0.01:1 --json");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_TRUE(nlohmann::json::parse(none.out).at("robustness").is_null());
+}
+
 // Part (b) is asked for with --from-rest; without it the JSON is that of part (a) alone.
 TEST(DesignCli, WithoutFromRestTheJsonHasNoFromRestBestAndRhoMaxTakesInf) {
   const auto r = RunCli("design --config " + ExampleConfig() + " --rho-max inf --json");
@@ -204,9 +230,10 @@ TEST(DesignCli, WithoutFromRestTheJsonHasNoFromRestBestAndRhoMaxTakesInf) {
 TEST(DesignCli, TableShowsTheGaitAndHowToCheckIt) {
   const auto r = RunCli("design --config " + ExampleConfig() + " --from-rest");
   ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* text : {"inner mass", "mean speed", "mean motor power", "cost of transport",
-                           "binding", "capsubot solve", "the fastest motion reached from rest",
-                           "forward", "backward", "attractor 1", "from-rest evaluations"}) {
+  for (const char* text :
+       {"inner mass", "mean speed", "mean motor power", "cost of transport", "binding",
+        "capsubot solve", "robustness", "m2 = ", "the fastest motion reached from rest", "forward",
+        "backward", "attractor 1", "from-rest evaluations"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
   }
 }

@@ -76,7 +76,34 @@ TEST(DesignJob, OneDesignIsTheLibrarysDesignAndTellsItsStages) {
   EXPECT_FALSE(r.from_rest.has_value());
   EXPECT_FALSE(r.grid.has_value());
   EXPECT_EQ(stages,
-            (std::vector<std::string>{"design: 1/1 the fastest robust one-impact gait", ""}));
+            (std::vector<std::string>{"design: 1/2 the fastest robust one-impact gait",
+                                      "design: 2/2 how far mu, e and m2 carry the gait", ""}));
+  // The gait's robustness is the library's, for the gait found.
+  const GaitRobustness robustness =
+      ComputeDesignRobustness(testing::ExampleRobot(), expected.one_impact);
+  ASSERT_EQ(r.robustness.parameters.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const ParameterRobustness& got = r.robustness.parameters[k];
+    const ParameterRobustness& want = robustness.parameters[k];
+    EXPECT_EQ(got.name, want.name);
+    EXPECT_EQ(got.down.parameter, want.down.parameter) << want.name;
+    EXPECT_EQ(got.up.parameter, want.up.parameter) << want.name;
+  }
+}
+
+// Without a gait there is nothing to continue: no robustness, and its stage is not told.
+TEST(DesignJob, ADesignWithoutAGaitHasNoRobustness) {
+  DesignJobOptions o = OneDesign(std::nullopt);
+  o.input.force.amplitude = 5.0;  // the motor slides the shell by itself (docs/design.md)
+  o.input.m2_min = 0.01;
+  o.input.m2_max = 1.0;
+  std::vector<std::string> stages;
+  o.on_stage = [&stages](const std::string& stage) { stages.push_back(stage); };
+  const DesignJobResult r = RunDesignJob(o);
+  EXPECT_EQ(r.design.status, DesignStatus::kMotorSlidesShell);
+  EXPECT_TRUE(r.robustness.parameters.empty());
+  EXPECT_EQ(stages,
+            (std::vector<std::string>{"design: 1/2 the fastest robust one-impact gait", ""}));
 }
 
 TEST(DesignJob, FromRestPartIsDesignFromRestWithTheSameSettings) {
@@ -106,8 +133,9 @@ TEST(DesignJob, FromRestPartIsDesignFromRestWithTheSameSettings) {
   // averaged over it), whatever grid of starts it is given.
   EXPECT_EQ(r.from_rest_options.check.attractor.motion.record, kCheckRecord);
   EXPECT_EQ(r.from_rest_options.check.n_x, 3);
-  EXPECT_EQ(stages, (std::vector<std::string>{"design: 1/2 the fastest robust one-impact gait",
-                                              "design: 2/2 the fastest motion from rest", ""}));
+  EXPECT_EQ(stages, (std::vector<std::string>{"design: 1/3 the fastest robust one-impact gait",
+                                              "design: 2/3 how far mu, e and m2 carry the gait",
+                                              "design: 3/3 the fastest motion from rest", ""}));
   EXPECT_EQ(robots, r.design.robots);
   EXPECT_GT(evaluations, 0);
 }
@@ -169,6 +197,7 @@ TEST(DesignJob, GridRowsAreTheGaitsOfTheirPoints) {
   EXPECT_EQ(r.grid->output, csv.string());
   EXPECT_EQ(r.grid->summary.points, 4);
   EXPECT_EQ(r.design.status, DesignStatus::kNotRun);
+  EXPECT_TRUE(r.robustness.parameters.empty());  // a grid continues no gait
   const testing::CsvLines file = testing::ReadCsv(csv);
   ASSERT_EQ(file.rows.size(), 4U);
   // The gridded m2 is the column m2_kg, once: the results leave theirs out.

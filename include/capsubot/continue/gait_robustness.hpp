@@ -29,6 +29,10 @@ struct MotionLimit {
 
   /// The special point's type name ("fold", ...) or the end's ("range_end", "lost", ...).
   const char* Name() const;
+  /// Plain words: what happens there and where, the parameter written as `name` = `value`
+  /// (`value` the text of `parameter`, with its unit or more): "a grazing: an impact appears or
+  /// disappears at e = 0.25", "no limit up to the end of the range, T0 = 0.02".
+  std::string Text(const std::string& name, const std::string& value) const;
 };
 
 /// One parameter's continuation.
@@ -74,6 +78,13 @@ struct MotionToContinue {
   double alpha;
   PhaseState start;
 };
+
+/// The periodic motion through `start` followed along `family` (the robot at each value of the
+/// parameter called `name`) over [from, to], both ways from the value `value` of `start`'s
+/// robot, and the nearest limit each way. Throws std::invalid_argument as ContinueBranch does.
+ParameterRobustness ContinueRobustness(const RobotFamily& family, const PhaseState& start,
+                                       const std::string& name, double value, double from,
+                                       double to, const ContinuationOptions& continuation);
 
 /// Continues the periodic motion through `motion.start` in T0, e and alpha over the ranges of
 /// `options` and reports the nearest limit each way. Throws std::invalid_argument for bad

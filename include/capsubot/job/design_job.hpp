@@ -15,6 +15,7 @@
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/design.hpp"
 #include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/job/design_robustness.hpp"
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/parallel/blocks.hpp"
@@ -60,6 +61,8 @@ struct DesignOneMode {
   /// Told the robots of part (a) evaluated so far (and asked on the calling thread: a front end
   /// may abandon the run from it by throwing); empty: nobody is told.
   DesignProgress progress;
+  /// Asked by the continuations of the gait's robustness (interrupt.hpp); empty: never.
+  Interrupt interrupt;
   std::optional<DesignFromRestPart> from_rest;  ///< part (b), when given
 };
 
@@ -82,10 +85,11 @@ struct DesignGridMode : GridFileOptions {
 struct DesignJobOptions {
   /// The robot in SI units and what may be chosen (ranges of m2 and f, robust margins).
   DesignInput input;
-  /// One design (with part (b) or without), or a grid of designs.
+  /// One design (its gait's robustness, with part (b) or without), or a grid of designs.
   std::variant<DesignOneMode, DesignGridMode> mode;
-  /// Told each stage of one design ("design: 1/2 the fastest robust one-impact gait") and ""
-  /// at its end; a grid tells its points to DesignGridMode::progress instead.
+  /// Told each stage of one design ("design: 1/2 the fastest robust one-impact gait", "design:
+  /// 2/2 how far mu, e and m2 carry the gait" when there is a gait) and "" at its end; a grid
+  /// tells its points to DesignGridMode::progress instead.
   StageCallback on_stage;
 
   /// Throws std::invalid_argument naming the bad parameter, its value and the rule: the
@@ -99,11 +103,14 @@ struct DesignGridWritten {
   SweepSummary summary;  ///< points, rows written by this run, threads, wall time
 };
 
-/// The outcome of the design job. One design: `design` and, with part (b), `from_rest`; a
-/// grid: `grid`.
+/// The outcome of the design job. One design: `design`, with a gait its `robustness` and,
+/// with part (b), `from_rest`; a grid: `grid`.
 struct DesignJobResult {
-  DesignInput input;                              ///< the robot designed (DesignJobOptions::input)
-  DesignResult design;                            ///< part (a); status kNotRun for a grid
+  DesignInput input;    ///< the robot designed (DesignJobOptions::input)
+  DesignResult design;  ///< part (a); status kNotRun for a grid
+  /// How far mu, e and m2 carry part (a)'s gait (ComputeDesignRobustness with the default
+  /// RobustnessOptions); empty without a gait and for a grid.
+  GaitRobustness robustness;
   std::optional<DesignFromRestResult> from_rest;  ///< part (b), when asked
   /// How part (b) searched and checked (DesignFromRestPart::Options), when asked.
   DesignFromRestOptions from_rest_options;

@@ -23,8 +23,10 @@ nlohmann::json DesignJson(const DesignResult& result);
 /// attractors (each with its speed in mm/s), then the cost of the search.
 nlohmann::json FromRestBestJson(const DesignInput& input, const DesignFromRestResult& result);
 
-/// One design of the design job: DesignJson, with "from_rest_best" (FromRestBestJson) when
-/// part (b) ran. A grid's result has no JSON: its output is its CSV file.
+/// One design of the design job: DesignJson, with "robustness" (RobustnessJson of the gait's
+/// robustness: "mu", "e", "m2_kg", values in those units; null without a gait) and
+/// "from_rest_best" (FromRestBestJson) when part (b) ran. A grid's result has no JSON: its output
+/// is its CSV file.
 nlohmann::json DesignJobJson(const DesignJobResult& result);
 
 }  // namespace capsubot::json
