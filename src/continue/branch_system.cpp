@@ -179,6 +179,14 @@ bool BranchSystem::Measure(const Vec4& y, Node* node) {
   return true;
 }
 
+PeriodicMotion BranchSystem::Reshoot(double lambda, const PhaseState& state,
+                                     double step_factor) const {
+  const RobotModel robot = Robot(lambda);
+  ShootingOptions shooting = options_.shooting;
+  shooting.step *= step_factor;
+  return ShootPeriodicMotion(robot.forcing, robot.params, robot.alpha, state, p_, shooting);
+}
+
 bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
   const int d = dimension();
   node->y = y;

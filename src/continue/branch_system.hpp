@@ -85,6 +85,11 @@ class BranchSystem {
   /// (moved or not).
   bool Replace(Node* node);
 
+  /// The motion of period p through `state` of the robot at `lambda`, shot anew (Newton from
+  /// `state`) with the Jacobians' finite-difference step of the options times `step_factor`:
+  /// its multipliers tell a bifurcation from an artefact of the differences.
+  PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const;
+
  private:
   RobotModel Robot(double lambda) const { return family_(lambda); }
   // P^p at y; displacement over the p periods into *displacement (if given).

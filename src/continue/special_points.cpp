@@ -19,6 +19,11 @@ constexpr double kComplexPair = 1e-6;
 // straddle a grazing or the branch has a corner (the map is not smooth there), which is no
 // bifurcation of a smooth branch.
 constexpr double kOnCircle = 1e-5;
+// ... and keep it, within this, when the motion is shot anew with the finite-difference step
+// 10 times larger and 10 times smaller: the multipliers of a smooth map move by the square of
+// the step, those of differences that straddle a grazing by far more.
+constexpr double kOnCircleAtOtherSteps = 1e-3;
+constexpr double kStepFactor = 10.0;
 // Changes of the events are bracketed with the parameter fixed when the tangent's parameter
 // component is at least this (else along the arclength).
 constexpr double kParameterProbe = 0.1;
@@ -146,17 +151,32 @@ SpecialPoint LocateRoot(BranchSystem& system, const Node& a, const Node& b, Spec
   return sp;
 }
 
-// The located point is the bifurcation its test function announced.
-bool Confirmed(SpecialPointType type, const PeriodicMotion& m) {
+// Whether `m` has the multiplier of a `type` point, within `tolerance`.
+bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, double tolerance) {
   for (const auto& mu : m.multipliers) {
-    if (type == SpecialPointType::kFold && std::abs(mu - 1.0) <= kOnCircle) return true;
-    if (type == SpecialPointType::kPeriodDoubling && std::abs(mu + 1.0) <= kOnCircle) return true;
+    if (type == SpecialPointType::kFold && std::abs(mu - 1.0) <= tolerance) return true;
+    if (type == SpecialPointType::kPeriodDoubling && std::abs(mu + 1.0) <= tolerance) return true;
     if (type == SpecialPointType::kNeimarkSacker && std::abs(mu.imag()) > kComplexPair &&
-        std::abs(std::abs(mu) - 1.0) <= kOnCircle) {
+        std::abs(std::abs(mu) - 1.0) <= tolerance) {
       return true;
     }
   }
-  return type == SpecialPointType::kSpeedExtremum;
+  return false;
+}
+
+// The located point is the bifurcation its test function announced, whatever the step of the
+// finite differences.
+bool Confirmed(const BranchSystem& system, const SpecialPoint& sp) {
+  if (sp.type == SpecialPointType::kSpeedExtremum) return true;
+  if (!HasCriticalMultiplier(sp.type, sp.motion, kOnCircle)) return false;
+  for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {
+    const PeriodicMotion m = system.Reshoot(sp.parameter, sp.motion.state, factor);
+    if (m.status != ShootingStatus::kConverged ||
+        !HasCriticalMultiplier(sp.type, m, kOnCircleAtOtherSteps)) {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -184,7 +204,7 @@ void FindSpecialPoints(BranchSystem& system, const Node& a, const Node& b, doubl
     SpecialPoint sp = LocateRoot(system, a, b, test.type, test.f, tolerance);
     // A real pair with product 1 (a neutral saddle) also changes the sign of the
     // Neimark-Sacker function: only a complex pair on the circle is one.
-    if (sp.located && !Confirmed(test.type, sp.motion)) continue;
+    if (sp.located && !Confirmed(system, sp)) continue;
     out->push_back(std::move(sp));
   }
   std::stable_sort(
