@@ -60,11 +60,6 @@ inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
 
-/// Refuses an empty list of Fourier coefficients `terms` (argument `name`, coefficients
-/// symbol_1..symbol_K), as the command line refuses an empty --sin or --cos; absent is fine.
-void RequireTerms(const char* name, const char* symbol,
-                  const std::optional<std::vector<double>>& terms);
-
 /// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
 /// options.n_psi (the library's ParseStartGrid: its syntax and limits); throws
 /// std::invalid_argument naming the argument.

@@ -16,16 +16,6 @@
 #include "capsubot/model/limits.hpp"
 
 namespace capsubot::python {
-void RequireTerms(const char* name, const char* symbol,
-                  const std::optional<std::vector<double>>& terms) {
-  if (terms && terms->empty()) {
-    throw std::invalid_argument(fmt::format(
-        "{} = [] is invalid: expected the coefficients {}_1..{}_K, 1 <= K <= {} (an empty "
-        "series is no force)",
-        name, symbol, symbol, kMaxHarmonics));
-  }
-}
-
 void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) {
   const StartGrid grid = ParseStartGrid(name, text);
   o.n_x = grid.n_x;

@@ -58,8 +58,8 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
         "force_sin)");
   }
   RequireOne(frequency.has_value(), frequency_range.has_value(), "frequency", "frequency_range");
-  RequireTerms("force_sin", "b", force_sin);
-  RequireTerms("force_cos", "a", force_cos);
+  RequireSeriesTerms("force_sin", "b", force_sin);
+  RequireSeriesTerms("force_cos", "a", force_cos);
   RequireRange("frequency_range", frequency_range);
   RequireRange("m2_range", m2_range);
   DesignJobOptions options;

@@ -14,16 +14,12 @@
 #include "capsubot/model/detail/enum_names.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
+#include "continue/step_control.hpp"
 
 namespace capsubot {
 namespace {
 
 constexpr int kMaxPointsLimit = 1000000;
-// The step grows by this factor after a correction that took at most kFastIterations
-// iterations (chord iterations: each cuts the residual by a factor of about the step times the
-// branch's curvature, so a few reach the tolerance from a good predictor).
-constexpr double kGrowth = 1.5;
-constexpr int kFastIterations = 4;
 // Consecutive tangents must agree this well (cosine of their angle), and the corrected point
 // must lie within one step of the predicted one: otherwise the corrector may have jumped to
 // another branch, and the step is halved.
@@ -96,16 +92,12 @@ bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, doub
 
 Direction Follow(detail::BranchSystem system, Node a, int budget, const ContinuationOptions& o) {
   Direction out;
-  double h = o.initial_step;
-  // Every point costs at most one failed step per halving from max_step to min_step.
-  const int halvings = static_cast<int>(std::ceil(std::log2(o.max_step / o.min_step))) + 2;
-  const std::int64_t max_attempts = static_cast<std::int64_t>(budget + 1) * halvings;
-  for (std::int64_t attempt = 0; static_cast<int>(out.nodes.size()) < budget; ++attempt) {
-    if (attempt >= max_attempts) break;
+  detail::StepControl step(o, budget);
+  while (static_cast<int>(out.nodes.size()) < budget && step.Attempt()) {
     Poll(o.interrupt);
     Node b;
     Vec4 beyond;
-    Outcome r = Step(system, a, h, o, &b, &beyond);
+    Outcome r = Step(system, a, step.h(), o, &b, &beyond);
     bool end = false;
     if (r == Outcome::kOutOfRange) {
       const double edge = beyond[3] > o.to ? o.to : o.from;
@@ -117,11 +109,10 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
       r = end ? Outcome::kConverged : Outcome::kFailed;
     }
     if (r != Outcome::kConverged) {
-      if (h <= o.min_step) {
+      if (!step.Failed()) {
         out.end = BranchEnd::kLost;
         return out;
       }
-      h = std::max(0.5 * h, o.min_step);
       continue;
     }
     const int k = static_cast<int>(out.nodes.size());
@@ -137,7 +128,7 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
       out.end = BranchEnd::kLost;
       return out;
     }
-    if (out.nodes.back().iterations <= kFastIterations) h = std::min(kGrowth * h, o.max_step);
+    step.Accepted(out.nodes.back().iterations);
     a = out.nodes.back();
   }
   out.end = BranchEnd::kMaxPoints;

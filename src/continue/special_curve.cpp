@@ -10,14 +10,13 @@
 #include <stdexcept>
 
 #include "continue/curve_system.hpp"
+#include "continue/step_control.hpp"
 
 namespace capsubot {
 namespace {
 
-// As for a branch (continuation.cpp): the step grows by kGrowth after a correction of at most
-// kFastIterations iterations; consecutive tangents must agree to kMinTangentCosine.
-constexpr double kGrowth = 1.5;
-constexpr int kFastIterations = 4;
+// As for a branch (continuation.cpp): consecutive tangents must agree to kMinTangentCosine; the
+// step is StepControl's.
 constexpr double kMinTangentCosine = 0.5;
 // A grazing is followed from the side where the flight turns back before the wall: at the
 // branch's grazing that flight comes this close to the wall (the location tolerance moves it
@@ -115,16 +114,12 @@ bool AtEdge(CurveSystem& system, const CurveOptions& o, const CurveNode& a, cons
 CurveDirection Follow(CurveSystem system, CurveNode a, int budget, const CurveOptions& options) {
   const ContinuationOptions& o = options.continuation;
   CurveDirection out;
-  double h = o.initial_step;
-  // Every point costs at most one failed step per halving from max_step to min_step.
-  const int halvings = static_cast<int>(std::ceil(std::log2(o.max_step / o.min_step))) + 2;
-  const std::int64_t max_attempts = static_cast<std::int64_t>(budget + 1) * halvings;
-  for (std::int64_t attempt = 0; static_cast<int>(out.nodes.size()) < budget; ++attempt) {
-    if (attempt >= max_attempts) break;
+  detail::StepControl step(o, budget);
+  while (static_cast<int>(out.nodes.size()) < budget && step.Attempt()) {
     Poll(o.interrupt);
     CurveNode b;
     Vec5 beyond;
-    StepResult r = Advance(system, a, h, &b, &beyond);
+    StepResult r = Advance(system, a, step.h(), &b, &beyond);
     bool end = false;
     if (r == StepResult::kOutOfRange) {
       bool on_edge = false;
@@ -136,11 +131,10 @@ CurveDirection Follow(CurveSystem system, CurveNode a, int budget, const CurveOp
       r = end ? StepResult::kAccepted : StepResult::kRejected;
     }
     if (r != StepResult::kAccepted) {
-      if (h <= o.min_step) {
+      if (!step.Failed()) {
         out.end = r == StepResult::kEventChange ? BranchEnd::kEventChange : BranchEnd::kLost;
         return out;
       }
-      h = std::max(0.5 * h, o.min_step);
       continue;
     }
     out.nodes.push_back(std::move(b));
@@ -152,7 +146,7 @@ CurveDirection Follow(CurveSystem system, CurveNode a, int budget, const CurveOp
       out.end = BranchEnd::kLost;
       return out;
     }
-    if (out.nodes.back().iterations <= kFastIterations) h = std::min(kGrowth * h, o.max_step);
+    step.Accepted(out.nodes.back().iterations);
     a = out.nodes.back();
   }
   out.end = BranchEnd::kMaxPoints;

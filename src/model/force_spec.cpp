@@ -5,11 +5,9 @@
 #include <stdexcept>
 
 namespace capsubot {
-namespace {
 
-// A series given must have 1 to kMaxHarmonics terms.
-void RequireTerms(const std::string& name, const char* symbol,
-                  const std::optional<std::vector<double>>& terms) {
+void RequireSeriesTerms(const std::string& name, const char* symbol,
+                        const std::optional<std::vector<double>>& terms) {
   if (terms && terms->empty()) {
     throw std::invalid_argument(fmt::format(
         "{} = [] is invalid: expected the coefficients {}_1..{}_K, 1 <= K <= {} (an empty "
@@ -18,11 +16,9 @@ void RequireTerms(const std::string& name, const char* symbol,
   }
 }
 
-}  // namespace
-
 Forcing ForceSpec::Build(bool need_phase, const std::string& p) const {
-  RequireTerms(p + "sin", "b", sin);
-  RequireTerms(p + "cos", "a", cos);
+  RequireSeriesTerms(p + "sin", "b", sin);
+  RequireSeriesTerms(p + "cos", "a", cos);
   if (sin) {
     if (A) {
       throw std::invalid_argument(fmt::format(

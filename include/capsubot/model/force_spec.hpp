@@ -25,4 +25,9 @@ struct ForceSpec {
   Forcing Build(bool need_phase = true, const std::string& prefix = "") const;
 };
 
+/// A series of coefficients `name` (symbol a or b), when given, has 1 to kMaxHarmonics terms:
+/// throws std::invalid_argument "sin = [] is invalid: ..." for an empty one.
+void RequireSeriesTerms(const std::string& name, const char* symbol,
+                        const std::optional<std::vector<double>>& terms);
+
 }  // namespace capsubot
