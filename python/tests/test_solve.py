@@ -44,7 +44,7 @@ def bisect(f, lo, hi):
 
 def test_paper_example_prints_the_documented_alpha():
     d = capsubot.solve(**PAPER)
-    # The value the issue and the README give for the paper's example.
+    # The value docs/orbit.md gives for the paper's example.
     assert f"{d['alpha']:.14f}".startswith("0.35685746237742")
     assert d["status"] == "ok"
     assert d["valid"] is False and d["violations"] == ["left_wall"]

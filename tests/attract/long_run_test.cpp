@@ -31,7 +31,7 @@ constexpr double kSameMotionRelTol = 1e-9;
 // A multiplier found by finite differences of simulated iterates against the analytic one
 // (docs/model.md section 8); observed ~1e-9.
 constexpr double kMultiplierTol = 1e-7;
-// The bar for the mean over starts against direct runs.
+// The mean over starts against direct runs of the same starts: within 2 %.
 constexpr double kMeanOverStartsRelTol = 0.02;
 
 ::testing::AssertionResult RelClose(double actual, double expected, double rel) {

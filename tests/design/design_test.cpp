@@ -26,7 +26,8 @@ constexpr double kMapRelTol = 1e-13;
 // The same orbit found by the robot-orbit search from scaled inputs: its roots are polished to
 // ~1e-14 in phase; alpha(phi0) has slopes of order 1, I and u inherit that.
 constexpr double kRootRelTol = 1e-9;
-// The example robot's best m2 against the reference scan: the acceptance bound.
+// The example robot's best m2 against the reference scan: within 1 % (the resolution a designer
+// asks of an inner mass).
 constexpr double kBestM2RelTol = 0.01;
 // The reference scan: log-spaced, 0.1 % apart, over the range where the example has orbits.
 constexpr int kReferenceScan = 2400;
@@ -157,8 +158,8 @@ TEST(Design, DoublingBothMassesAndTheMotorForceChangesNothingDimensionless) {
   EXPECT_TRUE(RelNear(b.cot, a.cot, kRootRelTol));
 }
 
-// The example: the best stable one-impact gait against a plain loop over m2 that
-// solves the robot's orbits itself (no design code) and keeps the fastest stable valid one.
+// The example robot (docs/design.md): the best stable one-impact gait against a plain loop over m2
+// that solves the robot's orbits itself (no design code) and keeps the fastest stable valid one.
 TEST(Design, ExampleRobotBestMassAgreesWithAnIndependentScan) {
   const DesignInput in = Example();
   const double w = 2.0 * M_PI * 20.0, T0 = 0.3 * 9.81 / (w * w * 0.02);
