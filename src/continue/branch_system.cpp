@@ -7,17 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "continue/walk.hpp"
+
 namespace capsubot::detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// A chord iteration (the Jacobian of an earlier iterate) must cut the residual at least by this
-// factor; otherwise the Jacobian is recomputed at the current iterate.
-constexpr double kChordRate = 0.25;
-// The residual of a converged point may stay up to this factor above the tolerance once Newton's
-// update is below kUpdateRounding: the map's own rounding, amplified by its multipliers.
-constexpr double kRoundingFactor = 100.0;
-constexpr double kUpdateRounding = 1e-13;
 // The section is moved when an event lies closer to it than this fraction of half the largest
 // gap between events: the map is smooth only while no event crosses the section.
 constexpr double kSectionFraction = 0.25;

@@ -14,7 +14,7 @@
 #include "capsubot/model/detail/enum_names.hpp"
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
-#include "continue/step_control.hpp"
+#include "continue/walk.hpp"
 
 namespace capsubot {
 namespace {
@@ -119,16 +119,7 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
     const std::size_t before = out.special.size();
     detail::FindSpecialPoints(system, a, b, o.location_tolerance, &out.special);
     for (std::size_t i = before; i < out.special.size(); ++i) out.special[i].after_point = k;
-    out.nodes.push_back(std::move(b));
-    if (end) {
-      out.end = BranchEnd::kRangeEnd;
-      return out;
-    }
-    if (!system.Replace(&out.nodes.back())) {
-      out.end = BranchEnd::kLost;
-      return out;
-    }
-    step.Accepted(out.nodes.back().iterations);
+    if (!detail::KeepPoint(system, std::move(b), end, step, &out.nodes, &out.end)) return out;
     a = out.nodes.back();
   }
   out.end = BranchEnd::kMaxPoints;

@@ -7,16 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "continue/walk.hpp"
+
 namespace capsubot::detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// As the branch's corrector (branch_system.cpp): a chord iteration must cut the (scaled)
-// residual by this factor, else the Jacobian is recomputed; a residual within kRoundingFactor
-// of its tolerance is converged once the update is below kUpdateRounding.
-constexpr double kChordRate = 0.25;
-constexpr double kRoundingFactor = 100.0;
-constexpr double kUpdateRounding = 1e-13;
 // The determinants and the speed derivative are built from central differences of step 1e-6,
 // whose rounding is about 1e-10: their own differences take this step (relative to
 // max(1, |y|) in the parameters), where that rounding costs 1e-6 of the slope and the

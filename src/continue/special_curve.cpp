@@ -10,13 +10,13 @@
 #include <stdexcept>
 
 #include "continue/curve_system.hpp"
-#include "continue/step_control.hpp"
+#include "continue/walk.hpp"
 
 namespace capsubot {
 namespace {
 
 // As for a branch (continuation.cpp): consecutive tangents must agree to kMinTangentCosine; the
-// step is StepControl's.
+// step and the corrector's tolerances are the walk's (walk.hpp).
 constexpr double kMinTangentCosine = 0.5;
 // A grazing is followed from the side where the flight turns back before the wall: at the
 // branch's grazing that flight comes this close to the wall (the location tolerance moves it
@@ -137,16 +137,7 @@ CurveDirection Follow(CurveSystem system, CurveNode a, int budget, const CurveOp
       }
       continue;
     }
-    out.nodes.push_back(std::move(b));
-    if (end) {
-      out.end = BranchEnd::kRangeEnd;
-      return out;
-    }
-    if (!system.Replace(&out.nodes.back())) {
-      out.end = BranchEnd::kLost;
-      return out;
-    }
-    step.Accepted(out.nodes.back().iterations);
+    if (!detail::KeepPoint(system, std::move(b), end, step, &out.nodes, &out.end)) return out;
     a = out.nodes.back();
   }
   out.end = BranchEnd::kMaxPoints;

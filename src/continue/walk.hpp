@@ -1,11 +1,14 @@
 #pragma once
-// The arclength step of a walk along a branch (one parameter) or a curve of special points
-// (two): it grows after a corrector that converged fast, halves after a failure, and the walk
-// is bounded in attempts, not only in points.
+// A walk along a branch (one parameter) or a curve of special points (two), the parts both
+// share: the arclength step, which grows after a corrector that converged fast and halves
+// after a failure, the walk bounded in attempts, not only in points; how an accepted point is
+// kept; the corrector's tolerances.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "capsubot/continue/continuation.hpp"
 
@@ -46,5 +49,35 @@ class StepControl {
   double h_, min_, max_;
   std::int64_t attempts_ = 0, max_attempts_ = 0;
 };
+
+/// Keeps the accepted point `b` of a walk: appends it to `nodes`; the walk ends at the range's
+/// end (`at_end`) or where the point's section cannot be placed clear of its events
+/// (`system.Replace`), else the step grows as its corrector allows. Returns false when the walk
+/// ends, with *end saying how.
+template <class System, class Node>
+bool KeepPoint(System& system, Node b, bool at_end, StepControl& step, std::vector<Node>* nodes,
+               BranchEnd* end) {
+  nodes->push_back(std::move(b));
+  if (at_end) {
+    *end = BranchEnd::kRangeEnd;
+    return false;
+  }
+  if (!system.Replace(&nodes->back())) {
+    *end = BranchEnd::kLost;
+    return false;
+  }
+  step.Accepted(nodes->back().iterations);
+  return true;
+}
+
+// The corrector's tolerances, for a branch and for a curve alike.
+/// A chord iteration (the Jacobian of an earlier iterate) must cut the residual at least by
+/// this factor; otherwise the Jacobian is recomputed at the current iterate.
+inline constexpr double kChordRate = 0.25;
+/// The residual of a converged point may stay up to this factor above the tolerance once
+/// Newton's update is below kUpdateRounding: the map's own rounding, amplified by its
+/// multipliers.
+inline constexpr double kRoundingFactor = 100.0;
+inline constexpr double kUpdateRounding = 1e-13;
 
 }  // namespace capsubot::detail
