@@ -80,10 +80,14 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
         "param2 = {} is invalid: expected a parameter other than param = {}", param2, param));
   }
   const RobotModel base{forcing, params, alpha};
-  return [base, p1, h1, p2, h2](double lambda, double mu) {
+  // A is set first: it makes the force the harmonic family anew, which a1 set before would
+  // leave (a1 != 0 is no longer that family, and A no longer settable).
+  const bool a_second = p2 == ModelParameter::kA;
+  return [base, p1, h1, p2, h2, a_second](double lambda, double mu) {
     RobotModel r = base;
+    if (a_second) SetParameter(r, p2, h2, mu);
     SetParameter(r, p1, h1, lambda);
-    SetParameter(r, p2, h2, mu);
+    if (!a_second) SetParameter(r, p2, h2, mu);
     return r;
   };
 }
