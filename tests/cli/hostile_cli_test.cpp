@@ -562,10 +562,14 @@ std::vector<Case> Cases() {
            " --from-orbit --param a1 --from -0.01 --to 0.01 --param2 A --from2 0.04 --to2 0.06 "
            "--follow speed_extremum",
        0, "", none, "", "", "A = 0.0485088414898 .. 0.06"},
+      // The main job's reach effort is named by its flags (it was named by the reach search's
+      // own field "max_seconds = 0").
+      {"OptimizeMainJobReachSecondsNamed", "optimize --from-rest-starts 3x3 --reach-seconds 0", 2,
+       "--reach-seconds = 0 is invalid: expected a time > 0", none},
   };
 }
 
-constexpr int kCaseCount = 115;
+constexpr int kCaseCount = 116;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
