@@ -566,10 +566,16 @@ std::vector<Case> Cases() {
       // own field "max_seconds = 0").
       {"OptimizeMainJobReachSecondsNamed", "optimize --from-rest-starts 3x3 --reach-seconds 0", 2,
        "--reach-seconds = 0 is invalid: expected a time > 0", none},
+      // A grid of phases beyond one turn gets the note of --phi0 (it had none).
+      {"SweepGridPhaseInDegreesGetsANote",
+       "sweep --grid phi0=-100,1 --A 0.5 --c 0.5 -o o.csv",
+       0,
+       "capsubot: note: --grid phi0 = -100 is -15.92 turns: phases are in radians",
+       {"o.csv"}},
   };
 }
 
-constexpr int kCaseCount = 116;
+constexpr int kCaseCount = 117;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
