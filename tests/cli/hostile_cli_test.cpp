@@ -572,10 +572,15 @@ std::vector<Case> Cases() {
        0,
        "capsubot: note: --grid phi0 = -100 is -15.92 turns: phases are in radians",
        {"o.csv"}},
+      // A plastic robot's robustness in e: no change in percent from e = 0 (it said "+inf %").
+      {"DesignRobustnessFromPlasticImpact",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20",
+       0, "", none, "", "", "the motion changes stability at e = 0.00719374\n"},
   };
 }
 
-constexpr int kCaseCount = 117;
+constexpr int kCaseCount = 118;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
