@@ -577,10 +577,14 @@ std::vector<Case> Cases() {
        "design --m1 0.2 --L 0.02 --mu 0.3 --e 0 --force-amplitude 0.5 --force-bias 0.1 "
        "--frequency 20",
        0, "", none, "", "", "the motion changes stability at e = 0.00719374\n"},
+      // An unknown second parameter is named as --param2 (it was "parameter = mu", as --param).
+      {"ContinueUnknownParam2IsNamed",
+       kContinue + " --param2 mu --from2 0.1 --to2 0.5 --follow fold", 2,
+       "--param2 = mu is invalid: expected one of A, c, alpha, T0, e, phi0", none},
   };
 }
 
-constexpr int kCaseCount = 118;
+constexpr int kCaseCount = 119;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 
