@@ -41,13 +41,6 @@ std::vector<double> ParseCoefficients(const char* option, const std::string& tex
 
 constexpr const char* kIntegerValidator = "integer";
 
-// A phase beyond one turn is valid (up to kMaxPhase, where the refusal says the same), but often
-// a value meant in degrees: say how it is read.
-void NotePhaseInRadians(const std::string& name, const std::string& text, double value) {
-  fmt::print(stderr, "capsubot: note: {} = {} is {:.4g} turns: phases are in radians\n", name, text,
-             value / kTau);
-}
-
 // The transform of a numeric option: the strict parse, then the value in a form CLI11's own
 // conversion reads back exactly (shortest round-trip, plain decimal integers).
 // `allow_inf`: the text "inf" is also accepted (a bound that may be absent, e.g. --rho-max);
@@ -103,6 +96,11 @@ CLI::Validator NonEmptyText(const std::string& name) {
 }
 
 }  // namespace
+
+void NotePhaseInRadians(const std::string& name, const std::string& text, double value) {
+  fmt::print(stderr, "capsubot: note: {} = {} is {:.4g} turns: phases are in radians\n", name, text,
+             value / kTau);
+}
 
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
   o.A_option = cmd.add_option("--A", o.A,

@@ -63,6 +63,11 @@ void UseStrictValues(CLI::App& app);
 
 /// CLI11 type name of a floating-point option that also accepts "inf".
 inline constexpr const char* kFloatOrInf = "FLOAT|inf";
+/// A phase beyond one turn is valid (up to kMaxPhase, where the refusal says the same), but
+/// often a value meant in degrees: prints the one-line note "capsubot: note: <name> = <text> is
+/// <value / 2 pi> turns: phases are in radians" on stderr.
+void NotePhaseInRadians(const std::string& name, const std::string& text, double value);
+
 /// Type name of a phase option (UseStrictValues reads it with ParsePhase: 0.5, pi, -pi/2).
 inline constexpr const char* kPhase = "PHASE";
 

@@ -324,7 +324,11 @@ Command AddOptimizeCommand(CLI::App& app) {
                      {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
                       "radius is at most 0.95",
                       "optimize --problem forcing --T0 1 --rho-max 0.95"}});
-  return {cmd, [opt] { return Run(*opt); }, {}};
+  // The reach effort's fields as the flags that set them.
+  static const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
+                                        {"reach_local_evaluations", "--reach-local-evaluations"},
+                                        {"reach_seconds", "--reach-seconds"}};
+  return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 
 }  // namespace capsubot::app

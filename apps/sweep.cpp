@@ -279,7 +279,14 @@ std::string ProvenanceLine(const CLI::App& cmd, const Grid& grid, std::vector<st
 // The job the command line describes (its file options and comment line included).
 SweepJobOptions JobOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   SweepJobOptions job;
-  for (const std::string& spec : opt.grids) job.grid.axes.push_back(ParseGridAxis(spec));
+  for (const std::string& spec : opt.grids) {
+    job.grid.axes.push_back(ParseGridAxis(spec));
+    const GridAxis& axis = job.grid.axes.back();
+    const double far = std::abs(axis.Min()) > std::abs(axis.Max()) ? axis.Min() : axis.Max();
+    if (axis.parameter == ModelParameter::kphi0 && std::abs(far) > kTau) {
+      NotePhaseInRadians("--grid phi0", FormatNumber(far), far);
+    }
+  }
   job.mode = SweepModeNamed(opt.optimize);
   job.file = opt.file;
   if (!opt.shard.empty()) std::tie(job.file.shard, job.file.shards) = ParseShard(opt.shard);

@@ -93,6 +93,9 @@ def test_bad_curve_input_names_the_parameter():
     with pytest.raises(ValueError) as err:
         capsubot.continue_branch(**base, param2="alpha", from2=0.04, to2=0.06, follow="fold")
     assert str(err.value) == "param2 = alpha is invalid: expected a parameter other than param = alpha"
+    with pytest.raises(ValueError) as err:  # named param2, not the "parameter" of param
+        capsubot.continue_branch(**base, param2="mu", from2=0.04, to2=0.06, follow="fold")
+    assert str(err.value).startswith("param2 = mu is invalid: expected one of A, c, alpha,")
 
 
 # The robust gait of results/optimum.json followed in alpha over the range of its robustness: it
@@ -135,3 +138,7 @@ def test_bad_switch_names_the_parameter():
         capsubot.continue_branch(**ROBOT, from_orbit=True, param="alpha", from_=0.2, to=0.3,
                                  switch="fold")
     assert str(err.value) == "switch = fold is invalid: expected period_doubling or grazing"
+    # A number is no switch (it was read as True: the period doubling).
+    with pytest.raises(TypeError):
+        capsubot.continue_branch(**ROBOT, from_orbit=True, param="alpha", from_=0.2, to=0.3,
+                                 switch=2.5)

@@ -129,8 +129,10 @@ def test_optimize_messages():
     # The command line's grammar and limits: a size of 0 is no grid.
     assert message(opt, problem="reach", reach_starts="0x4").startswith(
         "reach_starts = 0x4 is invalid: expected NXxNPSI")
-    assert message(opt, problem="reach", reach_evaluations=0).startswith(
-        "global_evaluations = 0 is invalid")
+    assert message(opt, problem="reach", reach_evaluations=0) == (
+        "reach_evaluations = 0 is invalid: expected at least 1")
+    assert message(opt, reach_seconds=-1.0) == (
+        "reach_seconds = -1 is invalid: expected a time > 0 (infinity: none)")
     assert message(opt, problem="phase", A=0.2, c=0.03, stick_margin=1.0).startswith(
         "stick margin s = 1 is invalid")
     assert message(opt, problem="forcing", local_algorithm="LN_NOPE") == (

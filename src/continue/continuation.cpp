@@ -230,6 +230,18 @@ void ContinuationOptions::Validate() const {
     fail("location_tolerance", location_tolerance, "a finite number > 0");
   }
   shooting.Validate();
+  RequireDifferencesInRange(shooting.step, "from", from, "to", to);
+}
+
+void RequireDifferencesInRange(double step, const char* lo_name, double lo, const char* hi_name,
+                               double hi) {
+  const double reach = 3.0 * step * std::max({1.0, std::abs(lo), std::abs(hi)});
+  if (!(reach <= hi - lo)) {
+    throw std::invalid_argument(
+        fmt::format("step = {} is invalid: expected 3 step max(1, |{}|, |{}|) <= {} - {} = {} (the "
+                    "finite differences in the parameter stay in its range)",
+                    step, lo_name, hi_name, hi_name, lo_name, hi - lo));
+  }
 }
 
 Branch ContinueBranch(const RobotFamily& family, const PhaseState& start,

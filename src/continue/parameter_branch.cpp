@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -69,8 +70,15 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
   int h1 = 0, h2 = 0;
   const ModelParameter p1 = ParseRobotParameter(param, &h1);
   CheckRobotParameter(forcing, p1, h1);
-  const ModelParameter p2 = ParseRobotParameter(param2, &h2);
-  CheckRobotParameter(forcing, p2, h2);
+  ModelParameter p2 = ModelParameter::kA;
+  try {  // the messages name the second parameter: "param2 = ..." instead of "parameter = ..."
+    p2 = ParseRobotParameter(param2, &h2);
+    CheckRobotParameter(forcing, p2, h2);
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what(), word = "parameter";
+    if (message.compare(0, word.size(), word) != 0) throw;
+    throw std::invalid_argument("param2" + message.substr(word.size()));
+  }
   // A is the sine coefficient b1 of the harmonic family: the same parameter.
   const auto key = [](ModelParameter p, int h) {
     return p == ModelParameter::kA ? std::make_pair(ModelParameter::ksin, 1) : std::make_pair(p, h);
@@ -80,10 +88,14 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
         "param2 = {} is invalid: expected a parameter other than param = {}", param2, param));
   }
   const RobotModel base{forcing, params, alpha};
-  return [base, p1, h1, p2, h2](double lambda, double mu) {
+  // A is set first: it makes the force the harmonic family anew, which a1 set before would
+  // leave (a1 != 0 is no longer that family, and A no longer settable).
+  const bool a_second = p2 == ModelParameter::kA;
+  return [base, p1, h1, p2, h2, a_second](double lambda, double mu) {
     RobotModel r = base;
+    if (a_second) SetParameter(r, p2, h2, mu);
     SetParameter(r, p1, h1, lambda);
-    SetParameter(r, p2, h2, mu);
+    if (!a_second) SetParameter(r, p2, h2, mu);
     return r;
   };
 }

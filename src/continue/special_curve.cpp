@@ -219,6 +219,7 @@ void CurveOptions::Validate() const {
   ContinuationOptions range = continuation;  // its own rules; the start is the special point's
   range.start = range.from;
   range.Validate();
+  RequireDifferencesInRange(continuation.shooting.step, "from2", from2, "to2", to2);
 }
 
 Curve FollowSpecialPoint(const RobotSurface& surface, const SpecialPoint& sp,

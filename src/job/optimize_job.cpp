@@ -146,8 +146,12 @@ void OptimizeJobOptions::Validate() const {
     if (std::holds_alternative<FourierProblem>(mode)) FourierOptionsFor(search).Validate();
   }
   check.Validate();
-  if (const auto* job = std::get_if<MainJob>(&mode)) ReachOf(*this, job->reach, kNaN).Validate();
+  if (const auto* job = std::get_if<MainJob>(&mode)) {
+    job->reach.Validate();
+    ReachOf(*this, job->reach, kNaN).Validate();
+  }
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
+    job->reach.Validate();
     ReachOf(*this, job->reach, job->alpha).Validate();
   }
 }

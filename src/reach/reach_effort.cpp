@@ -1,6 +1,22 @@
 #include "capsubot/reach/reach_effort.hpp"
 
+#include <fmt/format.h>
+
+#include "capsubot/optimize/detail/optimize_common.hpp"
+
 namespace capsubot {
+
+void ReachEffort::Validate() const {
+  detail::Require(
+      global_evaluations >= 1,
+      fmt::format("reach_evaluations = {} is invalid: expected at least 1", global_evaluations));
+  detail::Require(local_evaluations >= 0,
+                  fmt::format("reach_local_evaluations = {} is invalid: expected at least 0",
+                              local_evaluations));
+  detail::Require(max_seconds > 0.0,
+                  fmt::format("reach_seconds = {} is invalid: expected a time > 0 (infinity: none)",
+                              max_seconds));
+}
 
 ReachOptions ReachEffort::Options(double force_bound, double alpha,
                                   const FromRestOptions& check) const {

@@ -103,11 +103,13 @@ std::string OneImpactText(const DesignInput& in, const DesignResult& r) {
   return t;
 }
 
-// One limit of the robustness: its words, the value with its unit and its change in percent.
+// One limit of the robustness: its words, the value with its unit and its change in percent
+// (none from a design's value of 0, e = 0: no relative change).
 std::string RobustnessLimit(const MotionLimit& l, const std::string& name, const char* unit,
                             double value) {
-  return l.Text(name, fmt::format("{:.6g}{} ({:+.3g} %)", l.parameter, unit,
-                                  100.0 * (l.parameter - value) / value));
+  const std::string change =
+      value == 0.0 ? "" : fmt::format(" ({:+.3g} %)", 100.0 * (l.parameter - value) / value);
+  return l.Text(name, fmt::format("{:.6g}{}{}", l.parameter, unit, change));
 }
 
 // How far mu, e and m2 carry the gait, one line per parameter and direction.

@@ -43,6 +43,8 @@ const std::string kRobot =
 const std::string kBifurcation = "bifurcation " + kRobot +
                                  " --param T0 --from 0.08 --to 0.12 --steps 3 --transient 20 "
                                  "--record 20";
+const std::string kContinue =
+    "continue " + kRobot + " --from-orbit --param alpha --from 0.2 --to 0.3";
 
 std::string ReadFile(const fs::path& p) {
   std::ifstream in(p);
@@ -545,10 +547,44 @@ std::vector<Case> Cases() {
        "design --m1 0.2 --L 0.02 --mu 1e6 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
        "--frequency 20",
        0, "", none, "", "", "the search stopped after 8 robots"},
+      // A finite-difference step wider than the range took the parameter out of the robots
+      // (the message named a mass ratio alpha < 0 that nobody gave).
+      {"ContinueStepWiderThanTheRange", kContinue + " --step 0.3", 2,
+       "--step = 0.3 is invalid: expected 3 step max(1, |from|, |to|) <= to - from", none},
+      {"ContinueStepWiderThanTheCurveRange",
+       kContinue + " --param2 A --from2 0.04 --to2 0.06 --follow fold --step 0.01", 2,
+       "--step = 0.01 is invalid: expected 3 step max(1, |from2|, |to2|) <= to2 - from2", none},
+      // A after a1: A is b1 of the harmonic family, so the curve in (a1, A) is the one in (a1,
+      // b1) (its range A = 0.0485088414898 .. 0.06 printed by the b1 run); it stopped with
+      // "parameter = A is invalid for a Fourier force" once a1 left 0.
+      {"ContinueCurveInA1AndA",
+       "continue " + kRobot +
+           " --from-orbit --param a1 --from -0.01 --to 0.01 --param2 A --from2 0.04 --to2 0.06 "
+           "--follow speed_extremum",
+       0, "", none, "", "", "A = 0.0485088414898 .. 0.06"},
+      // The main job's reach effort is named by its flags (it was named by the reach search's
+      // own field "max_seconds = 0").
+      {"OptimizeMainJobReachSecondsNamed", "optimize --from-rest-starts 3x3 --reach-seconds 0", 2,
+       "--reach-seconds = 0 is invalid: expected a time > 0", none},
+      // A grid of phases beyond one turn gets the note of --phi0 (it had none).
+      {"SweepGridPhaseInDegreesGetsANote",
+       "sweep --grid phi0=-100,1 --A 0.5 --c 0.5 -o o.csv",
+       0,
+       "capsubot: note: --grid phi0 = -100 is -15.92 turns: phases are in radians",
+       {"o.csv"}},
+      // A plastic robot's robustness in e: no change in percent from e = 0 (it said "+inf %").
+      {"DesignRobustnessFromPlasticImpact",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20",
+       0, "", none, "", "", "the motion changes stability at e = 0.00719374\n"},
+      // An unknown second parameter is named as --param2 (it was "parameter = mu", as --param).
+      {"ContinueUnknownParam2IsNamed",
+       kContinue + " --param2 mu --from2 0.1 --to2 0.5 --follow fold", 2,
+       "--param2 = mu is invalid: expected one of A, c, alpha, T0, e, phi0", none},
   };
 }
 
-constexpr int kCaseCount = 112;
+constexpr int kCaseCount = 119;
 
 class HostileCli : public ::testing::TestWithParam<Case> {};
 

@@ -245,7 +245,7 @@ TEST(OptimizeCli, BadInputExitsTwoWithOneLineNamingTheRule) {
         Case{"--problem reach --alpha 2",
              "alpha = 2 is invalid: expected 0 < alpha < 1 (or NaN: free)"},
         Case{"--problem reach --reach-evaluations 0",
-             "global_evaluations = 0 is invalid: expected at least 1"},
+             "--reach-evaluations = 0 is invalid: expected at least 1"},
         Case{"--from-rest-starts 0x3", "--from-rest-starts = 0x3 is invalid: expected NXxNPSI"},
         Case{"--alpha 0.5",
              "--alpha conflicts with the main job (no --problem): expected --alpha only with "

@@ -67,6 +67,13 @@ struct ContinuationOptions {
   void Validate() const;
 };
 
+/// Throws std::invalid_argument "step = ... is invalid" unless the finite differences of a
+/// parameter over [lo, hi] stay in that range: its step h = step max(1, |value|) is taken
+/// central, or one-sided up to 2 h inwards at an end, so 3 step max(1, |lo|, |hi|) <= hi - lo
+/// (beyond the range the robots may not exist). lo_name, hi_name: the ends' names.
+void RequireDifferencesInRange(double step, const char* lo_name, double lo, const char* hi_name,
+                               double hi);
+
 /// One point of a branch.
 struct BranchPoint {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -44,7 +44,8 @@ double RobotValueInRange(const RobotModel& robot, const std::string& param, cons
 
 /// The robot at each pair of values of the parameters named `param` and `param2` (two different
 /// robot parameters, as NamedParameterFamily), the rest as given. Throws std::invalid_argument
-/// as NamedParameterFamily does for either name, and when both name the same parameter
+/// as NamedParameterFamily does for either name (for param2 the message begins "param2 = "
+/// instead of "parameter = "), and when both name the same parameter
 /// ("param2 = A is invalid: expected a parameter other than param = A").
 RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
                                    const std::string& param, const std::string& param2);

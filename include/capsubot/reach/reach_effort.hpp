@@ -15,6 +15,10 @@ struct ReachEffort {
   int local_evaluations = ReachOptions{}.local_evaluations;    ///< local polish; >= 0
   double max_seconds = ReachOptions{}.max_seconds;             ///< wall-clock limit [s]; > 0
 
+  /// Throws std::invalid_argument naming the first bad field by the front ends' name
+  /// (reach_evaluations, reach_local_evaluations, reach_seconds), its value and the rule.
+  void Validate() const;
+
   /// The reach options of this effort: the force bound (NaN: T0), alpha fixed (NaN: free), the
   /// full check of the winner (its threads and interrupt also drive the search's starts).
   ReachOptions Options(double force_bound, double alpha, const FromRestOptions& check) const;
