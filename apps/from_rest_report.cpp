@@ -44,8 +44,10 @@ void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
   AddThreadsOption(cmd, o.threads);
   if (!reach) return;
   AddReachBudgetOptions(cmd, o);
-  cmd.add_option("--reach-seconds", o.reach_seconds,
-                 "wall-clock limit of the reach search in seconds (the re-checks come on top)")
+  cmd.add_option(
+         "--reach-seconds", o.reach_seconds,
+         "wall-clock limit of the reach search in seconds, looked at between two evaluations of "
+         "its grid (the re-checks come on top)")
       ->capture_default_str();
 }
 
