@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "attract_options.hpp"
@@ -35,20 +36,17 @@ struct ContinueCommandOptions {
 };
 
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
-  const int given = opt.start_state.Given();
-  if (opt.from_orbit && given > 0) {
-    throw std::invalid_argument(
-        "--from-orbit gives the start: do not give --x0, --u0, --v0 or --psi with it");
-  }
-  if (!opt.from_orbit && given < 4) {
-    throw std::invalid_argument(
-        "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-orbit)");
-  }
   ContinueJobOptions& job = opt.job;
+  const auto given = [&opt](int i, double value) {
+    return opt.start_state.options[i]->count() > 0 ? std::optional<double>(value) : std::nullopt;
+  };
+  const PhaseState& s = opt.start_state.state;
+  job.start = ContinueStartSpec{given(0, s.x), given(1, s.u), given(2, s.v), given(3, s.psi),
+                                opt.from_orbit}
+                  .Build("--", "--from-orbit", "--from-orbit");
   job.forcing = opt.robot.forcing.Build();
   job.params = opt.robot.params;
   job.alpha = opt.robot.alpha;
-  job.start = opt.from_orbit ? ContinueStart(FromOneImpactOrbit{}) : opt.start_state.state;
   if (opt.switch_branch) job.switch_at = SwitchPoint::kPeriodDoubling;
   if (!opt.switch_at.empty()) job.switch_at = ParseSwitchPoint(opt.switch_at);
   if (opt.param2->count() > 0) {

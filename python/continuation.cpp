@@ -86,22 +86,6 @@ py::dict JobDict(const nlohmann::json& j) {
   return d;
 }
 
-// The start: a state (x0, u0, v0 at phase psi) or the robot's one-impact orbit.
-ContinueStart Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
-                    std::optional<double> psi, bool from_orbit) {
-  const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
-  if (from_orbit && given > 0) {
-    throw std::invalid_argument(
-        "from_orbit gives the start: do not give x0, u0, v0 or psi with it");
-  }
-  if (!from_orbit && given < 4) {
-    throw std::invalid_argument(
-        "the start is missing: give all of x0, u0, v0, psi (or from_orbit=True)");
-  }
-  if (from_orbit) return FromOneImpactOrbit{};
-  return PhaseState{*x0, *u0, *v0, *psi};
-}
-
 // The switch: False (none), True (the first period doubling, as --switch) or the name of the
 // kind of point (as --switch-at).
 std::optional<SwitchPoint> SwitchAt(const std::variant<bool, std::string>& at) {
@@ -145,7 +129,8 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
   job.params = Params{T0, e, 0.0};
   job.alpha = alpha;
   job.param = param;
-  job.start = Start(x0, u0, v0, psi, from_orbit);
+  job.start =
+      ContinueStartSpec{x0, u0, v0, psi, from_orbit}.Build("", "from_orbit", "from_orbit=True");
   job.switch_at = SwitchAt(switch_at);
   job.follow = Follow(param2, from2, to2, follow);
   ContinuationOptions& o = job.continuation;

@@ -23,6 +23,14 @@
 
 namespace capsubot::testing {
 
+/// The whole content of the file at `path`, byte for byte ("" when it cannot be read).
+inline std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 /// |actual - expected| <= tol, printing both values and the difference on failure.
 /// The message of the std::invalid_argument thrown by f ("" if none).
 template <class Fn>

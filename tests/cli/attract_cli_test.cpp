@@ -14,6 +14,8 @@
 namespace capsubot {
 namespace {
 
+using testing::ReadFile;
+
 using testing::Near;
 using testing::RunCli;
 
@@ -127,13 +129,6 @@ TEST(PeriodicCli, StartMustBeComplete) {
   EXPECT_EQ(r.out,
             "capsubot periodic: error: --from-rest = 0.5 is invalid: expected X0,PSI (two "
             "numbers, e.g. 0.5,1)\n");
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 TEST(BasinsCli, LabelsEveryStartByItsAttractorTheSameForAnyThreadCount) {

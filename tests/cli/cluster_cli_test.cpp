@@ -26,6 +26,8 @@
 namespace capsubot::testing {
 namespace {
 
+using testing::ReadFile;
+
 #ifdef CAPSUBOT_MPIEXEC
 constexpr bool kMpi = true;
 constexpr const char* kMpiexec = CAPSUBOT_MPIEXEC;
@@ -33,13 +35,6 @@ constexpr const char* kMpiexec = CAPSUBOT_MPIEXEC;
 constexpr bool kMpi = false;
 constexpr const char* kMpiexec = "";
 #endif
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs a shell command with stderr folded into the captured output.
 CommandResult Shell(const std::string& command) {

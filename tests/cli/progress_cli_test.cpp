@@ -16,12 +16,7 @@
 namespace capsubot {
 namespace {
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::ReadFile;
 
 // `capsubot <args>` with stderr into `dir`/err (a file, not a terminal); returns stderr.
 std::string RunStderrToFile(const std::string& dir, const std::string& args, int* status) {

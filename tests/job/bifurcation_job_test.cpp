@@ -19,14 +19,9 @@
 namespace capsubot {
 namespace {
 
-using testing::InvalidArgumentMessage;
+using testing::ReadFile;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::InvalidArgumentMessage;
 
 // A short diagram over T0 of the small stable orbit's robot (docs/attractors.md), for 2
 // values of e: 4 continuations.

@@ -18,14 +18,9 @@
 namespace capsubot {
 namespace {
 
-using testing::InvalidArgumentMessage;
+using testing::ReadFile;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::InvalidArgumentMessage;
 
 // The same force: mean, phase and every coefficient equal (both printed otherwise).
 ::testing::AssertionResult SameForce(const Forcing& actual, const Forcing& expected) {

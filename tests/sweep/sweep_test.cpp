@@ -40,6 +40,8 @@
 namespace capsubot {
 namespace {
 
+using testing::ReadFile;
+
 // A fresh directory per test for the output files.
 class TempDir {
  public:
@@ -55,13 +57,6 @@ class TempDir {
 };
 
 bool Exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<std::string> Split(const std::string& text, char sep) {
   std::vector<std::string> parts;
