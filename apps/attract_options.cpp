@@ -98,10 +98,11 @@ void StartStateOptions::Add(CLI::App& cmd) {
           ->type_name(kPhase);
 }
 
-int StartStateOptions::Given() const {
-  int given = 0;
-  for (const CLI::Option* o : options) given += o->count() > 0 ? 1 : 0;
-  return given;
+StartStateSpec StartStateOptions::Spec() const {
+  const auto part = [this](int i, double value) {
+    return options[i]->count() > 0 ? std::optional<double>(value) : std::nullopt;
+  };
+  return {part(0, state.x), part(1, state.u), part(2, state.v), part(3, state.psi)};
 }
 
 void AddThreadsOption(CLI::App& cmd, int& threads) {

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/attractors_text.hpp"
@@ -59,8 +60,8 @@ struct StartStateOptions {
 
   /// Adds the four options to `cmd`.
   void Add(CLI::App& cmd);
-  /// How many of the four were given.
-  int Given() const;
+  /// The parts given, as the library reads a start state.
+  StartStateSpec Spec() const;
 };
 
 /// A StartsProgress that shows the progress (ProgressBar, counting `what`, e.g. "starts") on

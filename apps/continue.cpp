@@ -37,13 +37,9 @@ struct ContinueCommandOptions {
 
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   ContinueJobOptions& job = opt.job;
-  const auto given = [&opt](int i, double value) {
-    return opt.start_state.options[i]->count() > 0 ? std::optional<double>(value) : std::nullopt;
-  };
-  const PhaseState& s = opt.start_state.state;
-  job.start = ContinueStartSpec{given(0, s.x), given(1, s.u), given(2, s.v), given(3, s.psi),
-                                opt.from_orbit}
-                  .Build("--", "--from-orbit", "--from-orbit");
+  const std::optional<PhaseState> state =
+      opt.start_state.Spec().Build(opt.from_orbit, "--", "--from-orbit", "--from-orbit");
+  job.start = state ? ContinueStart(*state) : FromOneImpactOrbit{};
   job.forcing = opt.robot.forcing.Build();
   job.params = opt.robot.params;
   job.alpha = opt.robot.alpha;

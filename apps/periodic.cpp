@@ -30,13 +30,10 @@ struct PeriodicCommandOptions {
 // The start --from-rest or --x0, --u0, --v0, --psi give, with --transient when given (else
 // the start's default).
 PeriodicStart Start(const PeriodicCommandOptions& opt) {
-  const int given = opt.start_state.Given();
   const bool transient = opt.transient_option->count() > 0;
-  if (!opt.from_rest.empty()) {
-    if (given > 0) {
-      throw std::invalid_argument(
-          "--from-rest gives the start: do not give --x0, --u0, --v0 or --psi with it");
-    }
+  const std::optional<PhaseState> state = opt.start_state.Spec().Build(
+      !opt.from_rest.empty(), "--", "--from-rest", "--from-rest X0,PSI");
+  if (!state) {
     const PhaseState rest = ParseRestStart("--from-rest", opt.from_rest);
     PeriodicFromRest start;
     start.x0 = rest.x;
@@ -44,12 +41,8 @@ PeriodicStart Start(const PeriodicCommandOptions& opt) {
     if (transient) start.transient = opt.transient;
     return start;
   }
-  if (given < 4) {
-    throw std::invalid_argument(
-        "the start is missing: give all of --x0, --u0, --v0, --psi (or --from-rest X0,PSI)");
-  }
   PeriodicFromState start;
-  start.state = opt.start_state.state;
+  start.state = *state;
   if (transient) start.transient = opt.transient;
   return start;
 }

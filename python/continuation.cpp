@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/continue_job.hpp"
 #include "capsubot/report/continuation_json.hpp"
 
@@ -129,8 +130,9 @@ py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<dou
   job.params = Params{T0, e, 0.0};
   job.alpha = alpha;
   job.param = param;
-  job.start =
-      ContinueStartSpec{x0, u0, v0, psi, from_orbit}.Build("", "from_orbit", "from_orbit=True");
+  const std::optional<PhaseState> state =
+      StartStateSpec{x0, u0, v0, psi}.Build(from_orbit, "", "from_orbit", "from_orbit=True");
+  job.start = state ? ContinueStart(*state) : FromOneImpactOrbit{};
   job.switch_at = SwitchAt(switch_at);
   job.follow = Follow(param2, from2, to2, follow);
   ContinuationOptions& o = job.continuation;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/periodic_job.hpp"
 #include "capsubot/report/periodic_json.hpp"
 
@@ -23,28 +24,14 @@ PeriodicStart Start(std::optional<double> x0, std::optional<double> u0, std::opt
                     std::optional<double> psi,
                     const std::optional<std::pair<double, double>>& from_rest,
                     std::optional<int> transient, std::optional<int> period) {
-  const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
-  if (from_rest && given > 0) {
-    throw std::invalid_argument("from_rest gives the start: do not give x0, u0, v0 or psi with it");
-  }
-  if (!from_rest && given < 4) {
-    throw std::invalid_argument(
-        "the start is missing: give all of x0, u0, v0, psi (or from_rest=(x0, psi))");
-  }
+  const std::optional<PhaseState> given = StartStateSpec{x0, u0, v0, psi}.Build(
+      from_rest.has_value(), "", "from_rest", "from_rest=(x0, psi)");
   if (period && transient) {
     throw std::invalid_argument(
         "period and transient are exclusive: with the period given, Newton starts at the start "
         "itself");
   }
-  PhaseState state;
-  if (from_rest) {
-    state = RestStart(from_rest->first, from_rest->second);
-  } else {
-    state.x = *x0;
-    state.u = *u0;
-    state.v = *v0;
-    state.psi = *psi;
-  }
+  const PhaseState state = given ? *given : RestStart(from_rest->first, from_rest->second);
   if (period) return PeriodicOfPeriod{state, *period};
   if (!from_rest)
     return PeriodicFromState{state, transient.value_or(PeriodicFromState{}.transient)};

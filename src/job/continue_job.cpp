@@ -78,21 +78,6 @@ SwitchPoint ParseSwitchPoint(const std::string& name) {
       fmt::format("switch = {} is invalid: expected period_doubling or grazing", name));
 }
 
-ContinueStart ContinueStartSpec::Build(const std::string& p, const std::string& orbit,
-                                       const std::string& ask_orbit) const {
-  const int given = (x0 ? 1 : 0) + (u0 ? 1 : 0) + (v0 ? 1 : 0) + (psi ? 1 : 0);
-  if (from_orbit && given > 0) {
-    throw std::invalid_argument(fmt::format(
-        "{1} gives the start: do not give {0}x0, {0}u0, {0}v0 or {0}psi with it", p, orbit));
-  }
-  if (!from_orbit && given < 4) {
-    throw std::invalid_argument(fmt::format(
-        "the start is missing: give all of {0}x0, {0}u0, {0}v0, {0}psi (or {1})", p, ask_orbit));
-  }
-  if (from_orbit) return FromOneImpactOrbit{};
-  return PhaseState{*x0, *u0, *v0, *psi};
-}
-
 void ContinueJobOptions::Validate() const {
   params.Validate();
   if (const PhaseState* state = std::get_if<PhaseState>(&start)) RequirePhase("psi", state->psi);

@@ -26,19 +26,6 @@ struct FromOneImpactOrbit {};
 /// forcing phase psi [rad], |psi| <= 1e6) near the periodic motion.
 using ContinueStart = std::variant<FromOneImpactOrbit, PhaseState>;
 
-/// The start as a user gives it: all of x0, u0, v0, psi (a state), or the one-impact orbit.
-struct ContinueStartSpec {
-  std::optional<double> x0, u0, v0, psi;
-  bool from_orbit = false;
-
-  /// The start; throws std::invalid_argument when both kinds or an incomplete state are given.
-  /// Messages name the state's parameters with `prefix` ("" or "--"), the orbit's switch
-  /// `from_orbit` ("from_orbit", "--from-orbit") and how to ask for it `ask_orbit`
-  /// ("from_orbit=True", "--from-orbit").
-  ContinueStart Build(const std::string& prefix, const std::string& from_orbit,
-                      const std::string& ask_orbit) const;
-};
-
 /// The two-parameter curve of the branch's first located special point of a type.
 struct FollowOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
