@@ -29,6 +29,9 @@ ReachEffort FromRestCliOptions::Effort() const {
   effort.global_evaluations = reach_evaluations;
   effort.local_evaluations = reach_local_evaluations;
   effort.max_seconds = reach_seconds;
+  effort.drive_evaluations = drive_evaluations;
+  effort.drive_polishes = drive_polishes;
+  effort.drive_local_evaluations = drive_local_evaluations;
   return effort;
 }
 
@@ -61,6 +64,20 @@ void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
       ->capture_default_str();
   cmd.add_option("--reach-local-evaluations", o.reach_local_evaluations,
                  "from-rest evaluations of the reach search's local polish (Sbplx), >= 0")
+      ->capture_default_str();
+}
+
+void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
+  cmd.add_option("--drive-evaluations", o.drive_evaluations,
+                 "from-rest evaluations of the global stage (controlled random search) of each "
+                 "Fourier drive K >= 2 (--harmonics), >= 1")
+      ->capture_default_str();
+  cmd.add_option("--drive-polishes", o.drive_polishes,
+                 "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best "
+                 "distinct points, >= 1")
+      ->capture_default_str();
+  cmd.add_option("--drive-local-evaluations", o.drive_local_evaluations,
+                 "from-rest evaluations of each of those polishes, >= 0")
       ->capture_default_str();
 }
 

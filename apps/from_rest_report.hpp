@@ -32,6 +32,9 @@ struct FromRestCliOptions {
   int reach_evaluations = ReachOptions{}.global_evaluations;       ///< --reach-evaluations
   int reach_local_evaluations = ReachOptions{}.local_evaluations;  ///< --reach-local-evaluations
   double reach_seconds = ReachOptions{}.max_seconds;               ///< --reach-seconds
+  int drive_evaluations = ReachEffort{}.drive_evaluations;              ///< --drive-evaluations
+  int drive_polishes = ReachEffort{}.drive_polishes;                    ///< --drive-polishes
+  int drive_local_evaluations = ReachEffort{}.drive_local_evaluations;  ///< --drive-local-evaluations
   int threads = 0;                                                 ///< --threads
 
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
@@ -47,6 +50,10 @@ struct FromRestCliOptions {
 void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& options, bool reach);
 /// Adds --from-rest-starts alone.
 void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& options);
+/// Adds the budgets of each Fourier drive K >= 2 of the reach search: --drive-evaluations,
+/// --drive-polishes, --drive-local-evaluations.
+void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
+
 /// Adds the evaluation budgets of the reach search: --reach-starts, --reach-evaluations,
 /// --reach-local-evaluations (not its wall-clock limit --reach-seconds).
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);

@@ -58,7 +58,7 @@ struct OptimizeCliOptions {
 const std::vector<OptionUse> kOptionUses = {
     {"--A", {"phase"}},
     {"--c", {"phase"}},
-    {"--harmonics", {"fourier"}},
+    {"--harmonics", {"fourier", "reach"}},
     {"--hops", {"", "forcing", "reach"}},
     {"--starts", {"", "forcing", "fourier", "reach"}},
     {"--bound", {"", "forcing", "fourier", "reach"}},
@@ -70,6 +70,9 @@ const std::vector<OptionUse> kOptionUses = {
     {"--reach-evaluations", {"", "reach"}},
     {"--reach-local-evaluations", {"", "reach"}},
     {"--reach-seconds", {"", "reach"}},
+    {"--drive-evaluations", {"reach"}},
+    {"--drive-polishes", {"reach"}},
+    {"--drive-local-evaluations", {"reach"}},
     {"--from-rest-csv", {""}},
 };
 
@@ -97,6 +100,16 @@ void RejectUnusedOptions(const OptimizeCliOptions& opt) {
                                             use->option, RunName(opt.problem), use->option,
                                             expected));
   }
+  const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
+  const bool drives = harmonics->count() > 0 && opt.search.harmonics >= 2;
+  for (const char* name : {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations"}) {
+    if (opt.cmd->get_option(name)->count() > 0 && !drives) {
+      throw std::invalid_argument(fmt::format(
+          "{} conflicts with {} without --harmonics K >= 2: expected {} only with a Fourier "
+          "drive of K >= 2 harmonics",
+          name, RunName(opt.problem), name));
+    }
+  }
   const CLI::Option* evaluations = opt.cmd->get_option_no_throw("--global-evaluations");
   if (evaluations != nullptr && evaluations->count() > 0 &&
       opt.search.global_algorithm == kMultistart) {
@@ -120,7 +133,13 @@ OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   if (problem == "phase") job.mode = PhaseProblem{opt.A, opt.c};
   if (problem == "forcing") job.mode = ForcingProblem{};
   if (problem == "fourier") job.mode = FourierProblem{};
-  if (problem == "reach") job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha};
+  if (problem == "reach") {
+    const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
+    job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha,
+                            harmonics != nullptr && harmonics->count() > 0
+                                ? DriveFamily::Fourier(opt.search.harmonics)
+                                : DriveFamily{}};
+  }
   job.params = opt.params;
   job.search = opt.search;
   if (opt.starts_option->count() > 0) job.search.starts = opt.starts;
@@ -222,7 +241,9 @@ void AddSearchOptions(CLI::App& cmd, OptimizeCliOptions& opt) {
                  "reported with status max_time (inf: none)")
       ->capture_default_str()
       ->type_name(kFloatOrInf);
-  cmd.add_option("--harmonics", opt.search.harmonics, "number K of harmonics of the Fourier force")
+  cmd.add_option("--harmonics", opt.search.harmonics,
+                 "number K of harmonics of the Fourier force: fourier (P3), or reach (the fastest "
+                 "Fourier drive from rest, climbing from the sine: K = 1 is the sine)")
       ->capture_default_str();
   cmd.add_option("--global-algorithm", opt.search.global_algorithm,
                  "global stage of forcing/fourier: multistart (scan + local polishes) or an "
@@ -312,6 +333,7 @@ Command AddOptimizeCommand(CLI::App& app) {
       cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
   AddParamsOptions(*cmd, opt->params);
   AddFromRestOptions(*cmd, opt->from_rest, true);
+  AddDriveBudgetOptions(*cmd, opt->from_rest);
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   AddSearchOptions(*cmd, *opt);
@@ -327,7 +349,11 @@ Command AddOptimizeCommand(CLI::App& app) {
   // The reach effort's fields as the flags that set them.
   static const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
                                         {"reach_local_evaluations", "--reach-local-evaluations"},
-                                        {"reach_seconds", "--reach-seconds"}};
+                                        {"reach_seconds", "--reach-seconds"},
+                                        {"drive_evaluations", "--drive-evaluations"},
+                                        {"drive_polishes", "--drive-polishes"},
+                                        {"drive_local_evaluations", "--drive-local-evaluations"},
+                                        {"harmonics", "--harmonics"}};
   return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 

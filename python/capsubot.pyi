@@ -98,7 +98,7 @@ def optimize(
     rho_max: float | None = None,
     stable: bool = False,
     max_time: float = 60.0,
-    harmonics: int = 3,
+    harmonics: int | None = None,
     global_algorithm: str = "multistart",
     local_algorithm: str = "LN_COBYLA",
     global_evaluations: int = 5000,
@@ -110,6 +110,9 @@ def optimize(
     reach_evaluations: int = 150,
     reach_local_evaluations: int = 50,
     reach_seconds: float = 20.0,
+    drive_evaluations: int = 400,
+    drive_polishes: int = 4,
+    drive_local_evaluations: int = 150,
     threads: int = 0,
 ) -> dict[str, Any]:
     """The fastest gait (problem 'phase', 'forcing', 'fourier'), the fastest motion from rest

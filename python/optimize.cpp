@@ -23,7 +23,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
 void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                  std::optional<double> alpha, const SearchRequest& search) {
+                  std::optional<double> alpha, std::optional<int> harmonics,
+                  const SearchRequest& search) {
   const auto reject = [&problem](const char* name, const char* runs) {
     throw std::invalid_argument(fmt::format(
         "{} conflicts with {}: expected {} only with {}", name,
@@ -32,6 +33,9 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
   if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
+  if (problem != "fourier" && problem != "reach" && harmonics) {
+    reject("harmonics", "problem 'fourier' or 'reach'");
+  }
   if (problem == "phase" && !std::isnan(search.gait.force_bound)) {
     reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
   }
@@ -47,11 +51,13 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
 py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   std::optional<double> c, double T0, double e, double margin, double margin_stroke,
                   double stick_margin, std::optional<double> bound, std::optional<double> rho_max,
-                  bool stable, double max_time, int harmonics, const std::string& global_algorithm,
+                  bool stable, double max_time, std::optional<int> harmonics,
+                  const std::string& global_algorithm,
                   const std::string& local_algorithm, int global_evaluations, int hops,
                   std::optional<int> starts, std::optional<double> alpha,
                   const std::string& from_rest_starts, const std::string& reach_starts,
                   int reach_evaluations, int reach_local_evaluations, double reach_seconds,
+                  int drive_evaluations, int drive_polishes, int drive_local_evaluations,
                   int threads) {
   const std::string name = problem.value_or("");
   if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
@@ -79,14 +85,17 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   job.search.starts = starts;
   job.search.global_evaluations = global_evaluations;
   job.search.hops = hops;
-  job.search.harmonics = harmonics;
-  RejectUnused(name, A, c, alpha, job.search);
+  job.search.harmonics = harmonics.value_or(FourierOptions{}.harmonics);
+  RejectUnused(name, A, c, alpha, harmonics, job.search);
   job.params = Params{T0, e, margin, margin_stroke, stick_margin};
   job.check = FromRestCheck(from_rest_starts, threads);
   ReachEffort effort;
   effort.global_evaluations = reach_evaluations;
   effort.local_evaluations = reach_local_evaluations;
   effort.max_seconds = reach_seconds;
+  effort.drive_evaluations = drive_evaluations;
+  effort.drive_polishes = drive_polishes;
+  effort.drive_local_evaluations = drive_local_evaluations;
   if (name.empty() || name == "reach") {
     const StartGrid grid = ParseStartGrid("reach_starts", reach_starts);
     effort.n_x = grid.n_x;
@@ -96,7 +105,10 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   if (name == "phase") job.mode = PhaseProblem{*A, *c};
   if (name == "forcing") job.mode = ForcingProblem{};
   if (name == "fourier") job.mode = FourierProblem{};
-  if (name == "reach") job.mode = ReachProblem{effort, alpha.value_or(kNaN)};
+  if (name == "reach") {
+    job.mode = ReachProblem{effort, alpha.value_or(kNaN),
+                            harmonics ? DriveFamily::Fourier(*harmonics) : DriveFamily{}};
+  }
   job.Validate();
   const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
     job.search.interrupt = signals.AsInterrupt();
@@ -128,7 +140,9 @@ constexpr const char* kOptimizeOptionsDoc =
     "            sections 8, 12); float('inf'): no stability requirement; None: 0.9\n"
     "    stable  the same as rho_max = 1 (not with rho_max)\n"
     "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
-    "    harmonics  number K of harmonics of the Fourier force (fourier), 1..16\n"
+    "    harmonics  number K of harmonics of the Fourier force, 1..16: fourier (None: 3), or\n"
+    "            reach (None: the sine; K >= 2: the fastest Fourier drive, climbing from the\n"
+    "            sine, with ladder and speed_ratio_to_sine in the result)\n"
     "    global_algorithm  'multistart' or an NLopt global algorithm: GN_ISRES, GN_ORIG_DIRECT,\n"
     "            GN_ORIG_DIRECT_L, GN_AGS (main job, forcing, fourier)\n"
     "    local_algorithm  the local polish: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ\n"
@@ -141,6 +155,9 @@ constexpr const char* kOptimizeOptionsDoc =
     "            search's global stage (DIRECT-L, >= 1) and local polish (Sbplx, >= 0)\n"
     "    reach_seconds  wall-clock limit of the reach search [s] (the re-checks come on top);\n"
     "            when it stops the search the result depends on the machine's speed\n"
+    "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2:\n"
+    "            the Halton points of each step K >= 2 (>= 1), its Nelder-Mead polishes (>= 1)\n"
+    "            and their evaluations (>= 0)\n"
     "Returns a dict. For a problem: the keys of solve for the optimum (A, c, phi0, phi1, "
     "alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations; cos, sin "
     "and coefficients for fourier), problem, status ('ok', 'no_valid_orbit', "
@@ -174,7 +191,7 @@ void BindOptimize(py::module_& m) {
         py::arg("margin_stroke") = robust.margin_stroke,
         py::arg("stick_margin") = robust.stick_margin, py::arg("bound") = py::none(),
         py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
-        py::arg("max_time") = p2.max_time, py::arg("harmonics") = FourierOptions{}.harmonics,
+        py::arg("max_time") = p2.max_time, py::arg("harmonics") = py::none(),
         py::arg("global_algorithm") = p2.effort.global_algorithm,
         py::arg("local_algorithm") = p2.local_algorithm,
         py::arg("global_evaluations") = p2.effort.global_evaluations, py::arg("hops") = p2.hops,
@@ -184,6 +201,9 @@ void BindOptimize(py::module_& m) {
         py::arg("reach_evaluations") = reach.global_evaluations,
         py::arg("reach_local_evaluations") = reach.local_evaluations,
         py::arg("reach_seconds") = reach.max_seconds,
+        py::arg("drive_evaluations") = ReachEffort{}.drive_evaluations,
+        py::arg("drive_polishes") = ReachEffort{}.drive_polishes,
+        py::arg("drive_local_evaluations") = ReachEffort{}.drive_local_evaluations,
         py::arg("threads") = AttractorOptions{}.threads);
 }
 

@@ -174,8 +174,7 @@ FromRestBest Search(const DesignInput& in, const DesignFromRestOptions& o, Direc
   search.upper = upper;
   search.start.resize(lower.size());
   for (std::size_t i = 0; i < lower.size(); ++i) search.start[i] = 0.5 * (lower[i] + upper[i]);
-  search.global = detail::AlgorithmFromName(o.global_algorithm, ReachGlobalAlgorithmNames(),
-                                            "global_algorithm");
+  search.SetGlobal(o.global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
   search.local =
       detail::AlgorithmFromName(o.local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
   search.global_evaluations = o.global_evaluations;
@@ -230,7 +229,7 @@ DesignFromRestOptions::DesignFromRestOptions() : search(CheapFromRestOptions()) 
 void DesignFromRestOptions::Validate() const {
   search.Validate();
   check.Validate();
-  detail::AlgorithmFromName(global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
+  detail::BoxSearch{}.SetGlobal(global_algorithm, ReachGlobalAlgorithmNames(), "global_algorithm");
   detail::AlgorithmFromName(local_algorithm, ReachLocalAlgorithmNames(), "local_algorithm");
   detail::RequireCount("global_evaluations", global_evaluations, 1, kMaxDesignFromRestEvaluations);
   detail::RequireCount("local_evaluations", local_evaluations, 0, kMaxDesignFromRestEvaluations);

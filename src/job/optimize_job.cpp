@@ -61,6 +61,15 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
   TellStage(o.on_stage,
             "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
   r.reach = OptimizeReach(p, r.robust, ReachOf(o, job.reach, kNaN));
+  TellStage(o.on_stage, "optimize: 3/5 the fastest Fourier drives from rest (K = 2, 3, ...)");
+  ReachEffort drives = job.drives;
+  drives.n_x = job.reach.n_x;
+  drives.n_psi = job.reach.n_psi;
+  drives.max_seconds = job.reach.max_seconds;
+  r.drives = ClimbDriveLadder(p, r.robust, r.reach,
+                              drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics),
+                                                  o.search.gait.force_bound, kNaN, CheckOf(o)))
+                 .steps;
   TellStage(o.on_stage,
             "optimize: 4/5 how far T0, e and alpha can move (continuation of both motions)");
   if (r.robust.found()) r.robustness = ComputeGaitRobustness(r.robust.solution.orbit);
@@ -76,12 +85,24 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
 }
 
 ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
-  TellStage(o.on_stage, "optimize: 1/2 the robust gait that seeds the search (P2)");
+  const bool sine = job.drive.sine();
+  TellStage(o.on_stage, fmt::format("optimize: 1/{} the robust gait that seeds the search (P2)",
+                                    sine ? 2 : 3));
   const OptimizeResult robust = OptimizeForcing(o.params, ForcingOptionsFor(o.search));
-  TellStage(o.on_stage,
-            "optimize: 2/2 the fastest motion from rest (simulated starts; up to a minute)");
+  TellStage(o.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
+                                    "(simulated starts; up to a minute)",
+                                    sine ? 2 : 3));
   ReachJobResult r{o.params, o.search.gait.rho_max,
-                   OptimizeReach(o.params, robust, ReachOf(o, job.reach, job.alpha))};
+                   OptimizeReach(o.params, robust, ReachOf(o, job.reach, job.alpha)), {}};
+  if (!sine) {
+    TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest Fourier drive from rest, K = 2 "
+                                      "to {} (simulated starts; up to {} minutes)",
+                                      job.drive.harmonics, job.drive.harmonics - 1));
+    const ReachOptions options = job.reach.DriveOptions(job.drive, o.search.gait.force_bound,
+                                                        job.alpha, CheckOf(o));
+    r.ladder = ClimbDriveLadder(o.params, robust, r.reach, options).steps;
+    r.reach = r.ladder.back();
+  }
   TellStage(o.on_stage, "");
   return r;
 }
@@ -111,6 +132,14 @@ ProblemJobResult RunProblem(const OptimizeJobOptions& o) {
 const char* OptimizeModeName(const OptimizeMode& mode) {
   static constexpr const char* kNames[] = {"", "phase", "forcing", "fourier", "reach"};
   return kNames[mode.index()];
+}
+
+ReachEffort MainJob::MainJobDriveEffort() {
+  ReachEffort e;
+  e.drive_evaluations = 150;
+  e.drive_polishes = 2;
+  e.drive_local_evaluations = 80;
+  return e;
 }
 
 Params OptimizeJobOptions::RobustParams() {
@@ -148,10 +177,17 @@ void OptimizeJobOptions::Validate() const {
   check.Validate();
   if (const auto* job = std::get_if<MainJob>(&mode)) {
     job->reach.Validate();
+    job->drives.Validate();
+    if (job->drive_harmonics < 2 || job->drive_harmonics > kMaxHarmonics) {
+      throw std::invalid_argument(fmt::format(
+          "drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",
+          job->drive_harmonics, kMaxHarmonics));
+    }
     ReachOf(*this, job->reach, kNaN).Validate();
   }
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
     job->reach.Validate();
+    job->drive.Validate();
     ReachOf(*this, job->reach, job->alpha).Validate();
   }
 }

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 
@@ -55,6 +59,52 @@ std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floo
   return best;
 }
 
+std::vector<double> HaltonPoint(long long i, int dimension) {
+  static constexpr int kPrimes[] = {2,  3,  5,  7,  11, 13, 17, 19, 23, 29,  31,  37,  41,  43,  47,  53,
+                                    59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
+  if (dimension < 1 || dimension > static_cast<int>(std::size(kPrimes)) || i < 1) {
+    throw std::invalid_argument(fmt::format(
+        "Halton point {} of dimension {} is invalid: expected i >= 1 and 1 <= dimension <= {}", i,
+        dimension, std::size(kPrimes)));
+  }
+  std::vector<double> y(static_cast<std::size_t>(dimension));
+  for (int d = 0; d < dimension; ++d) {
+    const int base = kPrimes[d];
+    double f = 1.0, r = 0.0;
+    for (long long n = i; n > 0; n /= base) {
+      f /= base;
+      r += f * static_cast<double>(n % base);
+    }
+    y[static_cast<std::size_t>(d)] = r;
+  }
+  return y;
+}
+
+void BoxSearch::SetGlobal(const std::string& name, const std::vector<std::string>& allowed,
+                          const char* option) {
+  halton = name == kHaltonStage &&
+           std::find(allowed.begin(), allowed.end(), name) != allowed.end();
+  if (!halton) global = AlgorithmFromName(name, allowed, option);
+}
+
+namespace {
+
+// The global stage as a Halton sampling of the box: `evaluations` points, stopped when no time
+// is left.
+void SampleHalton(const BoxSearch& search, int evaluations) {
+  const auto n = static_cast<int>(search.lower.size());
+  for (long long i = 1; i <= evaluations && search.seconds_left() > 0.0; ++i) {
+    std::vector<double> y = HaltonPoint(i, n);
+    for (std::size_t d = 0; d < y.size(); ++d) {
+      y[d] = search.lower[d] + y[d] * (search.upper[d] - search.lower[d]);
+    }
+    double* gradient = nullptr;
+    search.objective(static_cast<unsigned>(n), y.data(), gradient, search.data);
+  }
+}
+
+}  // namespace
+
 BoxSearchResult SearchBox(const BoxSearch& search) {
   constexpr double kLocalStep = 0.05;  // initial step of a stage, fraction of each box side
   BoxSearchResult out;
@@ -76,10 +126,21 @@ BoxSearchResult SearchBox(const BoxSearch& search) {
     }
     ran = true;
   };
-  stage("global search", search.global, search.global_evaluations, search.start);
-  const std::vector<BoxPoint> best =
-      BestDistinctPoints(search.seen(), search.infeasible, 1, search.same);
-  if (!best.empty()) stage("local polish", search.local, search.local_evaluations, best.front().y);
+  if (search.halton) {
+    if (search.on_stage) search.on_stage("global search");
+    SampleHalton(search, search.global_evaluations);
+    out.max_time = !(search.seconds_left() > 0.0);
+    out.status = out.max_time ? OptimizeStatus::kMaxTime : OptimizeStatus::kOk;
+    ran = true;
+  } else {
+    stage("global search", search.global, search.global_evaluations, search.start);
+  }
+  const std::vector<BoxPoint> best = BestDistinctPoints(
+      search.seen(), search.infeasible, search.polish_starts,
+      std::max(search.same, search.polish_apart));
+  for (const BoxPoint& from : best) {
+    stage("local polish", search.local, search.local_evaluations, from.y);
+  }
   out.candidates =
       BestDistinctPoints(search.seen(), search.infeasible, search.candidates, search.same);
   return out;

@@ -2,9 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
 
 namespace capsubot {
+namespace {
+
+// Bounds of the drive budgets (an evaluation simulates a grid of starts: a million of them is
+// hours of work).
+constexpr long long kMaxDriveEvaluations = 1000000;
+constexpr long long kMaxDrivePolishes = 64;
+// The relative tolerance of a drive's polishes: far below any change of a mean over starts.
+constexpr double kPolishRelTol = 1e-10;
+
+}  // namespace
 
 void ReachEffort::Validate() const {
   detail::Require(
@@ -16,6 +29,10 @@ void ReachEffort::Validate() const {
   detail::Require(max_seconds > 0.0,
                   fmt::format("reach_seconds = {} is invalid: expected a time > 0 (infinity: none)",
                               max_seconds));
+  detail::RequireCount("drive_evaluations", drive_evaluations, 1, kMaxDriveEvaluations);
+  detail::RequireCount("drive_polishes", drive_polishes, 1, kMaxDrivePolishes);
+  detail::RequireCount("drive_local_evaluations", drive_local_evaluations, 0,
+                       kMaxDriveEvaluations);
 }
 
 ReachOptions ReachEffort::Options(double force_bound, double alpha,
@@ -31,6 +48,22 @@ ReachOptions ReachEffort::Options(double force_bound, double alpha,
   r.global_evaluations = global_evaluations;
   r.local_evaluations = local_evaluations;
   r.max_seconds = max_seconds;
+  return r;
+}
+
+ReachOptions ReachEffort::DriveOptions(const DriveFamily& drive, double force_bound, double alpha,
+                                       const FromRestOptions& check) const {
+  ReachOptions r = Options(force_bound, alpha, check);
+  r.drive = drive;
+  r.global_algorithm = detail::kHaltonStage;
+  r.local_algorithm = "LN_NELDERMEAD";
+  r.global_evaluations = drive_evaluations;
+  r.polish_starts = drive_polishes;
+  r.local_evaluations = drive_local_evaluations;
+  r.candidates = std::max(r.candidates, drive_polishes);
+  // A mean over starts is flat between the points where a start changes its motion: a polish
+  // stopped by a small relative change would stop on the first plateau; its budget bounds it.
+  r.rel_tol = kPolishRelTol;
   return r;
 }
 

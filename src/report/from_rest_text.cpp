@@ -18,6 +18,10 @@ std::string ReachText(const ReachResult& r) {
   if (std::isnan(r.mean_velocity)) return fmt::format("    none: {}\n", r.message);
   std::string t;
   t += fmt::format("    force            {}\n", ForceFormula(r.forcing));
+  if (!r.drive.sine()) {
+    t += fmt::format("    force bound      max |F| = {:.9g} <= {:g} (exact: F at the zeros of F')\n",
+                     r.max_abs_force, r.force_bound);
+  }
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {:.5g}\n", r.alpha);
   t += fmt::format("    speed from rest  mean velocity {:.6g} omega L (over {} starts)\n",
                    r.mean_velocity, r.attractors.starts);

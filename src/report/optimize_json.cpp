@@ -62,14 +62,36 @@ nlohmann::json Json(const ProblemJobResult& pr) {
   return j;
 }
 
+// The winner's drive as the force flags name it: the mean c, the series --cos and --sin (base
+// coefficients in the motor phase) and phi0, the motor phase at phi = 0.
+nlohmann::json DriveJson(const ReachResult& r) {
+  const Forcing& f = r.forcing;
+  std::vector<double> a, b;
+  for (int k = 1; k <= f.harmonics(); ++k) {
+    a.push_back(f.a(k));
+    b.push_back(f.b(k));
+  }
+  return {{"waveform", WaveformName(r.drive.waveform)},
+          {"harmonics", f.harmonics()},
+          {"c", f.mean()},
+          {"cos", a},
+          {"sin", b},
+          {"phi0", f.phi0()}};
+}
+
 nlohmann::json ReachJson(const ReachResult& r) {
   const bool found = !std::isnan(r.mean_velocity);
   nlohmann::json j;
   j["status"] = OptimizeStatusName(r.status);
   j["message"] = r.message;
-  j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
-  j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
-  j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
+  if (r.drive.sine()) {
+    j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
+    j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
+    j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
+  }
+  j["drive"] = found ? DriveJson(r) : nlohmann::json(nullptr);
+  j["force_bound"] = r.force_bound;
+  j["max_abs_force"] = r.max_abs_force;
   j["alpha"] = r.alpha;
   j["mean_velocity"] = r.mean_velocity;
   j["attractors"] = found ? AttractorsJson(r.attractors) : nlohmann::json(nullptr);
@@ -100,9 +122,33 @@ nlohmann::json ReachJson(const ReachResult& r) {
   return j;
 }
 
+// The winners of a drive ladder, K = 1 (the sine) first, each with its speed against the sine's.
+nlohmann::json LadderJson(const std::vector<ReachResult>& ladder) {
+  nlohmann::json j = nlohmann::json::array();
+  if (ladder.empty()) return j;
+  const double sine = ladder.front().mean_velocity;
+  for (const ReachResult& step : ladder) {
+    const bool found = !std::isnan(step.mean_velocity);
+    j.push_back({{"harmonics", step.drive.sine() ? 1 : step.drive.harmonics},
+                 {"mean_velocity", step.mean_velocity},
+                 {"speed_ratio_to_sine", step.mean_velocity / sine},
+                 {"alpha", step.alpha},
+                 {"max_abs_force", step.max_abs_force},
+                 {"drive", found ? DriveJson(step) : nlohmann::json(nullptr)},
+                 {"attractors", found ? AttractorsJson(step.attractors) : nlohmann::json(nullptr)},
+                 {"summary", step.summary},
+                 {"robust_to_settings", step.robust_to_settings},
+                 {"status", OptimizeStatusName(step.status)}});
+  }
+  return j;
+}
+
 nlohmann::json Json(const ReachJobResult& r) {
   nlohmann::json j = ReachJson(r.reach);
   AddRequirementsJson(j, r.params, r.rho_max);
+  if (r.ladder.empty()) return j;
+  j["speed_ratio_to_sine"] = r.reach.mean_velocity / r.ladder.front().mean_velocity;
+  j["ladder"] = LadderJson(r.ladder);
   return j;
 }
 
@@ -121,6 +167,7 @@ nlohmann::json Json(const MainJobResult& r) {
   j["reach"] = ReachJson(r.reach);
   j["reach"]["robustness"] =
       r.reach_robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.reach_robustness);
+  j["drives"] = LadderJson(r.drives);
   j["fastest"] = OptimizeResultJson(r.fastest, "forcing");
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = OptimizeResultJson(r.stable, "forcing");

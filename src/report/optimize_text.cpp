@@ -187,7 +187,31 @@ std::string PaperText(const MainJobResult& r) {
   return t;
 }
 
-// 2.-4. and the summary: the robust gait, the fastest motion from rest, the exact optima.
+// 4. The fastest Fourier drives under the same bound, each simulated from every start.
+std::string DrivesText(const std::vector<ReachResult>& drives, double bound) {
+  if (drives.size() < 2) return "";
+  std::string t = fmt::format(
+      "\n4. The fastest drive: a motor makes any periodic force up to its peak, so the force\n"
+      "   may be a Fourier series of K harmonics with max |F| <= {:g} (the bound of 3), each\n"
+      "   climbing from the winner of K - 1, simulated from every start:\n",
+      bound);
+  const double sine = drives.front().mean_velocity;
+  for (std::size_t k = 1; k < drives.size(); ++k) {
+    const ReachResult& d = drives[k];
+    t += fmt::format("   K = {}: mean velocity {} omega L, {} times the sine's {}{}\n",
+                     d.drive.harmonics, Num(d.mean_velocity, 4),
+                     fmt::format("{:.2f}", d.mean_velocity / sine), Num(sine, 4),
+                     d.robust_to_settings ? "" : " (CAUTION: not robust to the settings)");
+    t += fmt::format("    force            {}\n", ForceFormula(d.forcing));
+    t += fmt::format("    inner mass ratio alpha = {}\n", Num(d.alpha, 5));
+    t += fmt::format("    from rest        {}\n", d.summary);
+  }
+  t += "   (a longer search: capsubot optimize --problem reach --harmonics K; docs/reach.md)\n";
+  return t;
+}
+
+// 2.-5. and the summary: the robust gait, the fastest motion from rest, the fastest drives, the
+// exact optima.
 std::string ResultsText(const MainJobResult& r) {
   const OptimizeResult& robust = r.robust;
   const OptimizeResult& fastest = r.fastest;
@@ -214,7 +238,8 @@ std::string ResultsText(const MainJobResult& r) {
                    "is not periodic\n")
              : RobustnessText(r.reach_robustness, "its most common motion from rest");
   }
-  t += "\n4. For comparison, the exact optima without margins (they graze the walls: a robot\n"
+  t += DrivesText(r.drives, bound);
+  t += "\n5. For comparison, the exact optima without margins (they graze the walls: a robot\n"
        "   with slightly different parameters does something else).\n"
        "   The fastest valid gait:\n";
   t += fastest.found() ? GaitText(fastest, kInf)
@@ -237,6 +262,20 @@ std::string Text(const MainJobResult& r) {
   return MainHeader(r) + PaperText(r) + ResultsText(r) + Advice(r.robust, r.reach);
 }
 
+// The best speed from rest for each number of harmonics, against the sine's.
+std::string LadderText(const std::vector<ReachResult>& ladder) {
+  if (ladder.empty()) return "";
+  std::string t = "  best drive by number of harmonics (max |F| <= the same bound):\n";
+  const double sine = ladder.front().mean_velocity;
+  for (const ReachResult& step : ladder) {
+    t += fmt::format("    K = {:<2}          mean velocity {:.6g} omega L, {:.3g} times the sine; "
+                     "{}\n",
+                     step.drive.sine() ? 1 : step.drive.harmonics, step.mean_velocity,
+                     step.mean_velocity / sine, step.summary);
+  }
+  return t;
+}
+
 std::string Text(const ReachJobResult& r) {
   const Params& p = r.params;
   const ReachResult& reach = r.reach;
@@ -244,7 +283,7 @@ std::string Text(const ReachJobResult& r) {
       "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
       "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  {}\n{}",
       p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.rho_max,
-      OptimizeStatusName(reach.status), reach.message, ReachText(reach));
+      OptimizeStatusName(reach.status), reach.message, ReachText(reach)) + LadderText(r.ladder);
 }
 
 std::string Text(const ProblemJobResult& pr) {

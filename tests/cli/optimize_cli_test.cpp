@@ -1,9 +1,11 @@
 // `capsubot optimize`: the main job and the single problems through the built program.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -133,6 +135,50 @@ TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
   EXPECT_LE(j["A"].get<double>() + j["c"].get<double>(), 1.0 + 1e-12);
 }
 
+TEST(OptimizeCli, ReachWithHarmonicsReportsTheDriveAndItsLadder) {
+  const auto r = RunCli(
+      "optimize --problem reach --harmonics 2 --json --drive-evaluations 12 --drive-polishes 2 "
+      "--drive-local-evaluations 6" +
+      kQuickReach);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["drive"].is_object()) << r.out;
+  EXPECT_EQ(j["drive"]["waveform"], "fourier");
+  ASSERT_EQ(j["drive"]["cos"].size(), 2u);
+  ASSERT_EQ(j["drive"]["sin"].size(), 2u);
+  EXPECT_EQ(j["drive"]["cos"][0], 0.0);  // the family's gauge: the first harmonic is a sine
+  ASSERT_EQ(j["ladder"].size(), 2u);
+  EXPECT_EQ(j["ladder"][0]["harmonics"], 1);
+  EXPECT_EQ(j["ladder"][1]["harmonics"], 2);
+  EXPECT_EQ(j["ladder"][1]["mean_velocity"], j["mean_velocity"]);
+  EXPECT_EQ(j["speed_ratio_to_sine"].get<double>(),
+            j["mean_velocity"].get<double>() / j["ladder"][0]["mean_velocity"].get<double>());
+  // The bound, exactly: max |F| of the reported coefficients, recomputed here from a dense
+  // sampling of the series, is the reported max_abs_force, at the bound T0 = 1.
+  const double c = j["drive"]["c"];
+  double sampled = 0.0;
+  for (int i = 0; i < 100000; ++i) {
+    const double t = 6.283185307179586 * i / 100000.0;
+    double F = c;
+    for (int k = 1; k <= 2; ++k) {
+      F += j["drive"]["cos"][k - 1].get<double>() * std::cos(k * t) +
+           j["drive"]["sin"][k - 1].get<double>() * std::sin(k * t);
+    }
+    sampled = std::max(sampled, std::abs(F));
+  }
+  EXPECT_NEAR(j["max_abs_force"].get<double>(), sampled, 1e-8);
+  EXPECT_NEAR(j["max_abs_force"].get<double>(), 1.0, 1e-12);
+  // The winner's numbers are those of `capsubot attractors` on the reported drive.
+  const auto a = RunCli(fmt::format(
+      "attractors --c {} --cos {},{} --sin {},{} --phi0 {} --alpha {} --starts 2x2 --json", c,
+      j["drive"]["cos"][0].get<double>(), j["drive"]["cos"][1].get<double>(),
+      j["drive"]["sin"][0].get<double>(), j["drive"]["sin"][1].get<double>(),
+      j["drive"]["phi0"].get<double>(), j["alpha"].get<double>()));
+  ASSERT_EQ(a.status, 0) << a.out;
+  EXPECT_NEAR(nlohmann::json::parse(a.out)["mean_velocity"].get<double>(),
+              j["mean_velocity"].get<double>(), 1e-12);
+}
+
 TEST(OptimizeCli, ReachWithFixedAlphaKeepsIt) {
   const auto r = RunCli("optimize --problem reach --alpha 0.5 --json" + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
@@ -250,6 +296,14 @@ TEST(OptimizeCli, BadInputExitsTwoWithOneLineNamingTheRule) {
         Case{"--alpha 0.5",
              "--alpha conflicts with the main job (no --problem): expected --alpha only with "
              "--problem reach"},
+        Case{"--problem reach --harmonics 17",
+             "--harmonics = 17 is invalid: expected 1 <= harmonics <= 16"},
+        Case{"--problem reach --drive-polishes 3",
+             "--drive-polishes conflicts with --problem reach without --harmonics K >= 2"},
+        Case{"--problem phase --A 0.3 --c 0.1 --harmonics 2",
+             "--harmonics conflicts with --problem phase"},
+        Case{"--problem reach --harmonics 2 --drive-evaluations 0",
+             "--drive-evaluations = 0 is invalid: expected 1 <= drive_evaluations <= 1000000"},
         Case{"--problem forcing --reach-seconds 5",
              "--reach-seconds conflicts with --problem forcing"},
         Case{"--problem fourier --from-rest-csv /tmp/x.csv",

@@ -82,6 +82,34 @@ TEST(OptimizeJob, MainJobContinuesBothMotionsAsTheStagesDo) {
   }
 }
 
+TEST(OptimizeJob, MainJobClimbsFromTheSineToTheFastestDrives) {
+  OptimizeJobOptions job;
+  MainJob main{ReachEffort{2, 2, 8, 4}};
+  main.drives.drive_evaluations = 20;
+  main.drives.drive_polishes = 1;
+  main.drives.drive_local_evaluations = 10;
+  job.mode = main;
+  job.check = SmallCheck();
+  const auto r = std::get<MainJobResult>(RunOptimizeJob(job));
+  ASSERT_EQ(r.drives.size(), 3U);  // K = 1 (the sine), 2, 3
+  // The first step is the sine's reach result itself.
+  EXPECT_EQ(r.drives[0].mean_velocity, r.reach.mean_velocity);
+  EXPECT_EQ(r.drives[0].alpha, r.reach.alpha);
+  for (std::size_t k = 1; k < r.drives.size(); ++k) {
+    const ReachResult& d = r.drives[k];
+    ASSERT_FALSE(std::isnan(d.mean_velocity)) << d.message;
+    EXPECT_EQ(d.forcing.harmonics(), static_cast<int>(k + 1));
+    EXPECT_LE(d.forcing.MaxAbs(), job.params.T0 * (1.0 + 1e-12));
+    // Each step re-checks the winners below it: it is at least as fast when both hold.
+    if (d.robust_to_settings && r.drives[k - 1].robust_to_settings) {
+      EXPECT_GE(d.mean_velocity, r.drives[k - 1].mean_velocity);
+    }
+    // The reported speed is that of an independent run of the reported drive.
+    EXPECT_EQ(FindAttractors(d.forcing, job.params, d.alpha, job.check).mean_velocity,
+              d.mean_velocity);
+  }
+}
+
 TEST(OptimizeJob, TellsItsStagesInOrderAndEndsWithEmpty) {
   OptimizeJobOptions job = PhaseJob(0.3, 0.4);
   std::vector<std::string> stages;
@@ -136,7 +164,7 @@ TEST(OptimizeJob, BadOptionsAreRefusedNamingTheParameter) {
   job.search.gait.force_bound = 2.0;  // above T0 = 1
   EXPECT_NE(Refusal(job).find("force_bound = 2"), std::string::npos);
   job = OptimizeJobOptions{};
-  job.mode = ReachProblem{ReachEffort{}, 1.5};
+  job.mode = ReachProblem{ReachEffort{}, 1.5, DriveFamily{}};
   EXPECT_NE(Refusal(job).find("alpha = 1.5"), std::string::npos);
   job.mode = MainJob{ReachEffort{0, 4}};
   EXPECT_NE(Refusal(job).find("n_x = 0"), std::string::npos);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
@@ -15,16 +16,26 @@
 #include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_request.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/reach/drive_ladder.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/reach/reach_effort.hpp"
 
 namespace capsubot {
 
 /// The main job: P1 at c = A = T0/2 without margins, P2 with the job's margins checked from
-/// rest, the reach search seeded with it, both motions continued in T0, e and alpha, P2
-/// without margins (valid; stable).
+/// rest, the reach search seeded with it, the fastest Fourier drives of up to `drive_harmonics`
+/// harmonics climbing from its winner, both motions continued in T0, e and alpha, P2 without
+/// margins (valid; stable).
 struct MainJob {
   ReachEffort reach;
+  /// The budgets of the drive part (drive_evaluations, drive_polishes,
+  /// drive_local_evaluations), smaller than those of `--problem reach --harmonics K`, so that
+  /// the whole job takes seconds; its starts and time limit are those of `reach`.
+  ReachEffort drives = MainJobDriveEffort();
+  int drive_harmonics = 3;  ///< the largest K of the drive part; 2 <= K <= kMaxHarmonics
+
+  /// The drive part's budgets: 150 Halton points and 2 polishes of 80 evaluations a step.
+  static ReachEffort MainJobDriveEffort();
 };
 /// P1: the best impact phase phi0 for the force shape F = A sin(phi + phi0) + c.
 struct PhaseProblem {
@@ -35,10 +46,12 @@ struct PhaseProblem {
 struct ForcingProblem {};
 /// P3: the best force of SearchRequest::harmonics harmonics with max |F| <= the force bound.
 struct FourierProblem {};
-/// The fastest motion from rest, seeded with the robust gait (P2).
+/// The fastest motion from rest, seeded with the robust gait (P2): of the sine, or of a Fourier
+/// drive of K >= 2 harmonics, climbing from the sine (drive_ladder.hpp).
 struct ReachProblem {
   ReachEffort reach;
   double alpha = std::numeric_limits<double>::quiet_NaN();  ///< fixed 0 < alpha < 1; NaN: free
+  DriveFamily drive{};  ///< the forces searched (the sine by default)
 };
 
 /// What the job runs: each mode holds the settings only it uses.
@@ -76,7 +89,10 @@ struct MainJobResult {
   GaitRequirements gait;      ///< the force bound (T0 when not given) and rho_max
   OptimizeResult paper;       ///< P1 at c = A = T0/2, no margins
   OptimizeResult robust;      ///< P2 with the margins (its from-rest check: reach.seed)
-  ReachResult reach;          ///< the fastest motion from rest
+  ReachResult reach;          ///< the fastest motion from rest (of the sine)
+  /// The fastest Fourier drives under the same bound: K = 1 (the sine: `reach`), 2, ...,
+  /// drive_harmonics.
+  std::vector<ReachResult> drives;
   GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
   /// The most common motion from rest of the reach winner continued, when it is periodic;
   /// empty otherwise.
@@ -98,7 +114,9 @@ struct ProblemJobResult {
 struct ReachJobResult {
   Params params;
   double rho_max;  ///< the seed's stability requirement
-  ReachResult reach;
+  ReachResult reach;  ///< the winner of the family asked for
+  /// A Fourier drive's ladder: the winners of K = 1 (the sine), 2, ..., K; empty for the sine.
+  std::vector<ReachResult> ladder;
 };
 
 using OptimizeJobResult = std::variant<MainJobResult, ProblemJobResult, ReachJobResult>;

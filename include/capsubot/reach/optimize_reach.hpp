@@ -25,10 +25,12 @@
 #include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
+#include "capsubot/reach/drive_family.hpp"
 
 namespace capsubot {
 
-/// The global algorithm names accepted by OptimizeReach (bound-constrained NLopt methods).
+/// The global algorithm names accepted by OptimizeReach: bound-constrained NLopt methods and
+/// HALTON, the points of a Halton sequence of the box (an evenly spread random search).
 std::vector<std::string> ReachGlobalAlgorithmNames();
 /// The local algorithm names accepted by OptimizeReach (derivative-free NLopt methods).
 std::vector<std::string> ReachLocalAlgorithmNames();
@@ -41,16 +43,35 @@ FromRestOptions CheapFromRestOptions();
 /// seed_stick_margin).
 ForcingDesignOptions RobustSeedDesign();
 
+/// A drive that starts a search: a force of the family (e.g. the winner of a smaller family)
+/// with its mass ratio.
+struct DriveSeed {
+  Forcing forcing;
+  double alpha = std::numeric_limits<double>::quiet_NaN();
+};
+
 struct ReachOptions {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-  /// Bound on the force: A + c <= force_bound; NaN means T0; 0 < force_bound <= T0.
+  /// The forces searched: the sine A sin(phi + phi0) + c (today's problem) or a Fourier series
+  /// of K harmonics (drive_family.hpp).
+  DriveFamily drive;
+  /// Bound on the force: max |F| <= force_bound (A + c for the sine); NaN means T0;
+  /// 0 < force_bound <= T0.
   double force_bound = kNaN;
+  /// Drives that start the search besides the robust gait (a smaller family's winner); each is
+  /// scored first and re-checked with the full settings, so the result is never below them.
+  /// Each must belong to `drive` (DriveCoordinates) with the seed's motor phase; at most
+  /// kMaxHarmonics.
+  std::vector<DriveSeed> seeds;
+  /// Local polishes, each from one of the best distinct points of the global stage; >= 1.
+  int polish_starts = 1;
   /// A fixed mass ratio (0 < alpha < 1); NaN: alpha is a variable in [alpha_min, alpha_max].
   double alpha = kNaN;
   double alpha_min = 0.05;  ///< lower end of the alpha box; 0 < alpha_min < alpha_max
   double alpha_max = 0.95;  ///< upper end of the alpha box; < 1 (widened to hold the seed's)
-  /// Global stage over the box, by NLopt name (ReachGlobalAlgorithmNames()).
+  /// Global stage over the box, by NLopt name or HALTON (a Halton sampling of the box; see
+  /// ReachGlobalAlgorithmNames()).
   std::string global_algorithm = "GN_DIRECT_L";
   /// Local polish from the best point of the global stage (ReachLocalAlgorithmNames()).
   std::string local_algorithm = "LN_SBPLX";
@@ -117,9 +138,13 @@ struct ReachResult {
   /// search; the best point is kept), kNoValidOrbit (every candidate had an event_limit start).
   OptimizeStatus status = OptimizeStatus::kNotRun;
   std::string message;  ///< one readable sentence
-  /// The winner's force A sin(phi + phi0) + c; phi0 is the seed's impact phase (the motor phase
-  /// from which the start phases psi are counted).
+  /// The winner's force (A sin(phi + phi0) + c, or a Fourier series for a Fourier family);
+  /// phi0 is the seed's impact phase (the motor phase from which the start phases psi are
+  /// counted).
   Forcing forcing;
+  DriveFamily drive;            ///< the family searched
+  double max_abs_force = kNaN;  ///< the winner's max |F| (exact; <= the bound)
+  double force_bound = kNaN;    ///< the bound the search kept
   double alpha = kNaN;          ///< the winner's mass ratio
   double mean_velocity = kNaN;  ///< mean over the full start grid (units of omega L)
   Attractors attractors;        ///< of the winner, full settings

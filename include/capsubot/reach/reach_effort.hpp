@@ -14,14 +14,25 @@ struct ReachEffort {
   int global_evaluations = ReachOptions{}.global_evaluations;  ///< global stage; >= 1
   int local_evaluations = ReachOptions{}.local_evaluations;    ///< local polish; >= 0
   double max_seconds = ReachOptions{}.max_seconds;             ///< wall-clock limit [s]; > 0
+  /// Each step K >= 2 of a drive ladder (drive_ladder.hpp) searches 2K + 2 coordinates: a
+  /// wider global stage and several local polishes (its own max_seconds too).
+  int drive_evaluations = 400;        ///< global stage of each step; >= 1
+  int drive_polishes = 4;             ///< local polishes of each step; >= 1
+  int drive_local_evaluations = 150;  ///< evaluations of each polish; >= 0
 
   /// Throws std::invalid_argument naming the first bad field by the front ends' name
-  /// (reach_evaluations, reach_local_evaluations, reach_seconds), its value and the rule.
+  /// (reach_evaluations, reach_local_evaluations, reach_seconds, drive_evaluations,
+  /// drive_polishes, drive_local_evaluations), its value and the rule.
   void Validate() const;
 
   /// The reach options of this effort: the force bound (NaN: T0), alpha fixed (NaN: free), the
   /// full check of the winner (its threads and interrupt also drive the search's starts).
   ReachOptions Options(double force_bound, double alpha, const FromRestOptions& check) const;
+  /// The options of the steps K >= 2 of a ladder up to `drive`: Options with the drive
+  /// budgets, a Halton sampling of the box (HALTON) and Nelder-Mead polishes from its best
+  /// points and the seeds.
+  ReachOptions DriveOptions(const DriveFamily& drive, double force_bound, double alpha,
+                            const FromRestOptions& check) const;
 };
 
 }  // namespace capsubot

@@ -18,6 +18,10 @@ struct BoxPoint {
   double score = 0.0;
 };
 
+/// The i-th point (i >= 1) of the Halton sequence in [0, 1)^dimension (radical inverses in the
+/// first `dimension` primes; dimension <= 32).
+std::vector<double> HaltonPoint(long long i, int dimension);
+
 /// One NLopt run maximising `objective` (called with `data`) over [lower, upper] from y0
 /// (clamped into the box): at most `evaluations` calls and `seconds` of wall-clock time,
 /// relative tolerance `rel_tol` on y and on the value, initial step `step_fraction` of each
@@ -33,6 +37,10 @@ OptimizeStatus MaximizeOnBox(nlopt::algorithm algorithm, nlopt::func objective, 
 /// `count`: two points are the same when every coordinate differs by at most `same`.
 std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floor, int count,
                                          double same);
+
+/// The name of the global stage that scores the points of a Halton sequence of the box (an
+/// evenly spread, deterministic random search) instead of running an NLopt algorithm.
+inline constexpr const char* kHaltonStage = "HALTON";
 
 /// A search of a box whose objective simulates (the fastest motion from rest, the design's
 /// motion from rest): a global stage from `start`, a local polish from the best distinct
@@ -50,13 +58,22 @@ struct BoxSearch {
   std::vector<double> lower, upper;  ///< the box
   std::vector<double> start;         ///< first point of the global stage
   nlopt::algorithm global = nlopt::GN_DIRECT_L;
+  bool halton = false;  ///< the global stage scores Halton points (`global` unused)
   nlopt::algorithm local = nlopt::LN_SBPLX;
   int global_evaluations = 0;  ///< budget of the global stage (0: skipped)
-  int local_evaluations = 0;   ///< budget of the local polish (0: skipped)
+  int local_evaluations = 0;   ///< budget of each local polish (0: skipped)
+  int polish_starts = 1;       ///< polishes, from the best distinct points of the global stage
   double rel_tol = 0.0;        ///< relative tolerance of both stages (y and value)
   double infeasible = 0.0;     ///< the score of an infeasible point: never a candidate
   double same = 0.0;           ///< two points are one candidate within this (BestDistinctPoints)
   int candidates = 1;          ///< distinct candidates returned, at most
+  /// Polishes start from points that differ by more than this in some coordinate.
+  double polish_apart = 0.0;
+
+  /// Sets the global stage from its name: kHaltonStage or an NLopt algorithm, one of `allowed`;
+  /// throws std::invalid_argument naming `option` otherwise (AlgorithmFromName).
+  void SetGlobal(const std::string& name, const std::vector<std::string>& allowed,
+                 const char* option);
 };
 
 /// What a box search found.
@@ -69,8 +86,9 @@ struct BoxSearchResult {
   std::vector<BoxPoint> candidates;  ///< the best distinct feasible points, best first
 };
 
-/// Runs the stages of `search` (global, then local polish with an initial step of 5 % of each
-/// side) and returns the candidates to re-check.
+/// Runs the stages of `search` (global, then a local polish from each of the polish_starts best
+/// points at least polish_apart apart, with an initial step of 5 % of each side) and returns the
+/// candidates to re-check.
 BoxSearchResult SearchBox(const BoxSearch& search);
 
 }  // namespace capsubot::detail
