@@ -13,6 +13,8 @@
 #   velocity_alpha.csv, velocity_alpha.png: multi-impact motions vs one-impact orbits over alpha
 #   p2_T0_e.csv, p2_T0_e_stable.csv, p2_T0_e.png: the P2 optimum at every (T0, e)
 #   reach_T0.csv, reach_T0.png: the fastest motion from rest at every T0 (sweep --optimize reach)
+#   drives.json, drives_force.csv, drives_motion_K{1,2,3}.csv, drives.png: the fastest drives
+#                                 from rest, the sine and Fourier series of 2 and 3 harmonics
 #   loss_map.csv, loss_map_zoom.csv, loss_map.png: how the orbit loses stability over (phi0, A)
 #   p3_vs_p2_forcing.csv, p3_vs_p2_fourier{2,3}.csv, p3_vs_p2.png: P2 against P3 over T0
 #   three_axis_e_T0_phi0.csv, three_axis_e_T0_phi0.png: a 3-axis sweep (list, log, linear)
@@ -90,6 +92,15 @@ T0_grid="T0=0.01:1:$n_T0:log" e_grid="e=0:1:11"
   -o "$out/p2_T0_e_stable.csv"
 say "reach per point: the fastest motion from rest at 7 values of T0 (about a minute of CPU)"
 "$cli" sweep --grid T0=0.05:1:7:log --optimize reach -o "$out/reach_T0.csv"
+
+say "the fastest drives from rest: Fourier series of 1, 2, 3 harmonics, max |F| <= T0 (reach.md)"
+"$cli" optimize --problem reach --harmonics 3 --reach-seconds inf -o "$out/drives.json" > /dev/null
+/usr/bin/python3 "$gp/drives.py" force "$out/drives.json" "$out/drives_force.csv"
+for k in 1 2 3; do
+  read -r -a drive <<< "$(/usr/bin/python3 "$gp/drives.py" args "$out/drives.json" "$k")"
+  "$cli" simulate "${drive[@]}" --x0 0.5 --u0 0 --v0 0 --transient 200 --periods 2 \
+    --samples-per-period 400 --trajectory "$out/drives_motion_K$k.csv" > /dev/null
+done
 
 # The other kinds of sweep (docs/sweep.md, "Figures"): a few seconds of CPU together.
 say "stability loss (stable, fold, flip, torus) over (phi0, A): all, and the torus corner"
@@ -192,6 +203,11 @@ say "basins of two coexisting attractors (drawn by capsubot basins through gnupl
 gnuplot -e "term='$term'; out='$out/p2_T0_e.png'; valid_data='$out/p2_T0_e.csv';
   stable_data='$out/p2_T0_e_stable.csv'; n_T0=$n_T0" "$gp/p2_T0_e.gp"
 gnuplot -e "term='$term'; data='$out/reach_T0.csv'; out='$out/reach_T0.png'" "$gp/reach_T0.gp"
+speeds=$(/usr/bin/python3 -c "import json,sys; l=json.load(open(sys.argv[1]))['ladder']; \
+print('; '.join('v%d=%r' % (s['harmonics'], s['mean_velocity']) for s in l))" "$out/drives.json")
+gnuplot -e "term='$term'; out='$out/drives.png'; force='$out/drives_force.csv';
+  motion1='$out/drives_motion_K1.csv'; motion2='$out/drives_motion_K2.csv';
+  motion3='$out/drives_motion_K3.csv'; $speeds" "$gp/drives.gp"
 gnuplot -e "term='$term'; out='$out/loss_map.png'; data='$out/loss_map.csv';
   zoom='$out/loss_map_zoom.csv'; c=0.002; T0=0.1; e=1; dphi=pi/180; A_lo=0.001; A_hi=0.098;
   rA=$(awk 'BEGIN { print exp(log(98) / 40) }'); phi_lo=-2.6; phi_hi=-2.0; zphi=0.005;
