@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capsubot/io/io.hpp"
@@ -49,6 +50,7 @@ struct OptimizeCliOptions {
   std::string force_csv;
   FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
   double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
+  std::string T0_range;          // reach: "LO:HI", the motor's frequency free (empty: fixed)
   std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
   CLI::App* cmd = nullptr;
 };
@@ -66,6 +68,7 @@ const std::vector<OptionUse> kOptionUses = {
     {"--local-algorithm", {"", "forcing", "fourier", "reach"}},
     {"--global-evaluations", {"", "forcing", "fourier", "reach"}},
     {"--alpha", {"reach"}},
+    {"--T0-range", {"reach"}},
     {"--reach-starts", {"", "reach"}},
     {"--reach-evaluations", {"", "reach"}},
     {"--reach-local-evaluations", {"", "reach"}},
@@ -125,6 +128,29 @@ std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* opt
   return path.empty() ? nullptr : std::make_unique<AtomicFile>(path, option);
 }
 
+// --T0-range LO:HI as (T0_min, T0_max); (NaN, NaN) when not given. The library checks the
+// numbers; this reads the syntax.
+std::pair<double, double> ParseT0Range(const std::string& text) {
+  if (text.empty()) return {kNaN, kNaN};
+  const std::size_t colon = text.find(':');
+  double lo = kNaN, hi = kNaN;
+  try {
+    std::size_t used_lo = 0, used_hi = 0;
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    lo = std::stod(text.substr(0, colon), &used_lo);
+    hi = std::stod(text.substr(colon + 1), &used_hi);
+    if (used_lo != colon || used_hi != text.size() - colon - 1) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw std::invalid_argument(fmt::format(
+        "--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
+  }
+  if (!(lo > 0.0 && lo < hi && std::isfinite(hi))) {
+    throw std::invalid_argument(fmt::format(
+        "--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
+  }
+  return {lo, hi};
+}
+
 // The job the command line asks for: the mode with its own settings, the robot, the search.
 OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   OptimizeJobOptions job;
@@ -135,10 +161,12 @@ OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   if (problem == "fourier") job.mode = FourierProblem{};
   if (problem == "reach") {
     const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
+    const auto [T0_min, T0_max] = ParseT0Range(opt.T0_range);
     job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha,
                             harmonics != nullptr && harmonics->count() > 0
                                 ? DriveFamily::Fourier(opt.search.harmonics)
-                                : DriveFamily{}};
+                                : DriveFamily{},
+                            T0_min, T0_max};
   }
   job.params = opt.params;
   job.search = opt.search;
@@ -336,6 +364,11 @@ Command AddOptimizeCommand(CLI::App& app) {
   AddDriveBudgetOptions(*cmd, opt->from_rest);
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
+  cmd->add_option("--T0-range", opt->T0_range,
+                  "reach: the motor's frequency free, LO:HI: T0 = mu g/(omega^2 L) in [LO, HI] "
+                  "(holding --T0), the force bound tied to T0, the speed in units of "
+                  "sqrt(mu g L), v_mean/sqrt(T0), maximised (docs/reach.md, Frequency)")
+      ->type_name("LO:HI");
   AddSearchOptions(*cmd, *opt);
   AddOutputOptions(*cmd, *opt);
   opt->cmd = cmd;

@@ -113,6 +113,7 @@ def optimize(
     drive_evaluations: int = 400,
     drive_polishes: int = 4,
     drive_local_evaluations: int = 150,
+    T0_range: tuple[float, float] | None = None,
     threads: int = 0,
 ) -> dict[str, Any]:
     """The fastest gait (problem 'phase', 'forcing', 'fourier'), the fastest motion from rest

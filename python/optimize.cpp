@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "bindings.hpp"
 #include "capsubot/job/optimize_job.hpp"
@@ -24,7 +25,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // An argument the chosen run does not use would be silently ignored: refuse it.
 void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,
                   std::optional<double> alpha, std::optional<int> harmonics,
-                  const SearchRequest& search) {
+                  std::optional<std::pair<double, double>> T0_range, const SearchRequest& search) {
   const auto reject = [&problem](const char* name, const char* runs) {
     throw std::invalid_argument(fmt::format(
         "{} conflicts with {}: expected {} only with {}", name,
@@ -33,6 +34,7 @@ void RejectUnused(const std::string& problem, std::optional<double> A, std::opti
   if (problem != "phase" && A) reject("A", "problem 'phase'");
   if (problem != "phase" && c) reject("c", "problem 'phase'");
   if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
+  if (problem != "reach" && T0_range) reject("T0_range", "problem 'reach'");
   if (problem != "fourier" && problem != "reach" && harmonics) {
     reject("harmonics", "problem 'fourier' or 'reach'");
   }
@@ -58,7 +60,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   const std::string& from_rest_starts, const std::string& reach_starts,
                   int reach_evaluations, int reach_local_evaluations, double reach_seconds,
                   int drive_evaluations, int drive_polishes, int drive_local_evaluations,
-                  int threads) {
+                  std::optional<std::pair<double, double>> T0_range, int threads) {
   const std::string name = problem.value_or("");
   if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
       name != "reach") {
@@ -86,7 +88,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   job.search.global_evaluations = global_evaluations;
   job.search.hops = hops;
   job.search.harmonics = harmonics.value_or(FourierOptions{}.harmonics);
-  RejectUnused(name, A, c, alpha, harmonics, job.search);
+  RejectUnused(name, A, c, alpha, harmonics, T0_range, job.search);
   job.params = Params{T0, e, margin, margin_stroke, stick_margin};
   job.check = FromRestCheck(from_rest_starts, threads);
   ReachEffort effort;
@@ -107,7 +109,8 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   if (name == "fourier") job.mode = FourierProblem{};
   if (name == "reach") {
     job.mode = ReachProblem{effort, alpha.value_or(kNaN),
-                            harmonics ? DriveFamily::Fourier(*harmonics) : DriveFamily{}};
+                            harmonics ? DriveFamily::Fourier(*harmonics) : DriveFamily{},
+                            T0_range ? T0_range->first : kNaN, T0_range ? T0_range->second : kNaN};
   }
   job.Validate();
   const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
@@ -158,6 +161,8 @@ constexpr const char* kOptimizeOptionsDoc =
     "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2:\n"
     "            the Halton points of each step K >= 2 (>= 1), its Nelder-Mead polishes (>= 1)\n"
     "            and their evaluations (>= 0)\n"
+    "    T0_range  reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] (holding T0),\n"
+    "            the bound tied to T0, v_mean/sqrt(T0) maximised; frequency in the result\n"
     "Returns a dict. For a problem: the keys of solve for the optimum (A, c, phi0, phi1, "
     "alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations; cos, sin "
     "and coefficients for fourier), problem, status ('ok', 'no_valid_orbit', "
@@ -204,6 +209,7 @@ void BindOptimize(py::module_& m) {
         py::arg("drive_evaluations") = ReachEffort{}.drive_evaluations,
         py::arg("drive_polishes") = ReachEffort{}.drive_polishes,
         py::arg("drive_local_evaluations") = ReachEffort{}.drive_local_evaluations,
+        py::arg("T0_range") = py::none(),
         py::arg("threads") = AttractorOptions{}.threads);
 }
 

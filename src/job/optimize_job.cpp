@@ -92,14 +92,19 @@ ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
   TellStage(o.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
                                     "(simulated starts; up to a minute)",
                                     sine ? 2 : 3));
-  ReachJobResult r{o.params, o.search.gait.rho_max,
-                   OptimizeReach(o.params, robust, ReachOf(o, job.reach, job.alpha)), {}};
+  ReachOptions sine_options = ReachOf(o, job.reach, job.alpha);
+  sine_options.T0_min = job.T0_min;
+  sine_options.T0_max = job.T0_max;
+  ReachJobResult r{o.params, o.search.gait.rho_max, OptimizeReach(o.params, robust, sine_options),
+                   {}};
   if (!sine) {
     TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest Fourier drive from rest, K = 2 "
                                       "to {} (simulated starts; up to {} minutes)",
                                       job.drive.harmonics, job.drive.harmonics - 1));
-    const ReachOptions options = job.reach.DriveOptions(job.drive, o.search.gait.force_bound,
-                                                        job.alpha, CheckOf(o));
+    ReachOptions options =
+        job.reach.DriveOptions(job.drive, o.search.gait.force_bound, job.alpha, CheckOf(o));
+    options.T0_min = job.T0_min;
+    options.T0_max = job.T0_max;
     r.ladder = ClimbDriveLadder(o.params, robust, r.reach, options).steps;
     r.reach = r.ladder.back();
   }
@@ -188,7 +193,10 @@ void OptimizeJobOptions::Validate() const {
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
     job->reach.Validate();
     job->drive.Validate();
-    ReachOf(*this, job->reach, job->alpha).Validate();
+    ReachOptions reach = ReachOf(*this, job->reach, job->alpha);
+    reach.T0_min = job->T0_min;
+    reach.T0_max = job->T0_max;
+    reach.Validate();
   }
 }
 

@@ -120,6 +120,15 @@ std::vector<double> DriveCoordinates(const DriveFamily& family, const Forcing& f
   return g;
 }
 
+Forcing ScaledDrive(const Forcing& forcing, double factor) {
+  std::vector<double> a(static_cast<std::size_t>(forcing.harmonics())), b = a;
+  for (int k = 1; k <= forcing.harmonics(); ++k) {
+    a[static_cast<std::size_t>(k - 1)] = factor * forcing.a(k);
+    b[static_cast<std::size_t>(k - 1)] = factor * forcing.b(k);
+  }
+  return Forcing::Fourier(factor * forcing.mean(), a, b, forcing.phi0());
+}
+
 Forcing WithHarmonicsOf(const DriveFamily& family, const Forcing& forcing) {
   if (family.sine() || forcing.harmonics() >= family.harmonics) return forcing;
   std::vector<double> a(static_cast<std::size_t>(family.harmonics), 0.0), b = a;

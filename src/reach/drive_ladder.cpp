@@ -21,7 +21,9 @@ DriveLadder ClimbDriveLadder(const Params& params, const OptimizeResult& seed,
     step.drive = DriveFamily::Fourier(k);
     step.seeds.clear();
     for (const ReachResult& below : ladder.steps) {
-      if (!std::isnan(below.mean_velocity)) step.seeds.push_back({below.forcing, below.alpha});
+      if (!std::isnan(below.mean_velocity)) {
+        step.seeds.push_back({below.forcing, below.alpha, below.T0});
+      }
     }
     ladder.steps.push_back(OptimizeReach(params, seed, step));
   }

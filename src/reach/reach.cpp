@@ -43,39 +43,58 @@ constexpr double kPolishApart = 0.05;
 // Starting drives besides the robust gait, and local polishes, at most.
 constexpr long long kMaxSeeds = kMaxHarmonics;
 constexpr long long kMaxPolishStarts = 64;
+// With T0 free: the frequencies at which the first starting drive is scored before the search.
+constexpr int kFrequencyStarts = 5;
 
 using Point = detail::BoxPoint;
 
-// The problem NLopt sees: the box, the robot at y, and the points seen so far.
+// The problem NLopt sees: the box, the robot at y, and the points seen so far. The coordinates
+// are the drive's, then alpha (when free), then log T0 (when free).
 struct Context {
   Params params;
   DriveFamily family;
-  double bound = 0.0;
+  double bound = 0.0;        // the force bound at the robot's T0
+  double bound_ratio = 0.0;  // the force bound over T0
   double phi0 = 0.0;
-  double fixed_alpha = 0.0;  // NaN: alpha is the last coordinate
+  double fixed_alpha = 0.0;  // NaN: alpha is a coordinate
+  double log_T0_min = 0.0;   // NaN: T0 is the robot's
+  double log_T0_max = 0.0;
   double penalty = 0.0;
   FromRestOptions search;
   std::vector<Point> seen;
   int evaluations = 0;
   int rejected_evaluations = 0;
 
-  Forcing ForceAt(const double* y) const { return DriveAt(family, y, bound, phi0); }
+  bool FreeT0() const { return !std::isnan(log_T0_min); }
+  int T0Index() const { return family.Dimension() + (std::isnan(fixed_alpha) ? 1 : 0); }
+  Params ParamsAt(const double* y) const {
+    Params p = params;
+    if (FreeT0()) p.T0 = std::exp(std::clamp(y[T0Index()], log_T0_min, log_T0_max));
+    return p;
+  }
+  double BoundAt(double T0) const { return FreeT0() ? bound_ratio * T0 : bound; }
+  Forcing ForceAt(const double* y) const {
+    return DriveAt(family, y, BoundAt(ParamsAt(y).T0), phi0);
+  }
   double AlphaAt(const double* y) const {
     return std::isnan(fixed_alpha) ? y[family.Dimension()] : fixed_alpha;
   }
-  double Score(const Attractors& a) const {
-    return a.event_limit_starts > 0 || std::isnan(a.mean_velocity) ? penalty : a.mean_velocity;
+  // The mean velocity, or with T0 free the speed in units of sqrt(mu g L), v_mean / sqrt(T0)
+  // (docs/reach.md, "Frequency"); the penalty when a start ended in event_limit.
+  double Score(const Attractors& a, double T0) const {
+    if (a.event_limit_starts > 0 || std::isnan(a.mean_velocity)) return penalty;
+    return FreeT0() ? a.mean_velocity / std::sqrt(T0) : a.mean_velocity;
   }
 };
 
-// The mean velocity from rest at y; infeasible (the penalty) when a start ends in event_limit.
+// The objective at y; infeasible (the penalty) when a start ends in event_limit.
 double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) {
   auto* ctx = static_cast<Context*>(data);
+  const Params p = ctx->ParamsAt(y);
   const Forcing f = ctx->ForceAt(y);
-  const double alpha = ctx->AlphaAt(y);
-  const Attractors a = FindAttractors(f, ctx->params, alpha, ctx->search);
+  const Attractors a = FindAttractors(f, p, ctx->AlphaAt(y), ctx->search);
   ++ctx->evaluations;
-  const double score = ctx->Score(a);
+  const double score = ctx->Score(a, p.T0);
   if (!(score > ctx->penalty)) ++ctx->rejected_evaluations;
   ctx->seen.push_back({std::vector<double>(y, y + n), score});
   return score;
@@ -119,6 +138,7 @@ ReachSpread Spread(const Forcing& forcing, const Params& params, double alpha,
 struct Candidate {
   Forcing forcing;
   double alpha;
+  Params params;  // the robot's, or at the candidate's T0
   Attractors attractors;
   bool is_seed;
 };
@@ -129,21 +149,34 @@ void SearchBoxOf(const Context& ctx, const ReachOptions& options,
                  const std::vector<DriveSeed>& starts, std::vector<double>& lower,
                  std::vector<double>& upper) {
   DriveBox(ctx.family, lower, upper);
-  if (!std::isnan(options.alpha)) return;
-  double lo = options.alpha_min, hi = options.alpha_max;
-  for (const DriveSeed& d : starts) {
-    lo = std::min(lo, d.alpha);
-    hi = std::max(hi, d.alpha);
+  if (std::isnan(options.alpha)) {
+    double lo = options.alpha_min, hi = options.alpha_max;
+    for (const DriveSeed& d : starts) {
+      lo = std::min(lo, d.alpha);
+      hi = std::max(hi, d.alpha);
+    }
+    lower.push_back(lo);
+    upper.push_back(hi);
   }
-  lower.push_back(lo);
-  upper.push_back(hi);
+  if (ctx.FreeT0()) {
+    lower.push_back(ctx.log_T0_min);
+    upper.push_back(ctx.log_T0_max);
+  }
+}
+
+// The T0 of a starting drive: its own, else the robot's.
+double SeedT0(const Context& ctx, const DriveSeed& d) {
+  return std::isnan(d.T0) ? ctx.params.T0 : d.T0;
 }
 
 // The box point of a starting drive (its force's coordinates, then its alpha when free); empty
 // when its force is not of the family.
 std::vector<double> PointOf(const Context& ctx, const DriveSeed& d) {
-  std::vector<double> y = DriveCoordinates(ctx.family, d.forcing, ctx.bound);
-  if (!y.empty() && std::isnan(ctx.fixed_alpha)) y.push_back(d.alpha);
+  const double T0 = SeedT0(ctx, d);
+  std::vector<double> y = DriveCoordinates(ctx.family, d.forcing, ctx.BoundAt(T0));
+  if (y.empty()) return y;
+  if (std::isnan(ctx.fixed_alpha)) y.push_back(d.alpha);
+  if (ctx.FreeT0()) y.push_back(std::log(T0));
   return y;
 }
 
@@ -185,14 +218,15 @@ const Candidate* Winner(std::vector<Candidate>& candidates, const Context& ctx,
   // Best first (ties: the seed, the simpler gait); infeasible candidates last.
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](const Candidate& a, const Candidate& b) {
-                     const double sa = ctx.Score(a.attractors), sb = ctx.Score(b.attractors);
+                     const double sa = ctx.Score(a.attractors, a.params.T0),
+                                  sb = ctx.Score(b.attractors, b.params.T0);
                      return sa > sb || (sa == sb && a.is_seed && !b.is_seed);
                    });
   const Candidate* best = nullptr;
   for (const Candidate& c : candidates) {
-    if (!(ctx.Score(c.attractors) > ctx.penalty)) break;
+    if (!(ctx.Score(c.attractors, c.params.T0) > ctx.penalty)) break;
     const ReachSpread spread =
-        Spread(c.forcing, ctx.params, c.alpha, options.check, c.attractors.mean_velocity);
+        Spread(c.forcing, c.params, c.alpha, options.check, c.attractors.mean_velocity);
     if (best == nullptr) {
       best = &c;
       out.spread = spread;
@@ -230,6 +264,107 @@ std::string ForceText(const ReachResult& out) {
   }
   return fmt::format("{}, c = {:.6g}, max |F| = {:.6g}", out.drive.Describe(), out.forcing.mean(),
                      out.max_abs_force);
+}
+
+// The search's problem: the robot, the family, the bound (tied to T0 when T0 is free), the
+// seed's motor phase.
+Context ContextOf(const Params& params, const ReachOptions& options, double bound, double phi0) {
+  Context ctx;
+  ctx.params = params;
+  ctx.family = options.drive;
+  ctx.bound = bound;
+  ctx.bound_ratio = bound / params.T0;
+  ctx.phi0 = phi0;
+  ctx.fixed_alpha = options.alpha;
+  ctx.log_T0_min = std::log(options.T0_min);
+  ctx.log_T0_max = std::log(options.T0_max);
+  // Below every score: a mean velocity is far below the force bound in units of omega L (the
+  // force cannot even move the capsule alone), and v / sqrt(T0) below bound / sqrt(T0_min).
+  const double top_bound = ctx.FreeT0() ? ctx.BoundAt(options.T0_max) : bound;
+  const double low_root = ctx.FreeT0() ? std::sqrt(std::min(options.T0_min, 1.0)) : 1.0;
+  ctx.penalty = kInfeasibleScore * top_bound / low_root;
+  ctx.search = options.search;
+  return ctx;
+}
+
+// Scores every starting drive first (so that the polishes and the candidates know them) and
+// returns the first one's point, where the global stage starts (the middle of the box without
+// one). Throws std::invalid_argument for a seed outside the family.
+std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& starts,
+                                bool have_seed, const std::vector<double>& lower,
+                                const std::vector<double>& upper) {
+  std::vector<double> y0(lower.size());
+  for (std::size_t i = 0; i < y0.size(); ++i) y0[i] = 0.5 * (lower[i] + upper[i]);
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const std::vector<double> y = PointOf(ctx, starts[i]);
+    Require(!y.empty(),
+            fmt::format("seeds[{}] is invalid: expected a force of the family ({}) with {} and the "
+                        "seed's motor phase",
+                        i - (have_seed ? 1 : 0), ctx.family.Describe(),
+                        BoundText(ctx.family, ctx.BoundAt(SeedT0(ctx, starts[i])))));
+    if (i == 0) y0 = y;
+    Objective(static_cast<unsigned>(y.size()), y.data(), nullptr, &ctx);
+  }
+  return y0;
+}
+
+// The best search points and the starting drives, simulated again with the full settings (the
+// robust gait's check from rest is reused when its alpha is the robot's).
+std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
+                               const std::vector<Point>& points,
+                               const std::vector<DriveSeed>& starts, const ReachSeed& seed) {
+  std::vector<Candidate> candidates;
+  for (const Point& p : points) {
+    const Params params = ctx.ParamsAt(p.y.data());
+    const Forcing f = ctx.ForceAt(p.y.data());
+    const double alpha = ctx.AlphaAt(p.y.data());
+    candidates.push_back(
+        {f, alpha, params, FindAttractors(f, params, alpha, options.check), false});
+    ++ctx.evaluations;
+  }
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const double alpha = std::isnan(options.alpha) ? starts[i].alpha : options.alpha;
+    Params params = ctx.params;
+    params.T0 = SeedT0(ctx, starts[i]);
+    const Forcing f = WithHarmonicsOf(ctx.family, starts[i].forcing);
+    if (i == 0 && seed.from_rest.checked && alpha == seed.gait.solution.orbit.alpha) {
+      candidates.push_back({f, alpha, params, seed.from_rest.attractors, false});
+      continue;
+    }
+    candidates.push_back(
+        {f, alpha, params, FindAttractors(f, params, alpha, options.check), false});
+    ++ctx.evaluations;
+  }
+  return candidates;
+}
+
+// The winner into the result, with its message.
+void Report(const Candidate& best, const Context& ctx, const ReachOptions& options,
+            const std::string& message, ReachResult& out) {
+  out.forcing = best.forcing;
+  out.max_abs_force = out.forcing.MaxAbs();
+  out.force_bound = ctx.BoundAt(best.params.T0);
+  out.alpha = best.alpha;
+  out.T0 = best.params.T0;
+  out.attractors = best.attractors;
+  out.mean_velocity = best.attractors.mean_velocity;
+  if (ctx.FreeT0()) out.physical_speed = out.mean_velocity / std::sqrt(out.T0);
+  out.seed_won = best.is_seed;
+  out.summary = AttractorsSummary(out.attractors, options.check.attractor.motion.max_period);
+  const double seed_v =
+      out.seed.from_rest.checked ? out.seed.from_rest.attractors.mean_velocity : ReachResult::kNaN;
+  out.message = fmt::format(
+      "fastest motion from rest with {}: mean velocity {:.6g} ({}, alpha = {:.6g}){}{}{}{}{}",
+      BoundText(ctx.family, out.force_bound), out.mean_velocity, ForceText(out), out.alpha,
+      ctx.FreeT0() ? fmt::format(" at T0 = {:.6g}: speed {:.6g} sqrt(mu g L)", out.T0,
+                                 out.physical_speed)
+                   : std::string(),
+      SeedComparison(out, seed_v),
+      out.status == OptimizeStatus::kMaxTime ? "; the search stopped at its time limit" : "",
+      out.robust_to_settings ? ""
+                             : "; WARNING: no candidate keeps its mean velocity under other "
+                               "numerical settings (see the spread)",
+      message.empty() ? "" : "; " + message);
 }
 
 }  // namespace
@@ -292,6 +427,11 @@ void ReachOptions::Validate() const {
                         seeds[i].alpha));
   }
   RequireCount("polish_starts", polish_starts, 1, kMaxPolishStarts);
+  Require((std::isnan(T0_min) && std::isnan(T0_max)) ||
+              (T0_min > 0.0 && T0_min < T0_max && std::isfinite(T0_max)),
+          fmt::format("T0_min = {}, T0_max = {} are invalid: expected 0 < T0_min < T0_max, finite "
+                      "(or both NaN: T0 fixed)",
+                      T0_min, T0_max));
   Require(candidates >= 1,
           fmt::format("candidates = {} is invalid: expected at least 1", candidates));
   search.Validate();
@@ -316,6 +456,35 @@ ReachResult OptimizeReach(const Params& params, const ReachOptions& options) {
   return OptimizeReach(params, OptimizeForcing(seed_params, design), options);
 }
 
+namespace {
+
+// With T0 free, the sine's reach at kFrequencyStarts frequencies spread evenly in log T0 over
+// the range, its ends included, each with its share of the budget and its own robust seed: the
+// joint search over the shape, alpha and T0 then starts from the best fixed-frequency drives
+// (the speed can peak at an end of the range, where a search of the joint box rarely looks).
+std::vector<DriveSeed> FrequencySeeds(const Params& params, const ReachOptions& options,
+                                      double bound) {
+  ReachOptions fixed = options;
+  fixed.T0_min = fixed.T0_max = ReachOptions::kNaN;
+  fixed.seeds.clear();
+  fixed.global_evaluations = std::max(1, options.global_evaluations / kFrequencyStarts);
+  fixed.local_evaluations = options.local_evaluations / kFrequencyStarts;
+  fixed.candidates = 1;
+  std::vector<DriveSeed> seeds;
+  for (int i = 0; i < kFrequencyStarts; ++i) {
+    Params at = params;
+    at.T0 = std::exp(std::log(options.T0_min) + (std::log(options.T0_max) -
+                                                 std::log(options.T0_min)) *
+                                                    i / (kFrequencyStarts - 1));
+    fixed.force_bound = bound / params.T0 * at.T0;
+    const ReachResult r = OptimizeReach(at, fixed);
+    if (!std::isnan(r.mean_velocity)) seeds.push_back({r.forcing, r.alpha, at.T0});
+  }
+  return seeds;
+}
+
+}  // namespace
+
 ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                           const ReachOptions& options) {
   options.Validate();
@@ -330,34 +499,20 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   const Orbit& so = seed.solution.orbit;
   const bool have_seed = seed.found() && so.forcing.harmonic();
   if (have_seed) out.seed.from_rest = CheckGaitFromRest(so, params, options.check);
+  Require(std::isnan(options.T0_min) || (options.T0_min <= params.T0 && params.T0 <= options.T0_max),
+          fmt::format("T0 = {} is invalid: expected T0_min = {} <= T0 <= T0_max = {} (the robot's "
+                      "own frequency is in the range searched)",
+                      params.T0, options.T0_min, options.T0_max));
 
-  Context ctx;
-  ctx.params = params;
-  ctx.family = options.drive;
-  ctx.bound = bound;
-  ctx.phi0 = have_seed ? so.forcing.phi0() : 0.0;
-  ctx.fixed_alpha = options.alpha;
-  ctx.penalty = kInfeasibleScore * bound;
-  ctx.search = options.search;
+  Context ctx = ContextOf(params, options, bound, have_seed ? so.forcing.phi0() : 0.0);
   std::vector<DriveSeed> starts = options.seeds;
-  if (have_seed) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha});
+  if (have_seed) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
+  if (ctx.FreeT0() && ctx.family.sine()) {
+    for (const DriveSeed& d : FrequencySeeds(params, options, bound)) starts.push_back(d);
+  }
   std::vector<double> lower, upper;
   SearchBoxOf(ctx, options, starts, lower, upper);
-  // The global stage starts at the first starting drive (the middle of the box without one);
-  // every starting drive is scored first, so that the polish and the candidates know it.
-  std::vector<double> y0(lower.size());
-  for (std::size_t i = 0; i < y0.size(); ++i) y0[i] = 0.5 * (lower[i] + upper[i]);
-  bool first = true;
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    const std::vector<double> y = PointOf(ctx, starts[i]);
-    Require(!y.empty(), fmt::format("seeds[{}] is invalid: expected a force of the family ({}) "
-                                    "with {} and the seed's motor phase",
-                                    i - (have_seed ? 1 : 0), ctx.family.Describe(),
-                                    BoundText(ctx.family, bound)));
-    if (first) y0 = y;
-    first = false;
-    Objective(static_cast<unsigned>(y.size()), y.data(), nullptr, &ctx);
-  }
+  const std::vector<double> y0 = ScoreStarts(ctx, starts, have_seed, lower, upper);
 
   const auto search_start = std::chrono::steady_clock::now();
   const detail::BoxSearchResult found = Search(ctx, options, lower, upper, y0);
@@ -365,57 +520,22 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
   out.algorithm = options.global_algorithm + "+" + options.local_algorithm;
 
-  // Re-check with the full settings: the best search points, the seed and the other starts.
-  std::vector<Candidate> candidates;
-  for (const Point& p : found.candidates) {
-    const Forcing f = ctx.ForceAt(p.y.data());
-    const double alpha = ctx.AlphaAt(p.y.data());
-    candidates.push_back({f, alpha, FindAttractors(f, params, alpha, options.check), false});
-    ++ctx.evaluations;
-  }
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    const bool is_seed = have_seed && i == 0;
-    const double alpha = std::isnan(options.alpha) ? starts[i].alpha : options.alpha;
-    if (is_seed && alpha == so.alpha) {
-      candidates.push_back({WithHarmonicsOf(ctx.family, so.forcing), so.alpha,
-                            out.seed.from_rest.attractors, true});
-      continue;
-    }
-    const Forcing f = WithHarmonicsOf(ctx.family, starts[i].forcing);
-    candidates.push_back({f, alpha, FindAttractors(f, params, alpha, options.check), is_seed});
-    ++ctx.evaluations;
-  }
+  std::vector<Candidate> candidates = Recheck(ctx, options, found.candidates, starts, out.seed);
+  if (have_seed) candidates[found.candidates.size()].is_seed = true;
   out.evaluations = ctx.evaluations;
   out.rejected_evaluations = ctx.rejected_evaluations;
   const Candidate* best = Winner(candidates, ctx, options, out);
-  const std::string& message = found.message;
   if (best == nullptr) {
     out.status = OptimizeStatus::kNoValidOrbit;
     out.message = fmt::format("no motion from rest without event_limit starts found with {} ({} "
                               "evaluations{}{})",
                               BoundText(ctx.family, bound), out.evaluations,
-                              message.empty() ? "" : "; ", message);
+                              found.message.empty() ? "" : "; ", found.message);
     return out;
   }
   out.status =
       found.status == OptimizeStatus::kMaxTime ? OptimizeStatus::kMaxTime : OptimizeStatus::kOk;
-  out.forcing = best->forcing;
-  out.max_abs_force = out.forcing.MaxAbs();
-  out.alpha = best->alpha;
-  out.attractors = best->attractors;
-  out.mean_velocity = best->attractors.mean_velocity;
-  out.seed_won = best->is_seed;
-  out.summary = AttractorsSummary(out.attractors, options.check.attractor.motion.max_period);
-  const double seed_v = have_seed ? out.seed.from_rest.attractors.mean_velocity : ReachResult::kNaN;
-  out.message = fmt::format(
-      "fastest motion from rest with {}: mean velocity {:.6g} ({}, alpha = {:.6g}){}{}{}{}",
-      BoundText(ctx.family, bound), out.mean_velocity, ForceText(out), out.alpha,
-      SeedComparison(out, seed_v),
-      out.status == OptimizeStatus::kMaxTime ? "; the search stopped at its time limit" : "",
-      out.robust_to_settings ? ""
-                             : "; WARNING: no candidate keeps its mean velocity under other "
-                               "numerical settings (see the spread)",
-      message.empty() ? "" : "; " + message);
+  Report(*best, ctx, options, found.message, out);
   return out;
 }
 

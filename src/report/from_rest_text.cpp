@@ -26,6 +26,12 @@ std::string ReachText(const ReachResult& r) {
   t += fmt::format("    speed from rest  mean velocity {:.6g} omega L (over {} starts)\n",
                    r.mean_velocity, r.attractors.starts);
   t += fmt::format("    from rest        {}\n", r.summary);
+  if (!std::isnan(r.physical_speed)) {
+    t += fmt::format(
+        "    frequency        T0 = {:.6g}: speed {:.6g} sqrt(mu g L) (v_mean/sqrt(T0), the "
+        "bound tied to T0)\n",
+        r.T0, r.physical_speed);
+  }
   std::string spread;
   for (const auto& [name, v] :
        {std::pair<const char*, double>{"chatter/100", r.spread.chatter_small},

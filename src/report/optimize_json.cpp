@@ -92,6 +92,9 @@ nlohmann::json ReachJson(const ReachResult& r) {
   j["drive"] = found ? DriveJson(r) : nlohmann::json(nullptr);
   j["force_bound"] = r.force_bound;
   j["max_abs_force"] = r.max_abs_force;
+  if (!std::isnan(r.physical_speed)) {
+    j["frequency"] = {{"T0", r.T0}, {"physical_speed", r.physical_speed}};
+  }
   j["alpha"] = r.alpha;
   j["mean_velocity"] = r.mean_velocity;
   j["attractors"] = found ? AttractorsJson(r.attractors) : nlohmann::json(nullptr);

@@ -164,7 +164,7 @@ TEST(OptimizeJob, BadOptionsAreRefusedNamingTheParameter) {
   job.search.gait.force_bound = 2.0;  // above T0 = 1
   EXPECT_NE(Refusal(job).find("force_bound = 2"), std::string::npos);
   job = OptimizeJobOptions{};
-  job.mode = ReachProblem{ReachEffort{}, 1.5, DriveFamily{}};
+  job.mode = ReachProblem{ReachEffort{}, 1.5, DriveFamily{}, NAN, NAN};
   EXPECT_NE(Refusal(job).find("alpha = 1.5"), std::string::npos);
   job.mode = MainJob{ReachEffort{0, 4}};
   EXPECT_NE(Refusal(job).find("n_x = 0"), std::string::npos);

@@ -52,6 +52,10 @@ struct ReachProblem {
   ReachEffort reach;
   double alpha = std::numeric_limits<double>::quiet_NaN();  ///< fixed 0 < alpha < 1; NaN: free
   DriveFamily drive{};  ///< the forces searched (the sine by default)
+  /// The motor's frequency free: T0 in [T0_min, T0_max] with the bound tied to it, the
+  /// objective v_mean / sqrt(T0) (ReachOptions::T0_min); NaN: T0 fixed.
+  double T0_min = std::numeric_limits<double>::quiet_NaN();
+  double T0_max = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// What the job runs: each mode holds the settings only it uses.

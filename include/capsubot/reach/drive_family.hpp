@@ -62,6 +62,9 @@ Forcing DriveAt(const DriveFamily& family, const double* y, double bound, double
 std::vector<double> DriveCoordinates(const DriveFamily& family, const Forcing& forcing,
                                      double bound);
 
+/// The same series times `factor` (every coefficient; phi0 kept).
+Forcing ScaledDrive(const Forcing& forcing, double factor);
+
 /// A force of the family written with the family's K harmonics (the missing ones 0): the same
 /// force. The sine family returns it unchanged.
 Forcing WithHarmonicsOf(const DriveFamily& family, const Forcing& forcing);

@@ -48,6 +48,7 @@ ForcingDesignOptions RobustSeedDesign();
 struct DriveSeed {
   Forcing forcing;
   double alpha = std::numeric_limits<double>::quiet_NaN();
+  double T0 = std::numeric_limits<double>::quiet_NaN();  ///< its T0; NaN: the robot's
 };
 
 struct ReachOptions {
@@ -66,6 +67,13 @@ struct ReachOptions {
   std::vector<DriveSeed> seeds;
   /// Local polishes, each from one of the best distinct points of the global stage; >= 1.
   int polish_starts = 1;
+  /// The motor's frequency free (docs/reach.md, "Frequency"): T0 = mu g/(omega^2 L) is a
+  /// variable in [T0_min, T0_max] (log scale; the robot's T0 must lie in it), the force bound
+  /// is tied to it (force_bound / T0 stays the robot's ratio: a force bound in newtons tied to
+  /// the friction force), and the objective is the speed in units of sqrt(mu g L),
+  /// v_mean / sqrt(T0). Both NaN: T0 is the robot's and the objective is v_mean.
+  double T0_min = kNaN;
+  double T0_max = kNaN;
   /// A fixed mass ratio (0 < alpha < 1); NaN: alpha is a variable in [alpha_min, alpha_max].
   double alpha = kNaN;
   double alpha_min = 0.05;  ///< lower end of the alpha box; 0 < alpha_min < alpha_max
@@ -144,7 +152,10 @@ struct ReachResult {
   Forcing forcing;
   DriveFamily drive;            ///< the family searched
   double max_abs_force = kNaN;  ///< the winner's max |F| (exact; <= the bound)
-  double force_bound = kNaN;    ///< the bound the search kept
+  double force_bound = kNaN;    ///< the bound the winner kept (tied to its T0 when free)
+  double T0 = kNaN;             ///< the winner's T0 (the robot's unless T0 was free)
+  /// With T0 free: the winner's speed in units of sqrt(mu g L), mean_velocity / sqrt(T0).
+  double physical_speed = kNaN;
   double alpha = kNaN;          ///< the winner's mass ratio
   double mean_velocity = kNaN;  ///< mean over the full start grid (units of omega L)
   Attractors attractors;        ///< of the winner, full settings
