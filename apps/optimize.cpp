@@ -50,6 +50,7 @@ struct OptimizeCliOptions {
   FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
   double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
   std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
+  std::vector<double> band_levels = MainJob{}.band_levels;  // main job: the speed bands' levels
   CLI::App* cmd = nullptr;
 };
 
@@ -71,6 +72,7 @@ const std::vector<OptionUse> kOptionUses = {
     {"--reach-local-evaluations", {"", "reach"}},
     {"--reach-seconds", {"", "reach"}},
     {"--from-rest-csv", {""}},
+    {"--band-levels", {""}},
 };
 
 std::string RunName(const std::string& problem) {
@@ -116,7 +118,7 @@ std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* opt
 OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   OptimizeJobOptions job;
   const std::string& problem = opt.problem;
-  if (problem.empty()) job.mode = MainJob{opt.from_rest.Effort()};
+  if (problem.empty()) job.mode = MainJob{opt.from_rest.Effort(), opt.band_levels};
   if (problem == "phase") job.mode = PhaseProblem{opt.A, opt.c};
   if (problem == "forcing") job.mode = ForcingProblem{};
   if (problem == "fourier") job.mode = FourierProblem{};
@@ -314,6 +316,12 @@ Command AddOptimizeCommand(CLI::App& app) {
   AddFromRestOptions(*cmd, opt->from_rest, true);
   cmd->add_option("--alpha", opt->alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
+  cmd->add_option("--band-levels", opt->band_levels,
+                  "main job: the levels of the speed bands, fractions of the speed from rest in "
+                  "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
+                  "mean speed from rest falls below each (docs/optimize.md)")
+      ->delimiter(',')
+      ->capture_default_str();
   AddSearchOptions(*cmd, *opt);
   AddOutputOptions(*cmd, *opt);
   opt->cmd = cmd;
@@ -327,7 +335,8 @@ Command AddOptimizeCommand(CLI::App& app) {
   // The reach effort's fields as the flags that set them.
   static const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
                                         {"reach_local_evaluations", "--reach-local-evaluations"},
-                                        {"reach_seconds", "--reach-seconds"}};
+                                        {"reach_seconds", "--reach-seconds"},
+                                        {"band_levels", "--band-levels"}};
   return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 

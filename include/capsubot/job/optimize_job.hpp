@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
@@ -21,10 +22,13 @@
 namespace capsubot {
 
 /// The main job: P1 at c = A = T0/2 without margins, P2 with the job's margins checked from
-/// rest, the reach search seeded with it, both motions continued in T0, e and alpha, P2
-/// without margins (valid; stable).
+/// rest, the reach search seeded with it, both motions continued in T0, e and alpha with the
+/// speed bands of their robots, P2 without margins (valid; stable).
 struct MainJob {
   ReachEffort reach;
+  /// The levels of the speed bands of both motions (SpeedBandOptions::levels: fractions of the
+  /// speed from rest, each in (0, 1)); the bands' starts are the job's check from rest.
+  std::vector<double> band_levels = {0.95};
 };
 /// P1: the best impact phase phi0 for the force shape F = A sin(phi + phi0) + c.
 struct PhaseProblem {
@@ -78,8 +82,8 @@ struct MainJobResult {
   OptimizeResult robust;      ///< P2 with the margins (its from-rest check: reach.seed)
   ReachResult reach;          ///< the fastest motion from rest
   GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
-  /// The most common motion from rest of the reach winner continued, when it is periodic;
-  /// empty otherwise.
+  /// The most common motion from rest of the reach winner continued, when it is periodic (its
+  /// speed bands alone otherwise); empty without a winner.
   GaitRobustness reach_robustness;
   OptimizeResult fastest;  ///< P2 without margins
   OptimizeResult stable;   ///< P2 without margins, spectral radius <= 1
