@@ -13,13 +13,22 @@
 namespace capsubot {
 namespace {
 
-// The nearest special point on one part of the branch (`points`: the branch's special points
-// kept, ParameterRobustness::special_points): the backward part (points before the start,
-// walked from the start down) or the forward part.
+// Whether the motion ends or loses stability at a special point (a fold, period doubling or
+// Neimark-Sacker point); at a grazing or segment change it goes on with other impacts or
+// another stick/slide pattern, and the branch goes on through it.
+bool EndsOrDestabilises(SpecialPointType type) {
+  return type == SpecialPointType::kFold || type == SpecialPointType::kPeriodDoubling ||
+         type == SpecialPointType::kNeimarkSacker;
+}
+
+// The nearest fold, period doubling or Neimark-Sacker point on one part of the branch (`points`:
+// the branch's special points kept, ParameterRobustness::special_points): the backward part
+// (points before the start, walked from the start down) or the forward part.
 MotionLimit NearestLimit(const Branch& b, const std::vector<SpecialPoint>& points, bool forward) {
   MotionLimit limit;
   const SpecialPoint* nearest = nullptr;
   for (const SpecialPoint& sp : points) {
+    if (!EndsOrDestabilises(sp.type)) continue;
     const bool on_forward = sp.after_point >= b.start_index;
     if (on_forward != forward) continue;
     // Backward: the one closest to the start has the largest index; forward: the smallest.
@@ -195,6 +204,9 @@ const char* Meaning(SpecialPointType type) {
   return "a speed extremum";
 }
 
+// The special points inside a band listed one by one in the text.
+constexpr std::size_t kListedInBand = 6;
+
 // One edge of a band in words: "0.982 (+-0.0015)" or "beyond 2 (the range's end)".
 std::string EdgeText(const BandEdge& e, const ValueText& value) {
   if (!e.within) return fmt::format("beyond {} (the end of the range)", value(e.parameter));
@@ -260,9 +272,17 @@ std::string ParameterRobustness::BandText(const ValueText& value, const std::str
     t += fmt::format("{}  {:g} % of it for {} from {} to {}\n", indent, 100.0 * b.down[i].level,
                      name, EdgeText(b.down[i], value), EdgeText(b.up[i], value));
   }
-  for (const SpecialPoint& sp : InBand()) {
-    t += fmt::format("{}  inside the {:g} % band: {} at {} = {}; the speed goes on\n", indent,
-                     100.0 * b.down.front().level, Meaning(sp.type), name, value(sp.parameter));
+  const std::vector<SpecialPoint> inside = InBand();
+  for (std::size_t i = 0; i < inside.size() && i < kListedInBand; ++i) {
+    const SpecialPoint& sp = inside[i];
+    t += fmt::format("{}  inside the {:g} % band: {} at {} = {}; {}\n", indent,
+                     100.0 * b.down.front().level, Meaning(sp.type), name, value(sp.parameter),
+                     EndsOrDestabilises(sp.type) ? "the speed from rest goes on"
+                                                 : "the motion goes on, and its speed");
+  }
+  if (inside.size() > kListedInBand) {
+    t += fmt::format("{}  inside the {:g} % band: {} more special points\n", indent,
+                     100.0 * b.down.front().level, inside.size() - kListedInBand);
   }
   if (chatter_changes > 0) {
     t += fmt::format("{}  ({} changes of a chattering impact count left out: not bifurcations)\n",
@@ -287,7 +307,13 @@ std::vector<SpecialPoint> ParameterRobustness::InBand() const {
   std::vector<SpecialPoint> in;
   if (band.status != SpeedBandStatus::kOk || band.down.empty()) return in;
   for (const SpecialPoint& sp : special_points) {
-    if (band.Contains(band.down.front().level, sp.parameter)) in.push_back(sp);
+    if (!band.Contains(band.down.front().level, sp.parameter)) continue;
+    // The same point found from both of its sides (a branch through it and back) once.
+    const bool again = std::any_of(in.begin(), in.end(), [&](const SpecialPoint& o) {
+      return o.type == sp.type && std::abs(o.parameter - sp.parameter) <=
+                                      std::max(o.accuracy, sp.accuracy);
+    });
+    if (!again) in.push_back(sp);
   }
   return in;
 }
@@ -360,6 +386,16 @@ GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions
   return ComputeMotionRobustness({orbit.forcing, Params{orbit.T0, orbit.e, 0.0}, orbit.alpha,
                                   OrbitImpactState(orbit, orbit.forcing)},
                                  options);
+}
+
+GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion) {
+  const RobustnessOptions defaults;
+  return ComputeMotionRobustness(motion, defaults);
+}
+
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit) {
+  const RobustnessOptions defaults;
+  return ComputeGaitRobustness(orbit, defaults);
 }
 
 std::string GaitRobustness::Summary(const std::string& indent) const {

@@ -46,4 +46,9 @@ GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gai
   return g;
 }
 
+GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gait) {
+  const RobustnessOptions defaults;
+  return ComputeDesignRobustness(input, gait, defaults);
+}
+
 }  // namespace capsubot

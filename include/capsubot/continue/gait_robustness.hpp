@@ -14,10 +14,11 @@
 
 namespace capsubot {
 
-/// Where the gait's motion stops being itself along one direction of a parameter: the nearest
-/// special point other than a speed extremum (a fold, period doubling, Neimark-Sacker point,
-/// grazing or segment change: the motion ends, loses stability or changes its impacts or its
-/// stick/slide pattern), or else the end of the branch (range end, lost, max points).
+/// Where the gait's motion ends or loses stability along one direction of a parameter: the
+/// nearest fold, period doubling or Neimark-Sacker point, or else the end of the branch (range
+/// end, lost: the continuation cannot go on, max points). Grazings and segment changes are no
+/// limits: the motion goes on through them with other impacts or another stick/slide pattern
+/// (ParameterRobustness::special_points lists them).
 struct MotionLimit {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -64,8 +65,8 @@ struct ParameterRobustness {
   /// The speed band (RobustnessOptions::speed_bands; status kNotRun otherwise).
   SpeedBand band;
 
-  /// The special points inside the band of its first level (none without a band): the motion
-  /// changes there, the speed from rest goes on.
+  /// The special points inside the band of its first level (none without a band), each once:
+  /// the motion changes there, the speed from rest goes on.
   std::vector<SpecialPoint> InBand() const;
   /// Plain words for the band, one line per level, the special points inside it and the
   /// chattering counts left out, each line indented by `indent`; values written by `value`, the
@@ -137,7 +138,9 @@ ParameterRobustness ContinueRobustness(const RobustnessParameter& p, const Phase
 /// `options` and reports the nearest limit each way. Throws std::invalid_argument for bad
 /// options or invalid parameters.
 GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion,
-                                       const RobustnessOptions& options = {});
+                                       const RobustnessOptions& options);
+/// The same with the default RobustnessOptions.
+GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion);
 
 /// The speed bands alone (options.band) of `robot` in T0, e and alpha, over the ranges of
 /// ComputeMotionRobustness, for a robot whose motion from rest is not one periodic motion to
@@ -149,6 +152,8 @@ GaitRobustness ComputeSpeedBands(const RobotModel& robot, const RobustnessOption
 /// after its impact (OrbitImpactState), in T0, e and alpha over the ranges of `options`, and
 /// reports the nearest limit each way. Throws std::invalid_argument for bad options or an
 /// orbit whose parameters are invalid (ComputeMotionRobustness of that state).
-GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options = {});
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options);
+/// The same with the default RobustnessOptions.
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit);
 
 }  // namespace capsubot
