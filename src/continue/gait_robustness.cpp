@@ -254,20 +254,19 @@ std::string ParameterRobustness::BandText(const ValueText& value, const std::str
   const SpeedBand& b = band;
   if (b.status == SpeedBandStatus::kNotRun) return "";
   if (b.status == SpeedBandStatus::kNoSpeed) {
-    return fmt::format("{}speed band: none, the robot does not move from rest at {} = {} (mean "
-                       "speed {})\n",
-                       indent, name, value(b.value), speed);
+    return fmt::format("{}speed band: none, the robot does not move from rest here (mean speed "
+                       "{})\n",
+                       indent, speed);
   }
   if (b.status == SpeedBandStatus::kUnsettled) {
-    return fmt::format("{}speed band: none, the speed from rest has not settled at {} = {}: {} of "
-                       "{} starts end in no periodic motion whose record's halves differ by "
-                       "more than {:g} %\n",
-                       indent, name, value(b.value), b.unsettled_starts, b.starts,
-                       100.0 * kSettledHalves);
+    return fmt::format("{}speed band: none, the speed from rest has not settled here: {} of {} "
+                       "starts end in no periodic motion whose record's halves differ by more "
+                       "than {:g} %\n",
+                       indent, b.unsettled_starts, b.starts, 100.0 * kSettledHalves);
   }
   std::string t = fmt::format(
-      "{}speed band (simulated from rest): mean speed {} at {} = {}; it stays at or above\n",
-      indent, speed, name, value(b.value));
+      "{}speed band (simulated from rest): the mean speed from rest, {}, stays at or above\n",
+      indent, speed);
   for (std::size_t i = 0; i < b.down.size() && i < b.up.size(); ++i) {
     t += fmt::format("{}  {:g} % of it for {} from {} to {}\n", indent, 100.0 * b.down[i].level,
                      name, EdgeText(b.down[i], value), EdgeText(b.up[i], value));
@@ -277,8 +276,8 @@ std::string ParameterRobustness::BandText(const ValueText& value, const std::str
     const SpecialPoint& sp = inside[i];
     t += fmt::format("{}  inside the {:g} % band: {} at {} = {}; {}\n", indent,
                      100.0 * b.down.front().level, Meaning(sp.type), name, value(sp.parameter),
-                     EndsOrDestabilises(sp.type) ? "the speed from rest goes on"
-                                                 : "the motion goes on, and its speed");
+                     EndsOrDestabilises(sp.type) ? "the speed from rest stays in the band"
+                                                 : "the motion goes on through it");
   }
   if (inside.size() > kListedInBand) {
     t += fmt::format("{}  inside the {:g} % band: {} more special points\n", indent,
