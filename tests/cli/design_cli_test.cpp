@@ -423,7 +423,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists("x.csv")) << c.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 38);
+  EXPECT_EQ(checked, 40);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {
