@@ -261,7 +261,7 @@ Command AddDesignCommand(CLI::App& app) {
                   "(0, 1), comma-separated: how far mu, e and m2 move, each way, before the mean "
                   "speed from rest falls below each (docs/design.md)")
       ->delimiter(',')
-      ->capture_default_str();
+      ->default_str("0.95");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: status, message, one_impact {m2_kg, frequency_hz, "
                 "speed_mm_s, displacement_mm, impact_velocity_m_s, energy_mj, power_mw, "

@@ -321,7 +321,7 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
                   "mean speed from rest falls below each (docs/optimize.md)")
       ->delimiter(',')
-      ->capture_default_str();
+      ->default_str("0.95");
   AddSearchOptions(*cmd, *opt);
   AddOutputOptions(*cmd, *opt);
   opt->cmd = cmd;
