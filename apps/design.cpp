@@ -44,6 +44,7 @@ struct DesignCliOptions {
   std::string output;
   std::string shard;  // "K/N", empty: the whole grid
   bool resume = false;
+  std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
 };
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -59,6 +60,7 @@ const std::vector<OptionUse> kOptionUses = {
     {"--output", {"grid"}},
     {"--shard", {"grid"}},
     {"--resume", {"grid"}},
+    {"--band-levels", {"", "from-rest"}},
 };
 
 std::string RunOf(const DesignCliOptions& opt) {
@@ -217,6 +219,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   options.input = BuildDesignInput(opt.config, {}, &settings);
   DesignOneMode one;
   if (opt.part_b) one.from_rest = FromRestPart(opt.from_rest);
+  one.band_levels = opt.band_levels;
   ShowProgress(options, one);
   options.mode = std::move(one);
   const DesignJobResult r = RunDesignJob(options);
@@ -253,6 +256,12 @@ Command AddDesignCommand(CLI::App& app) {
   cmd->add_flag("--from-rest", opt->part_b,
                 "also find the fastest motion reached from rest in each direction (part b, "
                 "simulated: a few seconds; sized by the options below)");
+  cmd->add_option("--band-levels", opt->band_levels,
+                  "the levels of the gait's speed bands, fractions of the speed from rest in "
+                  "(0, 1), comma-separated: how far mu, e and m2 move, each way, before the mean "
+                  "speed from rest falls below each (docs/design.md)")
+      ->delimiter(',')
+      ->default_str("0.95");
   cmd->add_flag("--json", opt->json,
                 "print one JSON object: status, message, one_impact {m2_kg, frequency_hz, "
                 "speed_mm_s, displacement_mm, impact_velocity_m_s, energy_mj, power_mw, "
@@ -290,7 +299,9 @@ Command AddDesignCommand(CLI::App& app) {
                       "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
                       "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
-  return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [opt] { return !opt->grids.empty(); }};
+  static const FlagNames kFlags = {{"band_levels", "--band-levels"}};
+  return {cmd, [opt, cmd] { return RunNamingFlags(kFlags, [&] { return Run(*opt, *cmd); }); },
+          [opt] { return !opt->grids.empty(); }};
 }
 
 }  // namespace capsubot::app

@@ -52,6 +52,7 @@ struct OptimizeCliOptions {
   double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
   std::string T0_range;          // reach: "LO:HI", the motor's frequency free (empty: fixed)
   std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
+  std::vector<double> band_levels = MainJob{}.band_levels;  // main job: the speed bands' levels
   CLI::App* cmd = nullptr;
 };
 
@@ -77,6 +78,7 @@ const std::vector<OptionUse> kOptionUses = {
     {"--drive-polishes", {"reach"}},
     {"--drive-local-evaluations", {"reach"}},
     {"--from-rest-csv", {""}},
+    {"--band-levels", {""}},
 };
 
 std::string RunName(const std::string& problem) {
@@ -155,7 +157,7 @@ std::pair<double, double> ParseT0Range(const std::string& text) {
 OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   OptimizeJobOptions job;
   const std::string& problem = opt.problem;
-  if (problem.empty()) job.mode = MainJob{opt.from_rest.Effort()};
+  if (problem.empty()) job.mode = MainJob{opt.from_rest.Effort(), opt.band_levels};
   if (problem == "phase") job.mode = PhaseProblem{opt.A, opt.c};
   if (problem == "forcing") job.mode = ForcingProblem{};
   if (problem == "fourier") job.mode = FourierProblem{};
@@ -369,6 +371,12 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "(holding --T0), the force bound tied to T0, the speed in units of "
                   "sqrt(mu g L), v_mean/sqrt(T0), maximised (docs/reach.md, Frequency)")
       ->type_name("LO:HI");
+  cmd->add_option("--band-levels", opt->band_levels,
+                  "main job: the levels of the speed bands, fractions of the speed from rest in "
+                  "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
+                  "mean speed from rest falls below each (docs/optimize.md)")
+      ->delimiter(',')
+      ->default_str("0.95");
   AddSearchOptions(*cmd, *opt);
   AddOutputOptions(*cmd, *opt);
   opt->cmd = cmd;
@@ -386,7 +394,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                                         {"drive_evaluations", "--drive-evaluations"},
                                         {"drive_polishes", "--drive-polishes"},
                                         {"drive_local_evaluations", "--drive-local-evaluations"},
-                                        {"harmonics", "--harmonics"}};
+                                        {"harmonics", "--harmonics"},
+                                        {"band_levels", "--band-levels"}};
   return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 

@@ -60,6 +60,20 @@ std::string GaitCells(const Gait& g, const GridColumns& grid) {
   return fmt::format("{}", fmt::join(cells, ","));
 }
 
+// How far mu, e and m2 carry the gait: its continuations (asking the interrupt) and the speed
+// bands of the robot from rest.
+RobustnessOptions RobustnessOf(const DesignOneMode& one) {
+  RobustnessOptions r;
+  r.continuation.interrupt = one.interrupt;
+  r.speed_bands = true;
+  r.band.levels = one.band_levels;
+  const DesignFromRestOptions part =
+      one.from_rest ? one.from_rest->Options() : DesignFromRestPart().Options();
+  r.band.from_rest = part.check;
+  r.band.from_rest.attractor.interrupt = one.interrupt;
+  return r;
+}
+
 DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one) {
   DesignJobResult r;
   r.input = options.input;
@@ -70,9 +84,8 @@ DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one
   if (r.design.one_impact.ok()) {
     TellStage(options.on_stage,
               fmt::format("design: 2/{} how far mu, e and m2 carry the gait", stages));
-    RobustnessOptions robustness;
-    robustness.continuation.interrupt = one.interrupt;
-    r.robustness = ComputeDesignRobustness(options.input, r.design.one_impact, robustness);
+    r.robustness =
+        ComputeDesignRobustness(options.input, r.design.one_impact, RobustnessOf(one));
   }
   if (one.from_rest) {
     TellStage(options.on_stage, "design: 3/3 the fastest motion from rest");
@@ -137,6 +150,7 @@ void DesignJobOptions::Validate() const {
   input.Validate();
   if (const auto* one = std::get_if<DesignOneMode>(&mode)) {
     if (one->from_rest) one->from_rest->Validate();
+    RobustnessOf(*one).Validate();
     return;
   }
   DesignJobGrid(input, std::get<DesignGridMode>(mode)).Validate();

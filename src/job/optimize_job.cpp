@@ -33,6 +33,17 @@ ReachOptions ReachOf(const OptimizeJobOptions& o, const ReachEffort& effort, dou
   return effort.Options(o.search.gait.force_bound, alpha, CheckOf(o));
 }
 
+// How far the main job's motions carry: their continuations (asking the job's interrupt) and
+// the speed bands of their robots from rest over the job's check grid.
+RobustnessOptions RobustnessOf(const OptimizeJobOptions& o, const MainJob& job) {
+  RobustnessOptions r;
+  r.continuation.interrupt = o.search.interrupt;
+  r.speed_bands = true;
+  r.band.levels = job.band_levels;
+  r.band.from_rest = CheckOf(o);
+  return r;
+}
+
 // The reach winner's most common motion from rest when it is periodic (its section state is on
 // it; the continuation's own Newton shooting refines it), else null.
 const Motion* PeriodicMotionFromRest(const ReachResult& reach) {
@@ -72,10 +83,17 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
                  .steps;
   TellStage(o.on_stage,
             "optimize: 4/5 how far T0, e and alpha can move (continuation of both motions)");
-  if (r.robust.found()) r.robustness = ComputeGaitRobustness(r.robust.solution.orbit);
+  const RobustnessOptions robustness = RobustnessOf(o, job);
+  if (r.robust.found()) {
+    r.robustness = ComputeGaitRobustness(r.robust.solution.orbit, robustness);
+  }
   if (const Motion* motion = PeriodicMotionFromRest(r.reach)) {
     r.reach_robustness =
-        ComputeMotionRobustness({r.reach.forcing, p, r.reach.alpha, motion->section});
+        ComputeMotionRobustness({r.reach.forcing, p, r.reach.alpha, motion->section}, robustness);
+  } else if (!std::isnan(r.reach.mean_velocity)) {
+    r.reach_robustness =
+        ComputeSpeedBands({r.reach.forcing, p, r.reach.alpha}, robustness,
+                          "its most common motion from rest is not periodic");
   }
   TellStage(o.on_stage, "optimize: 5/5 the exact optima without margins");
   r.fastest = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(kInf)));
@@ -189,6 +207,7 @@ void OptimizeJobOptions::Validate() const {
           job->drive_harmonics, kMaxHarmonics));
     }
     ReachOf(*this, job->reach, kNaN).Validate();
+    RobustnessOf(*this, *job).Validate();
   }
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
     job->reach.Validate();

@@ -41,6 +41,38 @@ nlohmann::json Limit(const MotionLimit& l, const std::string& name) {
   return j;
 }
 
+// One edge of a speed band: where it lies (the range's end when the speed stays above the
+// level up to it) and its bracket.
+nlohmann::json Edge(const BandEdge& e, const std::string& name) {
+  return {{"within", e.within},        {name, e.parameter},
+          {"inside", e.inside},        {"outside", e.outside},
+          {"accuracy", e.accuracy},    {"ratio_inside", e.ratio_inside},
+          {"ratio_outside", e.ratio_outside}};
+}
+
+// A parameter's speed band (null when not computed) with the special points inside it.
+nlohmann::json Band(const ParameterRobustness& p) {
+  const SpeedBand& b = p.band;
+  if (b.status == SpeedBandStatus::kNotRun) return nullptr;
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t i = 0; i < b.down.size() && i < b.up.size(); ++i) {
+    levels.push_back({{"level", b.down[i].level},
+                      {"down", Edge(b.down[i], p.name)},
+                      {"up", Edge(b.up[i], p.name)}});
+  }
+  nlohmann::json inside = nlohmann::json::array();
+  for (const SpecialPoint& sp : p.InBand()) {
+    inside.push_back({{"type", SpecialPointTypeName(sp.type)}, {p.name, sp.parameter}});
+  }
+  return {{"status", SpeedBandStatusName(b.status)},
+          {"nominal_speed", b.nominal_speed},
+          {"starts", b.starts},
+          {"unsettled_starts", b.unsettled_starts},
+          {"evaluations", b.evaluations},
+          {"levels", levels},
+          {"special_points_inside", inside}};
+}
+
 // One end of a curve: how it ended and its last point.
 nlohmann::json CurveEnd(BranchEnd end, const FollowResult& f, const std::string& name,
                         const CurvePoint* last) {
@@ -137,7 +169,9 @@ nlohmann::json RobustnessJson(const GaitRobustness& robustness) {
                  {"status", ContinuationStatusName(p.status)},
                  {"message", p.message},
                  {"down", Limit(p.down, p.name)},
-                 {"up", Limit(p.up, p.name)}};
+                 {"up", Limit(p.up, p.name)},
+                 {"chatter_changes", p.chatter_changes},
+                 {"band", Band(p)}};
   }
   return j;
 }

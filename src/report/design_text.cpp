@@ -103,33 +103,41 @@ std::string OneImpactText(const DesignInput& in, const DesignResult& r) {
   return t;
 }
 
-// One limit of the robustness: its words, the value with its unit and its change in percent
-// (none from a design's value of 0, e = 0: no relative change).
-std::string RobustnessLimit(const MotionLimit& l, const std::string& name, const char* unit,
-                            double value) {
+// A value of a robustness parameter with its unit and its change from the design's value in
+// percent (none from a design's value of 0, e = 0: no relative change).
+std::string ValueWithChange(double v, const char* unit, double value) {
   const std::string change =
-      value == 0.0 ? "" : fmt::format(" ({:+.3g} %)", 100.0 * (l.parameter - value) / value);
-  return l.Text(name, fmt::format("{:.6g}{}{}", l.parameter, unit, change));
+      value == 0.0 ? "" : fmt::format(" ({:+.3g} %)", 100.0 * (v - value) / value);
+  return fmt::format("{:.6g}{}{}", v, unit, change);
 }
 
-// How far mu, e and m2 carry the gait, one line per parameter and direction.
-std::string RobustnessText(const GaitRobustness& robustness) {
+// How far mu, e and m2 carry the gait of a robot of length L [m]: the continuation's limits
+// each way and the speed band.
+std::string RobustnessText(const GaitRobustness& robustness, const Gait& g, double L) {
   std::string t =
-      "  robustness        how far mu, e and m2 can move, the rest of the robot fixed, before\n"
-      "                    the gait's motion is lost (its continuation, docs/design.md):\n";
+      "  robustness        how far mu, e and m2 can move, the rest of the robot fixed: where the\n"
+      "                    gait's motion changes (its continuation) and where the speed from\n"
+      "                    rest leaves its band (simulation; docs/design.md):\n";
   const std::string indent = "                      ";
+  // The band's speeds are in omega L: in mm/s, times 1e3 omega L.
+  const double mm_s = 1e3 * g.model.omega * L;
   for (const ParameterRobustness& p : robustness.parameters) {
     const bool mass = p.name == "m2_kg";
     const std::string name = mass ? "m2" : p.name;
     const char* unit = mass ? " kg" : "";
-    if (p.status != ContinuationStatus::kOk) {
-      t += fmt::format("{}{}: not followed ({})\n", indent, name, p.message);
-      continue;
-    }
+    const auto value = [&](double v) { return ValueWithChange(v, unit, p.value); };
     t += fmt::format("{}{} = {:.6g}{}, searched in [{:.6g}, {:.6g}]{}:\n", indent, name, p.value,
                      unit, p.from, p.to, unit);
-    t += fmt::format("{}  down: {}\n", indent, RobustnessLimit(p.down, name, unit, p.value));
-    t += fmt::format("{}  up:   {}\n", indent, RobustnessLimit(p.up, name, unit, p.value));
+    if (p.status != ContinuationStatus::kOk) {
+      t += fmt::format("{}  continuation: not followed ({})\n", indent, p.message);
+    } else {
+      t += fmt::format("{}  down: {}\n", indent, p.down.Text(name, value(p.down.parameter)));
+      t += fmt::format("{}  up:   {}\n", indent, p.up.Text(name, value(p.up.parameter)));
+    }
+    ParameterRobustness named = p;
+    named.name = name;
+    t += named.BandText(value, fmt::format("{:.6g} mm/s", mm_s * p.band.nominal_speed),
+                        indent + "  ");
   }
   return t;
 }
@@ -211,7 +219,9 @@ std::string DesignJobText(const DesignJobResult& r) {
                        r.grid->output, s.seconds, s.threads);
   }
   std::string t = OneImpactText(r.input, r.design);
-  if (!r.robustness.parameters.empty()) t += RobustnessText(r.robustness);
+  if (!r.robustness.parameters.empty()) {
+    t += RobustnessText(r.robustness, r.design.one_impact, r.input.L);
+  }
   if (r.from_rest) t += FromRestText(r.input, r.from_rest_options, *r.from_rest);
   return t;
 }

@@ -86,11 +86,13 @@ std::string GaitText(const OptimizeResult& r, double rho_max) {
   return t;
 }
 
-// How far T0, e and alpha can move before a motion is lost, in plain words.
+// How far T0, e and alpha can move: where a motion changes and where the robot's speed from
+// rest leaves its band, in plain words.
 std::string RobustnessText(const GaitRobustness& robustness, const char* motion) {
   return fmt::format(
-             "    robustness       how far T0, e and alpha can move before {} is lost\n"
-             "                     (its continuation, docs/continuation.md):\n",
+             "    robustness       how far T0, e and alpha can move: where {} changes\n"
+             "                     (its continuation, docs/continuation.md) and where the speed\n"
+             "                     from rest leaves its band (simulation, docs/optimize.md):\n",
              motion) +
          robustness.Summary("                       ");
 }
@@ -232,11 +234,7 @@ std::string ResultsText(const MainJobResult& r) {
       bound);
   t += ReachText(reach);
   if (!std::isnan(reach.mean_velocity)) {
-    t += r.reach_robustness.parameters.empty()
-             ? std::string(
-                   "    robustness       not followed: its most common motion from rest "
-                   "is not periodic\n")
-             : RobustnessText(r.reach_robustness, "its most common motion from rest");
+    t += RobustnessText(r.reach_robustness, "its most common motion from rest");
   }
   t += DrivesText(r.drives, bound);
   t += "\n5. For comparison, the exact optima without margins (they graze the walls: a robot\n"

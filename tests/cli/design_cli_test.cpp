@@ -218,6 +218,32 @@ TEST(DesignCli, JsonHoldsTheRobustnessInMuEAndKilograms) {
   EXPECT_TRUE(nlohmann::json::parse(none.out).at("robustness").is_null());
 }
 
+// The speed bands in the JSON: one pair of edges per level asked for, each edge's bracket
+// around it; at 1500 Hz (T0 = 1.7e-6, narrower in mu than a fixed step) every part is computed.
+TEST(DesignCli, JsonHoldsOneBandEdgePairPerLevel) {
+  const auto r = RunCli("design --config " + ExampleConfig() + " --band-levels 0.95,0.9 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out).at("robustness");
+  for (const char* name : {"mu", "e", "m2_kg"}) {
+    const auto& band = j.at(name).at("band");
+    ASSERT_EQ(band.at("status"), "ok") << name;
+    ASSERT_EQ(band.at("levels").size(), 2U) << name;
+    for (const auto& level : band["levels"]) {
+      for (const char* side : {"down", "up"}) {
+        const auto& edge = level.at(side);
+        if (!edge.at("within").get<bool>()) continue;
+        EXPECT_GE(edge.at("ratio_inside").get<double>(), level.at("level").get<double>());
+        EXPECT_LT(edge.at("ratio_outside").get<double>(), level.at("level").get<double>());
+      }
+    }
+  }
+  const auto high = RunCli("design --config " + ExampleConfig() + " --frequency 1500 --json");
+  ASSERT_EQ(high.status, 0) << high.out;
+  for (const char* name : {"mu", "e", "m2_kg"}) {
+    EXPECT_EQ(nlohmann::json::parse(high.out)["robustness"][name]["status"], "ok") << name;
+  }
+}
+
 // Part (b) is asked for with --from-rest; without it the JSON is that of part (a) alone.
 TEST(DesignCli, WithoutFromRestTheJsonHasNoFromRestBestAndRhoMaxTakesInf) {
   const auto r = RunCli("design --config " + ExampleConfig() + " --rho-max inf --json");
@@ -380,6 +406,10 @@ std::vector<BadCase> BadCases() {
        "--config /nonexistent/robot.toml cannot be read: No such file or directory"},
       {"endless_config", "--config /dev/zero",
        "--config /dev/zero is invalid: expected a file of at most 1048576 bytes"},
+      {"band_levels", "--band-levels 0.95,1.5" + cfg,
+       "--band-levels = 1.5 is invalid: expected fractions of the speed in (0, 1)"},
+      {"band_levels_grid", "--grid m2=0.1:0.3:5 --band-levels 0.9 -o x.csv" + cfg,
+       "--band-levels is invalid with --grid"},
   };
 }
 
@@ -393,7 +423,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists("x.csv")) << c.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 38);
+  EXPECT_EQ(checked, 40);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {

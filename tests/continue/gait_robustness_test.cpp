@@ -11,6 +11,7 @@
 #include <string>
 
 #include "capsubot/attract/periodic.hpp"
+#include "capsubot/continue/parameter_branch.hpp"
 #include "capsubot/model/model_parameter.hpp"
 #include "continue/one_impact_family.hpp"
 
@@ -57,15 +58,21 @@ void CheckLimit(const Orbit& o, const ParameterRobustness& p, const MotionLimit&
     EXPECT_LE(at.distance_to_plus_one, kMultiplierTol) << at.multipliers.front();
   } else if (l.type == SpecialPointType::kPeriodDoubling) {
     EXPECT_LE(at.distance_to_minus_one, kMultiplierTol) << at.multipliers.front();
-  } else if (l.type == SpecialPointType::kGrazing) {
-    // The gait's signature (one right-wall impact per period) on the start's side, another
-    // one (or none) just beyond.
-    EXPECT_EQ(at.impacts_right + at.impacts_left, 1);
-    const PeriodicMotion beyond = Shoot(o, p.name, l.parameter + sign * kAcross, at.state);
-    EXPECT_FALSE(beyond.status == ShootingStatus::kConverged &&
-                 beyond.impacts_right + beyond.impacts_left == 1)
-        << beyond.impacts_right << " right + " << beyond.impacts_left << " left";
+  } else {
+    ADD_FAILURE() << "a limit is a fold or a period doubling here";
   }
+}
+
+// A grazing below the gait's value: the gait's signature (one right-wall impact per period) on
+// the start's side, another one (or none) just beyond.
+void CheckGrazingBelow(const Orbit& o, const ParameterRobustness& p, const SpecialPoint& sp) {
+  const PeriodicMotion at = Shoot(o, p.name, sp.parameter, sp.motion.state);
+  ASSERT_EQ(at.status, ShootingStatus::kConverged);
+  EXPECT_EQ(at.impacts_right + at.impacts_left, 1);
+  const PeriodicMotion beyond = Shoot(o, p.name, sp.parameter - kAcross, at.state);
+  EXPECT_FALSE(beyond.status == ShootingStatus::kConverged &&
+               beyond.impacts_right + beyond.impacts_left == 1)
+      << beyond.impacts_right << " right + " << beyond.impacts_left << " left";
 }
 
 TEST(GaitRobustness, EachLimitOfTheRobustGaitIsARealSpecialPoint) {
@@ -78,15 +85,87 @@ TEST(GaitRobustness, EachLimitOfTheRobustGaitIsARealSpecialPoint) {
     CheckLimit(o, p, p.up, +1);
   }
   // This gait sits close to a fold (its leading multiplier is the real 0.9 = rho_max): the
-  // motion ends in a fold when T0 rises, e falls or alpha rises, and its other side grazes the
-  // left wall when alpha falls (the kinds found by `capsubot continue` on this gait).
+  // motion ends in a fold when T0 rises, e falls or alpha rises (the kinds found by `capsubot
+  // continue` on this gait). When alpha falls it grazes the left wall and goes on with a
+  // left-wall impact: a grazing is listed, never a limit.
   EXPECT_STREQ(g.parameters[0].up.Name(), "fold");
   EXPECT_STREQ(g.parameters[1].down.Name(), "fold");
   EXPECT_STREQ(g.parameters[1].up.Name(), "range_end");  // e = 1 is the end of [0, 1]
-  EXPECT_STREQ(g.parameters[2].down.Name(), "grazing");
   EXPECT_STREQ(g.parameters[2].up.Name(), "fold");
+  const ParameterRobustness& alpha = g.parameters[2];
+  EXPECT_NE(alpha.down.type, SpecialPointType::kGrazing);
+  const SpecialPoint* grazing = nullptr;
+  for (const SpecialPoint& sp : alpha.special_points) {
+    const bool below = sp.parameter < alpha.value && sp.parameter > alpha.down.parameter;
+    // The nearest below: the gait's own grazing.
+    if (sp.type == SpecialPointType::kGrazing && below &&
+        (grazing == nullptr || sp.parameter > grazing->parameter)) {
+      grazing = &sp;
+    }
+  }
+  ASSERT_NE(grazing, nullptr);
+  CheckGrazingBelow(o, alpha, *grazing);
   EXPECT_EQ(g.parameters[0].value, 1.0);
   EXPECT_EQ(g.parameters[2].from, 0.5 * o.alpha);
+}
+
+// The main job's fastest motion from rest at T0 = 1, e = 1 (`capsubot optimize`,
+// results/optimum.json, key reach): 73 right-wall impacts in one chattering sequence (each
+// slower than the last, ended with the body resting on the wall) and 5 left ones per period.
+RobotModel ReachWinner() {
+  Params p;
+  p.T0 = 1.0;
+  p.e = 1.0;
+  return {Forcing::Harmonic(0.676979732510288, 0.3230202674897121, -3.089378590956282), p,
+          0.9431003086419751};
+}
+
+// Where the continuation of that motion finds an impact appear or disappear while nothing but a
+// chattering sequence's count changes (the grazings `capsubot optimize` listed as the motion's
+// limits before such changes were set apart): T0 = 1.00254 (5 -> 6 left impacts in a
+// sequence), e = 0.986933 (74 + 6 -> 73 + 5), alpha = 0.9431 (64 + 3 -> 73 + 5).
+struct CountChange {
+  const char* name;
+  double at;
+};
+constexpr CountChange kCountChanges[] = {
+    {"T0", 1.00254133}, {"e", 0.98693252}, {"alpha", 0.943099983}};
+// Either side of a count change, still far from the next special point (1e-4 away at least).
+constexpr double kSide = 1e-6;
+// The speed goes on through a count change: the mean velocities on its two sides differ by the
+// slope of the speed times 2 kSide (about 0.15 per unit), far below this.
+constexpr double kSpeedTol = 1e-5;
+
+TEST(GaitRobustness, AChatteringCountChangeIsNoSpecialPoint) {
+  const RobotModel r = ReachWinner();
+  const Motion m =
+      LongRunMotion(r.forcing, r.params, r.alpha, RestStart(0.0625, 0.0), MotionOptions{});
+  ASSERT_EQ(m.status, MotionStatus::kPeriodic);
+  const GaitRobustness g = ComputeMotionRobustness({r.forcing, r.params, r.alpha, m.section});
+  ASSERT_EQ(g.parameters.size(), 3U);
+  for (const CountChange& c : kCountChanges) {
+    SCOPED_TRACE(c.name);
+    const RobotFamily family = NamedParameterFamily(r.forcing, r.params, r.alpha, c.name);
+    // The independent view: Newton shooting on each side; the motion and its speed go on.
+    PeriodicMotion side[2];
+    for (int k : {0, 1}) {
+      const RobotModel at = family(c.at + (k == 0 ? -kSide : kSide));
+      side[k] = FindPeriodicMotion(at.forcing, at.params, at.alpha, m.section, ShootingOptions{});
+      ASSERT_EQ(side[k].status, ShootingStatus::kConverged);
+      EXPECT_GE(side[k].impacts_right, 60);  // the chattering sequence on both sides
+    }
+    EXPECT_TRUE(testing::Near(side[0].mean_velocity, side[1].mean_velocity, kSpeedTol));
+    const ParameterRobustness* p = nullptr;
+    for (const ParameterRobustness& q : g.parameters) p = q.name == c.name ? &q : p;
+    ASSERT_NE(p, nullptr);
+    EXPECT_GT(p->chatter_changes, 0);
+    for (const SpecialPoint& sp : p->special_points) {
+      EXPECT_GT(std::abs(sp.parameter - c.at), 10 * kSide) << SpecialPointTypeName(sp.type);
+    }
+    for (const MotionLimit* l : {&p->down, &p->up}) {
+      EXPECT_GT(std::abs(l->parameter - c.at), 10 * kSide) << l->Name();
+    }
+  }
 }
 
 TEST(GaitRobustness, BadFactorIsNamed) {

@@ -91,6 +91,21 @@ TEST(DesignJob, OneDesignIsTheLibrarysDesignAndTellsItsStages) {
   }
 }
 
+// At 1500 Hz the example robot's T0 is 1.7e-6: mu's range [mu/2, 2 mu] is narrower in T0 than
+// the continuation's finite-difference step of 1e-6; mu is followed relative to its value and
+// every part of the robustness is computed.
+TEST(DesignJob, AHighFrequencyDesignReportsItsRobustness) {
+  DesignJobOptions o = OneDesign(std::nullopt);
+  o.input.frequency_min = o.input.frequency_max = 1500.0;
+  const DesignJobResult r = RunDesignJob(o);
+  ASSERT_TRUE(r.design.one_impact.ok());
+  ASSERT_EQ(r.robustness.parameters.size(), 3U);
+  for (const ParameterRobustness& p : r.robustness.parameters) {
+    EXPECT_EQ(p.status, ContinuationStatus::kOk) << p.name << ": " << p.message;
+    EXPECT_NE(p.band.status, SpeedBandStatus::kNotRun) << p.name;
+  }
+}
+
 // Without a gait there is nothing to continue: no robustness, and its stage is not told.
 TEST(DesignJob, ADesignWithoutAGaitHasNoRobustness) {
   DesignJobOptions o = OneDesign(std::nullopt);
@@ -275,6 +290,11 @@ INSTANTIATE_TEST_SUITE_P(
                    "reach_local_evaluations <= 100000"},
         BadOptions{"reach_seconds", [](DesignJobOptions& o) { Part(o).reach_seconds = 0.0; },
                    "reach_seconds = 0 is invalid: expected a finite time > 0 [s]"},
+        BadOptions{"band_levels",
+                   [](DesignJobOptions& o) {
+                     std::get<DesignOneMode>(o.mode).band_levels = {0.9, 0.9};
+                   },
+                   "band_levels = 0.9 is invalid: expected distinct levels"},
         BadOptions{"reach_starts",
                    [](DesignJobOptions& o) {
                      Part(o).reach_starts = {0, 4};

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ namespace {
 
 // Converting T0 to mu multiplies by omega^2 L / g, computed once as mu / T0: a few roundings.
 constexpr double kConversionTol = 1e-12;
+// The design continues its robot (motor phase 0) from the orbit's impact state, the reference
+// the orbit's own robot (motor phase the impact's): the same motion, its special points each
+// located to the location tolerance 1e-10 (ContinuationOptions), so they agree to about that.
+constexpr double kLocationTol = 1e-10;
 // How far beyond (or before) a limit of m2 the design's robot is evaluated: far wider than the
 // limit's location (1e-10 in the relative mass), narrow enough that nothing else happens.
 constexpr double kStep = 1e-4;
@@ -62,14 +67,16 @@ TEST(DesignRobustness, MuLimitsAreTheT0LimitsOfTheGaitsOrbitConverted) {
   for (const auto& [got, want] :
        {std::make_pair(&mu.down, &T0.down), std::make_pair(&mu.up, &T0.up)}) {
     EXPECT_EQ(std::string(got->Name()), want->Name());
-    EXPECT_TRUE(testing::RelNear(got->parameter, to_mu * want->parameter, kConversionTol));
+    EXPECT_TRUE(testing::RelNear(got->parameter, to_mu * want->parameter, kLocationTol));
   }
   EXPECT_TRUE(testing::RelNear(mu.from, to_mu * T0.from, kConversionTol));
   EXPECT_TRUE(testing::RelNear(mu.to, to_mu * T0.to, kConversionTol));
   // e is continued as the optimiser's robustness continues it: the same limits.
   const ParameterRobustness& e = ExampleRobustness().parameters[1];
-  EXPECT_EQ(e.down.parameter, reference.parameters[1].down.parameter);
-  EXPECT_EQ(e.up.parameter, reference.parameters[1].up.parameter);
+  EXPECT_EQ(std::string(e.down.Name()), reference.parameters[1].down.Name());
+  EXPECT_TRUE(testing::Near(e.down.parameter, reference.parameters[1].down.parameter, kLocationTol));
+  EXPECT_EQ(std::string(e.up.Name()), reference.parameters[1].up.Name());
+  EXPECT_TRUE(testing::Near(e.up.parameter, reference.parameters[1].up.parameter, kLocationTol));
 }
 
 TEST(DesignRobustness, InnerMassFamilyIsTheDesignsRobotAtEveryMass) {
@@ -138,6 +145,55 @@ TEST(DesignRobustness, RefusesAGaitThatIsNotOk) {
   EXPECT_EQ(testing::InvalidArgumentMessage(
                 [&] { ComputeDesignRobustness(testing::ExampleRobot(), none); }),
             "gait status = no_orbit is invalid: expected a gait (ok) to continue");
+}
+
+// A small robot whose gait binds the stick margin s = 0.02 (docs/model.md section 12): its
+// capsule sticks with a margin of 2 % of the friction bound, so at mu (1 - s) = 0.294 its
+// stick/slide pattern changes, and the gait goes on.
+DesignInput SmallRobot() {
+  DesignInput in;
+  in.m1 = 0.03;
+  in.L = 0.01;
+  in.mu = 0.3;
+  in.e = 0.7;
+  in.force.amplitude = 0.05;
+  in.force.bias = 0.05;
+  in.frequency_min = in.frequency_max = 20.0;
+  return in;
+}
+// The segment change is located to 1e-10 in T0 relative to its value; mu = 0.294 is exact.
+constexpr double kSegmentTol = 1e-6;
+// The speed from rest a designer is told about: within 95 % of the design's.
+constexpr double kLevel = 0.95;
+
+TEST(DesignRobustness, ASegmentChangeTheGaitSurvivesIsNoLimitAndTheBandSaysHowFarItGoes) {
+  const DesignInput in = SmallRobot();
+  const Gait gait = Design(in).one_impact;
+  ASSERT_TRUE(gait.ok());
+  RobustnessOptions options;
+  options.speed_bands = true;
+  const ParameterRobustness mu = ComputeDesignRobustness(in, gait, options).parameters[0];
+  ASSERT_EQ(mu.status, ContinuationStatus::kOk) << mu.message;
+  // The segment change at the stick margin is listed, and is not the limit below.
+  bool listed = false;
+  for (const SpecialPoint& sp : mu.special_points) {
+    listed = listed || (sp.type == SpecialPointType::kSegmentChange &&
+                        std::abs(sp.parameter - in.mu * (1.0 - in.stick_margin)) <= kSegmentTol);
+  }
+  EXPECT_TRUE(listed);
+  EXPECT_LT(mu.down.parameter, in.mu * (1.0 - in.stick_margin) - kSegmentTol) << mu.down.Name();
+  // The band reaches far below it: the speed from rest at mu = 0.24 (beyond the segment change
+  // and two more) is still within it, simulated anew here.
+  ASSERT_EQ(mu.band.status, SpeedBandStatus::kOk);
+  const BandEdge& down = mu.band.down.front();
+  ASSERT_TRUE(down.within);
+  EXPECT_LT(down.parameter, 0.24);
+  DesignInput moved = in;
+  moved.mu = 0.24;
+  const DesignModel m = MapToModel(moved, gait.m2_kg, gait.frequency_hz);
+  const double speed = FindAttractors(m.forcing, m.params, m.alpha, options.band.from_rest)
+                           .mean_velocity;
+  EXPECT_GE(speed, kLevel * mu.band.nominal_speed);
 }
 
 }  // namespace

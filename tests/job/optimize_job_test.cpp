@@ -110,6 +110,34 @@ TEST(OptimizeJob, MainJobClimbsFromTheSineToTheFastestDrives) {
   }
 }
 
+// At T0 = 1e-6 the range of T0, [T0/2, 2 T0], is narrower than the continuation's
+// finite-difference step of 1e-6: T0 is followed relative to its value, and every part of the
+// robustness is computed or says why not; the bands have the levels asked for.
+TEST(OptimizeJob, MainJobAtATinyT0ReportsEveryPartOfItsRobustness) {
+  OptimizeJobOptions job;
+  job.params.T0 = 1e-6;
+  job.mode = MainJob{ReachEffort{2, 2, 8, 4}, {0.95, 0.9}};
+  job.check = SmallCheck();
+  const auto r = std::get<MainJobResult>(RunOptimizeJob(job));
+  ASSERT_TRUE(r.robust.found());
+  int parts = 0;
+  for (const GaitRobustness* g : {&r.robustness, &r.reach_robustness}) {
+    for (const ParameterRobustness& p : g->parameters) {
+      ++parts;
+      EXPECT_TRUE(p.status == ContinuationStatus::kOk || !p.message.empty()) << p.name;
+      EXPECT_NE(p.band.status, SpeedBandStatus::kNotRun) << p.name;
+      if (p.band.status == SpeedBandStatus::kOk) {
+        EXPECT_EQ(p.band.down.size(), 2U) << p.name;
+      }
+    }
+  }
+  EXPECT_EQ(parts, 6);
+  const ParameterRobustness& T0 = r.robustness.parameters.front();
+  EXPECT_EQ(T0.name, "T0");
+  EXPECT_EQ(T0.status, ContinuationStatus::kOk) << T0.message;
+  EXPECT_DOUBLE_EQ(T0.from, 0.5e-6);
+}
+
 TEST(OptimizeJob, TellsItsStagesInOrderAndEndsWithEmpty) {
   OptimizeJobOptions job = PhaseJob(0.3, 0.4);
   std::vector<std::string> stages;
@@ -174,6 +202,10 @@ TEST(OptimizeJob, BadOptionsAreRefusedNamingTheParameter) {
   job = OptimizeJobOptions{};
   job.params.e = 1.5;
   EXPECT_NE(Refusal(job).find("e = 1.5"), std::string::npos);
+  job = OptimizeJobOptions{};
+  job.mode = MainJob{ReachEffort{}, {0.95, 1.0}};
+  EXPECT_EQ(Refusal(job),
+            "band_levels = 1 is invalid: expected fractions of the speed in (0, 1)");
 }
 
 TEST(OptimizeJob, RunValidatesFirst) {

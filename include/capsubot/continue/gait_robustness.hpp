@@ -3,19 +3,22 @@
 // (docs/continuation.md, docs/optimize.md): the gait's one-impact orbit continued in each of
 // them, both ways, up to the nearest special point (ContinueParameter).
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/continue/continuation.hpp"
+#include "capsubot/continue/speed_band.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 
-/// Where the gait's motion stops being itself along one direction of a parameter: the nearest
-/// special point other than a speed extremum (a fold, period doubling, Neimark-Sacker point,
-/// grazing or segment change: the motion ends, loses stability or changes its impacts or its
-/// stick/slide pattern), or else the end of the branch (range end, lost, max points).
+/// Where the gait's motion ends or loses stability along one direction of a parameter: the
+/// nearest fold, period doubling or Neimark-Sacker point, or else the end of the branch (range
+/// end, lost: the continuation cannot go on, max points). Grazings and segment changes are no
+/// limits: the motion goes on through them with other impacts or another stick/slide pattern
+/// (ParameterRobustness::special_points lists them).
 struct MotionLimit {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -35,6 +38,9 @@ struct MotionLimit {
   std::string Text(const std::string& name, const std::string& value) const;
 };
 
+/// Writes a parameter's value (with its unit, a change in percent, ...).
+using ValueText = std::function<std::string(double)>;
+
 /// One parameter's continuation.
 struct ParameterRobustness {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -47,6 +53,26 @@ struct ParameterRobustness {
   std::string message;                                      ///< why there is no branch, else empty
   MotionLimit down;  ///< the nearest limit below the gait's value (the branch's backward part)
   MotionLimit up;    ///< the nearest limit above it (the forward part)
+  /// The branch's special points other than speed extrema and changes of a chattering count,
+  /// in the order of the branch.
+  std::vector<SpecialPoint> special_points;
+  /// Grazings left out of `special_points`: only the number of impacts of a chattering sequence
+  /// changed (a sequence on one wall that ends with the inner body resting on it, whose
+  /// infinitely many impacts the simulator sums at their accumulation point after a number of
+  /// its own choosing); per wall the sequences and the impacts outside them are the same on
+  /// both sides. Not a bifurcation of the motion.
+  int chatter_changes = 0;
+  /// The speed band (RobustnessOptions::speed_bands; status kNotRun otherwise).
+  SpeedBand band;
+
+  /// The special points inside the band of its first level (none without a band), each once:
+  /// the motion changes there, the speed from rest goes on.
+  std::vector<SpecialPoint> InBand() const;
+  /// Plain words for the band, one line per level, the special points inside it and the
+  /// chattering counts left out, each line indented by `indent`; values written by `value`, the
+  /// nominal speed as `speed`. Empty without a band.
+  std::string BandText(const ValueText& value, const std::string& speed,
+                       const std::string& indent) const;
 };
 
 struct RobustnessOptions {
@@ -57,6 +83,10 @@ struct RobustnessOptions {
   /// The continuation of each parameter: from, to and start are set per parameter, the rest
   /// (steps, points, tolerances, shooting) is taken from here.
   ContinuationOptions continuation;
+  /// Also find each parameter's speed band (speed_band.hpp) over the same range.
+  bool speed_bands = false;
+  /// The bands' levels, accuracy and starts from rest.
+  SpeedBandOptions band;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
@@ -79,23 +109,51 @@ struct MotionToContinue {
   PhaseState start;
 };
 
-/// The periodic motion through `start` followed along `family` (the robot at each value of the
-/// parameter called `name`) over [from, to], both ways from the value `value` of `start`'s
-/// robot, and the nearest limit each way. Throws std::invalid_argument as ContinueBranch does.
-ParameterRobustness ContinueRobustness(const RobotFamily& family, const PhaseState& start,
-                                       const std::string& name, double value, double from,
-                                       double to, const ContinuationOptions& continuation);
+/// One parameter of a robustness study: the robots along it and the range, in the family's own
+/// parameter, and the factor from it to the parameter reported (a family in T0 over T0's value
+/// has the range [1/2, 2] whatever T0, so its finite differences fit the range).
+struct RobustnessParameter {
+  std::string name;     ///< the name reported ("T0", "mu", "m2_kg")
+  RobotFamily family;   ///< the robot at each value of the family's parameter
+  double value = 1.0;   ///< the robot's value of it
+  double from = 0.5;    ///< the range searched
+  double to = 2.0;
+  double scale = 1.0;   ///< reported value = the family's value times this; > 0
+};
+
+/// `family` (the robots at each value of a parameter) followed in the parameter over its value,
+/// lambda = parameter / value, over [1/factor, factor] (factor > 1), reported as the parameter
+/// times `unit` (1, or mu / T0 for a family in T0 reported in mu: T0 = mu g/(omega^2 L)).
+RobustnessParameter RelativeParameter(const std::string& name, const RobotFamily& family,
+                                      double value, double factor, double unit = 1.0);
+
+/// The periodic motion through `start` followed along `p` over its range, both ways from its
+/// value, the nearest limit each way and, with options.speed_bands, the speed band; every value
+/// reported in the parameter's unit (p.scale). A part that cannot be computed (its
+/// continuation's options or robots refused) says so in `status` (kNotRun) and `message`.
+ParameterRobustness ContinueRobustness(const RobustnessParameter& p, const PhaseState& start,
+                                       const RobustnessOptions& options);
 
 /// Continues the periodic motion through `motion.start` in T0, e and alpha over the ranges of
 /// `options` and reports the nearest limit each way. Throws std::invalid_argument for bad
 /// options or invalid parameters.
 GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion,
-                                       const RobustnessOptions& options = {});
+                                       const RobustnessOptions& options);
+/// The same with the default RobustnessOptions.
+GaitRobustness ComputeMotionRobustness(const MotionToContinue& motion);
+
+/// The speed bands alone (options.band) of `robot` in T0, e and alpha, over the ranges of
+/// ComputeMotionRobustness, for a robot whose motion from rest is not one periodic motion to
+/// continue: each parameter's status kNotRun with the message `why`.
+GaitRobustness ComputeSpeedBands(const RobotModel& robot, const RobustnessOptions& options,
+                                 const std::string& why);
 
 /// Continues the one-impact orbit `orbit` (the gait: its force, alpha, T0 and e), started right
 /// after its impact (OrbitImpactState), in T0, e and alpha over the ranges of `options`, and
 /// reports the nearest limit each way. Throws std::invalid_argument for bad options or an
 /// orbit whose parameters are invalid (ComputeMotionRobustness of that state).
-GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options = {});
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options);
+/// The same with the default RobustnessOptions.
+GaitRobustness ComputeGaitRobustness(const Orbit& orbit);
 
 }  // namespace capsubot

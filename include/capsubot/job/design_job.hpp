@@ -64,6 +64,9 @@ struct DesignOneMode {
   /// Asked by the continuations of the gait's robustness (interrupt.hpp); empty: never.
   Interrupt interrupt;
   std::optional<DesignFromRestPart> from_rest;  ///< part (b), when given
+  /// The levels of the gait's speed bands in mu, e and m2 (SpeedBandOptions::levels); their
+  /// starts are part (b)'s check from rest (from_rest_starts), or its default.
+  std::vector<double> band_levels = {0.95};
 };
 
 /// One design a point of a grid over the robot's inputs, written as a sweep's CSV file

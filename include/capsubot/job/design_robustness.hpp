@@ -26,6 +26,8 @@ RobotFamily InnerMassFamily(const DesignInput& input, double m2, double frequenc
 /// [m2 / t0_factor, m2 t0_factor] along InnerMassFamily, from the orbit's impact state. Throws
 /// std::invalid_argument for a gait that is not ok or bad options.
 GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gait,
-                                       const RobustnessOptions& options = {});
+                                       const RobustnessOptions& options);
+/// The same with the default RobustnessOptions.
+GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gait);
 
 }  // namespace capsubot

@@ -24,10 +24,13 @@ namespace capsubot {
 
 /// The main job: P1 at c = A = T0/2 without margins, P2 with the job's margins checked from
 /// rest, the reach search seeded with it, the fastest Fourier drives of up to `drive_harmonics`
-/// harmonics climbing from its winner, both motions continued in T0, e and alpha, P2 without
-/// margins (valid; stable).
+/// harmonics climbing from its winner, both motions continued in T0, e and alpha with the speed
+/// bands of their robots, P2 without margins (valid; stable).
 struct MainJob {
   ReachEffort reach;
+  /// The levels of the speed bands of both motions (SpeedBandOptions::levels: fractions of the
+  /// speed from rest, each in (0, 1)); the bands' starts are the job's check from rest.
+  std::vector<double> band_levels = {0.95};
   /// The budgets of the drive part (drive_evaluations, drive_polishes,
   /// drive_local_evaluations), smaller than those of `--problem reach --harmonics K`, so that
   /// the whole job takes seconds; its starts and time limit are those of `reach`.
@@ -98,8 +101,8 @@ struct MainJobResult {
   /// drive_harmonics.
   std::vector<ReachResult> drives;
   GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
-  /// The most common motion from rest of the reach winner continued, when it is periodic;
-  /// empty otherwise.
+  /// The most common motion from rest of the reach winner continued, when it is periodic (its
+  /// speed bands alone otherwise); empty without a winner.
   GaitRobustness reach_robustness;
   OptimizeResult fastest;  ///< P2 without margins
   OptimizeResult stable;   ///< P2 without margins, spectral radius <= 1
