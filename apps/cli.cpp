@@ -20,19 +20,22 @@ namespace capsubot::app {
 
 namespace {
 
-// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element is a number of ParseNumber ("1,,2" is a typo).
-std::vector<double> ParseCoefficients(const char* option, const std::string& text) {
+// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element is a number of ParseNumber ("1,,2" is a typo),
+// or with `phases` of ParsePhase ("0,pi/2,pi").
+std::vector<double> ParseCoefficients(const char* option, const std::string& text,
+                                      bool phases = false) {
   std::vector<double> values;
   std::size_t start = 0;
   while (true) {
     const std::size_t end = std::min(text.find(',', start), text.size());
     const std::string element = text.substr(start, end - start);
     try {
-      values.push_back(ParseNumber(element, option));
+      values.push_back(phases ? ParsePhase(element, option) : ParseNumber(element, option));
     } catch (const std::invalid_argument&) {
-      throw std::invalid_argument(
-          fmt::format("{} = {} is invalid: expected comma-separated numbers (element {} is '{}')",
-                      option, QuoteForMessage(text), values.size() + 1, element));
+      throw std::invalid_argument(fmt::format(
+          "{} = {} is invalid: expected comma-separated {} (element {} is '{}')", option,
+          QuoteForMessage(text), phases ? "phases (numbers or multiples of pi)" : "numbers",
+          values.size() + 1, element));
     }
     if (end == text.size()) return values;
     start = end + 1;
@@ -139,7 +142,7 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
       ->type_name("L1,L2,...");
   cmd.add_option("--switches", o.switches_text,
                  "pulse force: switching phases s_1 < ... < s_N in [0, 2 pi) [rad] of the motor "
-                 "phase, one per level, comma separated")
+                 "phase, one per level, comma separated (multiples of pi as pi/2, 3*pi/2)")
       ->type_name("s1,s2,...");
 }
 
@@ -157,7 +160,9 @@ Forcing ForcingOptions::Build(bool need_phase) const {
   if (c_option->count() > 0) spec.c = c;
   if (!waveform.empty()) spec.waveform = waveform;
   if (!levels_text.empty()) spec.levels = ParseCoefficients("--levels", levels_text);
-  if (!switches_text.empty()) spec.switches = ParseCoefficients("--switches", switches_text);
+  if (!switches_text.empty()) {
+    spec.switches = ParseCoefficients("--switches", switches_text, true);
+  }
   if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = phi0;
   if (fourier_option->count() > 0) {
     spec.sin = Sines();
