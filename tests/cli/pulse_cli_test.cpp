@@ -273,6 +273,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadPulse{"SineWithLevels", kAttr + "--waveform sine --A 1 --c 0 --phi0 0 --levels 1",
                  "--levels is invalid with --waveform sine: expected it only with --waveform "
                  "pulse"},
+        // --c is no longer required by the parser: the force's rules ask for it.
+        BadPulse{"SineWithoutC", kAttr + "--A 0.5 --phi0 0",
+                 "--c is missing: give the mean force c"},
         BadPulse{"BadSwitchText", kAttr + "--levels 1,2 --switches 0,x",
                  "--switches = 0,x is invalid: expected comma-separated phases (numbers or "
                  "multiples of pi) (element 2 is 'x')"},
