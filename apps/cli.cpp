@@ -20,19 +20,22 @@ namespace capsubot::app {
 
 namespace {
 
-// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element is a number of ParseNumber ("1,,2" is a typo).
-std::vector<double> ParseCoefficients(const char* option, const std::string& text) {
+// "0.1,0,0.05" -> {0.1, 0, 0.05}; every element is a number of ParseNumber ("1,,2" is a typo),
+// or with `phases` of ParsePhase ("0,pi/2,pi").
+std::vector<double> ParseCoefficients(const char* option, const std::string& text,
+                                      bool phases = false) {
   std::vector<double> values;
   std::size_t start = 0;
   while (true) {
     const std::size_t end = std::min(text.find(',', start), text.size());
     const std::string element = text.substr(start, end - start);
     try {
-      values.push_back(ParseNumber(element, option));
+      values.push_back(phases ? ParsePhase(element, option) : ParseNumber(element, option));
     } catch (const std::invalid_argument&) {
-      throw std::invalid_argument(
-          fmt::format("{} = {} is invalid: expected comma-separated numbers (element {} is '{}')",
-                      option, QuoteForMessage(text), values.size() + 1, element));
+      throw std::invalid_argument(fmt::format(
+          "{} = {} is invalid: expected comma-separated {} (element {} is '{}')", option,
+          QuoteForMessage(text), phases ? "phases (numbers or multiples of pi)" : "numbers",
+          values.size() + 1, element));
     }
     if (end == text.size()) return values;
     start = end + 1;
@@ -106,8 +109,10 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
   o.A_option = cmd.add_option("--A", o.A,
                               "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units "
                               "of (m1+m2) omega^2 L (required unless --sin/--cos are given)");
-  cmd.add_option("--c", o.c, "mean force c of F (same unit); a directed orbit needs c > 0")
-      ->required();
+  o.c_option = cmd.add_option(
+      "--c", o.c,
+      "mean force c of F (same unit; required except with --waveform pulse); a directed orbit "
+      "needs c > 0");
   if (with_phase) {
     o.phi0_option = cmd.add_option(
         "--phi0", o.phi0,
@@ -127,6 +132,18 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
                  "default all 0)")
       ->type_name("a1,a2,...")
       ->needs(o.fourier_option);
+  cmd.add_option("--waveform", o.waveform,
+                 "the force's kind: sine (--A, --c, --phi0), fourier (--sin, --cos, --c) or pulse "
+                 "(--levels, --switches); default: the kind of the parts given")
+      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
+  cmd.add_option("--levels", o.levels_text,
+                 "pulse force: levels L_1,...,L_N (1 <= N <= 16) of G(s) = L_j for s in "
+                 "[s_j, s_j+1), F(phi) = G(phi + phi0), comma separated")
+      ->type_name("L1,L2,...");
+  cmd.add_option("--switches", o.switches_text,
+                 "pulse force: switching phases s_1 < ... < s_N in [0, 2 pi) [rad] of the motor "
+                 "phase, one per level, comma separated (multiples of pi as pi/2, 3*pi/2)")
+      ->type_name("s1,s2,...");
 }
 
 std::vector<double> ForcingOptions::Sines() const {
@@ -140,7 +157,12 @@ std::vector<double> ForcingOptions::Cosines() const {
 Forcing ForcingOptions::Build(bool need_phase) const {
   ForceSpec spec;
   if (A_option->count() > 0) spec.A = A;
-  spec.c = c;
+  if (c_option->count() > 0) spec.c = c;
+  if (!waveform.empty()) spec.waveform = waveform;
+  if (!levels_text.empty()) spec.levels = ParseCoefficients("--levels", levels_text);
+  if (!switches_text.empty()) {
+    spec.switches = ParseCoefficients("--switches", switches_text, true);
+  }
   if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = phi0;
   if (fourier_option->count() > 0) {
     spec.sin = Sines();

@@ -32,7 +32,10 @@ struct ForcingOptions {
   double c = std::numeric_limits<double>::quiet_NaN();
   double phi0 = std::numeric_limits<double>::quiet_NaN();
   std::string cos_text, sin_text;  ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
+  std::string waveform;                     ///< --waveform: sine, fourier or pulse
+  std::string levels_text, switches_text;  ///< --levels, --switches as given
   CLI::Option* A_option = nullptr;
+  CLI::Option* c_option = nullptr;
   CLI::Option* phi0_option = nullptr;
   CLI::Option* fourier_option = nullptr;
 
@@ -46,7 +49,7 @@ struct ForcingOptions {
   Forcing Build(bool need_phase = true) const;
 };
 
-/// Adds --A, --c, --phi0, --cos, --sin to `cmd`.
+/// Adds --A, --c, --phi0, --cos, --sin, --waveform, --levels, --switches to `cmd`.
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
 
 /// Adds --T0, --e and (with `with_margin`) the margins --margin, --margin-stroke,

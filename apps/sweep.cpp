@@ -121,6 +121,15 @@ void ReadParams(ModeReader& r, const SweepCliOptions& o, Params& p) {
 }
 
 void ReadForce(ModeReader& r, const SweepCliOptions& o, SweepForce& f) {
+  // A sweep solves the analytic orbit at every point: a pulse force is refused.
+  const bool pulse = r.Read("--levels") || r.Read("--switches") ||
+                     (r.Read("--waveform") && o.forcing.waveform == "pulse");
+  if (pulse) {
+    throw std::invalid_argument(
+        "a pulse force is invalid for sweep: expected a sine or Fourier force (the analytic "
+        "one-impact orbit needs one; simulate, attractors, periodic, continue, basins and "
+        "bifurcation take a pulse force)");
+  }
   r.Take("--A", f.A, std::optional<double>(o.forcing.A));
   r.Take("--c", f.c, std::optional<double>(o.forcing.c));
   if (r.Read("--sin")) f.sin = o.forcing.Sines();

@@ -18,17 +18,17 @@
 namespace capsubot::python {
 namespace {
 
-py::dict FindAttractorsDict(std::optional<double> A, double c, std::optional<double> phi0,
-                            std::optional<std::vector<double>> cos,
-                            std::optional<std::vector<double>> sin, double T0, double e,
-                            double alpha, std::optional<std::string> starts, std::optional<int> n_x,
-                            std::optional<int> n_psi, int transient, int record, int max_period,
-                            double state_tolerance, double converged_tolerance,
-                            double chatter_velocity, std::int64_t max_events_per_period,
-                            int threads) {
+py::dict FindAttractorsDict(
+    std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
+    std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+    std::optional<std::string> waveform, std::optional<std::vector<double>> levels,
+    std::optional<std::vector<double>> switches, double T0, double e, double alpha,
+    std::optional<std::string> starts, std::optional<int> n_x, std::optional<int> n_psi,
+    int transient, int record, int max_period, double state_tolerance, double converged_tolerance,
+    double chatter_velocity, std::int64_t max_events_per_period, int threads) {
   AttractorsJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.alpha = alpha;
   if (starts) {
     if (n_x || n_psi) {
@@ -97,12 +97,13 @@ void BindAttractors(py::module_& m) {
       std::string(kAttractorsDoc) + kForcingArgsDoc + kModelArgsDoc + kAttractorsArgsDoc + kUnits;
   const MotionOptions mo;
   m.def("attractors", &FindAttractorsDict, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
-        py::arg("c"), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
-        py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
-        py::arg("alpha"), py::arg("starts") = py::none(), py::arg("n_x") = py::none(),
-        py::arg("n_psi") = py::none(), py::arg("transient") = mo.transient,
-        py::arg("record") = mo.record, py::arg("max_period") = mo.max_period,
-        py::arg("state_tolerance") = mo.state_tolerance,
+        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"),
+        py::arg("starts") = py::none(), py::arg("n_x") = py::none(), py::arg("n_psi") = py::none(),
+        py::arg("transient") = mo.transient, py::arg("record") = mo.record,
+        py::arg("max_period") = mo.max_period, py::arg("state_tolerance") = mo.state_tolerance,
         py::arg("converged_tolerance") = mo.converged_tolerance,
         py::arg("chatter_velocity") = mo.chatter_velocity,
         py::arg("max_events_per_period") = mo.max_events_per_period,

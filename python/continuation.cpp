@@ -114,19 +114,19 @@ std::optional<FollowOptions> Follow(const std::optional<std::string>& param2,
   return f;
 }
 
-py::dict ContinueBranchDict(std::optional<double> A, double c, std::optional<double> phi0,
-                            std::optional<std::vector<double>> cos,
-                            std::optional<std::vector<double>> sin, double T0, double e,
-                            double alpha, const std::string& param, double from, double to,
-                            std::optional<double> x0, std::optional<double> u0,
-                            std::optional<double> v0, std::optional<double> psi, bool from_orbit,
-                            const std::variant<bool, std::string>& switch_at,
-                            std::optional<std::string> param2, std::optional<double> from2,
-                            std::optional<double> to2, std::optional<std::string> follow,
-                            int max_points, double initial_step, double min_step, double max_step,
-                            int max_period, double step, double chatter_velocity) {
+py::dict ContinueBranchDict(
+    std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
+    std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
+    std::optional<std::string> waveform, std::optional<std::vector<double>> levels,
+    std::optional<std::vector<double>> switches, double T0, double e, double alpha,
+    const std::string& param, double from, double to, std::optional<double> x0,
+    std::optional<double> u0, std::optional<double> v0, std::optional<double> psi, bool from_orbit,
+    const std::variant<bool, std::string>& switch_at, std::optional<std::string> param2,
+    std::optional<double> from2, std::optional<double> to2, std::optional<std::string> follow,
+    int max_points, double initial_step, double min_step, double max_step, int max_period,
+    double step, double chatter_velocity) {
   ContinueJobOptions job;
-  job.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
+  job.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   job.params = Params{T0, e, 0.0};
   job.alpha = alpha;
   job.param = param;
@@ -206,10 +206,11 @@ void BindContinuation(py::module_& m) {
       std::string(kContinueDoc) + kForcingArgsDoc + kModelArgsDoc + kContinueArgsDoc + kUnits;
   const ContinuationOptions o;
   m.def("continue_branch", &ContinueBranchDict, doc.c_str(), py::kw_only(),
-        py::arg("A") = py::none(), py::arg("c"), py::arg("phi0") = py::none(),
-        py::arg("cos") = py::none(), py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0,
-        py::arg("e") = Params{}.e, py::arg("alpha"), py::arg("param"), py::arg("from_"),
-        py::arg("to"), py::arg("x0") = py::none(), py::arg("u0") = py::none(),
+        py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("phi0") = py::none(),
+        py::arg("cos") = py::none(), py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"), py::arg("param"),
+        py::arg("from_"), py::arg("to"), py::arg("x0") = py::none(), py::arg("u0") = py::none(),
         py::arg("v0") = py::none(), py::arg("psi") = py::none(), py::arg("from_orbit") = false,
         py::arg("switch").noconvert() = false, py::arg("param2") = py::none(),
         py::arg("from2") = py::none(), py::arg("to2") = py::none(), py::arg("follow") = py::none(),

@@ -42,15 +42,17 @@ PeriodicStart Start(std::optional<double> x0, std::optional<double> u0, std::opt
   return rest;
 }
 
-py::dict Periodic(std::optional<double> A, double c, std::optional<double> phi0,
+py::dict Periodic(std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
-                  double T0, double e, double alpha, std::optional<double> x0,
-                  std::optional<double> u0, std::optional<double> v0, std::optional<double> psi,
-                  std::optional<std::pair<double, double>> from_rest, std::optional<int> transient,
-                  std::optional<int> period, int max_period, double step, double chatter_velocity) {
+                  std::optional<std::string> waveform, std::optional<std::vector<double>> levels,
+                  std::optional<std::vector<double>> switches, double T0, double e, double alpha,
+                  std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
+                  std::optional<double> psi, std::optional<std::pair<double, double>> from_rest,
+                  std::optional<int> transient, std::optional<int> period, int max_period,
+                  double step, double chatter_velocity) {
   PeriodicJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.alpha = alpha;
   o.start = Start(x0, u0, v0, psi, from_rest, transient, period);
   o.shooting.max_period = max_period;
@@ -95,8 +97,10 @@ void BindPeriodic(py::module_& m) {
   const std::string doc =
       std::string(kPeriodicDoc) + kForcingArgsDoc + kModelArgsDoc + kPeriodicArgsDoc + kUnits;
   const ShootingOptions so;
-  m.def("periodic", &Periodic, doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
-        py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+  m.def("periodic", &Periodic, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
+        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"),
         py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
         py::arg("psi") = py::none(), py::arg("from_rest") = py::none(),

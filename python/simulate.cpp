@@ -136,16 +136,17 @@ SimulateStart Start(std::optional<double> alpha, std::optional<double> x0, std::
   return SimulateFromState{*alpha, *x0, *u0, *v0};
 }
 
-py::dict Simulate(std::optional<double> A, double c, std::optional<double> phi0,
+py::dict Simulate(std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
-                  double T0, double e, std::optional<double> alpha, std::optional<double> x0,
-                  std::optional<double> u0, std::optional<double> v0, double y0, bool from_orbit,
-                  double periods, double transient, double chatter_velocity,
-                  std::int64_t max_events_per_period, bool events, bool trajectory,
-                  long samples_per_period) {
+                  std::optional<std::string> waveform, std::optional<std::vector<double>> levels,
+                  std::optional<std::vector<double>> switches, double T0, double e,
+                  std::optional<double> alpha, std::optional<double> x0, std::optional<double> u0,
+                  std::optional<double> v0, double y0, bool from_orbit, double periods,
+                  double transient, double chatter_velocity, std::int64_t max_events_per_period,
+                  bool events, bool trajectory, long samples_per_period) {
   SimulateJobOptions o;
   o.params = Params{T0, e, 0.0};
-  o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
+  o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.start = Start(alpha, x0, u0, v0, from_orbit);
   o.sim.y0 = y0;
   o.sim.periods = periods;
@@ -225,8 +226,10 @@ void BindSimulate(py::module_& m) {
   const SimOptions defaults;
   const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc +
                           kModelArgsDoc + kSimulateStateDoc + kUnits;
-  m.def("simulate", &Simulate, doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
-        py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
+  m.def("simulate", &Simulate, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
+        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
         py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
         py::arg("y0") = defaults.y0, py::arg("from_orbit").noconvert() = false,

@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "capsubot/model/force_spec.hpp"
+
 namespace capsubot {
 
 SimOptions StartAfterImpact(const Orbit& orbit, double periods) {
@@ -23,6 +25,7 @@ SimOptions StartAfterImpact(const Orbit& orbit, double periods) {
 }
 
 OrbitStart StartFromOrbit(const Forcing& forcing, const Params& params) {
+  RefusePulse(forcing, "from_orbit (a start on the analytic one-impact orbit)");
   OrbitStart s;
   s.orbit = Solve(forcing, params);
   if (!s.orbit.orbit.ok()) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "capsubot/model/force_spec.hpp"
 #include "capsubot/model/model_parameter.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
@@ -18,6 +19,7 @@ PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing) {
 }
 
 PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha) {
+  RefusePulse(forcing, "from_orbit (a start on the analytic one-impact orbit)");
   const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
   const Solution* best = nullptr;
   double best_radius = 0.0;

@@ -45,7 +45,8 @@ BifurcationJobPlan PlanBifurcationJob(const BifurcationJobOptions& options) {
         "resume = true is invalid for the whole study: expected it only for a shard (shards >= "
         "2; the whole study is not checkpointed)");
   }
-  d.analytic = d.analytic && !files.summary.empty();  // the analytic orbits are summary rows
+  // The analytic orbits are summary rows; a pulse force has none (they need a smooth force).
+  d.analytic = d.analytic && !files.summary.empty() && !plan.robot.forcing.pulse();
   double& alpha = plan.robot.alpha;
   if (d.param == ModelParameter::kalpha) alpha = d.from;  // the stepped value decides
   if (!d.over_values.empty() && d.over == ModelParameter::kalpha) alpha = d.over_values.front();

@@ -4,11 +4,13 @@
 
 #include <stdexcept>
 
+#include "capsubot/model/force_spec.hpp"
 #include "capsubot/model/limits.hpp"
 
 namespace capsubot {
 
 void OrbitsJobOptions::Validate() const {
+  RefusePulse(forcing, "orbits");
   params.Validate();
   if (max_evaluations < 1 || max_evaluations > kMaxOrbitEvaluations) {
     throw std::invalid_argument(

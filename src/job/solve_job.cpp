@@ -2,11 +2,13 @@
 
 #include "capsubot/job/solve_job.hpp"
 
+#include "capsubot/model/force_spec.hpp"
 #include "capsubot/orbit/orbit_energy.hpp"
 
 namespace capsubot {
 
 void SolveJobOptions::Validate() const {
+  RefusePulse(forcing, "solve");
   params.Validate();
   if (stability) stability->Validate();
 }

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "capsubot/model/detail/pulse_pieces.hpp"
 #include "capsubot/model/detail/trig_roots.hpp"
 
 namespace capsubot {
@@ -78,6 +80,54 @@ Forcing Forcing::Fourier(double c, const std::vector<double>& a, const std::vect
   return Series(c, a.data(), b.data(), static_cast<int>(a.size()), phi0);
 }
 
+Forcing Forcing::Pulse(const std::vector<double>& levels, const std::vector<double>& switches,
+                       double phi0) {
+  const std::size_t n = levels.size();
+  if (n < 1 || n > static_cast<std::size_t>(kMaxPulseLevels)) {
+    throw std::invalid_argument(
+        fmt::format("levels: N = {} is invalid: expected 1 <= N <= {} levels of the pulse force",
+                    n, kMaxPulseLevels));
+  }
+  if (switches.size() != n) {
+    throw std::invalid_argument(fmt::format(
+        "switches: {} phases given for {} levels: expected one switch phase per level",
+        switches.size(), n));
+  }
+  Forcing f;
+  f.N_ = static_cast<int>(n);
+  double sum = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double L = levels[j], s = switches[j], next = j + 1 < n ? switches[j + 1] : kTau;
+    if (!std::isfinite(L)) {
+      throw std::invalid_argument(
+          fmt::format("levels: L_{} = {} is invalid: expected a finite number", j + 1, L));
+    }
+    if (!(s >= 0.0 && s < kTau)) {
+      throw std::invalid_argument(fmt::format(
+          "switches: s_{} = {} is invalid: expected 0 <= s < 2 pi (phases in radians)", j + 1, s));
+    }
+    if (j > 0 && !(s > switches[j - 1])) {
+      throw std::invalid_argument(
+          fmt::format("switches: s_{} = {} is invalid: expected it above s_{} = {} (switch "
+                      "phases strictly increasing)",
+                      j + 1, s, j, switches[j - 1]));
+    }
+    f.levels_[j] = L;
+    f.switches_[j] = s;
+    // The piece from s_j to s_{j+1} (to s_0 + 2 pi for the last one).
+    sum += L * ((j + 1 < n ? next : switches[0] + kTau) - s);
+  }
+  f.c_ = sum / kTau;
+  f.phi0_ = ReduceInputPhase("phi0", phi0);
+  return f;
+}
+
+detail::PulsePieces Forcing::Pieces() const {
+  detail::PulsePieces p;
+  p.Build(levels_.data(), switches_.data(), N_, phi0_, 0.0);
+  return p;
+}
+
 Forcing Forcing::Series(double c, const double* a, const double* b, int harmonics, double phi0) {
   RequireFinite("c", c);
   const double phase = ReduceInputPhase("phi0", phi0);
@@ -96,9 +146,22 @@ Forcing Forcing::Series(double c, const double* a, const double* b, int harmonic
   return f;
 }
 
-Forcing Forcing::WithMean(double c) const { return Series(c, a_.data(), b_.data(), K_, phi0_); }
+Forcing Forcing::WithMean(double c) const {
+  if (N_ == 0) return Series(c, a_.data(), b_.data(), K_, phi0_);
+  RequireFinite("c", c);
+  Forcing f = *this;
+  for (int j = 0; j < N_; ++j) f.levels_[j] += c - c_;
+  f.c_ = c;
+  return f;
+}
 
 Forcing Forcing::WithCoefficient(bool sine, int k, double value) const {
+  if (N_ > 0) {
+    throw std::invalid_argument(fmt::format(
+        "{}_{} is invalid for a pulse force: it has levels and switches, no Fourier "
+        "coefficients",
+        sine ? 'b' : 'a', k));
+  }
   if (k < 1 || k > K_) {
     throw std::invalid_argument(fmt::format(
         "harmonic k = {} is invalid for {}_k: expected 1 <= k <= K = {}, the force's harmonics", k,
@@ -123,6 +186,17 @@ Forcing Forcing::WithPhase(double phi0) const {
 
 Forcing Forcing::InImpactFrame() const {
   Forcing f = *this;
+  if (N_ > 0) {  // the switches as phases from the impact, rotated to increase from 0
+    const detail::PulsePieces p = Pieces();
+    const PhaseList s = p.Switches(0.0, 0.0, std::nextafter(kTau, 0.0), true);
+    for (int j = 0; j < s.n; ++j) {
+      f.switches_[j] = s.phi[j];
+      f.levels_[j] = p.F(s.phi[j]);
+    }
+    f.N_ = s.n;
+    f.phi0_ = 0.0;
+    return f;
+  }
   f.a_ = ra_;
   f.b_ = rb_;
   f.phi0_ = 0.0;
@@ -152,6 +226,7 @@ void Forcing::Rotate() {
 }
 
 double Forcing::amplitude() const {
+  if (N_ > 0) return std::numeric_limits<double>::quiet_NaN();
   if (K_ == 1) return R_;  // hypot(a_1, b_1)
   return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]);
 }
@@ -188,21 +263,27 @@ double SumHarmonics(int K, const Angle& at, const Term& term) {
 
 }  // namespace
 
-double Forcing::F(double phi) const { return F(Angle::Of(phi)); }
+double Forcing::F(double phi) const {
+  if (N_ > 0) return Pieces().F(phi);
+  return F(Angle::Of(phi));
+}
 
 double Forcing::F(const Angle& at) const {
+  if (N_ > 0) return Pieces().F(at.phi);
   return c_ + SumHarmonics(K_, at, [this](int k, double ck, double sk) {
            return ra_[k - 1] * ck + rb_[k - 1] * sk;
          });
 }
 
 double Forcing::dF(double phi) const {
+  if (N_ > 0) return 0.0;  // between the switches
   return SumHarmonics(K_, Angle::Of(phi), [this](int k, double ck, double sk) {
     return k * (rb_[k - 1] * ck - ra_[k - 1] * sk);
   });
 }
 
 double Forcing::Pi(double phi) const {
+  if (N_ > 0) return Pieces().Values(phi).Pi;
   // Pi = c phi + sum_k (ra_k sin k phi + rb_k (1 - cos k phi)) / k
   return c_ * phi + SumHarmonics(K_, Angle::Of(phi), [this](int k, double ck, double sk) {
            return (ra_[k - 1] * sk + rb_[k - 1] * (1.0 - ck)) / k;
@@ -210,6 +291,7 @@ double Forcing::Pi(double phi) const {
 }
 
 double Forcing::Phi(double phi) const {
+  if (N_ > 0) return Pieces().Values(phi).Phi;
   // Phi = c phi^2/2 + sum_k (ra_k (1 - cos k phi) / k^2 + rb_k (phi/k - sin k phi / k^2))
   return 0.5 * c_ * phi * phi +
          SumHarmonics(K_, Angle::Of(phi), [this, phi](int k, double ck, double sk) {
@@ -217,13 +299,20 @@ double Forcing::Phi(double phi) const {
          });
 }
 
-ForceValues Forcing::Values(double phi) const { return Values(Angle::Of(phi)); }
+ForceValues Forcing::Values(double phi) const {
+  if (N_ > 0) return Pieces().Values(phi);
+  return Values(Angle::Of(phi));
+}
 
 template <bool kWithDerivatives>
 ForceJet Forcing::Sums(const Angle& at) const {
   // The sums of F, Pi and Phi above (and of dF), term by term in the same order, and of
   // F'' = -sum_k k^2 (ra_k cos k phi + rb_k sin k phi).
   const double phi = at.phi;
+  if (N_ > 0) {  // F' = F'' = 0 between the switches
+    const ForceValues w = Pieces().Values(phi);
+    return {w.F, 0.0, 0.0, w.Pi, w.Phi};
+  }
   double sF = 0.0, sdF = 0.0, sddF = 0.0, sPi = 0.0, sPhi = 0.0;
   ForEachHarmonic(K_, at, [&](int k, double ck, double sk) {
     const double a = ra_[k - 1], b = rb_[k - 1], f = a * ck + b * sk;
@@ -246,6 +335,7 @@ ForceValues Forcing::Values(const Angle& at) const {
 ForceJet Forcing::Jet(const Angle& at) const { return Sums<true>(at); }
 
 PhaseList Forcing::Crossings(double level, double lo, double hi) const {
+  if (N_ > 0) return Pieces().Switches(level, lo, hi, false);
   if (K_ == 1) return detail::HarmonicRoots(c_ - level, ra_[0], rb_[0], R_, delta_, lo, hi);
   return detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi);
 }
@@ -263,13 +353,18 @@ AngleList AnglesOf(const PhaseList& phases) {
 }  // namespace
 
 AngleList Forcing::CrossingAngles(double level, double lo, double hi) const {
+  if (N_ > 0) return AnglesOf(Crossings(level, lo, hi));
   if (K_ == 1) return detail::HarmonicRootAngles(c_ - level, ra_[0], rb_[0], R_, delta_, lo, hi);
   return AnglesOf(detail::TrigRoots(c_ - level, ra_.data(), rb_.data(), K_, lo, hi));
 }
 
-Range Forcing::Bounds(double lo, double hi) const { return Bounds(Angle::Of(lo), Angle::Of(hi)); }
+Range Forcing::Bounds(double lo, double hi) const {
+  if (N_ > 0) return Pieces().Bounds(lo, hi);
+  return Bounds(Angle::Of(lo), Angle::Of(hi));
+}
 
 Range Forcing::Bounds(const Angle& lo, const Angle& hi) const {
+  if (N_ > 0) return Pieces().Bounds(lo.phi, hi.phi);
   // The critical points of F: the zeros of dF = sum k rb_k cos k phi - k ra_k sin k phi; for one
   // harmonic rb cos phi - ra sin phi = R sin(phi + delta + pi/2).
   const AngleList critical = [&] {  // built in place (the list is 800 bytes)
@@ -296,6 +391,11 @@ Range Forcing::Bounds(const Angle& lo, const Angle& hi) const {
 }
 
 double Forcing::MaxAbs() const {
+  if (N_ > 0) {
+    double m = 0.0;
+    for (int j = 0; j < N_; ++j) m = std::max(m, std::abs(levels_[j]));
+    return m;
+  }
   if (K_ <= 1) return std::abs(c_) + amplitude();  // c + R sin(...) spans [c - R, c + R]
   const Range r = Bounds(0.0, kTau);
   return std::max(std::abs(r.min), std::abs(r.max));

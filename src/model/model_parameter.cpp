@@ -140,6 +140,12 @@ ModelParameter ParseRobotParameter(const std::string& name, int* harmonic) {
 
 void CheckRobotParameter(const Forcing& forcing, ModelParameter parameter, int harmonic) {
   if (!IsRobotParameter(parameter)) NotARobotParameter(ModelParameterName(parameter, harmonic));
+  if (forcing.pulse() && (parameter == ModelParameter::kA || IsFourierCoefficient(parameter))) {
+    throw std::invalid_argument(fmt::format(
+        "parameter = {} is invalid for a pulse force: expected c (every level moved), phi0, "
+        "T0, e or alpha",
+        ModelParameterName(parameter, harmonic)));
+  }
   if (parameter == ModelParameter::kA && !forcing.harmonic()) {
     throw std::invalid_argument(
         "parameter = A is invalid for a Fourier force: expected the harmonic family");

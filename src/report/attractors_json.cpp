@@ -1,5 +1,7 @@
 #include "capsubot/report/attractors_json.hpp"
 
+#include "capsubot/report/forcing_json.hpp"
+
 namespace capsubot::json {
 
 nlohmann::json MotionJson(const Motion& m) {
@@ -36,7 +38,9 @@ nlohmann::json AttractorsJson(const Attractors& a) {
 }
 
 nlohmann::json AttractorsJobJson(const AttractorsJobResult& result) {
-  return AttractorsJson(result.attractors);
+  nlohmann::json j = AttractorsJson(result.attractors);
+  j["force"] = ForcingJson(result.options.forcing);
+  return j;
 }
 
 nlohmann::json BasinsJobJson(const BasinsJobResult& result) {

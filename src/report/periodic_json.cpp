@@ -1,5 +1,7 @@
 #include "capsubot/report/periodic_json.hpp"
 
+#include "capsubot/report/forcing_json.hpp"
+
 namespace capsubot::json {
 
 nlohmann::json PeriodicJson(const PeriodicMotion& m) {
@@ -25,7 +27,9 @@ nlohmann::json PeriodicJson(const PeriodicMotion& m) {
 }
 
 nlohmann::json PeriodicJobJson(const PeriodicJobResult& result) {
-  return PeriodicJson(result.motion);
+  nlohmann::json j = PeriodicJson(result.motion);
+  j["force"] = ForcingJson(result.options.forcing);
+  return j;
 }
 
 }  // namespace capsubot::json

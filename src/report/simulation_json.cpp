@@ -1,5 +1,6 @@
 #include "capsubot/report/simulation_json.hpp"
 
+#include "capsubot/report/forcing_json.hpp"
 #include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::json {
@@ -45,7 +46,10 @@ nlohmann::json SimulationJson(const SimResult& r, const SimOptions& sim, const S
 }
 
 nlohmann::json SimulateJobJson(const SimulateJobResult& result) {
-  return SimulationJson(result.run, result.sim, result.orbit ? &*result.orbit : nullptr);
+  nlohmann::json j =
+      SimulationJson(result.run, result.sim, result.orbit ? &*result.orbit : nullptr);
+  j["force"] = ForcingJson(result.options.forcing);
+  return j;
 }
 
 }  // namespace capsubot::json

@@ -2,30 +2,16 @@
 
 #include "capsubot/orbit/orbit_energy.hpp"
 #include "capsubot/report/attractors_json.hpp"
+#include "capsubot/report/forcing_json.hpp"
 
 namespace capsubot::json {
-namespace {
-
-std::vector<double> Coefficients(const Forcing& f, bool sine) {
-  std::vector<double> out;
-  for (int k = 1; k <= f.harmonics(); ++k) out.push_back(sine ? f.b(k) : f.a(k));
-  return out;
-}
-
-}  // namespace
 
 nlohmann::json SolutionJson(const Solution& s) {
   const Orbit& o = s.orbit;
   const Validity& v = s.validity;
   const Forcing& f = o.forcing;
-  nlohmann::json j;
-  j["A"] = f.harmonic() ? nlohmann::json(f.amplitude()) : nlohmann::json();
-  j["c"] = f.mean();
-  j["phi0"] = f.phi0();
-  if (!f.harmonic()) {
-    j["cos"] = Coefficients(f, false);
-    j["sin"] = Coefficients(f, true);
-  }
+  nlohmann::json j = ForcingJson(f);
+  if (!f.harmonic() && !f.pulse()) j["A"] = nullptr;  // a Fourier force has no one amplitude
   j["T0"] = o.T0;
   j["e"] = o.e;
   j["status"] = StatusName(o.status);

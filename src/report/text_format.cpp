@@ -17,6 +17,14 @@ std::string NumFixed(double value, int decimals) {
 }
 
 std::string ForceFormula(const Forcing& f) {
+  if (f.pulse()) {  // G = L_j on [s_j, s_j+1) of the motor phase t
+    std::string s = "F(phi) = G(t), G =";
+    for (int j = 0; j < f.pulse_levels(); ++j) {
+      s += fmt::format("{} {:.6g} from t = {:.6g}", j == 0 ? "" : ",", f.level(j),
+                       f.switch_phase(j));
+    }
+    return s + fmt::format(",  t = phi + {:.6g}", f.phi0());
+  }
   if (f.harmonic()) {
     return fmt::format("F(phi) = {:.6g} sin(phi {} {:.6g}) + {:.6g}", f.amplitude(),
                        f.phi0() < 0 ? '-' : '+', std::abs(f.phi0()), f.mean());

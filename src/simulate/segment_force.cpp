@@ -32,6 +32,7 @@ constexpr std::array<Inverse, kMaxHarmonics> kInverse = Inverses();
 void SegmentForce::Prepare(const Forcing& motor, const double* levels, int n_levels, double tol) {
   n_levels_ = 0;
   tol_ = tol;
+  if (motor.pulse()) return;  // its crossings are the switches (Crossings), its signs exact
   for (int i = 0; i < n_levels && n_levels_ < kMaxLevels; ++i) {
     LevelCrossings& entry = table_[n_levels_++];
     entry.level = levels[i];
@@ -66,6 +67,19 @@ double SegmentForce::PieceSign(double level, double l, double r) const {
 
 void SegmentForce::Set(const Forcing& motor, double shift) {
   shift_ = shift;
+  if (motor.pulse()) {
+    std::array<double, kMaxPulseLevels> levels{}, switches{};
+    for (int j = 0; j < motor.pulse_levels(); ++j) {
+      levels[j] = motor.level(j);
+      switches[j] = motor.switch_phase(j);
+    }
+    K_ = kPulse;
+    c_ = motor.mean();
+    pieces_.Build(levels.data(), switches.data(), motor.pulse_levels(), motor.phi0() + shift,
+                  kSwitchSnap);
+    f0_ = pieces_.F(0.0);
+    return;
+  }
   // a cos k(s+p) + b sin k(s+p) = (a cos kp + b sin kp) cos ks + (b cos kp - a sin kp) sin ks.
   const double p = motor.phi0() + shift;
   K_ = motor.harmonics();
@@ -87,6 +101,12 @@ void SegmentForce::Set(const Forcing& motor, double shift) {
   f0_ = c_ + f0_;
 }
 
+double SegmentForce::ManyF(double s) const {
+  if (K_ == kPulse) return pieces_.F(s);
+  const auto [c1, s1] = LocalCosSin(s);
+  return c_ + SumF(c1, s1);
+}
+
 double SegmentForce::SumF(double c1, double s1) const {
   double ck = c1, sk = s1, sum = 0.0;
   for (int k = 0; k < K_; ++k) {
@@ -99,6 +119,10 @@ double SegmentForce::SumF(double c1, double s1) const {
 }
 
 ForceJet SegmentForce::SumJet(const Angle& at, bool derivatives) const {
+  if (K_ == kPulse) {  // F' = F'' = 0 inside a piece
+    const ForceValues w = pieces_.Values(at.phi);
+    return {w.F, 0.0, 0.0, w.Pi, w.Phi};
+  }
   const double s = at.phi, c1 = at.cos, s1 = at.sin;
   double ck = c1, sk = s1, sF = 0.0, sdF = 0.0, sddF = 0.0, sPi = 0.0, sPhi = 0.0;
   for (int k = 0; k < K_; ++k) {
@@ -120,6 +144,12 @@ ForceJet SegmentForce::SumJet(const Angle& at, bool derivatives) const {
 CrossingList SegmentForce::Crossings(double level, double lo, double hi) const {
   const LevelCrossings* entry = Find(level);
   CrossingList out;
+  if (K_ == kPulse) {
+    const PhaseList switches = pieces_.Switches(level, lo, hi, true);
+    std::copy(switches.phi.begin(), switches.phi.begin() + switches.n, out.phi.begin());
+    out.n = switches.n;
+    return out;
+  }
   if (entry == nullptr) {
     const PhaseList roots = TrigRoots(c_ - level, a_.data(), b_.data(), K_, lo, hi);
     std::copy(roots.phi.begin(), roots.phi.begin() + roots.n, out.phi.begin());

@@ -4,11 +4,15 @@
 // the factors 1/k and 1/k^2 of the integrals taken once per segment, so each point costs one
 // sincos (none along a root search: its iterates' angles come by angle addition) and no
 // division; the signs of F against the levels the events look for, between their crossings,
-// are tabulated once per run.
+// are tabulated once per run. A pulse force (Forcing::pulse) is held as its constant pieces
+// from the origin instead (detail::PulsePieces): F, Pi and Phi are polynomials of degree 0, 1
+// and 2 on each, and every switch is a cut of every level (Crossings), so each piece the event
+// searches see has a constant force.
 
 #include <array>
 #include <cmath>
 
+#include "capsubot/model/detail/pulse_pieces.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "simulate/local_sincos.hpp"
 
@@ -31,6 +35,12 @@ class SegmentForce {
  public:
   /// Levels whose crossings a run looks up instead of solving them per segment.
   static constexpr int kMaxLevels = 5;
+
+  /// A switch of a pulse force closer than this to the origin, on either side, is at the
+  /// origin: an event located at a switch leaves the origin there to within a few ulp of 2 pi,
+  /// and the force from it on is the new level. The event searches drop cuts this close after
+  /// the start too (the simulator's minimal cut).
+  static constexpr double kSwitchSnap = 1e-13;
 
   /// A part of a piece between crossings shorter than this takes its sign from its own middle
   /// (PieceSign): a longer one's middle lies far enough from the crossings for the sign of
@@ -57,9 +67,9 @@ class SegmentForce {
   /// F(s).
   double F(double s) const {
     if (s == 0.0) return f0_;
+    if (K_ != 1) return ManyF(s);
     const auto [c1, s1] = LocalCosSin(s);
-    if (K_ == 1) return c_ + (a_[0] * c1 + b_[0] * s1);  // SumF for K = 1
-    return c_ + SumF(c1, s1);
+    return c_ + (a_[0] * c1 + b_[0] * s1);  // SumF for K = 1
   }
   /// F(s), Pi(s), Phi(s) from one sincos (harmonic k by angle addition). At s = 0 exactly:
   /// F(0) = c + sum a_k and Pi = Phi = 0, without a sincos. Inline: the event searches of the
@@ -84,7 +94,8 @@ class SegmentForce {
   double PieceSign(double level, double l, double r) const;
   /// Every s in [lo, hi] (0 <= lo, hi - lo <= tau) where F crosses or touches `level`,
   /// sorted: Forcing::Crossings of the same series; for a prepared level, the motor's
-  /// crossings shifted to the segment (the same phases to rounding, without a root solve).
+  /// crossings shifted to the segment (the same phases to rounding, without a root solve). For a
+  /// pulse force every switch in [lo, hi], whatever the level.
   CrossingList Crossings(double level, double lo, double hi) const;
 
  private:
@@ -121,13 +132,16 @@ class SegmentForce {
     return j;
   }
   double SumF(double c1, double s1) const;
+  double ManyF(double s) const;  // F(s) for K != 1 harmonics or a pulse force
   ForceJet SumJet(const Angle& at, bool derivatives) const;
 
   std::array<LevelCrossings, kMaxLevels> table_{};
   int n_levels_ = 0;
   double tol_ = 0.0;
   double shift_ = 0.0;
-  int K_ = 0;
+  int K_ = 0;  // harmonics, or kPulse
+  static constexpr int kPulse = -1;
+  detail::PulsePieces pieces_;  // the pulse force from the origin (K_ = kPulse)
   double c_ = 0.0;
   double f0_ = 0.0;                                // F(0)
   std::array<double, kMaxHarmonics> a_{}, b_{};    // F = c + sum a_k cos k s + b_k sin k s

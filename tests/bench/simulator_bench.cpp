@@ -118,6 +118,37 @@ void BM_SimulateChatteringFromRest(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulateChatteringFromRest)->Arg(1000)->Arg(900)->Unit(benchmark::kMillisecond);
 
+// A pulse force (docs/model.md section 15): 0.3 for a motor phase in [0, 1.5), -0.05 for the
+// rest, T0 = 0.1, e = 0.5, alpha = 0.3, from rest in the middle over 300 periods; every start
+// of this robot ends in one period-1 motion of 1 right and 6 left impacts a period
+// (tests/cli/pulse_cli_test.cpp). state.range(0): 1 reuses the repeated cycles (the default),
+// 0 searches every event. Counters: events_per_period; items_per_second = periods per second.
+void BM_SimulatePulseFromRest(benchmark::State& state) {
+  Params params;
+  params.T0 = 0.1;
+  params.e = 0.5;
+  const Forcing f = Forcing::Pulse({0.3, -0.05}, {0.0, 1.5}, 0.0);
+  capsubot::SimOptions opt;
+  opt.alpha = 0.3;
+  opt.x0 = 0.5;
+  opt.u0 = 0.0;
+  opt.v0 = 0.0;
+  opt.transient = 200.0;
+  opt.periods = 100.0;
+  opt.reuse_cycles = state.range(0) != 0;
+  constexpr double kPeriods = 300.0;
+  double sum = 0.0, events = 0.0;
+  for (auto _ : state) {
+    const capsubot::SimResult r = capsubot::Simulate(f, params, opt);
+    sum += r.displacement;
+    events = static_cast<double>(r.events + r.transient.events);
+  }
+  benchmark::DoNotOptimize(sum);
+  state.counters["events_per_period"] = events / kPeriods;
+  state.SetItemsProcessed(static_cast<int64_t>(static_cast<double>(state.iterations()) * kPeriods));
+}
+BENCHMARK(BM_SimulatePulseFromRest)->Arg(0)->Arg(1);
+
 // The analytic stability of one orbit (what an optimiser or a sweep pays per point).
 void BM_ComputeStability(benchmark::State& state) {
   const StableOrbit s;

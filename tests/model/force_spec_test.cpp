@@ -52,5 +52,66 @@ TEST(ForceSpec, NamesWhatIsMissingOrContradictoryInTheFrontEndsTerms) {
   EXPECT_EQ(Refusal(empty, true, "").rfind("sin = [] is invalid", 0), 0U);
 }
 
+TEST(ForceSpec, BuildsAPulseForceFromItsLevelsAndSwitches) {
+  ForceSpec spec;
+  spec.levels = std::vector<double>{0.5, -0.2};
+  spec.switches = std::vector<double>{0.0, 2.0};
+  spec.phi0 = 0.3;
+  const Forcing f = spec.Build();  // the waveform follows from the parts
+  EXPECT_TRUE(f.pulse());
+  EXPECT_EQ(f.pulse_levels(), 2);
+  EXPECT_EQ(f.level(1), -0.2);
+  EXPECT_EQ(f.switch_phase(1), 2.0);
+  EXPECT_EQ(f.phi0(), 0.3);
+  spec.waveform = "pulse";
+  spec.phi0.reset();
+  EXPECT_EQ(spec.Build(false).phi0(), 0.0);  // phi0 defaults to 0 as for a Fourier force
+}
+
+TEST(ForceSpec, NamesWhatAPulseForceMissesOrMayNotHave) {
+  ForceSpec pulse;
+  pulse.waveform = "pulse";
+  pulse.levels = std::vector<double>{0.5};
+  EXPECT_EQ(Refusal(pulse, true, "--"),
+            "--switches is missing: a pulse force needs --levels L_1,...,L_N and --switches "
+            "s_1,...,s_N [rad]");
+  pulse.switches = std::vector<double>{7.0};
+  EXPECT_EQ(Refusal(pulse, true, "--"),
+            "--switches: s_1 = 7 is invalid: expected 0 <= s < 2 pi (phases in radians)");
+  pulse.switches = std::vector<double>{1.0};
+  pulse.c = 0.1;
+  EXPECT_EQ(Refusal(pulse, true, ""),
+            "c = 0.1 is invalid with waveform pulse: expected no c (the levels give the mean "
+            "force)");
+  pulse.c.reset();
+  pulse.A = 0.3;
+  EXPECT_EQ(Refusal(pulse, true, "--"),
+            "--waveform pulse takes --levels and --switches: --A is invalid with it");
+  ForceSpec fourier{std::nullopt, 0.1, 0.0, std::nullopt, std::vector<double>{0.2}};
+  fourier.levels = std::vector<double>{0.5};
+  fourier.waveform = "fourier";
+  EXPECT_EQ(Refusal(fourier, true, "--"),
+            "--levels is invalid with --waveform fourier: expected it only with --waveform pulse");
+  fourier.waveform = "square";
+  EXPECT_EQ(Refusal(fourier, true, ""),
+            "waveform = 'square' is invalid: expected sine, fourier or pulse");
+  const ForceSpec no_c{0.5, std::nullopt, 0.0, std::nullopt, std::nullopt};
+  EXPECT_EQ(Refusal(no_c, true, "--"), "--c is missing: give the mean force c");
+}
+
+TEST(ForceSpec, TheAnalyticOrbitRefusesAPulseForce) {
+  const Forcing f = Forcing::Pulse({0.5, -0.2}, {0.0, 2.0}, 0.0);
+  try {
+    RefusePulse(f, "solve");
+    FAIL() << "a pulse force was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("a pulse force is invalid for solve: expected a sine or "
+                                          "Fourier force",
+                                          0),
+              0U);
+  }
+  RefusePulse(Forcing::Harmonic(0.5, 0.1, 0.0), "solve");  // a sine force passes
+}
+
 }  // namespace
 }  // namespace capsubot

@@ -6,15 +6,25 @@
 // seen from the impact: F(phi) = G(phi + phi0), so that phi = 0 is the impact instant.
 // The paper's family F = A sin(phi + phi0) + c is the series with K = 1, a_1 = 0, b_1 = A.
 // One value type serves both families: the orbit, simulator and optimiser never ask which.
+//
+// A force may instead be piecewise constant (a pulse force, docs/model.md section 15): N
+// levels on the intervals between N switching phases of the motor,
+//     G(s) = L_j for s in [s_j, s_{j+1}),  j = 0..N-1,  s_N = s_0 + 2 pi,
+// seen from the impact the same way: F(phi) = G(phi + phi0). Every member below answers for it
+// too (F' = 0 between the switches) except those that name Fourier coefficients.
 
 #include <array>
 #include <cmath>
 #include <vector>
 
 namespace capsubot {
+namespace detail {
+class PulsePieces;
+}
 
 inline constexpr double kTau = 6.283185307179586476925286766559;  ///< the period 2*pi
 inline constexpr int kMaxHarmonics = 16;  ///< largest K a Forcing holds (no allocation)
+inline constexpr int kMaxPulseLevels = 16;  ///< largest N a pulse Forcing holds (no allocation)
 
 /// Largest |phase| [rad] an input phase may have (the motor phase phi0 of a force, a range or
 /// grid of phi0). A double phase is an angle only while its spacing is a small part of a turn:
@@ -164,13 +174,21 @@ class Forcing {
   static Forcing Fourier(double c, const std::vector<double>& a, const std::vector<double>& b,
                          double phi0);
 
+  /// Piecewise-constant force in the motor phase s: G(s) = levels[j] for s in
+  /// [switches[j], switches[j+1]), j = 0..N-1, switches[N] = switches[0] + 2 pi; switches
+  /// strictly increasing in [0, 2 pi), N = levels.size(), 1 <= N <= kMaxPulseLevels;
+  /// F(phi) = G(phi + phi0) as for the Fourier series (phi0 reduced the same way). Throws
+  /// std::invalid_argument naming the bad level or switch, its value and the rule.
+  static Forcing Pulse(const std::vector<double>& levels, const std::vector<double>& switches,
+                       double phi0);
+
   /// The same series with its mean c replaced, as Fourier(c, a, b, phi0()) builds it (phi0
   /// reduced) without the lists: no allocation. Throws std::invalid_argument for a c that is
-  /// not finite.
+  /// not finite. A pulse force: every level moved by the same amount, so that its mean is c.
   Forcing WithMean(double c) const;
   /// The same series with a_k (WithCosine) or b_k (WithSine) replaced, 1 <= k <= harmonics(),
   /// as Fourier builds it (phi0 reduced): no allocation. Throws std::invalid_argument for a
-  /// coefficient that is not finite or a k out of range.
+  /// coefficient that is not finite, a k out of range or a pulse force (it has no series).
   Forcing WithCosine(int k, double a_k) const;
   Forcing WithSine(int k, double b_k) const;
 
@@ -179,18 +197,23 @@ class Forcing {
   /// |phi0| > kMaxPhase throws std::invalid_argument (RequirePhase).
   Forcing WithPhase(double phi0) const;
   /// The same force F(phi) as a series in the phase seen from the impact: phi0 = 0, base
-  /// coefficients = the rotated ones, so F, Pi, MaxAbs, ... give the same numbers (cheap: O(K)).
+  /// coefficients = the rotated ones, so F, Pi, MaxAbs, ... give the same numbers (cheap: O(K));
+  /// a pulse force with its switches moved to the phase from the impact.
   Forcing InImpactFrame() const;
 
   double phi0() const { return phi0_; }        ///< motor phase at the impact
   double mean() const { return c_; }           ///< c, the mean force: Pi(tau) = c*tau
-  int harmonics() const { return K_; }         ///< K
+  int harmonics() const { return K_; }         ///< K (0 for a pulse force)
   double a(int k) const { return a_[k - 1]; }  ///< base cosine coefficient a_k, k = 1..K
   double b(int k) const { return b_[k - 1]; }  ///< base sine coefficient b_k, k = 1..K
-  /// True for the paper's family A sin(phi + phi0) + c (K <= 1 and a_1 = 0).
-  bool harmonic() const { return K_ == 0 || (K_ == 1 && a_[0] == 0.0); }
-  /// A of the paper's family: the amplitude of the first harmonic.
+  /// True for the paper's family A sin(phi + phi0) + c (K <= 1 and a_1 = 0; not a pulse).
+  bool harmonic() const { return N_ == 0 && (K_ == 0 || (K_ == 1 && a_[0] == 0.0)); }
+  /// A of the paper's family: the amplitude of the first harmonic (NaN for a pulse force).
   double amplitude() const;
+  bool pulse() const { return N_ > 0; }              ///< true for a piecewise-constant force
+  int pulse_levels() const { return N_; }            ///< N (0 for a Fourier force)
+  double level(int j) const { return levels_[j]; }   ///< L_j, j = 0..N-1
+  double switch_phase(int j) const { return switches_[j]; }  ///< s_j [rad], j = 0..N-1
 
   double F(double phi) const;    ///< force at phase phi (phi = 0 is the impact)
   double dF(double phi) const;   ///< dF/dphi
@@ -214,7 +237,7 @@ class Forcing {
   Range Bounds(double lo, double hi) const;
   /// Bounds with the cosine and sine of the ends known.
   Range Bounds(const Angle& lo, const Angle& hi) const;
-  /// max |F| over a whole period.
+  /// max |F| over a whole period (max |L_j| for a pulse force).
   double MaxAbs() const;
 
  private:
@@ -229,8 +252,13 @@ class Forcing {
   template <bool kWithDerivatives>
   ForceJet Sums(const Angle& at) const;  // Jet, or only its F, Pi and Phi
 
-  double c_ = 0.0;
+  // The pulse force's pieces seen from the impact.
+  detail::PulsePieces Pieces() const;
+
+  double c_ = 0.0;  // for a pulse force: the mean of its levels over a period
   double phi0_ = 0.0;
+  int N_ = 0;  // pulse levels (0: a Fourier series)
+  std::array<double, kMaxPulseLevels> levels_{}, switches_{};
   int K_ = 0;
   std::array<double, kMaxHarmonics> a_{}, b_{};    // base series, motor phase s
   std::array<double, kMaxHarmonics> ra_{}, rb_{};  // F(phi) = c + sum ra cos k phi + rb sin k phi

@@ -81,11 +81,11 @@ struct RobotModel {
   double alpha = std::numeric_limits<double>::quiet_NaN();  ///< mass ratio, 0 < alpha < 1
 };
 
-/// Throws std::invalid_argument unless `parameter` (with `harmonic`) is a robot parameter that
-/// can be set on `forcing`: A needs the harmonic family ("parameter = A is invalid for a
-/// Fourier force: expected the harmonic family"), a_k and b_k a force with k harmonics
-/// ("parameter = a3 is invalid for this force: expected a_k or b_k with 1 <= k <= K = 1, its
-/// harmonics").
+/// Throws std::invalid_argument unless `parameter` (with `harmonic`) is a robot parameter that can
+/// be set on `forcing`: not A, a_k, b_k on a pulse force ("parameter = A is invalid for a pulse
+/// force: ..."); A needs the harmonic family ("parameter = A is invalid for a Fourier force: ..."),
+/// a_k and b_k a force with k harmonics ("parameter = a3 is invalid for this force: expected a_k
+/// or b_k with 1 <= k <= K = 1, its harmonics").
 void CheckRobotParameter(const Forcing& forcing, ModelParameter parameter, int harmonic = 0);
 
 /// The value of robot parameter `parameter` (with `harmonic` k for a_k and b_k) of `robot`: A

@@ -22,7 +22,7 @@ nlohmann::json MotionJson(const Motion& motion);
 nlohmann::json AttractorsJson(const Attractors& attractors);
 
 /// What `capsubot attractors --json` prints (without provenance): AttractorsJson of the whole
-/// map's attractors.
+/// map's attractors, with "force" (ForcingJson).
 nlohmann::json AttractorsJobJson(const AttractorsJobResult& result);
 
 /// What `capsubot basins --json` prints (without provenance): the same object.

@@ -15,7 +15,8 @@ namespace capsubot::json {
 /// "iterations"}.
 nlohmann::json PeriodicJson(const PeriodicMotion& motion);
 
-/// What `capsubot periodic --json` prints (without provenance): PeriodicJson of the motion.
+/// What `capsubot periodic --json` prints (without provenance): PeriodicJson of the motion, with
+/// "force" (ForcingJson).
 nlohmann::json PeriodicJobJson(const PeriodicJobResult& result);
 
 }  // namespace capsubot::json

@@ -19,7 +19,7 @@ nlohmann::json SimulationJson(const SimResult& result, const SimOptions& options
                               const Solution* orbit);
 
 /// What `capsubot simulate --json` prints (without provenance): SimulationJson of the run, the
-/// simulator's options as run and the orbit it started from (if any).
+/// simulator's options as run and the orbit it started from (if any), with "force" (ForcingJson).
 nlohmann::json SimulateJobJson(const SimulateJobResult& result);
 
 }  // namespace capsubot::json

@@ -14,8 +14,9 @@
 
 namespace capsubot::json {
 
-/// A solved orbit: A, c, phi0 ("cos"/"sin" for a Fourier force, A null), T0, e, status, phi1,
-/// alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations.
+/// A solved orbit: its force as ForcingJson describes it (for a Fourier force also "A": null),
+/// T0, e, status, phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid,
+/// violations.
 nlohmann::json SolutionJson(const Solution& solution);
 
 /// Adds the stability of docs/model.md section 8: "multipliers" (array of {"re", "im"}),
