@@ -51,6 +51,8 @@ struct OptimizeCliOptions {
   FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
   double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
   std::string T0_range;          // reach: "LO:HI", the motor's frequency free (empty: fixed)
+  std::string waveform;          // reach: "", "sine", "fourier" or "pulse"
+  int pulse_levels = 3;          // reach: the levels N of a pulse drive
   std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
   std::vector<double> band_levels = MainJob{}.band_levels;  // main job: the speed bands' levels
   CLI::App* cmd = nullptr;
@@ -70,6 +72,8 @@ const std::vector<OptionUse> kOptionUses = {
     {"--global-evaluations", {"", "forcing", "fourier", "reach"}},
     {"--alpha", {"reach"}},
     {"--T0-range", {"reach"}},
+    {"--waveform", {"reach"}},
+    {"--pulse-levels", {"reach"}},
     {"--reach-starts", {"", "reach"}},
     {"--reach-evaluations", {"", "reach"}},
     {"--reach-local-evaluations", {"", "reach"}},
@@ -106,12 +110,13 @@ void RejectUnusedOptions(const OptimizeCliOptions& opt) {
                                             expected));
   }
   const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
-  const bool drives = harmonics->count() > 0 && opt.search.harmonics >= 2;
+  const bool drives = (harmonics->count() > 0 && opt.search.harmonics >= 2) ||
+                      opt.waveform == "fourier" || opt.waveform == "pulse";
   for (const char* name : {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations"}) {
     if (opt.cmd->get_option(name)->count() > 0 && !drives) {
       throw std::invalid_argument(fmt::format(
-          "{} conflicts with {} without --harmonics K >= 2: expected {} only with a Fourier "
-          "drive of K >= 2 harmonics",
+          "{} conflicts with {} without --harmonics K >= 2 or --waveform pulse: expected {} only "
+          "with a Fourier drive of K >= 2 harmonics or a pulse drive",
           name, RunName(opt.problem), name));
     }
   }
@@ -153,6 +158,37 @@ std::pair<double, double> ParseT0Range(const std::string& text) {
   return {lo, hi};
 }
 
+// The drives of --problem reach: --waveform pulse (--pulse-levels N), fourier (--harmonics K,
+// whose default waveform it is), or the sine.
+DriveFamily ReachDrive(const OptimizeCliOptions& opt) {
+  const bool harmonics = opt.cmd->get_option("--harmonics")->count() > 0;
+  const bool levels = opt.cmd->get_option("--pulse-levels")->count() > 0;
+  if (opt.waveform == "pulse") {
+    if (harmonics) {
+      throw std::invalid_argument(
+          "--harmonics conflicts with --waveform pulse: expected --harmonics only with a Fourier "
+          "drive (--pulse-levels N sizes a pulse drive)");
+    }
+    return DriveFamily::Pulse(opt.pulse_levels);
+  }
+  if (levels) {
+    throw std::invalid_argument(fmt::format(
+        "--pulse-levels conflicts with --waveform {}: expected --pulse-levels only with "
+        "--waveform pulse",
+        opt.waveform.empty() ? (harmonics ? "fourier" : "sine") : opt.waveform));
+  }
+  if (opt.waveform == "sine") {
+    if (harmonics && opt.search.harmonics != 1) {
+      throw std::invalid_argument(fmt::format(
+          "--harmonics = {} conflicts with --waveform sine: expected --harmonics 1 or none",
+          opt.search.harmonics));
+    }
+    return DriveFamily{};
+  }
+  if (harmonics || opt.waveform == "fourier") return DriveFamily::Fourier(opt.search.harmonics);
+  return DriveFamily{};
+}
+
 // The job the command line asks for: the mode with its own settings, the robot, the search.
 OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   OptimizeJobOptions job;
@@ -164,11 +200,7 @@ OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   if (problem == "reach") {
     const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
     const auto [T0_min, T0_max] = ParseT0Range(opt.T0_range);
-    job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha,
-                            harmonics != nullptr && harmonics->count() > 0
-                                ? DriveFamily::Fourier(opt.search.harmonics)
-                                : DriveFamily{},
-                            T0_min, T0_max};
+    job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha, ReachDrive(opt), T0_min, T0_max};
   }
   job.params = opt.params;
   job.search = opt.search;
@@ -371,6 +403,15 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "(holding --T0), the force bound tied to T0, the speed in units of "
                   "sqrt(mu g L), v_mean/sqrt(T0), maximised (docs/reach.md, Frequency)")
       ->type_name("LO:HI");
+  cmd->add_option("--waveform", opt->waveform,
+                  "reach: the drives searched: sine (A sin(phi + phi0) + c, the default), fourier "
+                  "(--harmonics K, the default when --harmonics is given) or pulse (--pulse-levels "
+                  "N constant levels between switching phases), all with max |F| <= --bound")
+      ->check(CLI::IsMember({"sine", "fourier", "pulse"}).description(""))
+      ->type_name("sine|fourier|pulse");
+  cmd->add_option("--pulse-levels", opt->pulse_levels,
+                  "reach --waveform pulse: the number N of levels, 2 <= N <= 16")
+      ->capture_default_str();
   cmd->add_option("--band-levels", opt->band_levels,
                   "main job: the levels of the speed bands, fractions of the speed from rest in "
                   "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
@@ -395,7 +436,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                                         {"drive_polishes", "--drive-polishes"},
                                         {"drive_local_evaluations", "--drive-local-evaluations"},
                                         {"harmonics", "--harmonics"},
-                                        {"band_levels", "--band-levels"}};
+                                        {"band_levels", "--band-levels"},
+                                        {"levels", "--pulse-levels"}};
   return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 

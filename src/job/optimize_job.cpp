@@ -52,6 +52,23 @@ const Motion* PeriodicMotionFromRest(const ReachResult& reach) {
   return m.status == MotionStatus::kPeriodic ? &m : nullptr;
 }
 
+// The fastest drives under the reach search's bound: the Fourier ladder from its winner and the
+// pulse drive of job.pulse_levels levels, with the main job's drive budgets.
+void FastestDrives(const OptimizeJobOptions& o, const MainJob& job, MainJobResult& r) {
+  ReachEffort drives = job.drives;
+  drives.n_x = job.reach.n_x;
+  drives.n_psi = job.reach.n_psi;
+  drives.max_seconds = job.reach.max_seconds;
+  const double bound = o.search.gait.force_bound;
+  r.drives = ClimbDriveLadder(r.params, r.robust, r.reach,
+                              drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics),
+                                                  bound, kNaN, CheckOf(o)))
+                 .steps;
+  r.pulse = OptimizeReach(
+      r.params, r.robust,
+      drives.DriveOptions(DriveFamily::Pulse(job.pulse_levels), bound, kNaN, CheckOf(o)));
+}
+
 MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
   const Params& p = o.params;
   Params exact = p;  // the exact optima: no margins
@@ -72,15 +89,8 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
   TellStage(o.on_stage,
             "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
   r.reach = OptimizeReach(p, r.robust, ReachOf(o, job.reach, kNaN));
-  TellStage(o.on_stage, "optimize: 3/5 the fastest Fourier drives from rest (K = 2, 3, ...)");
-  ReachEffort drives = job.drives;
-  drives.n_x = job.reach.n_x;
-  drives.n_psi = job.reach.n_psi;
-  drives.max_seconds = job.reach.max_seconds;
-  r.drives = ClimbDriveLadder(p, r.robust, r.reach,
-                              drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics),
-                                                  o.search.gait.force_bound, kNaN, CheckOf(o)))
-                 .steps;
+  TellStage(o.on_stage, "optimize: 3/5 the fastest Fourier and pulse drives from rest");
+  FastestDrives(o, job, r);
   TellStage(o.on_stage,
             "optimize: 4/5 how far T0, e and alpha can move (continuation of both motions)");
   const RobustnessOptions robustness = RobustnessOf(o, job);
@@ -116,14 +126,18 @@ ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
   ReachJobResult r{o.params, o.search.gait.rho_max, OptimizeReach(o.params, robust, sine_options),
                    {}};
   if (!sine) {
-    TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest Fourier drive from rest, K = 2 "
-                                      "to {} (simulated starts; up to {} minutes)",
-                                      job.drive.harmonics, job.drive.harmonics - 1));
+    TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest drive from rest, {} (simulated "
+                                      "starts; minutes)",
+                                      job.drive.Describe()));
     ReachOptions options =
         job.reach.DriveOptions(job.drive, o.search.gait.force_bound, job.alpha, CheckOf(o));
     options.T0_min = job.T0_min;
     options.T0_max = job.T0_max;
-    r.ladder = ClimbDriveLadder(o.params, robust, r.reach, options).steps;
+    if (job.drive.waveform == Waveform::kPulse) {
+      r.ladder = {r.reach, OptimizeReach(o.params, robust, options)};
+    } else {
+      r.ladder = ClimbDriveLadder(o.params, robust, r.reach, options).steps;
+    }
     r.reach = r.ladder.back();
   }
   TellStage(o.on_stage, "");
@@ -201,6 +215,7 @@ void OptimizeJobOptions::Validate() const {
   if (const auto* job = std::get_if<MainJob>(&mode)) {
     job->reach.Validate();
     job->drives.Validate();
+    DriveFamily::Pulse(job->pulse_levels).Validate();
     if (job->drive_harmonics < 2 || job->drive_harmonics > kMaxHarmonics) {
       throw std::invalid_argument(fmt::format(
           "drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",

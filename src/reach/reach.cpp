@@ -312,7 +312,8 @@ std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& star
 // robust gait's check from rest is reused when its alpha is the robot's).
 std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
                                const std::vector<Point>& points,
-                               const std::vector<DriveSeed>& starts, const ReachSeed& seed) {
+                               const std::vector<DriveSeed>& starts, bool seed_starts,
+                               const ReachSeed& seed) {
   std::vector<Candidate> candidates;
   for (const Point& p : points) {
     const Params params = ctx.ParamsAt(p.y.data());
@@ -327,7 +328,7 @@ std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
     Params params = ctx.params;
     params.T0 = SeedT0(ctx, starts[i]);
     const Forcing f = WithHarmonicsOf(ctx.family, starts[i].forcing);
-    if (i == 0 && seed.from_rest.checked && alpha == seed.gait.solution.orbit.alpha) {
+    if (i == 0 && seed_starts && alpha == seed.gait.solution.orbit.alpha) {
       candidates.push_back({f, alpha, params, seed.from_rest.attractors, false});
       continue;
     }
@@ -506,13 +507,17 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
 
   Context ctx = ContextOf(params, options, bound, have_seed ? so.forcing.phi0() : 0.0);
   std::vector<DriveSeed> starts = options.seeds;
-  if (have_seed) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
+  // The robust gait starts the search and competes when it is a force of the family (not for
+  // pulse drives: then it gives the motor phase only).
+  const bool seed_starts =
+      have_seed && !DriveCoordinates(options.drive, so.forcing, bound).empty();
+  if (seed_starts) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
   if (ctx.FreeT0() && ctx.family.sine()) {
     for (const DriveSeed& d : FrequencySeeds(params, options, bound)) starts.push_back(d);
   }
   std::vector<double> lower, upper;
   SearchBoxOf(ctx, options, starts, lower, upper);
-  const std::vector<double> y0 = ScoreStarts(ctx, starts, have_seed, lower, upper);
+  const std::vector<double> y0 = ScoreStarts(ctx, starts, seed_starts, lower, upper);
 
   const auto search_start = std::chrono::steady_clock::now();
   const detail::BoxSearchResult found = Search(ctx, options, lower, upper, y0);
@@ -520,8 +525,9 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
   out.algorithm = options.global_algorithm + "+" + options.local_algorithm;
 
-  std::vector<Candidate> candidates = Recheck(ctx, options, found.candidates, starts, out.seed);
-  if (have_seed) candidates[found.candidates.size()].is_seed = true;
+  std::vector<Candidate> candidates =
+      Recheck(ctx, options, found.candidates, starts, seed_starts, out.seed);
+  if (seed_starts) candidates[found.candidates.size()].is_seed = true;
   out.evaluations = ctx.evaluations;
   out.rejected_evaluations = ctx.rejected_evaluations;
   const Candidate* best = Winner(candidates, ctx, options, out);

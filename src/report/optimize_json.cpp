@@ -66,6 +66,17 @@ nlohmann::json Json(const ProblemJobResult& pr) {
 // coefficients in the motor phase) and phi0, the motor phase at phi = 0.
 nlohmann::json DriveJson(const ReachResult& r) {
   const Forcing& f = r.forcing;
+  if (f.pulse()) {
+    std::vector<double> levels, switches;
+    for (int j = 0; j < f.pulse_levels(); ++j) {
+      levels.push_back(f.level(j));
+      switches.push_back(f.switch_phase(j));
+    }
+    return {{"waveform", "pulse"},
+            {"levels", levels},
+            {"switches", switches},
+            {"phi0", f.phi0()}};
+  }
   std::vector<double> a, b;
   for (int k = 1; k <= f.harmonics(); ++k) {
     a.push_back(f.a(k));
@@ -132,7 +143,8 @@ nlohmann::json LadderJson(const std::vector<ReachResult>& ladder) {
   const double sine = ladder.front().mean_velocity;
   for (const ReachResult& step : ladder) {
     const bool found = !std::isnan(step.mean_velocity);
-    j.push_back({{"harmonics", step.drive.sine() ? 1 : step.drive.harmonics},
+    j.push_back({{"waveform", WaveformName(step.drive.waveform)},
+                 {"harmonics", step.drive.sine() ? 1 : step.drive.harmonics},
                  {"mean_velocity", step.mean_velocity},
                  {"speed_ratio_to_sine", step.mean_velocity / sine},
                  {"alpha", step.alpha},
@@ -171,6 +183,7 @@ nlohmann::json Json(const MainJobResult& r) {
   j["reach"]["robustness"] =
       r.reach_robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.reach_robustness);
   j["drives"] = LadderJson(r.drives);
+  j["pulse"] = ReachJson(r.pulse);
   j["fastest"] = OptimizeResultJson(r.fastest, "forcing");
   j["fastest"]["note"] = "P2 without margins or stability requirement: grazes the walls";
   j["fastest_stable"] = OptimizeResultJson(r.stable, "forcing");

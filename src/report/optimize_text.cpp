@@ -194,8 +194,9 @@ std::string DrivesText(const std::vector<ReachResult>& drives, double bound) {
   if (drives.size() < 2) return "";
   std::string t = fmt::format(
       "\n4. The fastest drive: a motor makes any periodic force up to its peak, so the force\n"
-      "   may be a Fourier series of K harmonics with max |F| <= {:g} (the bound of 3), each\n"
-      "   climbing from the winner of K - 1, simulated from every start:\n",
+      "   may be a Fourier series of K harmonics (each climbing from the winner of K - 1) or\n"
+      "   piecewise constant, with max |F| <= {:g} (the bound of 3), simulated from every\n"
+      "   start:\n",
       bound);
   const double sine = drives.front().mean_velocity;
   for (std::size_t k = 1; k < drives.size(); ++k) {
@@ -208,8 +209,22 @@ std::string DrivesText(const std::vector<ReachResult>& drives, double bound) {
     t += fmt::format("    inner mass ratio alpha = {}\n", Num(d.alpha, 5));
     t += fmt::format("    from rest        {}\n", d.summary);
   }
-  t += "   (a longer search: capsubot optimize --problem reach --harmonics K; docs/reach.md)\n";
   return t;
+}
+
+// The fastest pulse drive under the same bound, against the sine.
+std::string PulseText(const ReachResult& pulse, double sine) {
+  if (std::isnan(pulse.mean_velocity)) return "";
+  std::string t = fmt::format(
+      "   pulse, N = {} levels: mean velocity {} omega L, {} times the sine's{}\n",
+      pulse.drive.levels, Num(pulse.mean_velocity, 4),
+      fmt::format("{:.2f}", pulse.mean_velocity / sine),
+      pulse.robust_to_settings ? "" : " (CAUTION: not robust to the settings)");
+  t += fmt::format("    force            {}\n", ForceFormula(pulse.forcing));
+  t += fmt::format("    inner mass ratio alpha = {}\n", Num(pulse.alpha, 5));
+  t += fmt::format("    from rest        {}\n", pulse.summary);
+  return t + "   (a longer search: capsubot optimize --problem reach --harmonics K, or --waveform\n"
+             "   pulse --pulse-levels N; docs/reach.md)\n";
 }
 
 // 2.-5. and the summary: the robust gait, the fastest motion from rest, the fastest drives, the
@@ -237,6 +252,7 @@ std::string ResultsText(const MainJobResult& r) {
     t += RobustnessText(r.reach_robustness, "its most common motion from rest");
   }
   t += DrivesText(r.drives, bound);
+  if (!r.drives.empty()) t += PulseText(r.pulse, r.drives.front().mean_velocity);
   t += "\n5. For comparison, the exact optima without margins (they graze the walls: a robot\n"
        "   with slightly different parameters does something else).\n"
        "   The fastest valid gait:\n";

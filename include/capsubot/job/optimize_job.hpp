@@ -36,6 +36,7 @@ struct MainJob {
   /// the whole job takes seconds; its starts and time limit are those of `reach`.
   ReachEffort drives = MainJobDriveEffort();
   int drive_harmonics = 3;  ///< the largest K of the drive part; 2 <= K <= kMaxHarmonics
+  int pulse_levels = 3;     ///< the levels N of the drive part's pulse drive; 2 <= N <= 16
 
   /// The drive part's budgets: 150 Halton points and 2 polishes of 80 evaluations a step.
   static ReachEffort MainJobDriveEffort();
@@ -49,8 +50,9 @@ struct PhaseProblem {
 struct ForcingProblem {};
 /// P3: the best force of SearchRequest::harmonics harmonics with max |F| <= the force bound.
 struct FourierProblem {};
-/// The fastest motion from rest, seeded with the robust gait (P2): of the sine, or of a Fourier
-/// drive of K >= 2 harmonics, climbing from the sine (drive_ladder.hpp).
+/// The fastest motion from rest, seeded with the robust gait (P2): of the sine, of a Fourier
+/// drive of K >= 2 harmonics, climbing from the sine (drive_ladder.hpp), or of a pulse drive
+/// (after the sine's, for the comparison).
 struct ReachProblem {
   ReachEffort reach;
   double alpha = std::numeric_limits<double>::quiet_NaN();  ///< fixed 0 < alpha < 1; NaN: free
@@ -100,6 +102,8 @@ struct MainJobResult {
   /// The fastest Fourier drives under the same bound: K = 1 (the sine: `reach`), 2, ...,
   /// drive_harmonics.
   std::vector<ReachResult> drives;
+  /// The fastest pulse drive (pulse_levels levels) under the same bound.
+  ReachResult pulse;
   GaitRobustness robustness;  ///< the robust gait's motion continued (empty without it)
   /// The most common motion from rest of the reach winner continued, when it is periodic (its
   /// speed bands alone otherwise); empty without a winner.
@@ -122,7 +126,8 @@ struct ReachJobResult {
   Params params;
   double rho_max;  ///< the seed's stability requirement
   ReachResult reach;  ///< the winner of the family asked for
-  /// A Fourier drive's ladder: the winners of K = 1 (the sine), 2, ..., K; empty for the sine.
+  /// A Fourier drive's ladder: the winners of K = 1 (the sine), 2, ..., K; a pulse drive's: the
+  /// sine's winner and the pulse's; empty for the sine.
   std::vector<ReachResult> ladder;
 };
 

@@ -11,6 +11,10 @@
 // whole bound (a smaller one is the same drive, weaker). The first harmonic is a pure sine
 // (a_1 = 0, b_1 >= 0): a shift of the time origin removes its cosine, and the starts from rest
 // cover every phase of the motor.
+// Pulse, N levels: y = (l_1, ..., l_N, w_1, ..., w_N): the levels l_j bound in [-bound, bound]
+// and the widths w_j in [kMinPulseWidth, 1] of the pieces, the switches at
+// s_j = 2 pi (w_1 + ... + w_j)/(w_1 + ... + w_N), s_0 = 0 (the starts cover every phase), so
+// max |F| <= bound holds at every point of the box.
 
 #include <string>
 #include <vector>
@@ -23,9 +27,13 @@ namespace capsubot {
 enum class Waveform {
   kSine,     ///< A sin(phi + phi0) + c, A + c <= bound
   kFourier,  ///< c + sum of K harmonics, max |F| <= bound
+  kPulse,    ///< N constant levels between switching phases, |F| <= bound
 };
 
-/// "sine", "fourier".
+/// The narrowest piece of a pulse drive, as a share of the largest: w_j >= kMinPulseWidth.
+inline constexpr double kMinPulseWidth = 0.02;
+
+/// "sine", "fourier", "pulse".
 const char* WaveformName(Waveform waveform);
 
 /// The forces a reach search varies.
@@ -33,17 +41,24 @@ struct DriveFamily {
   Waveform waveform = Waveform::kSine;
   /// kFourier: the number K of harmonics, 1 <= K <= kMaxHarmonics (K = 1 is the sine).
   int harmonics = 1;
+  /// kPulse: the number N of levels, 2 <= N <= kMaxPulseLevels.
+  int levels = 2;
 
   /// The sine family, or the Fourier series of K harmonics (K = 1: the sine).
   static DriveFamily Fourier(int harmonics);
+  /// The pulse drives of N levels.
+  static DriveFamily Pulse(int levels);
 
   /// Throws std::invalid_argument naming the bad field, its value and the rule.
   void Validate() const;
   /// True for the paper's sine plus a bias (kSine, or kFourier with K = 1).
-  bool sine() const { return waveform == Waveform::kSine || harmonics == 1; }
-  /// The number of box coordinates of the force (2 for the sine, 2 K for K >= 2).
+  bool sine() const {
+    return waveform == Waveform::kSine || (waveform == Waveform::kFourier && harmonics == 1);
+  }
+  /// The number of box coordinates of the force (2 for the sine, 2 K for K >= 2, 2 N for N
+  /// levels).
   int Dimension() const;
-  /// One line: "sine", "Fourier, K = 3".
+  /// One line: "sine", "Fourier, K = 3", "pulse, N = 3".
   std::string Describe() const;
 };
 
