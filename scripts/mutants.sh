@@ -180,7 +180,9 @@ selected() {  # ID
 
 echo "scratch copy: $SRC"
 mkdir -p "$SRC"
-rsync -a --delete --exclude '/build*' --exclude '.git' "$ROOT/" "$SRC/"
+# The tree as it is (uncommitted changes too), without build folders and git's data; times kept,
+# so that a second run rebuilds only what changed.
+tar -C "$ROOT" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$SRC" -xf -
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCAPSUBOT_BUILD_BENCHMARKS=OFF >"$SCRATCH/configure.log"
 
