@@ -221,8 +221,14 @@ run_stage() {  # STAGE LOG
 }
 
 mkdir -p "$SCRATCH/logs"
-echo "baseline: every stage's tests on the unmutated copy"
-for stage in simulate attract continue reach design; do
+# The stages of the selected mutants, each once, in the table's order.
+stages=()
+for i in "${!IDS[@]}"; do
+  selected "${IDS[$i]}" || continue
+  [[ " ${stages[*]} " == *" ${STAGES[$i]} "* ]] || stages+=("${STAGES[$i]}")
+done
+echo "baseline: the tests of ${stages[*]} on the unmutated copy"
+for stage in "${stages[@]}"; do
   result=$(run_stage "$stage" "$SCRATCH/logs/baseline-$stage")
   echo "  $stage: $result"
   if [[ $result != pass ]]; then

@@ -103,8 +103,7 @@ class BranchSystem : public SmoothSystem {
   /// parameter (the robots there may not exist); kFailed when it does not converge within the
   /// options' iterations, leaves [0, 1] in x, changes the mode at the section or hits the work
   /// bound.
-  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
-                  int* iterations) override;
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations) override;
 
   bool Complete(const Vec4& y, const Vec4& orient, Node* node) override;
 
@@ -118,8 +117,7 @@ class BranchSystem : public SmoothSystem {
 
   /// The motion of period p through `state` of the robot at `lambda`, shot anew with the
   /// options' finite-difference step times `step_factor` (SmoothSystem::Reshoot).
-  PeriodicMotion Reshoot(double lambda, const PhaseState& state,
-                         double step_factor) const override;
+  PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const override;
 
  private:
   RobotModel Robot(double lambda) const { return family_(lambda); }

@@ -65,8 +65,8 @@ TEST_P(ChatterSettingsFromRest, EveryStartEndsInTheSameMotionWhateverTheCutOff) 
   const Attractor& top = ref.attractors.front();
   ASSERT_EQ(top.motion.status, MotionStatus::kPeriodic);
   const double direct =
-      testing::DirectVelocity(forcing, params, k.alpha, top.example.x, top.example.u,
-                              top.example.v, top.example.psi, kDirectTransient, kDirectRecord);
+      testing::DirectVelocity(forcing, params, k.alpha, top.example.x, top.example.u, top.example.v,
+                              top.example.psi, kDirectTransient, kDirectRecord);
   EXPECT_TRUE(testing::RelNear(top.motion.mean_velocity, direct, kDirectRelTol));
   for (const double velocity : {1e-4, 1e-8, 1e-10}) {
     const Attractors a = ClassifyStarts(forcing, params, k.alpha, starts, Options(velocity));

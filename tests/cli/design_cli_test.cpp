@@ -282,7 +282,8 @@ TEST(DesignCli, GridRowsAreReproducedBySolve) {
     ASSERT_EQ(s.status, 0) << s.out;
     const auto j = nlohmann::json::parse(s.out);
     EXPECT_TRUE(j["valid"].get<bool>());
-    EXPECT_TRUE(testing::NearAbsBelowOne(j["alpha"].get<double>(), std::stod(row[16]), kSolveRelTol));
+    EXPECT_TRUE(
+        testing::NearAbsBelowOne(j["alpha"].get<double>(), std::stod(row[16]), kSolveRelTol));
     EXPECT_TRUE(testing::NearAbsBelowOne(j["I"].get<double>(), std::stod(row[18]), kSolveRelTol));
   }
   // m2 = 0.18, 0.196, 0.214, 0.233, 0.255, 0.278, 0.3 kg: the stable window of the example

@@ -307,7 +307,8 @@ TEST(OptimizeCli, TinyT0ReturnsAValidGaitScaledFromTheReference) {
     const auto t = nlohmann::json::parse(tiny.out), r = nlohmann::json::parse(ref.out);
     EXPECT_EQ(t["status"], "ok") << t["message"];
     EXPECT_EQ(t["valid"], true);
-    EXPECT_TRUE(testing::NearAbsBelowOne(t["I"].get<double>() / 1e-9, r["I"].get<double>() / 1e-3, 1e-9))
+    EXPECT_TRUE(
+        testing::NearAbsBelowOne(t["I"].get<double>() / 1e-9, r["I"].get<double>() / 1e-3, 1e-9))
         << extra;
   }
 }

@@ -30,10 +30,10 @@ using testing::kC;
 using testing::kPhi0;
 using testing::LargestMassRatio;
 using testing::Near;
+using testing::NearAbsBelowOne;
 using testing::OrbitAt;
 using testing::OrbitParams;
 using testing::Range;
-using testing::NearAbsBelowOne;
 using testing::Robot;
 using testing::RobotOrbitPhase;
 

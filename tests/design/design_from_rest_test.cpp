@@ -222,8 +222,10 @@ TEST(DesignFromRest, EnergyOfAPeriodicMotionBalancesAndMatchesADirectRunFromItsS
   const SimResult run = Simulate(m.forcing.WithPhase(a.example.psi), m.params, so);
   ASSERT_EQ(run.status, SimStatus::kOk);
   const double unit = 1e3 * (in.m1 + b.m2_kg) * m.omega * m.omega * in.L * in.L;  // mJ
-  EXPECT_TRUE(NearAbsBelowOne(b.energy_mj, unit * run.energy.motor_work / so.periods, kDirectRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(b.impact_loss_mj, unit * run.energy.impact_loss / so.periods, kDirectRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.energy_mj, unit * run.energy.motor_work / so.periods, kDirectRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.impact_loss_mj, unit * run.energy.impact_loss / so.periods, kDirectRelTol));
   // Two impacts per period (one on each wall): no single impact velocity.
   EXPECT_EQ(a.motion.impacts_right + a.motion.impacts_left, 2);
   EXPECT_TRUE(std::isnan(b.impact_velocity_m_s));

@@ -51,7 +51,8 @@ TEST(Design, MapsThePhysicalRobotToTheModelOfSections2And9) {
   const DesignModel m = MapToModel(in, m2, f);
   const double w = 2.0 * M_PI * f;
   EXPECT_TRUE(NearAbsBelowOne(m.params.T0, 0.3 * 9.81 / (w * w * 0.02), kMapRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(m.forcing.amplitude(), 0.5 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(m.forcing.amplitude(), 0.5 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
   EXPECT_TRUE(NearAbsBelowOne(m.forcing.mean(), 0.1 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
   EXPECT_TRUE(NearAbsBelowOne(m.alpha, 0.3 / 0.5, kMapRelTol));
   EXPECT_EQ(m.params.e, 0.7);
@@ -107,9 +108,9 @@ TEST(Design, EnergyInUserUnitsBalancesAndCostOfTransportIsAtLeastMu) {
     EXPECT_TRUE(NearAbsBelowOne(g.energy_mj, g.friction_loss_mj + g.impact_loss_mj, 1e-10));
     EXPECT_GE(g.power_positive_mw, g.power_mw);
     // COT from its definition W/((m1+m2) g |displacement|), in SI.
-    EXPECT_TRUE(NearAbsBelowOne(g.cot,
-                        1e-3 * g.energy_mj / ((in.m1 + g.m2_kg) * in.g * 1e-3 * g.displacement_mm),
-                        kMapRelTol));
+    EXPECT_TRUE(NearAbsBelowOne(
+        g.cot, 1e-3 * g.energy_mj / ((in.m1 + g.m2_kg) * in.g * 1e-3 * g.displacement_mm),
+        kMapRelTol));
     EXPECT_TRUE(NearAbsBelowOne(g.power_mw, g.energy_mj * 20.0, kMapRelTol));
   }
   // The range was chosen around the example's one window of robust gaits (from about 0.213 kg
@@ -129,7 +130,8 @@ void ExpectSameDimensionlessGait(const Gait& a, const Gait& b) {
   EXPECT_TRUE(NearAbsBelowOne(ob.alpha, oa.alpha, kRootRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.forcing.phi0(), oa.forcing.phi0(), kRootRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.I, oa.I, kRootRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(b.stability.spectral_radius, a.stability.spectral_radius, kRootRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.stability.spectral_radius, a.stability.spectral_radius, kRootRelTol));
   EXPECT_TRUE(NearAbsBelowOne(b.energy.motor_work, a.energy.motor_work, kRootRelTol));
 }
 
@@ -158,7 +160,8 @@ TEST(Design, DoublingBothMassesAndTheMotorForceChangesNothingDimensionless) {
   ASSERT_TRUE(a.ok() && b.ok());
   ExpectSameDimensionlessGait(a, b);
   EXPECT_TRUE(NearAbsBelowOne(b.speed_mm_s, a.speed_mm_s, kRootRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(b.energy_mj, 2.0 * a.energy_mj, kRootRelTol));  // twice the mass moved
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.energy_mj, 2.0 * a.energy_mj, kRootRelTol));  // twice the mass moved
   EXPECT_TRUE(NearAbsBelowOne(b.cot, a.cot, kRootRelTol));
 }
 
@@ -212,7 +215,8 @@ TEST(Design, FrequencyRangeFindsTheLowestFrequencyWhenTheStrokeFits) {
   ASSERT_EQ(ranged.status, DesignStatus::kOk) << ranged.message;
   EXPECT_EQ(ranged.one_impact.frequency_hz, 10.0);
   EXPECT_TRUE(NearAbsBelowOne(ranged.one_impact.m2_kg, fixed.one_impact.m2_kg, 1e-6));
-  EXPECT_TRUE(NearAbsBelowOne(ranged.one_impact.speed_mm_s, 2.0 * fixed.one_impact.speed_mm_s, 1e-6));
+  EXPECT_TRUE(
+      NearAbsBelowOne(ranged.one_impact.speed_mm_s, 2.0 * fixed.one_impact.speed_mm_s, 1e-6));
   EXPECT_EQ(ranged.one_impact.binding, (std::vector<std::string>{"rho_max", "frequency_min"}));
 }
 
@@ -239,8 +243,8 @@ TEST(Design, AFourierMotorWithOneSineTermIsTheHarmonicMotor) {
   const Gait b = EvaluateGait(in, kStableM2, 20.0);
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_TRUE(NearAbsBelowOne(b.speed_mm_s, a.speed_mm_s, kRootRelTol));
-  EXPECT_TRUE(
-      NearAbsBelowOne(b.solution.orbit.forcing.phi0(), a.solution.orbit.forcing.phi0(), kRootRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(b.solution.orbit.forcing.phi0(), a.solution.orbit.forcing.phi0(),
+                              kRootRelTol));
 }
 
 struct BadInput {

@@ -46,7 +46,8 @@ TEST(DesignRobustness, NamesMuEAndM2InTheUsersUnits) {
   EXPECT_TRUE(testing::NearAbsBelowOne(r.parameters[0].value, 0.3, kConversionTol));
   EXPECT_EQ(r.parameters[1].value, 0.7);
   EXPECT_EQ(r.parameters[2].value, ExampleGait().m2_kg);
-  EXPECT_TRUE(testing::NearAbsBelowOne(r.parameters[2].from, 0.5 * ExampleGait().m2_kg, kConversionTol));
+  EXPECT_TRUE(
+      testing::NearAbsBelowOne(r.parameters[2].from, 0.5 * ExampleGait().m2_kg, kConversionTol));
   for (const ParameterRobustness& p : r.parameters) {
     EXPECT_EQ(p.status, ContinuationStatus::kOk) << p.name << ": " << p.message;
     EXPECT_LT(p.down.parameter, p.value) << p.name;
@@ -142,8 +143,8 @@ TEST(DesignRobustness, InnerMassLimitsAreWhereTheDesignsGaitEnds) {
   }
   // The lower limit is the stable design's inner mass (docs/design.md: with rho_max = 1 and no
   // margins the design sits on the period doubling).
-  EXPECT_TRUE(
-      testing::NearAbsBelowOne(Design(StableGaitRobot()).one_impact.m2_kg, m2.down.parameter, 1e-6));
+  EXPECT_TRUE(testing::NearAbsBelowOne(Design(StableGaitRobot()).one_impact.m2_kg,
+                                       m2.down.parameter, 1e-6));
 }
 
 TEST(DesignRobustness, RefusesAGaitThatIsNotOk) {

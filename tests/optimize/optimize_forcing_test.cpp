@@ -166,8 +166,8 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
   const OptimizeResult at_reference = OptimizeForcing(reference, o);
   const OptimizeResult at_tiny = OptimizeForcing(tiny, o);
   ASSERT_EQ(at_tiny.status, OptimizeStatus::kOk) << at_tiny.message;
-  EXPECT_TRUE(testing::NearAbsBelowOne(at_tiny.solution.orbit.I, 1e-4 * at_reference.solution.orbit.I,
-                               kScalingTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(at_tiny.solution.orbit.I,
+                                       1e-4 * at_reference.solution.orbit.I, kScalingTol));
   EXPECT_TRUE(
       testing::Near(at_tiny.solution.orbit.alpha, at_reference.solution.orbit.alpha, kScalingTol));
   EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny).validity.valid());
@@ -249,8 +249,8 @@ TEST_P(LocalAlgorithm, AgreesWithTheDefaultOnTheOptimum) {
   const OptimizeResult reference = OptimizeForcing(params);
   ASSERT_TRUE(r.found()) << r.message;
   EXPECT_NE(r.algorithm.find(GetParam()), std::string::npos) << r.algorithm;
-  EXPECT_TRUE(
-      testing::NearAbsBelowOne(r.solution.orbit.I, reference.solution.orbit.I, kAlgorithmAgreementTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(r.solution.orbit.I, reference.solution.orbit.I,
+                                       kAlgorithmAgreementTol));
 }
 
 INSTANTIATE_TEST_SUITE_P(Names, LocalAlgorithm, ::testing::ValuesIn(LocalAlgorithmNames()));

@@ -15,8 +15,8 @@ namespace capsubot {
 namespace {
 
 using testing::Near;
-using testing::Quadrature;
 using testing::NearAbsBelowOne;
+using testing::Quadrature;
 
 constexpr double kClosedFormTol = 1e-11;  // identities of the closed form, O(1..10) values
 constexpr double kRootTol = 1e-12;        // phi1 from Brent to 1e-14 in phase
@@ -119,7 +119,8 @@ TEST_P(OrbitCases, SatisfiesTheEquationsOfMotionOfEachMode) {
 
 TEST_P(OrbitCases, DisplacementIsTheQuadratureOfTheVelocity) {
   const Orbit o = Make();
-  EXPECT_TRUE(NearAbsBelowOne(o.I, Quadrature([&](double p) { return o.v(p); }, 0.0, o.phi1), 1e-11));
+  EXPECT_TRUE(
+      NearAbsBelowOne(o.I, Quadrature([&](double p) { return o.v(p); }, 0.0, o.phi1), 1e-11));
   EXPECT_TRUE(NearAbsBelowOne(o.v_mean, o.I / kTau, 1e-15));
 }
 

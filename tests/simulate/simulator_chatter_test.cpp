@@ -169,7 +169,8 @@ TEST_P(ChatterSettings, MeanVelocityDoesNotDependOnTheChatterSettings) {
       ASSERT_EQ(r.status, SimStatus::kOk) << velocity << " " << tolerance << " " << r.message;
       const double events = static_cast<double>(r.events + r.transient.events) / 300.0;
       EXPECT_LE(events, kMaxEventsPerPeriod) << velocity << " " << tolerance;
-      EXPECT_TRUE(testing::RelNear(r.v_mean, ref.v_mean, kSettingsRelTol)) << velocity << " " << tolerance;
+      EXPECT_TRUE(testing::RelNear(r.v_mean, ref.v_mean, kSettingsRelTol))
+          << velocity << " " << tolerance;
     }
   }
 }
@@ -192,13 +193,12 @@ TEST_P(ChatterSettings, EnergyBalancesOverTheRecordWithItsJumps) {
 // motion of docs/attractors.md (no chattering: the rule must leave it alone).
 INSTANTIATE_TEST_SUITE_P(
     Simulator, ChatterSettings,
-    ::testing::Values(
-        SettingsCase{"main_e_1", kMainA, kMainC, kMainPhi0, kMainAlpha, 1.0},
-        SettingsCase{"main_e_0p999", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.999},
-        SettingsCase{"main_e_0p9", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.9},
-        SettingsCase{"main_e_0p7", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.7},
-        SettingsCase{"three_right_one_left", 0.34063197373861814, 0.06410131873607934,
-                     -3.1181183398453047, 0.6435592358295166, 1.0}),
+    ::testing::Values(SettingsCase{"main_e_1", kMainA, kMainC, kMainPhi0, kMainAlpha, 1.0},
+                      SettingsCase{"main_e_0p999", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.999},
+                      SettingsCase{"main_e_0p9", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.9},
+                      SettingsCase{"main_e_0p7", kMainA, kMainC, kMainPhi0, kMainAlpha, 0.7},
+                      SettingsCase{"three_right_one_left", 0.34063197373861814, 0.06410131873607934,
+                                   -3.1181183398453047, 0.6435592358295166, 1.0}),
     [](const ::testing::TestParamInfo<SettingsCase>& info) { return info.param.name; });
 
 TEST(SimulatorChatter, RatioOfASequenceWhoseShellStopsIsItsClosedForm) {
