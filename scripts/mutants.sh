@@ -220,7 +220,7 @@ run_stage() {  # STAGE LOG
   elif [[ $status == 124 ]]; then
     echo "timeout"
   else
-    echo "FAIL: $(sed -n 's/^ *[0-9]* - \([^ ]*\) (.*/\1/p' "$log" | head -3 | tr '\n' ' ')"
+    echo "FAIL: $(sed -n 's/^[[:space:]]*[0-9]* - \([^ ]*\) (.*/\1/p' "$log" | head -3 | tr '\n' ' ')"
   fi
 }
 
