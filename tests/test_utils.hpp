@@ -50,9 +50,16 @@ inline ::testing::AssertionResult Near(double actual, double expected, double to
                                        << ": difference " << diff << " > tolerance " << tol;
 }
 
-/// Relative version: |actual - expected| <= tol * max(1, |expected|).
-inline ::testing::AssertionResult RelNear(double actual, double expected, double tol) {
+/// |actual - expected| <= tol * max(1, |expected|): an absolute tolerance where |expected| <= 1
+/// (for quantities of order one that may pass through 0), a relative one above. For a small
+/// quantity compared relatively (a velocity of 0.02) use RelNear.
+inline ::testing::AssertionResult NearAbsBelowOne(double actual, double expected, double tol) {
   return Near(actual, expected, tol * std::max(1.0, std::abs(expected)));
+}
+
+/// Relative: |actual - expected| <= rel * |expected|.
+inline ::testing::AssertionResult RelNear(double actual, double expected, double rel) {
+  return Near(actual, expected, rel * std::abs(expected));
 }
 
 /// integral_a^b f by GSL's adaptive QAGS (independent of every closed form under test).
@@ -79,6 +86,19 @@ inline SimOptions StartAt(double alpha, double x0, double u0, double v0, double 
   opt.v0 = v0;
   opt.periods = periods;
   return opt;
+}
+
+/// The mean velocity of a direct simulation from the state (x0, u0, v0) at the forcing phase
+/// psi (the start of a long run, attract/), over `record` periods after `transient` periods:
+/// what `capsubot simulate --transient T --periods R` gives. NaN when the run does not end ok.
+inline double DirectVelocity(const Forcing& forcing, const Params& params, double alpha,
+                             double x0, double u0, double v0, double psi, int transient,
+                             int record) {
+  SimOptions o = StartAt(alpha, x0, u0, v0, record);
+  o.transient = transient;
+  o.max_events_per_period = 1000;
+  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + psi), params, o);
+  return r.status == SimStatus::kOk ? r.displacement / (record * kTau) : std::nan("");
 }
 
 /// A force and model under a name (the name is what GoogleTest prints for the parameter).

@@ -41,7 +41,6 @@ def test_agrees_with_solve_on_random_points():
     rng = np.random.default_rng(20240615)
     p = random_points(rng, RANDOM_POINTS)
     g = capsubot.solve_grid(**p, stability=True, threads=2)
-    checked = 0
     kinds = {}
     for i in range(RANDOM_POINTS):
         d = capsubot.solve(**{k: float(v[i]) for k, v in p.items()}, stability=True)
@@ -52,8 +51,6 @@ def test_agrees_with_solve_on_random_points():
         names = [n for bit, n in enumerate(capsubot.CONDITIONS) if g["violations"][i] >> bit & 1]
         assert names == d["violations"]
         kinds[(d["status"], d["valid"])] = kinds.get((d["status"], d["valid"]), 0) + 1
-        checked += 1
-    assert checked == RANDOM_POINTS
     # The sample covers valid, invalid and absent orbits (each many times).
     assert sorted(kinds) == [("no_mass_ratio", False), ("non_positive_mean_force", False),
                              ("ok", False), ("ok", True)]
@@ -65,13 +62,10 @@ def test_broadcasts_like_numpy():
     c = np.array([[0.02], [0.03], [0.05]])
     g = capsubot.solve_grid(A=0.2, c=c, phi0=phi0, T0=[1.0], threads=1)
     assert g["I"].shape == (3, 7) and g["valid"].shape == (3, 7) and g["valid"].dtype == bool
-    checked = 0
     for i in range(3):
         for j in range(7):
             d = capsubot.solve(A=0.2, c=float(c[i, 0]), phi0=float(phi0[j]))
             assert same(g["I"][i, j], as_array_value(d["I"]))
-            checked += 1
-    assert checked == 21
 
 
 def test_scalars_give_zero_dimensional_arrays():

@@ -206,14 +206,17 @@ bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
   const Eigen::MatrixXd Jz = node->J.leftCols(d);
   SetMultipliers(Multipliers(Jz), &node->motion);
   node->period_doubling = d > 0 ? (Jz + Eigen::MatrixXd::Identity(d, d)).determinant() : 1.0;
+  node->neimark_sacker = NeimarkSackerFunction(node->motion.multipliers);
+  node->speed = node->grad.dot(t) / (p_ * kTau);
+  return true;
+}
+
+double NeimarkSackerFunction(const std::vector<std::complex<double>>& mu) {
   double ns = 1.0;
-  const auto& mu = node->motion.multipliers;
   for (std::size_t i = 0; i < mu.size(); ++i) {
     for (std::size_t j = i + 1; j < mu.size(); ++j) ns *= (mu[i] * mu[j] - 1.0).real();
   }
-  node->neimark_sacker = ns;
-  node->speed = node->grad.dot(t) / (p_ * kTau);
-  return true;
+  return ns;
 }
 
 bool EventNearSection(std::vector<double> phases) {

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <complex>
 #include <cstdint>
 #include <vector>
 
@@ -54,7 +55,42 @@ struct Condition {
   static Condition Parameter(double lambda);
 };
 
-class BranchSystem {
+/// The Neimark-Sacker test function of multipliers mu: the product over pairs of
+/// Re(mu_i mu_j - 1) (1 for fewer than two). It changes sign where a complex pair crosses the
+/// unit circle (|mu|^2 = 1), and also where a real pair's product crosses 1.
+double NeimarkSackerFunction(const std::vector<std::complex<double>>& mu);
+
+/// What the search for special points (special_points.hpp) asks of the system of a branch:
+/// the corrector, completed and measured points, a motion shot anew. BranchSystem is the
+/// capsule's period map; any smooth map with a parameter can stand in for it.
+class SmoothSystem {
+ public:
+  virtual ~SmoothSystem() = default;
+
+  enum class Outcome { kConverged, kFailed, kOutOfRange };
+  /// Newton's method on the extended system closed by `condition`, from y (updated), starting
+  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly).
+  /// kOutOfRange when an iterate leaves the parameter's range (y is that iterate); kFailed when
+  /// it does not converge or leaves the map's domain.
+  virtual Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
+                          int* iterations) = 0;
+
+  /// Completes a corrected point: Jacobian, tangent oriented along `orient`, multipliers,
+  /// impacts, mean velocity, events and test functions. False at the work bound.
+  virtual bool Complete(const Vec4& y, const Vec4& orient, Node* node) = 0;
+
+  /// Impacts, mean velocity and events of the motion through y (into node->motion, marks and
+  /// event_phases). False at the work bound.
+  virtual bool Measure(const Vec4& y, Node* node) = 0;
+
+  /// The motion through `state` at `lambda`, shot anew (Newton from `state`) with the
+  /// Jacobians' finite-difference step times `step_factor`: its multipliers tell a bifurcation
+  /// from an artefact of the differences.
+  virtual PeriodicMotion Reshoot(double lambda, const PhaseState& state,
+                                 double step_factor) const = 0;
+};
+
+class BranchSystem : public SmoothSystem {
  public:
   BranchSystem(const RobotFamily& family, const ContinuationOptions& options, int period,
                Section section);
@@ -63,21 +99,15 @@ class BranchSystem {
   int period() const { return p_; }
   int dimension() const { return static_cast<int>(section_.free.size()); }
 
-  enum class Outcome { kConverged, kFailed, kOutOfRange };
-  /// Newton's method on the extended system closed by `condition`, from y (updated), starting
-  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly).
-  /// kOutOfRange when an iterate leaves [from, to] in the parameter (the robots there may not
-  /// exist; y is that iterate); kFailed when it does not converge within the options'
-  /// iterations, leaves [0, 1] in x, changes the mode at the section or hits the work bound.
-  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations);
+  /// The corrector (SmoothSystem::Correct). kOutOfRange when an iterate leaves [from, to] in the
+  /// parameter (the robots there may not exist); kFailed when it does not converge within the
+  /// options' iterations, leaves [0, 1] in x, changes the mode at the section or hits the work
+  /// bound.
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations) override;
 
-  /// Completes a corrected point: Jacobian, tangent oriented along `orient`, multipliers,
-  /// impacts, mean velocity, events and test functions. False at the work bound.
-  bool Complete(const Vec4& y, const Vec4& orient, Node* node);
+  bool Complete(const Vec4& y, const Vec4& orient, Node* node) override;
 
-  /// Impacts, mean velocity and events of the motion through y (into node->motion, marks and
-  /// event_phases). False at the work bound.
-  bool Measure(const Vec4& y, Node* node);
+  bool Measure(const Vec4& y, Node* node) override;
 
   /// Moves the section of `node` to the middle of the largest gap between its events when an
   /// event lies closer to the section than a quarter of half that gap: the node is recomputed
@@ -85,10 +115,9 @@ class BranchSystem {
   /// (moved or not).
   bool Replace(Node* node);
 
-  /// The motion of period p through `state` of the robot at `lambda`, shot anew (Newton from
-  /// `state`) with the Jacobians' finite-difference step of the options times `step_factor`:
-  /// its multipliers tell a bifurcation from an artefact of the differences.
-  PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const;
+  /// The motion of period p through `state` of the robot at `lambda`, shot anew with the
+  /// options' finite-difference step times `step_factor` (SmoothSystem::Reshoot).
+  PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const override;
 
  private:
   RobotModel Robot(double lambda) const { return family_(lambda); }

@@ -36,13 +36,13 @@ bool SameEvents(const Node& a, const Node& b) {
 // The point of the branch at arclength sigma past a along a's tangent (the corrector closed by
 // t_a . (y - y_a) = sigma, from the chord between a and b); `complete` adds the Jacobian,
 // tangent and multipliers, else only the impacts and events.
-bool PointAt(BranchSystem& system, const Node& a, const Node& b, double sigma_b, double sigma,
+bool PointAt(SmoothSystem& system, const Node& a, const Node& b, double sigma_b, double sigma,
              bool complete, Node* node) {
   Vec4 y;
   for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + (sigma / sigma_b) * (b.y[i] - a.y[i]);
   int iterations = 0;
   if (system.Correct(Condition::Arclength(a.t, a.y, sigma), a.J, y, &iterations) !=
-      BranchSystem::Outcome::kConverged) {
+      SmoothSystem::Outcome::kConverged) {
     return false;
   }
   node->s = a.s + sigma;
@@ -58,14 +58,14 @@ double Sigma(const Node& a, const Node& b) {
 // The motion of a at the parameter lambda_a + sigma t_lambda (the corrector with the
 // parameter fixed, predicted from `near`, a point of a's motion at sigma_near): only its
 // impacts and events.
-bool MotionAt(BranchSystem& system, const Node& a, const Node& near, double sigma_near,
+bool MotionAt(SmoothSystem& system, const Node& a, const Node& near, double sigma_near,
               double sigma, Node* node) {
   Vec4 y;
   for (std::size_t i = 0; i < 4; ++i) y[i] = near.y[i] + (sigma - sigma_near) * a.t[i];
   y[3] = a.y[3] + sigma * a.t[3];
   int iterations = 0;
   return system.Correct(Condition::Parameter(y[3]), a.J, y, &iterations) ==
-             BranchSystem::Outcome::kConverged &&
+             SmoothSystem::Outcome::kConverged &&
          system.Measure(y, node);
 }
 
@@ -74,7 +74,7 @@ bool MotionAt(BranchSystem& system, const Node& a, const Node& near, double sigm
 // other side's motion lies on a branch that turns back at the change (a grazing impact often
 // makes such a corner); near a fold of a's branch (tangent almost normal to the parameter) the
 // arclength condition is used instead.
-SpecialPoint LocateChange(BranchSystem& system, const Node& a, const Node& b, double tolerance) {
+SpecialPoint LocateChange(SmoothSystem& system, const Node& a, const Node& b, double tolerance) {
   SpecialPoint sp;
   sp.type = a.motion.impacts_right != b.motion.impacts_right ||
                     a.motion.impacts_left != b.motion.impacts_left
@@ -108,7 +108,7 @@ SpecialPoint LocateChange(BranchSystem& system, const Node& a, const Node& b, do
 }
 
 // Regula falsi (Illinois) on the test function f between a and b.
-SpecialPoint LocateRoot(BranchSystem& system, const Node& a, const Node& b, SpecialPointType type,
+SpecialPoint LocateRoot(SmoothSystem& system, const Node& a, const Node& b, SpecialPointType type,
                         const std::function<double(const Node&)>& f, double tolerance) {
   SpecialPoint sp;
   sp.type = type;
@@ -166,7 +166,7 @@ bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, doubl
 
 // The located point is the bifurcation its test function announced, whatever the step of the
 // finite differences.
-bool Confirmed(const BranchSystem& system, const SpecialPoint& sp) {
+bool Confirmed(const SmoothSystem& system, const SpecialPoint& sp) {
   if (sp.type == SpecialPointType::kSpeedExtremum) return true;
   if (!HasCriticalMultiplier(sp.type, sp.motion, kOnCircle)) return false;
   for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {
@@ -181,7 +181,7 @@ bool Confirmed(const BranchSystem& system, const SpecialPoint& sp) {
 
 }  // namespace
 
-void FindSpecialPoints(BranchSystem& system, const Node& a, const Node& b, double tolerance,
+void FindSpecialPoints(SmoothSystem& system, const Node& a, const Node& b, double tolerance,
                        std::vector<SpecialPoint>* out) {
   if (!SameEvents(a, b)) {
     out->push_back(LocateChange(system, a, b, tolerance));

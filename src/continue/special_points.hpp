@@ -13,7 +13,7 @@ namespace capsubot::detail {
 /// the impacts or of the event order (grazing, segment change) is looked for first; the smooth
 /// test functions (fold, period doubling, Neimark-Sacker, speed extremum) only between points
 /// with the same events, where the map is smooth.
-void FindSpecialPoints(BranchSystem& system, const Node& a, const Node& b, double tolerance,
+void FindSpecialPoints(SmoothSystem& system, const Node& a, const Node& b, double tolerance,
                        std::vector<SpecialPoint>* out);
 
 }  // namespace capsubot::detail

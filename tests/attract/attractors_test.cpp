@@ -62,11 +62,6 @@ SimState After(const Forcing& forcing, const Params& params, double alpha, const
   return Simulate(forcing.WithPhase(forcing.phi0() + z.psi), params, o).final_state;
 }
 
-// |actual - expected| <= rel * |expected|.
-::testing::AssertionResult RelClose(double actual, double expected, double rel) {
-  return Near(actual, expected, rel * std::abs(expected));
-}
-
 TEST(Attractors, StableOptimumFromRestEndsInThreeRightOneLeftMotionAtItsLongRunVelocity) {
   const StableOptimum r;
   const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, FromRestOptions{});
@@ -81,14 +76,15 @@ TEST(Attractors, StableOptimumFromRestEndsInThreeRightOneLeftMotionAtItsLongRunV
   EXPECT_EQ(top.motion.impacts_left, 1);
   EXPECT_FALSE(top.one_impact_orbit);
   EXPECT_TRUE(Near(top.motion.mean_velocity, 0.0244, 1e-4));  // the figure users were told
-  EXPECT_TRUE(RelClose(top.motion.mean_velocity,
-                       LongRunVelocity(r.forcing, r.params, r.alpha, top.motion.section),
-                       kLongRunRelTol));
+  EXPECT_TRUE(testing::RelNear(top.motion.mean_velocity,
+                               LongRunVelocity(r.forcing, r.params, r.alpha, top.motion.section),
+                               kLongRunRelTol));
   // Every start of that attractor has the same exact mean velocity, whatever the start.
   int checked = 0;
   for (std::size_t k = 0; k < a.motions.size(); ++k) {
     if (a.labels[k] != 0) continue;
-    EXPECT_TRUE(RelClose(a.motions[k].mean_velocity, top.motion.mean_velocity, kLongRunRelTol));
+    EXPECT_TRUE(
+        testing::RelNear(a.motions[k].mean_velocity, top.motion.mean_velocity, kLongRunRelTol));
     ++checked;
   }
   EXPECT_EQ(checked, top.starts);
@@ -128,7 +124,8 @@ TEST(Attractors, DoNotDependOnTheThreadCountTheEarlyStopOrTheReuseOfCycles) {
     EXPECT_EQ(a1.labels[k], a2.labels[k]);
     EXPECT_EQ(a1.motions[k].period, af.motions[k].period);
     EXPECT_EQ(a1.motions[k].impacts_right, af.motions[k].impacts_right);
-    EXPECT_TRUE(RelClose(a1.motions[k].mean_velocity, af.motions[k].mean_velocity, kLongRunRelTol));
+    EXPECT_TRUE(
+        testing::RelNear(a1.motions[k].mean_velocity, af.motions[k].mean_velocity, kLongRunRelTol));
   }
   EXPECT_EQ(a1.attractors.size(), af.attractors.size());
 }
@@ -152,7 +149,7 @@ TEST(Attractors, StartOnStableOneImpactOrbitWithClearanceStaysOnIt) {
   EXPECT_EQ(m.period, 1);
   EXPECT_EQ(m.impacts_right, 1);
   EXPECT_EQ(m.impacts_left, 0);
-  EXPECT_TRUE(RelClose(m.mean_velocity, o.v_mean, kLongRunRelTol));
+  EXPECT_TRUE(testing::RelNear(m.mean_velocity, o.v_mean, kLongRunRelTol));
   EXPECT_TRUE(MatchesOrbit(m, o.forcing, o, kOrbitTol));
   // As one start among others: the attractor is flagged and counted as reached.
   const std::vector<PhaseState> starts = {start, RestStart(0.5, 1.0)};
@@ -203,8 +200,14 @@ TEST(Attractors, ClassifiesPeriodTwoMotion) {
   EXPECT_TRUE(Near(two.x, m.section.x, kOrbitTol));
   EXPECT_TRUE(Near(two.u, m.section.u, kOrbitTol));
   EXPECT_TRUE(Near(two.v, m.section.v, kOrbitTol));
-  EXPECT_TRUE(RelClose(m.mean_velocity, LongRunVelocity(r.forcing, r.params, r.alpha, m.section),
-                       kLongRunRelTol));
+  // The period search includes its bound: with max_period = 2 the same motion.
+  opt.attractor.motion.max_period = 2;
+  const Attractors bound = FindAttractors(r.forcing, r.params, r.alpha, opt);
+  ASSERT_EQ(bound.attractors.size(), 1U);
+  EXPECT_EQ(bound.attractors.front().motion.status, MotionStatus::kPeriodic);
+  EXPECT_EQ(bound.attractors.front().motion.period, 2);
+  EXPECT_TRUE(testing::RelNear(
+      m.mean_velocity, LongRunVelocity(r.forcing, r.params, r.alpha, m.section), kLongRunRelTol));
 }
 
 TEST(Attractors, StartsThatHitTheWorkBoundFormTheirOwnClass) {

@@ -20,7 +20,7 @@
 namespace capsubot {
 namespace {
 
-using testing::RelNear;
+using testing::NearAbsBelowOne;
 
 // The small inner masses of the independent scan [kg]: where the example robot's light inner
 // body drives the shell backward (docs/design.md, the from-rest figure).
@@ -134,16 +134,14 @@ TEST(DesignFromRest, TheBackwardMotionIsWhatNearlyEveryStartReachesInOneLongRun)
   ASSERT_EQ(a.motion.status, MotionStatus::kPeriodic);
   const DesignModel m = MapToModel(in, b.m2_kg, b.frequency_hz);
   const double v = 1e3 * m.omega * in.L * a.motion.mean_velocity;
-  EXPECT_TRUE(RelNear(b.speed_mm_s, v, kDirectRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(b.speed_mm_s, v, kDirectRelTol));
   const FromRestOptions o = DesignFromRestOptions().check;
-  int reached = 0, checked = 0;
+  int reached = 0;
   for (int i = 0; i < o.n_x; ++i) {
     for (int j = 0; j < o.n_psi; ++j) {
-      ++checked;
-      if (RelNear(DirectStartSpeed(in, m, i, j), v, kDirectRelTol)) ++reached;
+      if (NearAbsBelowOne(DirectStartSpeed(in, m, i, j), v, kDirectRelTol)) ++reached;
     }
   }
-  EXPECT_EQ(checked, 64);
   EXPECT_GE(reached, kReachedMin);
 }
 
@@ -173,14 +171,12 @@ TEST(DesignFromRest, TheForwardMotionWithoutAPeriodEqualsTheTimeAverageOfLongRun
       ++starts;
     }
   }
-  EXPECT_EQ(starts, 64);
-  EXPECT_TRUE(RelNear(b.speed_mm_s, sum / starts, kTimeAverageRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(b.speed_mm_s, sum / starts, kTimeAverageRelTol));
 }
 
 TEST(DesignFromRest, FractionsOfTheStartsSumToOneAndSayWhereDirectionsCoexist) {
   const DesignInput in = testing::ExampleRobot();
   const DesignFromRestResult& r = ExampleResult();
-  int checked = 0;
   for (const FromRestBest* b : {&r.forward, &r.backward}) {
     double sum = 0.0;
     std::int64_t starts = 0;
@@ -198,9 +194,7 @@ TEST(DesignFromRest, FractionsOfTheStartsSumToOneAndSayWhereDirectionsCoexist) {
     EXPECT_NEAR(b->forward_fraction + b->backward_fraction, 1.0, 1e-12);  // none at rest
     const bool both = b->forward_fraction > 0.0 && b->backward_fraction > 0.0;
     EXPECT_EQ(b->message.find("coexist") != std::string::npos, both) << b->message;
-    ++checked;
   }
-  EXPECT_EQ(checked, 2);
 }
 
 TEST(DesignFromRest, EnergyOfAPeriodicMotionBalancesAndMatchesADirectRunFromItsStart) {
@@ -211,10 +205,10 @@ TEST(DesignFromRest, EnergyOfAPeriodicMotionBalancesAndMatchesADirectRunFromItsS
   ASSERT_EQ(b.attractors.attractors.size(), 1u);
   const Attractor& a = b.attractors.attractors.front();
   ASSERT_EQ(a.motion.status, MotionStatus::kPeriodic);
-  EXPECT_TRUE(RelNear(b.energy_mj, b.friction_loss_mj + b.impact_loss_mj, kBalanceRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(b.energy_mj, b.friction_loss_mj + b.impact_loss_mj, kBalanceRelTol));
   EXPECT_GE(b.cot, in.mu);
-  EXPECT_TRUE(RelNear(b.efficiency, in.mu / b.cot, 1e-15));
-  EXPECT_TRUE(RelNear(b.power_mw, b.energy_mj * b.frequency_hz, 1e-15));
+  EXPECT_TRUE(NearAbsBelowOne(b.efficiency, in.mu / b.cot, 1e-15));
+  EXPECT_TRUE(NearAbsBelowOne(b.power_mw, b.energy_mj * b.frequency_hz, 1e-15));
   // The same budget from the attractor's own first start: transient, then its period, tallied.
   const DesignModel& m = b.model;
   SimOptions so;
@@ -228,8 +222,10 @@ TEST(DesignFromRest, EnergyOfAPeriodicMotionBalancesAndMatchesADirectRunFromItsS
   const SimResult run = Simulate(m.forcing.WithPhase(a.example.psi), m.params, so);
   ASSERT_EQ(run.status, SimStatus::kOk);
   const double unit = 1e3 * (in.m1 + b.m2_kg) * m.omega * m.omega * in.L * in.L;  // mJ
-  EXPECT_TRUE(RelNear(b.energy_mj, unit * run.energy.motor_work / so.periods, kDirectRelTol));
-  EXPECT_TRUE(RelNear(b.impact_loss_mj, unit * run.energy.impact_loss / so.periods, kDirectRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.energy_mj, unit * run.energy.motor_work / so.periods, kDirectRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(b.impact_loss_mj, unit * run.energy.impact_loss / so.periods, kDirectRelTol));
   // Two impacts per period (one on each wall): no single impact velocity.
   EXPECT_EQ(a.motion.impacts_right + a.motion.impacts_left, 2);
   EXPECT_TRUE(std::isnan(b.impact_velocity_m_s));
@@ -264,7 +260,6 @@ TEST(DesignFromRest, BadOptionsNameTheFieldItsValueAndTheRule) {
        "global_algorithm"},
       {"grid", [](DesignFromRestOptions& o) { o.check.n_x = 0; }, "n_x = 0 is invalid"},
   };
-  int checked = 0;
   for (const auto& c : cases) {
     DesignFromRestOptions o;
     c.change(o);
@@ -275,9 +270,7 @@ TEST(DesignFromRest, BadOptionsNameTheFieldItsValueAndTheRule) {
       EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
           << c.name << ": " << e.what();
     }
-    ++checked;
   }
-  EXPECT_EQ(checked, 6);
 }
 
 }  // namespace

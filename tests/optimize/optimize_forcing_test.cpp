@@ -166,8 +166,8 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
   const OptimizeResult at_reference = OptimizeForcing(reference, o);
   const OptimizeResult at_tiny = OptimizeForcing(tiny, o);
   ASSERT_EQ(at_tiny.status, OptimizeStatus::kOk) << at_tiny.message;
-  EXPECT_TRUE(testing::RelNear(at_tiny.solution.orbit.I, 1e-4 * at_reference.solution.orbit.I,
-                               kScalingTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(at_tiny.solution.orbit.I,
+                                       1e-4 * at_reference.solution.orbit.I, kScalingTol));
   EXPECT_TRUE(
       testing::Near(at_tiny.solution.orbit.alpha, at_reference.solution.orbit.alpha, kScalingTol));
   EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny).validity.valid());
@@ -190,7 +190,7 @@ TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   const Solution down = Solve(Forcing::Harmonic(k * f.amplitude(), k * f.mean(), f.phi0()), small);
   EXPECT_TRUE(testing::Near(down.orbit.phi1, at_big.solution.orbit.phi1, kScalingTol));
   EXPECT_TRUE(testing::Near(down.orbit.alpha, at_big.solution.orbit.alpha, kScalingTol));
-  EXPECT_TRUE(testing::RelNear(down.orbit.I, k * at_big.solution.orbit.I, kScalingTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(down.orbit.I, k * at_big.solution.orbit.I, kScalingTol));
   EXPECT_TRUE(testing::Near(1.0 - down.validity.x_min, k * (1.0 - v.x_min), kScalingTol));
   EXPECT_TRUE(down.validity.valid()) << down.validity.violations;
   // So the optimum at k T0 is at least k times the one at T0; it is strictly better because
@@ -201,7 +201,7 @@ TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   // The optimum at k T0 scaled up to T0: every condition but the left wall still holds.
   const Forcing& g = at_small.solution.orbit.forcing;
   const Solution up = Solve(Forcing::Harmonic(g.amplitude() / k, g.mean() / k, g.phi0()), big);
-  EXPECT_TRUE(testing::RelNear(up.orbit.I, at_small.solution.orbit.I / k, kScalingTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(up.orbit.I, at_small.solution.orbit.I / k, kScalingTol));
   EXPECT_EQ(up.validity.violations & ~(1U << static_cast<unsigned>(Condition::kLeftWall)), 0U)
       << "violated: " << up.validity.violations;
   EXPECT_TRUE(up.validity.violated(Condition::kLeftWall));  // else it would beat at_big
@@ -222,7 +222,7 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   ASSERT_EQ(s.status, SimStatus::kOk) << s.message;
   EXPECT_EQ(s.impacts_right, 1);
   EXPECT_EQ(s.impacts_left, 0);
-  EXPECT_TRUE(testing::RelNear(s.displacement, o.I, 1e-9));
+  EXPECT_TRUE(testing::NearAbsBelowOne(s.displacement, o.I, 1e-9));
   EXPECT_TRUE(testing::Near(s.final_state.u, -o.e * o.u, 1e-9));
 }
 
@@ -249,8 +249,8 @@ TEST_P(LocalAlgorithm, AgreesWithTheDefaultOnTheOptimum) {
   const OptimizeResult reference = OptimizeForcing(params);
   ASSERT_TRUE(r.found()) << r.message;
   EXPECT_NE(r.algorithm.find(GetParam()), std::string::npos) << r.algorithm;
-  EXPECT_TRUE(
-      testing::RelNear(r.solution.orbit.I, reference.solution.orbit.I, kAlgorithmAgreementTol));
+  EXPECT_TRUE(testing::NearAbsBelowOne(r.solution.orbit.I, reference.solution.orbit.I,
+                                       kAlgorithmAgreementTol));
 }
 
 INSTANTIATE_TEST_SUITE_P(Names, LocalAlgorithm, ::testing::ValuesIn(LocalAlgorithmNames()));

@@ -91,7 +91,7 @@ TEST(DesignGrid, TwoAxesOverM2AndRestitutionEqualTheRobotsComputedOneByOne) {
       const std::string& row = rows[static_cast<std::size_t>(2 * i + j)];
       // The grid's m2 is a log spacing through decimal logarithms: equal to 1e-15.
       const std::string tail = row.substr(row.find(',') + 1);
-      EXPECT_TRUE(testing::RelNear(std::stod(row), m2s[i], 1e-15)) << row;
+      EXPECT_TRUE(testing::NearAbsBelowOne(std::stod(row), m2s[i], 1e-15)) << row;
       const Gait exact = EvaluateGait(in, std::stod(row), 20.0);
       EXPECT_EQ(tail, Expected({in.e}, exact, true)) << row;
       EXPECT_EQ(g.status, exact.status) << row;
