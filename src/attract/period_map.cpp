@@ -16,7 +16,16 @@ PhaseState WithCoordinates(PhaseState base, const Vec3& z) {
 }
 
 double Residual(const Vec3& z, const PhaseState& image) {
-  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])});
+  const double scale = std::max({1.0, std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])}) /
+         scale;
+}
+
+bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z) {
+  const double velocity = kTau * (forcing.MaxAbs() + params.T0) / (alpha * (1.0 - alpha));
+  const double bound = kMaxStateScale * std::max(1.0, velocity);
+  return std::isfinite(z[0]) && std::abs(z[0]) <= bound && std::abs(z[1]) <= bound &&
+         std::abs(z[2]) <= bound;
 }
 
 std::vector<int> FreeCoordinates(SimMode mode, double v) {

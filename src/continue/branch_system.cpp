@@ -55,7 +55,8 @@ bool BranchSystem::Image(const Vec4& y, MapState* out, double* displacement) {
   return map.Map(State(y), p_, out, displacement);
 }
 
-bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad) {
+bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
+                            double step_factor) {
   const int d = dimension();
   J->resize(d, d + 1);
   if (grad != nullptr) grad->resize(d + 1);
@@ -63,14 +64,14 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
     const RobotModel r = Robot(y[3]);
     const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
     if (!CentralJacobian(map, State(y), {y[0], y[1], y[2]}, p_, section_.free,
-                         options_.shooting.step, J, grad)) {
+                         step_factor * options_.shooting.step, J, grad)) {
       return false;
     }
   }
   // The parameter's column: the same central difference over two neighbouring robots, or the
   // one-sided difference of the same order at an end of the range (beyond it the robots may
   // not exist).
-  const double h = LambdaStep(y[3]);
+  const double h = step_factor * LambdaStep(y[3]);
   const bool central = y[3] - h >= options_.from && y[3] + h <= options_.to;
   const double toward = y[3] + h > options_.to ? -1.0 : 1.0;
   Vec4 y1 = y, y2 = y;
@@ -102,6 +103,10 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
   for (int it = 0; it <= options_.max_corrector_iterations; ++it) {
     if (!(y[3] >= options_.from && y[3] <= options_.to)) return Outcome::kOutOfRange;
     if (!(y[0] >= 0.0 && y[0] <= 1.0) || !std::isfinite(y[1]) || !std::isfinite(y[2])) {
+      return Outcome::kFailed;
+    }
+    const RobotModel robot = Robot(y[3]);
+    if (!WithinScale(robot.forcing, robot.params, robot.alpha, {y[0], y[1], y[2]})) {
       return Outcome::kFailed;
     }
     MapState image;
@@ -182,15 +187,13 @@ PeriodicMotion BranchSystem::Reshoot(double lambda, const PhaseState& state,
   return ShootPeriodicMotion(robot.forcing, robot.params, robot.alpha, state, p_, shooting);
 }
 
-bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
+bool BranchSystem::Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* tangent) const {
   const int d = dimension();
-  node->y = y;
-  if (!Jacobian(y, &node->J, &node->grad) || !Measure(y, node)) return false;
-  // The tangent: [P_z - I, P_lambda] t = 0 with orient . t = 1, then normalised.
+  // [P_z - I, P_lambda] t = 0 with orient . t = 1, then normalised.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(d + 1, d + 1);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(d + 1);
   for (int r = 0; r < d; ++r) {
-    for (int c = 0; c <= d; ++c) A(r, c) = node->J(r, c) - (r == c ? 1.0 : 0.0);
+    for (int c = 0; c <= d; ++c) A(r, c) = J(r, c) - (r == c ? 1.0 : 0.0);
     A(d, r) = orient[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])];
   }
   A(d, d) = orient[3];
@@ -198,10 +201,38 @@ bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
   Eigen::VectorXd t = A.fullPivLu().solve(rhs);
   if (!t.allFinite() || t.norm() == 0.0) return false;
   t.normalize();
-  node->t = Zero();
+  *tangent = Zero();
   for (int r = 0; r < d; ++r)
-    node->t[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])] = t(r);
-  node->t[3] = t(d);
+    (*tangent)[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])] = t(r);
+  (*tangent)[3] = t(d);
+  return true;
+}
+
+double BranchSystem::Speed(const Eigen::VectorXd& grad, const Vec4& t) const {
+  double s = grad(dimension()) * t[3];
+  for (int r = 0; r < dimension(); ++r) {
+    s += grad(r) * t[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])];
+  }
+  return s / (p_ * kTau);
+}
+
+double BranchSystem::SpeedWithStep(const Node& node, double step_factor) {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd grad;
+  Vec4 t;
+  if (!Jacobian(node.y, &J, &grad, step_factor) || !Tangent(J, node.t, &t)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return Speed(grad, t);
+}
+
+bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
+  const int d = dimension();
+  node->y = y;
+  if (!Jacobian(y, &node->J, &node->grad) || !Measure(y, node) ||
+      !Tangent(node->J, orient, &node->t)) {
+    return false;
+  }
   // Multipliers and the test functions.
   const Eigen::MatrixXd Jz = node->J.leftCols(d);
   SetMultipliers(Multipliers(Jz), &node->motion);
@@ -212,7 +243,7 @@ bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
     for (std::size_t j = i + 1; j < mu.size(); ++j) ns *= (mu[i] * mu[j] - 1.0).real();
   }
   node->neimark_sacker = ns;
-  node->speed = node->grad.dot(t) / (p_ * kTau);
+  node->speed = Speed(node->grad, node->t);
   return true;
 }
 

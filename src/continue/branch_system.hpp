@@ -90,12 +90,23 @@ class BranchSystem {
   /// its multipliers tell a bifurcation from an artefact of the differences.
   PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const;
 
+  /// d mean velocity / ds at the node, from the Jacobian with the finite-difference step of the
+  /// options times `step_factor` (the tangent oriented along the node's): a sign that changes
+  /// with the step is an artefact of the differences. NaN at the work bound.
+  double SpeedWithStep(const Node& node, double step_factor);
+
  private:
   RobotModel Robot(double lambda) const { return family_(lambda); }
   // P^p at y; displacement over the p periods into *displacement (if given).
   bool Image(const Vec4& y, MapState* out, double* displacement = nullptr);
-  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad);
+  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
+                double step_factor = 1.0);
   double LambdaStep(double lambda) const;
+  // The unit tangent of J (null vector of [P_z - I, P_lambda]) oriented along `orient`, in
+  // (x, u, v, lambda); false when it is not defined.
+  bool Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* t) const;
+  // d mean velocity / ds: the displacement's gradient along the tangent over p periods.
+  double Speed(const Eigen::VectorXd& grad, const Vec4& t) const;
   PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
 
   const RobotFamily& family_;

@@ -77,12 +77,20 @@ bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, doub
   Vec4 y;
   for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + f * (beyond[i] - a.y[i]);
   y[3] = edge;
+  const Vec4 chord = y;
   int iterations = 0;
   if (system.Correct(detail::Condition::Parameter(edge), a.J, y, &iterations) !=
           Outcome::kConverged ||
       !system.Complete(y, a.t, b)) {
     return false;
   }
+  // As any step: within the step's own length of the prediction, else another motion.
+  double moved = 0.0, step = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    moved = std::max(moved, std::abs(y[i] - chord[i]));
+    step = std::max(step, std::abs(chord[i] - a.y[i]));
+  }
+  if (moved > step) return false;
   Vec4 d;
   for (std::size_t i = 0; i < 4; ++i) d[i] = y[i] - a.y[i];
   b->iterations = iterations;

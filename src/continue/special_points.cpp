@@ -24,6 +24,12 @@ constexpr double kOnCircle = 1e-5;
 // the step, those of differences that straddle a grazing by far more.
 constexpr double kOnCircleAtOtherSteps = 1e-3;
 constexpr double kStepFactor = 10.0;
+// A speed extremum needs d mean velocity / ds to change sign significantly: at both points
+// its modulus exceeds this times the mean velocity's scale max(|V_a|, |V_b|, floor) (the
+// central differences of the displacement carry its rounding over the step, about 1e-10 of
+// it; a branch of constant speed, as in phi0, has speeds of that size and random sign)...
+constexpr double kSpeedNoise = 1e-8;
+constexpr double kSpeedFloor = 1e-12;
 // Changes of the events are bracketed with the parameter fixed when the tangent's parameter
 // component is at least this (else along the arclength).
 constexpr double kParameterProbe = 0.1;
@@ -164,8 +170,26 @@ bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, doubl
   return false;
 }
 
+// ... and the same sign at both points when the Jacobian's finite-difference step is 10 times
+// larger and 10 times smaller (a difference that straddles an event gives a speed that moves
+// with the step).
+bool SpeedChangesSign(BranchSystem& system, const Node& a, const Node& b) {
+  const double scale = std::max({std::abs(a.motion.mean_velocity),
+                                 std::abs(b.motion.mean_velocity), kSpeedFloor});
+  if (!(std::abs(a.speed) > kSpeedNoise * scale && std::abs(b.speed) > kSpeedNoise * scale)) {
+    return false;
+  }
+  for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {
+    for (const Node* n : {&a, &b}) {
+      if (!(system.SpeedWithStep(*n, factor) * n->speed > 0.0)) return false;
+    }
+  }
+  return true;
+}
+
 // The located point is the bifurcation its test function announced, whatever the step of the
-// finite differences.
+// finite differences (a located or not located point alike: its motion must have the
+// multiplier).
 bool Confirmed(const BranchSystem& system, const SpecialPoint& sp) {
   if (sp.type == SpecialPointType::kSpeedExtremum) return true;
   if (!HasCriticalMultiplier(sp.type, sp.motion, kOnCircle)) return false;
@@ -201,10 +225,11 @@ void FindSpecialPoints(BranchSystem& system, const Node& a, const Node& b, doubl
   for (const Test& test : tests) {
     const double fa = test.f(a), fb = test.f(b);
     if (!(fa * fb < 0.0)) continue;
+    if (test.type == SpecialPointType::kSpeedExtremum && !SpeedChangesSign(system, a, b)) continue;
     SpecialPoint sp = LocateRoot(system, a, b, test.type, test.f, tolerance);
     // A real pair with product 1 (a neutral saddle) also changes the sign of the
     // Neimark-Sacker function: only a complex pair on the circle is one.
-    if (sp.located && !Confirmed(system, sp)) continue;
+    if (!Confirmed(system, sp)) continue;
     out->push_back(std::move(sp));
   }
   std::stable_sort(

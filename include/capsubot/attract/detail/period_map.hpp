@@ -21,8 +21,17 @@ inline Vec3 ToVec(const PhaseState& z) { return {z.x, z.u, z.v}; }
 /// `base` with (x, u, v) replaced by z (the forcing phase kept).
 PhaseState WithCoordinates(PhaseState base, const Vec3& z);
 
-/// max |P^p(z) - z| over x, u, v.
+/// max |P^p(z) - z| over x, u, v, relative to the state's scale max(1, |x|, |u|, |v|): a state
+/// is resolved only to its own rounding, which grows with it.
 double Residual(const Vec3& z, const PhaseState& image);
+
+/// Whether the state z of the robot is finite and within kMaxStateScale times its velocity
+/// scale tau (max |F| + T0) / (alpha (1 - alpha)), the most force and friction change the
+/// relative velocity in one period (docs/model.md section 3). Beyond it a period's change is
+/// lost in the state's rounding, and a residual below any tolerance proves nothing: such a
+/// state is no periodic motion the shooting or the continuation may report.
+bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z);
+inline constexpr double kMaxStateScale = 1e6;
 
 /// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
 /// velocity v (periodic.hpp): at rest (x, u); sliding (x, u, v); on a wall v (none if v = 0).
@@ -46,6 +55,10 @@ class PeriodMap {
   /// run, sampled at whole periods with `sample`); false at the work bound.
   bool Shift(MapState& s, double periods, SimObserver* observer = nullptr,
              bool sample = false) const;
+
+  const Forcing& forcing() const { return forcing_; }
+  const Params& params() const { return params_; }
+  double alpha() const { return alpha_; }
 
  private:
   const Forcing& forcing_;
