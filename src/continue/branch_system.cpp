@@ -16,6 +16,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The section is moved when an event lies closer to it than this fraction of half the largest
 // gap between events: the map is smooth only while no event crosses the section.
 constexpr double kSectionFraction = 0.25;
+// Iterations of a correction with a fixed Jacobian (each cuts the residual by the Jacobian's
+// relative error, well below 1/2 next to the point it was computed at).
+constexpr int kChordIterations = 40;
 
 Vec4 Zero() { return {0.0, 0.0, 0.0, 0.0}; }
 
@@ -55,6 +58,11 @@ bool BranchSystem::Image(const Vec4& y, MapState* out, double* displacement) {
   return map.Map(State(y), p_, out, displacement);
 }
 
+bool BranchSystem::Run(const Vec4& y, MapRun* run) {
+  const RobotModel r = Robot(y[3]);
+  return run->Run(PeriodMap(r.forcing, r.params, r.alpha, motion_), State(y), p_);
+}
+
 bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
                             double step_factor) {
   const int d = dimension();
@@ -77,14 +85,15 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
   Vec4 y1 = y, y2 = y;
   y1[3] = central ? y[3] + h : y[3] + toward * h;
   y2[3] = central ? y[3] - h : y[3] + 2.0 * toward * h;
+  if (central) {
+    MapRun r1, r2;
+    return Run(y1, &r1) && Run(y2, &r2) &&
+           DifferenceAcrossEvents(
+               r1, r2, [&](MapRun* r0) { return Run(y, r0); }, section_.free, h, d, J, grad);
+  }
   MapState i1, i2, i0;
   double d1 = 0.0, d2 = 0.0, d0 = 0.0;
-  if (!Image(y1, &i1, &d1) || !Image(y2, &i2, &d2)) return false;
-  if (central) {
-    DifferenceColumn(i1, i2, d1, d2, section_.free, h, d, J, grad);
-    return true;
-  }
-  if (!Image(y, &i0, &d0)) return false;
+  if (!Image(y1, &i1, &d1) || !Image(y2, &i2, &d2) || !Image(y, &i0, &d0)) return false;
   const Vec3 a0 = ToVec(i0.z), a1 = ToVec(i1.z), a2 = ToVec(i2.z);
   for (int r = 0; r < d; ++r) {
     const auto k = static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)]);
@@ -95,12 +104,13 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
 }
 
 BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
-                                            int* iterations) {
+                                            int* iterations, bool keep_jacobian) {
   const int d = dimension();
   const std::vector<int>& free = section_.free;
+  const int max_iterations = keep_jacobian ? kChordIterations : options_.max_corrector_iterations;
   double previous = kInf, update = kInf;
   bool fresh = false;  // J was computed at the current iterate
-  for (int it = 0; it <= options_.max_corrector_iterations; ++it) {
+  for (int it = 0; it <= max_iterations; ++it) {
     if (!(y[3] >= options_.from && y[3] <= options_.to)) return Outcome::kOutOfRange;
     if (!(y[0] >= 0.0 && y[0] <= 1.0) || !std::isfinite(y[1]) || !std::isfinite(y[2])) {
       return Outcome::kFailed;
@@ -124,8 +134,10 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
       *iterations = it;
       return Outcome::kConverged;
     }
-    if (it == options_.max_corrector_iterations) break;
-    if (it > 0 && res > kChordRate * previous) {
+    if (it == max_iterations) break;
+    if (keep_jacobian) {
+      if (!(res < previous)) return Outcome::kFailed;  // the chord iterations do not contract
+    } else if (it > 0 && res > kChordRate * previous) {
       if (fresh || !Jacobian(y, &J, nullptr)) return Outcome::kFailed;  // diverging when fresh
       fresh = true;
     } else {

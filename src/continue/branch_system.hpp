@@ -45,6 +45,12 @@ struct Node {
   double speed = 0.0;                 ///< d mean velocity / ds
 };
 
+/// Same impacts per period and the same order of events.
+inline bool SameEvents(const Node& a, const Node& b) {
+  return a.motion.impacts_right == b.motion.impacts_right &&
+         a.motion.impacts_left == b.motion.impacts_left && a.marks == b.marks;
+}
+
 /// One linear condition a . y = b that closes the extended system: the arclength condition
 /// t_i . (y - y_i) = sigma, or a fixed parameter.
 struct Condition {
@@ -62,14 +68,20 @@ class BranchSystem {
   const Section& section() const { return section_; }
   int period() const { return p_; }
   int dimension() const { return static_cast<int>(section_.free.size()); }
+  const MotionOptions& motion() const { return motion_; }
+  RobotModel Robot(double lambda) const { return family_(lambda); }
+  /// The state of the point y at the section.
+  PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
 
   enum class Outcome { kConverged, kFailed, kOutOfRange };
   /// Newton's method on the extended system closed by `condition`, from y (updated), starting
-  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly).
+  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly, unless
+  /// `keep_jacobian`: then J alone, for up to kChordIterations iterations).
   /// kOutOfRange when an iterate leaves [from, to] in the parameter (the robots there may not
   /// exist; y is that iterate); kFailed when it does not converge within the options'
   /// iterations, leaves [0, 1] in x, changes the mode at the section or hits the work bound.
-  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations);
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations,
+                  bool keep_jacobian = false);
 
   /// Completes a corrected point: Jacobian, tangent oriented along `orient`, multipliers,
   /// impacts, mean velocity, events and test functions. False at the work bound.
@@ -96,9 +108,10 @@ class BranchSystem {
   double SpeedWithStep(const Node& node, double step_factor);
 
  private:
-  RobotModel Robot(double lambda) const { return family_(lambda); }
   // P^p at y; displacement over the p periods into *displacement (if given).
   bool Image(const Vec4& y, MapState* out, double* displacement = nullptr);
+  // P^p at y with its events.
+  bool Run(const Vec4& y, MapRun* run);
   bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
                 double step_factor = 1.0);
   double LambdaStep(double lambda) const;
@@ -107,7 +120,6 @@ class BranchSystem {
   bool Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* t) const;
   // d mean velocity / ds: the displacement's gradient along the tangent over p periods.
   double Speed(const Eigen::VectorXd& grad, const Vec4& t) const;
-  PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
 
   const RobotFamily& family_;
   const ContinuationOptions& options_;

@@ -63,6 +63,7 @@ std::string MotionLimit::Text(const std::string& name, const std::string& value)
                            value);
       case BranchEnd::kNotRun:
       case BranchEnd::kEventChange:  // ends curves, never branches
+      case BranchEnd::kGrazing:      // its grazing is the special point found before it
         break;
     }
     return "not computed";

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <functional>
 
+#include "continue/wall_end.hpp"
+
 namespace capsubot::detail {
 namespace {
 
@@ -33,11 +35,9 @@ constexpr double kSpeedFloor = 1e-12;
 // Changes of the events are bracketed with the parameter fixed when the tangent's parameter
 // component is at least this (else along the arclength).
 constexpr double kParameterProbe = 0.1;
-
-bool SameEvents(const Node& a, const Node& b) {
-  return a.motion.impacts_right == b.motion.impacts_right &&
-         a.motion.impacts_left == b.motion.impacts_left && a.marks == b.marks;
-}
+// A grazing between two points is located by its flight's distance from the wall, the slope of
+// that distance first taken this fraction of the step back from the point.
+constexpr double kGrazingBackStep = 0.1;
 
 // The point of the branch at arclength sigma past a along a's tangent (the corrector closed by
 // t_a . (y - y_a) = sigma, from the chord between a and b); `complete` adds the Jacobian,
@@ -75,6 +75,13 @@ bool MotionAt(BranchSystem& system, const Node& a, const Node& near, double sigm
          system.Measure(y, node);
 }
 
+// The wall whose impacts per period differ between a and b (kNone when neither's do).
+Wall ChangedWall(const Node& a, const Node& b) {
+  if (a.motion.impacts_right != b.motion.impacts_right) return Wall::kRight;
+  if (a.motion.impacts_left != b.motion.impacts_left) return Wall::kLeft;
+  return Wall::kNone;
+}
+
 // Bisection on "a's motion exists there with a's events" along a's tangent towards b. The
 // search fixes the parameter at each probe, so it finds where a's motion ends even when the
 // other side's motion lies on a branch that turns back at the change (a grazing impact often
@@ -82,10 +89,8 @@ bool MotionAt(BranchSystem& system, const Node& a, const Node& near, double sigm
 // arclength condition is used instead.
 SpecialPoint LocateChange(BranchSystem& system, const Node& a, const Node& b, double tolerance) {
   SpecialPoint sp;
-  sp.type = a.motion.impacts_right != b.motion.impacts_right ||
-                    a.motion.impacts_left != b.motion.impacts_left
-                ? SpecialPointType::kGrazing
-                : SpecialPointType::kSegmentChange;
+  sp.wall = ChangedWall(a, b);
+  sp.type = sp.wall != Wall::kNone ? SpecialPointType::kGrazing : SpecialPointType::kSegmentChange;
   const double sigma_b = Sigma(a, b);
   const bool by_parameter = std::abs(a.t[3]) >= kParameterProbe;
   double lo = 0.0, hi = sigma_b, lambda_lo = a.y[3], lambda_hi = b.y[3];
@@ -205,10 +210,31 @@ bool Confirmed(const BranchSystem& system, const SpecialPoint& sp) {
 
 }  // namespace
 
+// A grazing between a and b located by the flight that reaches the wall: from a's side (its
+// motion ends there) or else from b's (the motion that begins there, followed back). False
+// when neither side's flight touches a wall between them.
+bool LocateGrazing(BranchSystem& system, const Node& a, const Node& b, double tolerance,
+                   SpecialPoint* sp) {
+  const Wall wall = ChangedWall(a, b);
+  const double sigma_b = Sigma(a, b);
+  const double back_step = kGrazingBackStep * std::abs(sigma_b);
+  Node end;
+  if (LocateWallEnd(system, a, back_step, sigma_b, wall, tolerance, &end, sp)) return true;
+  Node reversed = b;
+  for (double& t : reversed.t) t = -t;
+  if (!LocateWallEnd(system, reversed, back_step, -Sigma(b, a), wall, tolerance, &end, sp)) {
+    return false;
+  }
+  sp->arclength = a.s + Sigma(a, end);
+  return true;
+}
+
 void FindSpecialPoints(BranchSystem& system, const Node& a, const Node& b, double tolerance,
                        std::vector<SpecialPoint>* out) {
   if (!SameEvents(a, b)) {
-    out->push_back(LocateChange(system, a, b, tolerance));
+    SpecialPoint sp;
+    if (!LocateGrazing(system, a, b, tolerance, &sp)) sp = LocateChange(system, a, b, tolerance);
+    out->push_back(std::move(sp));
     return;
   }
   const std::size_t before = out->size();

@@ -1,11 +1,13 @@
 // The continuation at its edges (docs/continuation.md, Limits): steps near the ends of the
-// doubles, states out of the robot's scale, a branch of constant speed, a branch that ends at a
-// wall. References: the analytic one-impact orbit (one_impact_family.hpp) and Newton shooting
-// (periodic.hpp).
+// doubles, states out of the robot's scale, a branch of constant speed, branches that end at a
+// wall. References: the analytic one-impact orbit (one_impact_family.hpp), Newton shooting
+// (periodic.hpp) and a bisection on the motion's existence written here.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/continue/continuation.hpp"
@@ -22,6 +24,70 @@ using testing::kPhi0;
 using testing::OrbitAt;
 using testing::Range;
 using testing::Robot;
+using testing::RobustGait;
+
+// The bisection below stops at this width; Newton shooting converges to 1e-12 in the state,
+// which moves the existence boundary by far less.
+constexpr double kBisectionWidth = 1e-13;
+// The bar: a grazing located to 1e-8 (the default location tolerance is 1e-10).
+constexpr double kGrazingBar = 1e-8;
+
+// The family of an orbit's robot in `name` and the branch of its one-impact orbit over
+// [from, to] with `steps` (initial, min, max).
+struct Family {
+  Orbit orbit;
+  Params params;
+  std::string name;
+  RobotFamily Of() const { return NamedParameterFamily(orbit.forcing, params, orbit.alpha, name); }
+};
+
+Branch Follow(const Family& f, double start, double from, double to, std::vector<double> steps) {
+  ContinuationOptions opt = Range(from, to, start);
+  opt.initial_step = steps[0];
+  opt.min_step = steps[1];
+  opt.max_step = steps[2];
+  return ContinueBranch(f.Of(), OrbitImpactState(f.orbit, f.orbit.forcing), opt);
+}
+
+// The end of a's one-impact motion by bisection between `inside` (where it exists) and
+// `beyond`: Newton shooting with period 1 from the last motion found, kept when it converges
+// with a's impacts. Independent of the continuation's corrector and of the wall distance.
+double ExistenceEnd(const Family& f, const PeriodicMotion& a, double inside, double beyond) {
+  PhaseState state = a.state;
+  for (int k = 0; k < 200 && std::abs(beyond - inside) > kBisectionWidth; ++k) {
+    const double mid = 0.5 * (inside + beyond);
+    const RobotModel r = f.Of()(mid);
+    const PeriodicMotion m =
+        ShootPeriodicMotion(r.forcing, r.params, r.alpha, state, 1, ShootingOptions{});
+    if (m.status == ShootingStatus::kConverged && m.impacts_right == a.impacts_right &&
+        m.impacts_left == a.impacts_left) {
+      inside = mid;
+      state = m.state;
+    } else {
+      beyond = mid;
+    }
+  }
+  return inside;
+}
+
+// The direction's end is a grazing at `wall`, located within its accuracy of the independent
+// end of the motion, both within kGrazingBar.
+void ExpectGrazingEnd(const Family& f, const Branch& b, bool forward, Wall wall) {
+  SCOPED_TRACE(forward ? "upper end" : "lower end");
+  ASSERT_EQ(forward ? b.forward_end : b.backward_end, BranchEnd::kGrazing);
+  ASSERT_FALSE(b.special_points.empty());
+  const SpecialPoint& g = forward ? b.special_points.back() : b.special_points.front();
+  ASSERT_EQ(g.type, SpecialPointType::kGrazing);
+  EXPECT_EQ(g.wall, wall);
+  EXPECT_TRUE(g.located);
+  EXPECT_LE(g.accuracy, kGrazingBar);
+  const double outwards = forward ? b.points.back().tangent : -b.points.front().tangent;
+  const double beyond = g.parameter + (outwards > 0.0 ? 1e-5 : -1e-5);
+  const double inside = g.parameter - (outwards > 0.0 ? 1e-5 : -1e-5);
+  const double end = ExistenceEnd(f, g.motion, inside, beyond);
+  EXPECT_LE(std::abs(g.parameter - end), g.accuracy + kBisectionWidth)
+      << "reported " << g.parameter << " +- " << g.accuracy << ", bisection " << end;
+}
 
 // The example's branch in alpha over [0.2, 0.3] with the given steps (docs/continuation.md).
 Branch AlphaBranchWithSteps(double min_step, double max_step) {
@@ -76,6 +142,38 @@ TEST(ContinuationEdges, BranchOfConstantSpeedHasNoSpeedExtremum) {
   for (const SpecialPoint& sp : b.special_points) {
     EXPECT_NE(sp.type, SpecialPointType::kSpeedExtremum) << sp.parameter;
   }
+}
+
+TEST(ContinuationEdges, BranchEndingAtAWallEndsAtItsGrazingWhateverTheSteps) {
+  // The one-impact family of A = 0.2, c = 0.03 in alpha: its free flight touches the left wall
+  // at the lower end and the right wall at the upper end (`continue ... --from-orbit`).
+  const Family f{ComputeOrbit(Forcing::Harmonic(0.2, 0.03, -2.57993980854766), Params{1.0, 1.0, 0.0}),
+                 Params{1.0, 1.0, 0.0}, "alpha"};
+  ASSERT_TRUE(f.orbit.ok());
+  const std::vector<std::vector<double>> steps = {
+      {0.01, 1e-7, 0.05}, {0.001, 1e-7, 0.05}, {0.01, 1e-9, 0.01}, {0.01, 1e-7, 0.2}};
+  for (const std::vector<double>& s : steps) {
+    SCOPED_TRACE(::testing::Message() << s[0] << " " << s[1] << " " << s[2]);
+    const Branch b = Follow(f, f.orbit.alpha, 0.3, 0.75, s);
+    ASSERT_EQ(b.status, ContinuationStatus::kOk);
+    ExpectGrazingEnd(f, b, false, Wall::kLeft);
+    ExpectGrazingEnd(f, b, true, Wall::kRight);
+  }
+}
+
+TEST(ContinuationEdges, RobustGaitEndsInT0AndAlphaAtItsLeftWallGrazing) {
+  // The robust gait over the ranges of its robustness (gait_robustness.hpp): in T0 and in
+  // alpha the lower end is where its flight touches the left wall (in alpha at 0.6319567436,
+  // not at the 0.6319608 a bisection on the corrector's trials once reported).
+  const Orbit o = RobustGait();
+  const Family t0{o, Params{o.T0, o.e, 0.0}, "T0"};
+  const Branch bt = Follow(t0, o.T0, 0.5 * o.T0, 2.0 * o.T0, {0.01, 1e-7, 0.05});
+  ASSERT_EQ(bt.status, ContinuationStatus::kOk);
+  ExpectGrazingEnd(t0, bt, false, Wall::kLeft);
+  const Family alpha{o, Params{o.T0, o.e, 0.0}, "alpha"};
+  const Branch ba = Follow(alpha, o.alpha, 0.5 * o.alpha, 0.5 * (1.0 + o.alpha), {0.01, 1e-7, 0.05});
+  ASSERT_EQ(ba.status, ContinuationStatus::kOk);
+  ExpectGrazingEnd(alpha, ba, false, Wall::kLeft);
 }
 
 }  // namespace

@@ -98,6 +98,16 @@ enum class SpecialPointType {
 /// "fold", "period_doubling", "neimark_sacker", "grazing", "segment_change", "speed_extremum".
 const char* SpecialPointTypeName(SpecialPointType type);
 
+/// The wall a grazing's free flight touches.
+enum class Wall {
+  kNone,   ///< not a grazing
+  kRight,  ///< x = 1 (a maximum of x)
+  kLeft,   ///< x = 0 (a minimum of x)
+};
+
+/// "none", "right", "left".
+const char* WallName(Wall wall);
+
 struct SpecialPoint {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -111,6 +121,7 @@ struct SpecialPoint {
   /// side of the branch's earlier points).
   PeriodicMotion motion;
   int after_point = -1;  ///< index into Branch::points of the point just before it
+  Wall wall = Wall::kNone;  ///< a grazing's wall
 };
 
 enum class BranchEnd {
@@ -121,9 +132,12 @@ enum class BranchEnd {
   /// A two-parameter curve (special_curve.hpp) cannot go on at the smallest step without
   /// changing the motion's events (impacts, stick/slide pattern): its condition ends there.
   kEventChange,
+  /// A free flight of the motion touches a wall there (its last special point is that grazing,
+  /// located along the parameter) and the motion does not go on with its events beyond it.
+  kGrazing,
 };
 
-/// "not_run", "range_end", "lost", "max_points", "event_change".
+/// "not_run", "range_end", "lost", "max_points", "event_change", "grazing".
 const char* BranchEndName(BranchEnd end);
 
 enum class ContinuationStatus {

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <functional>
 #include <vector>
 
 #include "capsubot/attract/detail/stroboscopic.hpp"
@@ -74,8 +75,28 @@ void DifferenceColumn(const MapState& plus, const MapState& minus, double displa
                       double displacement_minus, const std::vector<int>& free, double h, int column,
                       Eigen::MatrixXd* J, Eigen::VectorXd* gradient = nullptr);
 
+/// One run of P^p: its image, displacement and events.
+struct MapRun {
+  MapState image;
+  double displacement = 0.0;
+  Recorder recorder;  ///< impacts per period and the order of the events
+  /// P^p from z; false at the work bound.
+  bool Run(const PeriodMap& map, const PhaseState& z, int p);
+  /// Same impacts per period and the same order of events as `o`.
+  bool SameEvents(const MapRun& o) const;
+};
+
+/// Column `column` of the difference of P^p from the runs at +h and -h: central when both runs
+/// have the same events; else (they straddle an impact that appears or a changed stick/slide
+/// segment, where the map is not smooth) one-sided on the side whose run keeps the events of
+/// the base run (made by `base` only then), or central when neither does.
+bool DifferenceAcrossEvents(const MapRun& plus, const MapRun& minus,
+                            const std::function<bool(MapRun*)>& base, const std::vector<int>& free,
+                            double h, int column, Eigen::MatrixXd* J, Eigen::VectorXd* gradient);
+
 /// The Jacobian of P^p at `at` (x, u, v; forcing phase of `base`) in the free coordinates by
-/// central differences of step h into the first free.size() columns of *J (resized to at least
+/// central differences of step h (one-sided where they straddle a change of the events,
+/// DifferenceAcrossEvents) into the first free.size() columns of *J (resized to at least
 /// that), with the gradient of the displacement over p periods into *gradient (if given).
 /// False at the work bound.
 bool CentralJacobian(const PeriodMap& map, const PhaseState& base, const Vec3& at, int p,
