@@ -75,9 +75,19 @@ std::string Branch::Summary(const std::string& name) const {
                                         });
   const auto stable = std::count_if(points.begin(), points.end(),
                                     [](const BranchPoint& p) { return p.motion.stable; });
+  // A located speed extremum lies between points: when faster than every point, it is the
+  // fastest motion of the branch.
+  const PeriodicMotion* top = &fastest->motion;
+  double at = fastest->parameter;
+  for (const SpecialPoint& sp : special_points) {
+    if (sp.type == SpecialPointType::kSpeedExtremum &&
+        sp.motion.mean_velocity > top->mean_velocity) {
+      top = &sp.motion;
+      at = sp.parameter;
+    }
+  }
   t += fmt::format("  fastest        mean velocity {:.10g} at {} = {:.12g} ({})\n",
-                   fastest->motion.mean_velocity, name, fastest->parameter,
-                   fastest->motion.stable ? "stable" : "unstable");
+                   top->mean_velocity, name, at, top->stable ? "stable" : "unstable");
   t += fmt::format("  stable points  {} of {}\n", stable, points.size());
   const auto wall = [&](bool forward) {
     if (special_points.empty()) return Wall::kNone;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,8 +30,15 @@ using testing::RobustGait;
 // The bisection below stops at this width; Newton shooting converges to 1e-12 in the state,
 // which moves the existence boundary by far less.
 constexpr double kBisectionWidth = 1e-13;
-// The bar: a grazing located to 1e-8 (the default location tolerance is 1e-10).
+// Grazings must be located to 1e-8 (the default location tolerance is 1e-10).
 constexpr double kGrazingBar = 1e-8;
+// A motion this far inside its grazing, and how much its spectral radius may differ from the
+// grazing's (relative to max(1, rho)): the multipliers move by their slope times kInside, a
+// few hundred times 1e-4 next to a fold (the robust gait's grazing in alpha lies 4e-4 from
+// its fold: 0.807 against 0.832), while differences that straddle the wall are off by orders
+// of magnitude (-419 where 0.81 is right).
+constexpr double kInside = 1e-4;
+constexpr double kMultiplierContinuity = 0.1;
 
 // The family of an orbit's robot in `name` and the branch of its one-impact orbit over
 // [from, to] with `steps` (initial, min, max).
@@ -68,6 +76,31 @@ double ExistenceEnd(const Family& f, const PeriodicMotion& a, double inside, dou
     }
   }
   return inside;
+}
+
+// Every point of the branch has the impacts of its start: no step lands on another motion.
+void ExpectOneMotion(const Branch& b) {
+  ASSERT_FALSE(b.points.empty());
+  const PeriodicMotion& start = b.points[static_cast<std::size_t>(b.start_index)].motion;
+  for (const BranchPoint& p : b.points) {
+    ASSERT_EQ(p.motion.impacts_right, start.impacts_right) << p.parameter;
+    ASSERT_EQ(p.motion.impacts_left, start.impacts_left) << p.parameter;
+  }
+}
+
+// The multipliers of the end grazing's motion are those of its own side: the map is smooth
+// there up to the grazing, so they differ from those of the motion kInside within (shot anew,
+// its differences far from the wall) by about the slope of the multipliers times kInside.
+void ExpectMultipliersOfItsSide(const Family& f, const Branch& b, bool forward) {
+  const SpecialPoint& g = forward ? b.special_points.back() : b.special_points.front();
+  const double outwards = forward ? b.points.back().tangent : -b.points.front().tangent;
+  const RobotModel r = f.Of()(g.parameter - (outwards > 0.0 ? kInside : -kInside));
+  const PeriodicMotion in =
+      ShootPeriodicMotion(r.forcing, r.params, r.alpha, g.motion.state, 1, ShootingOptions{});
+  ASSERT_EQ(in.status, ShootingStatus::kConverged);
+  EXPECT_NEAR(g.motion.spectral_radius, in.spectral_radius,
+              kMultiplierContinuity * std::max(1.0, in.spectral_radius))
+      << "at the grazing " << g.parameter;
 }
 
 // The direction's end is a grazing at `wall`, located within its accuracy of the independent
@@ -156,8 +189,11 @@ TEST(ContinuationEdges, BranchEndingAtAWallEndsAtItsGrazingWhateverTheSteps) {
     SCOPED_TRACE(::testing::Message() << s[0] << " " << s[1] << " " << s[2]);
     const Branch b = Follow(f, f.orbit.alpha, 0.3, 0.75, s);
     ASSERT_EQ(b.status, ContinuationStatus::kOk);
+    ExpectOneMotion(b);
     ExpectGrazingEnd(f, b, false, Wall::kLeft);
     ExpectGrazingEnd(f, b, true, Wall::kRight);
+    ExpectMultipliersOfItsSide(f, b, false);
+    ExpectMultipliersOfItsSide(f, b, true);
   }
 }
 
@@ -169,11 +205,15 @@ TEST(ContinuationEdges, RobustGaitEndsInT0AndAlphaAtItsLeftWallGrazing) {
   const Family t0{o, Params{o.T0, o.e, 0.0}, "T0"};
   const Branch bt = Follow(t0, o.T0, 0.5 * o.T0, 2.0 * o.T0, {0.01, 1e-7, 0.05});
   ASSERT_EQ(bt.status, ContinuationStatus::kOk);
+  ExpectOneMotion(bt);
   ExpectGrazingEnd(t0, bt, false, Wall::kLeft);
+  ExpectMultipliersOfItsSide(t0, bt, false);  // 0.81 stable, not the -419 of straddling ones
   const Family alpha{o, Params{o.T0, o.e, 0.0}, "alpha"};
   const Branch ba = Follow(alpha, o.alpha, 0.5 * o.alpha, 0.5 * (1.0 + o.alpha), {0.01, 1e-7, 0.05});
   ASSERT_EQ(ba.status, ContinuationStatus::kOk);
+  ExpectOneMotion(ba);  // it once went on past the grazing onto a 1 right + 1 left motion
   ExpectGrazingEnd(alpha, ba, false, Wall::kLeft);
+  ExpectMultipliersOfItsSide(alpha, ba, false);
 }
 
 }  // namespace
