@@ -26,10 +26,11 @@ constexpr double kOnCircle = 1e-5;
 // the step, those of differences that straddle a grazing by far more.
 constexpr double kOnCircleAtOtherSteps = 1e-3;
 constexpr double kStepFactor = 10.0;
-// A speed extremum needs d mean velocity / ds to change sign significantly: at both points
-// its modulus exceeds this times the mean velocity's scale max(|V_a|, |V_b|, floor) (the
+// A speed extremum needs d mean velocity / ds to change sign significantly: at one point at
+// least its modulus exceeds this times the mean velocity's scale max(|V_a|, |V_b|, floor) (the
 // central differences of the displacement carry its rounding over the step, about 1e-10 of
-// it; a branch of constant speed, as in phi0, has speeds of that size and random sign)...
+// it; a branch of constant speed, as in phi0, has speeds of that size and random sign at every
+// point, while an extremum that lies on a point has a significant one next to it)...
 constexpr double kSpeedNoise = 1e-8;
 constexpr double kSpeedFloor = 1e-12;
 // Changes of the events are bracketed with the parameter fixed when the tangent's parameter
@@ -175,18 +176,17 @@ bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, doubl
   return false;
 }
 
-// ... and the same sign at both points when the Jacobian's finite-difference step is 10 times
-// larger and 10 times smaller (a difference that straddles an event gives a speed that moves
-// with the step).
+// ... and the same sign at each significant point when the Jacobian's finite-difference step
+// is 10 times larger and 10 times smaller (a difference that straddles an event gives a speed
+// that moves with the step).
 bool SpeedChangesSign(BranchSystem& system, const Node& a, const Node& b) {
   const double scale = std::max({std::abs(a.motion.mean_velocity),
                                  std::abs(b.motion.mean_velocity), kSpeedFloor});
-  if (!(std::abs(a.speed) > kSpeedNoise * scale && std::abs(b.speed) > kSpeedNoise * scale)) {
-    return false;
-  }
+  const auto significant = [&](const Node& n) { return std::abs(n.speed) > kSpeedNoise * scale; };
+  if (!significant(a) && !significant(b)) return false;
   for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {
     for (const Node* n : {&a, &b}) {
-      if (!(system.SpeedWithStep(*n, factor) * n->speed > 0.0)) return false;
+      if (significant(*n) && !(system.SpeedWithStep(*n, factor) * n->speed > 0.0)) return false;
     }
   }
   return true;
