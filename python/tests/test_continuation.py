@@ -44,7 +44,7 @@ def test_bad_input_names_the_parameter():
     base = dict(ROBOT, param="alpha", from_=0.2, to=0.3)
     with pytest.raises(ValueError) as err:
         capsubot.continue_branch(**base, from_orbit=True, max_points=1)
-    assert str(err.value) == "max_points = 1 is invalid: expected 2 <= max_points <= 1000000"
+    assert str(err.value) == "max_points = 1 is invalid: expected 2 <= max_points <= 100000"
     with pytest.raises(ValueError) as err:
         capsubot.continue_branch(**base, x0=0.5)
     assert str(err.value) == "the start is missing: give all of x0, u0, v0, psi (or from_orbit=True)"

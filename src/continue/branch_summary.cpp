@@ -45,6 +45,11 @@ std::string EndText(BranchEnd end, const std::string& name, double lambda, Wall 
       return fmt::format("stopped at {} = {:.12g}: the most points were reached", name, lambda);
     case BranchEnd::kEventChange:
       return fmt::format("stopped at {} = {:.12g}: the motion's events change there", name, lambda);
+    case BranchEnd::kHalfPeriod:
+      return fmt::format(
+          "ended at {} = {:.12g}: next the branch passes through the motion of half its period "
+          "(the period doubling it is born at) and beyond retraces itself",
+          name, lambda);
     case BranchEnd::kNotRun:
       break;
   }

@@ -186,6 +186,12 @@ bool BranchSystem::Measure(const Vec4& y, Node* node) {
     m.impacts_left += recorder_.left[static_cast<std::size_t>(k)];
   }
   m.mean_velocity = displacement / (p_ * kTau);
+  node->half = Zero();
+  if (p_ % 2 == 0) {
+    MapState h;
+    if (!map.Map(m.state, p_ / 2, &h)) return false;
+    node->half = {h.z.x - y[0], h.z.u - y[1], h.z.v - y[2], 0.0};
+  }
   node->marks = recorder_.event_marks;
   node->event_phases = recorder_.event_phases;
   return true;

@@ -43,6 +43,9 @@ struct Node {
   double period_doubling = 0.0;       ///< det(P_z + I)
   double neimark_sacker = 0.0;        ///< prod over pairs (mu_i mu_j - 1) (1 when d < 2)
   double speed = 0.0;                 ///< d mean velocity / ds
+  /// P^(p/2)(z) - z in (x, u, v) for an even period p (else 0): it passes through 0 where the
+  /// branch meets the motion of half its period (the period doubling it is born at).
+  Vec4 half{};
 };
 
 /// Same impacts per period and the same order of events.

@@ -20,7 +20,9 @@
 namespace capsubot {
 namespace {
 
-constexpr int kMaxPointsLimit = 1000000;
+// The most points of a branch: a point holds its motion, Jacobian and events, about 1 KB, and
+// about 4 KB more in a JSON document (docs/continuation.md, Options).
+constexpr int kMaxPointsLimit = 100000;
 // Consecutive tangents must agree this well (cosine of their angle), and the corrected point
 // must lie within one step of the predicted one: otherwise the corrector may have jumped to
 // another branch, and the step is halved.
@@ -144,6 +146,10 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
       }
       continue;
     }
+    if (Dot(a.half, b.half) < 0.0) {  // through the motion of half the period: retraced beyond
+      out.end = BranchEnd::kHalfPeriod;
+      return out;
+    }
     const int k = static_cast<int>(out.nodes.size());
     const std::size_t before = out.special.size();
     detail::FindSpecialPoints(system, a, b, o.location_tolerance, &out.special);
@@ -216,9 +222,9 @@ const char* SpecialPointTypeName(SpecialPointType type) {
 }
 
 const char* BranchEndName(BranchEnd end) {
-  static constexpr const char* kNames[] = {"not_run",    "range_end",    "lost",
-                                           "max_points", "event_change", "grazing"};
-  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kGrazing) + 1);
+  static constexpr const char* kNames[] = {"not_run",      "range_end", "lost",       "max_points",
+                                           "event_change", "grazing",   "half_period"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kHalfPeriod) + 1);
   return detail::EnumName(kNames, end);
 }
 
@@ -245,7 +251,7 @@ void ContinuationOptions::Validate() const {
     fail("start", start, fmt::format("from = {} <= start <= to = {}", from, to));
   }
   if (max_points < 2 || max_points > kMaxPointsLimit) {
-    fail("max_points", max_points, "2 <= max_points <= 1000000");
+    fail("max_points", max_points, "2 <= max_points <= 100000");
   }
   if (!(min_step > 0.0) || !std::isfinite(min_step))
     fail("min_step", min_step, "a finite number > 0");

@@ -221,7 +221,10 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
        "expected --from = 0.2 <= alpha <= --to = 0.25 (the branch starts at the robot's value)\n"},
       {kAlphaBranch + " --max-points 1",
        "capsubot continue: error: --max-points = 1 is invalid: expected 2 <= max_points <= "
-       "1000000\n"},
+       "100000\n"},
+      {kAlphaBranch + " --max-points 1000000",
+       "capsubot continue: error: --max-points = 1000000 is invalid: expected 2 <= max_points <= "
+       "100000\n"},
       {"continue " + kSmallOrbit + " --param alpha --from 0.2 --to 0.3 --x0 0.5",
        "capsubot continue: error: the start is missing: give all of --x0, --u0, --v0, --psi (or "
        "--from-orbit)\n"},
