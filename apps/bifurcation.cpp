@@ -39,7 +39,8 @@ struct BifurcationCommandOptions {
 const FlagNames& BifurcationFlagNames() {
   static const FlagNames names = [] {
     FlagNames n = MotionFlagNames();
-    n.insert(n.end(), {{"impacts", "-o"},
+    n.insert(n.end(), {{"steps", "--steps"},
+                       {"impacts", "-o"},
                        {"summary", "--summary"},
                        {"to", "--to"},
                        {"checkpoint_seconds", "--checkpoint-seconds"}});

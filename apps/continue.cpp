@@ -75,7 +75,8 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
 
 // The continuation's fields as the flags that set them.
 const FlagNames& ContinueFlagNames() {
-  static const FlagNames names = {{"from", "--from"},
+  static const FlagNames names = {{"param", "--param"},
+                                  {"from", "--from"},
                                   {"to", "--to"},
                                   {"max_points", "--max-points"},
                                   {"initial_step", "--initial-step"},

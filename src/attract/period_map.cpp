@@ -16,7 +16,16 @@ PhaseState WithCoordinates(PhaseState base, const Vec3& z) {
 }
 
 double Residual(const Vec3& z, const PhaseState& image) {
-  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])});
+  const double scale = std::max({1.0, std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+  return std::max({std::abs(image.x - z[0]), std::abs(image.u - z[1]), std::abs(image.v - z[2])}) /
+         scale;
+}
+
+bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z) {
+  const double velocity = kTau * (forcing.MaxAbs() + params.T0) / (alpha * (1.0 - alpha));
+  const double bound = kMaxStateScale * std::max(1.0, velocity);
+  return std::isfinite(z[0]) && std::abs(z[0]) <= bound && std::abs(z[1]) <= bound &&
+         std::abs(z[2]) <= bound;
 }
 
 std::vector<int> FreeCoordinates(SimMode mode, double v) {
@@ -65,24 +74,61 @@ void DifferenceColumn(const MapState& plus, const MapState& minus, double displa
     (*gradient)(column) = (displacement_plus - displacement_minus) / (2.0 * h);
 }
 
+bool MapRun::Run(const PeriodMap& map, const PhaseState& z, int p) {
+  recorder.Start(p, false, true);
+  return map.Map(z, p, &image, &displacement, &recorder);
+}
+
+bool MapRun::SameEvents(const MapRun& o) const {
+  return recorder.right == o.recorder.right && recorder.left == o.recorder.left &&
+         recorder.event_marks == o.recorder.event_marks;
+}
+
+bool DifferenceAcrossEvents(const MapRun& plus, const MapRun& minus,
+                            const std::function<bool(MapRun*)>& base, const std::vector<int>& free,
+                            double h, int column, Eigen::MatrixXd* J, Eigen::VectorXd* gradient) {
+  if (plus.SameEvents(minus)) {
+    DifferenceColumn(plus.image, minus.image, plus.displacement, minus.displacement, free, h,
+                     column, J, gradient);
+    return true;
+  }
+  // The runs straddle a change of the events (an impact appears, a stick/slide segment
+  // changes): the one-sided difference on the side whose run keeps the base's events.
+  MapRun b;
+  if (!base(&b)) return false;
+  const bool plus_side = plus.SameEvents(b);
+  if (!plus_side && !minus.SameEvents(b)) {  // both change: nothing smooth to take
+    DifferenceColumn(plus.image, minus.image, plus.displacement, minus.displacement, free, h,
+                     column, J, gradient);
+    return true;
+  }
+  const MapRun& side = plus_side ? plus : minus;
+  // (side - base) / (+-h): a central difference of half the step over [base, side] twice.
+  DifferenceColumn(plus_side ? side.image : b.image, plus_side ? b.image : side.image,
+                   plus_side ? side.displacement : b.displacement,
+                   plus_side ? b.displacement : side.displacement, free, 0.5 * h, column, J,
+                   gradient);
+  return true;
+}
+
 bool CentralJacobian(const PeriodMap& map, const PhaseState& base, const Vec3& at, int p,
                      const std::vector<int>& free, double h, Eigen::MatrixXd* J,
                      Eigen::VectorXd* gradient) {
   const auto d = static_cast<Eigen::Index>(free.size());
   if (J->rows() != d || J->cols() < d) J->resize(d, d);
   if (gradient != nullptr && gradient->size() < d) gradient->resize(d);
+  const auto run_base = [&](MapRun* r) { return r->Run(map, WithCoordinates(base, at), p); };
   for (Eigen::Index c = 0; c < d; ++c) {
     Vec3 plus = at, minus = at;
     const auto k = static_cast<std::size_t>(free[static_cast<std::size_t>(c)]);
     plus[k] += h;
     minus[k] -= h;
-    MapState ip, im;
-    double dp = 0.0, dm = 0.0;
-    if (!map.Map(WithCoordinates(base, plus), p, &ip, &dp) ||
-        !map.Map(WithCoordinates(base, minus), p, &im, &dm)) {
+    MapRun ip, im;
+    if (!ip.Run(map, WithCoordinates(base, plus), p) ||
+        !im.Run(map, WithCoordinates(base, minus), p) ||
+        !DifferenceAcrossEvents(ip, im, run_base, free, h, static_cast<int>(c), J, gradient)) {
       return false;
     }
-    DifferenceColumn(ip, im, dp, dm, free, h, static_cast<int>(c), J, gradient);
   }
   return true;
 }

@@ -177,8 +177,11 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   out.mode = mode;
   out.dimension = d;
   if (out.status == ShootingStatus::kEventLimit) return out;
-  out.status =
-      res <= o.residual_tolerance ? ShootingStatus::kConverged : ShootingStatus::kNoConvergence;
+  const bool resolved = detail::WithinScale(shooter.map().forcing(), shooter.map().params(),
+                                             shooter.map().alpha(), z);
+  out.out_of_scale = !resolved;
+  out.status = res <= o.residual_tolerance && resolved ? ShootingStatus::kConverged
+                                                       : ShootingStatus::kNoConvergence;
   // Multipliers at the reported state.
   if (d == 0 || detail::CentralJacobian(shooter.map(), z0, z, p, free, o.step, &J)) {
     detail::SetMultipliers(d == 0 ? std::vector<std::complex<double>>{} : detail::Multipliers(J),

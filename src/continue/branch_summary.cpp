@@ -28,8 +28,14 @@ std::string Multipliers(const PeriodicMotion& m) {
   return t.empty() ? " none" : t;
 }
 
-std::string EndText(BranchEnd end, const std::string& name, double lambda) {
+// `wall`: the grazing's, at an end at a grazing.
+std::string EndText(BranchEnd end, const std::string& name, double lambda, Wall wall) {
   switch (end) {
+    case BranchEnd::kGrazing:
+      return fmt::format(
+          "ended at {} = {:.12g}: a grazing, a free flight touches the {} wall and beyond it the "
+          "motion with these impacts does not exist",
+          name, lambda, WallName(wall));
     case BranchEnd::kRangeEnd:
       return fmt::format("reached the end of the range, {} = {:.12g}", name, lambda);
     case BranchEnd::kLost:
@@ -39,6 +45,11 @@ std::string EndText(BranchEnd end, const std::string& name, double lambda) {
       return fmt::format("stopped at {} = {:.12g}: the most points were reached", name, lambda);
     case BranchEnd::kEventChange:
       return fmt::format("stopped at {} = {:.12g}: the motion's events change there", name, lambda);
+    case BranchEnd::kHalfPeriod:
+      return fmt::format(
+          "ended at {} = {:.12g}: next the branch passes through the motion of half its period "
+          "(the period doubling it is born at) and beyond retraces itself",
+          name, lambda);
     case BranchEnd::kNotRun:
       break;
   }
@@ -69,17 +80,36 @@ std::string Branch::Summary(const std::string& name) const {
                                         });
   const auto stable = std::count_if(points.begin(), points.end(),
                                     [](const BranchPoint& p) { return p.motion.stable; });
+  // A located speed extremum lies between points: when faster than every point, it is the
+  // fastest motion of the branch.
+  const PeriodicMotion* top = &fastest->motion;
+  double at = fastest->parameter;
+  for (const SpecialPoint& sp : special_points) {
+    if (sp.type == SpecialPointType::kSpeedExtremum &&
+        sp.motion.mean_velocity > top->mean_velocity) {
+      top = &sp.motion;
+      at = sp.parameter;
+    }
+  }
   t += fmt::format("  fastest        mean velocity {:.10g} at {} = {:.12g} ({})\n",
-                   fastest->motion.mean_velocity, name, fastest->parameter,
-                   fastest->motion.stable ? "stable" : "unstable");
+                   top->mean_velocity, name, at, top->stable ? "stable" : "unstable");
   t += fmt::format("  stable points  {} of {}\n", stable, points.size());
-  t +=
-      fmt::format("  towards {:<6} {}\n", "lower", EndText(backward_end, name, backward_parameter));
-  t += fmt::format("  towards {:<6} {}\n", "upper", EndText(forward_end, name, forward_parameter));
+  const auto wall = [&](bool forward) {
+    if (special_points.empty()) return Wall::kNone;
+    return (forward ? special_points.back() : special_points.front()).wall;
+  };
+  t += fmt::format("  towards {:<6} {}\n", "lower",
+                   EndText(backward_end, name, backward_parameter, wall(false)));
+  t += fmt::format("  towards {:<6} {}\n", "upper",
+                   EndText(forward_end, name, forward_parameter, wall(true)));
   t += fmt::format("  special points {}\n", special_points.size());
   for (const SpecialPoint& sp : special_points) {
-    t += fmt::format("    {:<16} {} = {:.12g}{}  mean velocity {:.10g}  {}  multipliers{}\n",
-                     SpecialPointTypeName(sp.type), name, sp.parameter,
+    const std::string type =
+        sp.wall == Wall::kNone
+            ? SpecialPointTypeName(sp.type)
+            : fmt::format("{} ({})", SpecialPointTypeName(sp.type), WallName(sp.wall));
+    t += fmt::format("    {:<16} {} = {:.12g}{}  mean velocity {:.10g}  {}  multipliers{}\n", type,
+                     name, sp.parameter,
                      sp.located ? "" : fmt::format(" (not located: +-{:.2g})", sp.accuracy),
                      sp.motion.mean_velocity, Signature(sp.motion), Multipliers(sp.motion));
   }

@@ -20,6 +20,12 @@ constexpr double kOffsets[] = {1e-5, 1e-4, 1e-3};
 constexpr double kAmplitudeFactors[] = {1.0, 0.3, 3.0};
 // A period-2p state this far from its image under P^p is not a period-p motion.
 constexpr double kDistinct = 1e-7;
+// The motion born at the period doubling lies within about sqrt(offset) of its state (the
+// amplitude of the flip grows like the square root of the distance in the parameter): at most
+// this many times sqrt(offset) away (the largest trial amplitude is 3 sqrt(offset)), with the
+// doubling's impacts twice over, and a mean velocity within that many times sqrt(offset) of its
+// own (relative). Anything else is another motion the shooting fell onto.
+constexpr double kBornDistance = 10.0;
 
 // The unit eigenvector of the multiplier nearest -1 of the p-th iterate at the period
 // doubling, in (x, u, v) (zero in the coordinates fixed at the section); false at the work
@@ -57,6 +63,19 @@ bool GenuinelyDoubled(const RobotModel& r, const PeriodicMotion& m, int p,
   return moved > kDistinct;
 }
 
+// Whether the period-2p motion m, found at parameter offset `offset` (relative) from the period
+// doubling pd, is the motion born there.
+bool BornAt(const SpecialPoint& pd, const PeriodicMotion& m, double offset) {
+  const PeriodicMotion& at = pd.motion;
+  const double near = kBornDistance * std::sqrt(offset);
+  const double moved = std::max({std::abs(m.state.x - at.state.x),
+                                 std::abs(m.state.u - at.state.u),
+                                 std::abs(m.state.v - at.state.v)});
+  return m.impacts_right == 2 * at.impacts_right && m.impacts_left == 2 * at.impacts_left &&
+         moved <= near &&
+         std::abs(m.mean_velocity - at.mean_velocity) <= near * std::abs(at.mean_velocity);
+}
+
 }  // namespace
 
 Branch SwitchAtPeriodDoubling(const RobotFamily& family, const SpecialPoint& pd,
@@ -90,7 +109,7 @@ Branch SwitchAtPeriodDoubling(const RobotFamily& family, const SpecialPoint& pd,
         z.v += a * w[2];
         const PeriodicMotion m =
             ShootPeriodicMotion(r.forcing, r.params, r.alpha, z, 2 * p, options.shooting);
-        if (m.status != ShootingStatus::kConverged ||
+        if (m.status != ShootingStatus::kConverged || !BornAt(pd, m, offset) ||
             !GenuinelyDoubled(r, m, p, options.shooting)) {
           continue;
         }
@@ -102,8 +121,10 @@ Branch SwitchAtPeriodDoubling(const RobotFamily& family, const SpecialPoint& pd,
     }
   }
   branch.status = ContinuationStatus::kNoMotion;
-  branch.message = fmt::format("no period-{} motion found next to the period doubling at {:.12g}",
-                               2 * p, pd.parameter);
+  branch.message = fmt::format(
+      "no period-{} motion born at the period doubling at {:.12g} (within {} sqrt(offset) of its "
+      "state, with its impacts twice over and its speed) at the offsets 1e-5 to 1e-3",
+      2 * p, pd.parameter, kBornDistance);
   return branch;
 }
 

@@ -16,6 +16,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The section is moved when an event lies closer to it than this fraction of half the largest
 // gap between events: the map is smooth only while no event crosses the section.
 constexpr double kSectionFraction = 0.25;
+// Iterations of a correction with a fixed Jacobian (each cuts the residual by the Jacobian's
+// relative error, well below 1/2 next to the point it was computed at).
+constexpr int kChordIterations = 40;
 
 Vec4 Zero() { return {0.0, 0.0, 0.0, 0.0}; }
 
@@ -55,7 +58,13 @@ bool BranchSystem::Image(const Vec4& y, MapState* out, double* displacement) {
   return map.Map(State(y), p_, out, displacement);
 }
 
-bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad) {
+bool BranchSystem::Run(const Vec4& y, MapRun* run) {
+  const RobotModel r = Robot(y[3]);
+  return run->Run(PeriodMap(r.forcing, r.params, r.alpha, motion_), State(y), p_);
+}
+
+bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
+                            double step_factor) {
   const int d = dimension();
   J->resize(d, d + 1);
   if (grad != nullptr) grad->resize(d + 1);
@@ -63,27 +72,28 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
     const RobotModel r = Robot(y[3]);
     const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
     if (!CentralJacobian(map, State(y), {y[0], y[1], y[2]}, p_, section_.free,
-                         options_.shooting.step, J, grad)) {
+                         step_factor * options_.shooting.step, J, grad)) {
       return false;
     }
   }
   // The parameter's column: the same central difference over two neighbouring robots, or the
   // one-sided difference of the same order at an end of the range (beyond it the robots may
   // not exist).
-  const double h = LambdaStep(y[3]);
+  const double h = step_factor * LambdaStep(y[3]);
   const bool central = y[3] - h >= options_.from && y[3] + h <= options_.to;
   const double toward = y[3] + h > options_.to ? -1.0 : 1.0;
   Vec4 y1 = y, y2 = y;
   y1[3] = central ? y[3] + h : y[3] + toward * h;
   y2[3] = central ? y[3] - h : y[3] + 2.0 * toward * h;
+  if (central) {
+    MapRun r1, r2;
+    return Run(y1, &r1) && Run(y2, &r2) &&
+           DifferenceAcrossEvents(
+               r1, r2, [&](MapRun* r0) { return Run(y, r0); }, section_.free, h, d, J, grad);
+  }
   MapState i1, i2, i0;
   double d1 = 0.0, d2 = 0.0, d0 = 0.0;
-  if (!Image(y1, &i1, &d1) || !Image(y2, &i2, &d2)) return false;
-  if (central) {
-    DifferenceColumn(i1, i2, d1, d2, section_.free, h, d, J, grad);
-    return true;
-  }
-  if (!Image(y, &i0, &d0)) return false;
+  if (!Image(y1, &i1, &d1) || !Image(y2, &i2, &d2) || !Image(y, &i0, &d0)) return false;
   const Vec3 a0 = ToVec(i0.z), a1 = ToVec(i1.z), a2 = ToVec(i2.z);
   for (int r = 0; r < d; ++r) {
     const auto k = static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)]);
@@ -94,14 +104,19 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
 }
 
 BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
-                                            int* iterations) {
+                                            int* iterations, bool keep_jacobian) {
   const int d = dimension();
   const std::vector<int>& free = section_.free;
+  const int max_iterations = keep_jacobian ? kChordIterations : options_.max_corrector_iterations;
   double previous = kInf, update = kInf;
   bool fresh = false;  // J was computed at the current iterate
-  for (int it = 0; it <= options_.max_corrector_iterations; ++it) {
+  for (int it = 0; it <= max_iterations; ++it) {
     if (!(y[3] >= options_.from && y[3] <= options_.to)) return Outcome::kOutOfRange;
     if (!(y[0] >= 0.0 && y[0] <= 1.0) || !std::isfinite(y[1]) || !std::isfinite(y[2])) {
+      return Outcome::kFailed;
+    }
+    const RobotModel robot = Robot(y[3]);
+    if (!WithinScale(robot.forcing, robot.params, robot.alpha, {y[0], y[1], y[2]})) {
       return Outcome::kFailed;
     }
     MapState image;
@@ -119,8 +134,10 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
       *iterations = it;
       return Outcome::kConverged;
     }
-    if (it == options_.max_corrector_iterations) break;
-    if (it > 0 && res > kChordRate * previous) {
+    if (it == max_iterations) break;
+    if (keep_jacobian) {
+      if (!(res < previous)) return Outcome::kFailed;  // the chord iterations do not contract
+    } else if (it > 0 && res > kChordRate * previous) {
       if (fresh || !Jacobian(y, &J, nullptr)) return Outcome::kFailed;  // diverging when fresh
       fresh = true;
     } else {
@@ -169,6 +186,12 @@ bool BranchSystem::Measure(const Vec4& y, Node* node) {
     m.impacts_left += recorder_.left[static_cast<std::size_t>(k)];
   }
   m.mean_velocity = displacement / (p_ * kTau);
+  node->half = Zero();
+  if (p_ % 2 == 0) {
+    MapState h;
+    if (!map.Map(m.state, p_ / 2, &h)) return false;
+    node->half = {h.z.x - y[0], h.z.u - y[1], h.z.v - y[2], 0.0};
+  }
   node->marks = recorder_.event_marks;
   node->event_phases = recorder_.event_phases;
   return true;
@@ -182,15 +205,13 @@ PeriodicMotion BranchSystem::Reshoot(double lambda, const PhaseState& state,
   return ShootPeriodicMotion(robot.forcing, robot.params, robot.alpha, state, p_, shooting);
 }
 
-bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
+bool BranchSystem::Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* tangent) const {
   const int d = dimension();
-  node->y = y;
-  if (!Jacobian(y, &node->J, &node->grad) || !Measure(y, node)) return false;
-  // The tangent: [P_z - I, P_lambda] t = 0 with orient . t = 1, then normalised.
+  // [P_z - I, P_lambda] t = 0 with orient . t = 1, then normalised.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(d + 1, d + 1);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(d + 1);
   for (int r = 0; r < d; ++r) {
-    for (int c = 0; c <= d; ++c) A(r, c) = node->J(r, c) - (r == c ? 1.0 : 0.0);
+    for (int c = 0; c <= d; ++c) A(r, c) = J(r, c) - (r == c ? 1.0 : 0.0);
     A(d, r) = orient[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])];
   }
   A(d, d) = orient[3];
@@ -198,16 +219,44 @@ bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
   Eigen::VectorXd t = A.fullPivLu().solve(rhs);
   if (!t.allFinite() || t.norm() == 0.0) return false;
   t.normalize();
-  node->t = Zero();
+  *tangent = Zero();
   for (int r = 0; r < d; ++r)
-    node->t[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])] = t(r);
-  node->t[3] = t(d);
+    (*tangent)[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])] = t(r);
+  (*tangent)[3] = t(d);
+  return true;
+}
+
+double BranchSystem::Speed(const Eigen::VectorXd& grad, const Vec4& t) const {
+  double s = grad(dimension()) * t[3];
+  for (int r = 0; r < dimension(); ++r) {
+    s += grad(r) * t[static_cast<std::size_t>(section_.free[static_cast<std::size_t>(r)])];
+  }
+  return s / (p_ * kTau);
+}
+
+double BranchSystem::SpeedWithStep(const Node& node, double step_factor) {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd grad;
+  Vec4 t;
+  if (!Jacobian(node.y, &J, &grad, step_factor) || !Tangent(J, node.t, &t)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return Speed(grad, t);
+}
+
+bool BranchSystem::Complete(const Vec4& y, const Vec4& orient, Node* node) {
+  const int d = dimension();
+  node->y = y;
+  if (!Jacobian(y, &node->J, &node->grad) || !Measure(y, node) ||
+      !Tangent(node->J, orient, &node->t)) {
+    return false;
+  }
   // Multipliers and the test functions.
   const Eigen::MatrixXd Jz = node->J.leftCols(d);
   SetMultipliers(Multipliers(Jz), &node->motion);
   node->period_doubling = d > 0 ? (Jz + Eigen::MatrixXd::Identity(d, d)).determinant() : 1.0;
   node->neimark_sacker = NeimarkSackerFunction(node->motion.multipliers);
-  node->speed = node->grad.dot(t) / (p_ * kTau);
+  node->speed = Speed(node->grad, node->t);
   return true;
 }
 

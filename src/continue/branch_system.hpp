@@ -44,7 +44,16 @@ struct Node {
   double period_doubling = 0.0;       ///< det(P_z + I)
   double neimark_sacker = 0.0;        ///< prod over pairs (mu_i mu_j - 1) (1 when d < 2)
   double speed = 0.0;                 ///< d mean velocity / ds
+  /// P^(p/2)(z) - z in (x, u, v) for an even period p (else 0): it passes through 0 where the
+  /// branch meets the motion of half its period (the period doubling it is born at).
+  Vec4 half{};
 };
+
+/// Same impacts per period and the same order of events.
+inline bool SameEvents(const Node& a, const Node& b) {
+  return a.motion.impacts_right == b.motion.impacts_right &&
+         a.motion.impacts_left == b.motion.impacts_left && a.marks == b.marks;
+}
 
 /// One linear condition a . y = b that closes the extended system: the arclength condition
 /// t_i . (y - y_i) = sigma, or a fixed parameter.
@@ -69,11 +78,23 @@ class SmoothSystem {
 
   enum class Outcome { kConverged, kFailed, kOutOfRange };
   /// Newton's method on the extended system closed by `condition`, from y (updated), starting
-  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly).
-  /// kOutOfRange when an iterate leaves the parameter's range (y is that iterate); kFailed when
-  /// it does not converge or leaves the map's domain.
+  /// with the Jacobian J of a nearby point (recomputed when the residual falls slowly, unless
+  /// `keep_jacobian`: then J alone, for a few iterations). kOutOfRange when an iterate leaves
+  /// the parameter's range (y is that iterate); kFailed when it does not converge or leaves the
+  /// map's domain.
   virtual Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
-                          int* iterations) = 0;
+                          int* iterations, bool keep_jacobian) = 0;
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations) {
+    return Correct(condition, std::move(J), y, iterations, false);
+  }
+
+  /// d mean velocity / ds at the node with the finite-difference step times `step_factor`: a
+  /// sign that changes with the step is an artefact of the differences. A map whose Jacobian
+  /// is exact returns the node's.
+  virtual double SpeedWithStep(const Node& node, double step_factor) {
+    (void)step_factor;
+    return node.speed;
+  }
 
   /// Completes a corrected point: Jacobian, tangent oriented along `orient`, multipliers,
   /// impacts, mean velocity, events and test functions. False at the work bound.
@@ -98,12 +119,18 @@ class BranchSystem : public SmoothSystem {
   const Section& section() const { return section_; }
   int period() const { return p_; }
   int dimension() const { return static_cast<int>(section_.free.size()); }
+  const MotionOptions& motion() const { return motion_; }
+  RobotModel Robot(double lambda) const { return family_(lambda); }
+  /// The state of the point y at the section.
+  PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
 
   /// The corrector (SmoothSystem::Correct). kOutOfRange when an iterate leaves [from, to] in the
   /// parameter (the robots there may not exist); kFailed when it does not converge within the
   /// options' iterations, leaves [0, 1] in x, changes the mode at the section or hits the work
-  /// bound.
-  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations) override;
+  /// bound; `keep_jacobian`: J alone, for up to kChordIterations iterations.
+  using SmoothSystem::Correct;
+  Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations,
+                  bool keep_jacobian) override;
 
   bool Complete(const Vec4& y, const Vec4& orient, Node* node) override;
 
@@ -119,13 +146,24 @@ class BranchSystem : public SmoothSystem {
   /// options' finite-difference step times `step_factor` (SmoothSystem::Reshoot).
   PeriodicMotion Reshoot(double lambda, const PhaseState& state, double step_factor) const override;
 
+  /// d mean velocity / ds at the node, from the Jacobian with the finite-difference step of the
+  /// options times `step_factor` (the tangent oriented along the node's): a sign that changes
+  /// with the step is an artefact of the differences. NaN at the work bound.
+  double SpeedWithStep(const Node& node, double step_factor) override;
+
  private:
-  RobotModel Robot(double lambda) const { return family_(lambda); }
   // P^p at y; displacement over the p periods into *displacement (if given).
   bool Image(const Vec4& y, MapState* out, double* displacement = nullptr);
-  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad);
+  // P^p at y with its events.
+  bool Run(const Vec4& y, MapRun* run);
+  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
+                double step_factor = 1.0);
   double LambdaStep(double lambda) const;
-  PhaseState State(const Vec4& y) const { return {y[0], y[1], y[2], section_.psi}; }
+  // The unit tangent of J (null vector of [P_z - I, P_lambda]) oriented along `orient`, in
+  // (x, u, v, lambda); false when it is not defined.
+  bool Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* t) const;
+  // d mean velocity / ds: the displacement's gradient along the tangent over p periods.
+  double Speed(const Eigen::VectorXd& grad, const Vec4& t) const;
 
   const RobotFamily& family_;
   const ContinuationOptions& options_;

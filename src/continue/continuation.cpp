@@ -15,15 +15,21 @@
 #include "continue/branch_system.hpp"
 #include "continue/special_points.hpp"
 #include "continue/walk.hpp"
+#include "continue/wall_end.hpp"
 
 namespace capsubot {
 namespace {
 
-constexpr int kMaxPointsLimit = 1000000;
+// The most points of a branch: a point holds its motion, Jacobian and events, about 1 KB, and
+// about 4 KB more in a JSON document (docs/continuation.md, Options).
+constexpr int kMaxPointsLimit = 100000;
 // Consecutive tangents must agree this well (cosine of their angle), and the corrected point
 // must lie within one step of the predicted one: otherwise the corrector may have jumped to
 // another branch, and the step is halved.
 constexpr double kMinTangentCosine = 0.5;
+// At a lost end, the slope of the wall distance is first taken this fraction of the last step
+// back from the last point.
+constexpr double kBackFraction = 0.1;
 
 using detail::Node;
 using detail::Vec4;
@@ -63,11 +69,10 @@ Outcome Step(detail::BranchSystem& system, const Node& a, double h, const Contin
   b->iterations = iterations;
   b->s = a.s + h;
   // Across a change of the events the branch may have a corner (a grazing impact bends it
-  // sharply): only a smooth stretch must keep its direction.
-  const bool same_events = a.motion.impacts_right == b->motion.impacts_right &&
-                           a.motion.impacts_left == b->motion.impacts_left && a.marks == b->marks;
-  return (Dot(a.t, b->t) >= kMinTangentCosine && moved <= h) || !same_events ? Outcome::kConverged
-                                                                             : Outcome::kFailed;
+  // sharply): only a smooth stretch must keep its direction, every step its length.
+  if (moved > h) return Outcome::kFailed;
+  return Dot(a.t, b->t) >= kMinTangentCosine || !detail::SameEvents(a, *b) ? Outcome::kConverged
+                                                                          : Outcome::kFailed;
 }
 
 // The point at the end of the range that a step towards `beyond` passed: the corrector with
@@ -77,12 +82,20 @@ bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, doub
   Vec4 y;
   for (std::size_t i = 0; i < 4; ++i) y[i] = a.y[i] + f * (beyond[i] - a.y[i]);
   y[3] = edge;
+  const Vec4 chord = y;
   int iterations = 0;
   if (system.Correct(detail::Condition::Parameter(edge), a.J, y, &iterations) !=
           Outcome::kConverged ||
       !system.Complete(y, a.t, b)) {
     return false;
   }
+  // As any step: within the step's own length of the prediction, else another motion.
+  double moved = 0.0, step = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    moved = std::max(moved, std::abs(y[i] - chord[i]));
+    step = std::max(step, std::abs(chord[i] - a.y[i]));
+  }
+  if (moved > step) return false;
   Vec4 d;
   for (std::size_t i = 0; i < 4; ++i) d[i] = y[i] - a.y[i];
   b->iterations = iterations;
@@ -90,8 +103,26 @@ bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, doub
   return true;
 }
 
+// The walk is lost after a (`previous` before it): it ends at a grazing instead when a free
+// flight of a's motion reaches a wall there, the grazing's point the last of the direction.
+void EndLost(detail::BranchSystem& system, const Node& previous, const Node& a,
+             const ContinuationOptions& o, Direction* out) {
+  out->end = BranchEnd::kLost;
+  Node end;
+  SpecialPoint sp;
+  double back_step = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) back_step += a.t[i] * (a.y[i] - previous.y[i]);
+  back_step = std::max(kBackFraction * std::abs(back_step), 10.0 * o.location_tolerance);
+  if (!detail::LocateWallEnd(system, a, back_step, NAN, Wall::kNone, o.location_tolerance, &end, &sp)) return;
+  if (end.y != a.y) out->nodes.push_back(std::move(end));
+  sp.after_point = static_cast<int>(out->nodes.size()) - 1;
+  out->special.push_back(std::move(sp));
+  out->end = BranchEnd::kGrazing;
+}
+
 Direction Follow(detail::BranchSystem system, Node a, int budget, const ContinuationOptions& o) {
   Direction out;
+  Node previous = a;
   detail::StepControl step(o, budget);
   while (static_cast<int>(out.nodes.size()) < budget && step.Attempt()) {
     Poll(o.interrupt);
@@ -110,16 +141,21 @@ Direction Follow(detail::BranchSystem system, Node a, int budget, const Continua
     }
     if (r != Outcome::kConverged) {
       if (!step.Failed()) {
-        out.end = BranchEnd::kLost;
+        EndLost(system, previous, a, o, &out);
         return out;
       }
       continue;
+    }
+    if (Dot(a.half, b.half) < 0.0) {  // through the motion of half the period: retraced beyond
+      out.end = BranchEnd::kHalfPeriod;
+      return out;
     }
     const int k = static_cast<int>(out.nodes.size());
     const std::size_t before = out.special.size();
     detail::FindSpecialPoints(system, a, b, o.location_tolerance, &out.special);
     for (std::size_t i = before; i < out.special.size(); ++i) out.special[i].after_point = k;
     if (!detail::KeepPoint(system, std::move(b), end, step, &out.nodes, &out.end)) return out;
+    previous = std::move(a);
     a = out.nodes.back();
   }
   out.end = BranchEnd::kMaxPoints;
@@ -186,10 +222,16 @@ const char* SpecialPointTypeName(SpecialPointType type) {
 }
 
 const char* BranchEndName(BranchEnd end) {
-  static constexpr const char* kNames[] = {"not_run", "range_end", "lost", "max_points",
-                                           "event_change"};
-  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kEventChange) + 1);
+  static constexpr const char* kNames[] = {"not_run",      "range_end", "lost",       "max_points",
+                                           "event_change", "grazing",   "half_period"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(BranchEnd::kHalfPeriod) + 1);
   return detail::EnumName(kNames, end);
+}
+
+const char* WallName(Wall wall) {
+  static constexpr const char* kNames[] = {"none", "right", "left"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(Wall::kLeft) + 1);
+  return detail::EnumName(kNames, wall);
 }
 
 const char* ContinuationStatusName(ContinuationStatus status) {
@@ -209,7 +251,7 @@ void ContinuationOptions::Validate() const {
     fail("start", start, fmt::format("from = {} <= start <= to = {}", from, to));
   }
   if (max_points < 2 || max_points > kMaxPointsLimit) {
-    fail("max_points", max_points, "2 <= max_points <= 1000000");
+    fail("max_points", max_points, "2 <= max_points <= 100000");
   }
   if (!(min_step > 0.0) || !std::isfinite(min_step))
     fail("min_step", min_step, "a finite number > 0");

@@ -242,6 +242,8 @@ std::string MotionLimit::Text(const std::string& name, const std::string& value)
                            value);
       case BranchEnd::kNotRun:
       case BranchEnd::kEventChange:  // ends curves, never branches
+      case BranchEnd::kGrazing:      // its grazing is the special point found before it
+      case BranchEnd::kHalfPeriod:   // a gait's one-impact motion has period 1
         break;
     }
     return "not computed";

@@ -32,10 +32,16 @@ bool SameImpactsPerPeriod(const PeriodicMotion& a, const PeriodicMotion& b) {
 
 // +1 when the branch met the grazing with its parameter rising, -1 falling: the sign of
 // d lambda/ds at the point of the grazing's side times the direction of the arclength from it
-// to the point of the other side.
+// to the point of the other side; at a branch that ends at the grazing (both points on its
+// side), the sign of d lambda/ds outwards at that end.
 double BeyondSign(const Branch& branch, const SpecialPoint& grazing) {
   const auto k = static_cast<std::size_t>(grazing.after_point);
   const bool first = SameImpactsPerPeriod(branch.points[k].motion, grazing.motion);
+  if (first && SameImpactsPerPeriod(branch.points[k + 1].motion, grazing.motion)) {
+    const bool forward_end = k + 2 == branch.points.size();
+    const double outwards = forward_end ? branch.points[k + 1].tangent : -branch.points[k].tangent;
+    return outwards >= 0.0 ? 1.0 : -1.0;
+  }
   const BranchPoint& side = branch.points[first ? k : k + 1];
   const BranchPoint& other = branch.points[first ? k + 1 : k];
   return side.tangent * (other.arclength - side.arclength) >= 0.0 ? 1.0 : -1.0;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <functional>
 
+#include "continue/wall_end.hpp"
+
 namespace capsubot::detail {
 namespace {
 
@@ -24,14 +26,19 @@ constexpr double kOnCircle = 1e-5;
 // the step, those of differences that straddle a grazing by far more.
 constexpr double kOnCircleAtOtherSteps = 1e-3;
 constexpr double kStepFactor = 10.0;
+// A speed extremum needs d mean velocity / ds to change sign significantly: at one point at
+// least its modulus exceeds this times the mean velocity's scale max(|V_a|, |V_b|, floor) (the
+// central differences of the displacement carry its rounding over the step, about 1e-10 of
+// it; a branch of constant speed, as in phi0, has speeds of that size and random sign at every
+// point, while an extremum that lies on a point has a significant one next to it)...
+constexpr double kSpeedNoise = 1e-8;
+constexpr double kSpeedFloor = 1e-12;
 // Changes of the events are bracketed with the parameter fixed when the tangent's parameter
 // component is at least this (else along the arclength).
 constexpr double kParameterProbe = 0.1;
-
-bool SameEvents(const Node& a, const Node& b) {
-  return a.motion.impacts_right == b.motion.impacts_right &&
-         a.motion.impacts_left == b.motion.impacts_left && a.marks == b.marks;
-}
+// A grazing between two points is located by its flight's distance from the wall, the slope of
+// that distance first taken this fraction of the step back from the point.
+constexpr double kGrazingBackStep = 0.1;
 
 // The point of the branch at arclength sigma past a along a's tangent (the corrector closed by
 // t_a . (y - y_a) = sigma, from the chord between a and b); `complete` adds the Jacobian,
@@ -69,6 +76,13 @@ bool MotionAt(SmoothSystem& system, const Node& a, const Node& near, double sigm
          system.Measure(y, node);
 }
 
+// The wall whose impacts per period differ between a and b (kNone when neither's do).
+Wall ChangedWall(const Node& a, const Node& b) {
+  if (a.motion.impacts_right != b.motion.impacts_right) return Wall::kRight;
+  if (a.motion.impacts_left != b.motion.impacts_left) return Wall::kLeft;
+  return Wall::kNone;
+}
+
 // Bisection on "a's motion exists there with a's events" along a's tangent towards b. The
 // search fixes the parameter at each probe, so it finds where a's motion ends even when the
 // other side's motion lies on a branch that turns back at the change (a grazing impact often
@@ -76,10 +90,8 @@ bool MotionAt(SmoothSystem& system, const Node& a, const Node& near, double sigm
 // arclength condition is used instead.
 SpecialPoint LocateChange(SmoothSystem& system, const Node& a, const Node& b, double tolerance) {
   SpecialPoint sp;
-  sp.type = a.motion.impacts_right != b.motion.impacts_right ||
-                    a.motion.impacts_left != b.motion.impacts_left
-                ? SpecialPointType::kGrazing
-                : SpecialPointType::kSegmentChange;
+  sp.wall = ChangedWall(a, b);
+  sp.type = sp.wall != Wall::kNone ? SpecialPointType::kGrazing : SpecialPointType::kSegmentChange;
   const double sigma_b = Sigma(a, b);
   const bool by_parameter = std::abs(a.t[3]) >= kParameterProbe;
   double lo = 0.0, hi = sigma_b, lambda_lo = a.y[3], lambda_hi = b.y[3];
@@ -164,6 +176,22 @@ bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, doubl
   return false;
 }
 
+// ... and the same sign at each significant point when the Jacobian's finite-difference step
+// is 10 times larger and 10 times smaller (a difference that straddles an event gives a speed
+// that moves with the step).
+bool SpeedChangesSign(SmoothSystem& system, const Node& a, const Node& b) {
+  const double scale = std::max({std::abs(a.motion.mean_velocity),
+                                 std::abs(b.motion.mean_velocity), kSpeedFloor});
+  const auto significant = [&](const Node& n) { return std::abs(n.speed) > kSpeedNoise * scale; };
+  if (!significant(a) && !significant(b)) return false;
+  for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {
+    for (const Node* n : {&a, &b}) {
+      if (significant(*n) && !(system.SpeedWithStep(*n, factor) * n->speed > 0.0)) return false;
+    }
+  }
+  return true;
+}
+
 // The located point is the bifurcation its test function announced, whatever the step of the
 // finite differences.
 bool Confirmed(const SmoothSystem& system, const SpecialPoint& sp) {
@@ -181,10 +209,35 @@ bool Confirmed(const SmoothSystem& system, const SpecialPoint& sp) {
 
 }  // namespace
 
+// A grazing between a and b located by the flight that reaches the wall: from a's side (its
+// motion ends there) or else from b's (the motion that begins there, followed back). False
+// when neither side's flight touches a wall between them.
+bool LocateGrazing(BranchSystem& system, const Node& a, const Node& b, double tolerance,
+                   SpecialPoint* sp) {
+  const Wall wall = ChangedWall(a, b);
+  const double sigma_b = Sigma(a, b);
+  const double back_step = kGrazingBackStep * std::abs(sigma_b);
+  Node end;
+  if (LocateWallEnd(system, a, back_step, sigma_b, wall, tolerance, &end, sp)) return true;
+  Node reversed = b;
+  for (double& t : reversed.t) t = -t;
+  if (!LocateWallEnd(system, reversed, back_step, -Sigma(b, a), wall, tolerance, &end, sp)) {
+    return false;
+  }
+  sp->arclength = a.s + Sigma(a, end);
+  return true;
+}
+
 void FindSpecialPoints(SmoothSystem& system, const Node& a, const Node& b, double tolerance,
                        std::vector<SpecialPoint>* out) {
   if (!SameEvents(a, b)) {
-    out->push_back(LocateChange(system, a, b, tolerance));
+    SpecialPoint sp;
+    // Only the capsule's period map has walls to graze.
+    auto* capsule = dynamic_cast<BranchSystem*>(&system);
+    if (capsule == nullptr || !LocateGrazing(*capsule, a, b, tolerance, &sp)) {
+      sp = LocateChange(system, a, b, tolerance);
+    }
+    out->push_back(std::move(sp));
     return;
   }
   const std::size_t before = out->size();
@@ -201,10 +254,11 @@ void FindSpecialPoints(SmoothSystem& system, const Node& a, const Node& b, doubl
   for (const Test& test : tests) {
     const double fa = test.f(a), fb = test.f(b);
     if (!(fa * fb < 0.0)) continue;
+    if (test.type == SpecialPointType::kSpeedExtremum && !SpeedChangesSign(system, a, b)) continue;
     SpecialPoint sp = LocateRoot(system, a, b, test.type, test.f, tolerance);
     // A real pair with product 1 (a neutral saddle) also changes the sign of the
     // Neimark-Sacker function: only a complex pair on the circle is one.
-    if (sp.located && !Confirmed(system, sp)) continue;
+    if (!Confirmed(system, sp)) continue;
     out->push_back(std::move(sp));
   }
   std::stable_sort(

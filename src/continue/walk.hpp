@@ -19,8 +19,9 @@ class StepControl {
   /// Steps of `options` (initial, min, max) for a walk of at most `budget` points.
   StepControl(const ContinuationOptions& options, int budget)
       : h_(options.initial_step), min_(options.min_step), max_(options.max_step) {
-    // Every point costs at most one failed step per halving from max_step to min_step.
-    const int halvings = static_cast<int>(std::ceil(std::log2(max_ / min_))) + 2;
+    // Every point costs at most one failed step per halving from max_step to min_step (the
+    // logarithms apart: the ratio itself overflows for steps near the ends of the doubles).
+    const int halvings = static_cast<int>(std::ceil(std::log2(max_) - std::log2(min_))) + 2;
     max_attempts_ = static_cast<std::int64_t>(budget + 1) * halvings;
   }
 

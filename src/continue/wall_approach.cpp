@@ -72,13 +72,14 @@ double Root(const Flight& f, double lo, double hi) {
 
 // The extrema of x of the flight over [start, end] that turn back from a wall, into *best when
 // nearer to its wall than *best.
-void ScanFlight(const Flight& f, SimMode mode, double start, double end, WallApproach* best) {
+void ScanFlight(const Flight& f, SimMode mode, double start, double end, Wall only,
+                WallApproach* best) {
   double q_prev = start, u_prev = f.U(start);
   for (int k = 1; k <= kSamples; ++k) {
     const double q = start + (end - start) * k / kSamples;
     const double u = f.U(q);
-    if ((u_prev > 0.0) != (u > 0.0)) {
-      const bool right = u_prev > 0.0;  // u falls through 0: a maximum of x
+    const bool right = u_prev > 0.0;  // u falls through 0: a maximum of x
+    if ((u_prev > 0.0) != (u > 0.0) && (only == Wall::kNone || right == (only == Wall::kRight))) {
       const double phase = Root(f, q_prev, q);
       const double x = f.X(phase);
       const double distance = right ? 1.0 - x : x;
@@ -94,7 +95,7 @@ void ScanFlight(const Flight& f, SimMode mode, double start, double end, WallApp
 }  // namespace
 
 bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
-                      const MotionOptions& motion, WallApproach* approach) {
+                      const MotionOptions& motion, WallApproach* approach, Wall only) {
   const PeriodMap map(robot.forcing, robot.params, robot.alpha, motion);
   MapState s{z, SimMode::kRest};
   EventLog log;
@@ -109,10 +110,10 @@ bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
     const SimState& a = log.events[i].after;
     if (!FreeFlight(a.mode)) continue;
     const double end = i + 1 < n ? log.events[i + 1].after.phi : log.events[0].after.phi + span;
-    ScanFlight(Flight(robot, z.psi, a.mode, a.phi, a.x, a.u), a.mode, a.phi, end, &best);
+    ScanFlight(Flight(robot, z.psi, a.mode, a.phi, a.x, a.u), a.mode, a.phi, end, only, &best);
   }
   if (n == 0 && FreeFlight(s.mode)) {
-    ScanFlight(Flight(robot, z.psi, s.mode, 0.0, z.x, z.u), s.mode, 0.0, span, &best);
+    ScanFlight(Flight(robot, z.psi, s.mode, 0.0, z.x, z.u), s.mode, 0.0, span, only, &best);
   }
   if (!std::isfinite(best.distance)) return false;
   *approach = best;

@@ -10,6 +10,7 @@
 // simulated motion gains an impact on one side.
 
 #include "capsubot/attract/detail/period_map.hpp"
+#include "capsubot/continue/continuation.hpp"
 #include "capsubot/model/model_parameter.hpp"
 
 namespace capsubot::detail {
@@ -25,10 +26,11 @@ struct WallApproach {
 };
 
 /// The flight of the motion through `z` (at its section, period p) whose extremum of x comes
-/// nearest to either wall. False at the work bound or when no free flight turns back before a
-/// wall.
+/// nearest to either wall (to `only` when that is not kNone). False at the work bound or when
+/// no free flight turns back before such a wall.
 bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
-                      const MotionOptions& motion, WallApproach* approach);
+                      const MotionOptions& motion, WallApproach* approach,
+                      Wall only = Wall::kNone);
 
 /// The grazing condition of the motion through `z` at the flight of `approach`: x_max - 1 at the
 /// right wall, -x_min at the left (negative: the flight turns back before the wall), of the

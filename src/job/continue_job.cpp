@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "capsubot/continue/branch_switch.hpp"
@@ -12,12 +13,17 @@
 namespace capsubot {
 namespace {
 
-// The branch's first special point of the type, a located one if `located` (null if none).
+// The branch's first special point of the type, a located one if `located` (null if none):
+// the first met from the start, the nearest to it along the arclength (either direction).
 const SpecialPoint* First(const Branch& b, SpecialPointType type, bool located) {
+  const SpecialPoint* first = nullptr;
   for (const SpecialPoint& sp : b.special_points) {
-    if (sp.type == type && (sp.located || !located)) return &sp;
+    if (sp.type == type && (sp.located || !located) &&
+        (first == nullptr || std::abs(sp.arclength) < std::abs(first->arclength))) {
+      first = &sp;
+    }
   }
-  return nullptr;
+  return first;
 }
 
 RobotModel RobotOf(const ContinueJobOptions& o) { return {o.forcing, o.params, o.alpha}; }

@@ -137,6 +137,7 @@ nlohmann::json BranchJson(const Branch& b, const std::string& name) {
          {name, s.parameter},
          {"located", s.located},
          {"accuracy", s.accuracy},
+         {"wall", WallName(s.wall)},
          {"mean_velocity", m.mean_velocity},
          {"period", m.period},
          {"impacts_right", m.impacts_right},

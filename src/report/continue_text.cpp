@@ -36,6 +36,8 @@ std::string CurveEndText(BranchEnd end, const std::string& at) {
     case BranchEnd::kEventChange:
       return "stopped at " + at + ": the motion's events change there";
     case BranchEnd::kNotRun:
+    case BranchEnd::kGrazing:  // ends branches, never curves
+    case BranchEnd::kHalfPeriod:
       break;
   }
   return "not followed";

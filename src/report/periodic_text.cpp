@@ -14,8 +14,12 @@ std::string PeriodicJobText(const PeriodicJobResult& r) {
   t += fmt::format("  force          {}\n", ForceFormula(r.options.forcing));
   t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", r.options.params.T0,
                    r.options.params.e, r.options.alpha);
-  t += fmt::format("  status         {} (residual {:.3g} after {} Newton iterations)\n",
-                   ShootingStatusName(m.status), m.residual, m.iterations);
+  t += m.out_of_scale
+           ? fmt::format("  status         {} (the state is out of the robot's scale: beyond 1e6 "
+                         "times its velocity scale the map's rounding exceeds its change)\n",
+                         ShootingStatusName(m.status))
+           : fmt::format("  status         {} (residual {:.3g} after {} Newton iterations)\n",
+                         ShootingStatusName(m.status), m.residual, m.iterations);
   t += fmt::format("  period         {}: {} right + {} left impacts per {} period{}\n", m.period,
                    m.impacts_right, m.impacts_left, m.period, m.period == 1 ? "" : "s");
   t += fmt::format("  mean velocity  {:.12g} (omega L)\n", m.mean_velocity);

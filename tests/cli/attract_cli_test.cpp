@@ -118,6 +118,17 @@ TEST(PeriodicCli, FromAStateNearTheOneImpactOrbitConvergesToIt) {
   EXPECT_TRUE(Near(j["multipliers"][0][0].get<double>(), 0.152295106379941, 1e-8));
 }
 
+TEST(PeriodicCli, StateOutOfTheRobotsScaleIsSaidSo) {
+  // At v = 1e16 a period's change of the state is below its rounding: the map returns the state
+  // exactly, which is no periodic motion and no residual worth printing.
+  const auto r = RunCli("periodic " + kSmallOrbit + " --x0 0.5 --u0 0 --v0 1e16 --psi 1 2>&1");
+  EXPECT_NE(r.out.find("  status         no_convergence (the state is out of the robot's scale"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("residual"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("verdict        none"), std::string::npos) << r.out;
+}
+
 TEST(PeriodicCli, StartMustBeComplete) {
   auto r = RunCli("periodic " + kSmallOrbit + " --x0 1 2>&1");
   EXPECT_EQ(r.status, 2);

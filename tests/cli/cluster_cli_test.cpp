@@ -537,7 +537,7 @@ TEST(Cluster, BifurcationShardMergeErrorsAndBadShardsWriteNothing) {
        "shard count N = 4 is invalid: the study has 3 continuations"},
       {" --shard 3/3", "--shard = 3/3 is invalid: expected K/N with N >= 1 shards and 0 <= K < N"},
       {" --shard 0/3 --summary " + out, "--summary = " + out +
-                                            " is invalid: it is the file of impacts = " + out +
+                                            " is invalid: it is the file of -o = " + out +
                                             ": expected another file"}};
   for (const auto& [args, message] : shards) {
     const CommandResult r = RunCli(std::string(kBifurcation) + args + " -o " + out + " 2>&1");

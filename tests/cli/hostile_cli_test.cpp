@@ -156,7 +156,7 @@ std::vector<Case> Cases() {
       {"BifurcationSummaryIsOutputThroughSymlink",
        kBifurcation + " -o i.csv --summary il.csv",
        2,
-       "--summary = il.csv is invalid: it is the file of impacts = i.csv: expected another file",
+       "--summary = il.csv is invalid: it is the file of -o = i.csv: expected another file",
        {"i.csv", "il.csv"},
        "printf 'old\\n' > i.csv && ln -s i.csv il.csv",
        "",
@@ -165,7 +165,7 @@ std::vector<Case> Cases() {
       {"BifurcationSummaryIsOutputDotSlash",
        kBifurcation + " -o i.csv --summary ./i.csv",
        2,
-       "--summary = ./i.csv is invalid: it is the file of impacts = i.csv",
+       "--summary = ./i.csv is invalid: it is the file of -o = i.csv",
        {"i.csv"},
        "printf 'old\\n' > i.csv",
        "",
@@ -197,7 +197,7 @@ std::vector<Case> Cases() {
        none},
       {"BifurcationRecordedPeriodsAreBounded",
        "bifurcation " + kRobot + " --param T0 --from 0.08 --to 0.12 --steps 10000000 -o o.csv", 2,
-       "steps = 10000000 with record = 100 is invalid: 1000000000 recorded periods a "
+       "--steps = 10000000 with --record = 100 is invalid: 1000000000 recorded periods a "
        "continuation: expected steps x record <= 100000000",
        none},
       {"DesignM2GridWithM2Range",

@@ -272,7 +272,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"--grid T0=0.5,1 --optimize reach --alpha 1.5",
                    "--alpha = 1.5 is invalid: expected 0 < alpha < 1"},
         BadCommand{"--grid T0=0.5,1 --optimize reach --grid rho_max=0.5,0.9 --stable-only",
-                   "--stable-only (rho_max = 1) is invalid with --grid rho_max=0.5,0.9"},
+                   "--stable-only (--rho-max = 1) is invalid with --grid rho_max=0.5,0.9"},
         BadCommand{"--grid T0=0.5,1 --optimize forcing --global-evaluations 50",
                    "--global-evaluations is invalid with --global-algorithm multistart"}));
 

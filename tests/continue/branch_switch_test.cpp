@@ -12,6 +12,7 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/periodic.hpp"
+#include "continue/one_impact_family.hpp"
 
 namespace capsubot {
 namespace {
@@ -70,6 +71,25 @@ TEST(BranchSwitch, PeriodTwoBranchAgreesWithShootingAtEveryPoint) {
   }
   // The long runs find the period-2 motion below the flip: so does the switched branch.
   EXPECT_TRUE(below);
+}
+
+TEST(BranchSwitch, PeriodTwoBranchEndsWhereItMeetsThePeriodOneMotion) {
+  // The example's period doubling at alpha = 0.2229 (docs/continuation.md) with a range that
+  // starts just below it: the period-2 branch runs from the range's end to the doubling, where
+  // it passes through the period-1 motion; beyond, it is the same motion shifted by one period.
+  // It once went on and came back, reporting both ends at alpha = 0.22289.
+  const Orbit o = testing::OrbitAt(testing::kA, testing::kPhi0);
+  const RobotFamily family = [](double alpha) { return testing::Robot(alpha); };
+  ContinuationOptions opt = testing::Range(0.22289, 0.3, o.alpha);
+  const Branch one = ContinueBranch(family, testing::AfterImpact(o, testing::kPhi0), opt);
+  const SpecialPoint* pd = testing::Find(one, SpecialPointType::kPeriodDoubling);
+  ASSERT_NE(pd, nullptr);
+  const Branch two = SwitchAtPeriodDoubling(family, *pd, opt);
+  ASSERT_EQ(two.status, ContinuationStatus::kOk) << two.message;
+  EXPECT_EQ(two.backward_end, BranchEnd::kRangeEnd);
+  EXPECT_EQ(two.forward_end, BranchEnd::kHalfPeriod);
+  EXPECT_LT(two.forward_parameter, pd->parameter);
+  for (const BranchPoint& b : two.points) EXPECT_LT(b.parameter, pd->parameter);
 }
 
 TEST(BranchSwitch, RefusesAPointThatIsNoPeriodDoubling) {

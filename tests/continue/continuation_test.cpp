@@ -206,7 +206,9 @@ TEST(ContinuationInput, BadOptionsAreNamed) {
             "start = 0.4 is invalid: expected from = 0.2 <= start <= to = 0.3");
   ContinuationOptions o = Range(0.2, 0.3, 0.25);
   o.max_points = 1;
-  EXPECT_EQ(message(o), "max_points = 1 is invalid: expected 2 <= max_points <= 1000000");
+  EXPECT_EQ(message(o), "max_points = 1 is invalid: expected 2 <= max_points <= 100000");
+  o.max_points = 1000000;  // 3.5 GB as JSON: bounded
+  EXPECT_EQ(message(o), "max_points = 1000000 is invalid: expected 2 <= max_points <= 100000");
   o = Range(0.2, 0.3, 0.25);
   o.min_step = 0.0;
   EXPECT_EQ(message(o), "min_step = 0 is invalid: expected a finite number > 0");

@@ -24,11 +24,9 @@ using testing::RobustGait;
 // location tolerance 1e-10 in the parameter leaves about 1e-5; the shooting's own central
 // differences add about 1e-6.
 constexpr double kMultiplierTol = 1e-4;
-// A step across a grazing. The one-impact motion of this gait persists 4.04e-6 below the
-// grazing the continuation reports at alpha = 0.6319608 (bisection on alpha with Newton
-// shooting with period 1, from the reported state: it converges with 1 + 0 impacts down to
-// 0.63195676 and not below), although the locator's own bracket is 1.6e-9 wide
-// (docs/continuation.md, Limits); 1e-5 is beyond that and far below the distance to the fold.
+// A step across a grazing: the grazings are located to 1e-10 by the flight's distance from the
+// wall (branch_edges_test.cpp checks them against a bisection on the motion's existence);
+// 1e-5 is far beyond that and far below the distance to the fold.
 constexpr double kAcross = 1e-5;
 
 // The robot of the gait with parameter `name` set to `value`.

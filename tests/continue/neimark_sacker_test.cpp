@@ -190,7 +190,9 @@ class PlaneMap : public SmoothSystem {
  public:
   explicit PlaneMap(Map f) : f_(std::move(f)) {}
 
-  Outcome Correct(const Condition& c, Eigen::MatrixXd, Vec4& y, int* iterations) override {
+  using SmoothSystem::Correct;
+  Outcome Correct(const Condition& c, Eigen::MatrixXd, Vec4& y, int* iterations,
+                  bool /*keep_jacobian*/) override {
     for (int it = 0; it < kMaxNewton; ++it) {
       const Point image = f_({y[0], y[1]}, y[3]);
       const double constraint = c.a[0] * y[0] + c.a[1] * y[1] + c.a[3] * y[3] - c.b;

@@ -74,6 +74,9 @@ struct PeriodicMotion {
   double distance_to_unit_circle = kNaN;  ///< | |lambda_max| - 1 |
   double residual = kNaN;                 ///< max |P^p(z) - z| at the reported state
   int iterations = 0;                     ///< Newton iterations used
+  /// The state lies beyond the robot's scale (1e6 times its velocity scale 2 pi (max |F| + T0)
+  /// / (alpha (1 - alpha))), where the map's rounding exceeds its change: never converged.
+  bool out_of_scale = false;
 };
 
 /// The periodic motion near `start` (docs/model.md section 13): after options.transient periods,

@@ -44,7 +44,8 @@ struct ContinuationOptions {
   double from = kNaN;   ///< lower end of the parameter range (finite)
   double to = kNaN;     ///< upper end (finite, > from)
   double start = kNaN;  ///< the parameter's value at the start state; from <= start <= to
-  /// Points of the branch in all (the start included); 2 <= max_points <= 1,000,000.
+  /// Points of the branch in all (the start included); 2 <= max_points <= 100,000 (about 1 KB
+  /// of memory each, 4 KB more as JSON).
   int max_points = 200;
   double initial_step = 0.01;  ///< first arclength step; min_step <= initial_step <= max_step
   double min_step = 1e-7;      ///< smallest step: a correction failing there ends the branch; > 0
@@ -98,6 +99,16 @@ enum class SpecialPointType {
 /// "fold", "period_doubling", "neimark_sacker", "grazing", "segment_change", "speed_extremum".
 const char* SpecialPointTypeName(SpecialPointType type);
 
+/// The wall a grazing's free flight touches.
+enum class Wall {
+  kNone,   ///< not a grazing
+  kRight,  ///< x = 1 (a maximum of x)
+  kLeft,   ///< x = 0 (a minimum of x)
+};
+
+/// "none", "right", "left".
+const char* WallName(Wall wall);
+
 struct SpecialPoint {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -111,6 +122,7 @@ struct SpecialPoint {
   /// side of the branch's earlier points).
   PeriodicMotion motion;
   int after_point = -1;  ///< index into Branch::points of the point just before it
+  Wall wall = Wall::kNone;  ///< a grazing's wall
 };
 
 enum class BranchEnd {
@@ -121,9 +133,15 @@ enum class BranchEnd {
   /// A two-parameter curve (special_curve.hpp) cannot go on at the smallest step without
   /// changing the motion's events (impacts, stick/slide pattern): its condition ends there.
   kEventChange,
+  /// A free flight of the motion touches a wall there (its last special point is that grazing,
+  /// located along the parameter) and the motion does not go on with its events beyond it.
+  kGrazing,
+  /// The branch (of an even period 2p) passes through the motion of period p there, the period
+  /// doubling it is born at: beyond, it is the same motion shifted by p periods, retraced.
+  kHalfPeriod,
 };
 
-/// "not_run", "range_end", "lost", "max_points", "event_change".
+/// "not_run", "range_end", "lost", "max_points", "event_change", "grazing", "half_period".
 const char* BranchEndName(BranchEnd end);
 
 enum class ContinuationStatus {

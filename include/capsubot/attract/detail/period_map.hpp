@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <functional>
 #include <vector>
 
 #include "capsubot/attract/detail/stroboscopic.hpp"
@@ -21,8 +22,17 @@ inline Vec3 ToVec(const PhaseState& z) { return {z.x, z.u, z.v}; }
 /// `base` with (x, u, v) replaced by z (the forcing phase kept).
 PhaseState WithCoordinates(PhaseState base, const Vec3& z);
 
-/// max |P^p(z) - z| over x, u, v.
+/// max |P^p(z) - z| over x, u, v, relative to the state's scale max(1, |x|, |u|, |v|): a state
+/// is resolved only to its own rounding, which grows with it.
 double Residual(const Vec3& z, const PhaseState& image);
+
+/// Whether the state z of the robot is finite and within kMaxStateScale times its velocity
+/// scale tau (max |F| + T0) / (alpha (1 - alpha)), the most force and friction change the
+/// relative velocity in one period (docs/model.md section 3). Beyond it a period's change is
+/// lost in the state's rounding, and a residual below any tolerance proves nothing: such a
+/// state is no periodic motion the shooting or the continuation may report.
+bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z);
+inline constexpr double kMaxStateScale = 1e6;
 
 /// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
 /// velocity v (periodic.hpp): at rest (x, u); sliding (x, u, v); on a wall v (none if v = 0).
@@ -47,6 +57,10 @@ class PeriodMap {
   bool Shift(MapState& s, double periods, SimObserver* observer = nullptr,
              bool sample = false) const;
 
+  const Forcing& forcing() const { return forcing_; }
+  const Params& params() const { return params_; }
+  double alpha() const { return alpha_; }
+
  private:
   const Forcing& forcing_;
   const Params& params_;
@@ -61,8 +75,28 @@ void DifferenceColumn(const MapState& plus, const MapState& minus, double displa
                       double displacement_minus, const std::vector<int>& free, double h, int column,
                       Eigen::MatrixXd* J, Eigen::VectorXd* gradient = nullptr);
 
+/// One run of P^p: its image, displacement and events.
+struct MapRun {
+  MapState image;
+  double displacement = 0.0;
+  Recorder recorder;  ///< impacts per period and the order of the events
+  /// P^p from z; false at the work bound.
+  bool Run(const PeriodMap& map, const PhaseState& z, int p);
+  /// Same impacts per period and the same order of events as `o`.
+  bool SameEvents(const MapRun& o) const;
+};
+
+/// Column `column` of the difference of P^p from the runs at +h and -h: central when both runs
+/// have the same events; else (they straddle an impact that appears or a changed stick/slide
+/// segment, where the map is not smooth) one-sided on the side whose run keeps the events of
+/// the base run (made by `base` only then), or central when neither does.
+bool DifferenceAcrossEvents(const MapRun& plus, const MapRun& minus,
+                            const std::function<bool(MapRun*)>& base, const std::vector<int>& free,
+                            double h, int column, Eigen::MatrixXd* J, Eigen::VectorXd* gradient);
+
 /// The Jacobian of P^p at `at` (x, u, v; forcing phase of `base`) in the free coordinates by
-/// central differences of step h into the first free.size() columns of *J (resized to at least
+/// central differences of step h (one-sided where they straddle a change of the events,
+/// DifferenceAcrossEvents) into the first free.size() columns of *J (resized to at least
 /// that), with the gradient of the displacement over p periods into *gradient (if given).
 /// False at the work bound.
 bool CentralJacobian(const PeriodMap& map, const PhaseState& base, const Vec3& at, int p,
