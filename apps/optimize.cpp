@@ -198,7 +198,6 @@ OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
   if (problem == "forcing") job.mode = ForcingProblem{};
   if (problem == "fourier") job.mode = FourierProblem{};
   if (problem == "reach") {
-    const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
     const auto [T0_min, T0_max] = ParseT0Range(opt.T0_range);
     job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha, ReachDrive(opt), T0_min, T0_max};
   }

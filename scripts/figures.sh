@@ -94,7 +94,7 @@ say "reach per point: the fastest motion from rest at 7 values of T0 (about a mi
 "$cli" sweep --grid T0=0.05:1:7:log --optimize reach -o "$out/reach_T0.csv"
 
 say "the fastest drives from rest: Fourier series of 1, 2, 3 harmonics, max |F| <= T0 (reach.md)"
-"$cli" optimize --problem reach --harmonics 3 --reach-seconds inf -o "$out/drives.json" > /dev/null
+"$cli" optimize --problem reach --harmonics 3 --reach-seconds 1000000 -o "$out/drives.json" > /dev/null
 /usr/bin/python3 "$gp/drives.py" force "$out/drives.json" "$out/drives_force.csv"
 for k in 1 2 3; do
   read -r -a drive <<< "$(/usr/bin/python3 "$gp/drives.py" args "$out/drives.json" "$k")"

@@ -40,7 +40,7 @@ declare -A STAGE_TESTS=(
   [simulate]="simulator_test simulator_chatter_test simulator_energy_test simulator_reuse_test segment_force_test cycle_memo_test"
   [attract]="attractors_test long_run_test periodic_test gait_from_rest_test bifurcation_test start_grid_test"
   [continue]="neimark_sacker_test continuation_test branch_switch_test grazing_switch_test special_curve_test gait_robustness_test"
-  [reach]="reach_test"
+  [reach]="reach_test drive_family_test drive_ladder_test reach_frequency_test"
   [design]="design_test design_windows_test design_from_rest_test design_robustness_test"
 )
 

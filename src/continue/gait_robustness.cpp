@@ -48,6 +48,23 @@ MotionLimit NearestLimit(const Branch& b, const std::vector<SpecialPoint>& point
   }
   limit.end = forward ? b.forward_end : b.backward_end;
   limit.parameter = forward ? b.forward_parameter : b.backward_parameter;
+  // A direction that ends at a wall: the motion with these impacts ends at that grazing, a
+  // located special point of the branch.
+  if (limit.end == BranchEnd::kGrazing) {
+    for (const SpecialPoint& sp : b.special_points) {
+      if (sp.type != SpecialPointType::kGrazing ||
+          !(std::abs(sp.parameter - limit.parameter) <=
+            std::abs(sp.accuracy) + 1e-12 * std::abs(limit.parameter))) {
+        continue;
+      }
+      limit.special = true;
+      limit.type = sp.type;
+      limit.parameter = sp.parameter;
+      limit.located = sp.located;
+      limit.accuracy = sp.accuracy;
+      limit.motion = sp.motion;
+    }
+  }
   return limit;
 }
 
@@ -173,8 +190,18 @@ void FollowBranch(const RobustnessParameter& p, const PhaseState& start,
   r.status = b.status;
   r.message = b.message;
   if (b.status != ContinuationStatus::kOk) return;
+  // The grazing where a direction ends (the motion meets a wall there and is not followed on)
+  // is that end (BranchEnd::kGrazing, told by NearestLimit when nothing nearer ends the motion),
+  // neither a chatter count's change nor a point the motion goes through.
+  const auto at = [](const SpecialPoint& sp, double end) {
+    return std::abs(sp.parameter - end) <= std::abs(sp.accuracy) + 1e-12 * std::abs(end);
+  };
+  const auto ends_branch = [&](const SpecialPoint& sp) {
+    return (b.forward_end == BranchEnd::kGrazing && at(sp, b.forward_parameter)) ||
+           (b.backward_end == BranchEnd::kGrazing && at(sp, b.backward_parameter));
+  };
   for (const SpecialPoint& sp : b.special_points) {
-    if (sp.type == SpecialPointType::kSpeedExtremum) continue;
+    if (sp.type == SpecialPointType::kSpeedExtremum || ends_branch(sp)) continue;
     if (ChatterChange(p.family, b, sp, continuation.shooting)) {
       ++r.chatter_changes;
     } else {
@@ -240,10 +267,16 @@ std::string MotionLimit::Text(const std::string& name, const std::string& value)
       case BranchEnd::kMaxPoints:
         return fmt::format("no limit found up to {} = {} (the most points were reached)", name,
                            value);
+      case BranchEnd::kGrazing:
+        return fmt::format(
+            "the motion ends at a grazing at {} = {}: the inner body meets a wall and the motion "
+            "with these impacts goes no further",
+            name, value);
+      case BranchEnd::kHalfPeriod:
+        return fmt::format("the branch meets the motion of half its period at {} = {}", name,
+                           value);
       case BranchEnd::kNotRun:
       case BranchEnd::kEventChange:  // ends curves, never branches
-      case BranchEnd::kGrazing:      // its grazing is the special point found before it
-      case BranchEnd::kHalfPeriod:   // a gait's one-impact motion has period 1
         break;
     }
     return "not computed";

@@ -56,8 +56,14 @@ void CheckLimit(const Orbit& o, const ParameterRobustness& p, const MotionLimit&
     EXPECT_LE(at.distance_to_plus_one, kMultiplierTol) << at.multipliers.front();
   } else if (l.type == SpecialPointType::kPeriodDoubling) {
     EXPECT_LE(at.distance_to_minus_one, kMultiplierTol) << at.multipliers.front();
+  } else if (l.type == SpecialPointType::kGrazing) {
+    // The end at a wall: the one-impact motion at the grazing, none kAcross beyond it.
+    EXPECT_EQ(at.impacts_right + at.impacts_left, 1);
+    const PeriodicMotion beyond = Shoot(o, p.name, l.parameter + sign * kAcross, at.state);
+    EXPECT_FALSE(beyond.status == ShootingStatus::kConverged &&
+                 beyond.impacts_right + beyond.impacts_left == 1);
   } else {
-    ADD_FAILURE() << "a limit is a fold or a period doubling here";
+    ADD_FAILURE() << "a limit is a fold, a period doubling or the grazing where it ends here";
   }
 }
 
@@ -84,25 +90,20 @@ TEST(GaitRobustness, EachLimitOfTheRobustGaitIsARealSpecialPoint) {
   }
   // This gait sits close to a fold (its leading multiplier is the real 0.9 = rho_max): the
   // motion ends in a fold when T0 rises, e falls or alpha rises (the kinds found by `capsubot
-  // continue` on this gait). When alpha falls it grazes the left wall and goes on with a
-  // left-wall impact: a grazing is listed, never a limit.
+  // continue` on this gait). When alpha falls the one-impact motion ends where its inner body
+  // grazes the left wall (beyond it the robot moves with a left-wall impact too: another motion,
+  // not followed): that grazing, located on the wall, is the limit below.
   EXPECT_STREQ(g.parameters[0].up.Name(), "fold");
   EXPECT_STREQ(g.parameters[1].down.Name(), "fold");
   EXPECT_STREQ(g.parameters[1].up.Name(), "range_end");  // e = 1 is the end of [0, 1]
   EXPECT_STREQ(g.parameters[2].up.Name(), "fold");
   const ParameterRobustness& alpha = g.parameters[2];
-  EXPECT_NE(alpha.down.type, SpecialPointType::kGrazing);
-  const SpecialPoint* grazing = nullptr;
-  for (const SpecialPoint& sp : alpha.special_points) {
-    const bool below = sp.parameter < alpha.value && sp.parameter > alpha.down.parameter;
-    // The nearest below: the gait's own grazing.
-    if (sp.type == SpecialPointType::kGrazing && below &&
-        (grazing == nullptr || sp.parameter > grazing->parameter)) {
-      grazing = &sp;
-    }
-  }
-  ASSERT_NE(grazing, nullptr);
-  CheckGrazingBelow(o, alpha, *grazing);
+  ASSERT_TRUE(alpha.down.special);
+  ASSERT_EQ(alpha.down.type, SpecialPointType::kGrazing);
+  SpecialPoint grazing;
+  grazing.parameter = alpha.down.parameter;
+  grazing.motion = alpha.down.motion;
+  CheckGrazingBelow(o, alpha, grazing);
   EXPECT_EQ(g.parameters[0].value, 1.0);
   EXPECT_EQ(g.parameters[2].from, 0.5 * o.alpha);
 }

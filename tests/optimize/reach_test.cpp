@@ -9,6 +9,7 @@
 #include <string>
 
 #include "capsubot/reach/optimize_reach.hpp"
+#include "reach/quick_reach.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -20,19 +21,7 @@ using testing::Near;
 constexpr double kSameRun = 1e-15;
 
 // Small budgets: 2 x 2 starts in the search, 4 x 4 in the re-check.
-ReachOptions QuickOptions() {
-  ReachOptions o;
-  o.global_evaluations = 20;
-  o.local_evaluations = 10;
-  o.max_seconds = 20.0;
-  o.search.n_x = 2;
-  o.search.n_psi = 2;
-  o.check.n_x = 4;
-  o.check.n_psi = 4;
-  o.seed_design.hops = 2;
-  o.seed_design.effort.starts = 3;
-  return o;
-}
+ReachOptions QuickOptions() { return testing::QuickReachOptions(20, 10, 2); }
 
 TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
   const Params params;  // T0 = 1, e = 1: the paper's robot

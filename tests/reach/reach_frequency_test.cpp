@@ -9,6 +9,7 @@
 
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
+#include "reach/quick_reach.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -19,19 +20,7 @@ using testing::Near;
 // The bound holds to rounding of the ratio bound/T0 times T0.
 constexpr double kBoundRoundingTol = 1e-12;
 
-ReachOptions QuickOptions() {
-  ReachOptions o;
-  o.global_evaluations = 30;
-  o.local_evaluations = 15;
-  o.max_seconds = 60.0;
-  o.search.n_x = 3;
-  o.search.n_psi = 3;
-  o.check.n_x = 4;
-  o.check.n_psi = 4;
-  o.seed_design.hops = 2;
-  o.seed_design.effort.starts = 3;
-  return o;
-}
+ReachOptions QuickOptions() { return testing::QuickReachOptions(30, 15, 3); }
 
 TEST(ReachFrequency, TheWinnersSpeedIsItsMeanVelocityOverTheRootOfItsT0) {
   Params params;  // T0 = 1, e = 1
