@@ -1,11 +1,11 @@
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 
@@ -60,8 +60,9 @@ std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floo
 }
 
 std::vector<double> HaltonPoint(long long i, int dimension) {
-  static constexpr int kPrimes[] = {2,  3,  5,  7,  11, 13, 17, 19, 23, 29,  31,  37,  41,  43,  47,  53,
-                                    59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
+  static constexpr int kPrimes[] = {2,  3,  5,  7,   11,  13,  17,  19,  23,  29, 31,
+                                    37, 41, 43, 47,  53,  59,  61,  67,  71,  73, 79,
+                                    83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
   if (dimension < 1 || dimension > static_cast<int>(std::size(kPrimes)) || i < 1) {
     throw std::invalid_argument(fmt::format(
         "Halton point {} of dimension {} is invalid: expected i >= 1 and 1 <= dimension <= {}", i,
@@ -82,8 +83,7 @@ std::vector<double> HaltonPoint(long long i, int dimension) {
 
 void BoxSearch::SetGlobal(const std::string& name, const std::vector<std::string>& allowed,
                           const char* option) {
-  halton = name == kHaltonStage &&
-           std::find(allowed.begin(), allowed.end(), name) != allowed.end();
+  halton = name == kHaltonStage && std::find(allowed.begin(), allowed.end(), name) != allowed.end();
   if (!halton) global = AlgorithmFromName(name, allowed, option);
 }
 
@@ -135,9 +135,9 @@ BoxSearchResult SearchBox(const BoxSearch& search) {
   } else {
     stage("global search", search.global, search.global_evaluations, search.start);
   }
-  const std::vector<BoxPoint> best = BestDistinctPoints(
-      search.seen(), search.infeasible, search.polish_starts,
-      std::max(search.same, search.polish_apart));
+  const std::vector<BoxPoint> best =
+      BestDistinctPoints(search.seen(), search.infeasible, search.polish_starts,
+                         std::max(search.same, search.polish_apart));
   for (const BoxPoint& from : best) {
     stage("local polish", search.local, search.local_evaluations, from.y);
   }

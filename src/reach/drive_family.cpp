@@ -73,13 +73,12 @@ DriveFamily DriveFamily::Pulse(int levels) {
 
 void DriveFamily::Validate() const {
   if (waveform == Waveform::kPulse && (levels < 2 || levels > kMaxPulseLevels)) {
-    throw std::invalid_argument(fmt::format(
-        "levels = {} is invalid: expected 2 <= levels <= {}", levels, kMaxPulseLevels));
+    throw std::invalid_argument(
+        fmt::format("levels = {} is invalid: expected 2 <= levels <= {}", levels, kMaxPulseLevels));
   }
   if (waveform == Waveform::kFourier && (harmonics < 1 || harmonics > kMaxHarmonics)) {
-    throw std::invalid_argument(
-        fmt::format("harmonics = {} is invalid: expected 1 <= harmonics <= {}", harmonics,
-                    kMaxHarmonics));
+    throw std::invalid_argument(fmt::format(
+        "harmonics = {} is invalid: expected 1 <= harmonics <= {}", harmonics, kMaxHarmonics));
   }
 }
 
@@ -170,7 +169,8 @@ std::vector<double> DriveCoordinates(const DriveFamily& family, const Forcing& f
     return PulseCoordinates(family.levels, forcing, bound);
   }
   const int K = forcing.harmonics();
-  if (!(largest <= bound * (1.0 + kBoundRounding)) || (K >= 1 && forcing.a(1) != 0.0) || (K >= 1 && forcing.b(1) < 0.0)) {
+  if (!(largest <= bound * (1.0 + kBoundRounding)) || (K >= 1 && forcing.a(1) != 0.0) ||
+      (K >= 1 && forcing.b(1) < 0.0)) {
     return {};
   }
   if (family.sine()) {
@@ -212,7 +212,9 @@ Forcing ScaledDrive(const Forcing& forcing, double factor) {
 }
 
 Forcing WithHarmonicsOf(const DriveFamily& family, const Forcing& forcing) {
-  if (family.sine() || family.waveform == Waveform::kPulse || forcing.harmonics() >= family.harmonics) return forcing;
+  if (family.sine() || family.waveform == Waveform::kPulse ||
+      forcing.harmonics() >= family.harmonics)
+    return forcing;
   std::vector<double> a(static_cast<std::size_t>(family.harmonics), 0.0), b = a;
   for (int k = 1; k <= forcing.harmonics(); ++k) {
     a[static_cast<std::size_t>(k - 1)] = forcing.a(k);

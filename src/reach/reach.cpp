@@ -182,8 +182,8 @@ std::vector<double> PointOf(const Context& ctx, const DriveSeed& d) {
 
 // The search stages (global, then local polishes) within the time limit.
 detail::BoxSearchResult Search(Context& ctx, const ReachOptions& options,
-                               const std::vector<double>& lower,
-                               const std::vector<double>& upper, const std::vector<double>& y0) {
+                               const std::vector<double>& lower, const std::vector<double>& upper,
+                               const std::vector<double>& y0) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -244,7 +244,8 @@ const Candidate* Winner(std::vector<Candidate>& candidates, const Context& ctx,
 // How the winner compares with the robust one-impact gait's motion from rest.
 std::string SeedComparison(const ReachResult& out, double seed_v) {
   if (std::isnan(seed_v)) return "; no robust one-impact seed";
-  if (out.seed_won) return fmt::format("; the robust one-impact gait itself ({:.6g} from rest)", seed_v);
+  if (out.seed_won)
+    return fmt::format("; the robust one-impact gait itself ({:.6g} from rest)", seed_v);
   if (seed_v > 0.0) {
     return fmt::format("; {:.3g} times the robust one-impact gait's {:.6g} from rest",
                        out.mean_velocity / seed_v, seed_v);
@@ -290,8 +291,8 @@ Context ContextOf(const Params& params, const ReachOptions& options, double boun
 // Scores every starting drive first (so that the polishes and the candidates know them) and
 // returns the first one's point, where the global stage starts (the middle of the box without
 // one). Throws std::invalid_argument for a seed outside the family.
-std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& starts,
-                                bool have_seed, const std::vector<double>& lower,
+std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& starts, bool have_seed,
+                                const std::vector<double>& lower,
                                 const std::vector<double>& upper) {
   std::vector<double> y0(lower.size());
   for (std::size_t i = 0; i < y0.size(); ++i) y0[i] = 0.5 * (lower[i] + upper[i]);
@@ -357,9 +358,9 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
   out.message = fmt::format(
       "fastest motion from rest with {}: mean velocity {:.6g} ({}, alpha = {:.6g}){}{}{}{}{}",
       BoundText(ctx.family, out.force_bound), out.mean_velocity, ForceText(out), out.alpha,
-      ctx.FreeT0() ? fmt::format(" at T0 = {:.6g}: speed {:.6g} sqrt(mu g L)", out.T0,
-                                 out.physical_speed)
-                   : std::string(),
+      ctx.FreeT0()
+          ? fmt::format(" at T0 = {:.6g}: speed {:.6g} sqrt(mu g L)", out.T0, out.physical_speed)
+          : std::string(),
       SeedComparison(out, seed_v),
       out.status == OptimizeStatus::kMaxTime ? "; the search stopped at its time limit" : "",
       out.robust_to_settings ? ""
@@ -371,8 +372,8 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
 }  // namespace
 
 std::vector<std::string> ReachGlobalAlgorithmNames() {
-  return {"GN_DIRECT_L", "GN_DIRECT", "GN_DIRECT_L_RAND", "GN_CRS2_LM", "GN_ISRES",
-          detail::kHaltonStage};
+  return {"GN_DIRECT_L", "GN_DIRECT", "GN_DIRECT_L_RAND",
+          "GN_CRS2_LM",  "GN_ISRES",  detail::kHaltonStage};
 }
 
 std::vector<std::string> ReachLocalAlgorithmNames() {
@@ -423,9 +424,9 @@ void ReachOptions::Validate() const {
   drive.Validate();
   RequireCount("seeds", static_cast<long long>(seeds.size()), 0, kMaxSeeds);
   for (std::size_t i = 0; i < seeds.size(); ++i) {
-    Require(seeds[i].alpha > 0.0 && seeds[i].alpha < 1.0,
-            fmt::format("seeds[{}].alpha = {} is invalid: expected 0 < alpha < 1", i,
-                        seeds[i].alpha));
+    Require(
+        seeds[i].alpha > 0.0 && seeds[i].alpha < 1.0,
+        fmt::format("seeds[{}].alpha = {} is invalid: expected 0 < alpha < 1", i, seeds[i].alpha));
   }
   RequireCount("polish_starts", polish_starts, 1, kMaxPolishStarts);
   Require((std::isnan(T0_min) && std::isnan(T0_max)) ||
@@ -474,9 +475,9 @@ std::vector<DriveSeed> FrequencySeeds(const Params& params, const ReachOptions& 
   std::vector<DriveSeed> seeds;
   for (int i = 0; i < kFrequencyStarts; ++i) {
     Params at = params;
-    at.T0 = std::exp(std::log(options.T0_min) + (std::log(options.T0_max) -
-                                                 std::log(options.T0_min)) *
-                                                    i / (kFrequencyStarts - 1));
+    at.T0 =
+        std::exp(std::log(options.T0_min) + (std::log(options.T0_max) - std::log(options.T0_min)) *
+                                                i / (kFrequencyStarts - 1));
     fixed.force_bound = bound / params.T0 * at.T0;
     const ReachResult r = OptimizeReach(at, fixed);
     if (!std::isnan(r.mean_velocity)) seeds.push_back({r.forcing, r.alpha, at.T0});
@@ -500,17 +501,17 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   const Orbit& so = seed.solution.orbit;
   const bool have_seed = seed.found() && so.forcing.harmonic();
   if (have_seed) out.seed.from_rest = CheckGaitFromRest(so, params, options.check);
-  Require(std::isnan(options.T0_min) || (options.T0_min <= params.T0 && params.T0 <= options.T0_max),
-          fmt::format("T0 = {} is invalid: expected T0_min = {} <= T0 <= T0_max = {} (the robot's "
-                      "own frequency is in the range searched)",
-                      params.T0, options.T0_min, options.T0_max));
+  Require(
+      std::isnan(options.T0_min) || (options.T0_min <= params.T0 && params.T0 <= options.T0_max),
+      fmt::format("T0 = {} is invalid: expected T0_min = {} <= T0 <= T0_max = {} (the robot's "
+                  "own frequency is in the range searched)",
+                  params.T0, options.T0_min, options.T0_max));
 
   Context ctx = ContextOf(params, options, bound, have_seed ? so.forcing.phi0() : 0.0);
   std::vector<DriveSeed> starts = options.seeds;
   // The robust gait starts the search and competes when it is a force of the family (not for
   // pulse drives: then it gives the motor phase only).
-  const bool seed_starts =
-      have_seed && !DriveCoordinates(options.drive, so.forcing, bound).empty();
+  const bool seed_starts = have_seed && !DriveCoordinates(options.drive, so.forcing, bound).empty();
   if (seed_starts) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
   if (ctx.FreeT0() && ctx.family.sine()) {
     for (const DriveSeed& d : FrequencySeeds(params, options, bound)) starts.push_back(d);
@@ -533,10 +534,11 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   const Candidate* best = Winner(candidates, ctx, options, out);
   if (best == nullptr) {
     out.status = OptimizeStatus::kNoValidOrbit;
-    out.message = fmt::format("no motion from rest without event_limit starts found with {} ({} "
-                              "evaluations{}{})",
-                              BoundText(ctx.family, bound), out.evaluations,
-                              found.message.empty() ? "" : "; ", found.message);
+    out.message = fmt::format(
+        "no motion from rest without event_limit starts found with {} ({} "
+        "evaluations{}{})",
+        BoundText(ctx.family, bound), out.evaluations, found.message.empty() ? "" : "; ",
+        found.message);
     return out;
   }
   out.status =

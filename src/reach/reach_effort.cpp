@@ -31,8 +31,7 @@ void ReachEffort::Validate() const {
                               max_seconds));
   detail::RequireCount("drive_evaluations", drive_evaluations, 1, kMaxDriveEvaluations);
   detail::RequireCount("drive_polishes", drive_polishes, 1, kMaxDrivePolishes);
-  detail::RequireCount("drive_local_evaluations", drive_local_evaluations, 0,
-                       kMaxDriveEvaluations);
+  detail::RequireCount("drive_local_evaluations", drive_local_evaluations, 0, kMaxDriveEvaluations);
 }
 
 ReachOptions ReachEffort::Options(double force_bound, double alpha,

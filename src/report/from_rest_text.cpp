@@ -19,8 +19,9 @@ std::string ReachText(const ReachResult& r) {
   std::string t;
   t += fmt::format("    force            {}\n", ForceFormula(r.forcing));
   if (!r.drive.sine()) {
-    t += fmt::format("    force bound      max |F| = {:.9g} <= {:g} (exact: F at the zeros of F')\n",
-                     r.max_abs_force, r.force_bound);
+    t +=
+        fmt::format("    force bound      max |F| = {:.9g} <= {:g} (exact: F at the zeros of F')\n",
+                    r.max_abs_force, r.force_bound);
   }
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {:.5g}\n", r.alpha);
   t += fmt::format("    speed from rest  mean velocity {:.6g} omega L (over {} starts)\n",

@@ -72,10 +72,7 @@ nlohmann::json DriveJson(const ReachResult& r) {
       levels.push_back(f.level(j));
       switches.push_back(f.switch_phase(j));
     }
-    return {{"waveform", "pulse"},
-            {"levels", levels},
-            {"switches", switches},
-            {"phi0", f.phi0()}};
+    return {{"waveform", "pulse"}, {"levels", levels}, {"switches", switches}, {"phi0", f.phi0()}};
   }
   std::vector<double> a, b;
   for (int k = 1; k <= f.harmonics(); ++k) {

@@ -2,6 +2,8 @@
 // under the bound, exactly; the bound is checked against a dense sampling of F written out here;
 // a force of the family has coordinates that give it back.
 
+#include "capsubot/reach/drive_family.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/reach/drive_family.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
@@ -136,8 +137,8 @@ TEST(DriveFamily, ASeriesBelowItsBoundIsTheSameDriveScaledToIt) {
 TEST(DriveFamily, ForcesOutsideTheFamilyHaveNoCoordinates) {
   const double bound = 1.0;
   // Above the bound.
-  EXPECT_TRUE(DriveCoordinates(DriveFamily::Fourier(2), Forcing::Harmonic(0.9, 0.2, 0.0), bound)
-                  .empty());
+  EXPECT_TRUE(
+      DriveCoordinates(DriveFamily::Fourier(2), Forcing::Harmonic(0.9, 0.2, 0.0), bound).empty());
   // A first harmonic with a cosine (not in the family's gauge).
   EXPECT_TRUE(
       DriveCoordinates(DriveFamily::Fourier(2), Forcing::Fourier(0.1, {0.2}, {0.3}, 0.0), bound)

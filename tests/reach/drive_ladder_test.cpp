@@ -2,6 +2,8 @@
 // winners checked by direct simulations written out here, and a random search of the same
 // budget run in the test as the level to beat.
 
+#include "capsubot/reach/drive_ladder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
-#include "capsubot/reach/drive_ladder.hpp"
 #include "capsubot/reach/reach_effort.hpp"
 #include "capsubot/simulate/simulator.hpp"
 #include "test_utils.hpp"
@@ -86,8 +87,7 @@ Ladder QuickLadder(int K) {
   Ladder l;
   const ReachEffort effort = QuickEffort();
   const OptimizeResult seed = RobustSeed(l.params);
-  const ReachResult sine =
-      OptimizeReach(l.params, seed, effort.Options(NAN, NAN, QuickCheck()));
+  const ReachResult sine = OptimizeReach(l.params, seed, effort.Options(NAN, NAN, QuickCheck()));
   l.drive_options = effort.DriveOptions(DriveFamily::Fourier(K), NAN, NAN, QuickCheck());
   l.ladder = ClimbDriveLadder(l.params, seed, sine, l.drive_options);
   return l;
@@ -118,8 +118,8 @@ TEST(DriveLadder, TheWinnerHoldsInLongDirectRunsWithTheChatterCutOffMoved) {
   ASSERT_FALSE(std::isnan(best.mean_velocity)) << best.message;
   for (double chatter : {1e-4, 1e-6, 1e-9}) {
     SCOPED_TRACE("chatter cut-off " + std::to_string(chatter));
-    const double direct = DirectMeanVelocity(best.forcing, l.params, best.alpha, QuickCheck(),
-                                             1000, 300, chatter);
+    const double direct =
+        DirectMeanVelocity(best.forcing, l.params, best.alpha, QuickCheck(), 1000, 300, chatter);
     EXPECT_TRUE(Near(direct, best.mean_velocity, kLongRunRelTol * best.mean_velocity));
   }
 }
