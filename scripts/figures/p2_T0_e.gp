@@ -1,6 +1,6 @@
 # The fastest gait at every (T0, e): problem P2 (best A, c, phi0 with A + c <= T0) solved at
 # each point of a grid by `capsubot sweep --optimize forcing`; left the fastest valid gait,
-# right the fastest valid and stable one. Colour: the step I (shell lengths per period).
+# right the fastest valid and stable one. Colour: the step I (gap lengths per period).
 # Called by scripts/figures.sh with: term, out, valid_data, stable_data, n_T0 (log-spaced T0
 # points from 0.01 to 1).
 set terminal term size 1500,700 font ",13"

@@ -55,7 +55,7 @@ std::string GaitText(const OptimizeResult& r, double rho_max) {
   t += fmt::format("    force            {}\n", ForceFormula(o.forcing));
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {}\n", Num(o.alpha, 5));
   t += fmt::format(
-      "    speed            I = {} shell lengths per period (mean velocity {} "
+      "    speed            I = {} gap lengths per period (mean velocity {} "
       "omega L)\n",
       Num(o.I, 6), Num(o.v_mean, 5));
   t += fmt::format(
@@ -147,8 +147,8 @@ std::string MainHeader(const MainJobResult& r) {
       "model: T0 = {:g} (friction bound mu g/(omega^2 L)), e = {:g} (restitution)\n"
       "robust gait (docs/model.md section 12): clearance >= max(d = {:g}, d_s = {:g} x stroke), "
       "stick margin s = {:g}, spectral radius <= {:g}\n"
-      "units: I = capsule displacement per forcing period in shell lengths L; velocity in "
-      "omega L\n"
+      "units: I = capsule displacement per forcing period in gap lengths L (the inner body's "
+      "free gap); velocity in omega L\n"
       "(change them with --T0, --e, --margin, --margin-stroke, --stick-margin, --rho-max)\n\n",
       p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.gait.rho_max);
   return t;

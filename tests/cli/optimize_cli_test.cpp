@@ -98,7 +98,7 @@ TEST(OptimizeCli, MainJobSummarySaysWhatTheRobotReachesAndWhichToBuildAndWritesN
   const auto r = RunCli("optimize" + kQuickReach);
   ASSERT_EQ(r.status, 0) << r.out;
   for (const char* text : {"NO valid gait", "fastest robust gait", "fastest valid gait",
-                           "fastest stable gait", "inner mass ratio", "shell lengths per period",
+                           "fastest stable gait", "inner mass ratio", "gap lengths per period",
                            "left_wall", "margins binding  clearance_stroke, rho_max",
                            "reached from rest in", "fastest motion from rest", "Which to build"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << "missing \"" << text << "\" in\n" << r.out;

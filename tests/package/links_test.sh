@@ -4,7 +4,9 @@
 #     or folder of the repository, and a #fragment into a markdown file names one of its
 #     headings (GitHub's anchors: lower case, punctuation dropped, spaces as hyphens);
 #  2. no tracked file points to the model's former location outside the repository (the
-#     model's page is docs/model.md).
+#     model's page is docs/model.md);
+#  3. the unit of length L has one meaning: the inner body's free gap between the walls
+#     (docs/model.md), never the shell's length.
 # Links inside fenced code blocks are not links. Usage: links_test.sh SOURCE_DIR
 set -euo pipefail
 root=$(cd "$1" && pwd)
@@ -118,6 +120,14 @@ for f in "${offending[@]}"; do
   grep -InE -- "$outside_dir|$outside_doc" "$f" | head -3
 done
 passed=$((passed + ${#regular[@]} - ${#offending[@]}))
+
+# One meaning of L: no tracked file calls it the shell's length (spelled in pieces, as above).
+shell_length='shell'" length|length of the "'shell'
+mapfile -t offending < <(grep -IliE -- "$shell_length" "${regular[@]}" || true)
+for f in "${offending[@]}"; do
+  fail "$f calls L the shell's length (L is the inner body's free gap):"
+  grep -IniE -- "$shell_length" "$f" | head -3
+done
 
 echo "links: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]
