@@ -2,7 +2,9 @@
 # example (c = A = T0/2) and for a case with valid orbits (A/T0 = 0.2, c/T0 = 0.03).
 # Called by scripts/figures.sh with: term, out, and for panel k = 1, 2: data_k, title_k,
 # h_phi0_k, h_I_k (heuristic point), max_phi0_k, max_I_k (max of I), p1_phi0_k, p1_I_k (best
-# valid orbit from --optimize phi0; NaN when there is none).
+# valid orbit from --optimize phi0; NaN when there is none). P1 is the paper's problem: valid
+# orbits with no margins and no stability requirement, so `optimize --problem phase`, whose
+# defaults are the robust gait's margins and rho_max, answers another problem; the legend says so.
 set terminal term size 1100,1250 font ",13"
 set output out
 set datafile separator ","
@@ -35,6 +37,6 @@ do for [k=1:2] {
        "+" using (mx):(my) every ::0::0 with points pt 6 ps 2.2 lw 2 lc rgb "#1f77b4" \
          title sprintf("max of I over all orbits: I = %.4g at {/Symbol f}_0 = %.3f", my, mx), \
        "+" using (px):(py) every ::0::0 with points pt 4 ps 2.2 lw 2 lc rgb "#000000" \
-         title (px == px ? sprintf("best valid orbit (P1): I = %.4g at {/Symbol f}_0 = %.3f", py, px) : "no valid orbit (P1 finds none)")
+         title (px == px ? sprintf("best valid orbit (P1: no margins, any stability): I = %.4g at {/Symbol f}_0 = %.3f", py, px) : "no valid orbit (P1 finds none)")
 }
 unset multiplot
