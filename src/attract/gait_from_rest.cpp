@@ -19,9 +19,20 @@ std::string Starts(std::int64_t n) { return fmt::format("{} start{}", n, n == 1 
 
 }  // namespace
 
+std::string NoImpactWords(const Motion& m) {
+  if (m.impacts_right != 0 || m.impacts_left != 0) return "";
+  if (m.mode == SimMode::kOnRightWall) return "at rest against the right wall";
+  if (m.mode == SimMode::kOnLeftWall) return "at rest against the left wall";
+  return "clear of both walls";
+}
+
 std::string DescribeMotion(const Motion& m, int max_period, int digits) {
   switch (m.status) {
     case MotionStatus::kPeriodic:
+      if (const std::string rest = NoImpactWords(m); !rest.empty()) {
+        return fmt::format("the inner body {}, no impacts, at mean velocity {:.{}g}", rest,
+                           m.mean_velocity, digits);
+      }
       return fmt::format(
           "a motion with {} right + {} left impacts per {} at mean velocity {:.{}g}",
           m.impacts_right, m.impacts_left,
@@ -110,6 +121,11 @@ std::string AttractorsSummary(const Attractors& a, int max_period,
 
 GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Params& params,
                                const FromRestOptions& options) {
+  return CheckGaitFromRest(orbit, orbit.forcing, params, options);
+}
+
+GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& robot, const Params& params,
+                               const FromRestOptions& options) {
   params.Validate();
   options.Validate();
   GaitFromRest out;
@@ -117,11 +133,11 @@ GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Params& params,
     out.summary = "not checked from rest: the gait's orbit does not exist";
     return out;
   }
-  out.attractors = FindAttractors(orbit.forcing, params, orbit.alpha, options);
+  out.attractors = FindAttractors(robot, params, orbit.alpha, options);
   std::vector<bool> on_gait(out.attractors.motions.size(), false);
   for (std::size_t k = 0; k < on_gait.size(); ++k) {
-    on_gait[k] = MatchesOrbit(out.attractors.motions[k], orbit.forcing, orbit,
-                              options.attractor.orbit_tolerance);
+    on_gait[k] =
+        MatchesOrbit(out.attractors.motions[k], robot, orbit, options.attractor.orbit_tolerance);
     out.reached += on_gait[k] ? 1 : 0;
   }
   out.summary = AttractorsSummary(out.attractors, options.attractor.motion.max_period, on_gait);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -84,8 +85,12 @@ DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one
   if (r.design.one_impact.ok()) {
     TellStage(options.on_stage,
               fmt::format("design: 2/{} how far mu, e and m2 carry the gait", stages));
-    r.robustness =
-        ComputeDesignRobustness(options.input, r.design.one_impact, RobustnessOf(one));
+    const RobustnessOptions robustness = RobustnessOf(one);
+    r.robustness = ComputeDesignRobustness(options.input, r.design.one_impact, robustness);
+    const Orbit& o = r.design.one_impact.solution.orbit;
+    // The robot of the speed bands (the motor's force, phi0 = 0): the same starts from rest.
+    r.gait_from_rest = CheckGaitFromRest(o, r.design.one_impact.model.forcing,
+                                         Params{o.T0, o.e, 0.0}, robustness.band.from_rest);
   }
   if (one.from_rest) {
     TellStage(options.on_stage, "design: 3/3 the fastest motion from rest");
@@ -108,6 +113,32 @@ DesignJobResult RunGrid(const DesignJobOptions& options, const DesignGridMode& m
 }
 
 }  // namespace
+
+const char* DesignChoiceName(DesignChoice choice) {
+  switch (choice) {
+    case DesignChoice::kGait:
+      return "one_impact";
+    case DesignChoice::kFromRestForward:
+      return "from_rest_forward";
+    case DesignChoice::kNone:
+      break;
+  }
+  return "none";
+}
+
+double GaitSpeedFromRest(const DesignJobResult& r) {
+  const Gait& g = r.design.one_impact;
+  if (!g.ok() || !r.gait_from_rest.checked) return std::numeric_limits<double>::quiet_NaN();
+  return 1e3 * g.model.omega * r.input.L * r.gait_from_rest.attractors.mean_velocity;
+}
+
+DesignChoice ChooseDesign(const DesignJobResult& r) {
+  const bool forward = r.from_rest && r.from_rest->forward.ok();
+  const double gait = GaitSpeedFromRest(r);
+  if (std::isnan(gait)) return forward ? DesignChoice::kFromRestForward : DesignChoice::kNone;
+  return forward && r.from_rest->forward.speed_mm_s > gait ? DesignChoice::kFromRestForward
+                                                           : DesignChoice::kGait;
+}
 
 DesignFromRestPart::DesignFromRestPart() {
   const DesignFromRestOptions d;

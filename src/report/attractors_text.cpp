@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/report/text_format.hpp"
 
 namespace capsubot::text {
@@ -12,6 +13,9 @@ std::string AttractorWords(const Attractor& a, int max_period) {
   const Motion& m = a.motion;
   switch (m.status) {
     case MotionStatus::kPeriodic:
+      if (const std::string rest = NoImpactWords(m); !rest.empty()) {
+        return fmt::format("period {}: no impacts, the inner body {}", m.period, rest);
+      }
       return fmt::format("period {}: {} right + {} left impacts per {}", m.period, m.impacts_right,
                          m.impacts_left,
                          m.period == 1 ? "period" : fmt::format("{} periods", m.period));

@@ -39,6 +39,15 @@ nlohmann::json DesignJson(const DesignResult& r) {
   return j;
 }
 
+// The attractors with the speed of each in mm/s (`mm_s`: mm/s per omega L).
+nlohmann::json AttractorsSiJson(const Attractors& attractors, double mm_s) {
+  nlohmann::json a = AttractorsJson(attractors);
+  for (std::size_t k = 0; k < attractors.attractors.size(); ++k) {
+    a["attractors"][k]["speed_mm_s"] = mm_s * attractors.attractors[k].mean_velocity;
+  }
+  return a;
+}
+
 nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
   const double nan = Gait::kNaN;
   nlohmann::json out;
@@ -60,12 +69,7 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
     j["dimensionless"] = d;
     j["forward_fraction"] = b->forward_fraction;
     j["backward_fraction"] = b->backward_fraction;
-    nlohmann::json a = AttractorsJson(b->attractors);
-    for (std::size_t k = 0; k < b->attractors.attractors.size(); ++k) {
-      a["attractors"][k]["speed_mm_s"] =
-          1e3 * m.omega * in.L * b->attractors.attractors[k].mean_velocity;
-    }
-    j["attractors"] = a;
+    j["attractors"] = AttractorsSiJson(b->attractors, 1e3 * m.omega * in.L);
     out[DirectionName(b->direction)] = j;
   }
   out["evaluations"] = r.evaluations;
@@ -78,7 +82,15 @@ nlohmann::json DesignJobJson(const DesignJobResult& r) {
   nlohmann::json j = DesignJson(r.design);
   j["robustness"] =
       r.robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.robustness);
+  if (r.gait_from_rest.checked) {
+    const Gait& g = r.design.one_impact;
+    nlohmann::json fr = FromRestJson(r.gait_from_rest);
+    fr.update(AttractorsSiJson(r.gait_from_rest.attractors, 1e3 * g.model.omega * r.input.L));
+    j["one_impact"]["from_rest"] = fr;
+    j["one_impact"]["speed_from_rest_mm_s"] = GaitSpeedFromRest(r);
+  }
   if (r.from_rest) j["from_rest_best"] = FromRestBestJson(r.input, *r.from_rest);
+  if (!r.grid) j["build"] = DesignChoiceName(ChooseDesign(r));
   return j;
 }
 

@@ -10,6 +10,7 @@
 #include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/design/gait_numbers.hpp"
 #include "capsubot/report/attractors_text.hpp"
+#include "capsubot/report/text_format.hpp"
 
 namespace capsubot::text {
 namespace {
@@ -94,7 +95,7 @@ std::string OneImpactText(const DesignInput& in, const DesignResult& r) {
                    Num(d[3].second, ""), Num(d[4].second, ""));
   t +=
       fmt::format("  orbit             x_min = {}, x_max = {}, spectral radius = {}, {} orbit(s)\n",
-                  Num(g.solution.validity.x_min, ""), Num(g.solution.validity.x_max, ""),
+                  Num(g.solution.validity.x_min, ""), XMaxText(g.solution.validity.x_max, 6),
                   Num(g.stability.spectral_radius, ""), g.orbits);
   t += fmt::format("  binding           {}\n", g.binding.empty()
                                                    ? "none (an interior maximum)"
@@ -145,15 +146,16 @@ std::string RobustnessText(const GaitRobustness& robustness, const Gait& g, doub
 // Attractors listed one by one in the text (the rest are summed).
 constexpr std::size_t kListedAttractors = 4;
 
-// The attractors of a motion from rest: the first kListedAttractors, then the rest summed.
-std::string AttractorLines(const DesignInput& in, const FromRestBest& b, int max_period) {
+// The attractors of a motion from rest: the first kListedAttractors, then the rest summed;
+// `mm_s` converts a mean velocity in omega L to mm/s.
+std::string AttractorLines(const Attractors& attractors, double mm_s, int max_period) {
   std::string t;
-  const auto& list = b.attractors.attractors;
+  const auto& list = attractors.attractors;
   for (std::size_t k = 0; k < list.size() && k < kListedAttractors; ++k) {
     const Attractor& a = list[k];
     t += fmt::format("    attractor {:<5} {:.0f} % of the starts: {}, {}\n", k + 1,
                      100.0 * a.fraction, AttractorWords(a, max_period),
-                     Num(1e3 * b.model.omega * in.L * a.mean_velocity, " mm/s"));
+                     Num(mm_s * a.mean_velocity, " mm/s"));
   }
   if (list.size() > kListedAttractors) {
     double rest = 0.0;
@@ -189,7 +191,7 @@ std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_
       fmt::format("    dimensionless   T0 = {}, A = {}, c = {}, alpha = {}\n", Num(m.params.T0, ""),
                   Num(m.forcing.harmonic() ? m.forcing.amplitude() : kNaN, ""),
                   Num(m.forcing.mean(), ""), Num(m.alpha, ""));
-  return t + AttractorLines(in, b, max_period);
+  return t + AttractorLines(b.attractors, 1e3 * b.model.omega * in.L, max_period);
 }
 
 // Part (b): the fastest motion from rest in each direction, checked with `options.check`.
@@ -212,6 +214,79 @@ std::string FromRestText(const DesignInput& in, const DesignFromRestOptions& opt
 
 }  // namespace
 
+// Part (a)'s gait started from rest: how many starts end on it, the speed averaged over all
+// starts, and where they go.
+std::string GaitFromRestText(const DesignInput& in, const Gait& g, const GaitFromRest& fr,
+                             int max_period) {
+  const Attractors& a = fr.attractors;
+  const double mm_s = 1e3 * g.model.omega * in.L;
+  std::string t = fmt::format(
+      "  from rest         the gait is reached from {} of {} starts from rest ({:.0f} %); over "
+      "all starts the robot moves at {}\n",
+      fr.reached, a.starts, 100.0 * static_cast<double>(fr.reached) / static_cast<double>(a.starts),
+      Num(mm_s * a.mean_velocity, " mm/s"));
+  return t + AttractorLines(a, mm_s, max_period);
+}
+
+// The advice of part (b)'s forward motion, with what part (a)'s gait does from rest.
+std::string ForwardAdvice(const DesignJobResult& r) {
+  const FromRestBest& b = r.from_rest->forward;
+  const std::string t =
+      fmt::format("  the forward motion of part (b): m2 = {} at {}, {} from rest averaged\n",
+                  Num(b.m2_kg, " kg"), Num(b.frequency_hz, " Hz"), Num(b.speed_mm_s, " mm/s"));
+  const double from_rest = GaitSpeedFromRest(r);
+  if (std::isnan(from_rest)) return t + "  over the starts (part (a) has no gait).\n";
+  return t + fmt::format(
+                 "  over the starts; the gait of part (a) promises {} but averages {} from\n"
+                 "  rest ({} of {} starts end on it).\n",
+                 Num(r.design.one_impact.speed_mm_s, " mm/s"), Num(from_rest, " mm/s"),
+                 r.gait_from_rest.reached, r.gait_from_rest.attractors.starts);
+}
+
+// The advice of part (a)'s gait: its promise and, when some starts miss it, what the robot
+// does from rest.
+std::string GaitAdvice(const DesignJobResult& r) {
+  const GaitFromRest& fr = r.gait_from_rest;
+  const Gait& g = r.design.one_impact;
+  if (fr.reached == fr.attractors.starts) {
+    return fmt::format("  the gait of part (a): every start from rest ends on it, at {}.\n",
+                       Num(g.speed_mm_s, " mm/s"));
+  }
+  return fmt::format(
+             "  the gait of part (a). It promises {}, but only {} of {} starts from rest end on "
+             "it:\n"
+             "  from rest the robot averages {}.",
+             Num(g.speed_mm_s, " mm/s"), fr.reached, fr.attractors.starts,
+             Num(GaitSpeedFromRest(r), " mm/s")) +
+         (r.from_rest ? " Part (b) finds nothing faster forward from rest.\n"
+                      : " --from-rest searches for a faster motion from rest.\n");
+}
+
+// Part (b)'s backward motion when it is faster from rest than `forward` [mm/s], else "".
+std::string FasterBackward(const DesignJobResult& r, double forward) {
+  if (!r.from_rest || !r.from_rest->backward.ok()) return "";
+  const FromRestBest& b = r.from_rest->backward;
+  if (!(std::abs(b.speed_mm_s) > forward)) return "";
+  return fmt::format("  Backward the robot goes faster: part (b)'s m2 = {} at {}, {} from rest.\n",
+                     Num(b.m2_kg, " kg"), Num(b.frequency_hz, " Hz"), Num(b.speed_mm_s, " mm/s"));
+}
+
+// Which answer to build, in plain words (ChooseDesign), and a faster backward motion.
+std::string Advice(const DesignJobResult& r) {
+  const std::string t = "\nWhich to build:\n";
+  switch (ChooseDesign(r)) {
+    case DesignChoice::kNone:
+      return t + "  nothing: no robust one-impact gait" +
+             (r.from_rest ? " and no motion forward from rest.\n" + FasterBackward(r, 0.0)
+                          : std::string("; --from-rest searches the motions from rest.\n"));
+    case DesignChoice::kFromRestForward:
+      return t + ForwardAdvice(r) + FasterBackward(r, r.from_rest->forward.speed_mm_s);
+    case DesignChoice::kGait:
+      break;
+  }
+  return t + GaitAdvice(r) + FasterBackward(r, GaitSpeedFromRest(r));
+}
+
 std::string DesignJobText(const DesignJobResult& r) {
   if (r.grid) {
     const SweepSummary& s = r.grid->summary;
@@ -219,11 +294,15 @@ std::string DesignJobText(const DesignJobResult& r) {
                        r.grid->output, s.seconds, s.threads);
   }
   std::string t = OneImpactText(r.input, r.design);
+  const int max_period = r.from_rest_options.check.attractor.motion.max_period;
+  if (r.gait_from_rest.checked) {
+    t += GaitFromRestText(r.input, r.design.one_impact, r.gait_from_rest, max_period);
+  }
   if (!r.robustness.parameters.empty()) {
     t += RobustnessText(r.robustness, r.design.one_impact, r.input.L);
   }
   if (r.from_rest) t += FromRestText(r.input, r.from_rest_options, *r.from_rest);
-  return t;
+  return t + Advice(r);
 }
 
 }  // namespace capsubot::text

@@ -31,7 +31,7 @@ std::string SolutionTable(const Solution& s, const Params& p) {
   t += fmt::format("  step per period  I      = {}   (L)\n", Num(o.I));
   t += fmt::format("  mean velocity    v_mean = {}   (omega L)\n", Num(o.v_mean));
   t += fmt::format("  inner body       x_min  = {}, x_max = {}   (walls at 0 and 1)\n",
-                   Num(v.x_min), Num(v.x_max));
+                   Num(v.x_min), o.ok() ? XMaxText(v.x_max) : Num(v.x_max));
   if (v.clearance > 0.0) {
     t += fmt::format("  clearance        {} required from both walls (stroke {})\n",
                      Num(v.clearance), Num(v.stroke));

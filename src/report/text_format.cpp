@@ -12,6 +12,10 @@ std::string Num(double value, int digits) {
   return std::isnan(value) ? "-" : fmt::format("{:.{}g}", value, digits);
 }
 
+std::string XMaxText(double x_max, int digits) {
+  return std::isnan(x_max) ? "1 at the impact (no interior maximum)" : Num(x_max, digits);
+}
+
 std::string NumFixed(double value, int decimals) {
   return std::isnan(value) ? "-" : fmt::format("{:.{}f}", value, decimals);
 }

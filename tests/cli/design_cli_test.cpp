@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -190,6 +191,47 @@ TEST(DesignCli, JsonHoldsTheFastestMotionFromRestInEachDirection) {
   EXPECT_LT(j["backward"]["m2_kg"].get<double>(), 0.03);
   EXPECT_GT(j["forward"]["speed_mm_s"].get<double>(), 0.0);
   EXPECT_GT(j["evaluations"].get<int>(), 0);
+}
+
+// Part (a)'s gait is checked from rest in the text and the JSON, and the summary says which
+// answer to build. The small robot (docs/design.md, "From rest"): most of its starts end with
+// the inner body resting on the right wall, the robot still, so the gait's promise is not what
+// the robot does from rest; the JSON's speed from rest is the starts' mean of its attractors.
+TEST(DesignCli, PartAsGaitIsCheckedFromRestAndTheSummarySaysWhatToBuild) {
+  const std::string robot =
+      "design --m1 0.03 --mu 0.3 --L 0.01 --e 0.7 --force-amplitude 0.05 --force-bias 0.05 "
+      "--frequency 20";
+  const auto text = RunCli(robot);
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_NE(text.out.find("  from rest         the gait is reached from "), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("no impacts, the inner body at rest against the right wall, 0 mm/s"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("\nWhich to build:\n  the gait of part (a). It promises "),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("x_max = 1 at the impact (no interior maximum)"), std::string::npos);
+  const auto r = RunCli(robot + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("build"), "one_impact");
+  const auto& g = j.at("one_impact");
+  const auto& fr = g.at("from_rest");
+  const int starts = fr.at("starts").get<int>();
+  const int reached = fr.at("reached").get<int>();
+  EXPECT_EQ(starts, 64);
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(2 * reached, starts);
+  double mean = 0.0;
+  int counted = 0;
+  for (const auto& a : fr.at("attractors")) {
+    mean += a.at("fraction").get<double>() * a.at("speed_mm_s").get<double>();
+    counted += a.at("starts").get<int>();
+  }
+  EXPECT_EQ(counted, starts);
+  EXPECT_NEAR(g.at("speed_from_rest_mm_s").get<double>(), mean, 1e-9 * std::abs(mean));
+  EXPECT_LT(g.at("speed_from_rest_mm_s").get<double>(), 0.5 * g.at("speed_mm_s").get<double>());
 }
 
 // The gait's robustness in the user's units: mu, e and m2 [kg] with their limits, each limit

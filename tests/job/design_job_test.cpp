@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/simulate/simulator.hpp"
 #include "design/example_robot.hpp"
 #include "test_utils.hpp"
 
@@ -94,6 +96,64 @@ TEST(DesignJob, OneDesignIsTheLibrarysDesignAndTellsItsStages) {
 // At 1500 Hz the example robot's T0 is 1.7e-6: mu's range [mu/2, 2 mu] is narrower in T0 than
 // the continuation's finite-difference step of 1e-6; mu is followed relative to its value and
 // every part of the robustness is computed.
+// A robot whose gait most starts from rest never reach: shell 30 g, gap 10 mm, mu 0.3, e 0.7,
+// motor 0.05 sin + 0.05 N at 20 Hz (docs/design.md, "From rest"). Its robust gait exists, yet
+// most starts end with the inner body resting on a wall and the robot standing still.
+DesignInput SmallRobot() {
+  DesignInput in;
+  in.m1 = 0.03;
+  in.L = 0.01;
+  in.mu = 0.3;
+  in.e = 0.7;
+  in.force.amplitude = 0.05;
+  in.force.bias = 0.05;
+  in.frequency_min = in.frequency_max = 20.0;
+  return in;
+}
+
+// A start from rest run by the simulator alone for this many periods: long enough for the
+// transients of this robot (they settle within 100 periods, docs/design.md).
+constexpr double kDirectPeriods = 2000.0;
+
+TEST(DesignJob, PartAsGaitIsCheckedFromRestAndTheAdviceFollowsFromIt) {
+  DesignJobOptions o = OneDesign(std::nullopt);
+  o.input = SmallRobot();
+  const DesignJobResult r = RunDesignJob(o);
+  ASSERT_TRUE(r.design.one_impact.ok()) << r.design.message;
+  const GaitFromRest& fr = r.gait_from_rest;
+  ASSERT_TRUE(fr.checked);
+  EXPECT_EQ(fr.attractors.starts, 64);  // the 8 x 8 starts of the speed bands
+  EXPECT_GT(fr.reached, 0);
+  EXPECT_LT(2 * fr.reached, fr.attractors.starts);  // fewer than half reach the gait
+  // The speed from rest is the speed bands' nominal speed, which the bands compute on their own.
+  ASSERT_FALSE(r.robustness.parameters.empty());
+  const Gait& g = r.design.one_impact;
+  const double mm_s = 1e3 * g.model.omega * o.input.L;
+  EXPECT_TRUE(testing::RelNear(GaitSpeedFromRest(r),
+                               mm_s * r.robustness.parameters.front().band.nominal_speed, 1e-12));
+  EXPECT_LT(GaitSpeedFromRest(r), 0.5 * g.speed_mm_s);
+  // The most common motion: the inner body resting on a wall, the robot still. Checked on one
+  // of its starts by the simulator alone: no impacts over the last periods, no displacement.
+  const Attractor& top = fr.attractors.attractors.front();
+  EXPECT_NE(NoImpactWords(top.motion), "");
+  EXPECT_GT(2 * top.starts, fr.attractors.starts);
+  const Orbit& orbit = g.solution.orbit;
+  SimOptions so;
+  so.alpha = orbit.alpha;
+  so.x0 = top.example.x;
+  so.u0 = top.example.u;
+  so.v0 = top.example.v;
+  so.transient = kDirectPeriods;
+  so.periods = 100.0;
+  const SimResult direct = Simulate(orbit.forcing.WithPhase(orbit.forcing.phi0() + top.example.psi),
+                                    Params{orbit.T0, orbit.e, 0.0}, so);
+  ASSERT_EQ(direct.status, SimStatus::kOk) << direct.message;
+  EXPECT_EQ(direct.impacts_right + direct.impacts_left, 0);
+  EXPECT_LE(std::abs(direct.v_mean), 1e-12);
+  // Without part (b) the advice is the gait, with the warning of its starts.
+  EXPECT_EQ(ChooseDesign(r), DesignChoice::kGait);
+}
+
 TEST(DesignJob, AHighFrequencyDesignReportsItsRobustness) {
   DesignJobOptions o = OneDesign(std::nullopt);
   o.input.frequency_min = o.input.frequency_max = 1500.0;

@@ -33,9 +33,20 @@ struct GaitFromRest {
 GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Params& params,
                                const FromRestOptions& options = {});
 
+/// The same with the robot's force `robot` (the orbit's force up to its phase: a motor's own
+/// force, phi0 = 0, whose phase origin then counts the start phases psi, as the design's speed
+/// bands count them).
+GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& robot, const Params& params,
+                               const FromRestOptions& options = {});
+
+/// Where the inner body stays in a periodic motion without impacts: "at rest against the right
+/// wall" (or left), or "clear of both walls"; empty for a motion with impacts.
+std::string NoImpactWords(const Motion& motion);
+
 /// A few words on a long-run motion: "a motion with 3 right + 1 left impacts per period at mean
-/// velocity 0.0244", "a motion with no period up to 8 (mean velocity 0.031)", "the work bound
-/// (a Zeno sequence of impacts)". `digits`: significant digits of the velocity.
+/// velocity 0.0244", "the inner body at rest against the right wall, no impacts, at mean
+/// velocity 0", "a motion with no period up to 8 (mean velocity 0.031)", "the work bound (a
+/// Zeno sequence of impacts)". `digits`: significant digits of the velocity.
 std::string DescribeMotion(const Motion& motion, int max_period, int digits = 3);
 
 /// The attractors in one sentence, built from the numbers. With `on_gait` (one flag per start:

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/design.hpp"
 #include "capsubot/design/design_from_rest.hpp"
@@ -114,11 +115,29 @@ struct DesignJobResult {
   /// How far mu, e and m2 carry part (a)'s gait (ComputeDesignRobustness with the default
   /// RobustnessOptions); empty without a gait and for a grid.
   GaitRobustness robustness;
+  /// Part (a)'s gait checked from rest (CheckGaitFromRest) on the starts of its speed bands
+  /// (part (b)'s from_rest_starts, or 8 x 8): how many starts end on it and where the others
+  /// go; checked = false without a gait and for a grid.
+  GaitFromRest gait_from_rest;
   std::optional<DesignFromRestResult> from_rest;  ///< part (b), when asked
   /// How part (b) searched and checked (DesignFromRestPart::Options), when asked.
   DesignFromRestOptions from_rest_options;
   std::optional<DesignGridWritten> grid;  ///< what a grid wrote
 };
+
+/// Which answer of one design to build: part (a)'s gait, unless part (b)'s forward motion is
+/// faster from rest than the gait averaged over its starts from rest (or there is no gait).
+enum class DesignChoice { kNone, kGait, kFromRestForward };
+
+/// Stable identifier ("none", "one_impact", "from_rest_forward").
+const char* DesignChoiceName(DesignChoice choice);
+
+/// The choice for a result of one design (kNone for a grid).
+DesignChoice ChooseDesign(const DesignJobResult& result);
+
+/// The mean speed from rest [mm/s] of part (a)'s gait, averaged over its starts (NaN when not
+/// checked).
+double GaitSpeedFromRest(const DesignJobResult& result);
 
 /// Runs the job: validates the options (std::invalid_argument before any work), then one
 /// design or the grid. A grid's errors are RunDesignGrid's (IoError, SweepResumableError); an

@@ -11,6 +11,11 @@ namespace capsubot::text {
 /// everywhere (JSON writes it as null, CSV as an empty cell).
 std::string Num(double value, int digits = 10);
 
+/// The inner body's highest interior maximum x_max of an existing orbit with `digits` significant
+/// digits; without one (NaN) x rises to the right wall at the impact: "1 at the impact (no
+/// interior maximum)".
+std::string XMaxText(double x_max, int digits = 10);
+
 /// The same with `decimals` digits after the point (aligned columns); NaN is "-".
 std::string NumFixed(double value, int decimals);
 
