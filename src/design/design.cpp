@@ -220,6 +220,7 @@ DesignResult Design(const DesignInput& in, const DesignProgress& progress) {
                        .gait;
   }
   r.robots = tally.robots;
+  if (progress) progress(tally.robots, tally.robots);  // the end: the bound was an upper one
   r.complete = tally.complete;
   r.unresolved_robots = tally.unresolved;
   const GaitStatus s = r.one_impact.status;

@@ -310,6 +310,8 @@ DesignFromRestResult DesignFromRest(const DesignInput& in, const DesignFromRestO
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.evaluations += ctx.evaluations;
   out.rejected_evaluations = ctx.rejected;
+  // The end: the total was an upper bound.
+  if (progress) progress(ctx.stage, out.evaluations, out.evaluations);
   return out;
 }
 

@@ -15,9 +15,10 @@ std::string PeriodicJobText(const PeriodicJobResult& r) {
   t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", r.options.params.T0,
                    r.options.params.e, r.options.alpha);
   t += m.out_of_scale
-           ? fmt::format("  status         {} (the state is out of the robot's scale: beyond 1e6 "
-                         "times its velocity scale the map's rounding exceeds its change)\n",
-                         ShootingStatusName(m.status))
+           ? fmt::format(
+                 "  status         {} (the state is out of the robot's scale: beyond 1e6 "
+                 "times its velocity scale the map's rounding exceeds its change)\n",
+                 ShootingStatusName(m.status))
            : fmt::format("  status         {} (residual {:.3g} after {} Newton iterations)\n",
                          ShootingStatusName(m.status), m.residual, m.iterations);
   t += fmt::format("  period         {}: {} right + {} left impacts per {} period{}\n", m.period,
@@ -35,10 +36,10 @@ std::string PeriodicJobText(const PeriodicJobResult& r) {
     t += "  verdict        none: Newton did not converge, so no periodic motion is known here\n";
   } else {
     t += fmt::format(
-        "  verdict        {} (spectral radius {:.10g}; largest multiplier is {:.3g} "
-        "from +1, {:.3g} from -1)\n",
-        m.stable ? "stable" : "unstable", m.spectral_radius, m.distance_to_plus_one,
-        m.distance_to_minus_one);
+        "  verdict        {} (spectral radius {:.10g}{}); the largest multiplier lies {:.3g} "
+        "from +1 (0: a fold) and {:.3g} from -1 (0: a period doubling)\n",
+        m.stable ? "stable" : "unstable", m.spectral_radius, m.stable ? " < 1" : " >= 1",
+        m.distance_to_plus_one, m.distance_to_minus_one);
   }
   return t;
 }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -152,6 +153,39 @@ TEST(DesignJob, PartAsGaitIsCheckedFromRestAndTheAdviceFollowsFromIt) {
   EXPECT_LE(std::abs(direct.v_mean), 1e-12);
   // Without part (b) the advice is the gait, with the warning of its starts.
   EXPECT_EQ(ChooseDesign(r), DesignChoice::kGait);
+}
+
+// Progress counts against an upper bound while the searches run; their last report is the
+// end (done = total), so that a bar ends full, not at "102/676 robots".
+TEST(DesignJob, ProgressEndsWithTheWorkDone) {
+  DesignJobOptions o = OneDesign(SmallFromRest());
+  struct Report {
+    std::int64_t done = -1, total = -1, reports = 0;
+    bool within = true;
+    void operator()(std::int64_t d, std::int64_t t) {
+      within = within && d <= t;
+      done = d;
+      total = t;
+      ++reports;
+    }
+  };
+  auto robots = std::make_shared<Report>();
+  auto evaluations = std::make_shared<Report>();
+  auto& one = std::get<DesignOneMode>(o.mode);
+  one.progress = [robots](std::int64_t d, std::int64_t t) { (*robots)(d, t); };
+  one.from_rest->progress = [evaluations](const std::string&, std::int64_t d, std::int64_t t) {
+    (*evaluations)(d, t);
+  };
+  const DesignJobResult r = RunDesignJob(o);
+  ASSERT_TRUE(r.from_rest.has_value());
+  EXPECT_GT(robots->reports, 1);
+  EXPECT_TRUE(robots->within);
+  EXPECT_EQ(robots->done, r.design.robots);
+  EXPECT_EQ(robots->total, r.design.robots);
+  EXPECT_GT(evaluations->reports, 1);
+  EXPECT_TRUE(evaluations->within);
+  EXPECT_EQ(evaluations->done, r.from_rest->evaluations);
+  EXPECT_EQ(evaluations->total, r.from_rest->evaluations);
 }
 
 TEST(DesignJob, AHighFrequencyDesignReportsItsRobustness) {

@@ -186,7 +186,8 @@ struct DesignResult {
 };
 
 /// Reports the robots evaluated so far (done of total, total an upper bound that the search
-/// raises when its windows hold more than one maximum of the speed); must be cheap.
+/// raises when its windows hold more than one maximum of the speed; the last report, at the
+/// end of the search, has total = done); must be cheap.
 using DesignProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
 /// The fastest robust one-impact gait over m2 in [M2Min, M2Max] (and f in the frequency range).

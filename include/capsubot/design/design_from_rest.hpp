@@ -126,7 +126,8 @@ struct DesignFromRestResult {
 };
 
 /// Reports the stage of the from-rest design ("forward: global search"), `done` of `total`
-/// evaluations of the whole run (total an upper bound); must be cheap.
+/// evaluations of the whole run (total an upper bound; the last report, at the end of the run,
+/// has total = done); must be cheap.
 using DesignFromRestProgress =
     std::function<void(const std::string& stage, std::int64_t done, std::int64_t total)>;
 
