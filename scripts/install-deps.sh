@@ -3,13 +3,26 @@
 # Quiet when everything is present; needs root (or sudo) only when something is missing.
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libeigen3-dev libnlopt-cxx-dev libgsl-dev libfmt-dev
-  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libtomlplusplus-dev
-  help2man pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-pip
-  python3-setuptools python3-wheel python3-venv libopenmpi-dev
-  openmpi-bin zlib1g-dev)
-# Optional extras: `scripts/install-deps.sh --figures` adds gnuplot for the figure script.
-if [[ "${1:-}" == "--figures" ]]; then packages+=(gnuplot-nox); fi
+# The program and the library alone (scripts/build.sh --minimal): a compiler, CMake and the
+# libraries the CLI links.
+core=(build-essential cmake pkg-config libeigen3-dev libnlopt-cxx-dev libgsl-dev libfmt-dev
+  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev zlib1g-dev)
+# Everything else: the tests, the benchmarks, the manual page, the Python module (and the
+# pandas the docs' examples read CSVs with), MPI.
+extras=(libgtest-dev libgmock-dev libbenchmark-dev help2man pybind11-dev python3-dev python3-numpy
+  python3-pytest python3-matplotlib python3-pandas python3-pip python3-setuptools python3-wheel
+  python3-venv libopenmpi-dev openmpi-bin)
+# Usage: install-deps.sh [--minimal] [--figures]; --figures adds gnuplot for the figure script.
+packages=("${core[@]}")
+minimal=0
+for arg in "$@"; do
+  case $arg in
+    --minimal) minimal=1 ;;
+    --figures) packages+=(gnuplot-nox) ;;
+    *) echo "install-deps: unknown option $arg (expected --minimal or --figures)" >&2; exit 2 ;;
+  esac
+done
+[[ $minimal -eq 1 ]] || packages+=("${extras[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
