@@ -1,17 +1,32 @@
 #!/usr/bin/env bash
 # `pip install .` into a fresh virtual environment (with the system's site packages, offline,
 # no build isolation: Debian's setuptools and wheel), then imports the installed module from
-# outside the source tree. The build folder given is reused, so the test builds nothing new.
+# outside the source tree, runs the installed command, and checks that the source folder is
+# left as it was. The build folder given is reused, so the test builds nothing new.
 # Usage: pip_install_test.sh SOURCE_DIR BUILD_DIR PYTHON
 set -euo pipefail
 source_dir=$1 build=$2 python=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$python" -m venv --system-site-packages "$work/venv"
-# pip copies nothing back into the source tree: its build folders go to the temporary folder.
-cp -r "$source_dir/pyproject.toml" "$source_dir/setup.py" "$source_dir/README.md" "$work/"
-CAPSUBOT_CMAKE_BUILD_DIR="$build" "$work/venv/bin/python" -m pip install --no-build-isolation \
-  --no-index --no-deps -q "$work" >"$work/pip.log" 2>&1 || { cat "$work/pip.log"; exit 1; }
+# A copy of the source folder (without build folders), so that what pip leaves in it is seen:
+# nothing (setuptools' build and egg-info folders go to temporary folders).
+mkdir "$work/src"
+tar -C "$source_dir" --exclude='./build*' --exclude=./.git --exclude='./*.egg-info' -cf - . |
+  tar -C "$work/src" -xf -
+before=$(cd "$work/src" && find . | sort)
+# With the program too (CAPSUBOT_PIP_CLI=1): the environment's `capsubot` command.
+CAPSUBOT_CMAKE_BUILD_DIR="$build" CAPSUBOT_PIP_CLI=1 "$work/venv/bin/python" -m pip install \
+  --no-build-isolation --no-index --no-deps -q "$work/src" >"$work/pip.log" 2>&1 ||
+  { cat "$work/pip.log"; exit 1; }
+after=$(cd "$work/src" && find . | sort)
+if [[ $before != "$after" ]]; then
+  echo "FAIL: pip install changed the source folder:"
+  diff <(echo "$before") <(echo "$after") || true
+  exit 1
+fi
+"$work/venv/bin/capsubot" --version | grep -qx "0.2.0" ||
+  { echo "FAIL: no capsubot command in the environment"; exit 1; }
 out=$(cd "$work" && "$work/venv/bin/python" -c "
 import capsubot, sys
 assert capsubot.__file__.startswith(sys.prefix), (capsubot.__file__, sys.prefix)
