@@ -256,3 +256,33 @@ def design(
     threads: int = 0,
 ) -> dict[str, Any]:
     """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait."""
+
+def basins(
+    *,
+    A: float | None = None,
+    c: float | None = None,
+    phi0: float | None = None,
+    cos: Sequence[float] | None = None,
+    sin: Sequence[float] | None = None,
+    waveform: str | None = None,
+    levels: Sequence[float] | None = None,
+    switches: Sequence[float] | None = None,
+    T0: float = 1.0,
+    e: float = 1.0,
+    alpha: float,
+    starts: str = "64x64",
+    plane: str = "x0-psi",
+    psi: float = 0.0,
+    u_min: float = -1.0,
+    u_max: float = 1.0,
+    transient: int = 200,
+    record: int = 100,
+    max_period: int = 8,
+    state_tolerance: float = 1e-6,
+    converged_tolerance: float = 1e-11,
+    chatter_velocity: float = 1e-6,
+    max_events_per_period: int = 1000,
+    threads: int = 0,
+) -> dict[str, Any]:
+    """The attractor of every start of a plane of starts: the attractors of `capsubot basins
+    --json`, the columns of its CSV map as NumPy arrays, and the provenance."""

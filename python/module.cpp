@@ -19,7 +19,9 @@ PYBIND11_MODULE(capsubot, m) {
           "periodic motion of any kind by Newton shooting; continue_branch: its continuation in "
           "one "
           "parameter; design: a real robot in SI "
-          "units. Keyword arguments are named as the command-line "
+          "units; basins: the basin map command, its CSV file as NumPy columns with its "
+          "provenance. Keyword arguments "
+          "are named as the command-line "
           "options; results are the dicts that `capsubot <command> --json` prints (None "
           "for null), without its provenance. Bad input raises ValueError with the "
           "library's message.\n\n") +
@@ -34,4 +36,5 @@ PYBIND11_MODULE(capsubot, m) {
   capsubot::python::BindPeriodic(m);
   capsubot::python::BindDesign(m);
   capsubot::python::BindContinuation(m);
+  capsubot::python::BindBasins(m);
 }
