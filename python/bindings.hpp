@@ -37,6 +37,7 @@ void BindPeriodic(py::module_& m);      // periodic
 void BindDesign(py::module_& m);        // design
 void BindContinuation(py::module_& m);  // continue_branch
 void BindBasins(py::module_& m);        // basins
+void BindBifurcation(py::module_& m);   // bifurcation
 
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin

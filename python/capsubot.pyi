@@ -286,3 +286,36 @@ def basins(
 ) -> dict[str, Any]:
     """The attractor of every start of a plane of starts: the attractors of `capsubot basins
     --json`, the columns of its CSV map as NumPy arrays, and the provenance."""
+
+def bifurcation(
+    *,
+    A: float | None = None,
+    c: float | None = None,
+    phi0: float | None = None,
+    cos: Sequence[float] | None = None,
+    sin: Sequence[float] | None = None,
+    waveform: str | None = None,
+    levels: Sequence[float] | None = None,
+    switches: Sequence[float] | None = None,
+    T0: float = 1.0,
+    e: float = 1.0,
+    alpha: float | None = None,
+    param: str,
+    from_: float,
+    to: float,
+    steps: int = 101,
+    direction: str = "both",
+    start: tuple[float, float] = (0.5, 0.0),
+    over: str | None = None,
+    no_analytic: bool = False,
+    transient: int = 200,
+    record: int = 100,
+    max_period: int = 8,
+    state_tolerance: float = 1e-6,
+    converged_tolerance: float = 1e-11,
+    chatter_velocity: float = 1e-6,
+    max_events_per_period: int = 1000,
+    threads: int = 0,
+) -> dict[str, Any]:
+    """The brute-force bifurcation diagram: the columns of `capsubot bifurcation`'s impacts
+    (-o) and summary (--summary) CSVs as NumPy arrays, and the provenance."""
