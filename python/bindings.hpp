@@ -36,6 +36,7 @@ void BindAttractors(py::module_& m);    // attractors
 void BindPeriodic(py::module_& m);      // periodic
 void BindDesign(py::module_& m);        // design
 void BindContinuation(py::module_& m);  // continue_branch
+void BindSweep(py::module_& m);         // sweep
 void BindBasins(py::module_& m);        // basins
 void BindBifurcation(py::module_& m);   // bifurcation
 

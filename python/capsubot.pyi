@@ -257,6 +257,41 @@ def design(
 ) -> dict[str, Any]:
     """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait."""
 
+def sweep(
+    *,
+    grid: Sequence[str],
+    optimize: str | None = None,
+    A: float | None = None,
+    c: float | None = None,
+    phi0: float | None = None,
+    cos: Sequence[float] | None = None,
+    sin: Sequence[float] | None = None,
+    T0: float | None = None,
+    e: float | None = None,
+    margin: float | None = None,
+    margin_stroke: float | None = None,
+    stick_margin: float | None = None,
+    stability: bool = False,
+    rho_max: float | None = None,
+    stable_only: bool = False,
+    scan_points: int | None = None,
+    bound: float | None = None,
+    harmonics: int | None = None,
+    starts: int | None = None,
+    hops: int | None = None,
+    global_algorithm: str | None = None,
+    local_algorithm: str | None = None,
+    global_evaluations: int | None = None,
+    alpha: float | None = None,
+    from_rest_starts: str | None = None,
+    reach_starts: str | None = None,
+    reach_evaluations: int | None = None,
+    reach_local_evaluations: int | None = None,
+    threads: int = 0,
+) -> dict[str, Any]:
+    """The orbit or the optimum of P1, P2, P3 or reach at every point of a grid: the columns of
+    `capsubot sweep`'s CSV as NumPy arrays, and the provenance."""
+
 def basins(
     *,
     A: float | None = None,
