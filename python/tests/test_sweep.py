@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import capsubot
-from conftest import cli_csv, cli_error, same_columns
+from conftest import cli_csv, cli_error, cli_flags, same_columns
 
 FORCE = dict(A=0.05, c=0.02)
 GRID = ["phi0=-3:-2.4:4", "e=0.5,1"]
@@ -32,6 +32,26 @@ def test_robot_and_optimum_columns_equal_the_command_lines_csv():
         "sweep", "--grid", "e=0.4,0.6", "--optimize", "phi0", "--A", 0.05, "--c", 0.02, "--T0",
         0.1, "--stable-only", "--scan-points", 90))
     assert "status" in best["columns"]
+
+
+# The optimisers with small budgets (each point a fraction of a second): the same search, so
+# the same rows, on every run.
+OPTIMA = {
+    "forcing": dict(grid=["T0=0.1,0.2"], starts=1, hops=0),
+    "fourier": dict(grid=["e=0.5,1"], harmonics=2, starts=1, T0=0.1),
+    "reach": dict(grid=["e=0.5"], T0=0.1, starts=1, hops=0, reach_evaluations=3,
+                  reach_local_evaluations=1, reach_starts="2x2", from_rest_starts="2x2"),
+}
+
+
+@pytest.mark.parametrize("mode", OPTIMA)
+def test_optimum_columns_equal_the_command_lines_csv(mode):
+    arguments = OPTIMA[mode]
+    found = capsubot.sweep(optimize=mode, **arguments)
+    grid = [item for axis in arguments["grid"] for item in ("--grid", axis)]
+    rest = cli_flags({k: v for k, v in arguments.items() if k != "grid"})
+    assert same_columns(found["columns"], cli_csv("sweep", *grid, "--optimize", mode, *rest))
+    assert set(found["columns"]["status"]) == {"ok"}
 
 
 def test_a_point_is_solve_at_that_point():
