@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <exception>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ void BindAttractors(py::module_& m);    // attractors
 void BindPeriodic(py::module_& m);      // periodic
 void BindDesign(py::module_& m);        // design
 void BindContinuation(py::module_& m);  // continue_branch
+void BindSweep(py::module_& m);         // sweep
+void BindBasins(py::module_& m);        // basins
+void BindBifurcation(py::module_& m);   // bifurcation
 
 /// The force arguments every function takes, named as the command-line options: the paper's
 /// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
@@ -72,6 +76,9 @@ FromRestOptions FromRestCheck(const std::string& starts, int threads);
 
 /// The default grid of the check from rest, as the command line's --from-rest-starts.
 inline constexpr const char* kDefaultFromRestStarts = "8x8";
+
+/// The default grid of a basin map, as `capsubot basins --starts`.
+inline constexpr const char* kDefaultBasinStarts = "64x64";
 
 /// The default grid of starts inside a reach search, as the command line's --reach-starts.
 inline constexpr const char* kDefaultReachStarts = "4x4";
@@ -134,6 +141,31 @@ auto RunWithoutGil(Work&& work) {
 /// (NaN and infinities, which JSON writes as null, -> None), strings -> str, booleans -> bool,
 /// null -> None.
 py::object ToPython(const nlohmann::json& value);
+
+/// A private temporary folder for the CSV files a job writes (sweep, basins, bifurcation),
+/// removed with everything in it when the object goes.
+class OutputFolder {
+ public:
+  OutputFolder();  ///< throws std::runtime_error when it cannot be created
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+  /// The path of file `name` in the folder.
+  std::string File(const char* name) const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// The CSV file a job wrote as {column name: NumPy array} in the header's order, after its
+/// '#' comment lines: int64 for a column of whole numbers, float64 for numbers (an empty cell:
+/// NaN), str otherwise. The numbers are the file's text read as Python's float() reads it.
+py::dict CsvColumns(const std::string& path);
+
+/// What made a result: {"program": "capsubot", "version", "command", "options"}, options the
+/// call's arguments by their Python names (the command line's provenance, with its options
+/// named as the module's arguments).
+py::dict JobProvenance(const char* command, const py::dict& options);
 
 /// The docstring lines of the margins of a robust gait (docs/model.md section 12).
 inline constexpr const char* kMarginArgsDoc =

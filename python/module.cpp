@@ -19,7 +19,9 @@ PYBIND11_MODULE(capsubot, m) {
           "periodic motion of any kind by Newton shooting; continue_branch: its continuation in "
           "one "
           "parameter; design: a real robot in SI "
-          "units. Keyword arguments are named as the command-line "
+          "units; sweep, basins, bifurcation: the grid, basin map and bifurcation diagram "
+          "commands, their CSV files as NumPy columns with their provenance. Keyword arguments "
+          "are named as the command-line "
           "options; results are the dicts that `capsubot <command> --json` prints (None "
           "for null), without its provenance. Bad input raises ValueError with the "
           "library's message.\n\n") +
@@ -34,4 +36,7 @@ PYBIND11_MODULE(capsubot, m) {
   capsubot::python::BindPeriodic(m);
   capsubot::python::BindDesign(m);
   capsubot::python::BindContinuation(m);
+  capsubot::python::BindSweep(m);
+  capsubot::python::BindBasins(m);
+  capsubot::python::BindBifurcation(m);
 }

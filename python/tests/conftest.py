@@ -7,7 +7,9 @@ built program (python/CMakeLists.txt); by hand:
 
 import json
 import os
+import re
 import subprocess
+import tempfile
 
 import numpy as np
 import pytest
@@ -71,3 +73,57 @@ def same(a, b):
         return x == y
 
     return equal(a, b)
+
+
+def read_csv(path):
+    """The CSV file at `path` as {column: list of cells (text)}, after its '#' lines."""
+    with open(path, encoding="utf-8") as f:
+        lines = [line for line in f.read().splitlines() if not line.startswith("#")]
+    header = lines[0].split(",")
+    rows = [line.split(",") for line in lines[1:]]
+    assert all(len(row) == len(header) for row in rows)
+    return {name: [row[k] for row in rows] for k, name in enumerate(header)}
+
+
+def cli_csv(*args, output="-o", **more_outputs):
+    """The CSV files `capsubot ARGS` writes (it must exit 0): the columns of the file of
+    `output` (read_csv), and with more_outputs {name: option} also theirs, as a dict."""
+    with tempfile.TemporaryDirectory() as folder:
+        paths = {name: os.path.join(folder, name + ".csv") for name in ["main", *more_outputs]}
+        extra = [arg for name, option in more_outputs.items() for arg in (option, paths[name])]
+        status, _, err = run_cli(*args, output, paths["main"], *extra)
+        assert status == 0, err
+        files = {name: read_csv(path) for name, path in paths.items()}
+    return files if more_outputs else files["main"]
+
+
+def same_columns(columns, cells):
+    """The module's columns equal the CSV's cells, in the same order: numbers bit for bit as
+    Python's float() reads the text (an empty cell: NaN), names as the text."""
+    assert list(columns) == list(cells)
+    assert cells, "no columns"
+    for name, text in cells.items():
+        array = columns[name]
+        assert isinstance(array, np.ndarray) and len(array) == len(text), name
+        if array.dtype.kind in "iuf":
+            expected = np.array([float(cell) if cell else np.nan for cell in text])
+            assert np.array_equal(array.astype(float), expected, equal_nan=True), name
+        else:
+            assert array.dtype.kind == "U" and list(array) == text, name
+    return True
+
+
+def cli_error(*args):
+    """The one-line error of `capsubot ARGS` (it must fail), with the option names as the module's
+    arguments: "--reach-evaluations" -> "reach_evaluations", "--A" -> "A"."""
+    status, _, err = run_cli(*args)
+    assert status != 0
+    message = err.strip().split("\n")[-1].split(": error: ", 1)[1]
+    return re.sub(r"--([A-Za-z][A-Za-z0-9-]*)", lambda m: m.group(1).replace("-", "_"), message)
+
+
+def cli_flags(arguments):
+    """Keyword arguments as the command line's options: {"u_min": -1, "from_": 0} ->
+    ["--u-min", -1, "--from", 0]."""
+    return [item for name, value in arguments.items()
+            for item in ("--" + name.rstrip("_").replace("_", "-"), value)]

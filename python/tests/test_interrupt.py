@@ -1,7 +1,7 @@
 """Ctrl-C (SIGINT) stops the calls whose library computations ask an interrupt: the optimisers
 (P3 by multistart, P2 by an NLopt global algorithm, the reach search, the main job), Newton
-shooting (periodic), the check from rest of solve(stability=True) and design's from-rest
-search. Each call below runs for 15 s or more uninterrupted; a real SIGINT sent to the process
+shooting (periodic), the check from rest of solve(stability=True), design's from-rest
+search and the basin map. Each call below runs for 15 s or more uninterrupted; a real SIGINT sent to the process
 after 0.3 s must end it with KeyboardInterrupt within seconds, and the module must answer the
 next call as before. (test_limits.py covers the other long calls: simulate, attractors,
 design's one-impact search, orbits, trajectory.)"""
@@ -62,6 +62,10 @@ LONG_CALLS = {
     "solve_stability": (capsubot.solve, dict(PAPER, stability=True, from_rest_starts="600x600"),
                         dict(PAPER, stability=True, from_rest_starts="2x2"),
                         lambda r: r["from_rest"]["starts"] == 4),
+    # A basin map of 360 000 starts (200 + 100 periods each); its temporary folder goes too.
+    "basins": (capsubot.basins, dict(HARMONIC, alpha=0.2792869076315278, starts="600x600"),
+               dict(HARMONIC, alpha=0.2792869076315278, starts="2x2", transient=40, record=16),
+               lambda r: len(r["columns"]["x0"]) == 4),
     # The one-impact design takes 0.1 s: the SIGINT comes in the from-rest search.
     "design_from_rest": (capsubot.design,
                          dict(ROBOT, from_rest=True, reach_evaluations=100000,

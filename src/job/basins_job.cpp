@@ -10,14 +10,30 @@
 
 namespace capsubot {
 
-void BasinsJobOptions::Validate() const {
-  if (const auto* p = std::get_if<VelocityPlane>(&plane)) {
-    if (!(p->u_min < p->u_max)) {
-      throw std::invalid_argument(fmt::format(
-          "u_min = {} and u_max = {} are invalid: expected u_min < u_max", p->u_min, p->u_max));
-    }
+namespace {
+
+void CheckVelocityRange(const VelocityPlane& p) {
+  if (!(p.u_min < p.u_max)) {
+    throw std::invalid_argument(fmt::format(
+        "u_min = {} and u_max = {} are invalid: expected u_min < u_max", p.u_min, p.u_max));
   }
+}
+
+}  // namespace
+
+void BasinsJobOptions::Validate() const {
+  if (const auto* p = std::get_if<VelocityPlane>(&plane)) CheckVelocityRange(*p);
   map.Validate();
+}
+
+StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity) {
+  const bool x0_u0 = name == StartPlaneName(velocity);
+  if (!x0_u0 && name != StartPlaneName(RestPlane{})) {
+    throw std::invalid_argument(
+        fmt::format("plane = {} is invalid: expected x0-psi or x0-u0", name));
+  }
+  CheckVelocityRange(velocity);
+  return x0_u0 ? StartPlane(velocity) : StartPlane(RestPlane{});
 }
 
 const char* StartPlaneName(const StartPlane& plane) {

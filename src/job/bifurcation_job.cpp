@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/sweep/grid.hpp"
 
 namespace capsubot {
 namespace {
@@ -33,6 +34,27 @@ void WriteDiagram(const BifurcationDiagram& rows, const BifurcationOptions& diag
 }
 
 }  // namespace
+
+void SetBifurcationDirection(const std::string& name, BifurcationOptions& options) {
+  if (name != "up" && name != "down" && name != "both") {
+    throw std::invalid_argument(
+        fmt::format("direction = {} is invalid: expected up, down or both", name));
+  }
+  options.up = name != "down";
+  options.down = name != "up";
+}
+
+void SetBifurcationOver(const std::string& spec, BifurcationOptions& options) {
+  const GridAxis axis = ParseGridAxis(spec);
+  options.over = ParseRobotParameter(axis.name(), &options.over_harmonic);
+  if (axis.size() > kMaxOverValues) {
+    throw std::invalid_argument(
+        fmt::format("over = {} is invalid: {} values: expected at most {} values", spec,
+                    axis.size(), kMaxOverValues));
+  }
+  options.over_values.clear();
+  for (std::int64_t i = 0; i < axis.size(); ++i) options.over_values.push_back(axis.Value(i));
+}
 
 BifurcationJobPlan PlanBifurcationJob(const BifurcationJobOptions& options) {
   const BifurcationShardFiles& files = options.files;

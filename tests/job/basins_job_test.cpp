@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "attract_job_cases.hpp"
@@ -75,6 +76,18 @@ TEST(BasinsJob, BadPlaneOrMapIsRefusedNamingTheParameter) {
   o.plane = RestPlane{};
   o.map.starts.n_psi = 0;
   EXPECT_EQ(InvalidArgumentMessage([&] { RunBasinsJob(o); }).rfind("n_psi = 0 is invalid", 0), 0U);
+}
+
+TEST(BasinsJob, PlaneFromItsNameWithItsVelocityRangeChecked) {
+  VelocityPlane v;
+  v.psi = 1.0;
+  EXPECT_TRUE(std::holds_alternative<RestPlane>(StartPlaneNamed("x0-psi", v)));
+  EXPECT_EQ(std::get<VelocityPlane>(StartPlaneNamed("x0-u0", v)).psi, 1.0);
+  EXPECT_EQ(InvalidArgumentMessage([&] { StartPlaneNamed("x0-v0", v); }),
+            "plane = x0-v0 is invalid: expected x0-psi or x0-u0");
+  v.u_max = v.u_min;  // refused in the plane from rest too: never accepted unchecked
+  EXPECT_EQ(InvalidArgumentMessage([&] { StartPlaneNamed("x0-psi", v); }),
+            "u_min = -1 and u_max = -1 are invalid: expected u_min < u_max");
 }
 
 }  // namespace

@@ -138,5 +138,23 @@ TEST(BifurcationJob, RefusesBadOptionsNamingThem) {
             0U);
 }
 
+TEST(BifurcationJob, DirectionsAndSecondParameterFromTheirNames) {
+  BifurcationOptions o;
+  SetBifurcationDirection("down", o);
+  EXPECT_FALSE(o.up);
+  EXPECT_TRUE(o.down);
+  SetBifurcationDirection("both", o);
+  EXPECT_TRUE(o.up && o.down);
+  EXPECT_EQ(InvalidArgumentMessage([&] { SetBifurcationDirection("sideways", o); }),
+            "direction = sideways is invalid: expected up, down or both");
+  SetBifurcationOver("b2=0.1,0.3", o);
+  EXPECT_EQ(o.over, ModelParameter::ksin);
+  EXPECT_EQ(o.over_harmonic, 2);
+  EXPECT_EQ(o.over_values, (std::vector<double>{0.1, 0.3}));
+  // Refused from its size, before its values are held.
+  EXPECT_EQ(InvalidArgumentMessage([&] { SetBifurcationOver("e=0:1:200000", o); }),
+            "over = e=0:1:200000 is invalid: 200000 values: expected at most 100000 values");
+}
+
 }  // namespace
 }  // namespace capsubot

@@ -3,6 +3,7 @@
 // every start of a plane of starts, the map of attractors_job.hpp over the starts from rest
 // (x0-psi) or over starting positions and velocities (x0-u0).
 
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -27,6 +28,11 @@ using StartPlane = std::variant<RestPlane, VelocityPlane>;
 
 /// "x0-psi" or "x0-u0".
 const char* StartPlaneName(const StartPlane& plane);
+
+/// The plane called `name` ("x0-psi" or "x0-u0"), the latter with the starts of `velocity`.
+/// Throws std::invalid_argument for another name ("plane = ... is invalid") and for
+/// velocity.u_min >= velocity.u_max in either plane (a bad range is never accepted unchecked).
+StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity);
 
 struct BasinsJobOptions {
   /// The robot, the grid (n_x positions x n_psi phases or velocities), the motions and how

@@ -36,6 +36,16 @@ struct BifurcationJobOptions {
   void Validate() const;
 };
 
+/// The directions called `name`: "up", "down" or "both" (up, then down), into options.up and
+/// options.down. Throws std::invalid_argument "direction = ... is invalid" for another name.
+void SetBifurcationDirection(const std::string& name, BifurcationOptions& options);
+
+/// The second parameter of a study and its values from `spec`, NAME=lo:hi:n, NAME=lo:hi:n:log
+/// or NAME=v1,v2,... (the syntax of a sweep's grid axis, NAME a robot parameter), into
+/// options.over, over_harmonic and over_values. Throws std::invalid_argument for a bad spec and
+/// for more than kMaxOverValues values ("over = ... is invalid", checked before they are held).
+void SetBifurcationOver(const std::string& spec, BifurcationOptions& options);
+
 /// The diagram a job computes: its options checked, the robot's alpha and the diagram's
 /// options as they run. The blocks a distributed run's workers compute are
 /// BifurcationBlocks(robot.forcing, robot.params, robot.alpha, diagram).
