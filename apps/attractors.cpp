@@ -29,7 +29,7 @@ struct AttractorsCommandOptions {
 };
 
 int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
-  AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads, "capsubot attractors");
+  AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads);
   if (SplitsRun(opt.shard.shard) && opt.output.empty()) {
     throw std::invalid_argument(
         "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");

@@ -69,7 +69,7 @@ void Plot(const BasinsJobResult& r, const std::string& path) {
 
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   BasinsJobOptions o;
-  o.map = MapJobOptions(opt.robot, opt.starts, opt.threads, "capsubot basins");
+  o.map = MapJobOptions(opt.robot, opt.starts, opt.threads);
   o.plane = Plane(opt);
   RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
   o.map.run = MapRun(opt.shard, cmd, o.map.starts.Starts(), opt.output,

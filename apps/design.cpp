@@ -163,7 +163,7 @@ DesignGridMode GridMode(const DesignCliOptions& opt, const CLI::App& cmd,
   grid.output = opt.output;
   if (!opt.shard.empty()) std::tie(grid.shard, grid.shards) = ParseShard(opt.shard);
   grid.resume = opt.resume;
-  grid.threads = CapThreads(opt.from_rest.threads, "capsubot design");
+  grid.threads = opt.from_rest.threads;
   return grid;
 }
 

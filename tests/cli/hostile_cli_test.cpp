@@ -212,6 +212,18 @@ std::vector<Case> Cases() {
        0,
        "capsubot basins: note: --threads 100000 lowered to",
        {"b.csv"}},
+      {"OptimizeThreadsAreLoweredWithANote",
+       "optimize --problem reach --reach-seconds 1e-6 --from-rest-starts 2x2 --reach-starts 2x2 "
+       "--threads 1025",
+       0, "capsubot optimize: note: --threads 1025 lowered to", none},
+      {"DesignFromRestThreadsAreLoweredWithANote",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --from-rest --reach-seconds 1e-6 --from-rest-starts 2x2 --reach-starts 2x2 "
+       "--threads 1025",
+       0, "capsubot design: note: --threads 1025 lowered to", none},
+      {"NegativeThreadsAreRefused",
+       "attractors " + kRobot + " --starts 1x1 --transient 20 --record 20 --threads -1", 2,
+       "--threads = -1 is invalid: expected 1 <= threads (0: all cores)", none},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},
