@@ -1,6 +1,8 @@
 #include "cli.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -282,6 +284,22 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
           flag, what, what));
     }
   }
+}
+
+bool IsStandardOutput(const std::string& path) {
+  if (path == "-") return true;
+  struct stat file = {};
+  struct stat out = {};
+  return !path.empty() && ::stat(path.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+}
+
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json) {
+  if (!json || !IsStandardOutput(output)) return;
+  throw std::invalid_argument(fmt::format(
+      "{} {} with --json is invalid: both would be written to standard output, one after the "
+      "other: expected {} FILE, another file than standard output, or no {}",
+      option, output, option, option));
 }
 
 void RequireCheckpointSeconds(double seconds) {

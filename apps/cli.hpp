@@ -87,6 +87,15 @@ CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads,
                                   "worker threads (0: all cores); the output does not depend "
                                   "on it");
 
+/// Whether output path `path` is standard output: "-", or a path to the file, pipe or terminal
+/// standard output writes to (/dev/stdout, or the file it is redirected to).
+bool IsStandardOutput(const std::string& path);
+
+/// Refuses (std::invalid_argument) `output` of `option` ("-o") on standard output
+/// (IsStandardOutput) together with --json (`json`), which prints its object there too: the
+/// two would be mixed in one stream ("-o - with --json is invalid: ...").
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json);
+
 /// A size option given on the command line must lie in [lo, hi], checked before any work:
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
 void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
