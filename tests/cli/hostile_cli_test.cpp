@@ -129,6 +129,15 @@ std::vector<Case> Cases() {
       {"SolveTrajectoryThroughSymlink", kSolve + " --samples 3 --trajectory link.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
        [](const fs::path& d) { LinksKeptTargetWritten(d, "# capsubot "); }},
+      // -o of a command that prints one result: its JSON (or text) to the link's target.
+      {"DesignJsonThroughSymlinkChain",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --json -o chain.csv",
+       0, "", links, SymlinkSetup(), "", "",
+       [](const fs::path& d) {
+         LinksKeptTargetWritten(d, "{\"");
+         EXPECT_EQ(ReadFile(d.parent_path() / "stdout.txt"), "");
+       }},
       {"SimulateEventsThroughSymlinkChain", kSim + " --events chain.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
        [](const fs::path& d) { LinksKeptTargetWritten(d, "# capsubot "); }},
