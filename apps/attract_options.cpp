@@ -51,14 +51,14 @@ std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
 }
 
 AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
-                                   int threads, const char* who) {
+                                   int threads) {
   AttractorsJobOptions o;
   o.forcing = robot.forcing.Build();
   o.params = robot.params;
   o.alpha = robot.alpha;
   o.starts = ParseStartGrid("--starts", starts);
   o.attractor.motion = robot.motion;
-  o.attractor.threads = CapThreads(threads, who);
+  o.attractor.threads = threads;
   return o;
 }
 
@@ -103,12 +103,6 @@ StartStateSpec StartStateOptions::Spec() const {
     return options[i]->count() > 0 ? std::optional<double>(value) : std::nullopt;
   };
   return {part(0, state.x), part(1, state.u), part(2, state.v), part(3, state.psi)};
-}
-
-void AddThreadsOption(CLI::App& cmd, int& threads) {
-  cmd.add_option("--threads", threads,
-                 "worker threads (0: all cores); the output does not depend on it")
-      ->capture_default_str();
 }
 
 StartsProgress CountProgress(const char* what) {

@@ -38,19 +38,16 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& options, bool with_motion = tr
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
 
 /// The map job of `robot` (force, T0, e, alpha, motion options) over the grid `starts` (the
-/// option --starts) with `threads` worker threads (CapThreads: a note naming `who` when it
-/// lowers them). Throws std::invalid_argument for a bad grid or force.
+/// option --starts) with `threads` worker threads (as --threads gave them: AddThreadsOption).
+/// Throws std::invalid_argument for a bad grid or force.
 AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
-                                   int threads, const char* who);
+                                   int threads);
 
 /// "0.5,1" -> RestStart(0.5, 1) for option `name`; throws std::invalid_argument naming it.
 PhaseState ParseRestStart(const char* name, const std::string& text);
 
 /// The flags of the long-run options (MotionOptions' fields, threads): for WithFlagNames.
 const FlagNames& MotionFlagNames();
-
-/// Adds --threads (0: all cores).
-void AddThreadsOption(CLI::App& cmd, int& threads);
 
 /// The start state of a command given as --x0, --u0, --v0 and --psi (all four, or none when
 /// another option gives the start).

@@ -29,11 +29,12 @@ struct AttractorsCommandOptions {
 };
 
 int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
-  AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads, "capsubot attractors");
+  AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads);
   if (SplitsRun(opt.shard.shard) && opt.output.empty()) {
     throw std::invalid_argument(
         "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
   }
+  RequireOutputApartFromJson(opt.output, "-o", opt.json);
   o.run = MapRun(opt.shard, cmd, o.starts.Starts(), opt.output, {{"--json", opt.json}});
   Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts
   if (ranks.worker()) return ServeMap(ranks, AttractorsJobWork(o));

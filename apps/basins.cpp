@@ -69,9 +69,10 @@ void Plot(const BasinsJobResult& r, const std::string& path) {
 
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   BasinsJobOptions o;
-  o.map = MapJobOptions(opt.robot, opt.starts, opt.threads, "capsubot basins");
+  o.map = MapJobOptions(opt.robot, opt.starts, opt.threads);
   o.plane = Plane(opt);
   RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
+  RequireOutputApartFromJson(opt.output, "-o", opt.json);
   o.map.run = MapRun(opt.shard, cmd, o.map.starts.Starts(), opt.output,
                      {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});
   Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts

@@ -70,7 +70,6 @@ BifurcationJobOptions JobOptions(const BifurcationCommandOptions& opt, const CLI
   job.robot.alpha = opt.robot.alpha;
   BifurcationOptions& o = job.diagram;
   o = opt.diagram;
-  o.threads = CapThreads(o.threads, "capsubot bifurcation");
   o.param = ParseRobotParameter(opt.param, &o.harmonic);
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);

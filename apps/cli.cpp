@@ -1,6 +1,8 @@
 #include "cli.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -11,6 +13,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/force_spec.hpp"
@@ -283,6 +286,22 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
   }
 }
 
+bool IsStandardOutput(const std::string& path) {
+  if (path == "-") return true;
+  struct stat file = {};
+  struct stat out = {};
+  return !path.empty() && ::stat(path.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+}
+
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json) {
+  if (!json || !IsStandardOutput(output)) return;
+  throw std::invalid_argument(fmt::format(
+      "{} {} with --json is invalid: both would be written to standard output, one after the "
+      "other: expected {} FILE, another file than standard output, or no {}",
+      option, output, option, option));
+}
+
 void RequireCheckpointSeconds(double seconds) {
   if (!(seconds >= 0.0)) {
     throw std::invalid_argument(
@@ -311,16 +330,44 @@ CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi) {
       IntegerText(option->get_name(), lo, hi, fmt::format("in [{}, {}]", lo, hi)));
 }
 
-int CapThreads(int requested, const char* who) {
+namespace {
+
+// `requested` threads capped by capsubot::CapThreads, with a note (naming `who`) when lowered.
+int CapThreads(int requested, const std::string& who) {
   const int cap = capsubot::CapThreads(requested);
   if (cap == requested) return requested;
-  const int cores = MaxUsefulThreads() / kThreadsPerCore;
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (LaunchedRank() != 0) return cap;  // under mpirun: said once, by rank 0
   fmt::print(stderr,
              "{}: note: --threads {} lowered to {} ({} per core on {} cores: more only adds "
              "overhead)\n",
              who, requested, cap, kThreadsPerCore, cores);
   return cap;
+}
+
+}  // namespace
+
+CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads, const std::string& help) {
+  const std::string who = "capsubot " + cmd.get_name();
+  return cmd.add_option("--threads", threads, help)
+      ->capture_default_str()
+      ->transform(CLI::Validator(
+          [who](std::string& text) {
+            try {
+              const auto n = static_cast<int>(ParseInteger(text, "--threads", INT_MIN, INT_MAX));
+              if (n < 0) {
+                return fmt::format(
+                    "--threads = {} is invalid: expected 1 <= threads (0: all "
+                    "cores)",
+                    text);
+              }
+              text = std::to_string(CapThreads(n, who));
+              return std::string();
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+          },
+          "", kIntegerValidator));
 }
 
 bool OptionUse::UsedBy(const std::string& run) const {

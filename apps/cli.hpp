@@ -78,10 +78,23 @@ inline constexpr const char* kPhase = "PHASE";
 /// work), the range named in the message and shown in --help.
 CLI::Option* Bounded(CLI::Option* option, std::int64_t lo, std::int64_t hi);
 
-/// `requested` threads (0: all cores) capped at kThreadsPerCore x the cores (the library's
-/// capsubot::CapThreads, limits.hpp); a note on stderr (naming `who`) when it lowers the
-/// request.
-int CapThreads(int requested, const char* who);
+/// Adds --threads (worker threads, 0: all cores) to `cmd`, with `help`. The one rule of every
+/// command: a negative value is refused while parsing; a value above kThreadsPerCore x the
+/// cores (at most kMaxThreads: the library's capsubot::CapThreads, limits.hpp) is lowered to
+/// it with a note on stderr naming the command (said once under mpirun).
+CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads,
+                              const std::string& help =
+                                  "worker threads (0: all cores); the output does not depend "
+                                  "on it");
+
+/// Whether output path `path` is standard output: "-", or a path to the file, pipe or terminal
+/// standard output writes to (/dev/stdout, or the file it is redirected to).
+bool IsStandardOutput(const std::string& path);
+
+/// Refuses (std::invalid_argument) `output` of `option` ("-o") on standard output
+/// (IsStandardOutput) together with --json (`json`), which prints its object there too: the
+/// two would be mixed in one stream ("-o - with --json is invalid: ...").
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json);
 
 /// A size option given on the command line must lie in [lo, hi], checked before any work:
 /// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".

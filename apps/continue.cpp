@@ -51,6 +51,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   }
   job.on_stage = [](const std::string& stage) { ShowStage(stage); };
   job.Validate();
+  RequireOutputApartFromJson(opt.output, "-o", opt.json);
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const ContinueJobResult result = RunContinueJob(job);
   const text::CsvTable table = text::ContinueJobCsv(result);

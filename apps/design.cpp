@@ -31,6 +31,7 @@
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -57,7 +58,7 @@ const std::vector<OptionUse> kOptionUses = {
     {"--reach-seconds", {"from-rest"}},
     {"--threads", {"from-rest", "grid"}},
     {"--json", {"", "from-rest"}},
-    {"--output", {"grid"}},
+    {"--output", {"", "from-rest", "grid"}},
     {"--shard", {"grid"}},
     {"--resume", {"grid"}},
     {"--band-levels", {"", "from-rest"}},
@@ -163,7 +164,7 @@ DesignGridMode GridMode(const DesignCliOptions& opt, const CLI::App& cmd,
   grid.output = opt.output;
   if (!opt.shard.empty()) std::tie(grid.shard, grid.shards) = ParseShard(opt.shard);
   grid.resume = opt.resume;
-  grid.threads = CapThreads(opt.from_rest.threads, "capsubot design");
+  grid.threads = opt.from_rest.threads;
   return grid;
 }
 
@@ -222,15 +223,16 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   one.band_levels = opt.band_levels;
   ShowProgress(options, one);
   options.mode = std::move(one);
+  CheckResultOutput(opt.output);
   const DesignJobResult r = RunDesignJob(options);
   if (opt.json) {
     nlohmann::json j = json::DesignJobJson(r);
     j["provenance"] = WithSettings(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))), cmd,
                                    opt.config, settings)
                           .Json();
-    fmt::print("{}\n", j.dump());
+    WriteResult(opt.output, j.dump() + "\n");
   } else {
-    fmt::print("{}", text::DesignJobText(r));
+    WriteResult(opt.output, text::DesignJobText(r));
   }
   return 0;
 }
@@ -278,8 +280,9 @@ Command AddDesignCommand(CLI::App& app) {
                   "rho-max (inf: no stability requirement); to the CSV file -o")
       ->type_name("NAME=SPEC");
   cmd->add_option("-o,--output", opt->output,
-                  "CSV file of --grid (built as FILE.partial with a checkpoint, renamed at the "
-                  "end; - for standard output)")
+                  "the design (with --json its JSON object) written to FILE instead of standard "
+                  "output, atomically; with --grid its CSV file (built as FILE.partial with a "
+                  "checkpoint, renamed at the end); - for standard output")
       ->type_name("FILE");
   cmd->add_option("--shard", opt->shard,
                   "with --grid: compute only shard K of N (0 <= K < N), the points p with "

@@ -124,6 +124,12 @@ int main(int argc, char** argv) {
   // After the commands are added, which would take it too (and print only their own help).
   app.set_help_all_flag("--help-all", "Print the help of every command and exit");
   UseStrictValues(app);
+  // A bare `capsubot` asks what the program does: the help with the list of commands, as
+  // --help, exit status 0 (nothing was asked that could be wrong).
+  if (argc <= 1) {
+    fmt::print("{}", app.help());
+    return CheckStdout("capsubot", 0);
+  }
   std::vector<std::string> args = ReadHelpCommand(std::vector<std::string>(argv + 1, argv + argc));
   if (!args.empty()) {
     if (const auto unknown = UnknownCommand(app, args.front()))

@@ -249,6 +249,9 @@ int Run(const OptimizeCliOptions& opt) {
   job.Validate();  // the options of the work to come, checked before any of it starts
   RequireDistinctOutputs(
       {{opt.output, "-o"}, {opt.force_csv, "--force-csv"}, {opt.from_rest_csv, "--from-rest-csv"}});
+  RequireOutputApartFromJson(opt.output, "-o", opt.json);
+  RequireOutputApartFromJson(opt.force_csv, "--force-csv", opt.json);
+  RequireOutputApartFromJson(opt.from_rest_csv, "--from-rest-csv", opt.json);
   const auto json_file = OpenIfAsked(opt.output, "-o");
   const auto force_csv = OpenIfAsked(opt.force_csv, "--force-csv");
   const auto from_rest_csv = OpenIfAsked(opt.from_rest_csv, "--from-rest-csv");

@@ -12,6 +12,7 @@
 #include "help_format.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -20,19 +21,21 @@ struct OrbitsOptions {
   ForcingOptions forcing;
   OrbitsJobOptions job;
   bool json = false;
+  std::string output;  // -o: the text or JSON printed; empty: standard output
 };
 
 int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   opt.job.params.Validate();
   opt.job.forcing = opt.forcing.Build(false);
+  CheckResultOutput(opt.output);
   const OrbitsJobResult result = RunOrbitsJob(opt.job);
   if (!opt.json) {
-    fmt::print("{}", text::OrbitsJobText(result, "--max-evaluations"));
+    WriteResult(opt.output, text::OrbitsJobText(result, "--max-evaluations"));
     return 0;
   }
   nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
   AddProvenanceJson(j, cmd);
-  fmt::print("{}\n", j.dump());
+  WriteResult(opt.output, j.dump() + "\n");
   if (!result.complete) {
     fmt::print(stderr, "capsubot orbits: note: {}\n",
                text::OrbitsIncompleteNote("--max-evaluations"));
@@ -64,6 +67,7 @@ Command AddOrbitsCommand(CLI::App& app) {
                 "phi0, with the keys of `solve --stability --json` without from_rest, and "
                 "complete: false when the search hit its work bound and orbits may be missing; a "
                 "note on stderr then says so) and provenance");
+  AddResultOutputOption(*cmd, opt->output, "the orbits");
   SetExamples(*cmd, {{"every one-impact orbit of the robot with mass ratio 0.28, none "
                       "missed",
                       "orbits --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --alpha 0.28"}});

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -24,6 +25,7 @@ struct PeriodicCommandOptions {
   std::string from_rest;
   int transient = 0;
   bool json = false;
+  std::string output;  // -o: the text or JSON printed; empty: standard output
   CLI::Option* transient_option = nullptr;
 };
 
@@ -54,13 +56,14 @@ int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {
   o.alpha = opt.robot.alpha;
   o.start = Start(opt);
   o.shooting = opt.shooting;
+  CheckResultOutput(opt.output);
   const PeriodicJobResult r = RunPeriodicJob(o);
   if (opt.json) {
     nlohmann::json j = json::PeriodicJobJson(r);
     AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
+    WriteResult(opt.output, j.dump() + "\n");
   } else {
-    fmt::print("{}", text::PeriodicJobText(r));
+    WriteResult(opt.output, text::PeriodicJobText(r));
   }
   return 0;
 }
@@ -98,6 +101,7 @@ Command AddPeriodicCommand(CLI::App& app) {
                 "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
                 "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
                 "distance_to_unit_circle, residual, iterations, provenance");
+  AddResultOutputOption(*cmd, opt->output, "the motion");
   SetExamples(*cmd, {{"that motion found exactly by Newton's method from the start at "
                       "rest x0 = 0.5, psi = 1",
                       "periodic --A 0.34063197373861814 --c 0.06410131873607934 "

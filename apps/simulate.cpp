@@ -18,6 +18,7 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -33,6 +34,7 @@ struct SimulateOptions {
   bool json = false;
   std::string events;
   std::string trajectory;
+  std::string output;  // -o: the text or JSON printed; empty: standard output
   int samples_per_period = static_cast<int>(SimulateJobOptions{}.samples_per_period);
   CLI::Option* alpha_option = nullptr;
   CLI::Option* x0_option = nullptr;
@@ -126,7 +128,9 @@ int Run(const SimulateOptions& opt, const CLI::App& cmd) {
                           "--samples-per-period", "--transient + --periods");
   }
   o.Validate();
-  RequireDistinctOutputs({{opt.events, "--events"}, {opt.trajectory, "--trajectory"}});
+  RequireDistinctOutputs(
+      {{opt.events, "--events"}, {opt.trajectory, "--trajectory"}, {opt.output, "-o"}});
+  CheckResultOutput(opt.output);
   // Each file starts with its provenance: the events do not depend on the trajectory's grid.
   std::unique_ptr<AtomicFile> events_file, trajectory_file;
   if (!opt.events.empty()) {
@@ -150,9 +154,9 @@ int Run(const SimulateOptions& opt, const CLI::App& cmd) {
   if (opt.json) {
     nlohmann::json j = json::SimulateJobJson(r);
     AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
+    WriteResult(opt.output, j.dump() + "\n");
   } else {
-    fmt::print("{}", text::SimulateJobText(r));
+    WriteResult(opt.output, text::SimulateJobText(r));
   }
   return 0;
 }
@@ -202,6 +206,7 @@ Command AddSimulateCommand(CLI::App& app) {
                 "friction_loss, impact_loss}; alpha; transient (the same figures over the "
                 "transient, with --transient); orbit (the analytic orbit, with --from-orbit); "
                 "provenance");
+  AddResultOutputOption(*cmd, opt->output, "the run's summary");
   cmd->add_option("--events", opt->events,
                   "write every event to this CSV file: phase, kind, x, u, v, y (state right "
                   "after the event), u_before, v_before, mode")

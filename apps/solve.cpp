@@ -14,6 +14,7 @@
 #include "from_rest_report.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -24,6 +25,7 @@ struct SolveOptions {
   bool json = false;
   bool stability = false;
   std::string trajectory;
+  std::string output;  // -o: the text or JSON printed; empty: standard output
   int samples = 1001;
   FromRestCliOptions from_rest;  // with --stability: the orbit checked from rest
 };
@@ -52,6 +54,8 @@ int Run(const SolveOptions& opt, const CLI::App& cmd) {
   const FromRestOptions from_rest = opt.from_rest.Check();  // bad grids before any work
   o.forcing = opt.forcing.Build();
   if (opt.stability) o.stability = from_rest;
+  RequireDistinctOutputs({{opt.output, "-o"}, {opt.trajectory, "--trajectory"}});
+  CheckResultOutput(opt.output);
   const SolveJobResult r = RunSolveJob(o);
   const Orbit& orbit = r.solution.orbit;
   if (!opt.trajectory.empty()) {
@@ -68,9 +72,9 @@ int Run(const SolveOptions& opt, const CLI::App& cmd) {
     AddProvenanceJson(j, cmd,
                       opt.stability ? std::vector<std::string>{}
                                     : std::vector<std::string>{"--from-rest-starts"});
-    fmt::print("{}\n", j.dump());
+    WriteResult(opt.output, j.dump() + "\n");
   } else {
-    fmt::print("{}", text::SolveJobText(r));
+    WriteResult(opt.output, text::SolveJobText(r));
   }
   return 0;
 }
@@ -109,6 +113,7 @@ Command AddSolveCommand(CLI::App& app) {
           kMaxTrajectoryRows)
       ->capture_default_str()
       ->needs(trajectory);
+  AddResultOutputOption(*cmd, opt->output, "the orbit");
   SetExamples(*cmd, {{"the paper's worked example: c = A = T0/2 at the paper's impact "
                       "phase (not a valid orbit)",
                       "solve --A 0.5 --c 0.5 --phi0 -2.944899971002"},

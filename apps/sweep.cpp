@@ -311,7 +311,6 @@ SweepJobOptions JobOptions(SweepCliOptions& opt, const CLI::App& cmd) {
   if (!opt.no_header_comment) {
     job.file.comments.push_back(ProvenanceLine(cmd, job.grid, unread, reader));
   }
-  job.file.threads = CapThreads(job.file.threads, "capsubot sweep");
   return job;
 }
 
@@ -464,10 +463,9 @@ void AddRunOptions(CLI::App* cmd, SweepCliOptions& opt) {
                   "SHARD_FILES...` joins the N files into the file of the whole sweep; 0/1 "
                   "writes the file of the whole sweep (docs/cluster.md)")
       ->type_name("K/N");
-  cmd->add_option("--threads", opt.file.threads,
-                  "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
-                  "more than 4 per core is lowered to that, with a note")
-      ->capture_default_str();
+  AddThreadsOption(*cmd, opt.file.threads,
+                   "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
+                   "more than 4 per core is lowered to that, with a note");
   AddProgressOptions(*cmd);
   SetExamples(*cmd, {{"the orbit and its stability at 4 phases x 2 restitutions, to "
                       "standard output",

@@ -21,6 +21,7 @@
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/model/limits.hpp"
+#include "capsubot/numerics/grid_value.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
 
@@ -40,10 +41,7 @@ RobotModel At(const RobotModel& base, ModelParameter parameter, int harmonic, do
   return r;
 }
 
-double Value(const BifurcationOptions& o, int i) {
-  if (i == o.steps - 1) return o.to;
-  return o.from + (o.to - o.from) * static_cast<double>(i) / (o.steps - 1);
-}
+double Value(const BifurcationOptions& o, int i) { return GridValue(o.from, o.to, o.steps, i); }
 
 // Counts the parameter values simulated by the parts and reports them in increasing order: a
 // part computed by this process's threads ticks each value as it is done, one computed by

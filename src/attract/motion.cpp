@@ -12,6 +12,7 @@
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
+#include "capsubot/numerics/grid_value.hpp"
 
 namespace capsubot {
 namespace {
@@ -370,7 +371,9 @@ PhaseState RestStart(double x0, double psi) {
 }
 
 PhaseState GridStart(int i, int j, int n_x, int n_psi) {
-  return RestStart((i + 0.5) / n_x, kTau * j / n_psi);
+  // Cell centres: the odd values of the grid of 2 n_x + 1 values over [0, 1].
+  return RestStart(GridValue(0.0, 1.0, 2 * std::int64_t{n_x} + 1, 2 * std::int64_t{i} + 1),
+                   GridValue(0.0, kTau, std::int64_t{n_psi} + 1, j));
 }
 
 }  // namespace capsubot

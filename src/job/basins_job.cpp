@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 
+#include "capsubot/numerics/grid_value.hpp"
 #include "start_map_run.hpp"
 
 namespace capsubot {
@@ -51,7 +52,8 @@ std::vector<PhaseState> BasinStarts(const BasinsJobOptions& options) {
       PhaseState& s = starts[static_cast<std::size_t>(i) * static_cast<std::size_t>(ny) +
                              static_cast<std::size_t>(j)];
       s = RestStart((i + 0.5) / nx, p->psi);
-      s.u = p->u_min + (j + 0.5) * (p->u_max - p->u_min) / ny;
+      // Cell centres: the odd values of the grid of 2 ny + 1 values over [u_min, u_max].
+      s.u = GridValue(p->u_min, p->u_max, 2 * std::int64_t{ny} + 1, 2 * std::int64_t{j} + 1);
     }
   }
   return starts;

@@ -11,7 +11,7 @@ namespace capsubot {
 
 int MaxUsefulThreads() {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return kThreadsPerCore * cores;
+  return std::min(kMaxThreads, kThreadsPerCore * cores);
 }
 
 int CapThreads(int requested) { return std::min(requested, MaxUsefulThreads()); }

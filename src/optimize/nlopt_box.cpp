@@ -141,6 +141,8 @@ BoxSearchResult SearchBox(const BoxSearch& search) {
   for (const BoxPoint& from : best) {
     stage("local polish", search.local, search.local_evaluations, from.y);
   }
+  // Out of time before its first stage: the search evaluated nothing, and says so.
+  if (!ran && out.max_time) out.status = OptimizeStatus::kMaxTime;
   out.candidates =
       BestDistinctPoints(search.seen(), search.infeasible, search.candidates, search.same);
   return out;

@@ -10,6 +10,10 @@
 namespace capsubot::detail {
 namespace {
 
+// Smallest factor of the separation constraint -e u (e > 0): the restitutions of the studies
+// (e >= 1e-3) keep e itself; a smaller one would leave the constraint far below the others.
+constexpr double kSeparationScaleFloor = 1e-3;
+
 bool ClearanceRequired(const Params& p) { return p.margin > 0.0 || p.margin_stroke > 0.0; }
 
 // The validity condition that row i checks (kCount for the problem's own requirements).
@@ -92,7 +96,12 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double
     ev.g[kClearanceRightIndex] = interior_max ? (v.x_max - (1.0 - v.clearance)) / length : -1.0;
     ev.g[kAlphaLowIndex] = -o.alpha;
     ev.g[kAlphaHighIndex] = o.alpha - 1.0;
-    ev.g[kSeparationIndex] = (o.e > 0.0 ? -o.e * o.u : o.ddx(0.0)) / p.T0;
+    // For e > 0 the separation e u > 0 is u > 0, whatever positive factor scales it: the
+    // factor e is floored at kSeparationScaleFloor, so that the constraint never falls below
+    // what COBYLA's arithmetic resolves (-e u at e = 1e-300: its squares underflow and its
+    // steps became NaN).
+    ev.g[kSeparationIndex] =
+        (o.e > 0.0 ? -std::max(o.e, kSeparationScaleFloor) * o.u : o.ddx(0.0)) / p.T0;
     if (stability_required) {
       const Stability st = ComputeStability(o);
       ev.rho = st.spectral_radius;

@@ -309,14 +309,28 @@ std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& star
   return y0;
 }
 
+// Whether box points `a` and `b` are one drive (every coordinate within kSamePoint).
+bool SamePoint(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!(std::abs(a[i] - b[i]) <= kSamePoint)) return false;
+  }
+  return true;
+}
+
 // The best search points and the starting drives, simulated again with the full settings (the
-// robust gait's check from rest is reused when its alpha is the robot's).
+// robust gait's check from rest is reused when its alpha is the robot's). A search point that
+// is a starting drive is that drive, re-checked once, as itself.
 std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
                                const std::vector<Point>& points,
                                const std::vector<DriveSeed>& starts, bool seed_starts,
                                const ReachSeed& seed) {
   std::vector<Candidate> candidates;
   for (const Point& p : points) {
+    if (std::any_of(starts.begin(), starts.end(),
+                    [&](const DriveSeed& d) { return SamePoint(p.y, PointOf(ctx, d)); })) {
+      continue;
+    }
     const Params params = ctx.ParamsAt(p.y.data());
     const Forcing f = ctx.ForceAt(p.y.data());
     const double alpha = ctx.AlphaAt(p.y.data());
@@ -340,9 +354,10 @@ std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
   return candidates;
 }
 
-// The winner into the result, with its message.
+// The winner into the result, with its message (`searched`: whether the search evaluated any
+// drive besides the starting ones).
 void Report(const Candidate& best, const Context& ctx, const ReachOptions& options,
-            const std::string& message, ReachResult& out) {
+            const std::string& message, bool searched, ReachResult& out) {
   out.forcing = best.forcing;
   out.max_abs_force = out.forcing.MaxAbs();
   out.force_bound = ctx.BoundAt(best.params.T0);
@@ -362,7 +377,10 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
           ? fmt::format(" at T0 = {:.6g}: speed {:.6g} sqrt(mu g L)", out.T0, out.physical_speed)
           : std::string(),
       SeedComparison(out, seed_v),
-      out.status == OptimizeStatus::kMaxTime ? "; the search stopped at its time limit" : "",
+      out.status != OptimizeStatus::kMaxTime ? ""
+      : searched                             ? "; the search stopped at its time limit"
+                 : "; the time limit came before the search evaluated any drive: only the "
+                   "starting drives were compared",
       out.robust_to_settings ? ""
                              : "; WARNING: no candidate keeps its mean velocity under other "
                                "numerical settings (see the spread)",
@@ -521,14 +539,16 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   const std::vector<double> y0 = ScoreStarts(ctx, starts, seed_starts, lower, upper);
 
   const auto search_start = std::chrono::steady_clock::now();
+  const int scored = ctx.evaluations;
   const detail::BoxSearchResult found = Search(ctx, options, lower, upper, y0);
+  const bool searched = ctx.evaluations > scored;
   out.search_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
   out.algorithm = options.global_algorithm + "+" + options.local_algorithm;
 
   std::vector<Candidate> candidates =
       Recheck(ctx, options, found.candidates, starts, seed_starts, out.seed);
-  if (seed_starts) candidates[found.candidates.size()].is_seed = true;
+  if (seed_starts) candidates[candidates.size() - starts.size()].is_seed = true;
   out.evaluations = ctx.evaluations;
   out.rejected_evaluations = ctx.rejected_evaluations;
   const Candidate* best = Winner(candidates, ctx, options, out);
@@ -543,7 +563,7 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
   }
   out.status =
       found.status == OptimizeStatus::kMaxTime ? OptimizeStatus::kMaxTime : OptimizeStatus::kOk;
-  Report(*best, ctx, options, found.message, out);
+  Report(*best, ctx, options, found.message, searched, out);
   return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/forcing.hpp"
+#include "capsubot/numerics/grid_value.hpp"
 
 namespace capsubot {
 namespace {
@@ -57,20 +58,13 @@ std::int64_t GridValues::size() const {
 
 double GridValues::Value(std::int64_t i) const {
   if (spacing == GridSpacing::kList) return values[static_cast<std::size_t>(i)];
+  if (spacing == GridSpacing::kLinear) return GridValue(lo, hi, n, i);
   if (n <= 1 || i <= 0) return lo;
   if (i >= n - 1) return hi;
+  // Equal ratios, through decimal logarithms: decades stay exact (1e-3:1:4:log).
   const double m = static_cast<double>(n - 1), t = static_cast<double>(i);
-  double value = 0.0;
-  if (spacing == GridSpacing::kLog) {
-    // Equal ratios, through decimal logarithms: decades stay exact (1e-3:1:4:log).
-    const double l0 = std::log10(lo), l1 = std::log10(hi);
-    value = std::pow(10.0, (l0 * (m - t) + l1 * t) / m);
-  } else {
-    // Weighted mean of the ends: symmetric in lo and hi, and round decimals stay round
-    // (0.05:0.95:19 gives 0.1, not 0.09999999999999999).
-    value = (lo * (m - t) + hi * t) / m;
-  }
-  // Rounding must not leave [lo, hi] (0.1:0.1:7, or e = 1 at a bound of the domain).
+  const double value = std::pow(10.0, (std::log10(lo) * (m - t) + std::log10(hi) * t) / m);
+  // Rounding must not leave [lo, hi] (e = 1 at a bound of the domain).
   return std::clamp(value, std::min(lo, hi), std::max(lo, hi));
 }
 

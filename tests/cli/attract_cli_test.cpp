@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "test_utils.hpp"
 
@@ -214,6 +216,25 @@ TEST(BifurcationCli, StepsAFourierCoefficientAndNamesOneTheForceDoesNotHave) {
             "capsubot bifurcation: error: parameter = a3 is invalid for this force: expected a_k "
             "or b_k with 1 <= k <= K = 2, its harmonics\n");
   EXPECT_FALSE(std::ifstream(bad).good());
+}
+
+// The values stepped are the decimals asked for: 0.1 + 0.4 x 2/4 is 0.30000000000000004 in
+// doubles, the grid's middle value is 0.3 (capsubot::GridValue, the one rule of every grid).
+TEST(BifurcationCli, SteppedValuesAreTheDecimalsAsked) {
+  const std::string summary = testing::TempPath("bifurcation_values_summary.csv");
+  const std::string impacts = testing::TempPath("bifurcation_values.csv");
+  const auto r = RunCli("bifurcation " + kSmallOrbit +
+                        " --param T0 --from 0.1 --to 0.5 --steps 5 --direction up --transient 20 "
+                        "--record 20 --no-analytic -o " +
+                        impacts + " --summary " + summary);
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::vector<std::string> values;
+  for (const std::string& line : testing::ReadCsv(summary).rows) {
+    values.push_back(line.substr(0, line.find(',')));
+  }
+  ASSERT_FALSE(values.empty());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  EXPECT_EQ(values, (std::vector<std::string>{"0.1", "0.2", "0.3", "0.4", "0.5"}));
 }
 
 }  // namespace

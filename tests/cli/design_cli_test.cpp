@@ -433,13 +433,13 @@ std::vector<BadCase> BadCases() {
       {"grid_json", "--grid m2=0.1:0.3:5 --json -o x.csv" + cfg,
        "--json is invalid with --grid: expected --json only with one design (no --from-rest, "
        "no --grid) or --from-rest"},
+      // -o of one design: its text or JSON, to a file that can be written.
+      {"output_of_one_design_unwritable", "-o /no/such/dir/d.json" + cfg,
+       "-o /no/such/dir/d.json cannot be written: No such file or directory"},
       // Options of another run would be silently ignored.
       {"reach_without_from_rest", "--reach-starts 2x2" + cfg,
        "--reach-starts is invalid with one design (no --from-rest, no --grid): expected "
        "--reach-starts only with --from-rest"},
-      {"output_without_grid", "-o x.csv" + cfg,
-       "--output is invalid with one design (no --from-rest, no --grid): expected --output only "
-       "with --grid"},
       {"from_rest_starts_with_grid", "--grid m2=0.1:0.3:5 --from-rest-starts 2x2 -o x.csv" + cfg,
        "--from-rest-starts is invalid with --grid: expected --from-rest-starts only with "
        "--from-rest"},

@@ -54,6 +54,17 @@ const HelpCase kHelpCases[] = {
      "\"problem\":\"phase\""},
 };
 
+// A bare `capsubot` (no arguments) prints the help with the list of commands, exit status 0,
+// nothing on stderr: the same bytes as `capsubot --help`.
+TEST(HelpCli, BareCommandPrintsTheListOfCommands) {
+  const auto bare = RunCli("2>&1");
+  const auto help = RunCli("--help");
+  EXPECT_EQ(bare.status, 0) << bare.out;
+  EXPECT_EQ(bare.out, help.out);
+  EXPECT_NE(bare.out.find("Subcommands:"), std::string::npos) << bare.out;
+  EXPECT_NE(bare.out.find("  sweep "), std::string::npos) << bare.out;
+}
+
 // Phases in the syntax of the grids: pi multiples give exactly what their decimal value gives.
 TEST(PhaseSyntax, PiMultiplesEqualTheirDecimalValue) {
   const auto pi = testing::RunCli("solve --A 0.5 --c 0.5 --phi0 -pi/2 --json");

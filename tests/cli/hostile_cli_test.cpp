@@ -129,6 +129,15 @@ std::vector<Case> Cases() {
       {"SolveTrajectoryThroughSymlink", kSolve + " --samples 3 --trajectory link.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
        [](const fs::path& d) { LinksKeptTargetWritten(d, "# capsubot "); }},
+      // -o of a command that prints one result: its JSON (or text) to the link's target.
+      {"DesignJsonThroughSymlinkChain",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --json -o chain.csv",
+       0, "", links, SymlinkSetup(), "", "",
+       [](const fs::path& d) {
+         LinksKeptTargetWritten(d, "{\"");
+         EXPECT_EQ(ReadFile(d.parent_path() / "stdout.txt"), "");
+       }},
       {"SimulateEventsThroughSymlinkChain", kSim + " --events chain.csv", 0, "", links,
        SymlinkSetup(), "/dev/null", "",
        [](const fs::path& d) { LinksKeptTargetWritten(d, "# capsubot "); }},
@@ -212,6 +221,42 @@ std::vector<Case> Cases() {
        0,
        "capsubot basins: note: --threads 100000 lowered to",
        {"b.csv"}},
+      {"OptimizeThreadsAreLoweredWithANote",
+       "optimize --problem reach --reach-seconds 1e-6 --from-rest-starts 2x2 --reach-starts 2x2 "
+       "--threads 1025",
+       0, "capsubot optimize: note: --threads 1025 lowered to", none},
+      {"DesignFromRestThreadsAreLoweredWithANote",
+       "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --force-amplitude 0.5 --force-bias 0.1 "
+       "--frequency 20 --from-rest --reach-seconds 1e-6 --from-rest-starts 2x2 --reach-starts 2x2 "
+       "--threads 1025",
+       0, "capsubot design: note: --threads 1025 lowered to", none},
+      {"NegativeThreadsAreRefused",
+       "attractors " + kRobot + " --starts 1x1 --transient 20 --record 20 --threads -1", 2,
+       "--threads = -1 is invalid: expected 1 <= threads (0: all cores)", none},
+      // Standard output holds one output: a file given as -o there and the JSON of --json would
+      // be mixed in it (by "-", by /dev/stdout, or by the file standard output is sent to).
+      {"ContinueDashOutputWithJson", kContinue + " -o - --json", 2,
+       "-o - with --json is invalid: both would be written to standard output, one after the "
+       "other: expected -o FILE, another file than standard output, or no -o",
+       none},
+      {"AttractorsDashOutputWithJson",
+       "attractors " + kRobot + " --starts 1x1 --transient 20 --record 20 -o - --json", 2,
+       "-o - with --json is invalid", none},
+      {"BasinsDevStdoutWithJson",
+       "basins " + kRobot + " --starts 1x1 --transient 20 --record 20 -o /dev/stdout --json", 2,
+       "-o /dev/stdout with --json is invalid", none},
+      {"OptimizeOutputIsStdoutsFileWithJson",
+       "optimize --problem phase --A 0.5 --c 0.5 -o o.json --json",
+       2,
+       "-o o.json with --json is invalid: both would be written to standard output",
+       {"o.json"},
+       "",
+       "o.json",
+       "",
+       [](const fs::path& d) { EXPECT_EQ(ReadFile(d / "o.json"), ""); }},
+      {"OptimizeForceCsvDashWithJson",
+       "optimize --problem phase --A 0.5 --c 0.5 --force-csv - --json", 2,
+       "--force-csv - with --json is invalid", none},
       // An empty value is refused, never read as an absent option.
       {"EmptyShardIsRefused", kSweep + " --shard '' -o out.csv", 2,
        "--shard = '' is invalid: expected a value", none},

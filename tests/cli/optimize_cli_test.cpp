@@ -135,6 +135,28 @@ TEST(OptimizeCli, ReachJsonHasEveryDocumentedKey) {
   EXPECT_LE(j["A"].get<double>() + j["c"].get<double>(), 1.0 + 1e-12);
 }
 
+// A time limit reached before the search evaluated anything of its own: the status says the
+// limit stopped it, the message that only the starting drives were compared, and the seed
+// (the first of them, re-checked as itself) wins; the text says the same.
+TEST(OptimizeCli, ReachOutOfTimeBeforeItsFirstEvaluationSaysSo) {
+  const std::string args = "optimize --problem reach --reach-seconds 1e-6" + kQuickReach;
+  const auto r = RunCli(args + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "max_time");
+  EXPECT_NE(j["message"].get<std::string>().find(
+                "the time limit came before the search evaluated any drive: only the starting "
+                "drives were compared"),
+            std::string::npos)
+      << j["message"];
+  EXPECT_EQ(j["seed_won"], true);
+  EXPECT_EQ(j["mean_velocity"], j["seed"]["mean_velocity_from_rest"]);
+  const auto text = RunCli(args);
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_NE(text.out.find("max_time"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("before the search evaluated any drive"), std::string::npos) << text.out;
+}
+
 TEST(OptimizeCli, ReachWithHarmonicsReportsTheDriveAndItsLadder) {
   const auto r = RunCli(
       "optimize --problem reach --harmonics 2 --json --drive-evaluations 12 --drive-polishes 2 "

@@ -182,6 +182,30 @@ TEST(SweepCli, WritesTheCsvQuietlyWhenStderrIsNotATerminal) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
 }
 
+// The grid's values are the decimals asked for, in shortest round-trip form: the middle of
+// -2.8:-2.4:3 is -2.6, not the -2.5999999999999996 of (-2.8 + -2.4)/2 in doubles.
+TEST(SweepCli, GridValuesAreTheDecimalsAsked) {
+  TempDir dir;
+  const Outcome r =
+      RunCli("sweep --grid phi0=-2.8:-2.4:3 --grid c=0.1:0.5:5 --A 0.5 -o " + dir.File("a.csv"),
+             dir.File("log"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::istringstream csv(ReadFile(dir.File("a.csv")));
+  std::string line;
+  std::vector<std::string> phi0, c;
+  std::getline(csv, line);  // the provenance comment
+  std::getline(csv, line);
+  ASSERT_EQ(line.rfind("phi0,c,", 0), 0U) << line;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> cells = Cells(line);
+    ASSERT_GE(cells.size(), 2U) << line;
+    if (std::find(phi0.begin(), phi0.end(), cells[0]) == phi0.end()) phi0.push_back(cells[0]);
+    if (std::find(c.begin(), c.end(), cells[1]) == c.end()) c.push_back(cells[1]);
+  }
+  EXPECT_EQ(phi0, (std::vector<std::string>{"-2.8", "-2.6", "-2.4"}));
+  EXPECT_EQ(c, (std::vector<std::string>{"0.1", "0.2", "0.3", "0.4", "0.5"}));
+}
+
 TEST(SweepCli, DashWritesTheSameCsvToStandardOutput) {
   TempDir dir;
   const std::string args = "sweep --grid phi0=-pi:pi:7 --grid c=0.1:0.5:3 --A 0.5";

@@ -173,6 +173,28 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
   EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny).validity.valid());
 }
 
+TEST(OptimizeForcing, ATinyRestitutionGivesTheAnswerOfASmallOne) {
+  // The robust problem of `capsubot optimize --problem forcing` at e = 1e-300 (once NaN steps
+  // of COBYLA, thrown as "A = -nan": the separation constraint -e u was below what its
+  // arithmetic resolves) down to e = 1e-20 answers as at e = 1e-6: at T0 = 1 no valid
+  // one-impact gait is left as e -> 0 (the valid ones need e of about 0.01 there), and the
+  // nearest point breaks the same conditions.
+  ForcingDesignOptions o;
+  o.gait.rho_max = 0.9;
+  const OptimizeResult small = OptimizeForcing(Params{1.0, 1e-6, 0.0, 0.02, 0.02}, o);
+  ASSERT_EQ(small.status, OptimizeStatus::kNoValidOrbit) << small.message;
+  ASSERT_NE(small.solution.validity.violations, 0U);
+  for (const double e : {1e-300, 1e-200, 1e-20}) {
+    const Params params{1.0, e, 0.0, 0.02, 0.02};
+    const OptimizeResult tiny = OptimizeForcing(params, o);
+    EXPECT_EQ(tiny.status, small.status) << "e = " << e << ": " << tiny.message;
+    const Forcing& f = tiny.solution.orbit.forcing;
+    EXPECT_TRUE(std::isfinite(f.amplitude()) && std::isfinite(f.mean())) << "e = " << e;
+    EXPECT_EQ(Solve(f, params).validity.violations, small.solution.validity.violations)
+        << "e = " << e << ": " << tiny.message;
+  }
+}
+
 TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   // docs/model.md section 6: A, c, T0 -> k A, k c, k T0 keeps phi1, alpha and the right-wall,
   // stick and mass-ratio conditions (they depend on 1 - x only through its sign), scales I

@@ -29,7 +29,8 @@ inline constexpr int kMaxThreads = 1024;
 /// holds its own record (attractors.hpp, kMaxRecord).
 inline constexpr int kThreadsPerCore = 4;
 
-/// The most worker threads worth running on this machine: kThreadsPerCore x its cores.
+/// The most worker threads worth running on this machine: kThreadsPerCore x its cores, at most
+/// kMaxThreads.
 int MaxUsefulThreads();
 
 /// `requested` worker threads (0: all cores, kept) lowered to MaxUsefulThreads(); the results

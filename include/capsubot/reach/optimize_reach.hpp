@@ -143,7 +143,9 @@ struct ReachResult {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   /// kOk (search converged or used its budget), kMaxTime (the wall-clock limit stopped the
-  /// search; the best point is kept), kNoValidOrbit (every candidate had an event_limit start).
+  /// search; the best point is kept; when it came before the search evaluated anything, the
+  /// winner is the best starting drive and the message says so), kNoValidOrbit (every
+  /// candidate had an event_limit start).
   OptimizeStatus status = OptimizeStatus::kNotRun;
   std::string message;  ///< one readable sentence
   /// The winner's force (A sin(phi + phi0) + c, or a Fourier series for a Fourier family);

@@ -79,7 +79,7 @@ struct BoxSearch {
 /// What a box search found.
 struct BoxSearchResult {
   /// The global stage's status, replaced by the local polish's unless only the global one
-  /// stopped at the time limit.
+  /// stopped at the time limit; kMaxTime when the time limit came before any stage ran.
   OptimizeStatus status = OptimizeStatus::kOk;
   bool max_time = false;             ///< a stage stopped at, or was skipped at, the limit
   std::string message;               ///< NLopt's exceptions, if any

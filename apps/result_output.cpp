@@ -1,0 +1,38 @@
+#include "result_output.hpp"
+
+#include <fmt/format.h>
+
+#include "capsubot/io/io.hpp"
+
+namespace capsubot::app {
+
+namespace {
+
+bool ToStandardOutput(const std::string& path) { return path.empty() || path == "-"; }
+
+}  // namespace
+
+CLI::Option* AddResultOutputOption(CLI::App& cmd, std::string& path, const std::string& what) {
+  return cmd
+      .add_option("-o,--output", path,
+                  fmt::format("write {} (with --json its JSON object) to FILE instead of "
+                              "standard output, atomically; - for standard output",
+                              what))
+      ->type_name("FILE");
+}
+
+void CheckResultOutput(const std::string& path) {
+  if (!ToStandardOutput(path)) CheckWritable(path, "-o");
+}
+
+void WriteResult(const std::string& path, const std::string& text) {
+  if (ToStandardOutput(path)) {
+    fmt::print("{}", text);
+    return;
+  }
+  AtomicFile file(path, "-o");
+  file.stream() << text;
+  file.Commit();
+}
+
+}  // namespace capsubot::app
