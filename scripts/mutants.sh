@@ -194,6 +194,10 @@ mkdir -p "$SRC"
 # The tree as it is (uncommitted changes too), without build folders and git's data; times kept,
 # so that a second run rebuilds only what changed.
 tar -C "$ROOT" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$SRC" -xf -
+# ... but a mutated file's object may be newer than the file put back (a run's last mutant, or
+# one a stopped run left, is never rebuilt unmutated, and tar keeps the tree's older time): the
+# files that mutants edit are rebuilt.
+for file in $(printf '%s\n' "${FILES[@]}" | sort -u); do touch "$SRC/$file"; done
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCAPSUBOT_BUILD_BENCHMARKS=OFF >"$SCRATCH/configure.log"
 
