@@ -269,13 +269,15 @@ TEST(DesignWindows, TheFrequencySearchFindsBandsDownToAFewTimesItsResolution) {
   ASSERT_TRUE(x_min > 0.0 && x_max < 1.0) << x_min << " " << x_max;
   // The orbit's x_min and x_max are exact to rounding; the design refines f to 1e-9 in log f.
   constexpr double kBandRelTol = 1e-8;
+  // The band's width in log f from d: rounding of the logarithms and square roots.
+  constexpr double kWidthRounding = 1e-12;
   for (const double width : {1e-4, 1e-5, 3e-6}) {
     // Walls with clearance d admit k in [d/(1 - x_max), (1 - d)/(1 - x_min)]: the d for which
     // that interval is exp(2 width) wide.
     const double d = 1.0 / (1.0 + std::exp(2.0 * width) * (1.0 - x_min) / (1.0 - x_max));
     const double f_lo = kRefHz * std::sqrt((1.0 - x_min) / (1.0 - d));
     const double f_hi = kRefHz * std::sqrt((1.0 - x_max) / d);
-    ASSERT_NEAR(std::log(f_hi / f_lo), width, 1e-12) << width;
+    ASSERT_NEAR(std::log(f_hi / f_lo), width, kWidthRounding) << width;
     DesignInput in = bare;
     in.margin = d;
     in.frequency_min = 4.0;
