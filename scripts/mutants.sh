@@ -35,13 +35,20 @@ done
 shift $((OPTIND - 1))
 ONLY=("$@")
 
-# The test programs of each stage (tests/<stage>/...), the tests a mutant of the stage must fail.
+# The test programs of each stage, the tests a mutant of the stage must fail: every program of
+# tests/<stage>/, plus tests/optimize/reach_test.cpp (reach) and tests/job/design_robustness_test
+# .cpp and design_job_test.cpp (design). Programs are separated by blanks or new lines.
 declare -A STAGE_TESTS=(
-  [simulate]="simulator_test simulator_chatter_test simulator_energy_test simulator_reuse_test segment_force_test cycle_memo_test"
-  [attract]="attractors_test long_run_test periodic_test gait_from_rest_test bifurcation_test start_grid_test"
-  [continue]="neimark_sacker_test continuation_test branch_switch_test grazing_switch_test special_curve_test gait_robustness_test"
+  [simulate]="simulator_test simulator_chatter_test simulator_energy_test simulator_reuse_test
+              segment_force_test cycle_memo_test simulator_pulse_test local_sincos_test"
+  [attract]="attractors_test long_run_test periodic_test gait_from_rest_test bifurcation_test
+             start_grid_test chatter_settings_test"
+  [continue]="neimark_sacker_test continuation_test branch_switch_test grazing_switch_test
+              special_curve_test gait_robustness_test branch_edges_test branch_properties_test
+              speed_band_test"
   [reach]="reach_test drive_family_test drive_ladder_test reach_frequency_test"
-  [design]="design_test design_windows_test design_from_rest_test design_robustness_test"
+  [design]="design_test design_windows_test design_from_rest_test design_robustness_test
+            design_job_test"
 )
 
 IDS=() STAGES=() FILES=() ORIGINALS=() REPLACEMENTS=()
@@ -187,6 +194,10 @@ mkdir -p "$SRC"
 # The tree as it is (uncommitted changes too), without build folders and git's data; times kept,
 # so that a second run rebuilds only what changed.
 tar -C "$ROOT" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$SRC" -xf -
+# ... but a mutated file's object may be newer than the file put back (a run's last mutant, or
+# one a stopped run left, is never rebuilt unmutated, and tar keeps the tree's older time): the
+# files that mutants edit are rebuilt.
+for file in $(printf '%s\n' "${FILES[@]}" | sort -u); do touch "$SRC/$file"; done
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCAPSUBOT_BUILD_BENCHMARKS=OFF >"$SCRATCH/configure.log"
 

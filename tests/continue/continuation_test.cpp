@@ -122,17 +122,32 @@ TEST(Continuation, GrazingIsWhereTheAnalyticOrbitTouchesTheRightWall) {
   EXPECT_EQ(graze->motion.impacts_right, 1);  // the motion on the side it came from
 }
 
-TEST(Continuation, PeriodDoublingIsWhereThePeriodTwoMotionOfTheLongRunsBegins) {
-  // The 2-right/1-left period-1 motion of the stable optimum's force at T0 = 0.5, continued in
-  // alpha (the flip the shooting test brackets near 0.6822 by bisection on the multiplier).
-  const Forcing force =
-      Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
+// The 2-right/1-left period-1 motion of the stable optimum's force at T0 = 0.5, continued in
+// alpha (the flip the shooting test brackets near 0.6822 by bisection on the multiplier), with
+// special points located to `location_tolerance`.
+const Forcing kFlipForce =
+    Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
+
+Params FlipParams() {
   Params params;
   params.T0 = 0.5;
-  const RobotFamily family = [&](double alpha) { return RobotModel{force, params, alpha}; };
+  return params;
+}
+
+Branch FlipBranch(double location_tolerance) {
+  const RobotFamily family = [](double alpha) {
+    return RobotModel{kFlipForce, FlipParams(), alpha};
+  };
   ContinuationOptions opt = Range(0.66, 0.70, 0.70);
   opt.shooting.transient = 300;
-  const Branch b = ContinueBranch(family, RestStart(0.5, 1.0), opt);
+  opt.location_tolerance = location_tolerance;
+  return ContinueBranch(family, RestStart(0.5, 1.0), opt);
+}
+
+TEST(Continuation, PeriodDoublingIsWhereThePeriodTwoMotionOfTheLongRunsBegins) {
+  const Forcing& force = kFlipForce;
+  const Params params = FlipParams();
+  const Branch b = FlipBranch(ContinuationOptions{}.location_tolerance);
   ASSERT_EQ(b.status, ContinuationStatus::kOk);
   ASSERT_EQ(b.points[static_cast<std::size_t>(b.start_index)].motion.impacts_right, 2);
   const SpecialPoint* pd = Find(b, SpecialPointType::kPeriodDoubling);
@@ -160,6 +175,24 @@ TEST(Continuation, PeriodDoublingIsWhereThePeriodTwoMotionOfTheLongRunsBegins) {
   EXPECT_EQ(two.period, 2);
   EXPECT_EQ(two.impacts_right, 4);
   EXPECT_EQ(two.impacts_left, 2);
+}
+
+TEST(Continuation, PeriodDoublingHoldsWithTheLocationToleranceTenThousandTimesCoarser) {
+  // The knob location_tolerance from 1e-10 to 1e-6: the same flip, located to the coarser
+  // tolerance. Its multiplier is then -1 only to about |d mu / d alpha| 1e-6 (a few 1e-7 here):
+  // the confirmation of a located point must accept that.
+  constexpr double kCoarse = 1e-6;
+  const Branch fine = FlipBranch(ContinuationOptions{}.location_tolerance);
+  const Branch coarse = FlipBranch(kCoarse);
+  const SpecialPoint* reference = Find(fine, SpecialPointType::kPeriodDoubling);
+  ASSERT_NE(reference, nullptr);
+  ASSERT_TRUE(reference->located);
+  const SpecialPoint* pd = Find(coarse, SpecialPointType::kPeriodDoubling);
+  ASSERT_NE(pd, nullptr);
+  EXPECT_TRUE(pd->located);
+  EXPECT_LE(pd->accuracy, kCoarse);
+  EXPECT_TRUE(Near(pd->parameter, reference->parameter, kCoarse));
+  EXPECT_EQ(coarse.special_points.size(), fine.special_points.size());
 }
 
 TEST(Continuation, SegmentChangeIsWhereTheForceReachesTheFrictionBound) {

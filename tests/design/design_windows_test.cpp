@@ -254,5 +254,43 @@ TEST(DesignWindows, TheFrequencySearchFindsABandOfFrequenciesNarrowerThanItsScan
       << "design f = " << g.frequency_hz << " Hz, scan f = " << ref.best_value << " Hz";
 }
 
+// The same robot with the clearance d moved closer to the largest its gait allows, so that its
+// band of frequencies is 1e-4, 1e-5 and 3e-6 wide in log f: the search brackets windows to
+// 1e-6 (docs/design.md, "How the search works"), so it finds each. The band is computed here
+// from the orbit at 7.686 Hz without clearance and the scaling of docs/model.md section 6
+// (f -> k = (7.686 Hz / f)^2 multiplies 1 - x by k), and checked with EvaluateGait inside it
+// and just outside.
+TEST(DesignWindows, TheFrequencySearchFindsBandsDownToAFewTimesItsResolution) {
+  constexpr double kM2 = 0.8788, kRefHz = 7.686;
+  const DesignInput bare = Input(kTable[16]);  // no clearance, no stability requirement
+  const Gait at_ref = EvaluateGait(bare, kM2, kRefHz);
+  ASSERT_TRUE(at_ref.ok()) << GaitStatusName(at_ref.status);
+  const double x_min = at_ref.solution.validity.x_min, x_max = at_ref.solution.validity.x_max;
+  ASSERT_TRUE(x_min > 0.0 && x_max < 1.0) << x_min << " " << x_max;
+  // The orbit's x_min and x_max are exact to rounding; the design refines f to 1e-9 in log f.
+  constexpr double kBandRelTol = 1e-8;
+  // The band's width in log f from d: rounding of the logarithms and square roots.
+  constexpr double kWidthRounding = 1e-12;
+  for (const double width : {1e-4, 1e-5, 3e-6}) {
+    // Walls with clearance d admit k in [d/(1 - x_max), (1 - d)/(1 - x_min)]: the d for which
+    // that interval is exp(2 width) wide.
+    const double d = 1.0 / (1.0 + std::exp(2.0 * width) * (1.0 - x_min) / (1.0 - x_max));
+    const double f_lo = kRefHz * std::sqrt((1.0 - x_min) / (1.0 - d));
+    const double f_hi = kRefHz * std::sqrt((1.0 - x_max) / d);
+    ASSERT_NEAR(std::log(f_hi / f_lo), width, kWidthRounding) << width;
+    DesignInput in = bare;
+    in.margin = d;
+    in.frequency_min = 4.0;
+    in.frequency_max = 16.0;
+    EXPECT_TRUE(EvaluateGait(in, kM2, std::sqrt(f_lo * f_hi)).ok()) << width;
+    EXPECT_FALSE(EvaluateGait(in, kM2, f_lo * (1.0 - width)).ok()) << width;
+    EXPECT_FALSE(EvaluateGait(in, kM2, f_hi * (1.0 + width)).ok()) << width;
+    const Gait g = DesignGait(in, kM2);
+    ASSERT_TRUE(g.ok()) << "width " << width << ": " << GaitStatusName(g.status);
+    EXPECT_GE(g.frequency_hz, f_lo * (1.0 - kBandRelTol)) << width;
+    EXPECT_LE(g.frequency_hz, f_hi * (1.0 + kBandRelTol)) << width;
+  }
+}
+
 }  // namespace
 }  // namespace capsubot

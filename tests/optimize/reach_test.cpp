@@ -55,6 +55,33 @@ TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
   EXPECT_GT(r.evaluations, o.global_evaluations);
 }
 
+TEST(Reach, AWinnerWhoseSpreadExceedsMaxSpreadIsNeverCalledRobust) {
+  // The knob max_spread moved below the spread of the first run's winner: that winner cannot
+  // pass the spread test any more, so the second run either finds a slower candidate (ranked
+  // after it) that keeps its speed within the new bound, or none, and then reports the
+  // fastest candidate, flagged with a warning.
+  const Params params;  // e = 1: the spread includes the run at e = 0.999
+  ReachOptions o = QuickOptions();
+  const ReachResult first = OptimizeReach(params, o);
+  // Both runs use their whole budget, far below the time limit: the same search points, the
+  // same candidates in the same order (the search is deterministic).
+  ASSERT_EQ(first.status, OptimizeStatus::kOk) << first.message;
+  const double spread = first.spread.max_relative_deviation;
+  ASSERT_GT(spread, 0.0) << first.message;
+  ASSERT_TRUE(std::isfinite(spread)) << first.message;
+  o.max_spread = 0.5 * spread;
+  const ReachResult second = OptimizeReach(params, o);
+  ASSERT_EQ(second.status, OptimizeStatus::kOk) << second.message;
+  EXPECT_EQ(second.robust_to_settings, second.spread.max_relative_deviation <= o.max_spread)
+      << second.message;
+  if (second.robust_to_settings) {
+    EXPECT_LE(second.mean_velocity, first.mean_velocity) << second.message;
+  } else {
+    EXPECT_GE(second.mean_velocity, first.mean_velocity) << second.message;
+    EXPECT_NE(second.message.find("WARNING"), std::string::npos) << second.message;
+  }
+}
+
 TEST(Reach, EventLimitPointsAreNeverPicked) {
   // At T0 = 0.7, alpha = 0.95 strong forces make about 100 impacts per period (the work bound of
   // 10 events per period stops them, attractors_test.cpp); weak ones move with few impacts. No
