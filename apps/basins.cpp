@@ -3,8 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -15,6 +13,7 @@
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/basins_text.hpp"
 #include "commands.hpp"
+#include "gnuplot.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
@@ -50,23 +49,6 @@ StartPlane Plane(const BasinsCommandOptions& opt) {
   return x0_u0 ? StartPlane(v) : StartPlane(RestPlane{});
 }
 
-// Draws the map of `r` with gnuplot into a temporary file beside `path`, then renames it.
-void Plot(const BasinsJobResult& r, const std::string& path) {
-  const std::string temp = path + ".tmp.png";
-  FILE* gp = popen("gnuplot 2>&1", "w");
-  if (gp == nullptr) throw IoError("--plot: cannot run gnuplot");
-  std::fputs(text::BasinsPlotScript(r, temp).c_str(), gp);
-  const int status = pclose(gp);
-  if (status != 0 || !std::filesystem::exists(temp)) {
-    std::filesystem::remove(temp);
-    throw IoError(
-        fmt::format("--plot {}: gnuplot failed (is it installed? Debian package "
-                    "gnuplot-nox, see scripts/install-deps.sh)",
-                    path));
-  }
-  std::filesystem::rename(temp, path);
-}
-
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   BasinsJobOptions o;
   o.map = MapJobOptions(opt.robot, opt.starts, opt.threads);
@@ -80,7 +62,9 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   o.map.backend = &ranks.backend();
   o.map.progress = CountProgress("starts");
   const BasinsJobResult r = RunBasinsJob(o);
-  if (!opt.plot.empty()) Plot(r, opt.plot);
+  if (!opt.plot.empty()) {
+    DrawPng([&r](const std::string& png) { return text::BasinsPlotScript(r, png); }, opt.plot);
+  }
   if (opt.json) {
     nlohmann::json j = json::BasinsJobJson(r);
     AddProvenanceJson(j, cmd);

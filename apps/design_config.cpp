@@ -604,14 +604,28 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
   CheckExclusive(from_flags, "as flags");
   given.insert(from_flags.begin(), from_flags.end());
   for (const DesignGridAxis& axis : grid) SetFromGrid(axis, o, from_flags, in, given);
+  // Every missing setting named at once: "setting L is missing: ..." or "settings L, mu and
+  // e are missing: give --L, --mu and --e (or L, mu and e in the --config file)".
+  std::vector<std::string> missing, flags, keys;
   for (const auto& group : kRequired) {
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;
     if (!any) {
-      throw std::invalid_argument(
-          fmt::format("setting {} is missing: give --{} (or {} in the --config file)",
-                      fmt::join(group, " or "), group.front(), group.front()));
+      missing.push_back(fmt::format("{}", fmt::join(group, " or ")));
+      flags.push_back(std::string("--") + group.front());
+      keys.emplace_back(group.front());
     }
+  }
+  if (!missing.empty()) {
+    const auto list = [](const std::vector<std::string>& items) {
+      if (items.size() == 1) return items.front();
+      return fmt::format("{} and {}", fmt::join(items.begin(), items.end() - 1, ", "),
+                         items.back());
+    };
+    throw std::invalid_argument(
+        fmt::format("setting{} {} {} missing: give {} (or {} in the --config file)",
+                    missing.size() == 1 ? "" : "s", list(missing),
+                    missing.size() == 1 ? "is" : "are", list(flags), list(keys)));
   }
   in.Validate();
   if (settings != nullptr) {

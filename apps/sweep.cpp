@@ -17,11 +17,14 @@
 #include <vector>
 
 #include "attract_options.hpp"
+#include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/report/sweep_plot.hpp"
 #include "capsubot/report/sweep_text.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "from_rest_report.hpp"
+#include "gnuplot.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
@@ -44,11 +47,15 @@ struct SweepCliOptions {
   FromRestCliOptions from_rest;                             // reach: starts and budgets
   GridFileOptions file;  // --output, --resume, --checkpoint-seconds, --threads
   bool no_header_comment = false;
-  std::string shard;  // "K/N", empty: the whole grid
+  std::string shard;        // "K/N", empty: the whole grid
+  std::string plot;         // --plot: the PNG, empty: none
+  std::string plot_column;  // --plot-column, empty: the default of SweepPlotColumn
 };
 
 // Library messages name the job's options; the user typed these flags.
 const FlagNames kFlagOf = {{"grid", "--grid"},
+                           {"plot_column", "--plot-column"},
+                           {"plot", "--plot"},
                            {"optimize", "--optimize"},
                            {"output", "--output"},
                            {"threads", "--threads"},
@@ -321,9 +328,19 @@ int RunSweepCommand(SweepCliOptions& opt, const CLI::App& cmd) {
   job.progress = GridProgress(bar);
   // Every process checks the input before the processes of an MPI job meet.
   const SweepOptions sweep = PlanSweepJob(job);
+  std::string column;
+  if (!opt.plot.empty()) {
+    column = text::SweepPlotColumn(sweep, opt.plot_column);
+    RequireDistinctOutputs({{opt.file.output, "-o"}, {opt.plot, "--plot"}});
+    CheckWritable(opt.plot, "--plot");
+  }
   Ranks ranks;  // under mpirun: rank 0 runs the sweep, the others compute blocks of points
   if (ranks.worker()) return ranks.Serve(SweepBlocks(sweep), sweep.threads);
   const SweepJobResult result = RunSweepJob(job, ranks.backend());
+  if (!opt.plot.empty()) {
+    DrawPng([&](const std::string& png) { return text::SweepPlotScript(sweep, column, png); },
+            opt.plot);
+  }
   if (shown) fmt::print(stderr, "capsubot sweep: {}", text::SweepJobText(result));
   return 0;
 }
@@ -463,6 +480,14 @@ void AddRunOptions(CLI::App* cmd, SweepCliOptions& opt) {
                   "SHARD_FILES...` joins the N files into the file of the whole sweep; 0/1 "
                   "writes the file of the whole sweep (docs/cluster.md)")
       ->type_name("K/N");
+  CLI::Option* plot = cmd->add_option(
+      "--plot", opt.plot,
+      "also draw the CSV into this PNG with gnuplot: the column of --plot-column against the "
+      "grid's axis (one axis) or as a coloured map over its two axes (two); needs -o FILE");
+  cmd->add_option("--plot-column", opt.plot_column,
+                  "the column --plot draws (default: mean_velocity, v_mean or I, the first the "
+                  "sweep writes)")
+      ->needs(plot);
   AddThreadsOption(*cmd, opt.file.threads,
                    "worker threads (default 0: all cores, std::thread::hardware_concurrency); "
                    "more than 4 per core is lowered to that, with a note");

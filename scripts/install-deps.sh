@@ -8,11 +8,12 @@ set -euo pipefail
 core=(build-essential cmake pkg-config libeigen3-dev libnlopt-cxx-dev libgsl-dev libfmt-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev zlib1g-dev)
 # Everything else: the tests, the benchmarks, the manual page, the Python module (and the
-# pandas the docs' examples read CSVs with), MPI.
+# pandas the docs' examples read CSVs with), MPI, gnuplot.
 extras=(libgtest-dev libgmock-dev libbenchmark-dev help2man pybind11-dev python3-dev python3-numpy
   python3-pytest python3-matplotlib python3-pandas python3-pip python3-setuptools python3-wheel
-  python3-venv libopenmpi-dev openmpi-bin)
-# Usage: install-deps.sh [--minimal] [--figures]; --figures adds gnuplot for the figure script.
+  python3-venv libopenmpi-dev openmpi-bin gnuplot-nox)
+# Usage: install-deps.sh [--minimal] [--figures]; gnuplot (for --plot, its tests and the figure
+# script) comes with the extras; --figures adds it to a minimal installation.
 packages=("${core[@]}")
 minimal=0
 for arg in "$@"; do

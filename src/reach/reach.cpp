@@ -4,8 +4,9 @@
 // Every evaluation runs FindAttractors with the cheap search settings; a point with an
 // event_limit start scores kInfeasibleScore times the force scale, below every motion. The
 // global stage (DIRECT-L by default) covers the box, the local one (Sbplx) polishes its best
-// point; both stop at the wall-clock limit. The best distinct points and the seed are then
-// re-checked with the full settings; the best feasible one wins.
+// point; both stop at the wall-clock limit, which also ends an evaluation under way (its starts
+// poll it, so that one evaluation of a huge grid of starts cannot outlast it). The best distinct
+// points and the seed are then re-checked with the full settings; the best feasible one wins.
 
 #include <fmt/format.h>
 
@@ -47,6 +48,11 @@ constexpr long long kMaxPolishStarts = 64;
 constexpr int kFrequencyStarts = 5;
 
 using Point = detail::BoxPoint;
+using Clock = std::chrono::steady_clock;
+
+// Thrown by an evaluation's starts once the wall-clock limit has passed; the evaluation then
+// scores the penalty (it did not finish) and the search stops.
+struct TimeUp {};
 
 // The problem NLopt sees: the box, the robot at y, and the points seen so far. The coordinates
 // are the drive's, then alpha (when free), then log T0 (when free).
@@ -64,6 +70,8 @@ struct Context {
   std::vector<Point> seen;
   int evaluations = 0;
   int rejected_evaluations = 0;
+  Clock::time_point deadline = Clock::time_point::max();  // the wall-clock limit
+  bool time_up = false;                                   // an evaluation was ended by the limit
 
   bool FreeT0() const { return !std::isnan(log_T0_min); }
   int T0Index() const { return family.Dimension() + (std::isnan(fixed_alpha) ? 1 : 0); }
@@ -92,7 +100,13 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
   auto* ctx = static_cast<Context*>(data);
   const Params p = ctx->ParamsAt(y);
   const Forcing f = ctx->ForceAt(y);
-  const Attractors a = FindAttractors(f, p, ctx->AlphaAt(y), ctx->search);
+  Attractors a;
+  try {
+    a = FindAttractors(f, p, ctx->AlphaAt(y), ctx->search);
+  } catch (const TimeUp&) {
+    ctx->time_up = true;
+    return ctx->penalty;
+  }
   ++ctx->evaluations;
   const double score = ctx->Score(a, p.T0);
   if (!(score > ctx->penalty)) ++ctx->rejected_evaluations;
@@ -184,16 +198,16 @@ std::vector<double> PointOf(const Context& ctx, const DriveSeed& d) {
 detail::BoxSearchResult Search(Context& ctx, const ReachOptions& options,
                                const std::vector<double>& lower, const std::vector<double>& upper,
                                const std::vector<double>& y0) {
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [start] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   nlopt::srand(options.seed);
   detail::BoxSearch search;
   search.objective = Objective;
   search.data = &ctx;
   search.seen = [&ctx] { return ctx.seen; };
-  search.seconds_left = [&] { return options.max_seconds - elapsed(); };
+  search.seconds_left = [&ctx] {
+    if (ctx.time_up) return 0.0;
+    if (ctx.deadline == Clock::time_point::max()) return HUGE_VAL;
+    return std::chrono::duration<double>(ctx.deadline - Clock::now()).count();
+  };
   search.lower = lower;
   search.upper = upper;
   search.start = y0;
@@ -526,6 +540,17 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
                   params.T0, options.T0_min, options.T0_max));
 
   Context ctx = ContextOf(params, options, bound, have_seed ? so.forcing.phi0() : 0.0);
+  // The wall-clock limit bounds the starting drives' scores and the search, evaluations under
+  // way included (their starts poll it after every block); the re-checks come on top.
+  if (std::isfinite(options.max_seconds)) {
+    ctx.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(options.max_seconds));
+    ctx.search.attractor.interrupt = [user = options.search.attractor.interrupt,
+                                      deadline = ctx.deadline] {
+      Poll(user);
+      if (Clock::now() > deadline) throw TimeUp{};
+    };
+  }
   std::vector<DriveSeed> starts = options.seeds;
   // The robust gait starts the search and competes when it is a force of the family (not for
   // pulse drives: then it gives the motor phase only).
@@ -561,8 +586,8 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
         found.message);
     return out;
   }
-  out.status =
-      found.status == OptimizeStatus::kMaxTime ? OptimizeStatus::kMaxTime : OptimizeStatus::kOk;
+  out.status = found.status == OptimizeStatus::kMaxTime || ctx.time_up ? OptimizeStatus::kMaxTime
+                                                                       : OptimizeStatus::kOk;
   Report(*best, ctx, options, found.message, searched, out);
   return out;
 }

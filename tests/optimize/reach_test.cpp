@@ -82,6 +82,22 @@ TEST(Reach, AWinnerWhoseSpreadExceedsMaxSpreadIsNeverCalledRobust) {
   }
 }
 
+TEST(Reach, TheTimeLimitEndsAnEvaluationUnderWay) {
+  // One evaluation of 512 x 512 starts runs 262144 starts for 132 periods each, about 3.5e7
+  // simulated periods: no machine does that in 0.01 s (the simulator manages about 1e6 periods
+  // a second and core, docs/performance.md). The limit must end it: no evaluation completes,
+  // the status says the time ran out, and the winner is a re-checked starting drive.
+  const Params params;
+  ReachOptions o = QuickOptions();
+  o.search.n_x = o.search.n_psi = 512;
+  o.max_seconds = 0.01;
+  const ReachResult r = OptimizeReach(params, o);
+  EXPECT_EQ(r.status, OptimizeStatus::kMaxTime) << r.message;
+  EXPECT_EQ(r.evaluations, 0) << r.message;
+  EXPECT_TRUE(r.seed_won) << r.message;
+  EXPECT_EQ(r.attractors.starts, 16);  // the re-check's 4 x 4 starts
+}
+
 TEST(Reach, EventLimitPointsAreNeverPicked) {
   // At T0 = 0.7, alpha = 0.95 strong forces make about 100 impacts per period (the work bound of
   // 10 events per period stops them, attractors_test.cpp); weak ones move with few impacts. No

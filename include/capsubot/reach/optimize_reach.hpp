@@ -85,8 +85,10 @@ struct ReachOptions {
   std::string local_algorithm = "LN_SBPLX";
   int global_evaluations = 150;  ///< from-rest evaluations of the global stage; >= 1
   int local_evaluations = 50;    ///< from-rest evaluations of the local polish; >= 0
-  /// Wall-clock limit of the search (global + local stage), seconds; > 0. The re-checks of the
-  /// candidates with the full settings come on top (a handful of from-rest runs). Infinity:
+  /// Wall-clock limit of the search (the starting drives' scores, the global and local stages),
+  /// seconds; > 0. It also ends an evaluation under way (its starts poll it after every block),
+  /// which then does not count; the status is then kMaxTime. The re-checks of the candidates
+  /// with the full settings come on top (a handful of from-rest runs). Infinity:
   /// none; the evaluation budgets alone bound the search, and the result no longer depends on
   /// the machine's speed (deterministic: what a sweep needs).
   double max_seconds = 20.0;
