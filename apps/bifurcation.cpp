@@ -43,23 +43,12 @@ const FlagNames& BifurcationFlagNames() {
                        {"impacts", "-o"},
                        {"summary", "--summary"},
                        {"to", "--to"},
-                       {"checkpoint_seconds", "--checkpoint-seconds"}});
+                       {"checkpoint_seconds", "--checkpoint-seconds"},
+                       {"direction", "--direction"},
+                       {"over", "--over"}});
     return n;
   }();
   return names;
-}
-
-// --over NAME=...: the second parameter and its values (at most kMaxOverValues, checked
-// before they are held).
-void SetOver(const std::string& text, BifurcationOptions& o) {
-  const GridAxis axis = ParseGridAxis(text);
-  o.over = ParseRobotParameter(axis.name(), &o.over_harmonic);
-  if (axis.size() > kMaxOverValues) {
-    throw std::invalid_argument(
-        fmt::format("--over = {} is invalid: {} values: expected at most {} values", text,
-                    axis.size(), kMaxOverValues));
-  }
-  for (std::int64_t i = 0; i < axis.size(); ++i) o.over_values.push_back(axis.Value(i));
 }
 
 // The job the command line describes.
@@ -74,13 +63,8 @@ BifurcationJobOptions JobOptions(const BifurcationCommandOptions& opt, const CLI
   o.motion = opt.robot.motion;
   o.start = ParseRestStart("--start", opt.start);
   o.analytic = !opt.no_analytic;
-  if (opt.direction != "up" && opt.direction != "down" && opt.direction != "both") {
-    throw std::invalid_argument(
-        fmt::format("--direction = {} is invalid: expected up, down or both", opt.direction));
-  }
-  o.up = opt.direction != "down";
-  o.down = opt.direction != "up";
-  if (!opt.over.empty()) SetOver(opt.over, o);
+  SetBifurcationDirection(opt.direction, o);
+  if (!opt.over.empty()) SetBifurcationOver(opt.over, o);
   const bool sharded = SplitsRun(opt.shard);  // --shard 0/1: the files of the whole study
   if (sharded) std::tie(o.shard, o.shards) = ParseShard(opt.shard);
   RequireShardForResume(cmd, sharded, "study");

@@ -19,4 +19,19 @@ inline DesignInput ExampleRobot() {
   return in;
 }
 
+/// The small robot of docs/tutorial.md: shell 30 g, gap 10 mm, mu 0.3, e 0.7, motor
+/// 0.05 sin(omega t + phase) + 0.05 N at 20 Hz. Its robust gait binds the stick margin, and
+/// most of its starts from rest end with the inner body resting on the right wall.
+inline DesignInput SmallRobot() {
+  DesignInput in;
+  in.m1 = 0.03;
+  in.L = 0.01;
+  in.mu = 0.3;
+  in.e = 0.7;
+  in.force.amplitude = 0.05;
+  in.force.bias = 0.05;
+  in.frequency_min = in.frequency_max = 20.0;
+  return in;
+}
+
 }  // namespace capsubot::testing

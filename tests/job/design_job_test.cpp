@@ -97,20 +97,9 @@ TEST(DesignJob, OneDesignIsTheLibrarysDesignAndTellsItsStages) {
 // At 1500 Hz the example robot's T0 is 1.7e-6: mu's range [mu/2, 2 mu] is narrower in T0 than
 // the continuation's finite-difference step of 1e-6; mu is followed relative to its value and
 // every part of the robustness is computed.
-// A robot whose gait most starts from rest never reach: shell 30 g, gap 10 mm, mu 0.3, e 0.7,
-// motor 0.05 sin + 0.05 N at 20 Hz (docs/design.md, "From rest"). Its robust gait exists, yet
-// most starts end with the inner body resting on a wall and the robot standing still.
-DesignInput SmallRobot() {
-  DesignInput in;
-  in.m1 = 0.03;
-  in.L = 0.01;
-  in.mu = 0.3;
-  in.e = 0.7;
-  in.force.amplitude = 0.05;
-  in.force.bias = 0.05;
-  in.frequency_min = in.frequency_max = 20.0;
-  return in;
-}
+// testing::SmallRobot: most starts from rest never reach its gait (docs/design.md, "From
+// rest"); they end with the inner body resting on a wall and the robot standing still.
+using testing::SmallRobot;
 
 // A start from rest run by the simulator alone for this many periods: long enough for the
 // transients of this robot (they settle within 100 periods, docs/design.md).

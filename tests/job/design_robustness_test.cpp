@@ -78,7 +78,8 @@ TEST(DesignRobustness, MuLimitsAreTheT0LimitsOfTheGaitsOrbitConverted) {
   // e is continued as the optimiser's robustness continues it: the same limits.
   const ParameterRobustness& e = ExampleRobustness().parameters[1];
   EXPECT_EQ(std::string(e.down.Name()), reference.parameters[1].down.Name());
-  EXPECT_TRUE(testing::Near(e.down.parameter, reference.parameters[1].down.parameter, kLocationTol));
+  EXPECT_TRUE(
+      testing::Near(e.down.parameter, reference.parameters[1].down.parameter, kLocationTol));
   EXPECT_EQ(std::string(e.up.Name()), reference.parameters[1].up.Name());
   EXPECT_TRUE(testing::Near(e.up.parameter, reference.parameters[1].up.parameter, kLocationTol));
 }
@@ -126,11 +127,11 @@ DesignInput StableGaitRobot() {
 // The example's gait (spectral radius 0.9) ends below in m2 at a period doubling of the
 // simulated motion, and above at a grazing: its inner body's free flight touches the right
 // wall (the continuation locates it by the flight's distance from the wall; differences that
-// straddle the wall once gave a multiplier -1 there). The design's own evaluation of the robot agrees: kStep inside each limit the
-// robot still has a valid stable one-impact orbit, kStep beyond it has none (below the lower
-// limit the gait's orbit has a multiplier past -1; above the upper one the robot's orbits have
-// met in a fold of alpha(phi0) and vanished, a few 1e-5 after the analytic orbit grazes the
-// right wall).
+// straddle the wall once gave a multiplier -1 there). The design's own evaluation of the robot
+// agrees: kStep inside each limit the robot still has a valid stable one-impact orbit, kStep beyond
+// it has none (below the lower limit the gait's orbit has a multiplier past -1; above the upper one
+// the robot's orbits have met in a fold of alpha(phi0) and vanished, a few 1e-5 after the analytic
+// orbit grazes the right wall).
 TEST(DesignRobustness, InnerMassLimitsAreWhereTheDesignsGaitEnds) {
   const ParameterRobustness& m2 = ExampleRobustness().parameters[2];
   const double f = ExampleGait().frequency_hz;
@@ -162,20 +163,10 @@ TEST(DesignRobustness, RefusesAGaitThatIsNotOk) {
             "gait status = no_orbit is invalid: expected a gait (ok) to continue");
 }
 
-// A small robot whose gait binds the stick margin s = 0.02 (docs/model.md section 12): its
+// testing::SmallRobot's gait binds the stick margin s = 0.02 (docs/model.md section 12): its
 // capsule sticks with a margin of 2 % of the friction bound, so at mu (1 - s) = 0.294 its
 // stick/slide pattern changes, and the gait goes on.
-DesignInput SmallRobot() {
-  DesignInput in;
-  in.m1 = 0.03;
-  in.L = 0.01;
-  in.mu = 0.3;
-  in.e = 0.7;
-  in.force.amplitude = 0.05;
-  in.force.bias = 0.05;
-  in.frequency_min = in.frequency_max = 20.0;
-  return in;
-}
+using testing::SmallRobot;
 // The segment change is located to 1e-10 in T0 relative to its value; mu = 0.294 is exact.
 constexpr double kSegmentTol = 1e-6;
 // The speed from rest a designer is told about: within 95 % of the design's.
@@ -206,8 +197,8 @@ TEST(DesignRobustness, ASegmentChangeTheGaitSurvivesIsNoLimitAndTheBandSaysHowFa
   DesignInput moved = in;
   moved.mu = 0.24;
   const DesignModel m = MapToModel(moved, gait.m2_kg, gait.frequency_hz);
-  const double speed = FindAttractors(m.forcing, m.params, m.alpha, options.band.from_rest)
-                           .mean_velocity;
+  const double speed =
+      FindAttractors(m.forcing, m.params, m.alpha, options.band.from_rest).mean_velocity;
   EXPECT_GE(speed, kLevel * mu.band.nominal_speed);
 }
 
