@@ -123,13 +123,13 @@ mutant C6 continue src/continue/branch_system.cpp \
   'for (std::size_t j = i + 1; j < mu.size(); ++j) ns *= (mu[i] * mu[j] + 1.0).real();'
 
 # --- reach: the ranking of candidates and the spread test -----------------------------------
-mutant R1 reach src/reach/reach.cpp \
+mutant R1 reach src/reach/optimize_reach.cpp \
   'return sa > sb || (sa == sb && a.is_seed && !b.is_seed);' \
   'return sa < sb || (sa == sb && a.is_seed && !b.is_seed);'
-mutant R2 reach src/reach/reach.cpp \
+mutant R2 reach src/reach/optimize_reach.cpp \
   'if (spread.max_relative_deviation <= options.max_spread) {' \
   'if (spread.max_relative_deviation <= 100.0 * options.max_spread) {'
-mutant R3 reach src/reach/reach.cpp \
+mutant R3 reach src/reach/optimize_reach.cpp \
   'if (params.e == 1.0) {' \
   'if (params.e != 1.0) {'
 
