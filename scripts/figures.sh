@@ -15,6 +15,8 @@
 #   reach_T0.csv, reach_T0.png: the fastest motion from rest at every T0 (sweep --optimize reach)
 #   drives.json, drives_force.csv, drives_motion_K{1,2,3}.csv, drives.png: the fastest drives
 #                                 from rest, the sine and Fourier series of 2 and 3 harmonics
+#   drives_T0_*.json, drives_speed_{K,T0}.csv, drives_speed.png: their best speed against the
+#                                 number of harmonics and against the frequency (T0)
 #   loss_map.csv, loss_map_zoom.csv, loss_map.png: how the orbit loses stability over (phi0, A)
 #   p3_vs_p2_forcing.csv, p3_vs_p2_fourier{2,3}.csv, p3_vs_p2.png: P2 against P3 over T0
 #   three_axis_e_T0_phi0.csv, three_axis_e_T0_phi0.png: a 3-axis sweep (list, log, linear)
@@ -101,6 +103,14 @@ for k in 1 2 3; do
   "$cli" simulate "${drive[@]}" --x0 0.5 --u0 0 --v0 0 --transient 200 --periods 2 \
     --samples-per-period 400 --trajectory "$out/drives_motion_K$k.csv" > /dev/null
 done
+
+say "the best speed against the frequency: the ladder to K = 2 at 4 more values of T0 (about a minute)"
+for T0 in 0.125 0.25 0.5 2; do
+  "$cli" optimize --problem reach --harmonics 2 --T0 $T0 --reach-seconds 1000000 \
+    -o "$out/drives_T0_$T0.json" > /dev/null
+done
+/usr/bin/python3 "$gp/drives.py" speed "$out/drives_speed_K.csv" "$out/drives_speed_T0.csv" \
+  "$out/drives.json" "$out"/drives_T0_{0.125,0.25,0.5,2}.json
 
 # The other kinds of sweep (docs/sweep.md, "Figures"): a few seconds of CPU together.
 say "stability loss (stable, fold, flip, torus) over (phi0, A): all, and the torus corner"
@@ -208,6 +218,9 @@ print('; '.join('v%d=%r' % (s['harmonics'], s['mean_velocity']) for s in l))" "$
 gnuplot -e "term='$term'; out='$out/drives.png'; force='$out/drives_force.csv';
   motion1='$out/drives_motion_K1.csv'; motion2='$out/drives_motion_K2.csv';
   motion3='$out/drives_motion_K3.csv'; $speeds" "$gp/drives.gp"
+pulse=$(/usr/bin/python3 -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['pulse']['mean_velocity']))" "$out/optimum.json")
+gnuplot -e "term='$term'; out='$out/drives_speed.png'; by_K='$out/drives_speed_K.csv';
+  by_T0='$out/drives_speed_T0.csv'; pulse=$pulse" "$gp/drives_speed.gp"
 gnuplot -e "term='$term'; out='$out/loss_map.png'; data='$out/loss_map.csv';
   zoom='$out/loss_map_zoom.csv'; c=0.002; T0=0.1; e=1; dphi=pi/180; A_lo=0.001; A_hi=0.098;
   rA=$(awk 'BEGIN { print exp(log(98) / 40) }'); phi_lo=-2.6; phi_hi=-2.0; zphi=0.005;
@@ -224,4 +237,4 @@ gnuplot -e "term='$term'; out='$out/continuation_alpha_A.png'; map='$out/continu
   da=0.0014; dA=0.00075; a_lo=0.12; a_hi=0.4; A_lo=0.02; A_hi=0.08; robot_alpha=0.2792869076315278;
   robot_A=0.05; title_text='The one-impact orbit of F = A sin({/Symbol f} - 2.842) + 0.02 (T_0 = 0.1, e = 0.5): its fold and period doubling followed in ({/Symbol a}, A)'" \
   "$gp/continuation_alpha_A.gp"
-say "done: $(cd "$out" && ls fig2_* fig3_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* loss_* p3_* three_* fourier_* continuation_* | tr '\n' ' ')"
+say "done: $(cd "$out" && ls fig2_* fig3_* drives_* map_* reach_* p2_* design_* bifurcation_* velocity_* basins_* loss_* p3_* three_* fourier_* continuation_* | tr '\n' ' ')"

@@ -43,4 +43,18 @@ void BM_OptimizeJobMain(benchmark::State& state) {
 }
 BENCHMARK(BM_OptimizeJobMain)->Unit(benchmark::kSecond)->Iterations(1);
 
+// `capsubot optimize --problem reach --harmonics 3` with its default budgets: the sine's reach
+// search, then the ladder's steps K = 2 and 3 (400 Halton points and 4 polishes of 150 each),
+// their re-checks and spreads.
+void BM_OptimizeJobReachThreeHarmonics(benchmark::State& state) {
+  capsubot::OptimizeJobOptions options;
+  capsubot::ReachProblem reach;
+  reach.drive = capsubot::DriveFamily::Fourier(3);
+  options.mode = reach;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(capsubot::RunOptimizeJob(options).index());
+  }
+}
+BENCHMARK(BM_OptimizeJobReachThreeHarmonics)->Unit(benchmark::kSecond)->Iterations(1);
+
 }  // namespace
