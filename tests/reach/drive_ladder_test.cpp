@@ -159,6 +159,44 @@ TEST(DriveLadder, BeatsARandomSearchOfTheSameBudget) {
   }
 }
 
+TEST(DriveLadder, WithTheFrequencyFreeEveryStepKeepsTheBoundOfItsOwnT0) {
+  // The motor's frequency free (docs/reach.md, "Frequency") on every step of the ladder: each
+  // winner has its own T0 in the range, its force bounded by that T0, its speed in units of
+  // sqrt(mu g L) its mean velocity over the root of that T0, and the numbers of the robot at
+  // that T0 run again here; the step of two harmonics starts from the sine's winner (at its
+  // T0), so it is no slower in those units when both passed the spread test.
+  const Params params;  // T0 = 1 inside the range
+  const ReachEffort effort = QuickEffort();
+  const OptimizeResult seed = RobustSeed(params);
+  ReachOptions sine_options = effort.Options(NAN, NAN, QuickCheck());
+  sine_options.T0_min = 0.125;
+  sine_options.T0_max = 1.0;
+  const ReachResult sine = OptimizeReach(params, seed, sine_options);
+  ReachOptions options = effort.DriveOptions(DriveFamily::Fourier(2), NAN, NAN, QuickCheck());
+  options.T0_min = sine_options.T0_min;
+  options.T0_max = sine_options.T0_max;
+  const DriveLadder ladder = ClimbDriveLadder(params, seed, sine, options);
+  ASSERT_EQ(ladder.steps.size(), 2u);
+  for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
+    const ReachResult& step = ladder.steps[k];
+    SCOPED_TRACE("K = " + std::to_string(k + 1));
+    ASSERT_FALSE(std::isnan(step.mean_velocity)) << step.message;
+    EXPECT_GE(step.T0, options.T0_min);
+    EXPECT_LE(step.T0, options.T0_max);
+    EXPECT_LE(step.forcing.MaxAbs(), step.T0 * (1.0 + kBoundRoundingTol));
+    EXPECT_TRUE(Near(step.force_bound, step.T0, kBoundRoundingTol * step.T0));
+    EXPECT_EQ(step.physical_speed, step.mean_velocity / std::sqrt(step.T0));
+    Params at = params;
+    at.T0 = step.T0;
+    EXPECT_EQ(FindAttractors(step.forcing, at, step.alpha, QuickCheck()).mean_velocity,
+              step.mean_velocity);
+  }
+  const ReachResult &one = ladder.steps[0], &two = ladder.steps[1];
+  if (one.robust_to_settings && two.robust_to_settings) {
+    EXPECT_GE(two.physical_speed, one.physical_speed);
+  }
+}
+
 TEST(DriveLadder, OneHarmonicIsTheSineProblem) {
   // DriveFamily::Fourier(1) is the sine: the same search, the same numbers.
   const Params params;
