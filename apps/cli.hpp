@@ -31,8 +31,8 @@ struct ForcingOptions {
   double A = std::numeric_limits<double>::quiet_NaN();
   double c = std::numeric_limits<double>::quiet_NaN();
   double phi0 = std::numeric_limits<double>::quiet_NaN();
-  std::string cos_text, sin_text;  ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
-  std::string waveform;                     ///< --waveform: sine, fourier or pulse
+  std::string cos_text, sin_text;          ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
+  std::string waveform;                    ///< --waveform: sine, fourier or pulse
   std::string levels_text, switches_text;  ///< --levels, --switches as given
   CLI::Option* A_option = nullptr;
   CLI::Option* c_option = nullptr;

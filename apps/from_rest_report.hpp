@@ -32,10 +32,11 @@ struct FromRestCliOptions {
   int reach_evaluations = ReachOptions{}.global_evaluations;       ///< --reach-evaluations
   int reach_local_evaluations = ReachOptions{}.local_evaluations;  ///< --reach-local-evaluations
   double reach_seconds = ReachOptions{}.max_seconds;               ///< --reach-seconds
-  int drive_evaluations = ReachEffort{}.drive_evaluations;              ///< --drive-evaluations
-  int drive_polishes = ReachEffort{}.drive_polishes;                    ///< --drive-polishes
-  int drive_local_evaluations = ReachEffort{}.drive_local_evaluations;  ///< --drive-local-evaluations
-  int threads = 0;                                                 ///< --threads
+  int drive_evaluations = ReachEffort{}.drive_evaluations;         ///< --drive-evaluations
+  int drive_polishes = ReachEffort{}.drive_polishes;               ///< --drive-polishes
+  int drive_local_evaluations =
+      ReachEffort{}.drive_local_evaluations;  ///< --drive-local-evaluations
+  int threads = 0;                            ///< --threads
 
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
   /// naming the option for a bad grid.

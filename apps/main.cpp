@@ -107,7 +107,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "capsubot: one-impact periodic gaits of a vibro-impact capsule robot (A. P. Ivanov, "
       "Vibroimpact Mobile Robot, 2021). All quantities are dimensionless: phases in rad, "
-      "positions in units of the inner body's free gap L (walls at x = 0 and 1), velocities in omega*L, forces in "
+      "positions in units of the inner body's free gap L (walls at x = 0 and 1), velocities in "
+      "omega*L, forces in "
       "(m1+m2)*omega^2*L.",
       "capsubot"};
   // Before the commands are added: each command takes its parent's formatter.

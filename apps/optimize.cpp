@@ -112,7 +112,8 @@ void RejectUnusedOptions(const OptimizeCliOptions& opt) {
   const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
   const bool drives = (harmonics->count() > 0 && opt.search.harmonics >= 2) ||
                       opt.waveform == "fourier" || opt.waveform == "pulse";
-  for (const char* name : {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations"}) {
+  for (const char* name :
+       {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations"}) {
     if (opt.cmd->get_option(name)->count() > 0 && !drives) {
       throw std::invalid_argument(fmt::format(
           "{} conflicts with {} without --harmonics K >= 2 or --waveform pulse: expected {} only "
@@ -148,12 +149,12 @@ std::pair<double, double> ParseT0Range(const std::string& text) {
     hi = std::stod(text.substr(colon + 1), &used_hi);
     if (used_lo != colon || used_hi != text.size() - colon - 1) throw std::invalid_argument("");
   } catch (const std::exception&) {
-    throw std::invalid_argument(fmt::format(
-        "--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
+    throw std::invalid_argument(
+        fmt::format("--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
   }
   if (!(lo > 0.0 && lo < hi && std::isfinite(hi))) {
-    throw std::invalid_argument(fmt::format(
-        "--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
+    throw std::invalid_argument(
+        fmt::format("--T0-range = {} is invalid: expected LO:HI, two numbers 0 < LO < HI", text));
   }
   return {lo, hi};
 }

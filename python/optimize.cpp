@@ -54,12 +54,12 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   std::optional<double> c, double T0, double e, double margin, double margin_stroke,
                   double stick_margin, std::optional<double> bound, std::optional<double> rho_max,
                   bool stable, double max_time, std::optional<int> harmonics,
-                  const std::string& global_algorithm,
-                  const std::string& local_algorithm, int global_evaluations, int hops,
-                  std::optional<int> starts, std::optional<double> alpha,
-                  const std::string& from_rest_starts, const std::string& reach_starts,
-                  int reach_evaluations, int reach_local_evaluations, double reach_seconds,
-                  int drive_evaluations, int drive_polishes, int drive_local_evaluations,
+                  const std::string& global_algorithm, const std::string& local_algorithm,
+                  int global_evaluations, int hops, std::optional<int> starts,
+                  std::optional<double> alpha, const std::string& from_rest_starts,
+                  const std::string& reach_starts, int reach_evaluations,
+                  int reach_local_evaluations, double reach_seconds, int drive_evaluations,
+                  int drive_polishes, int drive_local_evaluations,
                   std::optional<std::pair<double, double>> T0_range, int threads) {
   const std::string name = problem.value_or("");
   if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
@@ -209,8 +209,7 @@ void BindOptimize(py::module_& m) {
         py::arg("drive_evaluations") = ReachEffort{}.drive_evaluations,
         py::arg("drive_polishes") = ReachEffort{}.drive_polishes,
         py::arg("drive_local_evaluations") = ReachEffort{}.drive_local_evaluations,
-        py::arg("T0_range") = py::none(),
-        py::arg("threads") = AttractorOptions{}.threads);
+        py::arg("T0_range") = py::none(), py::arg("threads") = AttractorOptions{}.threads);
 }
 
 }  // namespace capsubot::python

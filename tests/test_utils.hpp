@@ -91,9 +91,8 @@ inline SimOptions StartAt(double alpha, double x0, double u0, double v0, double 
 /// The mean velocity of a direct simulation from the state (x0, u0, v0) at the forcing phase
 /// psi (the start of a long run, attract/), over `record` periods after `transient` periods:
 /// what `capsubot simulate --transient T --periods R` gives. NaN when the run does not end ok.
-inline double DirectVelocity(const Forcing& forcing, const Params& params, double alpha,
-                             double x0, double u0, double v0, double psi, int transient,
-                             int record) {
+inline double DirectVelocity(const Forcing& forcing, const Params& params, double alpha, double x0,
+                             double u0, double v0, double psi, int transient, int record) {
   SimOptions o = StartAt(alpha, x0, u0, v0, record);
   o.transient = transient;
   o.max_events_per_period = 1000;

@@ -178,7 +178,7 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   out.dimension = d;
   if (out.status == ShootingStatus::kEventLimit) return out;
   const bool resolved = detail::WithinScale(shooter.map().forcing(), shooter.map().params(),
-                                             shooter.map().alpha(), z);
+                                            shooter.map().alpha(), z);
   out.out_of_scale = !resolved;
   out.status = res <= o.residual_tolerance && resolved ? ShootingStatus::kConverged
                                                        : ShootingStatus::kNoConvergence;

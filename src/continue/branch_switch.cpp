@@ -68,8 +68,7 @@ bool GenuinelyDoubled(const RobotModel& r, const PeriodicMotion& m, int p,
 bool BornAt(const SpecialPoint& pd, const PeriodicMotion& m, double offset) {
   const PeriodicMotion& at = pd.motion;
   const double near = kBornDistance * std::sqrt(offset);
-  const double moved = std::max({std::abs(m.state.x - at.state.x),
-                                 std::abs(m.state.u - at.state.u),
+  const double moved = std::max({std::abs(m.state.x - at.state.x), std::abs(m.state.u - at.state.u),
                                  std::abs(m.state.v - at.state.v)});
   return m.impacts_right == 2 * at.impacts_right && m.impacts_left == 2 * at.impacts_left &&
          moved <= near &&

@@ -82,8 +82,8 @@ class SmoothSystem {
   /// `keep_jacobian`: then J alone, for a few iterations). kOutOfRange when an iterate leaves
   /// the parameter's range (y is that iterate); kFailed when it does not converge or leaves the
   /// map's domain.
-  virtual Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y,
-                          int* iterations, bool keep_jacobian) = 0;
+  virtual Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations,
+                          bool keep_jacobian) = 0;
   Outcome Correct(const Condition& condition, Eigen::MatrixXd J, Vec4& y, int* iterations) {
     return Correct(condition, std::move(J), y, iterations, false);
   }
@@ -156,8 +156,7 @@ class BranchSystem : public SmoothSystem {
   bool Image(const Vec4& y, MapState* out, double* displacement = nullptr);
   // P^p at y with its events.
   bool Run(const Vec4& y, MapRun* run);
-  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
-                double step_factor = 1.0);
+  bool Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad, double step_factor = 1.0);
   double LambdaStep(double lambda) const;
   // The unit tangent of J (null vector of [P_z - I, P_lambda]) oriented along `orient`, in
   // (x, u, v, lambda); false when it is not defined.

@@ -72,7 +72,7 @@ Outcome Step(detail::BranchSystem& system, const Node& a, double h, const Contin
   // sharply): only a smooth stretch must keep its direction, every step its length.
   if (moved > h) return Outcome::kFailed;
   return Dot(a.t, b->t) >= kMinTangentCosine || !detail::SameEvents(a, *b) ? Outcome::kConverged
-                                                                          : Outcome::kFailed;
+                                                                           : Outcome::kFailed;
 }
 
 // The point at the end of the range that a step towards `beyond` passed: the corrector with
@@ -113,7 +113,9 @@ void EndLost(detail::BranchSystem& system, const Node& previous, const Node& a,
   double back_step = 0.0;
   for (std::size_t i = 0; i < 4; ++i) back_step += a.t[i] * (a.y[i] - previous.y[i]);
   back_step = std::max(kBackFraction * std::abs(back_step), 10.0 * o.location_tolerance);
-  if (!detail::LocateWallEnd(system, a, back_step, NAN, Wall::kNone, o.location_tolerance, &end, &sp)) return;
+  if (!detail::LocateWallEnd(system, a, back_step, NAN, Wall::kNone, o.location_tolerance, &end,
+                             &sp))
+    return;
   if (end.y != a.y) out->nodes.push_back(std::move(end));
   sp.after_point = static_cast<int>(out->nodes.size()) - 1;
   out->special.push_back(std::move(sp));

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -79,9 +79,8 @@ struct ImpactSignature {
   std::int64_t free_impacts[2] = {0, 0};
 
   bool operator==(const ImpactSignature& o) const {
-    return period == o.period && sequences[0] == o.sequences[0] &&
-           sequences[1] == o.sequences[1] && free_impacts[0] == o.free_impacts[0] &&
-           free_impacts[1] == o.free_impacts[1];
+    return period == o.period && sequences[0] == o.sequences[0] && sequences[1] == o.sequences[1] &&
+           free_impacts[0] == o.free_impacts[0] && free_impacts[1] == o.free_impacts[1];
   }
 };
 
@@ -141,8 +140,7 @@ ImpactSignature Signature(const RobotModel& robot, const PeriodicMotion& m,
   o.periods = m.period;
   o.chatter_velocity = shooting.chatter_velocity;
   o.max_events_per_period = shooting.max_events_per_period;
-  Simulate(robot.forcing.WithPhase(robot.forcing.phi0() + m.state.psi), robot.params, o,
-           &observer);
+  Simulate(robot.forcing.WithPhase(robot.forcing.phi0() + m.state.psi), robot.params, o, &observer);
   observer.Finish();
   return s;
 }
@@ -289,15 +287,17 @@ std::string ParameterRobustness::BandText(const ValueText& value, const std::str
   const SpeedBand& b = band;
   if (b.status == SpeedBandStatus::kNotRun) return "";
   if (b.status == SpeedBandStatus::kNoSpeed) {
-    return fmt::format("{}speed band: none, the robot does not move from rest here (mean speed "
-                       "{})\n",
-                       indent, speed);
+    return fmt::format(
+        "{}speed band: none, the robot does not move from rest here (mean speed "
+        "{})\n",
+        indent, speed);
   }
   if (b.status == SpeedBandStatus::kUnsettled) {
-    return fmt::format("{}speed band: none, the speed from rest has not settled here: {} of {} "
-                       "starts end in no periodic motion whose record's halves differ by more "
-                       "than {:g} %\n",
-                       indent, b.unsettled_starts, b.starts, 100.0 * kSettledHalves);
+    return fmt::format(
+        "{}speed band: none, the speed from rest has not settled here: {} of {} "
+        "starts end in no periodic motion whose record's halves differ by more "
+        "than {:g} %\n",
+        indent, b.unsettled_starts, b.starts, 100.0 * kSettledHalves);
   }
   std::string t = fmt::format(
       "{}speed band (simulated from rest): the mean speed from rest, {}, stays at or above\n",
@@ -344,8 +344,8 @@ std::vector<SpecialPoint> ParameterRobustness::InBand() const {
     if (!band.Contains(band.down.front().level, sp.parameter)) continue;
     // The same point found from both of its sides (a branch through it and back) once.
     const bool again = std::any_of(in.begin(), in.end(), [&](const SpecialPoint& o) {
-      return o.type == sp.type && std::abs(o.parameter - sp.parameter) <=
-                                      std::max(o.accuracy, sp.accuracy);
+      return o.type == sp.type &&
+             std::abs(o.parameter - sp.parameter) <= std::max(o.accuracy, sp.accuracy);
     });
     if (!again) in.push_back(sp);
   }

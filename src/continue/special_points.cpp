@@ -180,8 +180,8 @@ bool HasCriticalMultiplier(SpecialPointType type, const PeriodicMotion& m, doubl
 // is 10 times larger and 10 times smaller (a difference that straddles an event gives a speed
 // that moves with the step).
 bool SpeedChangesSign(SmoothSystem& system, const Node& a, const Node& b) {
-  const double scale = std::max({std::abs(a.motion.mean_velocity),
-                                 std::abs(b.motion.mean_velocity), kSpeedFloor});
+  const double scale =
+      std::max({std::abs(a.motion.mean_velocity), std::abs(b.motion.mean_velocity), kSpeedFloor});
   const auto significant = [&](const Node& n) { return std::abs(n.speed) > kSpeedNoise * scale; };
   if (!significant(a) && !significant(b)) return false;
   for (const double factor : {kStepFactor, 1.0 / kStepFactor}) {

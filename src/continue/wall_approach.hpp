@@ -29,8 +29,7 @@ struct WallApproach {
 /// nearest to either wall (to `only` when that is not kNone). False at the work bound or when
 /// no free flight turns back before such a wall.
 bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
-                      const MotionOptions& motion, WallApproach* approach,
-                      Wall only = Wall::kNone);
+                      const MotionOptions& motion, WallApproach* approach, Wall only = Wall::kNone);
 
 /// The grazing condition of the motion through `z` at the flight of `approach`: x_max - 1 at the
 /// right wall, -x_min at the left (negative: the flight turns back before the wall), of the

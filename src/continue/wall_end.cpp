@@ -34,8 +34,7 @@ bool MotionWithEvents(BranchSystem& system, const Node& a, const Node& from, dou
       !system.Measure(y, node) || !SameEvents(*node, a)) {
     return false;
   }
-  return GrazingCondition(system.Robot(y[3]), system.State(y), w, system.motion(), g) &&
-         *g < 0.0;
+  return GrazingCondition(system.Robot(y[3]), system.State(y), w, system.motion(), g) && *g < 0.0;
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 // robots they both visit (a memo of the mean velocities), then each re-checks its best points
 // with the full settings.
 
+#include "capsubot/design/design_from_rest.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,7 +17,6 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "capsubot/design/design_from_rest.hpp"
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"

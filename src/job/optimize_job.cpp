@@ -61,8 +61,8 @@ void FastestDrives(const OptimizeJobOptions& o, const MainJob& job, MainJobResul
   drives.max_seconds = job.reach.max_seconds;
   const double bound = o.search.gait.force_bound;
   r.drives = ClimbDriveLadder(r.params, r.robust, r.reach,
-                              drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics),
-                                                  bound, kNaN, CheckOf(o)))
+                              drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics), bound,
+                                                  kNaN, CheckOf(o)))
                  .steps;
   r.pulse = OptimizeReach(
       r.params, r.robust,
@@ -101,9 +101,8 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
     r.reach_robustness =
         ComputeMotionRobustness({r.reach.forcing, p, r.reach.alpha, motion->section}, robustness);
   } else if (!std::isnan(r.reach.mean_velocity)) {
-    r.reach_robustness =
-        ComputeSpeedBands({r.reach.forcing, p, r.reach.alpha}, robustness,
-                          "its most common motion from rest is not periodic");
+    r.reach_robustness = ComputeSpeedBands({r.reach.forcing, p, r.reach.alpha}, robustness,
+                                           "its most common motion from rest is not periodic");
   }
   TellStage(o.on_stage, "optimize: 5/5 the exact optima without margins");
   r.fastest = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(kInf)));
@@ -114,8 +113,8 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
 
 ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
   const bool sine = job.drive.sine();
-  TellStage(o.on_stage, fmt::format("optimize: 1/{} the robust gait that seeds the search (P2)",
-                                    sine ? 2 : 3));
+  TellStage(o.on_stage,
+            fmt::format("optimize: 1/{} the robust gait that seeds the search (P2)", sine ? 2 : 3));
   const OptimizeResult robust = OptimizeForcing(o.params, ForcingOptionsFor(o.search));
   TellStage(o.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
                                     "(simulated starts; up to a minute)",
@@ -123,8 +122,8 @@ ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
   ReachOptions sine_options = ReachOf(o, job.reach, job.alpha);
   sine_options.T0_min = job.T0_min;
   sine_options.T0_max = job.T0_max;
-  ReachJobResult r{o.params, o.search.gait.rho_max, OptimizeReach(o.params, robust, sine_options),
-                   {}};
+  ReachJobResult r{
+      o.params, o.search.gait.rho_max, OptimizeReach(o.params, robust, sine_options), {}};
   if (!sine) {
     TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest drive from rest, {} (simulated "
                                       "starts; minutes)",
@@ -217,9 +216,9 @@ void OptimizeJobOptions::Validate() const {
     job->drives.Validate();
     DriveFamily::Pulse(job->pulse_levels).Validate();
     if (job->drive_harmonics < 2 || job->drive_harmonics > kMaxHarmonics) {
-      throw std::invalid_argument(fmt::format(
-          "drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",
-          job->drive_harmonics, kMaxHarmonics));
+      throw std::invalid_argument(
+          fmt::format("drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",
+                      job->drive_harmonics, kMaxHarmonics));
     }
     ReachOf(*this, job->reach, kNaN).Validate();
     RobustnessOf(*this, *job).Validate();

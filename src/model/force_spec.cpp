@@ -33,7 +33,9 @@ Forcing BuildPulse(const ForceSpec& s, const std::string& p) {
   if (s.A || s.sin || s.cos) {
     throw std::invalid_argument(fmt::format(
         "{0}waveform pulse takes {0}levels and {0}switches: {0}{1} is invalid with it", p,
-        s.A ? "A" : s.sin ? "sin" : "cos"));
+        s.A     ? "A"
+        : s.sin ? "sin"
+                : "cos"));
   }
   if (s.c) {
     throw std::invalid_argument(fmt::format(
@@ -42,10 +44,10 @@ Forcing BuildPulse(const ForceSpec& s, const std::string& p) {
         p, *s.c));
   }
   if (!s.levels || !s.switches) {
-    throw std::invalid_argument(fmt::format(
-        "{0}{1} is missing: a pulse force needs {0}levels L_1,...,L_N and {0}switches "
-        "s_1,...,s_N [rad]",
-        p, s.levels ? "switches" : "levels"));
+    throw std::invalid_argument(
+        fmt::format("{0}{1} is missing: a pulse force needs {0}levels L_1,...,L_N and {0}switches "
+                    "s_1,...,s_N [rad]",
+                    p, s.levels ? "switches" : "levels"));
   }
   try {
     return Forcing::Pulse(*s.levels, *s.switches, s.phi0.value_or(0.0));
@@ -63,8 +65,8 @@ Forcing BuildPulse(const ForceSpec& s, const std::string& p) {
 Forcing ForceSpec::Build(bool need_phase, const std::string& p) const {
   const bool pulse_parts = levels || switches;
   if (waveform && *waveform != "sine" && *waveform != "fourier" && *waveform != "pulse") {
-    throw std::invalid_argument(fmt::format(
-        "{}waveform = '{}' is invalid: expected sine, fourier or pulse", p, *waveform));
+    throw std::invalid_argument(
+        fmt::format("{}waveform = '{}' is invalid: expected sine, fourier or pulse", p, *waveform));
   }
   if (waveform ? *waveform == "pulse" : pulse_parts) return BuildPulse(*this, p);
   if (pulse_parts) {
@@ -79,9 +81,9 @@ Forcing ForceSpec::Build(bool need_phase, const std::string& p) const {
         p));
   }
   if (waveform && *waveform == "sine" && (sin || cos)) {
-    throw std::invalid_argument(fmt::format(
-        "{0}{1} is invalid with {0}waveform sine: expected {0}A, {0}c and {0}phi0", p,
-        sin ? "sin" : "cos"));
+    throw std::invalid_argument(
+        fmt::format("{0}{1} is invalid with {0}waveform sine: expected {0}A, {0}c and {0}phi0", p,
+                    sin ? "sin" : "cos"));
   }
   if (!c) {
     throw std::invalid_argument(fmt::format("{}c is missing: give the mean force c", p));

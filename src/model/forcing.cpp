@@ -85,13 +85,13 @@ Forcing Forcing::Pulse(const std::vector<double>& levels, const std::vector<doub
   const std::size_t n = levels.size();
   if (n < 1 || n > static_cast<std::size_t>(kMaxPulseLevels)) {
     throw std::invalid_argument(
-        fmt::format("levels: N = {} is invalid: expected 1 <= N <= {} levels of the pulse force",
-                    n, kMaxPulseLevels));
+        fmt::format("levels: N = {} is invalid: expected 1 <= N <= {} levels of the pulse force", n,
+                    kMaxPulseLevels));
   }
   if (switches.size() != n) {
-    throw std::invalid_argument(fmt::format(
-        "switches: {} phases given for {} levels: expected one switch phase per level",
-        switches.size(), n));
+    throw std::invalid_argument(
+        fmt::format("switches: {} phases given for {} levels: expected one switch phase per level",
+                    switches.size(), n));
   }
   Forcing f;
   f.N_ = static_cast<int>(n);
@@ -157,10 +157,10 @@ Forcing Forcing::WithMean(double c) const {
 
 Forcing Forcing::WithCoefficient(bool sine, int k, double value) const {
   if (N_ > 0) {
-    throw std::invalid_argument(fmt::format(
-        "{}_{} is invalid for a pulse force: it has levels and switches, no Fourier "
-        "coefficients",
-        sine ? 'b' : 'a', k));
+    throw std::invalid_argument(
+        fmt::format("{}_{} is invalid for a pulse force: it has levels and switches, no Fourier "
+                    "coefficients",
+                    sine ? 'b' : 'a', k));
   }
   if (k < 1 || k > K_) {
     throw std::invalid_argument(fmt::format(

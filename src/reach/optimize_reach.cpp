@@ -8,6 +8,8 @@
 // poll it, so that one evaluation of a huge grid of starts cannot outlast it). The best distinct
 // points and the seed are then re-checked with the full settings; the best feasible one wins.
 
+#include "capsubot/reach/optimize_reach.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -19,7 +21,6 @@
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
-#include "capsubot/reach/optimize_reach.hpp"
 
 namespace capsubot {
 namespace {

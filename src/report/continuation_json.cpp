@@ -44,9 +44,12 @@ nlohmann::json Limit(const MotionLimit& l, const std::string& name) {
 // One edge of a speed band: where it lies (the range's end when the speed stays above the
 // level up to it) and its bracket.
 nlohmann::json Edge(const BandEdge& e, const std::string& name) {
-  return {{"within", e.within},        {name, e.parameter},
-          {"inside", e.inside},        {"outside", e.outside},
-          {"accuracy", e.accuracy},    {"ratio_inside", e.ratio_inside},
+  return {{"within", e.within},
+          {name, e.parameter},
+          {"inside", e.inside},
+          {"outside", e.outside},
+          {"accuracy", e.accuracy},
+          {"ratio_inside", e.ratio_inside},
           {"ratio_outside", e.ratio_outside}};
 }
 

@@ -215,16 +215,17 @@ std::string DrivesText(const std::vector<ReachResult>& drives, double bound) {
 // The fastest pulse drive under the same bound, against the sine.
 std::string PulseText(const ReachResult& pulse, double sine) {
   if (std::isnan(pulse.mean_velocity)) return "";
-  std::string t = fmt::format(
-      "   pulse, N = {} levels: mean velocity {} omega L, {} times the sine's{}\n",
-      pulse.drive.levels, Num(pulse.mean_velocity, 4),
-      fmt::format("{:.2f}", pulse.mean_velocity / sine),
-      pulse.robust_to_settings ? "" : " (CAUTION: not robust to the settings)");
+  std::string t =
+      fmt::format("   pulse, N = {} levels: mean velocity {} omega L, {} times the sine's{}\n",
+                  pulse.drive.levels, Num(pulse.mean_velocity, 4),
+                  fmt::format("{:.2f}", pulse.mean_velocity / sine),
+                  pulse.robust_to_settings ? "" : " (CAUTION: not robust to the settings)");
   t += fmt::format("    force            {}\n", ForceFormula(pulse.forcing));
   t += fmt::format("    inner mass ratio alpha = {}\n", Num(pulse.alpha, 5));
   t += fmt::format("    from rest        {}\n", pulse.summary);
-  return t + "   (a longer search: capsubot optimize --problem reach --harmonics K, or --waveform\n"
-             "   pulse --pulse-levels N; docs/reach.md)\n";
+  return t +
+         "   (a longer search: capsubot optimize --problem reach --harmonics K, or --waveform\n"
+         "   pulse --pulse-levels N; docs/reach.md)\n";
 }
 
 // 2.-5. and the summary: the robust gait, the fastest motion from rest, the fastest drives, the
@@ -282,10 +283,11 @@ std::string LadderText(const std::vector<ReachResult>& ladder) {
   std::string t = "  best drive by number of harmonics (max |F| <= the same bound):\n";
   const double sine = ladder.front().mean_velocity;
   for (const ReachResult& step : ladder) {
-    t += fmt::format("    K = {:<2}          mean velocity {:.6g} omega L, {:.3g} times the sine; "
-                     "{}\n",
-                     step.drive.sine() ? 1 : step.drive.harmonics, step.mean_velocity,
-                     step.mean_velocity / sine, step.summary);
+    t += fmt::format(
+        "    K = {:<2}          mean velocity {:.6g} omega L, {:.3g} times the sine; "
+        "{}\n",
+        step.drive.sine() ? 1 : step.drive.harmonics, step.mean_velocity, step.mean_velocity / sine,
+        step.summary);
   }
   return t;
 }
@@ -294,10 +296,13 @@ std::string Text(const ReachJobResult& r) {
   const Params& p = r.params;
   const ReachResult& reach = r.reach;
   return fmt::format(
-      "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait (margins "
-      "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  {}\n{}",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.rho_max,
-      OptimizeStatusName(reach.status), reach.message, ReachText(reach)) + LadderText(r.ladder);
+             "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait "
+             "(margins "
+             "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  "
+             "{}\n{}",
+             p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.rho_max,
+             OptimizeStatusName(reach.status), reach.message, ReachText(reach)) +
+         LadderText(r.ladder);
 }
 
 std::string Text(const ProblemJobResult& pr) {

@@ -215,7 +215,8 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNoFile) {
        "capsubot continue: error: parameter = b2 is invalid for this force: expected a_k or b_k "
        "with 1 <= k <= K = 1, its harmonics\n"},
       {"continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.3 --to 0.2",
-       "capsubot continue: error: --to = 0.2 is invalid: expected a finite number > --from = 0.3\n"},
+       "capsubot continue: error: --to = 0.2 is invalid: expected a finite number > --from = "
+       "0.3\n"},
       {"continue " + kSmallOrbit + " --from-orbit --param alpha --from 0.2 --to 0.25",
        "capsubot continue: error: the robot's alpha = 0.2792869076315278 is outside the range: "
        "expected --from = 0.2 <= alpha <= --to = 0.25 (the branch starts at the robot's value)\n"},

@@ -164,9 +164,9 @@ TEST(ContinuationEdges, BranchOfConstantSpeedHasNoSpeedExtremum) {
   const Orbit o = OrbitAt(kA, kPhi0);
   ContinuationOptions opt = Range(-20.0, 20.0, kPhi0);
   opt.max_points = 400;
-  const Branch b = ContinueParameter(Forcing::Harmonic(kA, testing::kC, kPhi0),
-                                     testing::OrbitParams(), o.alpha, "phi0",
-                                     AfterImpact(o, kPhi0), opt);
+  const Branch b =
+      ContinueParameter(Forcing::Harmonic(kA, testing::kC, kPhi0), testing::OrbitParams(), o.alpha,
+                        "phi0", AfterImpact(o, kPhi0), opt);
   ASSERT_EQ(b.status, ContinuationStatus::kOk);
   ASSERT_GE(b.points.size(), 100u);
   for (const BranchPoint& p : b.points) {
@@ -180,8 +180,9 @@ TEST(ContinuationEdges, BranchOfConstantSpeedHasNoSpeedExtremum) {
 TEST(ContinuationEdges, BranchEndingAtAWallEndsAtItsGrazingWhateverTheSteps) {
   // The one-impact family of A = 0.2, c = 0.03 in alpha: its free flight touches the left wall
   // at the lower end and the right wall at the upper end (`continue ... --from-orbit`).
-  const Family f{ComputeOrbit(Forcing::Harmonic(0.2, 0.03, -2.57993980854766), Params{1.0, 1.0, 0.0}),
-                 Params{1.0, 1.0, 0.0}, "alpha"};
+  const Family f{
+      ComputeOrbit(Forcing::Harmonic(0.2, 0.03, -2.57993980854766), Params{1.0, 1.0, 0.0}),
+      Params{1.0, 1.0, 0.0}, "alpha"};
   ASSERT_TRUE(f.orbit.ok());
   const std::vector<std::vector<double>> steps = {
       {0.01, 1e-7, 0.05}, {0.001, 1e-7, 0.05}, {0.01, 1e-9, 0.01}, {0.01, 1e-7, 0.2}};
@@ -209,7 +210,8 @@ TEST(ContinuationEdges, RobustGaitEndsInT0AndAlphaAtItsLeftWallGrazing) {
   ExpectGrazingEnd(t0, bt, false, Wall::kLeft);
   ExpectMultipliersOfItsSide(t0, bt, false);  // 0.81 stable, not the -419 of straddling ones
   const Family alpha{o, Params{o.T0, o.e, 0.0}, "alpha"};
-  const Branch ba = Follow(alpha, o.alpha, 0.5 * o.alpha, 0.5 * (1.0 + o.alpha), {0.01, 1e-7, 0.05});
+  const Branch ba =
+      Follow(alpha, o.alpha, 0.5 * o.alpha, 0.5 * (1.0 + o.alpha), {0.01, 1e-7, 0.05});
   ASSERT_EQ(ba.status, ContinuationStatus::kOk);
   ExpectOneMotion(ba);  // it once went on past the grazing onto a 1 right + 1 left motion
   ExpectGrazingEnd(alpha, ba, false, Wall::kLeft);

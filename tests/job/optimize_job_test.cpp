@@ -204,8 +204,7 @@ TEST(OptimizeJob, BadOptionsAreRefusedNamingTheParameter) {
   EXPECT_NE(Refusal(job).find("e = 1.5"), std::string::npos);
   job = OptimizeJobOptions{};
   job.mode = MainJob{ReachEffort{}, {0.95, 1.0}};
-  EXPECT_EQ(Refusal(job),
-            "band_levels = 1 is invalid: expected fractions of the speed in (0, 1)");
+  EXPECT_EQ(Refusal(job), "band_levels = 1 is invalid: expected fractions of the speed in (0, 1)");
 }
 
 TEST(OptimizeJob, RunValidatesFirst) {

@@ -85,10 +85,11 @@ TEST(PulseForcing, PiAndPhiAreTheIntegralsOfF) {
   for (double phi0 : {0.0, 2.2}) {
     const Forcing f = Forcing::Pulse(kLevels, kSwitches, phi0);
     for (double phi : {0.3, 1.7, 3.9, kTau, 8.0, 20.0, -3.0}) {
-      const double pi = Quadrature([&](double s) { return G(s + phi0); }, 0.0, phi, phi0, kSwitches);
+      const double pi =
+          Quadrature([&](double s) { return G(s + phi0); }, 0.0, phi, phi0, kSwitches);
       // Cauchy's formula: Phi(phi) = integral_0^phi (phi - s) F(s) ds.
-      const double Phi = Quadrature([&](double s) { return (phi - s) * G(s + phi0); }, 0.0, phi,
-                                    phi0, kSwitches);
+      const double Phi =
+          Quadrature([&](double s) { return (phi - s) * G(s + phi0); }, 0.0, phi, phi0, kSwitches);
       EXPECT_TRUE(Near(f.Pi(phi), pi, kQuadratureTol)) << phi;
       EXPECT_TRUE(Near(f.Phi(phi), Phi, kQuadratureTol * std::max(1.0, std::abs(phi)))) << phi;
       const ForceValues w = f.Values(phi);
@@ -198,22 +199,33 @@ TEST(PulseForcing, BadInputIsRefusedWithItsRule) {
   EXPECT_EQ(InvalidArgumentMessage(
                 [] { Forcing::Pulse(std::vector<double>(17, 0.1), std::vector<double>(17), 0.0); }),
             "levels: N = 17 is invalid: expected 1 <= N <= 16 levels of the pulse force");
-  EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0, 2.0}, {0.5}, 0.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([] {
+              Forcing::Pulse({1.0, 2.0}, {0.5}, 0.0);
+            }),
             "switches: 1 phases given for 2 levels: expected one switch phase per level");
-  EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0, NAN}, {0.5, 1.0}, 0.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([] {
+              Forcing::Pulse({1.0, NAN}, {0.5, 1.0}, 0.0);
+            }),
             "levels: L_2 = nan is invalid: expected a finite number");
-  EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0, 2.0}, {0.5, 7.0}, 0.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([] {
+              Forcing::Pulse({1.0, 2.0}, {0.5, 7.0}, 0.0);
+            }),
             "switches: s_2 = 7 is invalid: expected 0 <= s < 2 pi (phases in radians)");
-  EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0, 2.0}, {-0.1, 1.0}, 0.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([] {
+              Forcing::Pulse({1.0, 2.0}, {-0.1, 1.0}, 0.0);
+            }),
             "switches: s_1 = -0.1 is invalid: expected 0 <= s < 2 pi (phases in radians)");
-  EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0, 2.0}, {1.0, 1.0}, 0.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([] {
+              Forcing::Pulse({1.0, 2.0}, {1.0, 1.0}, 0.0);
+            }),
             "switches: s_2 = 1 is invalid: expected it above s_1 = 1 (switch phases strictly "
             "increasing)");
   EXPECT_EQ(InvalidArgumentMessage([] { Forcing::Pulse({1.0}, {1.0}, NAN); }),
             "phi0 = nan is invalid: expected a finite number");
   const Forcing f = Forcing::Pulse({1.0, 2.0}, {0.5, 1.0}, 0.0);
-  EXPECT_EQ(InvalidArgumentMessage([&] { f.WithSine(1, 0.2); }),
-            "b_1 is invalid for a pulse force: it has levels and switches, no Fourier coefficients");
+  EXPECT_EQ(
+      InvalidArgumentMessage([&] { f.WithSine(1, 0.2); }),
+      "b_1 is invalid for a pulse force: it has levels and switches, no Fourier coefficients");
   EXPECT_EQ(InvalidArgumentMessage([&] { f.WithMean(INFINITY); }),
             "c = inf is invalid: expected a finite number");
   EXPECT_TRUE(std::isnan(f.amplitude()));

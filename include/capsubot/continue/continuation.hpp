@@ -121,7 +121,7 @@ struct SpecialPoint {
   /// The motion at the located point (for a grazing or segment change: the last point on the
   /// side of the branch's earlier points).
   PeriodicMotion motion;
-  int after_point = -1;  ///< index into Branch::points of the point just before it
+  int after_point = -1;     ///< index into Branch::points of the point just before it
   Wall wall = Wall::kNone;  ///< a grazing's wall
 };
 

@@ -95,10 +95,10 @@ struct OptimizeJobOptions {
 /// The main job's results (MainJob).
 struct MainJobResult {
   Params params;
-  GaitRequirements gait;      ///< the force bound (T0 when not given) and rho_max
-  OptimizeResult paper;       ///< P1 at c = A = T0/2, no margins
-  OptimizeResult robust;      ///< P2 with the margins (its from-rest check: reach.seed)
-  ReachResult reach;          ///< the fastest motion from rest (of the sine)
+  GaitRequirements gait;  ///< the force bound (T0 when not given) and rho_max
+  OptimizeResult paper;   ///< P1 at c = A = T0/2, no margins
+  OptimizeResult robust;  ///< P2 with the margins (its from-rest check: reach.seed)
+  ReachResult reach;      ///< the fastest motion from rest (of the sine)
   /// The fastest Fourier drives under the same bound: K = 1 (the sine: `reach`), 2, ...,
   /// drive_harmonics.
   std::vector<ReachResult> drives;
@@ -124,7 +124,7 @@ struct ProblemJobResult {
 /// The reach problem's result.
 struct ReachJobResult {
   Params params;
-  double rho_max;  ///< the seed's stability requirement
+  double rho_max;     ///< the seed's stability requirement
   ReachResult reach;  ///< the winner of the family asked for
   /// A Fourier drive's ladder: the winners of K = 1 (the sine), 2, ..., K; a pulse drive's: the
   /// sine's winner and the pulse's; empty for the sine.

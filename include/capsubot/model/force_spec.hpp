@@ -21,8 +21,9 @@ struct ForceSpec {
   /// "sine" (A, c), "fourier" (sin, cos, c) or "pulse" (levels, switches); absent: the kind
   /// the parts given name.
   std::optional<std::string> waveform = std::nullopt;
-  std::optional<std::vector<double>> levels = std::nullopt;    ///< the pulse force's levels L_1..L_N
-  std::optional<std::vector<double>> switches = std::nullopt;  ///< its switching phases s_1..s_N [rad]
+  std::optional<std::vector<double>> levels = std::nullopt;  ///< the pulse force's levels L_1..L_N
+  std::optional<std::vector<double>> switches =
+      std::nullopt;  ///< its switching phases s_1..s_N [rad]
 
   /// The force. Throws std::invalid_argument naming what is missing or contradictory: A with
   /// sin, cos without sin, an empty series, no A and no sin, no c, (with `need_phase`) no phi0,

@@ -23,7 +23,7 @@ class PulsePieces;
 }
 
 inline constexpr double kTau = 6.283185307179586476925286766559;  ///< the period 2*pi
-inline constexpr int kMaxHarmonics = 16;  ///< largest K a Forcing holds (no allocation)
+inline constexpr int kMaxHarmonics = 16;    ///< largest K a Forcing holds (no allocation)
 inline constexpr int kMaxPulseLevels = 16;  ///< largest N a pulse Forcing holds (no allocation)
 
 /// Largest |phase| [rad] an input phase may have (the motor phase phi0 of a force, a range or
@@ -210,9 +210,9 @@ class Forcing {
   bool harmonic() const { return N_ == 0 && (K_ == 0 || (K_ == 1 && a_[0] == 0.0)); }
   /// A of the paper's family: the amplitude of the first harmonic (NaN for a pulse force).
   double amplitude() const;
-  bool pulse() const { return N_ > 0; }              ///< true for a piecewise-constant force
-  int pulse_levels() const { return N_; }            ///< N (0 for a Fourier force)
-  double level(int j) const { return levels_[j]; }   ///< L_j, j = 0..N-1
+  bool pulse() const { return N_ > 0; }             ///< true for a piecewise-constant force
+  int pulse_levels() const { return N_; }           ///< N (0 for a Fourier force)
+  double level(int j) const { return levels_[j]; }  ///< L_j, j = 0..N-1
   double switch_phase(int j) const { return switches_[j]; }  ///< s_j [rad], j = 0..N-1
 
   double F(double phi) const;    ///< force at phase phi (phi = 0 is the impact)

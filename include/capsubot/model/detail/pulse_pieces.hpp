@@ -38,7 +38,7 @@ class PulsePieces {
   static Turns Reduce(double s);
   int Piece(double r) const;  // the piece holding r in [0, tau)
 
-  int n_ = 0;  // pieces: start_[0] = 0 < start_[1] < ... < start_[n-1] < tau
+  int n_ = 0;                   // pieces: start_[0] = 0 < start_[1] < ... < start_[n-1] < tau
   bool origin_switch_ = false;  // whether the origin is a switch of the force
   std::array<double, kMaxPulseLevels + 1> start_{}, level_{}, pi_{}, phi_{};
   double pi_tau_ = 0.0, phi_tau_ = 0.0;  // Pi(tau), Phi(tau)
