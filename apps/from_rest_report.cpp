@@ -69,7 +69,7 @@ void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
 
 void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--drive-evaluations", o.drive_evaluations,
-                 "from-rest evaluations of the global stage (controlled random search) of each "
+                 "from-rest evaluations of the global stage (Halton points of the box) of each "
                  "Fourier drive K >= 2 (--harmonics), >= 1")
       ->capture_default_str();
   cmd.add_option("--drive-polishes", o.drive_polishes,

@@ -103,20 +103,17 @@ void BindBasins(py::module_& m) {
       std::string(kBasinsDoc) + kForcingArgsDoc + kModelArgsDoc + kBasinsArgsDoc + kUnits;
   const MotionOptions mo;
   const VelocityPlane velocity;
-  m.def("basins", &BasinsDict, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
-        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
-        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
-        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"),
-        py::arg("starts") = kDefaultBasinStarts, py::arg("plane") = StartPlaneName(RestPlane{}),
-        py::arg("psi") = velocity.psi, py::arg("u_min") = velocity.u_min,
-        py::arg("u_max") = velocity.u_max, py::arg("transient") = mo.transient,
-        py::arg("record") = mo.record, py::arg("max_period") = mo.max_period,
-        py::arg("state_tolerance") = mo.state_tolerance,
-        py::arg("converged_tolerance") = mo.converged_tolerance,
-        py::arg("chatter_velocity") = mo.chatter_velocity,
-        py::arg("max_events_per_period") = mo.max_events_per_period,
-        py::arg("threads") = AttractorOptions{}.threads);
+  DefRobotFunction(m, "basins", &BasinsDict, doc.c_str(), py::arg("alpha"),
+                   py::arg("starts") = kDefaultBasinStarts,
+                   py::arg("plane") = StartPlaneName(RestPlane{}), py::arg("psi") = velocity.psi,
+                   py::arg("u_min") = velocity.u_min, py::arg("u_max") = velocity.u_max,
+                   py::arg("transient") = mo.transient, py::arg("record") = mo.record,
+                   py::arg("max_period") = mo.max_period,
+                   py::arg("state_tolerance") = mo.state_tolerance,
+                   py::arg("converged_tolerance") = mo.converged_tolerance,
+                   py::arg("chatter_velocity") = mo.chatter_velocity,
+                   py::arg("max_events_per_period") = mo.max_events_per_period,
+                   py::arg("threads") = AttractorOptions{}.threads);
 }
 
 }  // namespace capsubot::python

@@ -116,20 +116,16 @@ void BindBifurcation(py::module_& m) {
       std::string(kBifurcationDoc) + kForcingArgsDoc + kModelArgsDoc + kBifurcationArgsDoc + kUnits;
   const BifurcationOptions o;
   const MotionOptions& mo = o.motion;
-  m.def("bifurcation", &BifurcationDict, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
-        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
-        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
-        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
-        py::arg("param"), py::arg("from_"), py::arg("to"), py::arg("steps") = o.steps,
-        py::arg("direction") = "both", py::arg("start") = std::make_pair(o.start.x, o.start.psi),
-        py::arg("over") = py::none(), py::arg("no_analytic").noconvert() = false,
-        py::arg("transient") = mo.transient, py::arg("record") = mo.record,
-        py::arg("max_period") = mo.max_period, py::arg("state_tolerance") = mo.state_tolerance,
-        py::arg("converged_tolerance") = mo.converged_tolerance,
-        py::arg("chatter_velocity") = mo.chatter_velocity,
-        py::arg("max_events_per_period") = mo.max_events_per_period,
-        py::arg("threads") = o.threads);
+  DefRobotFunction(
+      m, "bifurcation", &BifurcationDict, doc.c_str(), py::arg("alpha") = py::none(),
+      py::arg("param"), py::arg("from_"), py::arg("to"), py::arg("steps") = o.steps,
+      py::arg("direction") = "both", py::arg("start") = std::make_pair(o.start.x, o.start.psi),
+      py::arg("over") = py::none(), py::arg("no_analytic").noconvert() = false,
+      py::arg("transient") = mo.transient, py::arg("record") = mo.record,
+      py::arg("max_period") = mo.max_period, py::arg("state_tolerance") = mo.state_tolerance,
+      py::arg("converged_tolerance") = mo.converged_tolerance,
+      py::arg("chatter_velocity") = mo.chatter_velocity,
+      py::arg("max_events_per_period") = mo.max_events_per_period, py::arg("threads") = o.threads);
 }
 
 }  // namespace capsubot::python

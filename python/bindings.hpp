@@ -21,6 +21,7 @@
 #include "capsubot/model/force_spec.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
+#include "capsubot/model/params.hpp"
 
 namespace capsubot::python {
 
@@ -174,5 +175,17 @@ inline constexpr const char* kMarginArgsDoc =
     "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (capsubot\n"
     "            documentation, model section 12)\n"
     "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
+
+/// Defines the module function `name` with keyword-only arguments: the force (A, c, phi0, cos,
+/// sin, waveform, levels, switches: kForcingArgsDoc), the model (T0, e: kModelArgsDoc), then
+/// `rest` (alpha and the function's own), every function that takes a robot alike.
+template <typename Func, typename... Rest>
+void DefRobotFunction(py::module_& m, const char* name, Func&& f, const char* doc, Rest&&... rest) {
+  m.def(name, std::forward<Func>(f), doc, py::kw_only(), py::arg("A") = py::none(),
+        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
+        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, std::forward<Rest>(rest)...);
+}
 
 }  // namespace capsubot::python

@@ -206,19 +206,16 @@ void BindContinuation(py::module_& m) {
   const std::string doc =
       std::string(kContinueDoc) + kForcingArgsDoc + kModelArgsDoc + kContinueArgsDoc + kUnits;
   const ContinuationOptions o;
-  m.def("continue_branch", &ContinueBranchDict, doc.c_str(), py::kw_only(),
-        py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("phi0") = py::none(),
-        py::arg("cos") = py::none(), py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
-        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"), py::arg("param"),
-        py::arg("from_"), py::arg("to"), py::arg("x0") = py::none(), py::arg("u0") = py::none(),
-        py::arg("v0") = py::none(), py::arg("psi") = py::none(), py::arg("from_orbit") = false,
-        py::arg("switch").noconvert() = false, py::arg("param2") = py::none(),
-        py::arg("from2") = py::none(), py::arg("to2") = py::none(), py::arg("follow") = py::none(),
-        py::arg("max_points") = o.max_points, py::arg("initial_step") = o.initial_step,
-        py::arg("min_step") = o.min_step, py::arg("max_step") = o.max_step,
-        py::arg("max_period") = o.shooting.max_period, py::arg("step") = o.shooting.step,
-        py::arg("chatter_velocity") = o.shooting.chatter_velocity);
+  DefRobotFunction(
+      m, "continue_branch", &ContinueBranchDict, doc.c_str(), py::arg("alpha"), py::arg("param"),
+      py::arg("from_"), py::arg("to"), py::arg("x0") = py::none(), py::arg("u0") = py::none(),
+      py::arg("v0") = py::none(), py::arg("psi") = py::none(), py::arg("from_orbit") = false,
+      py::arg("switch").noconvert() = false, py::arg("param2") = py::none(),
+      py::arg("from2") = py::none(), py::arg("to2") = py::none(), py::arg("follow") = py::none(),
+      py::arg("max_points") = o.max_points, py::arg("initial_step") = o.initial_step,
+      py::arg("min_step") = o.min_step, py::arg("max_step") = o.max_step,
+      py::arg("max_period") = o.shooting.max_period, py::arg("step") = o.shooting.step,
+      py::arg("chatter_velocity") = o.shooting.chatter_velocity);
 }
 
 }  // namespace capsubot::python

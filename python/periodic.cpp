@@ -97,16 +97,12 @@ void BindPeriodic(py::module_& m) {
   const std::string doc =
       std::string(kPeriodicDoc) + kForcingArgsDoc + kModelArgsDoc + kPeriodicArgsDoc + kUnits;
   const ShootingOptions so;
-  m.def("periodic", &Periodic, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
-        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
-        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
-        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha"),
-        py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
-        py::arg("psi") = py::none(), py::arg("from_rest") = py::none(),
-        py::arg("transient") = py::none(), py::arg("period") = py::none(),
-        py::arg("max_period") = so.max_period, py::arg("step") = so.step,
-        py::arg("chatter_velocity") = so.chatter_velocity);
+  DefRobotFunction(m, "periodic", &Periodic, doc.c_str(), py::arg("alpha"),
+                   py::arg("x0") = py::none(), py::arg("u0") = py::none(),
+                   py::arg("v0") = py::none(), py::arg("psi") = py::none(),
+                   py::arg("from_rest") = py::none(), py::arg("transient") = py::none(),
+                   py::arg("period") = py::none(), py::arg("max_period") = so.max_period,
+                   py::arg("step") = so.step, py::arg("chatter_velocity") = so.chatter_velocity);
 }
 
 }  // namespace capsubot::python

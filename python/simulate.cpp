@@ -226,18 +226,15 @@ void BindSimulate(py::module_& m) {
   const SimOptions defaults;
   const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc +
                           kModelArgsDoc + kSimulateStateDoc + kUnits;
-  m.def("simulate", &Simulate, doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
-        py::arg("c") = py::none(), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
-        py::arg("sin") = py::none(), py::arg("waveform") = py::none(),
-        py::arg("levels") = py::none(), py::arg("switches") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("alpha") = py::none(),
-        py::arg("x0") = py::none(), py::arg("u0") = py::none(), py::arg("v0") = py::none(),
-        py::arg("y0") = defaults.y0, py::arg("from_orbit").noconvert() = false,
-        py::arg("periods") = defaults.periods, py::arg("transient") = defaults.transient,
-        py::arg("chatter_velocity") = defaults.chatter_velocity,
-        py::arg("max_events_per_period") = defaults.max_events_per_period,
-        py::arg("events").noconvert() = false, py::arg("trajectory").noconvert() = false,
-        py::arg("samples_per_period") = SimulateJobOptions{}.samples_per_period);
+  DefRobotFunction(m, "simulate", &Simulate, doc.c_str(), py::arg("alpha") = py::none(),
+                   py::arg("x0") = py::none(), py::arg("u0") = py::none(),
+                   py::arg("v0") = py::none(), py::arg("y0") = defaults.y0,
+                   py::arg("from_orbit").noconvert() = false, py::arg("periods") = defaults.periods,
+                   py::arg("transient") = defaults.transient,
+                   py::arg("chatter_velocity") = defaults.chatter_velocity,
+                   py::arg("max_events_per_period") = defaults.max_events_per_period,
+                   py::arg("events").noconvert() = false, py::arg("trajectory").noconvert() = false,
+                   py::arg("samples_per_period") = SimulateJobOptions{}.samples_per_period);
 }
 
 }  // namespace capsubot::python
