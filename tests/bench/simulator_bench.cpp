@@ -87,24 +87,19 @@ void BM_SimulateFourierOrbit100Periods(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulateFourierOrbit100Periods);
 
-// A chattering motion: the main job's robot ("fastest motion from rest": the paper's force at
-// T0 = 1, A = 0.676954732510288, c = 0.323045267489712, phi0 = -3.089378590956282,
-// alpha = 0.9428190586419751) from rest in the middle, 200 + 100 periods, e = state.range(0)/1000
-// (1000: e = 1; 900: e = 0.9), every event searched. About 70 impacts a period end on one wall
-// in a chattering sequence. Counters: events_per_period; items_per_second = periods per second.
-void BM_SimulateChatteringFromRest(benchmark::State& state) {
-  Params params;
-  params.T0 = 1.0;
-  params.e = static_cast<double>(state.range(0)) / 1000.0;
-  const Forcing f = Forcing::Harmonic(0.676954732510288, 0.323045267489712, -3.089378590956282);
+// The robot (f, params, alpha) from rest in the middle, 200 + 100 periods; `reuse` takes the
+// repeated cycles' events again (the default) or searches every event. Counters:
+// events_per_period; items_per_second = periods per second.
+void SimulateFromRest(benchmark::State& state, const Forcing& f, const Params& params, double alpha,
+                      bool reuse) {
   capsubot::SimOptions opt;
-  opt.alpha = 0.9428190586419751;
+  opt.alpha = alpha;
   opt.x0 = 0.5;
   opt.u0 = 0.0;
   opt.v0 = 0.0;
   opt.transient = 200.0;
   opt.periods = 100.0;
-  opt.reuse_cycles = false;
+  opt.reuse_cycles = reuse;
   constexpr double kPeriods = 300.0;
   double sum = 0.0, events = 0.0;
   for (auto _ : state) {
@@ -116,36 +111,31 @@ void BM_SimulateChatteringFromRest(benchmark::State& state) {
   state.counters["events_per_period"] = events / kPeriods;
   state.SetItemsProcessed(static_cast<int64_t>(static_cast<double>(state.iterations()) * kPeriods));
 }
+
+// A chattering motion: the main job's robot ("fastest motion from rest": the paper's force at
+// T0 = 1, A = 0.676954732510288, c = 0.323045267489712, phi0 = -3.089378590956282,
+// alpha = 0.9428190586419751), e = state.range(0)/1000 (1000: e = 1; 900: e = 0.9), every event
+// searched. About 70 impacts a period end on one wall in a chattering sequence.
+void BM_SimulateChatteringFromRest(benchmark::State& state) {
+  Params params;
+  params.T0 = 1.0;
+  params.e = static_cast<double>(state.range(0)) / 1000.0;
+  SimulateFromRest(state,
+                   Forcing::Harmonic(0.676954732510288, 0.323045267489712, -3.089378590956282),
+                   params, 0.9428190586419751, false);
+}
 BENCHMARK(BM_SimulateChatteringFromRest)->Arg(1000)->Arg(900)->Unit(benchmark::kMillisecond);
 
 // A pulse force (docs/model.md section 15): 0.3 for a motor phase in [0, 1.5), -0.05 for the
-// rest, T0 = 0.1, e = 0.5, alpha = 0.3, from rest in the middle over 300 periods; every start
-// of this robot ends in one period-1 motion of 1 right and 6 left impacts a period
-// (tests/cli/pulse_cli_test.cpp). state.range(0): 1 reuses the repeated cycles (the default),
-// 0 searches every event. Counters: events_per_period; items_per_second = periods per second.
+// rest, T0 = 0.1, e = 0.5, alpha = 0.3; every start of this robot ends in one period-1 motion
+// of 1 right and 6 left impacts a period (tests/cli/pulse_cli_test.cpp). state.range(0): 1
+// reuses the repeated cycles (the default), 0 searches every event.
 void BM_SimulatePulseFromRest(benchmark::State& state) {
   Params params;
   params.T0 = 0.1;
   params.e = 0.5;
-  const Forcing f = Forcing::Pulse({0.3, -0.05}, {0.0, 1.5}, 0.0);
-  capsubot::SimOptions opt;
-  opt.alpha = 0.3;
-  opt.x0 = 0.5;
-  opt.u0 = 0.0;
-  opt.v0 = 0.0;
-  opt.transient = 200.0;
-  opt.periods = 100.0;
-  opt.reuse_cycles = state.range(0) != 0;
-  constexpr double kPeriods = 300.0;
-  double sum = 0.0, events = 0.0;
-  for (auto _ : state) {
-    const capsubot::SimResult r = capsubot::Simulate(f, params, opt);
-    sum += r.displacement;
-    events = static_cast<double>(r.events + r.transient.events);
-  }
-  benchmark::DoNotOptimize(sum);
-  state.counters["events_per_period"] = events / kPeriods;
-  state.SetItemsProcessed(static_cast<int64_t>(static_cast<double>(state.iterations()) * kPeriods));
+  SimulateFromRest(state, Forcing::Pulse({0.3, -0.05}, {0.0, 1.5}, 0.0), params, 0.3,
+                   state.range(0) != 0);
 }
 BENCHMARK(BM_SimulatePulseFromRest)->Arg(0)->Arg(1);
 
