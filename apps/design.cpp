@@ -46,37 +46,57 @@ struct DesignCliOptions {
   std::string shard;  // "K/N", empty: the whole grid
   bool resume = false;
   std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
+  std::string drive;  // --drive: sine, fourier or pulse (empty: no drive design)
+  double force_max = DriveDesignOptions::kNaN;  // --force-max [N]
+  int harmonics = 2;                            // --harmonics (fourier)
+  int pulse_levels = 3;                         // --pulse-levels (pulse)
 };
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point.
+// The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point,
+// "drive" the fastest drive.
 const std::vector<OptionUse> kOptionUses = {
-    {"--from-rest-starts", {"from-rest"}},
-    {"--reach-starts", {"from-rest"}},
-    {"--reach-evaluations", {"from-rest"}},
-    {"--reach-local-evaluations", {"from-rest"}},
-    {"--reach-seconds", {"from-rest"}},
-    {"--threads", {"from-rest", "grid"}},
-    {"--json", {"", "from-rest"}},
-    {"--output", {"", "from-rest", "grid"}},
+    {"--from-rest-starts", {"from-rest", "drive"}},
+    {"--reach-starts", {"from-rest", "drive"}},
+    {"--reach-evaluations", {"from-rest", "drive"}},
+    {"--reach-local-evaluations", {"from-rest", "drive"}},
+    {"--reach-seconds", {"from-rest", "drive"}},
+    {"--threads", {"from-rest", "grid", "drive"}},
+    {"--json", {"", "from-rest", "drive"}},
+    {"--output", {"", "from-rest", "grid", "drive"}},
+    {"--force-max", {"drive"}},
+    {"--harmonics", {"drive"}},
+    {"--pulse-levels", {"drive"}},
+    {"--drive-evaluations", {"drive"}},
+    {"--drive-polishes", {"drive"}},
+    {"--drive-local-evaluations", {"drive"}},
+    {"--drive-refine-evaluations", {"drive"}},
+    {"--drive-screens", {"drive"}},
     {"--shard", {"grid"}},
     {"--resume", {"grid"}},
     {"--band-levels", {"", "from-rest"}},
 };
 
 std::string RunOf(const DesignCliOptions& opt) {
+  if (!opt.drive.empty()) return "drive";
   if (!opt.grids.empty()) return "grid";
   return opt.part_b ? "from-rest" : "";
 }
 
 std::string RunName(const std::string& run) {
   if (run == "grid") return "--grid";
+  if (run == "drive") return "--drive";
   return run.empty() ? "one design (no --from-rest, no --grid)" : "--from-rest";
 }
 
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
 void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   const std::string run = RunOf(opt);
+  if (!opt.drive.empty() && (opt.part_b || !opt.grids.empty())) {
+    throw std::invalid_argument(fmt::format(
+        "{} is invalid with --drive: expected one of them (--drive searches the force itself)",
+        opt.part_b ? "--from-rest" : "--grid"));
+  }
   if (!opt.grids.empty() && opt.part_b) {
     throw std::invalid_argument(
         "--from-rest is invalid with --grid: expected one of them (a grid writes the "
@@ -212,17 +232,40 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
   return 0;
 }
 
+// The fastest drive: its family, the motor's peak, the search's starts and budgets.
+DesignDriveMode DriveMode(const DesignCliOptions& opt) {
+  DesignDriveMode mode;
+  DriveDesignOptions& d = mode.options;
+  if (opt.drive == "fourier") d.drive = DriveFamily::Fourier(opt.harmonics);
+  if (opt.drive == "pulse") d.drive = DriveFamily::Pulse(opt.pulse_levels);
+  if (opt.drive == "sine") d.drive = DriveFamily{};
+  d.force_max = opt.force_max;
+  d.effort = opt.from_rest.Effort();
+  d.check = opt.from_rest.Check();
+  d.effort.max_seconds = opt.from_rest.reach_seconds;
+  return mode;
+}
+
 int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   RejectUnusedOptions(opt, cmd);
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
   Settings settings;
   DesignJobOptions options;
-  options.input = BuildDesignInput(opt.config, {}, &settings);
-  DesignOneMode one;
-  if (opt.part_b) one.from_rest = FromRestPart(opt.from_rest);
-  one.band_levels = opt.band_levels;
-  ShowProgress(options, one);
-  options.mode = std::move(one);
+  options.input = BuildDesignInput(opt.config, {}, &settings, opt.drive.empty());
+  if (!opt.drive.empty()) {
+    if (std::isnan(opt.force_max)) {
+      throw std::invalid_argument(
+          "setting force-max is missing: --drive needs the motor's peak force, give --force-max");
+    }
+    options.mode = DriveMode(opt);
+    if (ProgressShown()) options.on_stage = [](const std::string& text) { ShowStage(text); };
+  } else {
+    DesignOneMode one;
+    if (opt.part_b) one.from_rest = FromRestPart(opt.from_rest);
+    one.band_levels = opt.band_levels;
+    ShowProgress(options, one);
+    options.mode = std::move(one);
+  }
   CheckResultOutput(opt.output);
   const DesignJobResult r = RunDesignJob(options);
   if (opt.json) {
@@ -258,6 +301,23 @@ Command AddDesignCommand(CLI::App& app) {
   cmd->add_flag("--from-rest", opt->part_b,
                 "also find the fastest motion reached from rest in each direction (part b, "
                 "simulated: a few seconds; sized by the options below)");
+  cmd->add_option("--drive", opt->drive,
+                  "instead of the one-impact design, the fastest drive from rest: the force's "
+                  "waveform (sine: A sin + c; fourier: --harmonics K; pulse: --pulse-levels N "
+                  "constant levels), the motor frequency over --frequency-range and the inner "
+                  "mass over --m2-range, under the motor's peak --force-max, in each direction "
+                  "(docs/design.md, \"The fastest drive\"); no --force-* settings")
+      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
+  cmd->add_option("--force-max", opt->force_max,
+                  "with --drive: the motor's peak force max |F_N| [N], > 0");
+  cmd->add_option("--harmonics", opt->harmonics,
+                  "with --drive fourier: harmonics K of the drive, 1 <= K <= 16 (the search "
+                  "climbs K = 1, 2, ..., K)")
+      ->capture_default_str();
+  cmd->add_option("--pulse-levels", opt->pulse_levels,
+                  "with --drive pulse: constant levels N of the drive, 2 <= N <= 16")
+      ->capture_default_str();
+  AddDriveBudgetOptions(*cmd, opt->from_rest);
   cmd->add_option("--band-levels", opt->band_levels,
                   "the levels of the gait's speed bands, fractions of the speed from rest in "
                   "(0, 1), comma-separated: how far mu, e and m2 move, each way, before the mean "
@@ -302,7 +362,15 @@ Command AddDesignCommand(CLI::App& app) {
                       "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
                       "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
-  static const FlagNames kFlags = {{"band_levels", "--band-levels"}};
+  static const FlagNames kFlags = {{"band_levels", "--band-levels"},
+                                   {"force_max", "--force-max"},
+                                   {"harmonics", "--harmonics"},
+                                   {"levels", "--pulse-levels"},
+                                   {"drive_evaluations", "--drive-evaluations"},
+                                   {"drive_polishes", "--drive-polishes"},
+                                   {"drive_local_evaluations", "--drive-local-evaluations"},
+                                   {"drive_refine_evaluations", "--drive-refine-evaluations"},
+                                   {"drive_screens", "--drive-screens"}};
   return {cmd, [opt, cmd] { return RunNamingFlags(kFlags, [&] { return Run(*opt, *cmd); }); },
           [opt] { return !opt->grids.empty(); }};
 }

@@ -591,7 +591,8 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& o) {
 }
 
 DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<DesignGridAxis>& grid,
-                             std::vector<std::pair<std::string, std::string>>* settings) {
+                             std::vector<std::pair<std::string, std::string>>* settings,
+                             bool motor_force) {
   DesignInput in;
   std::set<std::string> given = ReadConfigFile(o.config, in);
   std::set<std::string> from_flags;
@@ -604,10 +605,22 @@ DesignInput BuildDesignInput(const DesignConfigOptions& o, const std::vector<Des
   CheckExclusive(from_flags, "as flags");
   given.insert(from_flags.begin(), from_flags.end());
   for (const DesignGridAxis& axis : grid) SetFromGrid(axis, o, from_flags, in, given);
+  if (!motor_force) {
+    for (const char* name : {"force-amplitude", "force-bias", "force-cos", "force-sin"}) {
+      if (given.count(name) > 0) {
+        throw std::invalid_argument(fmt::format(
+            "setting {} is invalid with --drive: expected no motor force (the drive search "
+            "chooses it; give the motor's peak with --force-max)",
+            name));
+      }
+    }
+    in.force = MotorForce{0.0, 0.0, {}, {}};
+  }
   // Every missing setting named at once: "setting L is missing: ..." or "settings L, mu and
   // e are missing: give --L, --mu and --e (or L, mu and e in the --config file)".
   std::vector<std::string> missing, flags, keys;
   for (const auto& group : kRequired) {
+    if (!motor_force && std::string(group.front()).rfind("force", 0) == 0) continue;
     bool any = false;
     for (const char* name : group) any = any || given.count(name) > 0;
     if (!any) {

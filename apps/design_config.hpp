@@ -33,8 +33,11 @@ void AddDesignConfigOptions(CLI::App& cmd, DesignConfigOptions& options);
 /// {"--g", "9.81"}, in the table's order, numbers in shortest round-trip form), without the
 /// settings of `grid` (and their alternatives): alone they make the same input, so two runs
 /// of one input name it alike (`--g 9.81` typed or not, `--m1 0.20` or `m1 = 0.2` in a file).
+/// Without `motor_force` (a drive design, which chooses the force) the force settings are
+/// neither required nor accepted, and the input's force is zero.
 DesignInput BuildDesignInput(const DesignConfigOptions& options,
                              const std::vector<DesignGridAxis>& grid = {},
-                             std::vector<std::pair<std::string, std::string>>* settings = nullptr);
+                             std::vector<std::pair<std::string, std::string>>* settings = nullptr,
+                             bool motor_force = true);
 
 }  // namespace capsubot::app

@@ -32,6 +32,8 @@ ReachEffort FromRestCliOptions::Effort() const {
   effort.drive_evaluations = drive_evaluations;
   effort.drive_polishes = drive_polishes;
   effort.drive_local_evaluations = drive_local_evaluations;
+  effort.drive_refine_evaluations = drive_refine_evaluations;
+  effort.drive_screens = drive_screens;
   return effort;
 }
 
@@ -69,8 +71,8 @@ void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
 
 void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--drive-evaluations", o.drive_evaluations,
-                 "from-rest evaluations of the global stage (Halton points of the box) of each "
-                 "Fourier drive K >= 2 (--harmonics), >= 1")
+                 "from-rest evaluations of the first global stage (Halton points of the box) of "
+                 "each Fourier drive K >= 2 (--harmonics) and pulse drive, >= 1")
       ->capture_default_str();
   cmd.add_option("--drive-polishes", o.drive_polishes,
                  "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best "
@@ -78,6 +80,14 @@ void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
       ->capture_default_str();
   cmd.add_option("--drive-local-evaluations", o.drive_local_evaluations,
                  "from-rest evaluations of each of those polishes, >= 0")
+      ->capture_default_str();
+  cmd.add_option("--drive-refine-evaluations", o.drive_refine_evaluations,
+                 "from-rest evaluations of the controlled random search (GN_CRS2_LM) after the "
+                 "Halton points, from the best of them, >= 0")
+      ->capture_default_str();
+  cmd.add_option("--drive-screens", o.drive_screens,
+                 "short local screens (Nelder-Mead, a quarter of a polish's evaluations each) "
+                 "before the polishes, from the best distinct points, >= 0")
       ->capture_default_str();
 }
 

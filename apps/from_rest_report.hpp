@@ -36,7 +36,10 @@ struct FromRestCliOptions {
   int drive_polishes = ReachEffort{}.drive_polishes;               ///< --drive-polishes
   int drive_local_evaluations =
       ReachEffort{}.drive_local_evaluations;  ///< --drive-local-evaluations
-  int threads = 0;                            ///< --threads
+  int drive_refine_evaluations =
+      ReachEffort{}.drive_refine_evaluations;       ///< --drive-refine-evaluations
+  int drive_screens = ReachEffort{}.drive_screens;  ///< --drive-screens
+  int threads = 0;                                  ///< --threads
 
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
   /// naming the option for a bad grid.

@@ -79,6 +79,8 @@ const std::vector<OptionUse> kOptionUses = {
     {"--reach-local-evaluations", {"", "reach"}},
     {"--reach-seconds", {"", "reach"}},
     {"--drive-evaluations", {"reach"}},
+    {"--drive-refine-evaluations", {"reach"}},
+    {"--drive-screens", {"reach"}},
     {"--drive-polishes", {"reach"}},
     {"--drive-local-evaluations", {"reach"}},
     {"--from-rest-csv", {""}},
@@ -112,8 +114,8 @@ void RejectUnusedOptions(const OptimizeCliOptions& opt) {
   const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
   const bool drives = (harmonics->count() > 0 && opt.search.harmonics >= 2) ||
                       opt.waveform == "fourier" || opt.waveform == "pulse";
-  for (const char* name :
-       {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations"}) {
+  for (const char* name : {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations",
+                           "--drive-refine-evaluations", "--drive-screens"}) {
     if (opt.cmd->get_option(name)->count() > 0 && !drives) {
       throw std::invalid_argument(fmt::format(
           "{} conflicts with {} without --harmonics K >= 2 or --waveform pulse: expected {} only "
@@ -438,6 +440,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                                         {"drive_evaluations", "--drive-evaluations"},
                                         {"drive_polishes", "--drive-polishes"},
                                         {"drive_local_evaluations", "--drive-local-evaluations"},
+                                        {"drive_refine_evaluations", "--drive-refine-evaluations"},
+                                        {"drive_screens", "--drive-screens"},
                                         {"harmonics", "--harmonics"},
                                         {"band_levels", "--band-levels"},
                                         {"levels", "--pulse-levels"}};

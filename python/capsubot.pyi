@@ -116,6 +116,8 @@ def optimize(
     drive_evaluations: int = 400,
     drive_polishes: int = 4,
     drive_local_evaluations: int = 150,
+    drive_refine_evaluations: int = 400,
+    drive_screens: int = 16,
     T0_range: tuple[float, float] | None = None,
     threads: int = 0,
 ) -> dict[str, Any]:

@@ -59,8 +59,9 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   std::optional<double> alpha, const std::string& from_rest_starts,
                   const std::string& reach_starts, int reach_evaluations,
                   int reach_local_evaluations, double reach_seconds, int drive_evaluations,
-                  int drive_polishes, int drive_local_evaluations,
-                  std::optional<std::pair<double, double>> T0_range, int threads) {
+                  int drive_polishes, int drive_local_evaluations, int drive_refine_evaluations,
+                  int drive_screens, std::optional<std::pair<double, double>> T0_range,
+                  int threads) {
   const std::string name = problem.value_or("");
   if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
       name != "reach") {
@@ -98,6 +99,8 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   effort.drive_evaluations = drive_evaluations;
   effort.drive_polishes = drive_polishes;
   effort.drive_local_evaluations = drive_local_evaluations;
+  effort.drive_refine_evaluations = drive_refine_evaluations;
+  effort.drive_screens = drive_screens;
   if (name.empty() || name == "reach") {
     const StartGrid grid = ParseStartGrid("reach_starts", reach_starts);
     effort.n_x = grid.n_x;
@@ -161,6 +164,9 @@ constexpr const char* kOptimizeOptionsDoc =
     "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2:\n"
     "            the Halton points of each step K >= 2 (>= 1), its Nelder-Mead polishes (>= 1)\n"
     "            and their evaluations (>= 0)\n"
+    "    drive_refine_evaluations, drive_screens  reach with harmonics >= 2 or a pulse: the\n"
+    "            controlled random search after the Halton points (>= 0) and the short\n"
+    "            Nelder-Mead screens before the polishes (>= 0)\n"
     "    T0_range  reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] (holding T0),\n"
     "            the bound tied to T0, v_mean/sqrt(T0) maximised; frequency in the result\n"
     "Returns a dict. For a problem: the keys of solve for the optimum (A, c, phi0, phi1, "
@@ -209,7 +215,9 @@ void BindOptimize(py::module_& m) {
         py::arg("drive_evaluations") = ReachEffort{}.drive_evaluations,
         py::arg("drive_polishes") = ReachEffort{}.drive_polishes,
         py::arg("drive_local_evaluations") = ReachEffort{}.drive_local_evaluations,
-        py::arg("T0_range") = py::none(), py::arg("threads") = AttractorOptions{}.threads);
+        py::arg("drive_refine_evaluations") = ReachEffort{}.drive_refine_evaluations,
+        py::arg("drive_screens") = ReachEffort{}.drive_screens, py::arg("T0_range") = py::none(),
+        py::arg("threads") = AttractorOptions{}.threads);
 }
 
 }  // namespace capsubot::python

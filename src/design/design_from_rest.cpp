@@ -244,11 +244,18 @@ void DesignFromRestOptions::Validate() const {
 FromRestBest EvaluateFromRest(const DesignInput& in, double m2, double frequency,
                               Direction direction, const FromRestOptions& from_rest) {
   in.Validate();
+  return EvaluateModelFromRest(in, MapToModel(in, m2, frequency), m2, frequency, direction,
+                               from_rest);
+}
+
+FromRestBest EvaluateModelFromRest(const DesignInput& in, const DesignModel& model, double m2,
+                                   double frequency, Direction direction,
+                                   const FromRestOptions& from_rest) {
   FromRestBest b;
   b.direction = direction;
   b.m2_kg = m2;
   b.frequency_hz = frequency;
-  b.model = MapToModel(in, m2, frequency);
+  b.model = model;
   const DesignModel& m = b.model;
   b.attractors = FindAttractors(m.forcing, m.params, m.alpha, from_rest);
   b.mean_velocity = b.attractors.mean_velocity;
@@ -266,7 +273,7 @@ FromRestBest EvaluateFromRest(const DesignInput& in, double m2, double frequency
     b.status = FromRestStatus::kOk;
   }
   b.message = Describe(in, b);
-  if (!b.ok()) return b;
+  if (!b.ok()) return b;  // (its message has no speed to tell)
   // The starts' average budget per period: each attractor's, weighted by its fraction.
   Energy sum{0.0, 0.0, 0.0, 0.0};
   double u = FromRestBest::kNaN;
@@ -286,6 +293,7 @@ FromRestBest EvaluateFromRest(const DesignInput& in, double m2, double frequency
   b.energy = sum;
   const double I = b.mean_velocity * kTau;  // displacement per forcing period [L]
   detail::FillUserUnits(in, m.params.T0, m.omega, b.mean_velocity, I, u, b.energy, b);
+  b.message = Describe(in, b);  // with its speed
   return b;
 }
 

@@ -104,6 +104,19 @@ DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one
   return r;
 }
 
+DesignJobResult RunDrive(const DesignJobOptions& options, const DesignDriveMode& mode) {
+  DesignJobResult r;
+  r.input = options.input;
+  TellStage(options.on_stage,
+            fmt::format("design: the fastest drive from rest, {} (simulated starts; minutes)",
+                        mode.options.drive.Describe()));
+  DriveDesignOptions run = mode.options;
+  run.check.attractor.interrupt = mode.interrupt;
+  r.drive = DesignDrive(options.input, run);
+  TellStage(options.on_stage, "");
+  return r;
+}
+
 DesignJobResult RunGrid(const DesignJobOptions& options, const DesignGridMode& mode) {
   const DesignGridOptions grid = DesignJobGrid(options.input, mode);
   DesignJobResult r;
@@ -184,6 +197,10 @@ void DesignJobOptions::Validate() const {
     RobustnessOf(*one).Validate();
     return;
   }
+  if (const auto* drive = std::get_if<DesignDriveMode>(&mode)) {
+    drive->options.Validate();
+    return;
+  }
   DesignJobGrid(input, std::get<DesignGridMode>(mode)).Validate();
 }
 
@@ -202,6 +219,9 @@ DesignGridOptions DesignJobGrid(const DesignInput& input, const DesignGridMode& 
 DesignJobResult RunDesignJob(const DesignJobOptions& options) {
   options.Validate();
   if (const auto* one = std::get_if<DesignOneMode>(&options.mode)) return RunOne(options, *one);
+  if (const auto* drive = std::get_if<DesignDriveMode>(&options.mode)) {
+    return RunDrive(options, *drive);
+  }
   return RunGrid(options, std::get<DesignGridMode>(options.mode));
 }
 

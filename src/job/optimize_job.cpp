@@ -175,6 +175,8 @@ ReachEffort MainJob::MainJobDriveEffort() {
   e.drive_evaluations = 150;
   e.drive_polishes = 2;
   e.drive_local_evaluations = 80;
+  e.drive_refine_evaluations = 150;
+  e.drive_screens = 4;
   return e;
 }
 

@@ -135,16 +135,26 @@ BoxSearchResult SearchBox(const BoxSearch& search) {
   } else {
     stage("global search", search.global, search.global_evaluations, search.start);
   }
-  const std::vector<BoxPoint> best =
-      BestDistinctPoints(search.seen(), search.infeasible, search.polish_starts,
-                         std::max(search.same, search.polish_apart));
-  for (const BoxPoint& from : best) {
-    stage("local polish", search.local, search.local_evaluations, from.y);
+  if (search.refine_evaluations > 0) {
+    const std::vector<BoxPoint> best =
+        BestDistinctPoints(search.seen(), search.infeasible, 1, search.same);
+    stage("global refine", search.refine, search.refine_evaluations,
+          best.empty() ? search.start : best.front().y);
   }
+  const double apart = std::max(search.same, search.polish_apart);
+  const auto climb = [&](const char* name, int starts, int evaluations) {
+    if (evaluations <= 0) return;
+    for (const BoxPoint& from :
+         BestDistinctPoints(search.seen(), search.infeasible, starts, apart)) {
+      stage(name, search.local, evaluations, from.y);
+    }
+  };
+  climb("local screen", search.screen_starts, search.screen_evaluations);
+  climb("local polish", search.polish_starts, search.local_evaluations);
   // Out of time before its first stage: the search evaluated nothing, and says so.
   if (!ran && out.max_time) out.status = OptimizeStatus::kMaxTime;
-  out.candidates =
-      BestDistinctPoints(search.seen(), search.infeasible, search.candidates, search.same);
+  out.candidates = BestDistinctPoints(search.seen(), search.infeasible, search.candidates,
+                                      std::max(search.same, search.candidates_apart));
   return out;
 }
 

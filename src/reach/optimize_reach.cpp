@@ -21,6 +21,7 @@
 #include "capsubot/optimize/detail/nlopt_box.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
 
 namespace capsubot {
 namespace {
@@ -45,6 +46,7 @@ constexpr double kPolishApart = 0.05;
 // Starting drives besides the robust gait, and local polishes, at most.
 constexpr long long kMaxSeeds = kMaxHarmonics;
 constexpr long long kMaxPolishStarts = 64;
+constexpr long long kMaxScreenStarts = 4 * kMaxPolishStarts;
 // With T0 free: the frequencies at which the first starting drive is scored before the search.
 constexpr int kFrequencyStarts = 5;
 
@@ -64,6 +66,7 @@ struct Context {
   double bound_ratio = 0.0;  // the force bound over T0
   double phi0 = 0.0;
   double fixed_alpha = 0.0;  // NaN: alpha is a coordinate
+  double bound_alpha = 0.0;  // NaN: the bound does not depend on alpha
   double log_T0_min = 0.0;   // NaN: T0 is the robot's
   double log_T0_max = 0.0;
   double penalty = 0.0;
@@ -81,9 +84,14 @@ struct Context {
     if (FreeT0()) p.T0 = std::exp(std::clamp(y[T0Index()], log_T0_min, log_T0_max));
     return p;
   }
-  double BoundAt(double T0) const { return FreeT0() ? bound_ratio * T0 : bound; }
+  // The force bound of the robot at T0 and alpha (ReachOptions::bound_alpha).
+  double BoundAt(double T0, double alpha) const {
+    const double at_T0 = FreeT0() ? bound_ratio * T0 : bound;
+    if (std::isnan(bound_alpha)) return at_T0;
+    return std::min(at_T0 * (1.0 - alpha) / (1.0 - bound_alpha), T0);  // never above friction
+  }
   Forcing ForceAt(const double* y) const {
-    return DriveAt(family, y, BoundAt(ParamsAt(y).T0), phi0);
+    return DriveAt(family, y, BoundAt(ParamsAt(y).T0, AlphaAt(y)), phi0);
   }
   double AlphaAt(const double* y) const {
     return std::isnan(fixed_alpha) ? y[family.Dimension()] : fixed_alpha;
@@ -123,6 +131,11 @@ double SpreadRun(const Forcing& forcing, const Params& params, double alpha,
   return a.event_limit_starts > 0 ? ReachSpread::kNaN : a.mean_velocity;
 }
 
+// |v - mean_velocity| / |mean_velocity|.
+double RelativeChange(double v, double mean_velocity) {
+  return std::abs(v - mean_velocity) / std::abs(mean_velocity);
+}
+
 ReachSpread Spread(const Forcing& forcing, const Params& params, double alpha,
                    const FromRestOptions& check, double mean_velocity) {
   ReachSpread s;
@@ -142,7 +155,7 @@ ReachSpread Spread(const Forcing& forcing, const Params& params, double alpha,
   }
   for (double v : {s.chatter_small, s.chatter_large, s.e_0999}) {
     if (std::isnan(v)) continue;
-    const double d = std::abs(v - mean_velocity) / std::abs(mean_velocity);
+    const double d = RelativeChange(v, mean_velocity);
     s.max_relative_deviation =
         std::isnan(s.max_relative_deviation) ? d : std::max(s.max_relative_deviation, d);
   }
@@ -166,7 +179,7 @@ void SearchBoxOf(const Context& ctx, const ReachOptions& options,
   DriveBox(ctx.family, lower, upper);
   if (std::isnan(options.alpha)) {
     double lo = options.alpha_min, hi = options.alpha_max;
-    for (const DriveSeed& d : starts) {
+    for (const DriveSeed& d : options.widen_alpha_box ? starts : std::vector<DriveSeed>{}) {
       lo = std::min(lo, d.alpha);
       hi = std::max(hi, d.alpha);
     }
@@ -188,7 +201,7 @@ double SeedT0(const Context& ctx, const DriveSeed& d) {
 // when its force is not of the family.
 std::vector<double> PointOf(const Context& ctx, const DriveSeed& d) {
   const double T0 = SeedT0(ctx, d);
-  std::vector<double> y = DriveCoordinates(ctx.family, d.forcing, ctx.BoundAt(T0));
+  std::vector<double> y = DriveCoordinates(ctx.family, d.forcing, ctx.BoundAt(T0, d.alpha));
   if (y.empty()) return y;
   if (std::isnan(ctx.fixed_alpha)) y.push_back(d.alpha);
   if (ctx.FreeT0()) y.push_back(std::log(T0));
@@ -218,12 +231,28 @@ detail::BoxSearchResult Search(Context& ctx, const ReachOptions& options,
   search.global_evaluations = options.global_evaluations;
   search.local_evaluations = options.local_evaluations;
   search.polish_starts = options.polish_starts;
+  search.refine_evaluations = options.refine_evaluations;
+  search.screen_starts = options.screen_starts;
+  search.screen_evaluations = options.screen_evaluations;
+  search.candidates_apart = options.candidates_apart;
   search.rel_tol = options.rel_tol;
   search.infeasible = ctx.penalty;
   search.same = kSamePoint;
   search.polish_apart = kPolishApart;
   search.candidates = std::min(options.candidates, static_cast<int>(kMaxCandidates));
   return detail::SearchBox(search);
+}
+
+// Whether a candidate's mean velocity holds in its spread runs: the chatter cut-offs within
+// max_spread, the nearly elastic robot within max_elastic_change, no event_limit start.
+bool Holds(const ReachSpread& s, double mean_velocity, const ReachOptions& options) {
+  if (s.event_limit_starts > 0) return false;
+  const auto within = [&](double v, double tolerance) {
+    return std::isnan(v) || RelativeChange(v, mean_velocity) <= tolerance;
+  };
+  return within(s.chatter_small, options.max_spread) &&
+         within(s.chatter_large, options.max_spread) &&
+         within(s.e_0999, options.max_elastic_change);
 }
 
 // The first of `candidates` (best first) whose mean velocity holds under the other numerical
@@ -246,7 +275,7 @@ const Candidate* Winner(std::vector<Candidate>& candidates, const Context& ctx,
       best = &c;
       out.spread = spread;
     }
-    if (spread.max_relative_deviation <= options.max_spread) {
+    if (Holds(spread, c.attractors.mean_velocity, options)) {
       best = &c;
       out.spread = spread;
       out.robust_to_settings = true;
@@ -292,11 +321,13 @@ Context ContextOf(const Params& params, const ReachOptions& options, double boun
   ctx.bound_ratio = bound / params.T0;
   ctx.phi0 = phi0;
   ctx.fixed_alpha = options.alpha;
+  ctx.bound_alpha = options.bound_alpha;
   ctx.log_T0_min = std::log(options.T0_min);
   ctx.log_T0_max = std::log(options.T0_max);
   // Below every score: a mean velocity is far below the force bound in units of omega L (the
   // force cannot even move the capsule alone), and v / sqrt(T0) below bound / sqrt(T0_min).
-  const double top_bound = ctx.FreeT0() ? ctx.BoundAt(options.T0_max) : bound;
+  const double top_bound = ctx.BoundAt(ctx.FreeT0() ? options.T0_max : params.T0,
+                                       std::isnan(options.bound_alpha) ? 0.0 : options.alpha_min);
   const double low_root = ctx.FreeT0() ? std::sqrt(std::min(options.T0_min, 1.0)) : 1.0;
   ctx.penalty = kInfeasibleScore * top_bound / low_root;
   ctx.search = options.search;
@@ -313,11 +344,12 @@ std::vector<double> ScoreStarts(Context& ctx, const std::vector<DriveSeed>& star
   for (std::size_t i = 0; i < y0.size(); ++i) y0[i] = 0.5 * (lower[i] + upper[i]);
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const std::vector<double> y = PointOf(ctx, starts[i]);
-    Require(!y.empty(),
-            fmt::format("seeds[{}] is invalid: expected a force of the family ({}) with {} and the "
-                        "seed's motor phase",
-                        i - (have_seed ? 1 : 0), ctx.family.Describe(),
-                        BoundText(ctx.family, ctx.BoundAt(SeedT0(ctx, starts[i])))));
+    Require(
+        !y.empty(),
+        fmt::format("seeds[{}] is invalid: expected a force of the family ({}) with {} and the "
+                    "seed's motor phase",
+                    i - (have_seed ? 1 : 0), ctx.family.Describe(),
+                    BoundText(ctx.family, ctx.BoundAt(SeedT0(ctx, starts[i]), starts[i].alpha))));
     if (i == 0) y0 = y;
     Objective(static_cast<unsigned>(y.size()), y.data(), nullptr, &ctx);
   }
@@ -375,7 +407,7 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
             const std::string& message, bool searched, ReachResult& out) {
   out.forcing = best.forcing;
   out.max_abs_force = out.forcing.MaxAbs();
-  out.force_bound = ctx.BoundAt(best.params.T0);
+  out.force_bound = ctx.BoundAt(best.params.T0, best.alpha);
   out.alpha = best.alpha;
   out.T0 = best.params.T0;
   out.attractors = best.attractors;
@@ -397,8 +429,8 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
                  : "; the time limit came before the search evaluated any drive: only the "
                    "starting drives were compared",
       out.robust_to_settings ? ""
-                             : "; WARNING: no candidate keeps its mean velocity under other "
-                               "numerical settings (see the spread)",
+                             : "; WARNING: no candidate keeps its mean velocity in its spread "
+                               "runs (other chatter cut-offs; e = 0.999 at e = 1)",
       message.empty() ? "" : "; " + message);
 }
 
@@ -436,6 +468,10 @@ void ReachOptions::Validate() const {
                       force_bound));
   Require(std::isnan(alpha) || (alpha > 0.0 && alpha < 1.0),
           fmt::format("alpha = {} is invalid: expected 0 < alpha < 1 (or NaN: free)", alpha));
+  Require(std::isnan(bound_alpha) || (bound_alpha > 0.0 && bound_alpha < 1.0),
+          fmt::format("bound_alpha = {} is invalid: expected 0 < bound_alpha < 1 (or NaN: a bound "
+                      "in units of (m1+m2) omega^2 L)",
+                      bound_alpha));
   Require(alpha_min > 0.0 && alpha_min < alpha_max && alpha_max < 1.0,
           fmt::format("alpha_min = {}, alpha_max = {} are invalid: expected 0 < alpha_min < "
                       "alpha_max < 1",
@@ -454,6 +490,10 @@ void ReachOptions::Validate() const {
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
   Require(std::isfinite(max_spread) && max_spread >= 0.0,
           fmt::format("max_spread = {} is invalid: expected a finite max_spread >= 0", max_spread));
+  Require(std::isfinite(max_elastic_change) && max_elastic_change >= 0.0,
+          fmt::format("max_elastic_change = {} is invalid: expected a finite max_elastic_change "
+                      ">= 0",
+                      max_elastic_change));
   drive.Validate();
   RequireCount("seeds", static_cast<long long>(seeds.size()), 0, kMaxSeeds);
   for (std::size_t i = 0; i < seeds.size(); ++i) {
@@ -462,6 +502,12 @@ void ReachOptions::Validate() const {
         fmt::format("seeds[{}].alpha = {} is invalid: expected 0 < alpha < 1", i, seeds[i].alpha));
   }
   RequireCount("polish_starts", polish_starts, 1, kMaxPolishStarts);
+  RequireCount("refine_evaluations", refine_evaluations, 0, kMaxStageEvaluations);
+  RequireCount("screen_starts", screen_starts, 0, kMaxScreenStarts);
+  RequireCount("screen_evaluations", screen_evaluations, 0, kMaxStageEvaluations);
+  Require(candidates_apart >= 0.0 && candidates_apart < 1.0,
+          fmt::format("candidates_apart = {} is invalid: expected 0 <= candidates_apart < 1",
+                      candidates_apart));
   Require((std::isnan(T0_min) && std::isnan(T0_max)) ||
               (T0_min > 0.0 && T0_min < T0_max && std::isfinite(T0_max)),
           fmt::format("T0_min = {}, T0_max = {} are invalid: expected 0 < T0_min < T0_max, finite "
@@ -552,13 +598,25 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
       if (Clock::now() > deadline) throw TimeUp{};
     };
   }
-  std::vector<DriveSeed> starts = options.seeds;
+  // A hard alpha range leaves out the starting drives outside it.
+  const auto inside = [&options](double alpha) {
+    return options.widen_alpha_box || !std::isnan(options.alpha) ||
+           (options.alpha_min <= alpha && alpha <= options.alpha_max);
+  };
+  std::vector<DriveSeed> starts;
+  for (const DriveSeed& d : options.seeds) {
+    if (inside(d.alpha)) starts.push_back(d);
+  }
   // The robust gait starts the search and competes when it is a force of the family (not for
   // pulse drives: then it gives the motor phase only).
-  const bool seed_starts = have_seed && !DriveCoordinates(options.drive, so.forcing, bound).empty();
+  const bool seed_starts =
+      have_seed && inside(so.alpha) &&
+      !DriveCoordinates(options.drive, so.forcing, ctx.BoundAt(params.T0, so.alpha)).empty();
   if (seed_starts) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
   if (ctx.FreeT0() && ctx.family.sine()) {
-    for (const DriveSeed& d : FrequencySeeds(params, options, bound)) starts.push_back(d);
+    for (const DriveSeed& d : FrequencySeeds(params, options, bound)) {
+      if (inside(d.alpha)) starts.push_back(d);
+    }
   }
   std::vector<double> lower, upper;
   SearchBoxOf(ctx, options, starts, lower, upper);

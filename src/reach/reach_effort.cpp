@@ -14,8 +14,14 @@ namespace {
 // hours of work).
 constexpr long long kMaxDriveEvaluations = 1000000;
 constexpr long long kMaxDrivePolishes = 64;
+constexpr long long kMaxDriveScreens = 256;
 // The relative tolerance of a drive's polishes: far below any change of a mean over starts.
 constexpr double kPolishRelTol = 1e-10;
+// Each screen of the drive search has this fraction of a polish's budget.
+constexpr int kScreenShare = 4;
+// The drive search's candidates differ by this much in some coordinate (the coordinates span 1
+// or 2).
+constexpr double kCandidatesApart = 0.02;
 
 }  // namespace
 
@@ -32,6 +38,9 @@ void ReachEffort::Validate() const {
   detail::RequireCount("drive_evaluations", drive_evaluations, 1, kMaxDriveEvaluations);
   detail::RequireCount("drive_polishes", drive_polishes, 1, kMaxDrivePolishes);
   detail::RequireCount("drive_local_evaluations", drive_local_evaluations, 0, kMaxDriveEvaluations);
+  detail::RequireCount("drive_refine_evaluations", drive_refine_evaluations, 0,
+                       kMaxDriveEvaluations);
+  detail::RequireCount("drive_screens", drive_screens, 0, kMaxDriveScreens);
 }
 
 ReachOptions ReachEffort::Options(double force_bound, double alpha,
@@ -59,7 +68,16 @@ ReachOptions ReachEffort::DriveOptions(const DriveFamily& drive, double force_bo
   r.global_evaluations = drive_evaluations;
   r.polish_starts = drive_polishes;
   r.local_evaluations = drive_local_evaluations;
-  r.candidates = std::max(r.candidates, drive_polishes);
+  // The Halton sample, then controlled random search from its best point, then short screens
+  // with 1/kScreenShare of a polish's budget (docs/reach.md, "Drives": the narrow fast regions
+  // at a fast motor).
+  r.refine_evaluations = drive_refine_evaluations;
+  r.screen_starts = drive_screens;
+  r.screen_evaluations = drive_local_evaluations / kScreenShare;
+  // Candidates from several regions: near the edge of a cliff in the landscape a drive can lose
+  // its speed under the re-check's other settings (e = 0.999 at e = 1), and its neighbours with it.
+  r.candidates = std::max(r.candidates, 2 * drive_polishes);
+  r.candidates_apart = kCandidatesApart;
   // A mean over starts is flat between the points where a start changes its motion: a polish
   // stopped by a small relative change would stop on the first plateau; its budget bounds it.
   r.rel_tol = kPolishRelTol;

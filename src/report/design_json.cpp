@@ -1,7 +1,10 @@
 #include "capsubot/report/design_json.hpp"
 
+#include <cmath>
+
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/continuation_json.hpp"
+#include "capsubot/report/forcing_json.hpp"
 #include "capsubot/report/solution_json.hpp"
 
 namespace capsubot::json {
@@ -48,30 +51,77 @@ nlohmann::json AttractorsSiJson(const Attractors& attractors, double mm_s) {
   return a;
 }
 
-nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
+namespace {
+
+// One direction's motion from rest in the user's units, with its dimensionless robot.
+nlohmann::json DirectionJson(const DesignInput& in, const FromRestBest* b) {
   const double nan = Gait::kNaN;
-  nlohmann::json out;
-  for (const FromRestBest* b : {&r.forward, &r.backward}) {
-    nlohmann::json j;
-    j["status"] = FromRestStatusName(b->status);
-    j["message"] = b->message;
-    for (const auto& [key, value] : UserUnits(*b)) j[key] = value;  // NaN is written as null
-    const DesignModel& m = b->model;
-    const bool ran = b->status != FromRestStatus::kNotRun;
-    nlohmann::json d;
-    d["T0"] = ran ? m.params.T0 : nan;
-    d["A"] = ran && m.forcing.harmonic() ? m.forcing.amplitude() : nan;
-    d["c"] = ran ? m.forcing.mean() : nan;
-    d["alpha"] = ran ? m.alpha : nan;
-    d["phi0"] = nan;  // no single impact phase: the starts cover every motor phase
-    d["mean_velocity"] = b->mean_velocity;
-    if (b->ok()) AddEnergyJson(d, b->energy);
-    j["dimensionless"] = d;
-    j["forward_fraction"] = b->forward_fraction;
-    j["backward_fraction"] = b->backward_fraction;
-    j["attractors"] = AttractorsSiJson(b->attractors, 1e3 * m.omega * in.L);
-    out[DirectionName(b->direction)] = j;
+  nlohmann::json j;
+  j["status"] = FromRestStatusName(b->status);
+  j["message"] = b->message;
+  for (const auto& [key, value] : UserUnits(*b)) j[key] = value;  // NaN is written as null
+  const DesignModel& m = b->model;
+  const bool ran = b->status != FromRestStatus::kNotRun;
+  nlohmann::json d;
+  d["T0"] = ran ? m.params.T0 : nan;
+  d["A"] = ran && m.forcing.harmonic() ? m.forcing.amplitude() : nan;
+  d["c"] = ran ? m.forcing.mean() : nan;
+  d["alpha"] = ran ? m.alpha : nan;
+  d["phi0"] = nan;  // no single impact phase: the starts cover every motor phase
+  d["mean_velocity"] = b->mean_velocity;
+  if (b->ok()) AddEnergyJson(d, b->energy);
+  j["dimensionless"] = d;
+  j["forward_fraction"] = b->forward_fraction;
+  j["backward_fraction"] = b->backward_fraction;
+  j["attractors"] = AttractorsSiJson(b->attractors, 1e3 * m.omega * in.L);
+  return j;
+}
+
+// A drive in newtons: {"c", "cos", "sin"} or {"levels", "switches"}, and "max_abs".
+nlohmann::json DriveForceJson(const DriveForce& d) {
+  nlohmann::json j;
+  j["c"] = d.mean;
+  if (d.levels.empty()) {
+    j["cos"] = d.cos;
+    j["sin"] = d.sin;
+  } else {
+    j["levels"] = d.levels;
+    j["switches"] = d.switches;
   }
+  j["max_abs"] = d.max_abs;
+  return j;
+}
+
+nlohmann::json DriveDesignJson(const DesignInput& in, const DriveDesignResult& r) {
+  nlohmann::json j;
+  j["status"] = r.found() ? "ok" : "no_motion";
+  j["message"] = r.message;
+  const ReachResult& best = r.reach();
+  j["drive"] = best.drive.Describe();
+  j["force_n"] = DriveForceJson(r.force);
+  j["backward_force_n"] = DriveForceJson(r.backward_force);
+  j["forward"] = DirectionJson(in, &r.forward);
+  j["backward"] = DirectionJson(in, &r.backward);
+  j["forward"]["dimensionless"]["force"] = ForcingJson(best.forcing);
+  nlohmann::json ladder = nlohmann::json::array();
+  for (const ReachResult& step : r.ladder) {
+    ladder.push_back({{"drive", step.drive.Describe()},
+                      {"T0", step.T0},
+                      {"alpha", step.alpha},
+                      {"mean_velocity", step.mean_velocity},
+                      {"speed_sqrt_mu_g_L", step.mean_velocity / std::sqrt(step.T0)},
+                      {"robust_to_settings", step.robust_to_settings}});
+  }
+  j["ladder"] = ladder;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
+  nlohmann::json out;
+  for (const FromRestBest* b : {&r.forward, &r.backward})
+    out[DirectionName(b->direction)] = DirectionJson(in, b);
   out["evaluations"] = r.evaluations;
   out["rejected_evaluations"] = r.rejected_evaluations;
   out["max_time"] = r.max_time;
@@ -79,6 +129,7 @@ nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResul
 }
 
 nlohmann::json DesignJobJson(const DesignJobResult& r) {
+  if (r.drive) return {{"drive_design", DriveDesignJson(r.input, *r.drive)}};
   nlohmann::json j = DesignJson(r.design);
   j["robustness"] =
       r.robustness.parameters.empty() ? nlohmann::json() : RobustnessJson(r.robustness);

@@ -212,6 +212,46 @@ std::string FromRestText(const DesignInput& in, const DesignFromRestOptions& opt
   return t;
 }
 
+// A drive in newtons as a formula of the phase s of the starts.
+std::string DriveFormula(const DriveForce& d) {
+  if (!d.levels.empty()) {
+    std::vector<std::string> pieces;
+    for (std::size_t j = 0; j < d.levels.size(); ++j) {
+      pieces.push_back(fmt::format("{:.4g} N from s = {:.4g}", d.levels[j], d.switches[j]));
+    }
+    return fmt::format("F_N(s) = {}", fmt::join(pieces, ", "));
+  }
+  const auto term = [](double v) {
+    return fmt::format(" {} {:.4g}", v < 0.0 ? '-' : '+', std::abs(v));
+  };
+  std::string s = fmt::format("F_N(s) = {:.4g}", d.mean);
+  for (std::size_t k = 0; k < d.sin.size(); ++k) {
+    s += fmt::format("{} cos {}s{} sin {}s", term(d.cos[k]), k + 1, term(d.sin[k]), k + 1);
+  }
+  return s + " N";
+}
+
+// The fastest drive: its waveform, the ladder of the search, both directions from rest.
+std::string DriveText(const DesignInput& in, const DriveDesignResult& r, int max_period) {
+  const ReachResult& best = r.reach();
+  std::string t = fmt::format("robot design: the fastest drive from rest ({})\n  {}\n",
+                              best.drive.Describe(), r.message);
+  if (r.found()) {
+    t += fmt::format("  forward drive     {} (s: the motor phase), max |F_N| = {}\n",
+                     DriveFormula(r.force), Num(r.force.max_abs, " N"));
+    t += fmt::format("  backward drive    {}: the mirror image\n", DriveFormula(r.backward_force));
+  }
+  for (const ReachResult& step : r.ladder) {
+    t += fmt::format("  search            {:<16} speed {} sqrt(mu g L) at T0 = {}, alpha = {}{}\n",
+                     step.drive.Describe(), Num(step.mean_velocity / std::sqrt(step.T0), ""),
+                     Num(step.T0, ""), Num(step.alpha, ""),
+                     step.robust_to_settings ? "" : " (not robust to the settings)");
+  }
+  t += FromRestLines(in, r.forward, max_period);
+  t += FromRestLines(in, r.backward, max_period);
+  return t;
+}
+
 }  // namespace
 
 // Part (a)'s gait started from rest: how many starts end on it, the speed averaged over all
@@ -293,8 +333,9 @@ std::string DesignJobText(const DesignJobResult& r) {
     return fmt::format("{} points written to {} in {:.3f} s on {} threads\n", s.points,
                        r.grid->output, s.seconds, s.threads);
   }
-  std::string t = OneImpactText(r.input, r.design);
   const int max_period = r.from_rest_options.check.attractor.motion.max_period;
+  if (r.drive) return DriveText(r.input, *r.drive, max_period);
+  std::string t = OneImpactText(r.input, r.design);
   if (r.gait_from_rest.checked) {
     t += GaitFromRestText(r.input, r.design.one_impact, r.gait_from_rest, max_period);
   }

@@ -457,6 +457,27 @@ std::vector<BadCase> BadCases() {
        "--band-levels = 1.5 is invalid: expected fractions of the speed in (0, 1)"},
       {"band_levels_grid", "--grid m2=0.1:0.3:5 --band-levels 0.9 -o x.csv" + cfg,
        "--band-levels is invalid with --grid"},
+      {"drive_force", "--drive fourier --force-max 0.6" + cfg,
+       "setting force-amplitude is invalid with --drive: expected no motor force"},
+      {"drive_no_peak", "--drive fourier --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --frequency 20",
+       "setting force-max is missing: --drive needs the motor's peak force, give --force-max"},
+      {"drive_peak",
+       "--drive sine --force-max -1 --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --frequency 20",
+       "--force-max = -1 is invalid: expected the motor's peak force, a finite force_max > 0 [N]"},
+      {"drive_from_rest",
+       "--drive sine --from-rest --force-max 1 --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 "
+       "--frequency 20",
+       "--from-rest is invalid with --drive: expected one of them"},
+      {"drive_kind",
+       "--drive square --force-max 1 --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --frequency 20",
+       "--drive: square not in {sine,fourier,pulse}"},
+      {"drive_harmonics",
+       "--drive fourier --harmonics 17 --force-max 1 --m1 0.2 --L 0.02 --mu 0.3 "
+       "--e 0.7 --frequency 20",
+       "--harmonics = 17 is invalid: expected 1 <= harmonics <= 16"},
+      {"drive_without", "--drive-screens 3" + cfg,
+       "--drive-screens is invalid with one design (no --from-rest, no --grid): expected "
+       "--drive-screens only with --drive"},
   };
 }
 
@@ -473,6 +494,40 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
     ++checked;
   }
   EXPECT_EQ(checked, cases.size());  // the loop has no early exit
+}
+
+TEST(DesignCli, TheFastestDriveInTheUsersUnitsForwardAndItsMirrorBackward) {
+  // A small search (docs/design.md, "The fastest drive"); the JSON against its own parts: the
+  // drive's peak within the motor's, the robot within the ranges, the speed from the
+  // dimensionless mean velocity (omega = 2 pi f), the mirror image's force.
+  const auto r = RunCli(
+      "design --m1 0.2 --L 0.02 --mu 0.3 --e 0.7 --frequency-range 10:20 --m2-range 0.05:0.5 "
+      "--drive fourier --harmonics 2 --force-max 0.6 --reach-starts 2x2 --from-rest-starts 4x4 "
+      "--reach-evaluations 30 --reach-local-evaluations 10 --drive-evaluations 40 "
+      "--drive-refine-evaluations 40 --drive-screens 2 --drive-polishes 1 "
+      "--drive-local-evaluations 20 --reach-seconds 1e6 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out)["drive_design"];
+  ASSERT_EQ(j["status"], "ok") << j["message"];
+  EXPECT_LE(j["force_n"]["max_abs"].get<double>(), 0.6 * (1.0 + 1e-12));
+  const auto& f = j["forward"];
+  const double m2 = f["m2_kg"], hz = f["frequency_hz"];
+  EXPECT_TRUE(m2 >= 0.05 * (1 - 1e-12) && m2 <= 0.5 * (1 + 1e-12)) << m2;
+  EXPECT_TRUE(hz >= 10.0 * (1 - 1e-12) && hz <= 20.0 * (1 + 1e-12)) << hz;
+  const double omega_L_mm_s = 2e3 * M_PI * hz * 0.02;
+  EXPECT_NEAR(f["speed_mm_s"].get<double>(),
+              omega_L_mm_s * f["dimensionless"]["mean_velocity"].get<double>(), 1e-9);
+  EXPECT_GT(f["speed_mm_s"].get<double>(), 0.0);
+  EXPECT_LT(j["backward"]["speed_mm_s"].get<double>(), 0.0);
+  EXPECT_EQ(j["backward_force_n"]["c"].get<double>(), -j["force_n"]["c"].get<double>());
+  for (const char* part : {"cos", "sin"}) {
+    const auto& forward = j["force_n"][part];
+    ASSERT_EQ(forward.size(), 2U) << part;
+    for (std::size_t k = 0; k < forward.size(); ++k) {
+      EXPECT_EQ(j["backward_force_n"][part][k].get<double>(), -forward[k].get<double>()) << part;
+    }
+  }
+  EXPECT_EQ(j["ladder"].size(), 2U);
 }
 
 TEST(DesignCli, BadConfigFilesNameTheKeyItsValueAndTheRule) {

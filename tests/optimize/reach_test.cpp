@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 #include "capsubot/reach/optimize_reach.hpp"
@@ -40,14 +41,17 @@ TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
   // The force bound holds.
   EXPECT_LE(r.forcing.amplitude() + r.forcing.mean(), params.T0 * (1.0 + 1e-12));
   // The spread: every variant computed for e = 1; a winner that passed it kept its speed
-  // within max_spread, one that did not is flagged and says so.
+  // within max_spread at the other chatter cut-offs and within max_elastic_change at e = 0.999,
+  // one that did not is flagged and says so.
   EXPECT_GE(r.spread.max_relative_deviation, 0.0);
   if (r.robust_to_settings) {
-    EXPECT_LE(r.spread.max_relative_deviation, o.max_spread);
+    EXPECT_LE(r.spread.max_relative_deviation, std::max(o.max_spread, o.max_elastic_change));
     EXPECT_EQ(r.spread.event_limit_starts, 0);
-    for (double v : {r.spread.chatter_small, r.spread.chatter_large, r.spread.e_0999}) {
+    for (double v : {r.spread.chatter_small, r.spread.chatter_large}) {
       EXPECT_TRUE(Near(v, r.mean_velocity, o.max_spread * std::abs(r.mean_velocity)));
     }
+    EXPECT_TRUE(
+        Near(r.spread.e_0999, r.mean_velocity, o.max_elastic_change * std::abs(r.mean_velocity)));
   } else {
     EXPECT_NE(r.message.find("WARNING"), std::string::npos) << r.message;
   }
@@ -56,7 +60,8 @@ TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
 }
 
 TEST(Reach, AWinnerWhoseSpreadExceedsMaxSpreadIsNeverCalledRobust) {
-  // The knob max_spread moved below the spread of the first run's winner: that winner cannot
+  // The knobs max_spread and max_elastic_change moved below the spread of the first run's
+  // winner (its largest change over the variants, whichever it is): that winner cannot
   // pass the spread test any more, so the second run either finds a slower candidate (ranked
   // after it) that keeps its speed within the new bound, or none, and then reports the
   // fastest candidate, flagged with a warning.
@@ -69,7 +74,7 @@ TEST(Reach, AWinnerWhoseSpreadExceedsMaxSpreadIsNeverCalledRobust) {
   const double spread = first.spread.max_relative_deviation;
   ASSERT_GT(spread, 0.0) << first.message;
   ASSERT_TRUE(std::isfinite(spread)) << first.message;
-  o.max_spread = 0.5 * spread;
+  o.max_spread = o.max_elastic_change = 0.5 * spread;
   const ReachResult second = OptimizeReach(params, o);
   ASSERT_EQ(second.status, OptimizeStatus::kOk) << second.message;
   EXPECT_EQ(second.robust_to_settings, second.spread.max_relative_deviation <= o.max_spread)
@@ -141,6 +146,14 @@ TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
        "max_seconds = 0 is invalid: expected a time > 0 (infinity: none)"},
       {"search grid", [](ReachOptions& o) { o.search.n_x = 0; },
        "n_x = 0 is invalid: expected 1 <= n_x <= 100000 starting positions"},
+      {"elastic", [](ReachOptions& o) { o.max_elastic_change = -0.1; },
+       "max_elastic_change = -0.1 is invalid: expected a finite max_elastic_change >= 0"},
+      {"refine", [](ReachOptions& o) { o.refine_evaluations = -1; },
+       "refine_evaluations = -1 is invalid: expected"},
+      {"screens", [](ReachOptions& o) { o.screen_starts = 1000; },
+       "screen_starts = 1000 is invalid: expected"},
+      {"apart", [](ReachOptions& o) { o.candidates_apart = 1.0; },
+       "candidates_apart = 1 is invalid: expected 0 <= candidates_apart < 1"},
   };
   int checked = 0;
   for (const Case& c : cases) {
@@ -154,7 +167,7 @@ TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 6);
+  EXPECT_EQ(checked, static_cast<int>(std::size(cases)));
   // A bound above T0 is rejected by the search itself.
   ReachOptions o = QuickOptions();
   o.force_bound = 2.0;

@@ -146,4 +146,11 @@ DesignFromRestResult DesignFromRest(const DesignInput& input,
 FromRestBest EvaluateFromRest(const DesignInput& input, double m2, double frequency,
                               Direction direction, const FromRestOptions& from_rest);
 
+/// The same for the robot `model` (any force, phase included) with inner mass m2 [kg] at
+/// frequency f [Hz] (model.omega = 2 pi f): the drive design's robots, whose force is not the
+/// input's motor force. Validates nothing.
+FromRestBest EvaluateModelFromRest(const DesignInput& input, const DesignModel& model, double m2,
+                                   double frequency, Direction direction,
+                                   const FromRestOptions& from_rest);
+
 }  // namespace capsubot

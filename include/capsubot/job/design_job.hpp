@@ -15,6 +15,7 @@
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/design.hpp"
+#include "capsubot/design/design_drive.hpp"
 #include "capsubot/design/design_from_rest.hpp"
 #include "capsubot/job/design_robustness.hpp"
 #include "capsubot/job/stage_callback.hpp"
@@ -85,12 +86,20 @@ struct DesignGridMode : GridFileOptions {
   std::reference_wrapper<const BlockBackend> backend = LocalBlocks();
 };
 
+/// The fastest drive of the robot DesignJobOptions::input (design_drive.hpp): its waveform,
+/// frequency and inner mass over the input's ranges; the input's motor force is not used.
+struct DesignDriveMode {
+  DriveDesignOptions options;
+  /// Asked by every from-rest evaluation (interrupt.hpp); empty: never.
+  Interrupt interrupt;
+};
+
 /// What the design job does and with what robot.
 struct DesignJobOptions {
   /// The robot in SI units and what may be chosen (ranges of m2 and f, robust margins).
   DesignInput input;
   /// One design (its gait's robustness, with part (b) or without), or a grid of designs.
-  std::variant<DesignOneMode, DesignGridMode> mode;
+  std::variant<DesignOneMode, DesignGridMode, DesignDriveMode> mode;
   /// Told each stage of one design ("design: 1/2 the fastest robust one-impact gait", "design:
   /// 2/2 how far mu, e and m2 carry the gait" when there is a gait) and "" at its end; a grid
   /// tells its points to DesignGridMode::progress instead.
@@ -122,7 +131,8 @@ struct DesignJobResult {
   std::optional<DesignFromRestResult> from_rest;  ///< part (b), when asked
   /// How part (b) searched and checked (DesignFromRestPart::Options), when asked.
   DesignFromRestOptions from_rest_options;
-  std::optional<DesignGridWritten> grid;  ///< what a grid wrote
+  std::optional<DesignGridWritten> grid;   ///< what a grid wrote
+  std::optional<DriveDesignResult> drive;  ///< the fastest drive (DesignDriveMode)
 };
 
 /// Which answer of one design to build: part (a)'s gait, unless part (b)'s forward motion is

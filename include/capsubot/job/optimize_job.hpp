@@ -32,8 +32,9 @@ struct MainJob {
   /// speed from rest, each in (0, 1)); the bands' starts are the job's check from rest.
   std::vector<double> band_levels = {0.95};
   /// The budgets of the drive part (drive_evaluations, drive_polishes,
-  /// drive_local_evaluations), smaller than those of `--problem reach --harmonics K`, so that
-  /// the whole job takes seconds; its starts and time limit are those of `reach`.
+  /// drive_local_evaluations, drive_refine_evaluations, drive_screens), smaller than those of
+  /// `--problem reach --harmonics K`, so that the whole job takes seconds; its starts and time
+  /// limit are those of `reach`.
   ReachEffort drives = MainJobDriveEffort();
   int drive_harmonics = 3;  ///< the largest K of the drive part; 2 <= K <= kMaxHarmonics
   int pulse_levels = 3;     ///< the levels N of the drive part's pulse drive; 2 <= N <= 16

@@ -65,8 +65,15 @@ struct ReachOptions {
   /// Each must belong to `drive` (DriveCoordinates) with the seed's motor phase; at most
   /// kMaxHarmonics.
   std::vector<DriveSeed> seeds;
-  /// Local polishes, each from one of the best distinct points of the global stage; >= 1.
+  /// Local polishes, each from one of the best distinct points seen before them; >= 1.
   int polish_starts = 1;
+  /// A second global stage (controlled random search, GN_CRS2_LM) from the best point of the
+  /// first, with this many evaluations (0: none); >= 0.
+  int refine_evaluations = 0;
+  /// Short local screens between the global stages and the polishes, from the best distinct
+  /// points seen, screen_evaluations each (0: none); both >= 0.
+  int screen_starts = 0;
+  int screen_evaluations = 0;
   /// The motor's frequency free (docs/reach.md, "Frequency"): T0 = mu g/(omega^2 L) is a
   /// variable in [T0_min, T0_max] (log scale; the robot's T0 must lie in it), the force bound
   /// is tied to it (force_bound / T0 stays the robot's ratio: a force bound in newtons tied to
@@ -77,7 +84,16 @@ struct ReachOptions {
   /// A fixed mass ratio (0 < alpha < 1); NaN: alpha is a variable in [alpha_min, alpha_max].
   double alpha = kNaN;
   double alpha_min = 0.05;  ///< lower end of the alpha box; 0 < alpha_min < alpha_max
-  double alpha_max = 0.95;  ///< upper end of the alpha box; < 1 (widened to hold the seed's)
+  double alpha_max = 0.95;  ///< upper end of the alpha box; < 1 (see widen_alpha_box)
+  /// The alpha box widens to hold the starting drives' alphas; false: it is a hard range, and
+  /// a starting drive outside it is left out (a designer's range of inner masses).
+  bool widen_alpha_box = true;
+  /// The force bound is a motor force in newtons (docs/design.md, "The fastest drive"): NaN,
+  /// the bound is force_bound in units of (m1+m2) omega^2 L whatever alpha; else force_bound
+  /// holds at this mass ratio and the bound at alpha is force_bound (1 - alpha)/(1 - bound_alpha)
+  /// (the unit grows with the inner mass m2 = alpha m1/(1 - alpha)), never above T0 (the
+  /// friction force: a larger force slides the shell by itself); 0 < bound_alpha < 1.
+  double bound_alpha = kNaN;
   /// Global stage over the box, by NLopt name or HALTON (a Halton sampling of the box; see
   /// ReachGlobalAlgorithmNames()).
   std::string global_algorithm = "GN_DIRECT_L";
@@ -96,10 +112,16 @@ struct ReachOptions {
   double rel_tol = 1e-4;
   /// Best points of the search (besides the seed) re-checked with the full settings; >= 1.
   int candidates = 3;
-  /// A candidate wins only if its mean velocity changes by at most this (relative) under the
-  /// other numerical settings of ReachSpread and no start ends in event_limit there; when no
-  /// candidate passes, the fastest is reported with robust_to_settings = false. >= 0.
+  /// The candidates differ by more than this in some coordinate of the search box (0: any two
+  /// distinct points); 0 <= candidates_apart < 1.
+  double candidates_apart = 0.0;
+  /// A candidate wins only if its mean velocity changes by at most max_spread (relative) under
+  /// the other chatter cut-offs of ReachSpread, by at most max_elastic_change for the nearly
+  /// elastic robot (e = 0.999 at e = 1: a physical change, so that a motion that relies on
+  /// perfectly elastic impacts does not win), and no start ends in event_limit there; when no
+  /// candidate passes, the fastest is reported with robust_to_settings = false. Both >= 0.
   double max_spread = 0.01;
+  double max_elastic_change = 0.1;
   unsigned seed = 1;  ///< seed of NLopt's random numbers (GN_CRS2_LM, GN_ISRES)
   /// From-rest settings inside the search (cheap).
   FromRestOptions search = CheapFromRestOptions();
@@ -166,7 +188,7 @@ struct ReachResult {
   std::string summary;          ///< the attractors in one sentence (AttractorsSummary)
   ReachSpread spread;           ///< dependence on the numerical settings
   bool seed_won = false;        ///< the seed itself is the winner
-  /// The winner passed the spread test (max_relative_deviation <= max_spread).
+  /// The winner passed the spread test (ReachOptions::max_spread, max_elastic_change).
   bool robust_to_settings = false;
   int evaluations = 0;  ///< from-rest evaluations (search and re-checks)
   /// Search evaluations rejected because a start ended in event_limit.

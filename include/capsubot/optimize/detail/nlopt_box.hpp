@@ -43,9 +43,10 @@ std::vector<BoxPoint> BestDistinctPoints(std::vector<BoxPoint> seen, double floo
 inline constexpr const char* kHaltonStage = "HALTON";
 
 /// A search of a box whose objective simulates (the fastest motion from rest, the design's
-/// motion from rest): a global stage from `start`, a local polish from the best distinct
-/// feasible point the objective has seen, then the best distinct candidates, which the caller
-/// re-checks with its full settings.
+/// motion from rest): a global stage from `start`, optionally a second global stage from the
+/// best point of the first and short local screens from the best distinct points seen, local
+/// polishes from the best distinct feasible points the objective has seen by then, then the best
+/// distinct candidates, which the caller re-checks with its full settings.
 struct BoxSearch {
   nlopt::func objective = nullptr;  ///< maximised; it records every point it scores
   void* data = nullptr;             ///< the objective's data
@@ -62,11 +63,25 @@ struct BoxSearch {
   nlopt::algorithm local = nlopt::LN_SBPLX;
   int global_evaluations = 0;  ///< budget of the global stage (0: skipped)
   int local_evaluations = 0;   ///< budget of each local polish (0: skipped)
-  int polish_starts = 1;       ///< polishes, from the best distinct points of the global stage
-  double rel_tol = 0.0;        ///< relative tolerance of both stages (y and value)
-  double infeasible = 0.0;     ///< the score of an infeasible point: never a candidate
-  double same = 0.0;           ///< two points are one candidate within this (BestDistinctPoints)
-  int candidates = 1;          ///< distinct candidates returned, at most
+  int polish_starts = 1;       ///< polishes, from the best distinct points seen before them
+  /// A second global stage after the first, from its best point: an NLopt algorithm and its
+  /// budget (0: none). A Halton sample spreads its points evenly; a population search such as
+  /// controlled random search then gathers them into the narrow fast regions a sample misses.
+  nlopt::algorithm refine = nlopt::GN_CRS2_LM;
+  int refine_evaluations = 0;
+  /// Short local runs between the global stages and the polishes, from the screen_starts best
+  /// distinct points seen, screen_evaluations each (0: none): a landscape of plateaus and cliffs
+  /// (a mean over starts) hides where it climbs; many short runs find the starts that lead uphill,
+  /// and the polishes then go on from the best ends.
+  int screen_starts = 0;
+  int screen_evaluations = 0;
+  double rel_tol = 0.0;     ///< relative tolerance of both stages (y and value)
+  double infeasible = 0.0;  ///< the score of an infeasible point: never a candidate
+  double same = 0.0;        ///< two points are one candidate within this (BestDistinctPoints)
+  int candidates = 1;       ///< distinct candidates returned, at most
+  /// Candidates differ by more than this in some coordinate (at least `same`): apart, they stand
+  /// for several regions, so that one that fails the caller's re-check leaves others.
+  double candidates_apart = 0.0;
   /// Polishes start from points that differ by more than this in some coordinate.
   double polish_apart = 0.0;
 
@@ -86,9 +101,9 @@ struct BoxSearchResult {
   std::vector<BoxPoint> candidates;  ///< the best distinct feasible points, best first
 };
 
-/// Runs the stages of `search` (global, then a local polish from each of the polish_starts best
-/// points at least polish_apart apart, with an initial step of 5 % of each side) and returns the
-/// candidates to re-check.
+/// Runs the stages of `search` (global; the second global stage; the screens; then a local
+/// polish from each of the polish_starts best points at least polish_apart apart, every local
+/// run with an initial step of 5 % of each side) and returns the candidates to re-check.
 BoxSearchResult SearchBox(const BoxSearch& search);
 
 }  // namespace capsubot::detail
