@@ -304,7 +304,7 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
   constexpr double kNaN = ReachResult::kNaN;
   const bool found = !std::isnan(r.mean_velocity);
   const bool seed = r.seed.from_rest.checked;
-  const Orbit& so = r.seed.gait.solution.orbit;
+  const Orbit& seed_orbit = r.seed.gait.solution.orbit;
   return {{"A", found ? r.forcing.amplitude() : kNaN},
           {"c", found ? r.forcing.mean() : kNaN},
           {"phi0", found ? r.forcing.phi0() : kNaN},
@@ -314,12 +314,12 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
           {"robust_to_settings", r.robust_to_settings ? 1.0 : 0.0},
           {"max_relative_deviation", r.spread.max_relative_deviation},
           {"evaluations", static_cast<double>(r.evaluations)},
-          {"seed_A", seed ? so.forcing.amplitude() : kNaN},
-          {"seed_c", seed ? so.forcing.mean() : kNaN},
-          {"seed_phi0", seed ? so.forcing.phi0() : kNaN},
-          {"seed_alpha", seed ? so.alpha : kNaN},
-          {"seed_I", seed ? so.I : kNaN},
-          {"seed_v_mean", seed ? so.v_mean : kNaN},
+          {"seed_A", seed ? seed_orbit.forcing.amplitude() : kNaN},
+          {"seed_c", seed ? seed_orbit.forcing.mean() : kNaN},
+          {"seed_phi0", seed ? seed_orbit.forcing.phi0() : kNaN},
+          {"seed_alpha", seed ? seed_orbit.alpha : kNaN},
+          {"seed_I", seed ? seed_orbit.I : kNaN},
+          {"seed_v_mean", seed ? seed_orbit.v_mean : kNaN},
           {"seed_mean_velocity_from_rest", seed ? r.seed.from_rest.attractors.mean_velocity : kNaN},
           {"seed_reached", seed ? static_cast<double>(r.seed.from_rest.reached) : kNaN}};
 }
