@@ -20,7 +20,7 @@ namespace {
 // Bumped whenever the bytes of a sweep change for the same options (invalidates checkpoints).
 constexpr int kFormatVersion = 5;
 
-bool RobotMode(const SweepOptions& o) { return o.grid.Has(ModelParameter::kalpha); }
+bool RobotMode(const SweepOptions& o) { return o.grid.Has(ModelParameter::kAlpha); }
 
 void Append(RowBuffer& out, const char* text) { out.append(text); }
 
@@ -146,7 +146,7 @@ SweepPoint::SweepPoint(const SweepOptions& o)
   // The sweep's threads work on different points (the result does not depend on this).
   reach.search.attractor.threads = reach.check.attractor.threads = 1;
   if (!std::any_of(o.grid.axes.begin(), o.grid.axes.end(), [](const GridAxis& axis) {
-        return axis.parameter == ModelParameter::kA || axis.parameter == ModelParameter::kc ||
+        return axis.parameter == ModelParameter::kA || axis.parameter == ModelParameter::kMean ||
                IsFourierCoefficient(axis.parameter);
       })) {
     return;
@@ -179,30 +179,30 @@ GaitRequirements& SweepPoint::Gait() {
 void SweepPoint::Set(const GridAxis& axis, double value) {
   switch (axis.parameter) {
     case ModelParameter::kA:  // b_1 of a series that a_k and b_k axes may have extended
-      SetParameter(robot, ModelParameter::ksin, 1, value);
+      SetParameter(robot, ModelParameter::kSin, 1, value);
       break;
-    case ModelParameter::kc:
-    case ModelParameter::kphi0:
+    case ModelParameter::kMean:
+    case ModelParameter::kPhi0:
     case ModelParameter::kT0:
-    case ModelParameter::ke:
-    case ModelParameter::kalpha:
-    case ModelParameter::kcos:
-    case ModelParameter::ksin:
+    case ModelParameter::kRestitution:
+    case ModelParameter::kAlpha:
+    case ModelParameter::kCos:
+    case ModelParameter::kSin:
       SetParameter(robot, axis.parameter, axis.harmonic, value);
       break;
-    case ModelParameter::kmargin:
+    case ModelParameter::kMargin:
       robot.params.margin = value;
       break;
-    case ModelParameter::kmargin_stroke:
+    case ModelParameter::kMarginStroke:
       robot.params.margin_stroke = value;
       break;
-    case ModelParameter::kstick_margin:
+    case ModelParameter::kStickMargin:
       robot.params.stick_margin = value;
       break;
-    case ModelParameter::kbound:
+    case ModelParameter::kBound:
       Gait().force_bound = value;
       break;
-    case ModelParameter::krho_max:
+    case ModelParameter::kRhoMax:
       Gait().rho_max = value;
       break;
   }
@@ -212,10 +212,10 @@ SweepRowWriter::SweepRowWriter(const SweepOptions& options)
     : options_(options), point_(options), values_(options.grid.axes.size()) {
   const std::vector<GridAxis>& axes = options.grid.axes;
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    if (axes[i].parameter == ModelParameter::kphi0) order_.push_back(i);
+    if (axes[i].parameter == ModelParameter::kPhi0) order_.push_back(i);
   }
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    if (axes[i].parameter != ModelParameter::kphi0) order_.push_back(i);
+    if (axes[i].parameter != ModelParameter::kPhi0) order_.push_back(i);
   }
   // robot mode, no orbit: orbits = 0, then an empty cell for every further column
   const std::size_t cells = SweepColumns(options).size() - axes.size() - 1;
