@@ -357,9 +357,7 @@ CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads, const std::string& he
               const auto n = static_cast<int>(ParseInteger(text, "--threads", INT_MIN, INT_MAX));
               if (n < 0) {
                 return fmt::format(
-                    "--threads = {} is invalid: expected 1 <= threads (0: all "
-                    "cores)",
-                    text);
+                    "--threads = {} is invalid: expected 1 <= threads (0: all cores)", text);
               }
               text = std::to_string(CapThreads(n, who));
               return std::string();

@@ -95,6 +95,47 @@ int CheckStdout(const std::string& who, int status) {
   return Fail(who, fmt::format("standard output cannot be written: {}", std::strerror(err)), 1);
 }
 
+// Says why CLI11 refused the command line (naming the command, if one was recognised) and
+// returns exit status 2.
+int RefuseCommandLine(const CLI::App& app, const CLI::ParseError& e) {
+  const auto subs = app.get_subcommands();
+  const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
+  if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr ||
+      dynamic_cast<const CLI::ValidationError*>(&e) != nullptr) {
+    return Fail(who, ParseErrorMessage(e), 2);
+  }
+  if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr && !subs.empty()) {
+    if (const auto flag = capsubot::app::UnknownFlag(*subs.front(), UnexpectedArguments(e))) {
+      return Fail(who, *flag, 2);
+    }
+  }
+  return Fail(who, fmt::format("{} (see {} --help)", ParseErrorMessage(e), who), 2);
+}
+
+// Runs the command the command line chose and returns its exit status: an error it throws
+// is said on one line and mapped to its status (2 bad input, 1 a failed computation).
+int RunCommand(const capsubot::app::Command& command) {
+  const std::string who = "capsubot " + command.parser->get_name();
+  const int processes = capsubot::app::LaunchedProcesses();
+  if (processes > 1 && !(command.distributed && command.distributed())) {
+    return RefuseOneProcessCommand(who, command.parser->get_name(), processes);
+  }
+  try {
+    return CheckStdout(who, command.run());
+  } catch (const std::invalid_argument& e) {
+    return Fail(who, OneLine(e.what()), 2);
+  } catch (const capsubot::WriteError& e) {  // the file could be opened: not bad input
+    return Fail(who, OneLine(e.what()), 1);
+  } catch (const capsubot::IoError& e) {
+    return Fail(who, OneLine(e.what()), 2);
+  } catch (const std::runtime_error& e) {  // a computation that could not be completed
+    return Fail(who, OneLine(e.what()), 1);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: internal error: {}\n", who, OneLine(e.what()));
+    return 1;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,8 +149,7 @@ int main(int argc, char** argv) {
       "capsubot: one-impact periodic gaits of a vibro-impact capsule robot (A. P. Ivanov, "
       "Vibroimpact Mobile Robot, 2021). All quantities are dimensionless: phases in rad, "
       "positions in units of the inner body's free gap L (walls at x = 0 and 1), velocities in "
-      "omega*L, forces in "
-      "(m1+m2)*omega^2*L.",
+      "omega*L, forces in (m1+m2)*omega^2*L.",
       "capsubot"};
   // Before the commands are added: each command takes its parent's formatter.
   app.formatter(std::make_shared<HelpFormatter>(HelpWidth()));
@@ -146,40 +186,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::ParseError& e) {
-    const auto subs = app.get_subcommands();
-    const std::string who = subs.empty() ? "capsubot" : "capsubot " + subs.front()->get_name();
-    if (dynamic_cast<const CLI::ConversionError*>(&e) != nullptr ||
-        dynamic_cast<const CLI::ValidationError*>(&e) != nullptr) {
-      return Fail(who, ParseErrorMessage(e), 2);
-    }
-    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr && !subs.empty()) {
-      if (const auto flag = UnknownFlag(*subs.front(), UnexpectedArguments(e))) {
-        return Fail(who, *flag, 2);
-      }
-    }
-    return Fail(who, fmt::format("{} (see {} --help)", ParseErrorMessage(e), who), 2);
+    return RefuseCommandLine(app, e);
   }
   for (const Command& command : commands) {
-    if (!command.parser->parsed()) continue;
-    const std::string who = "capsubot " + command.parser->get_name();
-    const int processes = LaunchedProcesses();
-    if (processes > 1 && !(command.distributed && command.distributed())) {
-      return RefuseOneProcessCommand(who, command.parser->get_name(), processes);
-    }
-    try {
-      return CheckStdout(who, command.run());
-    } catch (const std::invalid_argument& e) {
-      return Fail(who, OneLine(e.what()), 2);
-    } catch (const capsubot::WriteError& e) {  // the file could be opened: not bad input
-      return Fail(who, OneLine(e.what()), 1);
-    } catch (const capsubot::IoError& e) {
-      return Fail(who, OneLine(e.what()), 2);
-    } catch (const std::runtime_error& e) {  // a computation that could not be completed
-      return Fail(who, OneLine(e.what()), 1);
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "{}: internal error: {}\n", who, OneLine(e.what()));
-      return 1;
-    }
+    if (command.parser->parsed()) return RunCommand(command);
   }
   return 2;
 }

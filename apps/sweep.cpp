@@ -268,7 +268,7 @@ void RejectGridConflicts(const Grid& grid, const CLI::App& cmd) {
           fmt::format("{} = {} is invalid with --grid {}: expected the value from only one of them",
                       flag, option->as<std::string>(), axis.ToString()));
     }
-    if (axis.parameter == ModelParameter::krho_max && cmd.count("--stable-only") > 0) {
+    if (axis.parameter == ModelParameter::kRhoMax && cmd.count("--stable-only") > 0) {
       throw std::invalid_argument(fmt::format(
           "--stable-only (rho_max = 1) is invalid with --grid {}: expected the value from only "
           "one of them",
@@ -299,7 +299,7 @@ SweepJobOptions JobOptions(SweepCliOptions& opt, const CLI::App& cmd) {
     job.grid.axes.push_back(ParseGridAxis(spec));
     const GridAxis& axis = job.grid.axes.back();
     const double far = std::abs(axis.Min()) > std::abs(axis.Max()) ? axis.Min() : axis.Max();
-    if (axis.parameter == ModelParameter::kphi0 && std::abs(far) > kTau) {
+    if (axis.parameter == ModelParameter::kPhi0 && std::abs(far) > kTau) {
       NotePhaseInRadians("--grid phi0", FormatNumber(far), far);
     }
   }

@@ -59,11 +59,10 @@ py::dict FindAttractorsDict(
 }
 
 constexpr const char* kAttractorsDoc =
-    "What the robot does from rest (capsubot documentation, model sections 12 and 13): the "
-    "exact simulator is "
-    "started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/n_x and the "
-    "forcing at phase psi = 2 pi j/n_psi; after a transient the long-run motion of each start "
-    "is classified (period, impacts, mean velocity) and equal motions are grouped into "
+    "What the robot does from rest (capsubot documentation, model sections 12 and 13): the exact "
+    "simulator is started with shell and inner body at rest, the inner body at x0 = (i + 0.5)/n_x "
+    "and the forcing at phase psi = 2 pi j/n_psi; after a transient the long-run motion of each "
+    "start is classified (period, impacts, mean velocity) and equal motions are grouped into "
     "attractors: the dict `capsubot attractors --json` prints.\n\n"
     "Arguments (keyword only, named as the options of `capsubot attractors`):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the starts' phases psi [rad]\n"

@@ -41,10 +41,6 @@ void BindSweep(py::module_& m);         // sweep
 void BindBasins(py::module_& m);        // basins
 void BindBifurcation(py::module_& m);   // bifurcation
 
-/// The force arguments every function takes, named as the command-line options: the paper's
-/// A sin(phi + phi0) + c, or the Fourier series c + sum_k (a_k cos k(phi+phi0) + b_k sin
-/// k(phi+phi0)) given by `cos` and `sin`.
-
 /// The units every docstring refers to (docs/model.md section 2).
 inline constexpr const char* kUnits =
     "Units (dimensionless; capsubot documentation, model section 2): phases in rad (period "

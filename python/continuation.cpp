@@ -153,17 +153,14 @@ py::dict ContinueBranchDict(
 }
 
 constexpr const char* kContinueDoc =
-    "Pseudo-arclength continuation of a periodic motion in one model parameter "
-    "(capsubot documentation, continuation): the motion near the start is found by Newton shooting "
-    "at the "
-    "robot's value of the parameter and followed both ways through [from_, to], with its "
-    "folds, period doublings, Neimark-Sacker points, grazings, segment changes and speed "
-    "extrema; on request the branch switched to at its first period doubling or grazing "
-    "(switch) and the curve of its first special point of a type in two parameters (param2, "
-    "from2, to2, follow): the dict `capsubot continue --json` prints, with the points as "
-    "columns.\n\n"
-    "Arguments (keyword only, named as the options of `capsubot continue`; `from_` is "
-    "--from):\n"
+    "Pseudo-arclength continuation of a periodic motion in one model parameter (capsubot "
+    "documentation, continuation): the motion near the start is found by Newton shooting at the "
+    "robot's value of the parameter and followed both ways through [from_, to], with its folds, "
+    "period doublings, Neimark-Sacker points, grazings, segment changes and speed extrema; on "
+    "request the branch switched to at its first period doubling or grazing (switch) and the curve "
+    "of its first special point of a type in two parameters (param2, from2, to2, follow): the dict "
+    "`capsubot continue --json` prints, with the points as columns.\n\n"
+    "Arguments (keyword only, named as the options of `capsubot continue`; `from_` is --from):\n"
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n";
 
 constexpr const char* kContinueArgsDoc =

@@ -31,7 +31,7 @@ constexpr std::int64_t kBlockPoints = 2048;  // ~2 ms of Solve calls: the unit o
 constexpr std::int64_t kNoError = std::numeric_limits<std::int64_t>::max();
 
 // The inputs, in this order; every one is an array broadcast to the grid's shape.
-enum Input { kA, kc, kphi0, kT0, ke, kmargin, kmargin_stroke, kstick_margin, kInputs };
+enum Input { kA, kMean, kPhi0, kT0, kRestitution, kMargin, kMarginStroke, kStickMargin, kInputs };
 constexpr std::array<const char*, kInputs> kInputNames = {
     "A", "c", "phi0", "T0", "e", "margin", "margin_stroke", "stick_margin"};
 
@@ -160,12 +160,13 @@ class GridSolver {
     for (std::int64_t p = begin; p < end; ++p, in.Next()) {
       if (p > first_error_.load(std::memory_order_relaxed)) return p - begin;
       try {
-        const double A = in[kA], c = in[kc], phi0 = in[kphi0];
+        const double A = in[kA], c = in[kMean], phi0 = in[kPhi0];
         // Anything but an amplitude: Harmonic throws the library's message.
         if (!(std::isfinite(A) && A >= 0.0)) (void)Forcing::Harmonic(A, c, phi0);
         b[0] = A;
         const Forcing forcing = Forcing::Fourier(c, a, b, phi0);  // no allocation
-        const Params params{in[kT0], in[ke], in[kmargin], in[kmargin_stroke], in[kstick_margin]};
+        const Params params{in[kT0], in[kRestitution], in[kMargin], in[kMarginStroke],
+                            in[kStickMargin]};
         Store(p, capsubot::Solve(forcing, params));
       } catch (...) {
         Fail(p, std::current_exception());

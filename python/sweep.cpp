@@ -170,7 +170,7 @@ void RejectGridConflicts(const Grid& grid, const py::dict& arguments) {
           fmt::format("{} = {} is invalid with grid {}: expected the value from only one of them",
                       axis.name(), FormatNumber(arguments[name].cast<double>()), axis.ToString()));
     }
-    if (axis.parameter == ModelParameter::krho_max && arguments["stable_only"].cast<bool>()) {
+    if (axis.parameter == ModelParameter::kRhoMax && arguments["stable_only"].cast<bool>()) {
       throw std::invalid_argument(fmt::format(
           "stable_only (rho_max = 1) is invalid with grid {}: expected the value from only one "
           "of them",

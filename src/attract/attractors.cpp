@@ -56,6 +56,66 @@ std::vector<int> IrregularClusters(const std::vector<Motion>& motions, double to
   return cluster;
 }
 
+// The index among `found` (the attractors met so far, with their clusters of irregular
+// motions) of the attractor that motion m, of cluster `cluster`, belongs to; -1 if none.
+int AttractorOf(const Motion& m, int cluster, const std::vector<Attractor>& found,
+                const std::vector<int>& found_cluster, double velocity_tolerance) {
+  for (std::size_t a = 0; a < found.size(); ++a) {
+    const Motion& f = found[a].motion;
+    if (f.status != m.status) continue;
+    const bool same = m.status == MotionStatus::kPeriodic ? SamePeriodic(f, m, velocity_tolerance)
+                                                          : found_cluster[a] == cluster;
+    if (same) return static_cast<int>(a);
+  }
+  return -1;
+}
+
+// A new attractor, first reached by `example` with motion m (its starts not yet counted).
+Attractor NewAttractor(const Motion& m, const PhaseState& example) {
+  Attractor a;
+  a.motion = m;
+  a.example = example;
+  a.velocity_min = a.velocity_max = m.mean_velocity;
+  return a;
+}
+
+// Counts a start of motion m in attractor a: its number of starts, the range of their mean
+// velocities (summed into `velocity_sum`), and the largest difference between the two halves
+// of an irregular motion's record (absolute).
+void AddStart(const Motion& m, Attractor& a, double& velocity_sum) {
+  ++a.starts;
+  velocity_sum += m.mean_velocity;
+  a.velocity_min = std::min(a.velocity_min, m.mean_velocity);
+  a.velocity_max = std::max(a.velocity_max, m.mean_velocity);
+  if (m.status == MotionStatus::kNoPeriod) {
+    a.halves_difference =
+        std::max(a.halves_difference, std::abs(m.first_half_velocity - m.second_half_velocity));
+  }
+}
+
+// Writes the attractors `found` (in the order first reached) into out.attractors by their
+// number of starts, most first (ties: first reached first), with their fractions of
+// out.starts, and each start's index into them into out.labels (from `label`, its index
+// into `found`).
+void RankBySize(const std::vector<Attractor>& found, const std::vector<int>& label,
+                Attractors& out) {
+  std::vector<int> order(found.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return found[a].starts > found[b].starts; });
+  std::vector<int> rank(found.size());
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    rank[static_cast<std::size_t>(order[r])] = static_cast<int>(r);
+    out.attractors.push_back(found[static_cast<std::size_t>(order[r])]);
+    out.attractors.back().fraction =
+        static_cast<double>(out.attractors.back().starts) / static_cast<double>(out.starts);
+  }
+  out.labels.resize(label.size());
+  for (std::size_t k = 0; k < label.size(); ++k) {
+    out.labels[k] = rank[static_cast<std::size_t>(label[k])];
+  }
+}
+
 bool OneImpactShape(const Motion& m) {
   return m.status == MotionStatus::kPeriodic && m.period == 1 && m.impacts_right == 1 &&
          m.impacts_left == 0;
@@ -197,34 +257,15 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
     } else {
       sum += m.mean_velocity;
     }
-    for (std::size_t a = 0; a < found.size() && label[k] < 0; ++a) {
-      const Motion& f = found[a].motion;
-      if (f.status != m.status) continue;
-      const bool same = m.status == MotionStatus::kPeriodic
-                            ? SamePeriodic(f, m, grouping.velocity_tolerance)
-                            : found_cluster[a] == cluster[k];
-      if (same) label[k] = static_cast<int>(a);
-    }
+    label[k] = AttractorOf(m, cluster[k], found, found_cluster, grouping.velocity_tolerance);
     if (label[k] < 0) {
       label[k] = static_cast<int>(found.size());
-      Attractor a;
-      a.motion = m;
-      a.example = starts[k];
-      a.velocity_min = a.velocity_max = m.mean_velocity;
-      found.push_back(a);
+      found.push_back(NewAttractor(m, starts[k]));
       found_cluster.push_back(cluster[k]);
       sums.push_back(0.0);
     }
     const auto g = static_cast<std::size_t>(label[k]);
-    Attractor& a = found[g];
-    ++a.starts;
-    sums[g] += m.mean_velocity;
-    a.velocity_min = std::min(a.velocity_min, m.mean_velocity);
-    a.velocity_max = std::max(a.velocity_max, m.mean_velocity);
-    if (m.status == MotionStatus::kNoPeriod) {
-      a.halves_difference =
-          std::max(a.halves_difference, std::abs(m.first_half_velocity - m.second_half_velocity));
-    }
+    AddStart(m, found[g], sums[g]);
   }
   for (std::size_t g = 0; g < found.size(); ++g) {
     Attractor& a = found[g];
@@ -236,22 +277,7 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
   }
   if (n > out.event_limit_starts)
     out.mean_velocity = sum / static_cast<double>(n - out.event_limit_starts);
-
-  std::vector<int> order(found.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return found[a].starts > found[b].starts; });
-  std::vector<int> rank(found.size());
-  for (std::size_t r = 0; r < order.size(); ++r) {
-    rank[static_cast<std::size_t>(order[r])] = static_cast<int>(r);
-    out.attractors.push_back(found[static_cast<std::size_t>(order[r])]);
-    out.attractors.back().fraction =
-        static_cast<double>(out.attractors.back().starts) / static_cast<double>(n);
-  }
-  out.labels.resize(starts.size());
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    out.labels[k] = rank[static_cast<std::size_t>(label[k])];
-  }
+  RankBySize(found, label, out);
   return out;
 }
 

@@ -264,12 +264,51 @@ int ProbePeriod(const Forcing& forcing, const Params& params, double alpha, cons
   return DetectPeriod(probe.samples, P, o.state_tolerance);
 }
 
+// The motion of period p read off the section states and impacts of a probe (ProbePeriod),
+// when Newton's method did not refine it; `end` is the state at the end of the record.
+Motion FromProbe(const Recorder& probe, int p, const MapState& end) {
+  Motion m;
+  m.status = MotionStatus::kPeriodic;
+  m.period = p;
+  const std::vector<SimState>& S = probe.samples;
+  const int n = static_cast<int>(S.size()) - 1, whole = (n / p) * p;
+  m.mean_velocity = (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
+                    (whole * kTau);
+  m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
+  for (std::size_t k = probe.right.size() - static_cast<std::size_t>(p); k < probe.right.size();
+       ++k) {
+    m.impacts_right += probe.right[k];
+    m.impacts_left += probe.left[k];
+  }
+  m.section = end.z;
+  m.mode = end.mode;
+  return m;
+}
+
+// No periodic motion: the figures of the record of R periods (simulated as `r`), as a direct
+// run of the start gives them; `end` is the state at the end of the record.
+Motion FromRecord(const Recorder& recorder, const LongRun& run, const SimResult& r, int R,
+                  const MapState& end) {
+  Motion m;
+  m.status = MotionStatus::kNoPeriod;
+  for (int k = 0; k < R; ++k) {
+    m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
+    m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
+  }
+  m.mean_velocity = r.displacement / (R * kTau);
+  const int half = R / 2;
+  m.first_half_velocity = (run.RecordMiddle().y - run.RecordStart().y) / (half * kTau);
+  m.second_half_velocity = (r.final_state.y - run.RecordMiddle().y) / ((R - half) * kTau);
+  m.section = end.z;
+  m.mode = end.mode;
+  return m;
+}
+
 }  // namespace
 
 Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
                       const MotionOptions& options, MapState s, Recorder& recorder,
                       bool keep_impacts) {
-  Motion m;
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   const double psi = s.z.psi;
   const int T = options.transient, R = options.record;
@@ -287,6 +326,7 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   const SimState& f = r.final_state;
   MapState end{{f.x, f.u, f.v, psi}, f.mode};
   if (r.status == SimStatus::kEventLimit) {
+    Motion m;
     m.status = MotionStatus::kEventLimit;
     m.section = end.z;
     m.mode = end.mode;
@@ -317,37 +357,9 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
       return FromPeriodic(pm);
     }
     // Newton failed (a non-smooth map, a work bound): the states repeat all the same.
-    if (samples == &run.Ring()) return run.FromRing(p);
-    m.status = MotionStatus::kPeriodic;
-    m.period = p;
-    const std::vector<SimState>& S = *samples;
-    const int n = static_cast<int>(S.size()) - 1, whole = (n / p) * p;
-    m.mean_velocity =
-        (S[static_cast<std::size_t>(n)].y - S[static_cast<std::size_t>(n - whole)].y) /
-        (whole * kTau);
-    m.first_half_velocity = m.second_half_velocity = m.mean_velocity;
-    for (std::size_t k = probe.right.size() - static_cast<std::size_t>(p); k < probe.right.size();
-         ++k) {
-      m.impacts_right += probe.right[k];
-      m.impacts_left += probe.left[k];
-    }
-    m.section = end.z;
-    m.mode = end.mode;
-    return m;
+    return samples == &run.Ring() ? run.FromRing(p) : FromProbe(probe, p, end);
   }
-  // No periodic motion: the record's own figures, as a direct run of the start gives them.
-  m.status = MotionStatus::kNoPeriod;
-  for (int k = 0; k < R; ++k) {
-    m.impacts_right += recorder.right[static_cast<std::size_t>(k)];
-    m.impacts_left += recorder.left[static_cast<std::size_t>(k)];
-  }
-  m.mean_velocity = r.displacement / (R * kTau);
-  const int half = R / 2;
-  m.first_half_velocity = (run.RecordMiddle().y - run.RecordStart().y) / (half * kTau);
-  m.second_half_velocity = (f.y - run.RecordMiddle().y) / ((R - half) * kTau);
-  m.section = end.z;
-  m.mode = end.mode;
-  return m;
+  return FromRecord(recorder, run, r, R, end);
 }
 
 }  // namespace detail

@@ -83,7 +83,7 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
   }
   // A is the sine coefficient b1 of the harmonic family: the same parameter.
   const auto key = [](ModelParameter p, int h) {
-    return p == ModelParameter::kA ? std::make_pair(ModelParameter::ksin, 1) : std::make_pair(p, h);
+    return p == ModelParameter::kA ? std::make_pair(ModelParameter::kSin, 1) : std::make_pair(p, h);
   };
   if (key(p1, h1) == key(p2, h2)) {
     throw std::invalid_argument(fmt::format(

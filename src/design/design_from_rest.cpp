@@ -95,22 +95,22 @@ Energy AttractorEnergy(const DesignModel& m, const Motion& motion, const MotionO
       if (e.kind == EventKind::kImpactRight || e.kind == EventKind::kImpactLeft) u = e.u_before;
     }
   } observer;
-  SimOptions so;
-  so.alpha = m.alpha;
-  so.x0 = motion.section.x;
-  so.u0 = motion.section.u;
-  so.v0 = motion.section.v;
-  so.periods = motion.status == MotionStatus::kPeriodic ? motion.period : options.record;
-  so.chatter_velocity = options.chatter_velocity;
-  so.max_events_per_period = options.max_events_per_period;
-  so.energy = true;
+  SimOptions sim;
+  sim.alpha = m.alpha;
+  sim.x0 = motion.section.x;
+  sim.u0 = motion.section.u;
+  sim.v0 = motion.section.v;
+  sim.periods = motion.status == MotionStatus::kPeriodic ? motion.period : options.record;
+  sim.chatter_velocity = options.chatter_velocity;
+  sim.max_events_per_period = options.max_events_per_period;
+  sim.energy = true;
   const Forcing f = m.forcing.WithPhase(m.forcing.phi0() + motion.section.psi);
-  const SimResult r = Simulate(f, m.params, so, &observer);
+  const SimResult r = Simulate(f, m.params, sim, &observer);
   u = observer.u;
   if (r.status != SimStatus::kOk) return {};
   Energy e = r.energy;
   for (double* x : {&e.motor_work, &e.motor_work_positive, &e.friction_loss, &e.impact_loss}) {
-    *x /= so.periods;
+    *x /= sim.periods;
   }
   return e;
 }

@@ -70,8 +70,8 @@ BifurcationJobPlan PlanBifurcationJob(const BifurcationJobOptions& options) {
   // The analytic orbits are summary rows; a pulse force has none (they need a smooth force).
   d.analytic = d.analytic && !files.summary.empty() && !plan.robot.forcing.pulse();
   double& alpha = plan.robot.alpha;
-  if (d.param == ModelParameter::kalpha) alpha = d.from;  // the stepped value decides
-  if (!d.over_values.empty() && d.over == ModelParameter::kalpha) alpha = d.over_values.front();
+  if (d.param == ModelParameter::kAlpha) alpha = d.from;  // the stepped value decides
+  if (!d.over_values.empty() && d.over == ModelParameter::kAlpha) alpha = d.over_values.front();
   if (std::isnan(alpha)) {
     throw std::invalid_argument("alpha is missing: give the mass ratio of the robot");
   }

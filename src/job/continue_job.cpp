@@ -26,7 +26,10 @@ const SpecialPoint* First(const Branch& b, SpecialPointType type, bool located) 
   return first;
 }
 
-RobotModel RobotOf(const ContinueJobOptions& o) { return {o.forcing, o.params, o.alpha}; }
+// The robot whose motion the job continues.
+RobotModel ContinuedRobot(const ContinueJobOptions& options) {
+  return {options.forcing, options.params, options.alpha};
+}
 
 SpecialPointType TypeOf(SwitchPoint point) {
   return point == SwitchPoint::kGrazing ? SpecialPointType::kGrazing
@@ -35,30 +38,32 @@ SpecialPointType TypeOf(SwitchPoint point) {
 
 // The branch switched to at the branch's first located period doubling or first grazing
 // (located or not: the grazing switch steps far wider than its bracket).
-SwitchResult Switch(const ContinueJobOptions& o, const Branch& branch) {
+SwitchResult Switch(const ContinueJobOptions& options, const Branch& branch) {
   SwitchResult s;
-  s.point = *o.switch_at;
+  s.point = *options.switch_at;
   const bool grazing = s.point == SwitchPoint::kGrazing;
   const SpecialPoint* at = First(branch, TypeOf(s.point), !grazing);
   if (at == nullptr) return s;
   s.at = *at;
-  const RobotFamily family = NamedParameterFamily(o.forcing, o.params, o.alpha, o.param);
-  s.branch = grazing ? SwitchAtGrazing(family, branch, *at, o.continuation)
-                     : SwitchAtPeriodDoubling(family, *at, o.continuation);
+  const RobotFamily family =
+      NamedParameterFamily(options.forcing, options.params, options.alpha, options.param);
+  s.branch = grazing ? SwitchAtGrazing(family, branch, *at, options.continuation)
+                     : SwitchAtPeriodDoubling(family, *at, options.continuation);
   return s;
 }
 
-FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
-  const FollowOptions& f = *o.follow;
+FollowResult FollowCurve(const ContinueJobOptions& options, const Branch& branch) {
+  const FollowOptions& f = *options.follow;
   FollowResult r;
   r.param2 = f.param2;
   r.type = f.type;
-  r.value2 = RobotValueInRange(RobotOf(o), f.param2, {"from2", f.from2}, {"to2", f.to2}, "curve");
+  r.value2 = RobotValueInRange(ContinuedRobot(options), f.param2, {"from2", f.from2},
+                               {"to2", f.to2}, "curve");
   r.curve.type = f.type;
   const SpecialPoint* sp = First(branch, f.type, true);
   if (sp == nullptr) {
     r.curve.message = fmt::format("no located {} on the branch in {}: no curve to follow",
-                                  SpecialPointTypeName(f.type), o.param);
+                                  SpecialPointTypeName(f.type), options.param);
     return r;
   }
   r.at = *sp;
@@ -66,9 +71,10 @@ FollowResult FollowCurve(const ContinueJobOptions& o, const Branch& branch) {
   c.from2 = f.from2;
   c.to2 = f.to2;
   c.start2 = r.value2;
-  c.continuation = o.continuation;
-  r.curve = FollowSpecialPoint(
-      NamedParameterSurface(o.forcing, o.params, o.alpha, o.param, f.param2), *sp, c);
+  c.continuation = options.continuation;
+  r.curve = FollowSpecialPoint(NamedParameterSurface(options.forcing, options.params, options.alpha,
+                                                     options.param, f.param2),
+                               *sp, c);
   return r;
 }
 
@@ -91,8 +97,8 @@ void ContinueJobOptions::Validate() const {
   ContinuationOptions range = continuation;  // the options' own rules, the start's value aside
   range.start = range.from;
   range.Validate();
-  RobotValueInRange(RobotOf(*this), param, {"from", continuation.from}, {"to", continuation.to},
-                    "branch");
+  RobotValueInRange(ContinuedRobot(*this), param, {"from", continuation.from},
+                    {"to", continuation.to}, "branch");
   if (!follow) return;
   NamedParameterSurface(forcing, params, alpha, param, follow->param2);
   if (!IsFollowable(follow->type)) {
@@ -106,8 +112,8 @@ void ContinueJobOptions::Validate() const {
   curve.start2 = follow->from2;  // the range's own rules, the robot's value aside
   curve.continuation = range;
   curve.Validate();
-  RobotValueInRange(RobotOf(*this), follow->param2, {"from2", follow->from2}, {"to2", follow->to2},
-                    "curve");
+  RobotValueInRange(ContinuedRobot(*this), follow->param2, {"from2", follow->from2},
+                    {"to2", follow->to2}, "curve");
 }
 
 ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {

@@ -22,25 +22,26 @@ template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
 // The full check from rest, asking the job's interrupt.
-FromRestOptions CheckOf(const OptimizeJobOptions& o) {
-  FromRestOptions check = o.check;
-  check.attractor.interrupt = o.search.interrupt;
+FromRestOptions FromRestOptionsFor(const OptimizeJobOptions& options) {
+  FromRestOptions check = options.check;
+  check.attractor.interrupt = options.search.interrupt;
   return check;
 }
 
 // The reach search of the job: its effort, the request's force bound, the job's check.
-ReachOptions ReachOf(const OptimizeJobOptions& o, const ReachEffort& effort, double alpha) {
-  return effort.Options(o.search.gait.force_bound, alpha, CheckOf(o));
+ReachOptions ReachOptionsFor(const OptimizeJobOptions& options, const ReachEffort& effort,
+                             double alpha) {
+  return effort.Options(options.search.gait.force_bound, alpha, FromRestOptionsFor(options));
 }
 
 // How far the main job's motions carry: their continuations (asking the job's interrupt) and
 // the speed bands of their robots from rest over the job's check grid.
-RobustnessOptions RobustnessOf(const OptimizeJobOptions& o, const MainJob& job) {
+RobustnessOptions RobustnessOptionsFor(const OptimizeJobOptions& options, const MainJob& job) {
   RobustnessOptions r;
-  r.continuation.interrupt = o.search.interrupt;
+  r.continuation.interrupt = options.search.interrupt;
   r.speed_bands = true;
   r.band.levels = job.band_levels;
-  r.band.from_rest = CheckOf(o);
+  r.band.from_rest = FromRestOptionsFor(options);
   return r;
 }
 
@@ -54,46 +55,46 @@ const Motion* PeriodicMotionFromRest(const ReachResult& reach) {
 
 // The fastest drives under the reach search's bound: the Fourier ladder from its winner and the
 // pulse drive of job.pulse_levels levels, with the main job's drive budgets.
-void FastestDrives(const OptimizeJobOptions& o, const MainJob& job, MainJobResult& r) {
+void FastestDrives(const OptimizeJobOptions& options, const MainJob& job, MainJobResult& r) {
   ReachEffort drives = job.drives;
   drives.n_x = job.reach.n_x;
   drives.n_psi = job.reach.n_psi;
   drives.max_seconds = job.reach.max_seconds;
-  const double bound = o.search.gait.force_bound;
+  const double bound = options.search.gait.force_bound;
   r.drives = ClimbDriveLadder(r.params, r.robust, r.reach,
                               drives.DriveOptions(DriveFamily::Fourier(job.drive_harmonics), bound,
-                                                  kNaN, CheckOf(o)))
+                                                  kNaN, FromRestOptionsFor(options)))
                  .steps;
-  r.pulse = OptimizeReach(
-      r.params, r.robust,
-      drives.DriveOptions(DriveFamily::Pulse(job.pulse_levels), bound, kNaN, CheckOf(o)));
+  r.pulse = OptimizeReach(r.params, r.robust,
+                          drives.DriveOptions(DriveFamily::Pulse(job.pulse_levels), bound, kNaN,
+                                              FromRestOptionsFor(options)));
 }
 
-MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
-  const Params& p = o.params;
+MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
+  const Params& p = options.params;
   Params exact = p;  // the exact optima: no margins
   exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   MainJobResult r;
   r.params = p;
-  r.gait = o.search.gait;
-  r.gait.force_bound = o.search.gait.BoundFor(p);
+  r.gait = options.search.gait;
+  r.gait.force_bound = options.search.gait.BoundFor(p);
   // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2, best
   // phase. Its force sits on the friction bound, so any stick margin would exclude it.
-  TellStage(o.on_stage, "optimize: 1/5 the paper's problem (P1)");
+  TellStage(options.on_stage, "optimize: 1/5 the paper's problem (P1)");
   r.paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
-                          PhaseOptionsFor(o.search.WithRhoMax(kInf)));
+                          PhaseOptionsFor(options.search.WithRhoMax(kInf)));
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. how far it carries; 5. the exact optima, valid and stable.
-  TellStage(o.on_stage, "optimize: 2/5 the fastest robust gait (P2)");
-  r.robust = OptimizeForcing(p, ForcingOptionsFor(o.search));
-  TellStage(o.on_stage,
+  TellStage(options.on_stage, "optimize: 2/5 the fastest robust gait (P2)");
+  r.robust = OptimizeForcing(p, ForcingOptionsFor(options.search));
+  TellStage(options.on_stage,
             "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
-  r.reach = OptimizeReach(p, r.robust, ReachOf(o, job.reach, kNaN));
-  TellStage(o.on_stage, "optimize: 3/5 the fastest Fourier and pulse drives from rest");
-  FastestDrives(o, job, r);
-  TellStage(o.on_stage,
+  r.reach = OptimizeReach(p, r.robust, ReachOptionsFor(options, job.reach, kNaN));
+  TellStage(options.on_stage, "optimize: 3/5 the fastest Fourier and pulse drives from rest");
+  FastestDrives(options, job, r);
+  TellStage(options.on_stage,
             "optimize: 4/5 how far T0, e and alpha can move (continuation of both motions)");
-  const RobustnessOptions robustness = RobustnessOf(o, job);
+  const RobustnessOptions robustness = RobustnessOptionsFor(options, job);
   if (r.robust.found()) {
     r.robustness = ComputeGaitRobustness(r.robust.solution.orbit, robustness);
   }
@@ -104,63 +105,69 @@ MainJobResult RunMain(const OptimizeJobOptions& o, const MainJob& job) {
     r.reach_robustness = ComputeSpeedBands({r.reach.forcing, p, r.reach.alpha}, robustness,
                                            "its most common motion from rest is not periodic");
   }
-  TellStage(o.on_stage, "optimize: 5/5 the exact optima without margins");
-  r.fastest = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(kInf)));
-  r.stable = OptimizeForcing(exact, ForcingOptionsFor(o.search.WithRhoMax(1.0)));
-  TellStage(o.on_stage, "");
+  TellStage(options.on_stage, "optimize: 5/5 the exact optima without margins");
+  r.fastest = OptimizeForcing(exact, ForcingOptionsFor(options.search.WithRhoMax(kInf)));
+  r.stable = OptimizeForcing(exact, ForcingOptionsFor(options.search.WithRhoMax(1.0)));
+  TellStage(options.on_stage, "");
   return r;
 }
 
-ReachJobResult RunReach(const OptimizeJobOptions& o, const ReachProblem& job) {
+ReachJobResult RunReach(const OptimizeJobOptions& options, const ReachProblem& job) {
   const bool sine = job.drive.sine();
-  TellStage(o.on_stage,
+  TellStage(options.on_stage,
             fmt::format("optimize: 1/{} the robust gait that seeds the search (P2)", sine ? 2 : 3));
-  const OptimizeResult robust = OptimizeForcing(o.params, ForcingOptionsFor(o.search));
-  TellStage(o.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
-                                    "(simulated starts; up to a minute)",
-                                    sine ? 2 : 3));
-  ReachOptions sine_options = ReachOf(o, job.reach, job.alpha);
+  const OptimizeResult robust = OptimizeForcing(options.params, ForcingOptionsFor(options.search));
+  TellStage(options.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
+                                          "(simulated starts; up to a minute)",
+                                          sine ? 2 : 3));
+  ReachOptions sine_options = ReachOptionsFor(options, job.reach, job.alpha);
   sine_options.T0_min = job.T0_min;
   sine_options.T0_max = job.T0_max;
-  ReachJobResult r{
-      o.params, o.search.gait.rho_max, OptimizeReach(o.params, robust, sine_options), {}};
+  ReachJobResult r{options.params,
+                   options.search.gait.rho_max,
+                   OptimizeReach(options.params, robust, sine_options),
+                   {}};
   if (!sine) {
-    TellStage(o.on_stage, fmt::format("optimize: 3/3 the fastest drive from rest, {} (simulated "
-                                      "starts; minutes)",
-                                      job.drive.Describe()));
-    ReachOptions options =
-        job.reach.DriveOptions(job.drive, o.search.gait.force_bound, job.alpha, CheckOf(o));
-    options.T0_min = job.T0_min;
-    options.T0_max = job.T0_max;
+    TellStage(
+        options.on_stage,
+        fmt::format("optimize: 3/3 the fastest drive from rest, {} (simulated starts; minutes)",
+                    job.drive.Describe()));
+    ReachOptions drive_options = job.reach.DriveOptions(job.drive, options.search.gait.force_bound,
+                                                        job.alpha, FromRestOptionsFor(options));
+    drive_options.T0_min = job.T0_min;
+    drive_options.T0_max = job.T0_max;
     if (job.drive.waveform == Waveform::kPulse) {
-      r.ladder = {r.reach, OptimizeReach(o.params, robust, options)};
+      r.ladder = {r.reach, OptimizeReach(options.params, robust, drive_options)};
     } else {
-      r.ladder = ClimbDriveLadder(o.params, robust, r.reach, options).steps;
+      r.ladder = ClimbDriveLadder(options.params, robust, r.reach, drive_options).steps;
     }
     r.reach = r.ladder.back();
   }
-  TellStage(o.on_stage, "");
+  TellStage(options.on_stage, "");
   return r;
 }
 
-ProblemJobResult RunProblem(const OptimizeJobOptions& o) {
-  const std::string name = OptimizeModeName(o.mode);
-  TellStage(o.on_stage, fmt::format("optimize: --problem {}", name));
+ProblemJobResult RunProblem(const OptimizeJobOptions& options) {
+  const std::string name = OptimizeModeName(options.mode);
+  TellStage(options.on_stage, fmt::format("optimize: --problem {}", name));
   OptimizeResult result = std::visit(
-      Overloaded{
-          [&](const PhaseProblem& shape) {
-            return OptimizePhase(Forcing::Harmonic(shape.A, shape.c, 0.0), o.params,
-                                 PhaseOptionsFor(o.search));
-          },
-          [&](const FourierProblem&) {
-            return OptimizeFourier(o.params, FourierOptionsFor(o.search));
-          },
-          [&](const auto&) { return OptimizeForcing(o.params, ForcingOptionsFor(o.search)); }},
-      o.mode);
-  TellStage(o.on_stage, "optimize: the optimum checked from rest (simulated starts)");
-  GaitFromRest from_rest = CheckGaitFromRest(result.solution.orbit, o.params, CheckOf(o));
-  TellStage(o.on_stage, "");
-  return {name, o.params, o.search.gait.rho_max, std::move(result), std::move(from_rest)};
+      Overloaded{[&](const PhaseProblem& shape) {
+                   return OptimizePhase(Forcing::Harmonic(shape.A, shape.c, 0.0), options.params,
+                                        PhaseOptionsFor(options.search));
+                 },
+                 [&](const FourierProblem&) {
+                   return OptimizeFourier(options.params, FourierOptionsFor(options.search));
+                 },
+                 [&](const auto&) {
+                   return OptimizeForcing(options.params, ForcingOptionsFor(options.search));
+                 }},
+      options.mode);
+  TellStage(options.on_stage, "optimize: the optimum checked from rest (simulated starts)");
+  GaitFromRest from_rest =
+      CheckGaitFromRest(result.solution.orbit, options.params, FromRestOptionsFor(options));
+  TellStage(options.on_stage, "");
+  return {name, options.params, options.search.gait.rho_max, std::move(result),
+          std::move(from_rest)};
 }
 
 }  // namespace
@@ -222,13 +229,13 @@ void OptimizeJobOptions::Validate() const {
           fmt::format("drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",
                       job->drive_harmonics, kMaxHarmonics));
     }
-    ReachOf(*this, job->reach, kNaN).Validate();
-    RobustnessOf(*this, *job).Validate();
+    ReachOptionsFor(*this, job->reach, kNaN).Validate();
+    RobustnessOptionsFor(*this, *job).Validate();
   }
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
     job->reach.Validate();
     job->drive.Validate();
-    ReachOptions reach = ReachOf(*this, job->reach, job->alpha);
+    ReachOptions reach = ReachOptionsFor(*this, job->reach, job->alpha);
     reach.T0_min = job->T0_min;
     reach.T0_max = job->T0_max;
     reach.Validate();

@@ -37,12 +37,12 @@ Forcing SweepForcing(const SweepForce& f, const std::optional<double>& phi0, con
         "force with its cosine coefficients");
   }
   std::optional<double> c = f.c;
-  if (!c && grid.Has(ModelParameter::kc)) c = 0.0;  // the grid gives c at every point
+  if (!c && grid.Has(ModelParameter::kMean)) c = 0.0;  // the grid gives c at every point
   if (!c) {
     throw std::invalid_argument("c is missing: give the mean force c (or a grid over c)");
   }
   const bool amplitude_elsewhere =
-      grid.Has(ModelParameter::kA) || grid.Has(ModelParameter::ksin, 1);
+      grid.Has(ModelParameter::kA) || grid.Has(ModelParameter::kSin, 1);
   if (!phi0 && !phase_elsewhere && (f.A || amplitude_elsewhere) && f.sin.empty()) {
     throw std::invalid_argument(
         "phi0 is missing: give the impact phase phi0 [rad] (or a grid over phi0 or alpha, or "
@@ -85,12 +85,12 @@ void SetMode(const SweepOrbitMode& m, SweepOptions& s) {
   s.optimize = SweepOptimize::kNone;
   s.params = m.params;
   s.stability = m.stability;
-  const bool robot = s.grid.Has(ModelParameter::kalpha);
+  const bool robot = s.grid.Has(ModelParameter::kAlpha);
   if (robot && m.phi0) {
     throw std::invalid_argument(fmt::format(
         "phi0 = {} is invalid with grid alpha: expected no phi0 (the sweep finds phi0)", *m.phi0));
   }
-  s.forcing = SweepForcing(m.force, m.phi0, s.grid, robot || s.grid.Has(ModelParameter::kphi0));
+  s.forcing = SweepForcing(m.force, m.phi0, s.grid, robot || s.grid.Has(ModelParameter::kPhi0));
 }
 
 void SetMode(const SweepPhaseMode& m, SweepOptions& s) {

@@ -25,33 +25,34 @@ struct ParameterRow {
 static_assert(kMaxPhase == 1e6, "the phi0 rule below names kMaxPhase");
 constexpr ParameterRow kParameters[] = {
     {ModelParameter::kA, "A", {0.0, false, kInf, false, "amplitudes A >= 0"}},
-    {ModelParameter::kc, "c", {-kInf, false, kInf, false, ""}},
-    {ModelParameter::kphi0,
+    {ModelParameter::kMean, "c", {-kInf, false, kInf, false, ""}},
+    {ModelParameter::kPhi0,
      "phi0",
      {-kMaxPhase, false, kMaxPhase, false, "phases |phi0| <= 1e6 rad (phases are in radians)"}},
     {ModelParameter::kT0, "T0", {0.0, true, kInf, false, "friction bounds T0 > 0"}},
-    {ModelParameter::ke, "e", {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"}},
-    {ModelParameter::kmargin, "margin", {0.0, false, 0.5, true, "margins 0 <= margin < 0.5"}},
-    {ModelParameter::kalpha, "alpha", {0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"}},
-    {ModelParameter::kcos, "a", {-kInf, false, kInf, false, ""}},
-    {ModelParameter::ksin, "b", {-kInf, false, kInf, false, ""}},
-    {ModelParameter::kbound, "bound", {0.0, true, kInf, false, "force bounds bound > 0"}},
+    {ModelParameter::kRestitution, "e", {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"}},
+    {ModelParameter::kMargin, "margin", {0.0, false, 0.5, true, "margins 0 <= margin < 0.5"}},
+    {ModelParameter::kAlpha, "alpha", {0.0, true, 1.0, true, "mass ratios 0 < alpha < 1"}},
+    {ModelParameter::kCos, "a", {-kInf, false, kInf, false, ""}},
+    {ModelParameter::kSin, "b", {-kInf, false, kInf, false, ""}},
+    {ModelParameter::kBound, "bound", {0.0, true, kInf, false, "force bounds bound > 0"}},
     // Infinity: no stability requirement (the optimisers' default).
-    {ModelParameter::krho_max,
+    {ModelParameter::kRhoMax,
      "rho_max",
      {0.0, true, kInf, false, "spectral radius bounds rho_max > 0 (inf: no bound)", true}},
-    {ModelParameter::kmargin_stroke,
+    {ModelParameter::kMarginStroke,
      "margin_stroke",
      {0.0, false, 0.5, true, "stroke margins 0 <= margin_stroke < 0.5"}},
-    {ModelParameter::kstick_margin,
+    {ModelParameter::kStickMargin,
      "stick_margin",
      {0.0, false, 1.0, true, "stick margins 0 <= stick_margin < 1"}},
 };
 
 // The robot parameters, in the order messages list them.
-constexpr ModelParameter kRobotParameters[] = {
-    ModelParameter::kA, ModelParameter::kc,    ModelParameter::kalpha, ModelParameter::kT0,
-    ModelParameter::ke, ModelParameter::kphi0, ModelParameter::kcos,   ModelParameter::ksin};
+constexpr ModelParameter kRobotParameters[] = {ModelParameter::kA,           ModelParameter::kMean,
+                                               ModelParameter::kAlpha,       ModelParameter::kT0,
+                                               ModelParameter::kRestitution, ModelParameter::kPhi0,
+                                               ModelParameter::kCos,         ModelParameter::kSin};
 
 const ParameterRow& RowOf(ModelParameter parameter) {
   for (const ParameterRow& r : kParameters) {
@@ -118,7 +119,7 @@ const ParameterDomain& ModelParameterDomain(ModelParameter parameter) {
 }
 
 bool IsFourierCoefficient(ModelParameter parameter) {
-  return parameter == ModelParameter::kcos || parameter == ModelParameter::ksin;
+  return parameter == ModelParameter::kCos || parameter == ModelParameter::kSin;
 }
 
 bool IsRobotParameter(ModelParameter parameter) {
@@ -165,25 +166,25 @@ void SetParameter(RobotModel& robot, ModelParameter parameter, int harmonic, dou
     case ModelParameter::kA:
       f = Forcing::Harmonic(value, f.mean(), f.phi0());
       break;
-    case ModelParameter::kc:
+    case ModelParameter::kMean:
       f = f.WithMean(value);
       break;
-    case ModelParameter::kcos:
+    case ModelParameter::kCos:
       f = f.WithCosine(harmonic, value);
       break;
-    case ModelParameter::ksin:
+    case ModelParameter::kSin:
       f = f.WithSine(harmonic, value);
       break;
-    case ModelParameter::kphi0:
+    case ModelParameter::kPhi0:
       f = f.WithPhase(value);
       break;
     case ModelParameter::kT0:
       robot.params.T0 = value;
       break;
-    case ModelParameter::ke:
+    case ModelParameter::kRestitution:
       robot.params.e = value;
       break;
-    case ModelParameter::kalpha:
+    case ModelParameter::kAlpha:
       robot.alpha = value;
       break;
     default:  // a requirement: refused by CheckRobotParameter
@@ -197,19 +198,19 @@ double ParameterValue(const RobotModel& robot, ModelParameter parameter, int har
   switch (parameter) {
     case ModelParameter::kA:
       return f.amplitude();
-    case ModelParameter::kc:
+    case ModelParameter::kMean:
       return f.mean();
-    case ModelParameter::kcos:
+    case ModelParameter::kCos:
       return f.a(harmonic);
-    case ModelParameter::ksin:
+    case ModelParameter::kSin:
       return f.b(harmonic);
-    case ModelParameter::kphi0:
+    case ModelParameter::kPhi0:
       return f.phi0();
     case ModelParameter::kT0:
       return robot.params.T0;
-    case ModelParameter::ke:
+    case ModelParameter::kRestitution:
       return robot.params.e;
-    case ModelParameter::kalpha:
+    case ModelParameter::kAlpha:
       return robot.alpha;
     default:  // a requirement: refused by CheckRobotParameter
       break;

@@ -177,6 +177,151 @@ class PhaseSearch {
   std::unique_ptr<gsl_min_fminimizer, GslMinimizerFree> minimizer_;
 };
 
+// The scan of the circle: n phases -pi + h i, h = tau / n, their orbits, and which lie
+// inside a valid arc.
+struct CircleScan {
+  std::vector<double> phase;
+  std::vector<detail::Evaluation> at;
+  std::vector<char> arc;  // inside a valid arc (valid, or invalid by round-off only)
+  int best = 0;           // the best point scanned (detail::Better)
+  int valid_count = 0;
+
+  int size() const { return static_cast<int>(phase.size()); }
+  int Next(int i) const { return (i + 1) % size(); }
+  int Prev(int i) const { return (i + size() - 1) % size(); }
+  // The phase of scan point j seen from scan point i as a neighbour (unwrapped by one turn).
+  double Beside(int i, int j) const {
+    const double d = phase[j] - phase[i];
+    return d > kPi ? phase[j] - kTau : d < -kPi ? phase[j] + kTau : phase[j];
+  }
+};
+
+// The circle scanned at n phases; once the search must stop, the points left are not
+// evaluated (outside every arc).
+CircleScan ScanCircle(PhaseSearch& search, int n) {
+  const double h = kTau / n;
+  CircleScan scan;
+  scan.phase.resize(n);
+  scan.at.resize(n);
+  scan.arc.resize(n);
+  for (int i = 0; i < n; ++i) {
+    scan.phase[i] = -kPi + h * i;
+    if (search.StopNow()) {  // not scanned: outside every arc
+      scan.at[i].violation = HUGE_VAL;
+      continue;
+    }
+    scan.at[i] = search.At(scan.phase[i]);
+    if (scan.at[i].valid) ++scan.valid_count;
+    scan.arc[i] = InArc(scan.at[i]);
+    if (detail::Better(scan.at[i], scan.at[scan.best])) scan.best = i;
+  }
+  return scan;
+}
+
+// Arcs narrower than the scan: among invalid points between invalid neighbours, the local
+// minima of the violation with an orbit are candidates; the smallest few are searched.
+void SearchHiddenArcs(PhaseSearch& search, const CircleScan& scan, double tol,
+                      detail::Evaluation& winner) {
+  std::vector<int> dips;
+  for (int i = 0; i < scan.size(); ++i) {
+    const int a = scan.Prev(i), b = scan.Next(i);
+    if (scan.arc[i] || scan.arc[a] || scan.arc[b] || !scan.at[i].solution.orbit.ok()) continue;
+    if (scan.at[i].violation < scan.at[a].violation &&
+        scan.at[i].violation < scan.at[b].violation) {
+      dips.push_back(i);
+    }
+  }
+  const auto by_violation = [&](int i, int j) {
+    return scan.at[i].violation < scan.at[j].violation;
+  };
+  if (dips.size() > static_cast<std::size_t>(kMaxHiddenArcs)) {
+    std::partial_sort(dips.begin(), dips.begin() + kMaxHiddenArcs, dips.end(), by_violation);
+    dips.resize(kMaxHiddenArcs);
+  }
+  for (int i : dips) {
+    if (search.StopNow()) break;
+    search.HiddenArc(scan.Beside(i, scan.Prev(i)), scan.phase[i], scan.Beside(i, scan.Next(i)), tol,
+                     winner);
+  }
+}
+
+// The extent [lo[i], hi[i]] of the valid arc around each scan point i.
+struct ArcExtents {
+  std::vector<double> lo, hi;
+};
+
+// Arc edges: bisects every validity flip between neighbours, keeping the valid side; offers
+// every edge to `winner` and returns the arcs' extents.
+ArcExtents BisectArcEdges(PhaseSearch& search, const CircleScan& scan, double tol,
+                          detail::Evaluation& winner) {
+  const int n = scan.size();
+  ArcExtents extent{std::vector<double>(n), std::vector<double>(n)};
+  for (int i = 0; i < n; ++i) {
+    extent.lo[i] = scan.Beside(i, scan.Prev(i));
+    extent.hi[i] = scan.Beside(i, scan.Next(i));
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = scan.Next(i);
+    if (scan.arc[i] == scan.arc[j] || search.StopNow()) continue;
+    const int v = scan.arc[i] ? i : j, w = scan.arc[i] ? j : i;
+    double edge_phase = scan.phase[v];
+    detail::Evaluation edge =
+        search.Edge(scan.phase[v], scan.at[v], scan.Beside(v, w), tol, edge_phase);
+    (v == i ? extent.hi[v] : extent.lo[v]) = edge_phase;
+    if (detail::Better(edge, winner)) winner = std::move(edge);
+  }
+  return extent;
+}
+
+// Polishes I around every local maximum of I among the scan points inside an arc.
+void PolishLocalMaxima(PhaseSearch& search, const CircleScan& scan, const ArcExtents& extent,
+                       double tol, detail::Evaluation& winner) {
+  for (int i = 0; i < scan.size(); ++i) {
+    if (!scan.arc[i] || search.StopNow()) continue;
+    const int a = scan.Prev(i), b = scan.Next(i);
+    if ((scan.arc[a] && scan.at[a].I > scan.at[i].I) ||
+        (scan.arc[b] && scan.at[b].I > scan.at[i].I)) {
+      continue;
+    }
+    search.Polish(extent.lo[i], scan.phase[i], extent.hi[i], tol, winner);
+  }
+}
+
+// The result for the best point found, `winner`.
+OptimizeResult PhaseResult(const detail::Evaluation& winner, const detail::ConstraintSetup& setup,
+                           const PhaseOptions& options, PhaseSearch& search,
+                           const CircleScan& scan) {
+  const int n = scan.size();
+  OptimizeResult result;
+  result.algorithm = fmt::format("scan{}+bisection+brent", n);
+  // Every point was evaluated at its phase reduced into [-pi, pi): report it as it is.
+  const double phi0 = winner.solution.orbit.forcing.phi0();
+  result.evaluations = search.evaluations();
+  result.solution = winner.solution;
+  result.spectral_radius = detail::SpectralRadius(winner);
+  const std::string gait = "orbit" + detail::RequirementWords(setup);
+  if (winner.valid) {
+    result.status = OptimizeStatus::kOk;
+    result.active_constraints = detail::ActiveConstraints(winner, setup, options.active_tol);
+    result.binding = detail::BindingMargins(winner, setup, options.active_tol);
+    result.message = fmt::format(
+        "best valid {} over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
+        gait, winner.I, phi0, scan.valid_count, n);
+  } else {
+    result.status = OptimizeStatus::kNoValidOrbit;
+    result.message = fmt::format(
+        "no phase phi0 gives a valid {} ({} phases scanned); nearest to valid: phi0 = "
+        "{:.10g}, which violates {}",
+        gait, n, phi0, detail::DescribeViolations(winner, setup));
+  }
+  if (search.Expired()) {
+    result.status = OptimizeStatus::kMaxTime;
+    result.message +=
+        fmt::format(" (time limit of {:g} s reached: the search is incomplete)", options.max_time);
+  }
+  return result;
+}
+
 }  // namespace
 
 void PhaseOptions::Validate() const {
@@ -193,105 +338,14 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
   const detail::ConstraintSetup setup{params, HUGE_VAL, options.gait.rho_max};
   PhaseSearch search(forcing, setup, options.max_time, options.interrupt);
-  const int n = options.scan_points;
-  const double h = kTau / n;
-  std::vector<double> phase(n);
-  std::vector<detail::Evaluation> scan(n);
-  std::vector<char> arc(n);  // inside a valid arc (valid, or invalid by round-off only)
-  int best = 0, valid_count = 0;
-  for (int i = 0; i < n; ++i) {
-    phase[i] = -kPi + h * i;
-    if (search.StopNow()) {  // not scanned: outside every arc
-      scan[i].violation = HUGE_VAL;
-      continue;
-    }
-    scan[i] = search.At(phase[i]);
-    if (scan[i].valid) ++valid_count;
-    arc[i] = InArc(scan[i]);
-    if (detail::Better(scan[i], scan[best])) best = i;
+  const CircleScan scan = ScanCircle(search, options.scan_points);
+  detail::Evaluation winner = scan.at[scan.best];
+  SearchHiddenArcs(search, scan, options.phase_tol, winner);
+  if (scan.valid_count > 0) {
+    const ArcExtents extent = BisectArcEdges(search, scan, options.phase_tol, winner);
+    PolishLocalMaxima(search, scan, extent, options.phase_tol, winner);
   }
-  OptimizeResult result;
-  result.algorithm = fmt::format("scan{}+bisection+brent", n);
-  detail::Evaluation winner = scan[best];
-  auto next = [n](int i) { return (i + 1) % n; };
-  auto prev = [n](int i) { return (i + n - 1) % n; };
-  // The phase of scan point j seen from scan point i as a neighbour (unwrapped by one turn).
-  auto beside = [&](int i, int j) {
-    const double d = phase[j] - phase[i];
-    return d > kPi ? phase[j] - kTau : d < -kPi ? phase[j] + kTau : phase[j];
-  };
-  // Arcs narrower than the scan: among invalid points between invalid neighbours, the local
-  // minima of the violation with an orbit are candidates; the smallest few are searched.
-  {
-    std::vector<int> dips;
-    for (int i = 0; i < n; ++i) {
-      const int a = prev(i), b = next(i);
-      if (arc[i] || arc[a] || arc[b] || !scan[i].solution.orbit.ok()) continue;
-      if (scan[i].violation < scan[a].violation && scan[i].violation < scan[b].violation) {
-        dips.push_back(i);
-      }
-    }
-    const auto by_violation = [&](int i, int j) { return scan[i].violation < scan[j].violation; };
-    if (dips.size() > static_cast<std::size_t>(kMaxHiddenArcs)) {
-      std::partial_sort(dips.begin(), dips.begin() + kMaxHiddenArcs, dips.end(), by_violation);
-      dips.resize(kMaxHiddenArcs);
-    }
-    for (int i : dips) {
-      if (search.StopNow()) break;
-      search.HiddenArc(beside(i, prev(i)), phase[i], beside(i, next(i)), options.phase_tol, winner);
-    }
-  }
-  if (valid_count > 0) {
-    // Arc edges: bisect every validity flip between neighbours, keep the valid side.
-    std::vector<double> lo_edge(n), hi_edge(n);  // extent of the valid arc around point i
-    for (int i = 0; i < n; ++i) {
-      lo_edge[i] = beside(i, prev(i));
-      hi_edge[i] = beside(i, next(i));
-    }
-    for (int i = 0; i < n; ++i) {
-      const int j = next(i);
-      if (arc[i] == arc[j] || search.StopNow()) continue;
-      const int v = arc[i] ? i : j, w = arc[i] ? j : i;
-      double edge_phase = phase[v];
-      detail::Evaluation edge =
-          search.Edge(phase[v], scan[v], beside(v, w), options.phase_tol, edge_phase);
-      (v == i ? hi_edge[v] : lo_edge[v]) = edge_phase;
-      if (detail::Better(edge, winner)) winner = std::move(edge);
-    }
-    // Polish around every local maximum of I among the valid scan points.
-    for (int i = 0; i < n; ++i) {
-      if (!arc[i] || search.StopNow()) continue;
-      const int a = prev(i), b = next(i);
-      if ((arc[a] && scan[a].I > scan[i].I) || (arc[b] && scan[b].I > scan[i].I)) continue;
-      search.Polish(lo_edge[i], phase[i], hi_edge[i], options.phase_tol, winner);
-    }
-  }
-  // Every point was evaluated at its phase reduced into [-pi, pi): report it as it is.
-  const double phi0 = winner.solution.orbit.forcing.phi0();
-  result.evaluations = search.evaluations();
-  result.solution = winner.solution;
-  result.spectral_radius = detail::SpectralRadius(winner);
-  const std::string gait = "orbit" + detail::RequirementWords(setup);
-  if (winner.valid) {
-    result.status = OptimizeStatus::kOk;
-    result.active_constraints = detail::ActiveConstraints(winner, setup, options.active_tol);
-    result.binding = detail::BindingMargins(winner, setup, options.active_tol);
-    result.message = fmt::format(
-        "best valid {} over phi0: I = {:.10g} at phi0 = {:.10g} ({} of {} scanned phases valid)",
-        gait, winner.I, phi0, valid_count, n);
-  } else {
-    result.status = OptimizeStatus::kNoValidOrbit;
-    result.message = fmt::format(
-        "no phase phi0 gives a valid {} ({} phases scanned); nearest to valid: phi0 = "
-        "{:.10g}, which violates {}",
-        gait, n, phi0, detail::DescribeViolations(winner, setup));
-  }
-  if (search.Expired()) {
-    result.status = OptimizeStatus::kMaxTime;
-    result.message +=
-        fmt::format(" (time limit of {:g} s reached: the search is incomplete)", options.max_time);
-  }
-  return result;
+  return PhaseResult(winner, setup, options, search, scan);
 }
 
 }  // namespace capsubot

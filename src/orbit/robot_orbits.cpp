@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "capsubot/numerics/safe_newton.hpp"
@@ -50,11 +51,27 @@ struct PsiFunction {
   }
 };
 
-}  // namespace
+// The terms of the exclusion test above for one robot.
+struct PsiBounds {
+  double L;       // bound of |dPsi/dphi0|
+  double noise;   // rounding allowance in Psi
+  double accept;  // |Psi| accepted as a root at width kMinWidth
+  bool smooth;    // phi1 is smooth in phi0 (max|F| < T0): the two-sided test holds
+};
 
-std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
-                                      bool* complete, std::int64_t max_evaluations,
-                                      const std::function<void()>& poll) {
+// A candidate root of Psi, at width kMinWidth.
+struct Root {
+  double phi0;
+  bool crossing;  // a sign change (else a double root: |Psi| at the noise level)
+  double residual;
+};
+
+// An undecided part [lo, hi] of the circle, with Psi at its ends.
+struct Interval {
+  double lo, hi, plo, phi;
+};
+
+void CheckRobotOrbitsInput(const Params& params, double alpha, std::int64_t max_evaluations) {
   params.Validate();
   if (!(alpha > 0.0 && alpha < 1.0)) {
     throw std::invalid_argument(
@@ -64,29 +81,31 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     throw std::invalid_argument(
         fmt::format("max_evaluations = {} is invalid: expected >= 1", max_evaluations));
   }
-  if (complete != nullptr) *complete = true;
-  std::vector<Solution> found;
-  double S = 0.0;
-  for (int k = 1; k <= forcing.harmonics(); ++k) S += std::hypot(forcing.a(k), forcing.b(k));
-  // Without a directed force there is no orbit; a constant force has no phase to choose.
-  if (!(forcing.mean() > 0.0) || S == 0.0) return found;
+}
 
-  const PsiFunction psi{&forcing, &params, alpha};
-  const double L = kTau * S * (1.0 + alpha);
-  const bool smooth = forcing.MaxAbs() < params.T0;
-  // Rounding allowance in Psi (its terms are of order tau^2 (S + c + T0)).
-  const double noise = 1e-12 * kTau * kTau * (S + forcing.mean() + params.T0);
-  const double accept = L * kMinWidth + noise;
+// The root of Psi in an interval of width kMinWidth that the exclusion test kept, if |Psi|
+// there is small enough to accept.
+std::optional<Root> RootIn(const PsiFunction& psi, const PsiBounds& b, const Interval& iv) {
+  const double alo = std::abs(iv.plo), ahi = std::abs(iv.phi);
+  const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
+  // Newton with the envelope derivative inside the bracket (bisection fallback); each
+  // evaluation of psi runs its own bracketed Newton iteration for phi1.
+  const double r = crossing ? detail::SafeNewton(
+                                  psi, [&psi](double p) { return psi.Derivative(p); }, iv.lo, iv.hi)
+                   : alo <= ahi ? iv.lo
+                                : iv.hi;
+  const double residual = std::abs(psi(r));
+  if (residual <= b.accept) return Root{r, crossing, residual};
+  return std::nullopt;
+}
 
-  struct Root {
-    double phi0;
-    bool crossing;  // a sign change (else a double root: |Psi| at the noise level)
-    double residual;
-  };
+// The candidate roots of Psi over the circle, in the order found: the circle is cut into
+// kInitialGrid intervals, each excluded by the test above or halved down to kMinWidth. When
+// max_evaluations stops the halving first, *complete (if given) is set to false.
+std::vector<Root> CandidateRoots(const PsiFunction& psi, const PsiBounds& b,
+                                 std::int64_t max_evaluations, const std::function<void()>& poll,
+                                 bool* complete) {
   std::vector<Root> roots;
-  struct Interval {
-    double lo, hi, plo, phi;
-  };
   std::vector<Interval> stack;
   double prev = psi(-kPi);
   for (int i = 1; i <= kInitialGrid; ++i) {
@@ -100,20 +119,11 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
   while (!stack.empty() && evaluations < max_evaluations) {
     const Interval iv = stack.back();
     stack.pop_back();
-    const double w = iv.hi - iv.lo, bound = L * w + 2.0 * noise;
+    const double w = iv.hi - iv.lo, bound = b.L * w + 2.0 * b.noise;
     const double alo = std::abs(iv.plo), ahi = std::abs(iv.phi);
-    if (smooth ? alo + ahi > bound : std::min(alo, ahi) > bound) continue;  // no root here
+    if (b.smooth ? alo + ahi > bound : std::min(alo, ahi) > bound) continue;  // no root here
     if (w <= kMinWidth) {
-      const bool crossing = (iv.plo < 0.0) != (iv.phi < 0.0);
-      // Newton with the envelope derivative inside the bracket (bisection fallback); each
-      // evaluation of psi runs its own bracketed Newton iteration for phi1.
-      const double r = crossing
-                           ? detail::SafeNewton(
-                                 psi, [&psi](double p) { return psi.Derivative(p); }, iv.lo, iv.hi)
-                       : alo <= ahi ? iv.lo
-                                    : iv.hi;
-      const double residual = std::abs(psi(r));
-      if (residual <= accept) roots.push_back({r, crossing, residual});
+      if (const std::optional<Root> root = RootIn(psi, b, iv)) roots.push_back(*root);
       continue;
     }
     const double mid = 0.5 * (iv.lo + iv.hi), pmid = psi(mid);
@@ -123,14 +133,18 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
   }
   // Undecided intervals left: the work bound stopped the search, roots there are missing.
   if (complete != nullptr) *complete = stack.empty();
-  // One orbit per band of candidates. Near a fold Psi is flat, so around a root |Psi| stays
-  // within `accept` over a band accept/|Psi'| wide (sqrt(2 accept/|Psi''|) at a double root):
-  // many 1e-10 intervals there pass the |Psi| test, and rounding may even flip the sign of
-  // Psi more than once. Consecutive candidates lie in one band when |Psi| at their midpoint is
-  // within it (Psi is monotone or convex across a band, so the midpoint is no larger than the
-  // ends); between two orbits it rises above the band. The circle closes: the last band and
-  // the first are one when |Psi| is within the band at the midpoint across pi. Roots closer
-  // than the band (|Psi| between them below the rounding level) are not told apart.
+  return roots;
+}
+
+// One root per band of candidates, in increasing phi0. Near a fold Psi is flat, so around a
+// root |Psi| stays within `accept` over a band accept/|Psi'| wide (sqrt(2 accept/|Psi''|) at a
+// double root): many 1e-10 intervals there pass the |Psi| test, and rounding may even flip the
+// sign of Psi more than once. Consecutive candidates lie in one band when |Psi| at their
+// midpoint is within it (Psi is monotone or convex across a band, so the midpoint is no larger
+// than the ends); between two orbits it rises above the band. The circle closes: the last band
+// and the first are one when |Psi| is within the band at the midpoint across pi. Roots closer
+// than the band (|Psi| between them below the rounding level) are not told apart.
+std::vector<Root> OneRootPerBand(const PsiFunction& psi, double accept, std::vector<Root> roots) {
   std::sort(roots.begin(), roots.end(),
             [](const Root& x, const Root& y) { return x.phi0 < y.phi0; });
   const auto same_band = [&](double lo, double hi) {
@@ -152,6 +166,29 @@ std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& para
     if (better(bands.back(), bands.front())) bands.front() = bands.back();
     bands.pop_back();
   }
+  return bands;
+}
+
+}  // namespace
+
+std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
+                                      bool* complete, std::int64_t max_evaluations,
+                                      const std::function<void()>& poll) {
+  CheckRobotOrbitsInput(params, alpha, max_evaluations);
+  if (complete != nullptr) *complete = true;
+  std::vector<Solution> found;
+  double S = 0.0;
+  for (int k = 1; k <= forcing.harmonics(); ++k) S += std::hypot(forcing.a(k), forcing.b(k));
+  // Without a directed force there is no orbit; a constant force has no phase to choose.
+  if (!(forcing.mean() > 0.0) || S == 0.0) return found;
+
+  const PsiFunction psi{&forcing, &params, alpha};
+  const double L = kTau * S * (1.0 + alpha);
+  // Rounding allowance in Psi (its terms are of order tau^2 (S + c + T0)).
+  const double noise = 1e-12 * kTau * kTau * (S + forcing.mean() + params.T0);
+  const PsiBounds bounds{L, noise, L * kMinWidth + noise, forcing.MaxAbs() < params.T0};
+  const std::vector<Root> bands = OneRootPerBand(
+      psi, bounds.accept, CandidateRoots(psi, bounds, max_evaluations, poll, complete));
   for (const Root& band : bands) {
     const double phi0 = band.phi0 >= kPi ? band.phi0 - kTau : band.phi0;  // [-pi, pi)
     found.push_back(Solve(forcing.WithPhase(phi0), params));

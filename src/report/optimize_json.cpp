@@ -117,14 +117,14 @@ nlohmann::json ReachJson(const ReachResult& r) {
   j["evaluations"] = r.evaluations;
   j["rejected_evaluations"] = r.rejected_evaluations;
   j["algorithm"] = r.algorithm;
-  const Orbit& so = r.seed.gait.solution.orbit;
+  const Orbit& seed_orbit = r.seed.gait.solution.orbit;
   if (r.seed.from_rest.checked) {
-    j["seed"] = {{"A", so.forcing.amplitude()},
-                 {"c", so.forcing.mean()},
-                 {"phi0", so.forcing.phi0()},
-                 {"alpha", so.alpha},
-                 {"I", so.I},
-                 {"v_mean", so.v_mean},
+    j["seed"] = {{"A", seed_orbit.forcing.amplitude()},
+                 {"c", seed_orbit.forcing.mean()},
+                 {"phi0", seed_orbit.forcing.phi0()},
+                 {"alpha", seed_orbit.alpha},
+                 {"I", seed_orbit.I},
+                 {"v_mean", seed_orbit.v_mean},
                  {"mean_velocity_from_rest", r.seed.from_rest.attractors.mean_velocity},
                  {"reached", r.seed.from_rest.reached}};
   } else {

@@ -54,10 +54,9 @@ std::string GaitText(const OptimizeResult& r, double rho_max) {
   std::string t;
   t += fmt::format("    force            {}\n", ForceFormula(o.forcing));
   t += fmt::format("    inner mass ratio alpha = m2/(m1+m2) = {}\n", Num(o.alpha, 5));
-  t += fmt::format(
-      "    speed            I = {} gap lengths per period (mean velocity {} "
-      "omega L)\n",
-      Num(o.I, 6), Num(o.v_mean, 5));
+  t +=
+      fmt::format("    speed            I = {} gap lengths per period (mean velocity {} omega L)\n",
+                  Num(o.I, 6), Num(o.v_mean, 5));
   t += fmt::format(
       "    impact           u = {} omega L, capsule kick v+ = {} omega L, slides "
       "until phi1 = {} rad\n",
@@ -297,9 +296,9 @@ std::string Text(const ReachJobResult& r) {
   const ReachResult& reach = r.reach;
   return fmt::format(
              "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait "
-             "(margins "
-             "d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n  status           {}\n  "
-             "{}\n{}",
+             "(margins d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n"
+             "  status           {}\n"
+             "  {}\n{}",
              p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.rho_max,
              OptimizeStatusName(reach.status), reach.message, ReachText(reach)) +
          LadderText(r.ladder);

@@ -31,7 +31,7 @@ struct DesignRule {
 };
 
 constexpr DesignRule kRules[] = {
-    {DesignParameter::km1,
+    {DesignParameter::kM1,
      "m1",
      {0.0, true, kInf, false, "shell masses m1 > 0 [kg]"},
      [](DesignInput& in, double v) { in.m1 = v; }},
@@ -39,48 +39,48 @@ constexpr DesignRule kRules[] = {
      "L",
      {0.0, true, kInf, false, "gaps L > 0 [m]"},
      [](DesignInput& in, double v) { in.L = v; }},
-    {DesignParameter::kmu,
+    {DesignParameter::kMu,
      "mu",
      {0.0, true, kInf, false, "friction coefficients mu > 0"},
      [](DesignInput& in, double v) { in.mu = v; }},
-    {DesignParameter::kg,
+    {DesignParameter::kGravity,
      "g",
      {0.0, true, kInf, false, "gravities g > 0 [m/s^2]"},
      [](DesignInput& in, double v) { in.g = v; }},
-    {DesignParameter::ke,
+    {DesignParameter::kRestitution,
      "e",
      {0.0, false, 1.0, false, "restitutions 0 <= e <= 1"},
      [](DesignInput& in, double v) { in.e = v; }},
-    {DesignParameter::kforce_amplitude,
+    {DesignParameter::kForceAmplitude,
      "force-amplitude",
      {0.0, false, kInf, false, "motor force amplitudes >= 0 [N]"},
      [](DesignInput& in, double v) { in.force.amplitude = v; }},
-    {DesignParameter::kforce_bias,
+    {DesignParameter::kForceBias,
      "force-bias",
      {0.0, false, kInf, false, "mean motor forces >= 0 [N]"},
      [](DesignInput& in, double v) { in.force.bias = v; }},
-    {DesignParameter::kfrequency,
+    {DesignParameter::kFrequency,
      "frequency",
      {0.0, true, kInf, false, "frequencies f > 0 [Hz]"},
      [](DesignInput& in, double v) { in.frequency_min = in.frequency_max = v; }},
-    {DesignParameter::km2,
+    {DesignParameter::kM2,
      "m2",
      {0.0, true, kInf, false, "inner masses m2 > 0 [kg]"},
      [](DesignInput&, double) {}},  // not an input field: the point's fixed m2 (PointInput)
-    {DesignParameter::kmargin,
+    {DesignParameter::kMargin,
      "margin",
      {0.0, false, 0.5, true, "margins 0 <= margin < 0.5"},
      [](DesignInput& in, double v) { in.margin = v; }},
-    {DesignParameter::kmargin_stroke,
+    {DesignParameter::kMarginStroke,
      "margin-stroke",
      {0.0, false, 0.5, true, "stroke margins 0 <= margin-stroke < 0.5"},
      [](DesignInput& in, double v) { in.margin_stroke = v; }},
-    {DesignParameter::kstick_margin,
+    {DesignParameter::kStickMargin,
      "stick-margin",
      {0.0, false, 1.0, true, "stick margins 0 <= stick-margin < 1"},
      [](DesignInput& in, double v) { in.stick_margin = v; }},
     // Infinity: no stability requirement.
-    {DesignParameter::krho_max,
+    {DesignParameter::kRhoMax,
      "rho-max",
      {0.0, true, kInf, false, "spectral radius bounds rho-max > 0 (inf: no bound)", true},
      [](DesignInput& in, double v) { in.rho_max = v; }},
@@ -137,8 +137,8 @@ const char* DesignParameterName(DesignParameter parameter) { return RuleOf(param
 void DesignGridAxis::Validate() const { Check(ToString(), RuleOf(parameter).domain); }
 
 std::string DesignGridAxis::column() const {
-  if (parameter == DesignParameter::km2) return "m2_kg";
-  if (parameter == DesignParameter::kfrequency) return "frequency_hz";
+  if (parameter == DesignParameter::kM2) return "m2_kg";
+  if (parameter == DesignParameter::kFrequency) return "frequency_hz";
   return name();
 }
 
@@ -166,7 +166,7 @@ DesignInput DesignGridOptions::PointInput(std::int64_t point, double& m2) const 
   m2 = kNaN;
   for (std::size_t i = 0; i < axes.size(); ++i) {
     const double value = RowMajorValue(axes, point, i);
-    if (axes[i].parameter == DesignParameter::km2) m2 = value;
+    if (axes[i].parameter == DesignParameter::kM2) m2 = value;
     RuleOf(axes[i].parameter).set(in, value);
   }
   return in;
@@ -191,7 +191,7 @@ void DesignGridOptions::Validate() const {
                         axes[i].ToString(), axes[i].name(), axes[j].ToString()));
       }
     }
-    if (axes[i].parameter == DesignParameter::kforce_amplitude && input.force.fourier()) {
+    if (axes[i].parameter == DesignParameter::kForceAmplitude && input.force.fourier()) {
       throw std::invalid_argument(
           fmt::format("grid {} is invalid with a Fourier motor force: expected the harmonic force "
                       "F_N = A_N sin(omega t + phase) + c_N, whose amplitude the grid varies",

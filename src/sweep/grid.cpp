@@ -204,12 +204,12 @@ void Grid::Validate() const {
       }
     }
   }
-  if (Has(ModelParameter::kalpha) && Has(ModelParameter::kphi0)) {
+  if (Has(ModelParameter::kAlpha) && Has(ModelParameter::kPhi0)) {
     throw std::invalid_argument(
         "grid alpha together with grid phi0 is invalid: a robot's mass ratio alpha "
         "determines its impact phases phi0: expected a grid over only one of them");
   }
-  if (Has(ModelParameter::kA) && Has(ModelParameter::ksin, 1)) {
+  if (Has(ModelParameter::kA) && Has(ModelParameter::kSin, 1)) {
     throw std::invalid_argument(
         "grid A together with grid b1 is invalid: A is the sine coefficient b1 of the "
         "harmonic force: expected a grid over only one of them");

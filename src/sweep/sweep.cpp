@@ -20,11 +20,11 @@ constexpr int kRobotBlockPoints = 32;
 constexpr int kPhaseBlockPoints = 2;
 
 constexpr unsigned Bit(ModelParameter p) { return 1U << static_cast<unsigned>(p); }
-constexpr unsigned kForceParameters = Bit(ModelParameter::kA) | Bit(ModelParameter::kc) |
-                                      Bit(ModelParameter::kcos) | Bit(ModelParameter::ksin);
+constexpr unsigned kForceParameters = Bit(ModelParameter::kA) | Bit(ModelParameter::kMean) |
+                                      Bit(ModelParameter::kCos) | Bit(ModelParameter::kSin);
 constexpr unsigned kModelParameters =
-    Bit(ModelParameter::kT0) | Bit(ModelParameter::ke) | Bit(ModelParameter::kmargin) |
-    Bit(ModelParameter::kmargin_stroke) | Bit(ModelParameter::kstick_margin);
+    Bit(ModelParameter::kT0) | Bit(ModelParameter::kRestitution) | Bit(ModelParameter::kMargin) |
+    Bit(ModelParameter::kMarginStroke) | Bit(ModelParameter::kStickMargin);
 
 // What each mode computes: its name, the problem it solves, the parameters a grid may vary
 // with it (the others are chosen by the optimiser or unused), points per block.
@@ -38,16 +38,16 @@ struct ModeRule {
 
 constexpr ModeRule kModes[] = {
     {SweepOptimize::kNone, "none", "the orbit of the given force",
-     kForceParameters | kModelParameters | Bit(ModelParameter::kphi0) | Bit(ModelParameter::kalpha),
+     kForceParameters | kModelParameters | Bit(ModelParameter::kPhi0) | Bit(ModelParameter::kAlpha),
      kSolveBlockPoints},
     {SweepOptimize::kPhase, "phi0", "problem P1, the best impact phase phi0",
-     kForceParameters | kModelParameters | Bit(ModelParameter::krho_max), kPhaseBlockPoints},
+     kForceParameters | kModelParameters | Bit(ModelParameter::kRhoMax), kPhaseBlockPoints},
     {SweepOptimize::kForcing, "forcing", "problem P2, the best A, c and phi0",
-     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kBound) | Bit(ModelParameter::kRhoMax), 1},
     {SweepOptimize::kFourier, "fourier", "problem P3, the best K-harmonic force",
-     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kBound) | Bit(ModelParameter::kRhoMax), 1},
     {SweepOptimize::kReach, "reach", "the fastest motion from rest, seeded by P2",
-     kModelParameters | Bit(ModelParameter::kbound) | Bit(ModelParameter::krho_max), 1},
+     kModelParameters | Bit(ModelParameter::kBound) | Bit(ModelParameter::kRhoMax), 1},
 };
 
 const ModeRule& RuleOf(SweepOptimize mode) {
@@ -83,7 +83,7 @@ void CheckBoundAgainstT0(const SweepOptions& o, const GaitRequirements& gait) {
   GaitRequirements worst = gait;
   Params params = o.params;
   params.T0 = Extent(o.grid, ModelParameter::kT0, o.params.T0).first;
-  worst.force_bound = Extent(o.grid, ModelParameter::kbound, gait.force_bound).second;
+  worst.force_bound = Extent(o.grid, ModelParameter::kBound, gait.force_bound).second;
   worst.BoundFor(params);
 }
 
@@ -183,10 +183,10 @@ std::vector<std::string> SweepColumns(const SweepOptions& o) {
   std::vector<std::string> columns;
   for (const GridAxis& axis : o.grid.axes) {
     // In robot mode the computed alpha has its own column: the grid's is the robot's.
-    const bool robot = axis.parameter == ModelParameter::kalpha;
+    const bool robot = axis.parameter == ModelParameter::kAlpha;
     columns.emplace_back(robot ? "robot_alpha" : axis.name());
   }
-  if (o.grid.Has(ModelParameter::kalpha)) {
+  if (o.grid.Has(ModelParameter::kAlpha)) {
     columns.emplace_back("orbits");
     columns.emplace_back("orbit");
     columns.emplace_back("phi0");
@@ -242,7 +242,7 @@ BlockComputeFactory SweepBlocks(const SweepOptions& options) {
 
 std::int64_t SweepBlockPoints(const SweepOptions& options, std::int64_t points, int threads) {
   if (options.block_points > 0) return options.block_points;
-  const std::int64_t most = options.grid.Has(ModelParameter::kalpha)
+  const std::int64_t most = options.grid.Has(ModelParameter::kAlpha)
                                 ? kRobotBlockPoints
                                 : RuleOf(options.optimize).block_points;
   return BalancedBlock(points, threads, most);

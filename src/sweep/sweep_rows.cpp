@@ -20,7 +20,7 @@ namespace {
 // Bumped whenever the bytes of a sweep change for the same options (invalidates checkpoints).
 constexpr int kFormatVersion = 5;
 
-bool RobotMode(const SweepOptions& o) { return o.grid.Has(ModelParameter::kalpha); }
+bool RobotMode(const SweepOptions& o) { return o.grid.Has(ModelParameter::kAlpha); }
 
 void Append(RowBuffer& out, const char* text) { out.append(text); }
 
@@ -146,7 +146,7 @@ SweepPoint::SweepPoint(const SweepOptions& o)
   // The sweep's threads work on different points (the result does not depend on this).
   reach.search.attractor.threads = reach.check.attractor.threads = 1;
   if (!std::any_of(o.grid.axes.begin(), o.grid.axes.end(), [](const GridAxis& axis) {
-        return axis.parameter == ModelParameter::kA || axis.parameter == ModelParameter::kc ||
+        return axis.parameter == ModelParameter::kA || axis.parameter == ModelParameter::kMean ||
                IsFourierCoefficient(axis.parameter);
       })) {
     return;
@@ -179,30 +179,30 @@ GaitRequirements& SweepPoint::Gait() {
 void SweepPoint::Set(const GridAxis& axis, double value) {
   switch (axis.parameter) {
     case ModelParameter::kA:  // b_1 of a series that a_k and b_k axes may have extended
-      SetParameter(robot, ModelParameter::ksin, 1, value);
+      SetParameter(robot, ModelParameter::kSin, 1, value);
       break;
-    case ModelParameter::kc:
-    case ModelParameter::kphi0:
+    case ModelParameter::kMean:
+    case ModelParameter::kPhi0:
     case ModelParameter::kT0:
-    case ModelParameter::ke:
-    case ModelParameter::kalpha:
-    case ModelParameter::kcos:
-    case ModelParameter::ksin:
+    case ModelParameter::kRestitution:
+    case ModelParameter::kAlpha:
+    case ModelParameter::kCos:
+    case ModelParameter::kSin:
       SetParameter(robot, axis.parameter, axis.harmonic, value);
       break;
-    case ModelParameter::kmargin:
+    case ModelParameter::kMargin:
       robot.params.margin = value;
       break;
-    case ModelParameter::kmargin_stroke:
+    case ModelParameter::kMarginStroke:
       robot.params.margin_stroke = value;
       break;
-    case ModelParameter::kstick_margin:
+    case ModelParameter::kStickMargin:
       robot.params.stick_margin = value;
       break;
-    case ModelParameter::kbound:
+    case ModelParameter::kBound:
       Gait().force_bound = value;
       break;
-    case ModelParameter::krho_max:
+    case ModelParameter::kRhoMax:
       Gait().rho_max = value;
       break;
   }
@@ -212,10 +212,10 @@ SweepRowWriter::SweepRowWriter(const SweepOptions& options)
     : options_(options), point_(options), values_(options.grid.axes.size()) {
   const std::vector<GridAxis>& axes = options.grid.axes;
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    if (axes[i].parameter == ModelParameter::kphi0) order_.push_back(i);
+    if (axes[i].parameter == ModelParameter::kPhi0) order_.push_back(i);
   }
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    if (axes[i].parameter != ModelParameter::kphi0) order_.push_back(i);
+    if (axes[i].parameter != ModelParameter::kPhi0) order_.push_back(i);
   }
   // robot mode, no orbit: orbits = 0, then an empty cell for every further column
   const std::size_t cells = SweepColumns(options).size() - axes.size() - 1;
@@ -304,7 +304,7 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
   constexpr double kNaN = ReachResult::kNaN;
   const bool found = !std::isnan(r.mean_velocity);
   const bool seed = r.seed.from_rest.checked;
-  const Orbit& so = r.seed.gait.solution.orbit;
+  const Orbit& seed_orbit = r.seed.gait.solution.orbit;
   return {{"A", found ? r.forcing.amplitude() : kNaN},
           {"c", found ? r.forcing.mean() : kNaN},
           {"phi0", found ? r.forcing.phi0() : kNaN},
@@ -314,12 +314,12 @@ std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
           {"robust_to_settings", r.robust_to_settings ? 1.0 : 0.0},
           {"max_relative_deviation", r.spread.max_relative_deviation},
           {"evaluations", static_cast<double>(r.evaluations)},
-          {"seed_A", seed ? so.forcing.amplitude() : kNaN},
-          {"seed_c", seed ? so.forcing.mean() : kNaN},
-          {"seed_phi0", seed ? so.forcing.phi0() : kNaN},
-          {"seed_alpha", seed ? so.alpha : kNaN},
-          {"seed_I", seed ? so.I : kNaN},
-          {"seed_v_mean", seed ? so.v_mean : kNaN},
+          {"seed_A", seed ? seed_orbit.forcing.amplitude() : kNaN},
+          {"seed_c", seed ? seed_orbit.forcing.mean() : kNaN},
+          {"seed_phi0", seed ? seed_orbit.forcing.phi0() : kNaN},
+          {"seed_alpha", seed ? seed_orbit.alpha : kNaN},
+          {"seed_I", seed ? seed_orbit.I : kNaN},
+          {"seed_v_mean", seed ? seed_orbit.v_mean : kNaN},
           {"seed_mean_velocity_from_rest", seed ? r.seed.from_rest.attractors.mean_velocity : kNaN},
           {"seed_reached", seed ? static_cast<double>(r.seed.from_rest.reached) : kNaN}};
 }

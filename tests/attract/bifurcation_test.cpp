@@ -49,7 +49,7 @@ TEST(Bifurcation, UpAndDownSweepsDifferWhereTwoAttractorsCoexist) {
   Params params;
   params.T0 = 0.5;
   BifurcationOptions o;
-  o.param = ModelParameter::kalpha;
+  o.param = ModelParameter::kAlpha;
   o.from = 0.66;
   o.to = 0.70;
   o.steps = 21;
@@ -108,7 +108,7 @@ TEST(Bifurcation, AnalyticRowsAreTheValidOneImpactOrbits) {
   const double rho = ComputeStability(s.orbit).spectral_radius;
   ASSERT_LT(rho, 1.0);
   BifurcationOptions o;
-  o.param = ModelParameter::kalpha;
+  o.param = ModelParameter::kAlpha;
   o.from = s.orbit.alpha;
   o.to = 0.29;
   o.steps = 2;
@@ -166,7 +166,7 @@ struct StudyOverE {
     o.steps = 3;
     o.motion.transient = 40;
     o.motion.record = 20;
-    o.over = ModelParameter::ke;
+    o.over = ModelParameter::kRestitution;
     o.over_values = std::move(over_e);
   }
 };
@@ -345,7 +345,7 @@ TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
   o.analytic = false;
   const double alpha = 0.6435592358295166;
   const BifurcationDiagram by_A = ComputeBifurcation(kOptimumForce, Params{}, alpha, o);
-  o.param = ModelParameter::ksin;
+  o.param = ModelParameter::kSin;
   o.harmonic = 1;
   const BifurcationDiagram by_b1 = ComputeBifurcation(
       Forcing::Fourier(c, {0.0}, {kOptimumForce.amplitude()}, phi0), Params{}, alpha, o);
@@ -372,7 +372,7 @@ TEST(Bifurcation, OverACosineCoefficientSimulatesTheForceWithThatCoefficient) {
   const double alpha = 0.6435592358295166;
   const Forcing base = Forcing::Fourier(c, {0.0, 0.0}, {A, 0.02}, phi0);
   BifurcationOptions o;
-  o.param = ModelParameter::kcos;
+  o.param = ModelParameter::kCos;
   o.harmonic = 2;
   o.steps = 2;
   o.down = false;
@@ -416,12 +416,12 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
               std::string("parameter = ") + bad + choices);
   }
   int k = 0;
-  EXPECT_EQ(ParseRobotParameter("b12", &k), ModelParameter::ksin);
+  EXPECT_EQ(ParseRobotParameter("b12", &k), ModelParameter::kSin);
   EXPECT_EQ(k, 12);
-  EXPECT_EQ(ParseRobotParameter("phi0", &k), ModelParameter::kphi0);
+  EXPECT_EQ(ParseRobotParameter("phi0", &k), ModelParameter::kPhi0);
   EXPECT_EQ(k, 0);
   BifurcationOptions fourier;
-  fourier.param = ModelParameter::kcos;
+  fourier.param = ModelParameter::kCos;
   fourier.harmonic = 2;
   fourier.from = 0.0;
   fourier.to = 0.1;
@@ -432,7 +432,7 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
             "harmonic = 0 is invalid: expected 1 <= k <= 16 for a_k and b_k, else 0");
   BifurcationOptions o;
-  o.param = ModelParameter::ke;
+  o.param = ModelParameter::kRestitution;
   o.from = 0.5;
   o.to = 1.5;
   EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),

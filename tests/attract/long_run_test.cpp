@@ -331,7 +331,7 @@ TEST(LongRun, SectionIsOffTheImpactForEveryTransient) {
     EXPECT_EQ(a.attractors.front().motion.impacts_right, 1);
     // The bifurcation diagram started on the impact reports the orbit's own spectral radius.
     BifurcationOptions b;
-    b.param = ModelParameter::kalpha;
+    b.param = ModelParameter::kAlpha;
     b.from = r.alpha;
     b.to = 0.28;
     b.steps = 2;

@@ -37,7 +37,7 @@ BifurcationJobOptions SmallStudy(const std::string& name) {
   d.steps = 3;
   d.motion.transient = 40;
   d.motion.record = 20;
-  d.over = ModelParameter::ke;
+  d.over = ModelParameter::kRestitution;
   d.over_values = {0.4, 0.5};
   d.threads = 2;
   job.files.impacts = testing::TempPath(name + "_impacts.csv").string();
@@ -93,14 +93,14 @@ TEST(BifurcationJob, ItsShardsJoinIntoTheFileOfTheWholeStudy) {
 TEST(BifurcationJob, TheDiagramGivesAlphaWhenItStepsAlpha) {
   BifurcationJobOptions job = SmallStudy("bifurcation_alpha");
   job.robot.alpha = std::nan("");
-  job.diagram.param = ModelParameter::kalpha;
+  job.diagram.param = ModelParameter::kAlpha;
   job.diagram.from = 0.25;
   job.diagram.to = 0.3;
   EXPECT_EQ(PlanBifurcationJob(job).robot.alpha, 0.25);
   job.diagram.param = ModelParameter::kT0;
   job.diagram.from = 0.08;
   job.diagram.to = 0.12;
-  job.diagram.over = ModelParameter::kalpha;
+  job.diagram.over = ModelParameter::kAlpha;
   job.diagram.over_values = {0.27, 0.28};
   EXPECT_EQ(PlanBifurcationJob(job).robot.alpha, 0.27);
   job.diagram.over_values.clear();
@@ -148,7 +148,7 @@ TEST(BifurcationJob, DirectionsAndSecondParameterFromTheirNames) {
   EXPECT_EQ(InvalidArgumentMessage([&] { SetBifurcationDirection("sideways", o); }),
             "direction = sideways is invalid: expected up, down or both");
   SetBifurcationOver("b2=0.1,0.3", o);
-  EXPECT_EQ(o.over, ModelParameter::ksin);
+  EXPECT_EQ(o.over, ModelParameter::kSin);
   EXPECT_EQ(o.over_harmonic, 2);
   EXPECT_EQ(o.over_values, (std::vector<double>{0.1, 0.3}));
   // Refused from its size, before its values are held.

@@ -19,11 +19,11 @@ namespace {
 using testing::InvalidArgumentMessage;
 
 constexpr ModelParameter kAll[] = {
-    ModelParameter::kA,           ModelParameter::kc,       ModelParameter::kphi0,
-    ModelParameter::kT0,          ModelParameter::ke,       ModelParameter::kmargin,
-    ModelParameter::kalpha,       ModelParameter::kcos,     ModelParameter::ksin,
-    ModelParameter::kbound,       ModelParameter::krho_max, ModelParameter::kmargin_stroke,
-    ModelParameter::kstick_margin};
+    ModelParameter::kA,          ModelParameter::kMean,        ModelParameter::kPhi0,
+    ModelParameter::kT0,         ModelParameter::kRestitution, ModelParameter::kMargin,
+    ModelParameter::kAlpha,      ModelParameter::kCos,         ModelParameter::kSin,
+    ModelParameter::kBound,      ModelParameter::kRhoMax,      ModelParameter::kMarginStroke,
+    ModelParameter::kStickMargin};
 
 // Two forces are the same numbers: the same series, phase and values at a few phases, bit for
 // bit (memcmp: -0.0 and 0.0 differ).
@@ -66,8 +66,8 @@ TEST(ModelParameter, EveryNameParsesBackToItsParameterAndHarmonic) {
     }
   }
   EXPECT_EQ(checked, 11 + 2 * 4);
-  EXPECT_EQ(ModelParameterName(ModelParameter::kcos, 3), "a3");
-  EXPECT_EQ(ModelParameterName(ModelParameter::ksin), "b");
+  EXPECT_EQ(ModelParameterName(ModelParameter::kCos, 3), "a3");
+  EXPECT_EQ(ModelParameterName(ModelParameter::kSin), "b");
   EXPECT_EQ(ModelParameterNames(),
             "A, c, phi0, T0, e, margin, alpha, a1..a16, b1..b16, bound, rho_max, "
             "margin_stroke, stick_margin");
@@ -76,10 +76,10 @@ TEST(ModelParameter, EveryNameParsesBackToItsParameterAndHarmonic) {
 TEST(ModelParameter, NamesOutsideTheTableDoNotParse) {
   int checked = 0;
   for (const char* bad : {"mu", "a0", "b17", "a01", "a", "c1", "a+1", "A ", ""}) {
-    ModelParameter parsed = ModelParameter::kbound;
+    ModelParameter parsed = ModelParameter::kBound;
     int harmonic = -1;
     EXPECT_FALSE(ParseModelParameter(bad, parsed, harmonic)) << bad;
-    EXPECT_EQ(parsed, ModelParameter::kbound) << bad;  // left unchanged
+    EXPECT_EQ(parsed, ModelParameter::kBound) << bad;  // left unchanged
     EXPECT_EQ(harmonic, -1) << bad;
     ++checked;
   }
@@ -91,14 +91,14 @@ TEST(ModelParameter, RobotParametersAreThoseThatChangeTheMotion) {
   for (ModelParameter p : kAll) robot += IsRobotParameter(p) ? 1 : 0;
   EXPECT_EQ(robot, 8);  // A, c, alpha, T0, e, phi0, a_k, b_k
   for (ModelParameter p :
-       {ModelParameter::kmargin, ModelParameter::kmargin_stroke, ModelParameter::kstick_margin,
-        ModelParameter::kbound, ModelParameter::krho_max}) {
+       {ModelParameter::kMargin, ModelParameter::kMarginStroke, ModelParameter::kStickMargin,
+        ModelParameter::kBound, ModelParameter::kRhoMax}) {
     EXPECT_FALSE(IsRobotParameter(p)) << ModelParameterName(p);
   }
   int k = -1;
-  EXPECT_EQ(ParseRobotParameter("b12", &k), ModelParameter::ksin);
+  EXPECT_EQ(ParseRobotParameter("b12", &k), ModelParameter::kSin);
   EXPECT_EQ(k, 12);
-  EXPECT_EQ(ParseRobotParameter("phi0", &k), ModelParameter::kphi0);
+  EXPECT_EQ(ParseRobotParameter("phi0", &k), ModelParameter::kPhi0);
   EXPECT_EQ(k, 0);
   const std::string choices =
       " is invalid: expected one of A, c, alpha, T0, e, phi0, or a Fourier coefficient "
@@ -112,26 +112,26 @@ TEST(ModelParameter, SetParameterBuildsTheForceAsItsConstructorsDo) {
   const double c = 0.02, phi0 = -2.842;
   const Forcing two = Forcing::Fourier(c, {0.01, -0.004}, {0.05, 0.003}, phi0);
   RobotModel r{two, Params{}, 0.3};
-  SetParameter(r, ModelParameter::kc, 0, 0.035);
+  SetParameter(r, ModelParameter::kMean, 0, 0.035);
   EXPECT_TRUE(SameForce(r.forcing, Forcing::Fourier(0.035, {0.01, -0.004}, {0.05, 0.003}, phi0)));
-  SetParameter(r, ModelParameter::kcos, 2, 0.006);
+  SetParameter(r, ModelParameter::kCos, 2, 0.006);
   EXPECT_TRUE(SameForce(r.forcing, Forcing::Fourier(0.035, {0.01, 0.006}, {0.05, 0.003}, phi0)));
-  SetParameter(r, ModelParameter::ksin, 1, -0.07);
+  SetParameter(r, ModelParameter::kSin, 1, -0.07);
   EXPECT_TRUE(SameForce(r.forcing, Forcing::Fourier(0.035, {0.01, 0.006}, {-0.07, 0.003}, phi0)));
   // phi0 is kept as given (WithPhase); a coefficient set afterwards reduces it, as Fourier does.
-  SetParameter(r, ModelParameter::kphi0, 0, 7.5);
+  SetParameter(r, ModelParameter::kPhi0, 0, 7.5);
   EXPECT_EQ(r.forcing.phi0(), 7.5);
   EXPECT_TRUE(SameForce(
       r.forcing, Forcing::Fourier(0.035, {0.01, 0.006}, {-0.07, 0.003}, 0.0).WithPhase(7.5)));
-  SetParameter(r, ModelParameter::kc, 0, 0.01);
+  SetParameter(r, ModelParameter::kMean, 0, 0.01);
   EXPECT_TRUE(SameForce(r.forcing, Forcing::Fourier(0.01, {0.01, 0.006}, {-0.07, 0.003}, 7.5)));
   EXPECT_LT(r.forcing.phi0(), 3.15);
   RobotModel h{Forcing::Harmonic(0.05, c, phi0), Params{}, 0.3};
   SetParameter(h, ModelParameter::kA, 0, 0.08);
   EXPECT_TRUE(SameForce(h.forcing, Forcing::Harmonic(0.08, c, phi0)));
   SetParameter(h, ModelParameter::kT0, 0, 0.4);
-  SetParameter(h, ModelParameter::ke, 0, 0.6);
-  SetParameter(h, ModelParameter::kalpha, 0, 0.7);
+  SetParameter(h, ModelParameter::kRestitution, 0, 0.6);
+  SetParameter(h, ModelParameter::kAlpha, 0, 0.7);
   EXPECT_EQ(h.params.T0, 0.4);
   EXPECT_EQ(h.params.e, 0.6);
   EXPECT_EQ(h.alpha, 0.7);
@@ -146,13 +146,13 @@ TEST(ModelParameter, ParameterValueReadsBackEveryRobotParameterSet) {
     if (!IsRobotParameter(p)) continue;
     RobotModel& robot = p == ModelParameter::kA ? h : r;
     const int k = IsFourierCoefficient(p) ? 2 : 0;
-    const double value = p == ModelParameter::kphi0 ? 7.25 : 0.375;  // exact in binary
+    const double value = p == ModelParameter::kPhi0 ? 7.25 : 0.375;  // exact in binary
     SetParameter(robot, p, k, value);
     EXPECT_EQ(ParameterValue(robot, p, k), value) << ModelParameterName(p, k);
     ++checked;
   }
   EXPECT_EQ(checked, 8);
-  EXPECT_EQ(InvalidArgumentMessage([&] { ParameterValue(r, ModelParameter::krho_max); }),
+  EXPECT_EQ(InvalidArgumentMessage([&] { ParameterValue(r, ModelParameter::kRhoMax); }),
             "parameter = rho_max is invalid: expected one of A, c, alpha, T0, e, phi0, or a "
             "Fourier coefficient a1..a16, b1..b16");
 }
@@ -162,16 +162,16 @@ TEST(ModelParameter, SetParameterRefusesWhatTheRobotCannotTake) {
   const RobotModel before = fourier;
   EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(fourier, ModelParameter::kA, 0, 0.1); }),
             "parameter = A is invalid for a Fourier force: expected the harmonic family");
-  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(fourier, ModelParameter::kcos, 3, 0.1); }),
+  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(fourier, ModelParameter::kCos, 3, 0.1); }),
             "parameter = a3 is invalid for this force: expected a_k or b_k with 1 <= k <= K = 1, "
             "its harmonics");
-  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(fourier, ModelParameter::kbound, 0, 1.0); }),
+  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(fourier, ModelParameter::kBound, 0, 1.0); }),
             "parameter = bound is invalid: expected one of A, c, alpha, T0, e, phi0, or a Fourier "
             "coefficient a1..a16, b1..b16");
   RobotModel harmonic{Forcing::Harmonic(0.05, 0.02, 0.0), Params{}, 0.3};
   EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(harmonic, ModelParameter::kA, 0, -1.0); }),
             "A = -1 is invalid: expected A >= 0");
-  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(harmonic, ModelParameter::kc, 0, NAN); }),
+  EXPECT_EQ(InvalidArgumentMessage([&] { SetParameter(harmonic, ModelParameter::kMean, 0, NAN); }),
             "c = nan is invalid: expected a finite number");
   EXPECT_TRUE(SameForce(fourier.forcing, before.forcing));  // a refused value changes nothing
 }

@@ -22,7 +22,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 TEST(Grid, ParsesNameBoundsAndCount) {
   const GridAxis axis = ParseGridAxis("c=0.01:0.5:50");
-  EXPECT_EQ(axis.parameter, ModelParameter::kc);
+  EXPECT_EQ(axis.parameter, ModelParameter::kMean);
   EXPECT_EQ(axis.lo, 0.01);
   EXPECT_EQ(axis.hi, 0.5);
   EXPECT_EQ(axis.n, 50);
@@ -63,8 +63,8 @@ TEST(Grid, TwoAxesRunRowMajorWithTheLastFastest) {
   EXPECT_EQ(g.Value(3, 0), 1.0);
   EXPECT_EQ(g.Value(3, 1), 0.1);
   EXPECT_EQ(g.Value(5, 1), 0.3);
-  EXPECT_TRUE(g.Has(ModelParameter::kc));
-  EXPECT_FALSE(g.Has(ModelParameter::kphi0));
+  EXPECT_TRUE(g.Has(ModelParameter::kMean));
+  EXPECT_FALSE(g.Has(ModelParameter::kPhi0));
 }
 
 struct BadSpec {
@@ -232,21 +232,21 @@ TEST(Grid, NumbersAreDecimalSubnormalsIncluded) {
 
 TEST(Grid, FourierCoefficientsBoundAndRhoMaxAreParameters) {
   const GridAxis a3 = ParseGridAxis("a3=-0.1:0.1:3");
-  EXPECT_EQ(a3.parameter, ModelParameter::kcos);
+  EXPECT_EQ(a3.parameter, ModelParameter::kCos);
   EXPECT_EQ(a3.harmonic, 3);
   EXPECT_EQ(a3.name(), "a3");
   const GridAxis b16 = ParseGridAxis("b16=0,0.01");
-  EXPECT_EQ(b16.parameter, ModelParameter::ksin);
+  EXPECT_EQ(b16.parameter, ModelParameter::kSin);
   EXPECT_EQ(b16.harmonic, 16);
-  EXPECT_EQ(ParseGridAxis("bound=0.05:0.1:2").parameter, ModelParameter::kbound);
-  EXPECT_EQ(ParseGridAxis("rho_max=0.9,1").parameter, ModelParameter::krho_max);
+  EXPECT_EQ(ParseGridAxis("bound=0.05:0.1:2").parameter, ModelParameter::kBound);
+  EXPECT_EQ(ParseGridAxis("rho_max=0.9,1").parameter, ModelParameter::kRhoMax);
   Grid g;
   g.axes = {ParseGridAxis("a1=0:1:2"), ParseGridAxis("a2=0:1:2"), ParseGridAxis("b1=0:1:2")};
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { g.Validate(); }),
             "");  // different harmonics are different parameters
-  EXPECT_TRUE(g.Has(ModelParameter::kcos));
-  EXPECT_TRUE(g.Has(ModelParameter::kcos, 2));
-  EXPECT_FALSE(g.Has(ModelParameter::ksin, 2));
+  EXPECT_TRUE(g.Has(ModelParameter::kCos));
+  EXPECT_TRUE(g.Has(ModelParameter::kCos, 2));
+  EXPECT_FALSE(g.Has(ModelParameter::kSin, 2));
 }
 
 TEST(Grid, ThreeAxesRunRowMajorWithTheFirstSlowest) {
@@ -322,7 +322,7 @@ TEST(GridFuzz, EveryStringParsesToAValidAxisOrIsRejectedWithItsMessage) {
       ASSERT_LE(axis.size(), kMaxGridPoints) << spec;
       for (std::int64_t k : {std::int64_t{0}, axis.size() / 2, axis.size() - 1}) {
         const double v = axis.Value(k);
-        const bool no_bound = axis.parameter == ModelParameter::krho_max && v == kInfinity;
+        const bool no_bound = axis.parameter == ModelParameter::kRhoMax && v == kInfinity;
         ASSERT_TRUE(std::isfinite(v) || no_bound) << spec << " value " << k;
         ASSERT_GE(v, axis.Min()) << spec;
         ASSERT_LE(v, axis.Max()) << spec;

@@ -27,7 +27,7 @@ struct BifurcationOptions {
 
   /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
   ModelParameter param = ModelParameter::kT0;
-  /// k of a_k (kcos) or b_k (ksin): 1 <= k <= the force's harmonics K; 0 for the others.
+  /// k of a_k (kCos) or b_k (kSin): 1 <= k <= the force's harmonics K; 0 for the others.
   int harmonic = 0;
   double from = kNaN;                      ///< first value (finite)
   double to = kNaN;                        ///< last value (finite; may be below `from`)
@@ -43,8 +43,8 @@ struct BifurcationOptions {
   /// of over_values in turn, the other inputs kept); empty: one diagram, no second parameter.
   /// At most kMaxOverValues values.
   std::vector<double> over_values;
-  ModelParameter over = ModelParameter::kc;  ///< the second parameter (not `param`)
-  int over_harmonic = 0;                     ///< k of a_k, b_k when `over` is one, else 0
+  ModelParameter over = ModelParameter::kMean;  ///< the second parameter (not `param`)
+  int over_harmonic = 0;                        ///< k of a_k, b_k when `over` is one, else 0
   /// Compute only shard `shard` of `shards` (0 <= shard < shards <= the continuations): the
   /// continuations q with q % shards = shard, q = i * D + d for over value i and direction d
   /// (D = 2 up and down, else 1; d = 0 up), with the analytic orbits of the values i whose

@@ -15,23 +15,23 @@
 namespace capsubot {
 
 /// A parameter a study can vary (docs/model.md sections 2, 6, 7, 8 and 12 for the symbols).
-/// kcos and ksin are the Fourier coefficients a_k and b_k of the force
+/// kCos and kSin are the Fourier coefficients a_k and b_k of the force
 /// F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)) (forcing.hpp), with k given beside
 /// them (the harmonic); the paper's family has a_1 = 0, b_1 = A.
 enum class ModelParameter {
-  kA,              ///< amplitude A of F = A sin(phi + phi0) + c (the sine coefficient b_1)
-  kc,              ///< mean force c
-  kphi0,           ///< motor phase at the impact phi0 [rad]
-  kT0,             ///< friction bound T0
-  ke,              ///< restitution e
-  kmargin,         ///< requirement: clearance d
-  kalpha,          ///< mass ratio alpha of the robot
-  kcos,            ///< cosine coefficient a_k of the Fourier force
-  ksin,            ///< sine coefficient b_k of the Fourier force
-  kbound,          ///< requirement: force bound of problems P2 and P3, max |F| <= bound
-  krho_max,        ///< requirement: largest admissible spectral radius (stability)
-  kmargin_stroke,  ///< requirement: clearance relative to the stroke d_s
-  kstick_margin,   ///< requirement: stick margin s
+  kA,             ///< amplitude A of F = A sin(phi + phi0) + c (the sine coefficient b_1)
+  kMean,          ///< mean force c
+  kPhi0,          ///< motor phase at the impact phi0 [rad]
+  kT0,            ///< friction bound T0
+  kRestitution,   ///< restitution e
+  kMargin,        ///< requirement: clearance d
+  kAlpha,         ///< mass ratio alpha of the robot
+  kCos,           ///< cosine coefficient a_k of the Fourier force
+  kSin,           ///< sine coefficient b_k of the Fourier force
+  kBound,         ///< requirement: force bound of problems P2 and P3, max |F| <= bound
+  kRhoMax,        ///< requirement: largest admissible spectral radius (stability)
+  kMarginStroke,  ///< requirement: clearance relative to the stroke d_s
+  kStickMargin,   ///< requirement: stick margin s
 };
 
 /// Where a parameter's values may lie: [min, max], open ends excluded, and the rule a message
@@ -46,7 +46,7 @@ struct ParameterDomain {
   bool infinite = false;
 };
 
-/// The parameter's name ("A", "phi0", "rho_max", "a2"); `harmonic` is k for kcos and ksin
+/// The parameter's name ("A", "phi0", "rho_max", "a2"); `harmonic` is k for kCos and kSin
 /// ("a" and "b" alone when it is 0).
 std::string ModelParameterName(ModelParameter parameter, int harmonic = 0);
 
@@ -61,7 +61,7 @@ bool ParseModelParameter(const std::string& name, ModelParameter& parameter, int
 /// The domain of the parameter's values (A >= 0, T0 > 0, 0 <= e <= 1, ...).
 const ParameterDomain& ModelParameterDomain(ModelParameter parameter);
 
-/// True for kcos and ksin, the parameters indexed by a harmonic k.
+/// True for kCos and kSin, the parameters indexed by a harmonic k.
 bool IsFourierCoefficient(ModelParameter parameter);
 
 /// True for the parameters of the robot itself, which change its motion and which

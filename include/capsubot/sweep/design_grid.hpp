@@ -25,19 +25,19 @@ namespace capsubot {
 
 /// An SI input of the design a grid can vary.
 enum class DesignParameter {
-  km1,               ///< shell mass m1 [kg]
-  kL,                ///< gap L [m]
-  kmu,               ///< friction coefficient mu
-  kg,                ///< gravity g [m/s^2]
-  ke,                ///< restitution e
-  kforce_amplitude,  ///< amplitude of the harmonic motor force [N]
-  kforce_bias,       ///< mean motor force [N]
-  kfrequency,        ///< motor frequency [Hz], fixed at each point (no frequency search)
-  km2,               ///< inner mass m2 [kg], fixed at each point (no m2 search)
-  kmargin,           ///< clearance d [units of L]
-  kmargin_stroke,    ///< clearance d_s [units of the stroke]
-  kstick_margin,     ///< stick margin s
-  krho_max,          ///< largest admissible multiplier modulus (inf: no stability requirement)
+  kM1,              ///< shell mass m1 [kg]
+  kL,               ///< gap L [m]
+  kMu,              ///< friction coefficient mu
+  kGravity,         ///< gravity g [m/s^2]
+  kRestitution,     ///< restitution e
+  kForceAmplitude,  ///< amplitude of the harmonic motor force [N]
+  kForceBias,       ///< mean motor force [N]
+  kFrequency,       ///< motor frequency [Hz], fixed at each point (no frequency search)
+  kM2,              ///< inner mass m2 [kg], fixed at each point (no m2 search)
+  kMargin,          ///< clearance d [units of L]
+  kMarginStroke,    ///< clearance d_s [units of the stroke]
+  kStickMargin,     ///< stick margin s
+  kRhoMax,          ///< largest admissible multiplier modulus (inf: no stability requirement)
 };
 
 /// The parameter's name in a grid: the design's setting ("m1", "force-amplitude", "rho-max",
@@ -46,7 +46,7 @@ const char* DesignParameterName(DesignParameter parameter);
 
 /// One axis of a design grid.
 struct DesignGridAxis : GridValues {
-  DesignParameter parameter = DesignParameter::km2;  ///< what varies
+  DesignParameter parameter = DesignParameter::kM2;  ///< what varies
 
   std::string name() const { return DesignParameterName(parameter); }
   /// Its column in the CSV header: name(), but "m2_kg" for the inner mass and "frequency_hz" for

@@ -55,7 +55,7 @@ struct GridValues {
 
 /// One axis of a sweep's grid.
 struct GridAxis : GridValues {
-  ModelParameter parameter = ModelParameter::kphi0;  ///< what varies
+  ModelParameter parameter = ModelParameter::kPhi0;  ///< what varies
   int harmonic = 0;                                  ///< k of a_k or b_k (1..kMaxHarmonics), else 0
 
   /// The parameter's name ("phi0", "a2").
@@ -105,7 +105,7 @@ struct Grid {
   void Validate() const;
   /// Number of points: the product of the axes' sizes.
   std::int64_t size() const;
-  /// True when an axis varies `parameter` (with `harmonic` k for kcos and ksin; 0 means any k).
+  /// True when an axis varies `parameter` (with `harmonic` k for kCos and kSin; 0 means any k).
   bool Has(ModelParameter parameter, int harmonic = 0) const;
   /// The value of axis `axis` at point index `point` (row-major).
   double Value(std::int64_t point, std::size_t axis) const;
