@@ -47,7 +47,6 @@ struct DesignCliOptions {
   bool resume = false;
   std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
 };
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point.
 const std::vector<OptionUse> kOptionUses = {

@@ -1,5 +1,6 @@
 #include "capsubot/report/design_json.hpp"
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/solution_json.hpp"
@@ -49,7 +50,7 @@ nlohmann::json AttractorsSiJson(const Attractors& attractors, double mm_s) {
 }
 
 nlohmann::json FromRestBestJson(const DesignInput& in, const DesignFromRestResult& r) {
-  const double nan = Gait::kNaN;
+  const double nan = kNaN;
   nlohmann::json out;
   for (const FromRestBest* b : {&r.forward, &r.backward}) {
     nlohmann::json j;

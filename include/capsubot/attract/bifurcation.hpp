@@ -14,6 +14,7 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/model/model_parameter.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot {
@@ -23,7 +24,7 @@ namespace capsubot {
 inline constexpr std::int64_t kMaxOverValues = 100000;
 
 struct BifurcationOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
   ModelParameter param = ModelParameter::kT0;
@@ -82,8 +83,6 @@ struct ImpactPoint {
 
 /// The long-run motion at one parameter value (or an analytic orbit).
 struct BifurcationPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double param = kNaN;
   SweepDirection direction = SweepDirection::kUp;
   Motion motion;  ///< analytic rows: period 1, one right impact, the orbit's mean velocity

@@ -30,6 +30,7 @@
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/model_parameter.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -39,8 +40,6 @@ namespace capsubot {
 using RobotFamily = std::function<RobotModel(double lambda)>;
 
 struct ContinuationOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double from = kNaN;   ///< lower end of the parameter range (finite)
   double to = kNaN;     ///< upper end (finite, > from)
   double start = kNaN;  ///< the parameter's value at the start state; from <= start <= to
@@ -77,8 +76,6 @@ void RequireDifferencesInRange(double step, const char* lo_name, double lo, cons
 
 /// One point of a branch.
 struct BranchPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double parameter = kNaN;       ///< lambda
   double arclength = kNaN;       ///< s from the start, increasing along the branch's order
   double tangent = kNaN;         ///< d lambda / ds (changes sign at a fold)
@@ -110,8 +107,6 @@ enum class Wall {
 const char* WallName(Wall wall);
 
 struct SpecialPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   SpecialPointType type = SpecialPointType::kFold;
   double parameter = kNaN;  ///< lambda at the special point
   double arclength = kNaN;  ///< s there (BranchPoint::arclength)

@@ -18,6 +18,7 @@
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
@@ -40,8 +41,6 @@ inline constexpr int kDesignMaxUnresolvedRobots = 8;
 /// F_N(s) = bias + sum_k (cos[k-1] cos(k s) + sin[k-1] sin(k s)). The phase at the impact is
 /// not an input: each orbit of the robot has its own.
 struct MotorForce {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double amplitude = kNaN;  ///< amplitude [N] of the harmonic force, >= 0 (unused with Fourier)
   double bias = kNaN;       ///< mean force [N], >= 0 (a one-impact gait needs > 0)
   std::vector<double> cos;  ///< Fourier cosine coefficients [N]; with `sin`, replaces amplitude
@@ -54,7 +53,7 @@ struct MotorForce {
 
 /// A physical robot and what may be chosen: SI units throughout.
 struct DesignInput {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   /// Shell mass [kg], > 0; with the default inner-mass range, small enough that 10 m1 is finite.
   double m1 = kNaN;
@@ -122,7 +121,7 @@ const char* GaitStatusName(GaitStatus status);
 
 /// A gait in the user's units, with the dimensionless orbit it comes from.
 struct Gait {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   GaitStatus status = GaitStatus::kNotRun;
   double m2_kg = kNaN;         ///< inner mass [kg]

@@ -21,6 +21,7 @@
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/design/design.hpp"
 #include "capsubot/model/energy.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -81,7 +82,7 @@ const char* FromRestStatusName(FromRestStatus status);
 /// each attractor's budget per forcing period (Simulate with SimOptions::energy over whole
 /// periods of the attractor), weighted by the fraction of starts that reach it.
 struct FromRestBest {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   Direction direction = Direction::kForward;
   FromRestStatus status = FromRestStatus::kNotRun;
