@@ -8,7 +8,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -77,8 +76,8 @@ struct ImpactPoint {
   bool right = true;      ///< right wall (else left)
   double phase = 0.0;     ///< forcing phase psi at the impact, in [0, tau)
   double velocity = 0.0;  ///< relative velocity just before it
-  double over = std::numeric_limits<double>::quiet_NaN();  ///< second parameter (NaN: none)
-  int part = 0;  ///< the part it belongs to (BifurcationDiagram::parts)
+  double over = kNaN;     ///< second parameter (NaN: none)
+  int part = 0;           ///< the part it belongs to (BifurcationDiagram::parts)
 };
 
 /// The long-run motion at one parameter value (or an analytic orbit).

@@ -20,7 +20,6 @@
 #include <complex>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -160,8 +159,8 @@ struct Branch {
   int start_index = -1;                         ///< index of the start in `points`
   BranchEnd backward_end = BranchEnd::kNotRun;  ///< how the backward part ended
   BranchEnd forward_end = BranchEnd::kNotRun;   ///< how the forward part ended
-  double backward_parameter = std::numeric_limits<double>::quiet_NaN();  ///< its last lambda
-  double forward_parameter = std::numeric_limits<double>::quiet_NaN();   ///< its last lambda
+  double backward_parameter = kNaN;             ///< its last lambda
+  double forward_parameter = kNaN;              ///< its last lambda
 
   /// A plain-words summary: the motion at the start, the range covered, how each end was met,
   /// the special points. `name` is the parameter's name.

@@ -11,7 +11,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -96,10 +95,10 @@ struct DesignInput {
 
 /// The dimensionless model of one robot (docs/model.md sections 2 and 9).
 struct DesignModel {
-  Forcing forcing;  ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
-  Params params;    ///< T0, e and the clearance margin d
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< m2/(m1+m2)
-  double omega = std::numeric_limits<double>::quiet_NaN();  ///< 2 pi f [rad/s]
+  Forcing forcing;      ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
+  Params params;        ///< T0, e and the clearance margin d
+  double alpha = kNaN;  ///< m2/(m1+m2)
+  double omega = kNaN;  ///< 2 pi f [rad/s]
 };
 
 /// Maps the robot with inner mass m2 [kg] at motor frequency f [Hz] to the model. Validates

@@ -15,7 +15,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 
 #include "capsubot/attract/attractors.hpp"
@@ -122,8 +121,8 @@ struct DesignFromRestResult {
   int evaluations = 0;    ///< from-rest evaluations (search, both directions, and re-checks)
   /// Search evaluations rejected because a start ended in event_limit.
   int rejected_evaluations = 0;
-  double search_seconds = std::numeric_limits<double>::quiet_NaN();  ///< wall clock of the search
-  bool max_time = false;  ///< the wall-clock limit stopped a search stage (best points kept)
+  double search_seconds = kNaN;  ///< wall clock of the search
+  bool max_time = false;         ///< the wall-clock limit stopped a search stage (best points kept)
 };
 
 /// Reports the stage of the from-rest design ("forward: global search"), `done` of `total`

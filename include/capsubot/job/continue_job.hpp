@@ -5,7 +5,6 @@
 // two-parameter curve of its first special point of a given type. The command line and the
 // Python module's continue_branch make this call.
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -89,7 +88,7 @@ struct SwitchResult {
 /// The curve of `follow`.
 struct FollowResult {
   std::string param2;                                         ///< the second parameter's name
-  double value2 = std::numeric_limits<double>::quiet_NaN();   ///< the robot's value of it
+  double value2 = kNaN;                                       ///< the robot's value of it
   SpecialPointType type = SpecialPointType::kPeriodDoubling;  ///< the type followed
   std::optional<SpecialPoint> at;  ///< the branch's special point it starts from (none: empty)
   Curve curve;                     ///< the curve (status not_run, with a message, without `at`)
