@@ -8,8 +8,8 @@
 # The table is read from docs/architecture.md ("## The stages"), the one place it is written:
 # one row per stage, bottom of the flow first, whose last cell says what the stage may include:
 # `nothing`, `every stage above` (every row before it) or stage names separated by commas, each
-# a row before it (so the flow cannot loop). Every folder src/<stage>/ and include/capsubot/<stage>/
-# has a row, and every row a folder.
+# a row before it (so the flow cannot loop). Every folder src/<stage>/ and
+# include/capsubot/<stage>/ has a row, and every row a folder.
 #
 # Every file is checked; each broken rule prints one line naming the file, the include and the
 # rule, and the script exits non-zero. Usage: layering_test.sh SOURCE_DIR
@@ -47,7 +47,11 @@ read_table() {
       continue
     fi
     case $may in
-      "") fail "$doc: stage $stage has no 'may include' cell: expected nothing, every stage above or stage names" ;;
+      "")
+        allowed[$stage]=""
+        fail "$doc: stage $stage has no 'may include' cell: expected nothing, every stage above" \
+          "or stage names"
+        ;;
       nothing) allowed[$stage]="" ;;
       "every stage above") allowed[$stage]="${order[*]}" ;;
       *)
@@ -57,7 +61,8 @@ read_table() {
           trim "$name"
           name=$REPLY
           if [[ -z ${allowed[$name]+set} || $name == "$stage" ]]; then
-            fail "$doc: stage $stage may include '$name', which is not a stage above it in the table"
+            fail "$doc: stage $stage may include '$name', which is not a stage above it in the" \
+              "table"
           else
             allowed[$stage]+="${allowed[$stage]:+ }$name"
           fi

@@ -56,83 +56,86 @@ else
   echo "$output"
 fi
 
+# The rules' words, as the check prints them.
+front='a front end includes public headers only (capsubot/<stage>/...)'
+sources='a path into the sources (include capsubot/<stage>/...)'
+no_row='is not in the table of stages (docs/architecture.md)'
+doc=docs/architecture.md
+model_rule='stage model may include only numerics'
+
 # (a) A stage includes a stage above it, in quotes and in angle brackets.
 expect upward-quoted \
-  'src/model/injected.cpp includes capsubot/job/design_job.hpp: stage model may include only numerics' \
+  "src/model/injected.cpp includes capsubot/job/design_job.hpp: $model_rule" \
   write src/model/injected.cpp '#include "capsubot/job/design_job.hpp"'
 expect upward-angle \
-  'src/model/injected.cpp includes capsubot/job/design_job.hpp: stage model may include only numerics' \
+  "src/model/injected.cpp includes capsubot/job/design_job.hpp: $model_rule" \
   write src/model/injected.cpp '#include <capsubot/job/design_job.hpp>'
 expect upward-public-header \
-  'include/capsubot/orbit/injected.hpp includes capsubot/simulate/simulator.hpp: stage orbit may include only numerics model' \
+  "include/capsubot/orbit/injected.hpp includes capsubot/simulate/simulator.hpp: stage orbit \
+may include only numerics model" \
   write include/capsubot/orbit/injected.hpp '#  include "capsubot/simulate/simulator.hpp"'
 expect unknown-stage \
   'src/model/injected.cpp includes capsubot/ghost/ghost.hpp: no stage ghost' \
   write src/model/injected.cpp '#include "capsubot/ghost/ghost.hpp"'
 expect public-header-outside-stage \
-  'src/model/injected.cpp includes capsubot/version.hpp: public headers live in include/capsubot/<stage>/' \
+  "src/model/injected.cpp includes capsubot/version.hpp: public headers live in \
+include/capsubot/<stage>/" \
   write src/model/injected.cpp '#include "capsubot/version.hpp"'
 
 # A stage includes another stage's private header, or a public header a private one.
 expect private-of-other-stage \
-  'src/sweep/injected.cpp includes design/search.hpp: a private header of stage design (use its public header)' \
+  "src/sweep/injected.cpp includes design/search.hpp: a private header of stage design (use its \
+public header)" \
   write src/sweep/injected.cpp '#include "design/search.hpp"'
 expect private-from-public-header \
-  'include/capsubot/design/injected.hpp includes design/search.hpp: a public header includes public headers only' \
+  "include/capsubot/design/injected.hpp includes design/search.hpp: a public header includes \
+public headers only" \
   write include/capsubot/design/injected.hpp '#include "design/search.hpp"'
 expect relative-path-in-stage \
-  'src/sweep/injected.cpp includes ../design/search.hpp: a path into the sources (include capsubot/<stage>/...)' \
+  "src/sweep/injected.cpp includes ../design/search.hpp: $sources" \
   write src/sweep/injected.cpp '#include "../design/search.hpp"'
 
 # (c) A front end includes a private header: in quotes, in angle brackets, by a relative path
 # into src/, by its bare name, from apps/, a subfolder of apps/ and python/.
-expect front-end-quoted \
-  'apps/injected.cpp includes design/search.hpp: a front end includes public headers only (capsubot/<stage>/...)' \
+expect front-end-quoted "apps/injected.cpp includes design/search.hpp: $front" \
   write apps/injected.cpp '#include "design/search.hpp"'
-expect front-end-subfolder \
-  'apps/cluster/injected.cpp includes design/search.hpp: a front end includes public headers only (capsubot/<stage>/...)' \
+expect front-end-subfolder "apps/cluster/injected.cpp includes design/search.hpp: $front" \
   write apps/cluster/injected.cpp '#include "design/search.hpp"'
 expect front-end-new-subfolder \
-  'apps/more/deeper/injected.hpp includes simulate/chatter.hpp: a front end includes public headers only (capsubot/<stage>/...)' \
+  "apps/more/deeper/injected.hpp includes simulate/chatter.hpp: $front" \
   write apps/more/deeper/injected.hpp '#include <simulate/chatter.hpp>'
-expect front-end-angle \
-  'python/injected.cpp includes design/search.hpp: a front end includes public headers only (capsubot/<stage>/...)' \
+expect front-end-angle "python/injected.cpp includes design/search.hpp: $front" \
   write python/injected.cpp '#include <design/search.hpp>'
-expect front-end-relative \
-  'python/injected.cpp includes ../src/design/search.hpp: a path into the sources (include capsubot/<stage>/...)' \
+expect front-end-relative "python/injected.cpp includes ../src/design/search.hpp: $sources" \
   write python/injected.cpp '#include "../src/design/search.hpp"'
 expect front-end-bare-name \
-  'apps/cluster/injected.cpp includes "search.hpp": no such file beside it (another folder'"'"'s header?)' \
+  "apps/cluster/injected.cpp includes \"search.hpp\": no such file beside it (another folder's \
+header?)" \
   write apps/cluster/injected.cpp '#include "search.hpp"'
 
 # (d) The folders and the table of stages agree.
-expect stage-folder-not-in-table \
-  'src/ghost/ is not in the table of stages (docs/architecture.md)' \
+expect stage-folder-not-in-table "src/ghost/ $no_row" \
   write src/ghost/ghost.cpp '#include <vector>'
-expect public-folder-not-in-table \
-  'include/capsubot/ghost/ is not in the table of stages (docs/architecture.md)' \
+expect public-folder-not-in-table "include/capsubot/ghost/ $no_row" \
   write include/capsubot/ghost/ghost.hpp '#pragma once'
-expect row-missing \
-  'src/io/ is not in the table of stages (docs/architecture.md)' \
+expect row-missing "src/io/ $no_row" \
   row io d
-expect row-without-folder \
-  'stage ghost of docs/architecture.md has no folder' \
+expect row-without-folder "stage ghost of $doc has no folder" \
   row report 'a| ghost | nothing yet | every stage above |'
-expect row-names-stage-above-it \
-  "docs/architecture.md: stage model may include 'job', which is not a stage above it in the table" \
+expect row-names-stage-not-above-it \
+  "$doc: stage model may include 'job', which is not a stage above it in the table" \
   row model 's/| numerics |$/| numerics, job |/'
-expect row-twice \
-  'docs/architecture.md: the table of stages has two rows for stage io' \
+expect row-twice "$doc: the table of stages has two rows for stage io" \
   row io 'p'
 expect row-without-rule \
-  "docs/architecture.md: stage io has no 'may include' cell: expected nothing, every stage above or stage names" \
+  "$doc: stage io has no 'may include' cell: expected nothing, every stage above or stage names" \
   row io 's/| nothing |$/| |/'
-expect no-table \
-  "docs/architecture.md: no table of stages under '## The stages'" \
-  sed -i 's/^## The stages$/## Stages/' docs/architecture.md
+expect no-table "$doc: no table of stages under '## The stages'" \
+  sed -i 's/^## The stages$/## Stages/' $doc
 # The table is the rule: a row that allows less makes the includes it no longer allows fail.
 expect row-allows-less \
-  'include/capsubot/orbit/orbit.hpp includes capsubot/model/params.hpp: stage orbit may include only numerics' \
+  "include/capsubot/orbit/orbit.hpp includes capsubot/model/params.hpp: stage orbit may include \
+only numerics" \
   row orbit 's/| numerics, model |$/| numerics |/'
 
 echo "$cases violations made, $failures not caught as expected"
