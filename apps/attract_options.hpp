@@ -9,6 +9,7 @@
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/attractors_job.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/attractors_text.hpp"
 #include "cli.hpp"
@@ -25,7 +26,7 @@ using text::AttractorWords;
 struct RobotOptions {
   ForcingOptions forcing;
   Params params;
-  double alpha = std::numeric_limits<double>::quiet_NaN();
+  double alpha = kNaN;
   MotionOptions motion;
 };
 

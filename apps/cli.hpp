@@ -5,7 +5,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::app {
 
@@ -28,9 +28,9 @@ struct Command {
 
 /// The force: the paper's A sin(phi + phi0) + c, or a Fourier series c + sum (a_k cos + b_k sin).
 struct ForcingOptions {
-  double A = std::numeric_limits<double>::quiet_NaN();
-  double c = std::numeric_limits<double>::quiet_NaN();
-  double phi0 = std::numeric_limits<double>::quiet_NaN();
+  double A = kNaN;
+  double c = kNaN;
+  double phi0 = kNaN;
   std::string cos_text, sin_text;          ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
   std::string waveform;                    ///< --waveform: sine, fourier or pulse
   std::string levels_text, switches_text;  ///< --levels, --switches as given

@@ -51,7 +51,6 @@ struct DesignCliOptions {
   int harmonics = 2;                            // --harmonics (fourier)
   int pulse_levels = 3;                         // --pulse-levels (pulse)
 };
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point,
 // "drive" the fastest drive.

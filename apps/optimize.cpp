@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/optimize_job.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/optimize_csv.hpp"
 #include "capsubot/report/optimize_json.hpp"
 #include "capsubot/report/optimize_text.hpp"
@@ -31,8 +31,6 @@
 
 namespace capsubot::app {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct OptimizeCliOptions {
   std::string problem;  // "", phase, forcing, fourier, reach

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -19,6 +18,7 @@
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/sweep_plot.hpp"
 #include "capsubot/report/sweep_text.hpp"
 #include "cli.hpp"
@@ -39,13 +39,13 @@ struct SweepCliOptions {
   ForcingOptions forcing;
   Params params;
   bool stability = false;
-  std::string optimize;  // empty: no --optimize
-  PhaseOptions phase;    // --scan-points
-  SearchRequest search;  // --rho-max, --bound and the search effort
-  int starts = 0;        // --starts
-  double alpha = std::numeric_limits<double>::quiet_NaN();  // --alpha
-  FromRestCliOptions from_rest;                             // reach: starts and budgets
-  GridFileOptions file;  // --output, --resume, --checkpoint-seconds, --threads
+  std::string optimize;          // empty: no --optimize
+  PhaseOptions phase;            // --scan-points
+  SearchRequest search;          // --rho-max, --bound and the search effort
+  int starts = 0;                // --starts
+  double alpha = kNaN;           // --alpha
+  FromRestCliOptions from_rest;  // reach: starts and budgets
+  GridFileOptions file;          // --output, --resume, --checkpoint-seconds, --threads
   bool no_header_comment = false;
   std::string shard;        // "K/N", empty: the whole grid
   std::string plot;         // --plot: the PNG, empty: none

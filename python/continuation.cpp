@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <complex>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -17,12 +16,11 @@
 #include "bindings.hpp"
 #include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/continue_job.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/continuation_json.hpp"
 
 namespace capsubot::python {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The multipliers of every point as one complex array (points x largest dimension), padded
 // with NaN where a point has fewer (as the CSV of `capsubot continue` pads its columns).

@@ -13,7 +13,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -21,6 +20,7 @@
 
 #include "bindings.hpp"
 #include "capsubot/model/version.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -51,7 +51,7 @@ bool ParseInteger(const std::string& cell, std::int64_t& value) {
 // Whether `cell` is a number (strtod: correctly rounded, as Python's float()); "" is NaN.
 bool ParseNumber(const std::string& cell, double& value) {
   if (cell.empty()) {
-    value = std::numeric_limits<double>::quiet_NaN();
+    value = kNaN;
     return true;
   }
   char* end = nullptr;

@@ -6,7 +6,6 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -15,12 +14,11 @@
 #include "bindings.hpp"
 #include "capsubot/job/optimize_job.hpp"
 #include "capsubot/model/limits.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/optimize_json.hpp"
 
 namespace capsubot::python {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // An argument the chosen run does not use would be silently ignored: refuse it.
 void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,

@@ -36,8 +36,8 @@ shift $((OPTIND - 1))
 ONLY=("$@")
 
 # The test programs of each stage, the tests a mutant of the stage must fail: every program of
-# tests/<stage>/, plus tests/optimize/reach_test.cpp (reach) and tests/job/design_robustness_test
-# .cpp and design_job_test.cpp (design). Programs are separated by blanks or new lines.
+# tests/<stage>/, plus tests/optimize/reach_test.cpp (reach) and tests/job/design_job_test.cpp
+# (design). Programs are separated by blanks or new lines.
 declare -A STAGE_TESTS=(
   [simulate]="simulator_test simulator_chatter_test simulator_energy_test simulator_reuse_test
               segment_force_test cycle_memo_test simulator_pulse_test local_sincos_test"

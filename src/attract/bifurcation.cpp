@@ -9,7 +9,6 @@
 #include <cstring>
 #include <functional>
 #include <iterator>
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -22,6 +21,7 @@
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/numerics/grid_value.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
 
@@ -32,7 +32,6 @@ constexpr int kMaxSteps = 10000000;
 // Periods recorded along one continuation (steps x record): an impact row holds about 50
 // bytes and a period a few impacts, so about 10 GB at this bound.
 constexpr std::int64_t kMaxRecordedPeriods = 100000000;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The robot at `value` of `parameter` (with `harmonic`), the others those of `base`.
 RobotModel At(const RobotModel& base, ModelParameter parameter, int harmonic, double value) {

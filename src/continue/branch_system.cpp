@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "continue/walk.hpp"
 
 namespace capsubot::detail {
@@ -239,7 +240,7 @@ double BranchSystem::SpeedWithStep(const Node& node, double step_factor) {
   Eigen::VectorXd grad;
   Vec4 t;
   if (!Jacobian(node.y, &J, &grad, step_factor) || !Tangent(J, node.t, &t)) {
-    return std::numeric_limits<double>::quiet_NaN();
+    return kNaN;
   }
   return Speed(grad, t);
 }

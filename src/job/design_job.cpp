@@ -9,13 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <stdexcept>
 #include <tuple>
 
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/design/gait_numbers.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
 
 namespace capsubot {
@@ -141,7 +141,7 @@ const char* DesignChoiceName(DesignChoice choice) {
 
 double GaitSpeedFromRest(const DesignJobResult& r) {
   const Gait& g = r.design.one_impact;
-  if (!g.ok() || !r.gait_from_rest.checked) return std::numeric_limits<double>::quiet_NaN();
+  if (!g.ok() || !r.gait_from_rest.checked) return kNaN;
   return 1e3 * g.model.omega * r.input.L * r.gait_from_rest.attractors.mean_velocity;
 }
 

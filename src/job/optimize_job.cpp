@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include "capsubot/model/limits.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize.hpp"
 
 namespace capsubot {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 template <class... F>
 struct Overloaded : F... {

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "capsubot/model/detail/pulse_pieces.hpp"
 #include "capsubot/model/detail/trig_roots.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 namespace {
@@ -226,7 +226,7 @@ void Forcing::Rotate() {
 }
 
 double Forcing::amplitude() const {
-  if (N_ > 0) return std::numeric_limits<double>::quiet_NaN();
+  if (N_ > 0) return kNaN;
   if (K_ == 1) return R_;  // hypot(a_1, b_1)
   return K_ == 0 ? 0.0 : std::hypot(a_[0], b_[0]);
 }

@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "capsubot/numerics/not_computed.hpp"
+
 namespace capsubot {
 namespace {
 
@@ -215,7 +217,7 @@ double ParameterValue(const RobotModel& robot, ModelParameter parameter, int har
     default:  // a requirement: refused by CheckRobotParameter
       break;
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return kNaN;
 }
 
 }  // namespace capsubot

@@ -13,6 +13,7 @@
 
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/validity.hpp"
 
@@ -65,13 +66,13 @@ struct ConstraintSetup {
 /// One evaluated candidate.
 struct Evaluation {
   Solution solution;
-  double rho = std::numeric_limits<double>::quiet_NaN();  ///< spectral radius (if computed)
-  std::array<double, kConstraintCount> g{};               ///< constraint values, <= 0 holds
+  double rho = kNaN;                         ///< spectral radius (if computed)
+  std::array<double, kConstraintCount> g{};  ///< constraint values, <= 0 holds
   bool valid = false;  ///< every condition of section 5 holds (and stability if asked)
   /// Sum of max(g_i, 0) over the rows that apply
   double violation = std::numeric_limits<double>::infinity();
   /// The force held against the bound: max |F|, or the problem's own measure (P2: A + c).
-  double force = std::numeric_limits<double>::quiet_NaN();
+  double force = kNaN;
   /// I if the orbit exists, else -infinity (so any orbit is better than none).
   double I = -std::numeric_limits<double>::infinity();
 };
@@ -79,8 +80,7 @@ struct Evaluation {
 /// Solves the orbit of `forcing` and evaluates every constraint. `force`, unless NaN, replaces
 /// max |F| in the force bound (P2: the linear A + c). Never throws for a force without orbit;
 /// params must be valid.
-Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup,
-                    double force = std::numeric_limits<double>::quiet_NaN());
+Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double force = kNaN);
 
 /// The spectral radius of the evaluated orbit (docs/model.md section 8): ev.rho if it was
 /// computed, else computed now; NaN without orbit.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/detail/nlopt_status.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
@@ -105,8 +105,7 @@ void Tracker::Offer(const Evaluation& ev, const double* y, int n) {
 Evaluation EvaluateAt(const Problem& problem, const double* y, Tracker& tracker) {
   Poll(tracker.interrupt);
   ++tracker.evaluations;
-  const double force =
-      problem.force_total ? problem.force_total(y) : std::numeric_limits<double>::quiet_NaN();
+  const double force = problem.force_total ? problem.force_total(y) : kNaN;
   Evaluation ev = Evaluate(problem.build(y), problem.setup, force);
   tracker.Offer(ev, y, problem.n);
   return ev;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <random>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/detail/optimize_common.hpp"
 #include "optimize/pipeline.hpp"
 
@@ -110,7 +111,7 @@ OptimizeResult OptimizeFourier(const Params& params, const FourierOptions& optio
   detail::PipelineRun run =
       detail::RunPipeline(pipeline, options.harmonic, options.search, tracker, best_run);
   OptimizeResult& result = run.result;
-  result.baseline_I = harmonic.found() ? harmonic.solution.orbit.I : OptimizeResult::kNaN;
+  result.baseline_I = harmonic.found() ? harmonic.solution.orbit.I : kNaN;
   const std::string gain =
       std::isnan(result.baseline_I)
           ? std::string(" (P2 found no valid gait)")

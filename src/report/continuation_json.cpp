@@ -1,7 +1,8 @@
 #include "capsubot/report/continuation_json.hpp"
 
-#include <limits>
 #include <utility>
+
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::json {
 namespace {
@@ -79,7 +80,7 @@ nlohmann::json Band(const ParameterRobustness& p) {
 // One end of a curve: how it ended and its last point.
 nlohmann::json CurveEnd(BranchEnd end, const FollowResult& f, const std::string& name,
                         const CurvePoint* last) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double nan = kNaN;
   return {{"end", BranchEndName(end)},
           {name, last != nullptr ? last->parameter : nan},
           {f.param2, last != nullptr ? last->parameter2 : nan}};
@@ -92,9 +93,7 @@ nlohmann::json FollowJson(const FollowResult& f, const std::string& name) {
           {"parameter2", f.param2},
           {"status", ContinuationStatusName(c.status)},
           {"message", c.message},
-          {"start",
-           {{name, f.at ? f.at->parameter : std::numeric_limits<double>::quiet_NaN()},
-            {f.param2, f.value2}}},
+          {"start", {{name, f.at ? f.at->parameter : kNaN}, {f.param2, f.value2}}},
           {"start_index", c.start_index},
           {"ends",
            {{"backward", CurveEnd(c.backward_end, f, name, any ? &c.points.front() : nullptr)},

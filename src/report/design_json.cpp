@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/forcing_json.hpp"
@@ -55,7 +56,7 @@ namespace {
 
 // One direction's motion from rest in the user's units, with its dimensionless robot.
 nlohmann::json DirectionJson(const DesignInput& in, const FromRestBest* b) {
-  const double nan = Gait::kNaN;
+  const double nan = kNaN;
   nlohmann::json j;
   j["status"] = FromRestStatusName(b->status);
   j["message"] = b->message;

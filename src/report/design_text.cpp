@@ -4,18 +4,16 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/design/gait_numbers.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/attractors_text.hpp"
 #include "capsubot/report/text_format.hpp"
 
 namespace capsubot::text {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string Num(double value, const char* unit) {
   return std::isnan(value) ? "-" : fmt::format("{:.6g}{}", value, unit);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/solution_json.hpp"
@@ -57,7 +58,7 @@ nlohmann::json Json(const ProblemJobResult& pr) {
   AddRequirementsJson(j, pr.params, pr.rho_max);
   if (pr.problem == "fourier") {
     j["baseline_I"] = r.baseline_I;
-    j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : OptimizeResult::kNaN;
+    j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
   }
   return j;
 }
@@ -93,9 +94,9 @@ nlohmann::json ReachJson(const ReachResult& r) {
   j["status"] = OptimizeStatusName(r.status);
   j["message"] = r.message;
   if (r.drive.sine()) {
-    j["A"] = found ? r.forcing.amplitude() : ReachResult::kNaN;
-    j["c"] = found ? r.forcing.mean() : ReachResult::kNaN;
-    j["phi0"] = found ? r.forcing.phi0() : ReachResult::kNaN;
+    j["A"] = found ? r.forcing.amplitude() : kNaN;
+    j["c"] = found ? r.forcing.mean() : kNaN;
+    j["phi0"] = found ? r.forcing.phi0() : kNaN;
   }
   j["drive"] = found ? DriveJson(r) : nlohmann::json(nullptr);
   j["force_bound"] = r.force_bound;

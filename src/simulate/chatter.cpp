@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "capsubot/numerics/not_computed.hpp"
+
 namespace capsubot::detail {
 namespace {
 
@@ -88,7 +90,7 @@ ChatterLimit ChatterSequence::Add(const ChatterRecord& record) {
   rec_[n_++] = record;
   ChatterLimit limit;
   limit.previous_phase_error = error_;
-  error_ = std::numeric_limits<double>::quiet_NaN();
+  error_ = kNaN;
   if (n_ < kImpacts) return limit;
   const Estimate last = FromPoints(&rec_[1]);
   const Estimate before = FromPoints(&rec_[0]);

@@ -10,9 +10,9 @@
 // the series of degrees 1 to 3, with r itself extrapolated from its drift.
 
 #include <array>
-#include <limits>
 
 #include "capsubot/model/energy.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::detail {
 
@@ -40,7 +40,7 @@ struct ChatterLimit {
   double phase_error = 0.0;
   /// phase_error at the previous impact of the sequence (NaN: none). Truncation makes the
   /// error shrink by r^3 or faster per impact; once it grows instead, rounding limits it.
-  double previous_phase_error = std::numeric_limits<double>::quiet_NaN();
+  double previous_phase_error = kNaN;
   /// The state at the accumulation point (speed 0): phase, v, y and energy since the first
   /// impact, as ChatterRecord.
   ChatterRecord at;
@@ -54,7 +54,7 @@ class ChatterSequence {
 
   void Clear() {
     n_ = 0;
-    error_ = std::numeric_limits<double>::quiet_NaN();
+    error_ = kNaN;
   }
   int Size() const { return n_; }
   /// Adds the record of the next impact and returns the accumulation point from the last
@@ -64,7 +64,7 @@ class ChatterSequence {
  private:
   std::array<ChatterRecord, kImpacts> rec_{};
   int n_ = 0;
-  double error_ = std::numeric_limits<double>::quiet_NaN();  // the last phase_error
+  double error_ = kNaN;  // the last phase_error
 };
 
 }  // namespace capsubot::detail

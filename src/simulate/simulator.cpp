@@ -13,6 +13,7 @@
 
 #include "capsubot/model/detail/enum_names.hpp"
 #include "capsubot/model/detail/phase_root.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/numerics/safe_newton.hpp"
 #include "simulate/chatter.hpp"
 #include "simulate/cycle_memo.hpp"
@@ -961,7 +962,7 @@ void Simulation::ApplyEvent(const Event& event, double u_before, double v_before
 void Simulation::CloseTally(SimTally& tally) const {
   tally.span = Phase() - span_phase0_;
   tally.displacement = sg_.y0 - span_y0_;
-  tally.v_mean = tally.span > 0.0 ? tally.displacement / tally.span : SimTally::kNaN;
+  tally.v_mean = tally.span > 0.0 ? tally.displacement / tally.span : kNaN;
 }
 
 void Simulation::EndTransient() {

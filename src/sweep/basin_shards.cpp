@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/sweep/bifurcation_shards.hpp"
 #include "capsubot/sweep/start_map.hpp"
 #include "sweep/shard_set.hpp"
@@ -56,7 +57,7 @@ std::size_t ParseRow(const detail::ShardFile& s, bool u0, PhaseState& start, Mot
   m.period = static_cast<int>(ParseInteger(cell[3], where + " period", 0, 1 << 20));
   m.impacts_right = ParseInteger(cell[4], where + " impacts_right", 0, INT64_MAX / 2);
   m.impacts_left = ParseInteger(cell[5], where + " impacts_left", 0, INT64_MAX / 2);
-  m.mean_velocity = cell[6].empty() ? Motion::kNaN : ParseNumber(cell[6], where + " mean_velocity");
+  m.mean_velocity = cell[6].empty() ? kNaN : ParseNumber(cell[6], where + " mean_velocity");
   m.status = ParseStatus(cell[7], where + " status");
   return attractor;
 }

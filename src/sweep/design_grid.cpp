@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "sweep/grid_run.hpp"
 #include "sweep/sweep_rows.hpp"
 
@@ -15,7 +16,6 @@ namespace capsubot {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Bumped whenever the bytes of a design grid change for the same options (invalidates
 // checkpoints).

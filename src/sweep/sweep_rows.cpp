@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 #include "capsubot/orbit/stability.hpp"
@@ -273,7 +274,7 @@ void SweepRowWriter::AppendSolution(const Solution& s, RowBuffer& out) const {
 // The optimised variables of the mode: phi0 (P1), A, c, phi0 (P2), c, a1..aK, b1..bK (P3).
 void SweepRowWriter::AppendVariables(const Forcing& f, bool exists, RowBuffer& out) const {
   const auto cell = [&](double value) {
-    AppendNumber(out, exists ? value : Orbit::kNaN);
+    AppendNumber(out, exists ? value : kNaN);
     out.push_back(',');
   };
   switch (options_.optimize) {
@@ -301,7 +302,6 @@ void SweepRowWriter::AppendVariables(const Forcing& f, bool exists, RowBuffer& o
 }
 
 std::vector<std::pair<const char*, double>> ReachCells(const ReachResult& r) {
-  constexpr double kNaN = ReachResult::kNaN;
   const bool found = !std::isnan(r.mean_velocity);
   const bool seed = r.seed.from_rest.checked;
   const Orbit& seed_orbit = r.seed.gait.solution.orbit;

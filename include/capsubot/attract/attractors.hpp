@@ -15,13 +15,13 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <vector>
 
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 #include "capsubot/parallel/blocks.hpp"
 #include "capsubot/simulate/simulator.hpp"
@@ -32,8 +32,6 @@ namespace capsubot {
 /// psi is the forcing phase: there F = G(psi + phi0), A sin(psi + phi0) + c for the paper's
 /// family (phi0 the forcing's own phase).
 struct PhaseState {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double x = kNaN;    ///< relative position of the inner body (walls at 0 and 1)
   double u = kNaN;    ///< relative velocity x'
   double v = kNaN;    ///< capsule velocity
@@ -87,8 +85,6 @@ const char* MotionStatusName(MotionStatus status);
 
 /// The long-run motion from one start.
 struct Motion {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   MotionStatus status = MotionStatus::kNotRun;
   int period = 0;  ///< p in forcing periods; 0 unless kPeriodic
   /// Right-wall impacts per p periods (kPeriodic); over the whole record otherwise.
@@ -173,9 +169,9 @@ struct Attractor {
   bool one_impact_orbit = false;
   /// Mean, smallest and largest mean velocity over its starts (they differ only for an
   /// irregular motion).
-  double mean_velocity = Motion::kNaN;
-  double velocity_min = Motion::kNaN;
-  double velocity_max = Motion::kNaN;
+  double mean_velocity = kNaN;
+  double velocity_min = kNaN;
+  double velocity_max = kNaN;
   /// Largest difference between the mean velocities of the two halves of a start's record,
   /// relative to the attractor's mean velocity (0 for a periodic motion): below 1 % the
   /// record is long enough for the mean to settle.
@@ -188,8 +184,6 @@ inline constexpr double kSettledHalves = 0.01;
 
 /// The attractors reached from a set of starts.
 struct Attractors {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   std::int64_t starts = 0;              ///< number of starts
   std::vector<Attractor> attractors;    ///< by starts, most first (ties: first reached first)
   std::vector<Motion> motions;          ///< the motion of every start, in the order given

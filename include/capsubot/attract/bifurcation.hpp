@@ -8,12 +8,12 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/model/model_parameter.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/parallel/blocks.hpp"
 
 namespace capsubot {
@@ -23,7 +23,7 @@ namespace capsubot {
 inline constexpr std::int64_t kMaxOverValues = 100000;
 
 struct BifurcationOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
   ModelParameter param = ModelParameter::kT0;
@@ -76,14 +76,12 @@ struct ImpactPoint {
   bool right = true;      ///< right wall (else left)
   double phase = 0.0;     ///< forcing phase psi at the impact, in [0, tau)
   double velocity = 0.0;  ///< relative velocity just before it
-  double over = std::numeric_limits<double>::quiet_NaN();  ///< second parameter (NaN: none)
-  int part = 0;  ///< the part it belongs to (BifurcationDiagram::parts)
+  double over = kNaN;     ///< second parameter (NaN: none)
+  int part = 0;           ///< the part it belongs to (BifurcationDiagram::parts)
 };
 
 /// The long-run motion at one parameter value (or an analytic orbit).
 struct BifurcationPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double param = kNaN;
   SweepDirection direction = SweepDirection::kUp;
   Motion motion;  ///< analytic rows: period 1, one right impact, the orbit's mean velocity

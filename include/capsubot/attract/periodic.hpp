@@ -13,11 +13,11 @@
 
 #include <complex>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/model/interrupt.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -54,8 +54,6 @@ enum class ShootingStatus {
 const char* ShootingStatusName(ShootingStatus status);
 
 struct PeriodicMotion {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   ShootingStatus status = ShootingStatus::kNotRun;
   int period = 0;                  ///< p in forcing periods
   std::int64_t impacts_right = 0;  ///< right-wall impacts per p periods

@@ -20,7 +20,6 @@
 #include <complex>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +29,7 @@
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/model_parameter.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -39,8 +39,6 @@ namespace capsubot {
 using RobotFamily = std::function<RobotModel(double lambda)>;
 
 struct ContinuationOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double from = kNaN;   ///< lower end of the parameter range (finite)
   double to = kNaN;     ///< upper end (finite, > from)
   double start = kNaN;  ///< the parameter's value at the start state; from <= start <= to
@@ -77,8 +75,6 @@ void RequireDifferencesInRange(double step, const char* lo_name, double lo, cons
 
 /// One point of a branch.
 struct BranchPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double parameter = kNaN;       ///< lambda
   double arclength = kNaN;       ///< s from the start, increasing along the branch's order
   double tangent = kNaN;         ///< d lambda / ds (changes sign at a fold)
@@ -110,8 +106,6 @@ enum class Wall {
 const char* WallName(Wall wall);
 
 struct SpecialPoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   SpecialPointType type = SpecialPointType::kFold;
   double parameter = kNaN;  ///< lambda at the special point
   double arclength = kNaN;  ///< s there (BranchPoint::arclength)
@@ -165,8 +159,8 @@ struct Branch {
   int start_index = -1;                         ///< index of the start in `points`
   BranchEnd backward_end = BranchEnd::kNotRun;  ///< how the backward part ended
   BranchEnd forward_end = BranchEnd::kNotRun;   ///< how the forward part ended
-  double backward_parameter = std::numeric_limits<double>::quiet_NaN();  ///< its last lambda
-  double forward_parameter = std::numeric_limits<double>::quiet_NaN();   ///< its last lambda
+  double backward_parameter = kNaN;             ///< its last lambda
+  double forward_parameter = kNaN;              ///< its last lambda
 
   /// A plain-words summary: the motion at the start, the range covered, how each end was met,
   /// the special points. `name` is the parameter's name.

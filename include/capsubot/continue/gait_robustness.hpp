@@ -4,12 +4,12 @@
 // them, both ways, up to the nearest special point (ContinueParameter).
 
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/continue/speed_band.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
@@ -20,8 +20,6 @@ namespace capsubot {
 /// limits: the motion goes on through them with other impacts or another stick/slide pattern
 /// (ParameterRobustness::special_points lists them).
 struct MotionLimit {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   bool special = false;                             ///< a special point (else the branch's end)
   SpecialPointType type = SpecialPointType::kFold;  ///< its type, when special
   BranchEnd end = BranchEnd::kNotRun;               ///< how the branch ended, when not special
@@ -43,8 +41,6 @@ using ValueText = std::function<std::string(double)>;
 
 /// One parameter's continuation.
 struct ParameterRobustness {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   std::string name;     ///< "T0", "e" or "alpha"
   double value = kNaN;  ///< the gait's value
   double from = kNaN;   ///< the range searched

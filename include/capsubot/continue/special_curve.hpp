@@ -16,11 +16,11 @@
 // the arclength condition closing the system.
 
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/continue/continuation.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -37,8 +37,6 @@ bool IsFollowable(SpecialPointType type);
 SpecialPointType ParseFollowType(const std::string& name);
 
 struct CurveOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double from2 = kNaN;   ///< lower end of mu's range (finite)
   double to2 = kNaN;     ///< upper end (finite, > from2)
   double start2 = kNaN;  ///< mu at the special point; from2 <= start2 <= to2
@@ -53,8 +51,6 @@ struct CurveOptions {
 
 /// One point of a curve.
 struct CurvePoint {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double parameter = kNaN;   ///< lambda
   double parameter2 = kNaN;  ///< mu
   double arclength = kNaN;   ///< s from the start, increasing along the curve's order

@@ -7,12 +7,12 @@
 // and goes on, or another motion that takes over.
 
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/continue/continuation.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -38,8 +38,6 @@ struct SpeedBandOptions {
 
 /// Where the speed from rest falls below one level, one way from the value.
 struct BandEdge {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double level = kNaN;  ///< the fraction of the nominal speed
   /// The speed falls below the level inside the range; false: it stays above at every point of
   /// the walk up to the range's end ("beyond" the end).
@@ -67,8 +65,6 @@ const char* SpeedBandStatusName(SpeedBandStatus status);
 
 /// One parameter's band.
 struct SpeedBand {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   std::string name;     ///< the parameter's name
   double value = kNaN;  ///< the robot's value
   double from = kNaN;   ///< the range searched

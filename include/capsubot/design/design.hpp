@@ -11,13 +11,13 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/stability.hpp"
 #include "capsubot/orbit/validity.hpp"
@@ -40,8 +40,6 @@ inline constexpr int kDesignMaxUnresolvedRobots = 8;
 /// F_N(s) = bias + sum_k (cos[k-1] cos(k s) + sin[k-1] sin(k s)). The phase at the impact is
 /// not an input: each orbit of the robot has its own.
 struct MotorForce {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double amplitude = kNaN;  ///< amplitude [N] of the harmonic force, >= 0 (unused with Fourier)
   double bias = kNaN;       ///< mean force [N], >= 0 (a one-impact gait needs > 0)
   std::vector<double> cos;  ///< Fourier cosine coefficients [N]; with `sin`, replaces amplitude
@@ -54,7 +52,7 @@ struct MotorForce {
 
 /// A physical robot and what may be chosen: SI units throughout.
 struct DesignInput {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   /// Shell mass [kg], > 0; with the default inner-mass range, small enough that 10 m1 is finite.
   double m1 = kNaN;
@@ -97,10 +95,10 @@ struct DesignInput {
 
 /// The dimensionless model of one robot (docs/model.md sections 2 and 9).
 struct DesignModel {
-  Forcing forcing;  ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
-  Params params;    ///< T0, e and the clearance margin d
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< m2/(m1+m2)
-  double omega = std::numeric_limits<double>::quiet_NaN();  ///< 2 pi f [rad/s]
+  Forcing forcing;      ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
+  Params params;        ///< T0, e and the clearance margin d
+  double alpha = kNaN;  ///< m2/(m1+m2)
+  double omega = kNaN;  ///< 2 pi f [rad/s]
 };
 
 /// Maps the robot with inner mass m2 [kg] at motor frequency f [Hz] to the model. Validates
@@ -122,7 +120,7 @@ const char* GaitStatusName(GaitStatus status);
 
 /// A gait in the user's units, with the dimensionless orbit it comes from.
 struct Gait {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   GaitStatus status = GaitStatus::kNotRun;
   double m2_kg = kNaN;         ///< inner mass [kg]

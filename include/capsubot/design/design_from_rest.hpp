@@ -15,12 +15,12 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/design/design.hpp"
 #include "capsubot/model/energy.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -81,7 +81,7 @@ const char* FromRestStatusName(FromRestStatus status);
 /// each attractor's budget per forcing period (Simulate with SimOptions::energy over whole
 /// periods of the attractor), weighted by the fraction of starts that reach it.
 struct FromRestBest {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   Direction direction = Direction::kForward;
   FromRestStatus status = FromRestStatus::kNotRun;
@@ -121,8 +121,8 @@ struct DesignFromRestResult {
   int evaluations = 0;    ///< from-rest evaluations (search, both directions, and re-checks)
   /// Search evaluations rejected because a start ended in event_limit.
   int rejected_evaluations = 0;
-  double search_seconds = std::numeric_limits<double>::quiet_NaN();  ///< wall clock of the search
-  bool max_time = false;  ///< the wall-clock limit stopped a search stage (best points kept)
+  double search_seconds = kNaN;  ///< wall clock of the search
+  bool max_time = false;         ///< the wall-clock limit stopped a search stage (best points kept)
 };
 
 /// Reports the stage of the from-rest design ("forward: global search"), `done` of `total`

@@ -4,7 +4,6 @@
 // (its CSV written when asked) or one shard of it written to its resumable file. The map of
 // `basins` is the same run over another plane of starts (basins_job.hpp).
 
-#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/parallel/blocks.hpp"
 #include "capsubot/sweep/start_map.hpp"
 
@@ -40,8 +40,6 @@ struct StartMapShard {
 using StartMapRun = std::variant<WholeStartMap, StartMapShard>;
 
 struct AttractorsJobOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   Forcing forcing;             ///< the force F = G(psi + phi0) at the starts' phases psi
   Params params;               ///< T0 and e (the margins are not used)
   double alpha = kNaN;         ///< mass ratio m2/(m1+m2); 0 < alpha < 1
@@ -65,7 +63,7 @@ struct AttractorsJobOptions {
 struct StartMapWork {
   Forcing forcing;
   Params params;
-  double alpha = AttractorsJobOptions::kNaN;
+  double alpha = kNaN;
   std::vector<PhaseState> starts;
   AttractorOptions attractor;
 

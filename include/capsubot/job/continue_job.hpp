@@ -5,7 +5,6 @@
 // two-parameter curve of its first special point of a given type. The command line and the
 // Python module's continue_branch make this call.
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -15,6 +14,7 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -28,8 +28,6 @@ using ContinueStart = std::variant<FromOneImpactOrbit, PhaseState>;
 
 /// The two-parameter curve of the branch's first located special point of a type.
 struct FollowOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   std::string param2;   ///< the second parameter: a robot parameter other than the branch's
   double from2 = kNaN;  ///< lower end of its range (finite); the robot's value lies in the range
   double to2 = kNaN;    ///< upper end (finite, > from2)
@@ -52,8 +50,6 @@ const char* SwitchPointName(SwitchPoint point);
 SwitchPoint ParseSwitchPoint(const std::string& name);
 
 struct ContinueJobOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   Forcing forcing;      ///< the robot's force
   Params params;        ///< T0 > 0, 0 <= e <= 1
   double alpha = kNaN;  ///< mass ratio m2/(m1+m2), 0 < alpha < 1
@@ -92,7 +88,7 @@ struct SwitchResult {
 /// The curve of `follow`.
 struct FollowResult {
   std::string param2;                                         ///< the second parameter's name
-  double value2 = std::numeric_limits<double>::quiet_NaN();   ///< the robot's value of it
+  double value2 = kNaN;                                       ///< the robot's value of it
   SpecialPointType type = SpecialPointType::kPeriodDoubling;  ///< the type followed
   std::optional<SpecialPoint> at;  ///< the branch's special point it starts from (none: empty)
   Curve curve;                     ///< the curve (status not_run, with a message, without `at`)

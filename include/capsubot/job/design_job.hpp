@@ -17,7 +17,7 @@
 #include "capsubot/design/design.hpp"
 #include "capsubot/design/design_drive.hpp"
 #include "capsubot/design/design_from_rest.hpp"
-#include "capsubot/job/design_robustness.hpp"
+#include "capsubot/design/design_robustness.hpp"
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/parallel/blocks.hpp"

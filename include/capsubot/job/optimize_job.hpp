@@ -4,7 +4,6 @@
 // how far the robust gait's motion carries, the exact optima), one problem P1, P2 or P3 checked
 // from rest, or the reach problem (docs/model.md sections 7, 12, 13).
 
-#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "capsubot/continue/gait_robustness.hpp"
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_request.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/reach/drive_ladder.hpp"
@@ -44,8 +44,8 @@ struct MainJob {
 };
 /// P1: the best impact phase phi0 for the force shape F = A sin(phi + phi0) + c.
 struct PhaseProblem {
-  double A = std::numeric_limits<double>::quiet_NaN();  ///< amplitude, finite and >= 0
-  double c = std::numeric_limits<double>::quiet_NaN();  ///< mean force, finite
+  double A = kNaN;  ///< amplitude, finite and >= 0
+  double c = kNaN;  ///< mean force, finite
 };
 /// P2: the best A, c, phi0 with A + c <= the force bound.
 struct ForcingProblem {};
@@ -56,12 +56,12 @@ struct FourierProblem {};
 /// (after the sine's, for the comparison).
 struct ReachProblem {
   ReachEffort reach;
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< fixed 0 < alpha < 1; NaN: free
+  double alpha = kNaN;  ///< fixed 0 < alpha < 1; NaN: free
   DriveFamily drive{};  ///< the forces searched (the sine by default)
   /// The motor's frequency free: T0 in [T0_min, T0_max] with the bound tied to it, the
   /// objective v_mean / sqrt(T0) (ReachOptions::T0_min); NaN: T0 fixed.
-  double T0_min = std::numeric_limits<double>::quiet_NaN();
-  double T0_max = std::numeric_limits<double>::quiet_NaN();
+  double T0_min = kNaN;
+  double T0_max = kNaN;
 };
 
 /// What the job runs: each mode holds the settings only it uses.

@@ -4,12 +4,12 @@
 // validity and stability.
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 
 namespace capsubot {
@@ -17,7 +17,7 @@ namespace capsubot {
 struct OrbitsJobOptions {
   Forcing forcing;  ///< the force's shape (its phi0 is solved for, not used)
   Params params;
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< mass ratio, 0 < alpha < 1
+  double alpha = kNaN;  ///< mass ratio, 0 < alpha < 1
   /// Work bound: evaluations of the orbit equation; 1 <= max_evaluations <= kMaxOrbitEvaluations.
   std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations;
   Interrupt interrupt;  ///< asked about every millisecond of the search

@@ -2,13 +2,13 @@
 // `capsubot periodic` as one call (docs/model.md section 13): a periodic motion of any kind found
 // exactly by Newton's method on the p-th iterate of the stroboscopic map, with its multipliers.
 
-#include <limits>
 #include <variant>
 
 #include "capsubot/attract/periodic.hpp"
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -21,8 +21,6 @@ struct PeriodicFromState {
 /// From rest at x0 and forcing phase psi, after a transient that brings the start near its
 /// long-run motion.
 struct PeriodicFromRest {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double x0 = kNaN;     ///< position of the inner body; 0 <= x0 <= 1
   double psi = kNaN;    ///< forcing phase [rad] (RequirePhase)
   int transient = 200;  ///< periods simulated before the period is sought; >= 0
@@ -39,10 +37,10 @@ struct PeriodicOfPeriod {
 using PeriodicStart = std::variant<PeriodicFromState, PeriodicFromRest, PeriodicOfPeriod>;
 
 struct PeriodicJobOptions {
-  Forcing forcing;                        ///< the force F = G(psi + phi0) at the start's phase psi
-  Params params;                          ///< T0 and e (the margins are not used)
-  double alpha = PeriodicFromRest::kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
-  PeriodicStart start;                    ///< a state, from rest, or a state with its period
+  Forcing forcing;      ///< the force F = G(psi + phi0) at the start's phase psi
+  Params params;        ///< T0 and e (the margins are not used)
+  double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
+  PeriodicStart start;  ///< a state, from rest, or a state with its period
   /// Newton's method and the simulator (max_period, step, chatter_velocity, ..., interrupt);
   /// its transient is the start's (set by the job).
   ShootingOptions shooting;

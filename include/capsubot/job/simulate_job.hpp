@@ -5,13 +5,13 @@
 // Python module keeps them as arrays).
 
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <variant>
 
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/validity.hpp"
 #include "capsubot/simulate/simulator.hpp"
 
@@ -19,8 +19,6 @@ namespace capsubot {
 
 /// From a given state of a robot of mass ratio alpha (the simulator's rules: SimOptions).
 struct SimulateFromState {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
   double x0 = kNaN;     ///< position of the inner body [L]; 0 <= x0 <= 1
   double u0 = kNaN;     ///< relative velocity dx/dphi [omega L]

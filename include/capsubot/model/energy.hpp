@@ -2,13 +2,11 @@
 // The energy budget of a motion over a span of phase (docs/model.md section 11), dimensionless:
 // physical energy = (m1+m2) omega^2 L^2 times these numbers.
 
-#include <limits>
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
 struct Energy {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double motor_work = kNaN;           ///< integral of F u dphi: net work of the motor
   double motor_work_positive = kNaN;  ///< integral of max(F u, 0): what a drive that cannot
                                       ///< recover energy pays

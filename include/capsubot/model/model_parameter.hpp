@@ -6,11 +6,11 @@
 // 7, 8 and 12) change only which motions count. Every parameter is one row of one table (its
 // name and its domain); SetParameter is the one place that sets a robot parameter on a robot.
 
-#include <limits>
 #include <string>
 
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -76,9 +76,9 @@ ModelParameter ParseRobotParameter(const std::string& name, int* harmonic = null
 /// The robot at one point of a study (one value of a diagram's or a branch's parameter, one
 /// point of a grid): its force, its parameters and its mass ratio.
 struct RobotModel {
-  Forcing forcing;  ///< the motor force
-  Params params;    ///< T0, e (and the margins, which are requirements, not the robot's)
-  double alpha = std::numeric_limits<double>::quiet_NaN();  ///< mass ratio, 0 < alpha < 1
+  Forcing forcing;      ///< the motor force
+  Params params;        ///< T0, e (and the margins, which are requirements, not the robot's)
+  double alpha = kNaN;  ///< mass ratio, 0 < alpha < 1
 };
 
 /// Throws std::invalid_argument unless `parameter` (with `harmonic`) is a robot parameter that can

@@ -5,13 +5,15 @@
 #include <cmath>
 #include <limits>
 
+#include "capsubot/numerics/not_computed.hpp"
+
 namespace capsubot::detail {
 
 inline constexpr int kGoldenMaxSteps = 100;  ///< refinement steps of GoldenRefine
 
 /// Where a maximum was found.
 struct ScanMax {
-  double x = std::numeric_limits<double>::quiet_NaN();  ///< argument (NaN: f never defined)
+  double x = kNaN;                                      ///< argument (NaN: f never defined)
   double f = -std::numeric_limits<double>::infinity();  ///< value there
   int evaluations = 0;                                  ///< calls of f
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "capsubot/numerics/golden.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::detail {
 
@@ -24,11 +25,11 @@ struct Probe {
   /// means a fold, or another switch, between them.
   int branches = 0;
   /// The objective at x where feasible (NaN elsewhere).
-  double value = std::numeric_limits<double>::quiet_NaN();
+  double value = kNaN;
 };
 
 struct WindowSample {
-  double x = std::numeric_limits<double>::quiet_NaN();
+  double x = kNaN;
   Probe probe;
 };
 
@@ -100,7 +101,7 @@ inline double OpenWidth(const std::vector<WindowSample>& s, std::size_t i, const
 // promising goes first: the local maxima and branch changes by their measure (nearest to
 // feasible first), then the edges, the leftmost on ties.
 inline double NextTrial(const std::vector<WindowSample>& s, const WindowOptions& o) {
-  double trial = std::numeric_limits<double>::quiet_NaN();
+  double trial = kNaN;
   int best_kind = -1;  // 2: local maximum or branch change; 1: edge
   double best_rank = -std::numeric_limits<double>::infinity();
   const auto offer = [&](int kind, double rank, double x) {
@@ -175,9 +176,9 @@ WindowSearch MaximiseOverWindows(const ProbeFn& probe, const HaltFn& halt, doubl
     r.windows.back().last = static_cast<int>(i);
   }
   const auto objective = [&](double x) {
-    if (halt()) return std::numeric_limits<double>::quiet_NaN();
+    if (halt()) return kNaN;
     const Probe p = evaluate(x);
-    return p.feasible ? p.value : std::numeric_limits<double>::quiet_NaN();
+    return p.feasible ? p.value : kNaN;
   };
   for (const Window& w : r.windows) {
     for (int j = w.first; j <= w.last; ++j) {

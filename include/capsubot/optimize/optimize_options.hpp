@@ -7,6 +7,7 @@
 
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -42,7 +43,7 @@ struct GaitRequirements {
   /// Bound on the force, max |F| (A + c for the harmonic force) of P2, P3 and the reach
   /// search (P1 optimises the phase of a given force); NaN means T0. Must satisfy
   /// 0 < force_bound <= T0 (a larger force moves the capsule without impacts, section 6).
-  double force_bound = std::numeric_limits<double>::quiet_NaN();
+  double force_bound = kNaN;
   /// Largest admissible spectral radius of the impact map (docs/model.md sections 8, 12);
   /// infinity: no stability requirement; 1: stable up to marginal; > 0.
   double rho_max = kInf;

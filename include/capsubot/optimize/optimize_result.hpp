@@ -2,10 +2,10 @@
 // What every optimisation problem of docs/model.md section 7 returns: a status, the optimum as a
 // solved orbit, the constraints and design margins active there and the cost.
 
-#include <limits>
 #include <string>
 #include <vector>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/validity.hpp"
 
@@ -29,8 +29,6 @@ enum class OptimizeStatus {
 const char* OptimizeStatusName(OptimizeStatus status);
 
 struct OptimizeResult {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   OptimizeStatus status = OptimizeStatus::kNotRun;
   std::string message;  ///< one readable sentence: what was found, or why nothing was
   /// The optimum (force with its phi0, orbit, validity). With status kNoValidOrbit: the

@@ -4,10 +4,9 @@
 // Per period tau = 2*pi: the inner body hits the right wall at phi = 0 with relative velocity
 // u > 0, the capsule slides forward and stops at phi1, then rests until the next impact.
 
-#include <limits>
-
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -26,8 +25,6 @@ enum class OrbitStatus {
 const char* StatusName(OrbitStatus status);
 
 struct Orbit {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   Forcing forcing;   ///< F(phi), phi = 0 at the impact
   double T0 = kNaN;  ///< friction bound
   double e = kNaN;   ///< restitution

@@ -10,14 +10,14 @@
 #include <Eigen/Core>
 #include <array>
 #include <complex>
-#include <limits>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
 
 struct Stability {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double kNaN = capsubot::kNaN;
 
   bool computed = false;  ///< false: not computed (orbit did not exist)
   /// Jacobian d(theta', u')/d(theta, u) of the impact map at the fixed point; rows and

@@ -2,10 +2,10 @@
 // When a constructed orbit is real: the conditions of docs/model.md section 5, each by name,
 // with the exact extrema of the inner body's position.
 
-#include <limits>
 #include <string>
 #include <vector>
 
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
@@ -31,8 +31,6 @@ enum class Condition {
 const char* ConditionName(Condition condition);
 
 struct Validity {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   bool checked = false;      ///< false: not computed
   unsigned violations = 0;   ///< bit (1 << Condition) set for each violated condition
   double x_min = kNaN;       ///< exact minimum of x over the period (NaN without orbit)

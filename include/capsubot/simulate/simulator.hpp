@@ -10,12 +10,12 @@
 // section 11).
 
 #include <cstdint>
-#include <limits>
 #include <string>
 
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
 
@@ -44,8 +44,6 @@ const char* SimModeName(SimMode mode);
 
 /// The full state at a phase. y is the capsule position (units of L).
 struct SimState {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double phi = kNaN;  ///< phase since the start of the simulation
   double x = kNaN;    ///< relative position of the inner body (walls at 0 and 1)
   double u = kNaN;    ///< relative velocity x'
@@ -57,9 +55,9 @@ struct SimState {
 /// One event: the state right after it, and u, v right before it (they differ at impacts).
 struct SimEvent {
   EventKind kind = EventKind::kStop;
-  SimState after;  ///< state right after the event (its phase is the event's phase)
-  double u_before = SimState::kNaN;  ///< relative velocity right before (the impact velocity)
-  double v_before = SimState::kNaN;  ///< capsule velocity right before
+  SimState after;          ///< state right after the event (its phase is the event's phase)
+  double u_before = kNaN;  ///< relative velocity right before (the impact velocity)
+  double v_before = kNaN;  ///< capsule velocity right before
 };
 
 /// Receives events and trajectory samples (optional; the hot path passes none).
@@ -81,8 +79,6 @@ class SimObserver {
 };
 
 struct SimOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
   double x0 = kNaN;     ///< initial relative position; 0 <= x0 <= 1
   double u0 = kNaN;     ///< initial relative velocity (finite)
@@ -144,8 +140,6 @@ const char* SimStatusName(SimStatus status);
 
 /// What happened over a span of the run (the record after the transient, or the transient).
 struct SimTally {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   std::int64_t impacts_right = 0;
   std::int64_t impacts_left = 0;
   std::int64_t stops = 0;

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "capsubot/model/forcing.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/numerics/safe_newton.hpp"
 
 namespace capsubot::detail {
@@ -52,7 +52,7 @@ struct BracketEnd {
 /// cancellation); NaN when it has none.
 inline double ParabolaZero(const BracketEnd& e) {
   const double disc = e.df * e.df - 2.0 * e.f * e.ddf;
-  if (!(disc >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  if (!(disc >= 0.0)) return kNaN;
   return e.at.phi - 2.0 * e.f / (e.df + std::copysign(std::sqrt(disc), e.df));
 }
 
@@ -61,7 +61,7 @@ inline double ParabolaZero(const BracketEnd& e) {
 /// whose Newton step -f/f' is the shorter; NaN when it is not strictly inside the bracket.
 inline double ParabolaStart(const BracketEnd& lo, const BracketEnd& hi) {
   const double x = ParabolaZero(std::abs(lo.f * hi.df) <= std::abs(hi.f * lo.df) ? lo : hi);
-  return x > lo.at.phi && x < hi.at.phi ? x : std::numeric_limits<double>::quiet_NaN();
+  return x > lo.at.phi && x < hi.at.phi ? x : kNaN;
 }
 
 /// The zero in [lo, hi] of a function of the phase whose values at the bracket's ends are
@@ -80,8 +80,7 @@ inline double ParabolaStart(const BracketEnd& lo, const BracketEnd& hi) {
 /// `force` is a Forcing or a detail::SegmentForce (Jet and Values of an Angle, and StepAngle).
 template <class Force, class Jet>
 PhaseZero PhaseRoot(const Force& force, const Jet& jet, const Angle& lo, const Angle& hi,
-                    double flo, double fhi,
-                    double start = std::numeric_limits<double>::quiet_NaN()) {
+                    double flo, double fhi, double start = kNaN) {
   if (flo == 0.0) return {lo, force.Values(lo)};
   if (fhi == 0.0) return {hi, force.Values(hi)};
   double neg = flo < 0.0 ? lo.phi : hi.phi, pos = flo < 0.0 ? hi.phi : lo.phi;  // f < 0 < f

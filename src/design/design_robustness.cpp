@@ -1,6 +1,6 @@
 // How far mu, e and m2 carry a designed gait (docs/design.md, "Robustness").
 
-#include "capsubot/job/design_robustness.hpp"
+#include "capsubot/design/design_robustness.hpp"
 
 #include <fmt/format.h>
 

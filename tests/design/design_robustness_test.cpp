@@ -1,10 +1,10 @@
-// How far mu, e and m2 carry a designed gait (capsubot/job/design_robustness.hpp): mu is the
+// How far mu, e and m2 carry a designed gait (capsubot/design/design_robustness.hpp): mu is the
 // continuation in T0 converted, the family over m2 is the design's own robot at every m2, and
 // the limits in m2 lie where the design's own evaluation of the robot loses its gait (an
 // independent computation: the continuation follows the simulated period map, the design the
 // closed-form orbit).
 
-#include "capsubot/job/design_robustness.hpp"
+#include "capsubot/design/design_robustness.hpp"
 
 #include <gtest/gtest.h>
 
