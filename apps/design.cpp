@@ -46,10 +46,10 @@ struct DesignCliOptions {
   std::string shard;  // "K/N", empty: the whole grid
   bool resume = false;
   std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
-  std::string drive;  // --drive: sine, fourier or pulse (empty: no drive design)
-  double force_max = DriveDesignOptions::kNaN;  // --force-max [N]
-  int harmonics = 2;                            // --harmonics (fourier)
-  int pulse_levels = 3;                         // --pulse-levels (pulse)
+  std::string drive;        // --drive: sine, fourier or pulse (empty: no drive design)
+  double force_max = kNaN;  // --force-max [N]
+  int harmonics = 2;        // --harmonics (fourier)
+  int pulse_levels = 3;     // --pulse-levels (pulse)
 };
 
 // The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point,
@@ -279,6 +279,38 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   return 0;
 }
 
+// The library's field names in messages, as the flags that set them.
+const FlagNames kFlags = {{"band_levels", "--band-levels"},
+                          {"force_max", "--force-max"},
+                          {"harmonics", "--harmonics"},
+                          {"levels", "--pulse-levels"},
+                          {"drive_evaluations", "--drive-evaluations"},
+                          {"drive_polishes", "--drive-polishes"},
+                          {"drive_local_evaluations", "--drive-local-evaluations"},
+                          {"drive_refine_evaluations", "--drive-refine-evaluations"},
+                          {"drive_screens", "--drive-screens"}};
+
+// The options of the drive design (--drive and what sizes it).
+void AddDriveOptions(CLI::App& cmd, DesignCliOptions& opt) {
+  cmd.add_option("--drive", opt.drive,
+                 "instead of the one-impact design, the fastest drive from rest: the force's "
+                 "waveform (sine: A sin + c; fourier: --harmonics K; pulse: --pulse-levels N "
+                 "constant levels), the motor frequency over --frequency-range and the inner "
+                 "mass over --m2-range, under the motor's peak --force-max, in each direction "
+                 "(docs/design.md, part (c)); no --force-* settings")
+      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
+  cmd.add_option("--force-max", opt.force_max,
+                 "with --drive: the motor's peak force max |F_N| [N], > 0");
+  cmd.add_option("--harmonics", opt.harmonics,
+                 "with --drive fourier: harmonics K of the drive, 1 <= K <= 16 (the search "
+                 "climbs K = 1, 2, ..., K)")
+      ->capture_default_str();
+  cmd.add_option("--pulse-levels", opt.pulse_levels,
+                 "with --drive pulse: constant levels N of the drive, 2 <= N <= 16")
+      ->capture_default_str();
+  AddDriveBudgetOptions(cmd, opt.from_rest);
+}
+
 }  // namespace
 
 Command AddDesignCommand(CLI::App& app) {
@@ -300,23 +332,7 @@ Command AddDesignCommand(CLI::App& app) {
   cmd->add_flag("--from-rest", opt->part_b,
                 "also find the fastest motion reached from rest in each direction (part b, "
                 "simulated: a few seconds; sized by the options below)");
-  cmd->add_option("--drive", opt->drive,
-                  "instead of the one-impact design, the fastest drive from rest: the force's "
-                  "waveform (sine: A sin + c; fourier: --harmonics K; pulse: --pulse-levels N "
-                  "constant levels), the motor frequency over --frequency-range and the inner "
-                  "mass over --m2-range, under the motor's peak --force-max, in each direction "
-                  "(docs/design.md, \"The fastest drive\"); no --force-* settings")
-      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
-  cmd->add_option("--force-max", opt->force_max,
-                  "with --drive: the motor's peak force max |F_N| [N], > 0");
-  cmd->add_option("--harmonics", opt->harmonics,
-                  "with --drive fourier: harmonics K of the drive, 1 <= K <= 16 (the search "
-                  "climbs K = 1, 2, ..., K)")
-      ->capture_default_str();
-  cmd->add_option("--pulse-levels", opt->pulse_levels,
-                  "with --drive pulse: constant levels N of the drive, 2 <= N <= 16")
-      ->capture_default_str();
-  AddDriveBudgetOptions(*cmd, opt->from_rest);
+  AddDriveOptions(*cmd, *opt);
   cmd->add_option("--band-levels", opt->band_levels,
                   "the levels of the gait's speed bands, fractions of the speed from rest in "
                   "(0, 1), comma-separated: how far mu, e and m2 move, each way, before the mean "
@@ -361,15 +377,6 @@ Command AddDesignCommand(CLI::App& app) {
                       "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
                       "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
-  static const FlagNames kFlags = {{"band_levels", "--band-levels"},
-                                   {"force_max", "--force-max"},
-                                   {"harmonics", "--harmonics"},
-                                   {"levels", "--pulse-levels"},
-                                   {"drive_evaluations", "--drive-evaluations"},
-                                   {"drive_polishes", "--drive-polishes"},
-                                   {"drive_local_evaluations", "--drive-local-evaluations"},
-                                   {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                                   {"drive_screens", "--drive-screens"}};
   return {cmd, [opt, cmd] { return RunNamingFlags(kFlags, [&] { return Run(*opt, *cmd); }); },
           [opt] { return !opt->grids.empty(); }};
 }

@@ -362,6 +362,19 @@ void AddOutputOptions(CLI::App& cmd, OptimizeCliOptions& opt) {
       ->type_name("FILE");
 }
 
+// The reach effort's fields as the flags that set them.
+const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
+                               {"reach_local_evaluations", "--reach-local-evaluations"},
+                               {"reach_seconds", "--reach-seconds"},
+                               {"drive_evaluations", "--drive-evaluations"},
+                               {"drive_polishes", "--drive-polishes"},
+                               {"drive_local_evaluations", "--drive-local-evaluations"},
+                               {"drive_refine_evaluations", "--drive-refine-evaluations"},
+                               {"drive_screens", "--drive-screens"},
+                               {"harmonics", "--harmonics"},
+                               {"band_levels", "--band-levels"},
+                               {"levels", "--pulse-levels"}};
+
 }  // namespace
 
 Command AddOptimizeCommand(CLI::App& app) {
@@ -431,18 +444,6 @@ Command AddOptimizeCommand(CLI::App& app) {
                      {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
                       "radius is at most 0.95",
                       "optimize --problem forcing --T0 1 --rho-max 0.95"}});
-  // The reach effort's fields as the flags that set them.
-  static const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
-                                        {"reach_local_evaluations", "--reach-local-evaluations"},
-                                        {"reach_seconds", "--reach-seconds"},
-                                        {"drive_evaluations", "--drive-evaluations"},
-                                        {"drive_polishes", "--drive-polishes"},
-                                        {"drive_local_evaluations", "--drive-local-evaluations"},
-                                        {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                                        {"drive_screens", "--drive-screens"},
-                                        {"harmonics", "--harmonics"},
-                                        {"band_levels", "--band-levels"},
-                                        {"levels", "--pulse-levels"}};
   return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
 }
 

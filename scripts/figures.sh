@@ -104,7 +104,7 @@ for k in 1 2 3; do
     --samples-per-period 400 --trajectory "$out/drives_motion_K$k.csv" > /dev/null
 done
 
-say "the best speed against the frequency: the ladder to K = 2 at 4 more values of T0 (about a minute)"
+say "the best speed against the frequency: the ladder to K = 2 at 4 more values of T0 (about a minute and a half)"
 for T0 in 0.125 0.25 0.5 2; do
   "$cli" optimize --problem reach --harmonics 2 --T0 $T0 --reach-seconds 1000000 \
     -o "$out/drives_T0_$T0.json" > /dev/null

@@ -1,6 +1,6 @@
-// The fastest drive of a real robot in each direction (docs/design.md, "The fastest drive"):
-// the reach search with the frequency and the inner mass free over the designer's ranges and
-// the force bound tied to both, mapped back to newtons, hertz and kilograms, then both
+// The fastest drive of a real robot in each direction (docs/design.md, "Part (c): the fastest
+// drive"): the reach search with the frequency and the inner mass free over the designer's ranges
+// and the force bound tied to both, mapped back to newtons, hertz and kilograms, then both
 // directions checked from rest.
 
 #include "capsubot/design/design_drive.hpp"

@@ -182,8 +182,8 @@ ReachEffort MainJob::MainJobDriveEffort() {
   e.drive_evaluations = 150;
   e.drive_polishes = 2;
   e.drive_local_evaluations = 80;
-  e.drive_refine_evaluations = 150;
-  e.drive_screens = 4;
+  e.drive_refine_evaluations = 0;
+  e.drive_screens = 0;
   return e;
 }
 

@@ -564,6 +564,33 @@ std::vector<DriveSeed> FrequencySeeds(const Params& params, const ReachOptions& 
   return seeds;
 }
 
+// The starting drives: the robust gait first when it is a force of the family (not for pulse
+// drives: then it gives the motor phase only; `seed_starts` says whether it is), the options'
+// seeds, and with T0 free the sine's fixed-frequency winners. A hard alpha range leaves out
+// the starting drives outside it.
+std::vector<DriveSeed> StartingDrives(const Context& ctx, const Params& params,
+                                      const ReachOptions& options, const Orbit* seed, double bound,
+                                      bool& seed_starts) {
+  const auto inside = [&options](double alpha) {
+    return options.widen_alpha_box || !std::isnan(options.alpha) ||
+           (options.alpha_min <= alpha && alpha <= options.alpha_max);
+  };
+  std::vector<DriveSeed> starts;
+  for (const DriveSeed& d : options.seeds) {
+    if (inside(d.alpha)) starts.push_back(d);
+  }
+  seed_starts =
+      seed != nullptr && inside(seed->alpha) &&
+      !DriveCoordinates(options.drive, seed->forcing, ctx.BoundAt(params.T0, seed->alpha)).empty();
+  if (seed_starts) starts.insert(starts.begin(), DriveSeed{seed->forcing, seed->alpha, params.T0});
+  if (ctx.FreeT0() && ctx.family.sine()) {
+    for (const DriveSeed& d : FrequencySeeds(params, options, bound)) {
+      if (inside(d.alpha)) starts.push_back(d);
+    }
+  }
+  return starts;
+}
+
 }  // namespace
 
 ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
@@ -598,26 +625,9 @@ ReachResult OptimizeReach(const Params& params, const OptimizeResult& seed,
       if (Clock::now() > deadline) throw TimeUp{};
     };
   }
-  // A hard alpha range leaves out the starting drives outside it.
-  const auto inside = [&options](double alpha) {
-    return options.widen_alpha_box || !std::isnan(options.alpha) ||
-           (options.alpha_min <= alpha && alpha <= options.alpha_max);
-  };
-  std::vector<DriveSeed> starts;
-  for (const DriveSeed& d : options.seeds) {
-    if (inside(d.alpha)) starts.push_back(d);
-  }
-  // The robust gait starts the search and competes when it is a force of the family (not for
-  // pulse drives: then it gives the motor phase only).
-  const bool seed_starts =
-      have_seed && inside(so.alpha) &&
-      !DriveCoordinates(options.drive, so.forcing, ctx.BoundAt(params.T0, so.alpha)).empty();
-  if (seed_starts) starts.insert(starts.begin(), DriveSeed{so.forcing, so.alpha, params.T0});
-  if (ctx.FreeT0() && ctx.family.sine()) {
-    for (const DriveSeed& d : FrequencySeeds(params, options, bound)) {
-      if (inside(d.alpha)) starts.push_back(d);
-    }
-  }
+  bool seed_starts = false;
+  const std::vector<DriveSeed> starts =
+      StartingDrives(ctx, params, options, have_seed ? &so : nullptr, bound, seed_starts);
   std::vector<double> lower, upper;
   SearchBoxOf(ctx, options, starts, lower, upper);
   const std::vector<double> y0 = ScoreStarts(ctx, starts, seed_starts, lower, upper);

@@ -74,10 +74,14 @@ ReachOptions ReachEffort::DriveOptions(const DriveFamily& drive, double force_bo
   r.refine_evaluations = drive_refine_evaluations;
   r.screen_starts = drive_screens;
   r.screen_evaluations = drive_local_evaluations / kScreenShare;
-  // Candidates from several regions: near the edge of a cliff in the landscape a drive can lose
-  // its speed under the re-check's other settings (e = 0.999 at e = 1), and its neighbours with it.
-  r.candidates = std::max(r.candidates, 2 * drive_polishes);
-  r.candidates_apart = kCandidatesApart;
+  r.candidates = std::max(r.candidates, drive_polishes);
+  // The random search gathers many points on the edge of a cliff of the landscape, where a
+  // drive can lose its speed under the re-check's other settings (e = 0.999 at e = 1) and its
+  // neighbours with it: then twice as many candidates, from several regions.
+  if (drive_refine_evaluations > 0) {
+    r.candidates = std::max(r.candidates, 2 * drive_polishes);
+    r.candidates_apart = kCandidatesApart;
+  }
   // A mean over starts is flat between the points where a start changes its motion: a polish
   // stopped by a small relative change would stop on the first plateau; its budget bounds it.
   r.rel_tol = kPolishRelTol;

@@ -44,8 +44,8 @@ void BM_OptimizeJobMain(benchmark::State& state) {
 BENCHMARK(BM_OptimizeJobMain)->Unit(benchmark::kSecond)->Iterations(1);
 
 // `capsubot optimize --problem reach --harmonics 3` with its default budgets: the sine's reach
-// search, then the ladder's steps K = 2 and 3 (400 Halton points and 4 polishes of 150 each),
-// their re-checks and spreads.
+// search, then the ladder's steps K = 2 and 3 (400 Halton points, 400 of controlled random
+// search, 16 screens of 37 and 4 polishes of 150 each), their re-checks and spreads.
 void BM_OptimizeJobReachThreeHarmonics(benchmark::State& state) {
   capsubot::OptimizeJobOptions options;
   capsubot::ReachProblem reach;

@@ -497,7 +497,7 @@ TEST(DesignCli, EveryBadInputIsOneLineNamingTheParameterAndExitsTwo) {
 }
 
 TEST(DesignCli, TheFastestDriveInTheUsersUnitsForwardAndItsMirrorBackward) {
-  // A small search (docs/design.md, "The fastest drive"); the JSON against its own parts: the
+  // A small search (docs/design.md, "Part (c)"); the JSON against its own parts: the
   // drive's peak within the motor's, the robot within the ranges, the speed from the
   // dimensionless mean velocity (omega = 2 pi f), the mirror image's force.
   const auto r = RunCli(

@@ -1,4 +1,4 @@
-// The fastest drive of a real robot (docs/design.md, "The fastest drive"): the SI answer
+// The fastest drive of a real robot (docs/design.md, "Part (c)"): the SI answer
 // against the dimensionless search it maps (units converted independently here), the force in
 // newtons against the search's force over the motor phase, the peak bound, the ranges, the
 // mirror image backward simulated from rest, bad options.

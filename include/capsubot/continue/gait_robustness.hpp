@@ -109,12 +109,12 @@ struct MotionToContinue {
 /// parameter, and the factor from it to the parameter reported (a family in T0 over T0's value
 /// has the range [1/2, 2] whatever T0, so its finite differences fit the range).
 struct RobustnessParameter {
-  std::string name;     ///< the name reported ("T0", "mu", "m2_kg")
-  RobotFamily family;   ///< the robot at each value of the family's parameter
-  double value = 1.0;   ///< the robot's value of it
-  double from = 0.5;    ///< the range searched
+  std::string name;    ///< the name reported ("T0", "mu", "m2_kg")
+  RobotFamily family;  ///< the robot at each value of the family's parameter
+  double value = 1.0;  ///< the robot's value of it
+  double from = 0.5;   ///< the range searched
   double to = 2.0;
-  double scale = 1.0;   ///< reported value = the family's value times this; > 0
+  double scale = 1.0;  ///< reported value = the family's value times this; > 0
 };
 
 /// `family` (the robots at each value of a parameter) followed in the parameter over its value,

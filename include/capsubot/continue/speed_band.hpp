@@ -44,10 +44,10 @@ struct BandEdge {
   bool within = false;
   /// within: the middle of the final bracket; else the range's end.
   double parameter = kNaN;
-  double inside = kNaN;        ///< the bracket's end towards the value: speed >= level there
-  double outside = kNaN;       ///< its other end: speed < level there (NaN unless within)
-  double accuracy = kNaN;      ///< |outside - inside| (NaN unless within)
-  double ratio_inside = kNaN;  ///< the speed at `inside` over the nominal speed
+  double inside = kNaN;         ///< the bracket's end towards the value: speed >= level there
+  double outside = kNaN;        ///< its other end: speed < level there (NaN unless within)
+  double accuracy = kNaN;       ///< |outside - inside| (NaN unless within)
+  double ratio_inside = kNaN;   ///< the speed at `inside` over the nominal speed
   double ratio_outside = kNaN;  ///< the speed at `outside` over the nominal speed
 };
 
@@ -70,12 +70,12 @@ struct SpeedBand {
   double from = kNaN;   ///< the range searched
   double to = kNaN;
   SpeedBandStatus status = SpeedBandStatus::kNotRun;
-  double nominal_speed = kNaN;  ///< the mean speed from rest at the value (units of omega L)
-  std::int64_t starts = 0;      ///< the starts from rest
+  double nominal_speed = kNaN;        ///< the mean speed from rest at the value (units of omega L)
+  std::int64_t starts = 0;            ///< the starts from rest
   std::int64_t unsettled_starts = 0;  ///< of them, those whose speed has not settled (kUnsettled)
-  std::vector<BandEdge> down;   ///< one edge per level (in the order of the levels), below
-  std::vector<BandEdge> up;     ///< and above the value
-  int evaluations = 0;          ///< simulations from rest (FindAttractors) made
+  std::vector<BandEdge> down;         ///< one edge per level (in the order of the levels), below
+  std::vector<BandEdge> up;           ///< and above the value
+  int evaluations = 0;                ///< simulations from rest (FindAttractors) made
 
   /// The edge of `level` one way (down: below the value), or null.
   const BandEdge* Edge(double level, bool up_side) const;

@@ -1,5 +1,5 @@
 #pragma once
-// Designing a real robot, part (c): the fastest drive (docs/design.md, "The fastest drive").
+// Designing a real robot, part (c): the fastest drive (docs/design.md, "Part (c)").
 // Given the shell, the gap, the floor, the restitution and the motor's peak force F_max [N],
 // the force's waveform (a sine with a bias, a Fourier series of K harmonics, or N constant
 // levels), the motor frequency and the inner mass whose motion reached from rest is fastest.
@@ -12,12 +12,12 @@
 // and the grid of starts (x0 -> 1 - x0, psi -> psi + pi) are symmetric, so the force -F drives
 // the same robot backward at the same speed; both are checked from rest.
 
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/design/design.hpp"
 #include "capsubot/design/design_from_rest.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/reach/drive_family.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/reach/reach_effort.hpp"
@@ -26,8 +26,6 @@ namespace capsubot {
 
 /// How the fastest drive is searched.
 struct DriveDesignOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
   DriveFamily drive = DriveFamily::Fourier(2);  ///< the waveforms searched
   double force_max = kNaN;  ///< the motor's peak force max |F_N| [N], finite > 0
   /// The search's starts and budgets (the drive budgets for K >= 2 and pulses); its
@@ -45,11 +43,11 @@ struct DriveDesignOptions {
 /// F_N(s) = mean + sum_k (cos[k-1] cos ks + sin[k-1] sin ks), or levels[j] for s in
 /// [switches[j], switches[j+1]) (a pulse drive: cos and sin empty).
 struct DriveForce {
-  double mean = std::numeric_limits<double>::quiet_NaN();     ///< [N]
-  std::vector<double> cos, sin;                               ///< [N]
-  std::vector<double> levels;                                 ///< [N]
-  std::vector<double> switches;                               ///< [rad], increasing in [0, 2 pi)
-  double max_abs = std::numeric_limits<double>::quiet_NaN();  ///< max |F_N| [N]
+  double mean = kNaN;            ///< [N]
+  std::vector<double> cos, sin;  ///< [N]
+  std::vector<double> levels;    ///< [N]
+  std::vector<double> switches;  ///< [rad], increasing in [0, 2 pi)
+  double max_abs = kNaN;         ///< max |F_N| [N]
 };
 
 /// The fastest drive in each direction, in the user's units.

@@ -31,8 +31,8 @@ struct MainJob {
   /// The levels of the speed bands of both motions (SpeedBandOptions::levels: fractions of the
   /// speed from rest, each in (0, 1)); the bands' starts are the job's check from rest.
   std::vector<double> band_levels = {0.95};
-  /// The budgets of the drive part (drive_evaluations, drive_polishes,
-  /// drive_local_evaluations, drive_refine_evaluations, drive_screens), smaller than those of
+  /// The budgets of the drive part (150 Halton points and 2 polishes of 80, without the random
+  /// search and the screens of `--problem reach`), smaller than those of
   /// `--problem reach --harmonics K`, so that the whole job takes seconds; its starts and time
   /// limit are those of `reach`.
   ReachEffort drives = MainJobDriveEffort();

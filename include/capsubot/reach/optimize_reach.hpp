@@ -88,8 +88,8 @@ struct ReachOptions {
   /// The alpha box widens to hold the starting drives' alphas; false: it is a hard range, and
   /// a starting drive outside it is left out (a designer's range of inner masses).
   bool widen_alpha_box = true;
-  /// The force bound is a motor force in newtons (docs/design.md, "The fastest drive"): NaN,
-  /// the bound is force_bound in units of (m1+m2) omega^2 L whatever alpha; else force_bound
+  /// The force bound is a motor force in newtons (docs/design.md, "Part (c): the fastest drive"):
+  /// NaN, the bound is force_bound in units of (m1+m2) omega^2 L whatever alpha; else force_bound
   /// holds at this mass ratio and the bound at alpha is force_bound (1 - alpha)/(1 - bound_alpha)
   /// (the unit grows with the inner mass m2 = alpha m1/(1 - alpha)), never above T0 (the
   /// friction force: a larger force slides the shell by itself); 0 < bound_alpha < 1.
