@@ -37,6 +37,7 @@ Robot RobotOfWinner(const DesignInput& in, const ReachResult& r) {
 DriveForce InNewtons(const Forcing& f, double unit) {
   DriveForce d;
   d.max_abs = unit * f.MaxAbs();
+  d.mean = unit * f.mean();
   const double phi0 = f.phi0();
   if (f.pulse()) {
     const int n = f.pulse_levels();
@@ -51,10 +52,8 @@ DriveForce InNewtons(const Forcing& f, double unit) {
       d.levels.push_back(unit * f.level(j));
       d.switches.push_back(shifted(j));
     }
-    d.mean = unit * f.mean();
     return d;
   }
-  d.mean = unit * f.mean();
   for (int k = 1; k <= f.harmonics(); ++k) {
     const double c = std::cos(k * phi0), s = std::sin(k * phi0);
     d.cos.push_back(unit * (f.a(k) * c + f.b(k) * s));
