@@ -194,51 +194,6 @@ void AddParamsOptions(CLI::App& cmd, Params& p, bool with_margin) {
   }
 }
 
-void RequireInRange(const std::string& option, long long value, long long lo, long long hi) {
-  if (value < lo || value > hi) {
-    const std::string name = option.substr(option.find_first_not_of('-'));
-    throw std::invalid_argument(
-        fmt::format("{} = {} is invalid: expected {} <= {} <= {}", option, value, lo, name, hi));
-  }
-}
-
-namespace {
-
-bool NamePart(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
-
-// Whether the name at `at` is an operand of an expression ("to - from = 0.1", "2 * max_period =
-// 16"): the value after it is the expression's, not the field's.
-bool Operand(const std::string& message, std::size_t at) {
-  return at >= 2 && message[at - 1] == ' ' && std::strchr("+-*/", message[at - 2]) != nullptr;
-}
-
-// The message with every "name = " of a field in its rule (after its first word) as "flag = ".
-std::string RuleWithFlagNames(std::string message, const FlagNames& names) {
-  for (const auto& [name, flag] : names) {
-    const std::string field = std::string(name) + " = ";
-    for (std::size_t at = message.find(field, 1); at != std::string::npos;
-         at = message.find(field, at + 1)) {
-      if (NamePart(message[at - 1]) || message[at - 1] == '-' || Operand(message, at)) continue;
-      message.replace(at, std::strlen(name), flag);
-      at += std::strlen(flag);
-    }
-  }
-  return message;
-}
-
-}  // namespace
-
-std::string WithFlagNames(const std::string& message, const FlagNames& names) {
-  for (const auto& [name, flag] : names) {
-    const std::size_t n = std::strlen(name);
-    if (message.compare(0, n, name) == 0 && n < message.size() &&
-        (message[n] == ' ' || message[n] == ':')) {
-      return RuleWithFlagNames(flag + message.substr(n), names);
-    }
-  }
-  return RuleWithFlagNames(message, names);
-}
-
 int RunNamingFlags(const FlagNames& names, const std::function<int()>& run) {
   try {
     return run();

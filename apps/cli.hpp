@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "capsubot/job/setting_names.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/model/params.hpp"
@@ -96,20 +97,8 @@ bool IsStandardOutput(const std::string& path);
 /// two would be mixed in one stream ("-o - with --json is invalid: ...").
 void RequireOutputApartFromJson(const std::string& output, const char* option, bool json);
 
-/// A size option given on the command line must lie in [lo, hi], checked before any work:
-/// throws std::invalid_argument "--hops = 2000000000 is invalid: expected 0 <= hops <= 1000".
-void RequireInRange(const std::string& option, long long value, long long lo, long long hi);
-
-/// Library messages begin with the name of a field ("record = 3 is invalid: ..."); the user
-/// typed a flag. Pairs of field and flag, e.g. {"record", "--record"}.
-using FlagNames = std::vector<std::pair<const char*, const char*>>;
-
-/// `message` with its first word replaced by its flag when it is a field of `names` and is
-/// followed by ' ' or ':' ("--record = 3 is invalid: ..."); otherwise `message` unchanged.
-std::string WithFlagNames(const std::string& message, const FlagNames& names);
-
 /// Runs `run`; a std::invalid_argument, WriteError or IoError it throws is thrown again (the
-/// same type) WithFlagNames(names).
+/// same type) WithFlagNames(names): the library's field names as the flags that set them.
 int RunNamingFlags(const FlagNames& names, const std::function<int()>& run);
 
 /// --shard "K/N" -> (K, N): decimal digits, K and N at most INT_MAX, 0 <= K < N; throws

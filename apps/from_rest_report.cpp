@@ -21,11 +21,8 @@ FromRestOptions FromRestCliOptions::Check() const {
   return o;
 }
 
-ReachEffort FromRestCliOptions::Effort() const {
+ReachEffort FromRestCliOptions::Budgets() const {
   ReachEffort effort;
-  const StartGrid grid = ParseStartGrid("--reach-starts", reach_starts);
-  effort.n_x = grid.n_x;
-  effort.n_psi = grid.n_psi;
   effort.global_evaluations = reach_evaluations;
   effort.local_evaluations = reach_local_evaluations;
   effort.max_seconds = reach_seconds;
@@ -34,6 +31,14 @@ ReachEffort FromRestCliOptions::Effort() const {
   effort.drive_local_evaluations = drive_local_evaluations;
   effort.drive_refine_evaluations = drive_refine_evaluations;
   effort.drive_screens = drive_screens;
+  return effort;
+}
+
+ReachEffort FromRestCliOptions::Effort() const {
+  ReachEffort effort = Budgets();
+  const StartGrid grid = ParseStartGrid("--reach-starts", reach_starts);
+  effort.n_x = grid.n_x;
+  effort.n_psi = grid.n_psi;
   return effort;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/reach/reach_effort.hpp"
@@ -27,8 +28,9 @@ using text::ReachText;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {
-  std::string starts = "8x8";        ///< --from-rest-starts: the full grid NXxNPSI
-  std::string reach_starts = "4x4";  ///< --reach-starts: the grid inside the reach search
+  std::string starts = StartGrid{}.Text();  ///< --from-rest-starts: the full grid NXxNPSI
+  /// --reach-starts: the grid inside the reach search
+  std::string reach_starts = StartGrid{ReachEffort{}.n_x, ReachEffort{}.n_psi}.Text();
   int reach_evaluations = ReachOptions{}.global_evaluations;       ///< --reach-evaluations
   int reach_local_evaluations = ReachOptions{}.local_evaluations;  ///< --reach-local-evaluations
   double reach_seconds = ReachOptions{}.max_seconds;               ///< --reach-seconds
@@ -44,6 +46,8 @@ struct FromRestCliOptions {
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
   /// naming the option for a bad grid.
   FromRestOptions Check() const;
+  /// The budgets and time limit of the reach search (its grid: the default).
+  ReachEffort Budgets() const;
   /// The effort of the reach search (grid of --reach-starts, budgets, time limit); throws
   /// std::invalid_argument naming the option for a bad grid.
   ReachEffort Effort() const;

@@ -13,11 +13,13 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/optimize_job.hpp"
+#include "capsubot/job/optimize_settings.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/optimize_csv.hpp"
 #include "capsubot/report/optimize_json.hpp"
@@ -26,6 +28,7 @@
 #include "commands.hpp"
 #include "from_rest_report.hpp"
 #include "help_format.hpp"
+#include "optimize_flags.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 
@@ -33,107 +36,48 @@ namespace capsubot::app {
 namespace {
 
 struct OptimizeCliOptions {
-  std::string problem;  // "", phase, forcing, fourier, reach
-  double A = kNaN;      // NaN: not given
-  double c = kNaN;
-  CLI::Option* A_option = nullptr;
-  CLI::Option* c_option = nullptr;
-  Params params;
-  SearchRequest search;  // the bound, stability, time limit and search effort
-  CLI::Option* bound_option = nullptr;
-  int starts = 0;  // used only when given: else the problem's default
-  CLI::Option* starts_option = nullptr;
+  OptimizeSettings settings;     // the job's settings, bound to their flags
+  int starts = 0;                // --starts (settings.search.starts when given)
+  FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
+  std::string T0_range;          // reach: "LO:HI", the motor's frequency free (empty: fixed)
   bool json = false;
   std::string output;  // empty: no file
   std::string force_csv;
-  FromRestCliOptions from_rest;  // the from-rest check of every gait, the reach search
-  double alpha = kNaN;           // reach: a fixed mass ratio (NaN: free)
-  std::string T0_range;          // reach: "LO:HI", the motor's frequency free (empty: fixed)
-  std::string waveform;          // reach: "", "sine", "fourier" or "pulse"
-  int pulse_levels = 3;          // reach: the levels N of a pulse drive
-  std::string from_rest_csv;     // main job: speeds promised and reached, for the figure
-  std::vector<double> band_levels = MainJob{}.band_levels;  // main job: the speed bands' levels
+  std::string from_rest_csv;  // main job: speeds promised and reached, for the figure
   CLI::App* cmd = nullptr;
 };
 
-// The runs that use an option: "" is the main job (no --problem), else a problem name. The P2
-// options apply to reach through its seed, the robust gait.
-const std::vector<OptionUse> kOptionUses = {
-    {"--A", {"phase"}},
-    {"--c", {"phase"}},
-    {"--harmonics", {"fourier", "reach"}},
-    {"--hops", {"", "forcing", "reach"}},
-    {"--starts", {"", "forcing", "fourier", "reach"}},
-    {"--bound", {"", "forcing", "fourier", "reach"}},
-    {"--global-algorithm", {"", "forcing", "fourier", "reach"}},
-    {"--local-algorithm", {"", "forcing", "fourier", "reach"}},
-    {"--global-evaluations", {"", "forcing", "fourier", "reach"}},
-    {"--alpha", {"reach"}},
-    {"--T0-range", {"reach"}},
-    {"--waveform", {"reach"}},
-    {"--pulse-levels", {"reach"}},
-    {"--reach-starts", {"", "reach"}},
-    {"--reach-evaluations", {"", "reach"}},
-    {"--reach-local-evaluations", {"", "reach"}},
-    {"--reach-seconds", {"", "reach"}},
-    {"--drive-evaluations", {"reach"}},
-    {"--drive-refine-evaluations", {"reach"}},
-    {"--drive-screens", {"reach"}},
-    {"--drive-polishes", {"reach"}},
-    {"--drive-local-evaluations", {"reach"}},
-    {"--from-rest-csv", {""}},
-    {"--band-levels", {""}},
-};
+// The messages of the lower stages name these fields by their flags; the others (alpha,
+// global_algorithm, force_bound, ...) keep the library's field names.
+const FlagNames kRenamedFields = {{"reach_evaluations", "--reach-evaluations"},
+                                  {"reach_local_evaluations", "--reach-local-evaluations"},
+                                  {"reach_seconds", "--reach-seconds"},
+                                  {"drive_evaluations", "--drive-evaluations"},
+                                  {"drive_polishes", "--drive-polishes"},
+                                  {"drive_local_evaluations", "--drive-local-evaluations"},
+                                  {"drive_refine_evaluations", "--drive-refine-evaluations"},
+                                  {"drive_screens", "--drive-screens"},
+                                  {"harmonics", "--harmonics"},
+                                  {"band_levels", "--band-levels"},
+                                  {"levels", "--pulse-levels"},
+                                  {"from_rest_starts", "--from-rest-starts"},
+                                  {"reach_starts", "--reach-starts"}};
 
-std::string RunName(const std::string& problem) {
-  return problem.empty() ? "the main job (no --problem)" : "--problem " + problem;
-}
+// The command line's outputs that only some problems write.
+const std::vector<SettingUse> kOutputUses = {{"from_rest_csv", {""}}};
 
-// The options the chosen run does not use: their defaults do not shape its output (left out
-// of the provenance).
+// The options the chosen problem does not use: their defaults do not shape its output (left
+// out of the provenance).
 std::vector<std::string> UnusedOptionsOf(const OptimizeCliOptions& opt) {
-  std::vector<std::string> unused = UnusedOptions(kOptionUses, opt.problem);
-  if (opt.search.global_algorithm == kMultistart) unused.emplace_back("--global-evaluations");
+  const SettingNames names{kOptimizeFlags};
+  std::vector<std::string> unused;
+  for (const std::string& field : UnusedOptimizeSettings(opt.settings)) {
+    unused.push_back(names.Name(field));
+  }
+  for (const std::string& field : UnusedSettings(kOutputUses, opt.settings.problem)) {
+    unused.push_back(names.Name(field));
+  }
   return unused;
-}
-
-// An option the chosen run does not use would be silently ignored: refuse it, naming both.
-void RejectUnusedOptions(const OptimizeCliOptions& opt) {
-  if (const OptionUse* use = GivenUnusedOption(*opt.cmd, kOptionUses, opt.problem)) {
-    std::string expected;
-    for (const char* run : use->runs) {
-      if (run == nullptr) break;
-      expected += (expected.empty() ? "" : " or ") + RunName(run);
-    }
-    throw std::invalid_argument(fmt::format("{} conflicts with {}: expected {} only with {}",
-                                            use->option, RunName(opt.problem), use->option,
-                                            expected));
-  }
-  const CLI::Option* harmonics = opt.cmd->get_option_no_throw("--harmonics");
-  const bool drives = (harmonics->count() > 0 && opt.search.harmonics >= 2) ||
-                      opt.waveform == "fourier" || opt.waveform == "pulse";
-  for (const char* name : {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations",
-                           "--drive-refine-evaluations", "--drive-screens"}) {
-    if (opt.cmd->get_option(name)->count() > 0 && !drives) {
-      throw std::invalid_argument(fmt::format(
-          "{} conflicts with {} without --harmonics K >= 2 or --waveform pulse: expected {} only "
-          "with a Fourier drive of K >= 2 harmonics or a pulse drive",
-          name, RunName(opt.problem), name));
-    }
-  }
-  const CLI::Option* evaluations = opt.cmd->get_option_no_throw("--global-evaluations");
-  if (evaluations != nullptr && evaluations->count() > 0 &&
-      opt.search.global_algorithm == kMultistart) {
-    throw std::invalid_argument(
-        "--global-evaluations conflicts with --global-algorithm multistart: expected an NLopt "
-        "global algorithm with it (multistart has no evaluation budget)");
-  }
-}
-
-// The files asked for, opened before any work (a bad path fails at once) and committed
-// when their content is complete; null: not asked for.
-std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* option) {
-  return path.empty() ? nullptr : std::make_unique<AtomicFile>(path, option);
 }
 
 // --T0-range LO:HI as (T0_min, T0_max); (NaN, NaN) when not given. The library checks the
@@ -159,95 +103,35 @@ std::pair<double, double> ParseT0Range(const std::string& text) {
   return {lo, hi};
 }
 
-// The drives of --problem reach: --waveform pulse (--pulse-levels N), fourier (--harmonics K,
-// whose default waveform it is), or the sine.
-DriveFamily ReachDrive(const OptimizeCliOptions& opt) {
-  const bool harmonics = opt.cmd->get_option("--harmonics")->count() > 0;
-  const bool levels = opt.cmd->get_option("--pulse-levels")->count() > 0;
-  if (opt.waveform == "pulse") {
-    if (harmonics) {
-      throw std::invalid_argument(
-          "--harmonics conflicts with --waveform pulse: expected --harmonics only with a Fourier "
-          "drive (--pulse-levels N sizes a pulse drive)");
-    }
-    return DriveFamily::Pulse(opt.pulse_levels);
+// The settings as the command line gives them: the flags given, the syntax of --T0-range and
+// --starts, the from-rest options.
+OptimizeSettings SettingsOf(const OptimizeCliOptions& opt) {
+  OptimizeSettings s = opt.settings;
+  for (const auto& [field, flag] : kOptimizeFlags) {
+    const CLI::Option* option = opt.cmd->get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) s.given.insert(field);
   }
-  if (levels) {
-    throw std::invalid_argument(fmt::format(
-        "--pulse-levels conflicts with --waveform {}: expected --pulse-levels only with "
-        "--waveform pulse",
-        opt.waveform.empty() ? (harmonics ? "fourier" : "sine") : opt.waveform));
-  }
-  if (opt.waveform == "sine") {
-    if (harmonics && opt.search.harmonics != 1) {
-      throw std::invalid_argument(fmt::format(
-          "--harmonics = {} conflicts with --waveform sine: expected --harmonics 1 or none",
-          opt.search.harmonics));
-    }
-    return DriveFamily{};
-  }
-  if (harmonics || opt.waveform == "fourier") return DriveFamily::Fourier(opt.search.harmonics);
-  return DriveFamily{};
+  if (s.Given("starts")) s.search.starts = opt.starts;
+  if (s.problem == "reach") std::tie(s.T0_min, s.T0_max) = ParseT0Range(opt.T0_range);
+  s.from_rest_starts = opt.from_rest.starts;
+  s.reach_starts = opt.from_rest.reach_starts;
+  s.reach = opt.from_rest.Budgets();
+  s.threads = opt.from_rest.threads;
+  return s;
 }
 
-// The job the command line asks for: the mode with its own settings, the robot, the search.
-OptimizeJobOptions JobOptions(const OptimizeCliOptions& opt) {
-  OptimizeJobOptions job;
-  const std::string& problem = opt.problem;
-  if (problem.empty()) job.mode = MainJob{opt.from_rest.Effort(), opt.band_levels};
-  if (problem == "phase") job.mode = PhaseProblem{opt.A, opt.c};
-  if (problem == "forcing") job.mode = ForcingProblem{};
-  if (problem == "fourier") job.mode = FourierProblem{};
-  if (problem == "reach") {
-    const auto [T0_min, T0_max] = ParseT0Range(opt.T0_range);
-    job.mode = ReachProblem{opt.from_rest.Effort(), opt.alpha, ReachDrive(opt), T0_min, T0_max};
-  }
-  job.params = opt.params;
-  job.search = opt.search;
-  if (opt.starts_option->count() > 0) job.search.starts = opt.starts;
-  job.check = opt.from_rest.Check();
-  job.on_stage = [](const std::string& stage) { ShowStage(stage); };
-  return job;
-}
-
-// A value given on the command line must be admissible itself: NaN (the library's "use T0"
-// for the bound, the CLI's "not given" for A and c) is not a default.
-void RequireGiven(const CLI::Option* option, bool ok, const std::string& value, const char* rule) {
-  if (option->count() > 0 && !ok) {
-    throw std::invalid_argument(
-        fmt::format("{} = {} is invalid: expected {}", option->get_name(), value, rule));
-  }
+// The files asked for, opened before any work (a bad path fails at once) and committed
+// when their content is complete; null: not asked for.
+std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* option) {
+  return path.empty() ? nullptr : std::make_unique<AtomicFile>(path, option);
 }
 
 int Run(const OptimizeCliOptions& opt) {
-  RejectUnusedOptions(opt);
-  RequireGiven(opt.A_option, std::isfinite(opt.A) && opt.A >= 0.0, fmt::format("{}", opt.A),
-               "a finite amplitude A >= 0");
-  RequireGiven(opt.c_option, std::isfinite(opt.c), fmt::format("{}", opt.c),
-               "a finite mean force c");
-  RequireGiven(opt.bound_option,
-               std::isfinite(opt.search.gait.force_bound) && opt.search.gait.force_bound > 0.0,
-               fmt::format("{}", opt.search.gait.force_bound), "a finite bound > 0 (at most T0)");
-  // Every size is bounded before any work starts.
-  if (opt.starts_option->count() > 0) RequireInRange("--starts", opt.starts, 1, kMaxStarts);
-  RequireInRange("--hops", opt.search.hops, 0, kMaxStarts);
-  RequireInRange("--global-evaluations", opt.search.global_evaluations, 10, kMaxStageEvaluations);
-  if (!(opt.search.gait.rho_max > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "--rho-max = {} is invalid: expected rho_max > 0 (inf: no stability requirement)",
-        opt.search.gait.rho_max));
-  }
-  if (!(opt.search.max_time > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--max-time = {} is invalid: expected a time limit > 0 seconds (inf: none)",
-                    opt.search.max_time));
-  }
-  if (opt.problem == "phase" && (std::isnan(opt.A) || std::isnan(opt.c))) {
-    throw std::invalid_argument(
-        "--problem phase needs the force shape: give --A and --c (F = A sin(phi + phi0) + c)");
-  }
-  const OptimizeJobOptions job = JobOptions(opt);
-  job.Validate();  // the options of the work to come, checked before any of it starts
+  const OptimizeSettings settings = SettingsOf(opt);
+  const SettingNames names{kOptimizeFlags};
+  RejectUnusedSettings(kOutputUses, settings.given, settings.problem, kOptimizeModes, names);
+  OptimizeJobOptions job = OptimizeJobFrom(settings, names);
+  job.on_stage = [](const std::string& stage) { ShowStage(stage); };
   RequireDistinctOutputs(
       {{opt.output, "-o"}, {opt.force_csv, "--force-csv"}, {opt.from_rest_csv, "--from-rest-csv"}});
   RequireOutputApartFromJson(opt.output, "-o", opt.json);
@@ -287,52 +171,50 @@ int Run(const OptimizeCliOptions& opt) {
 // The gait asked for and the search of P1-P3: --bound, --rho-max/--stable, --max-time,
 // --harmonics, the algorithms and their budgets.
 void AddSearchOptions(CLI::App& cmd, OptimizeCliOptions& opt) {
-  opt.bound_option =
-      cmd.add_option("--bound", opt.search.gait.force_bound,
-                     "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
-                     "same unit as A (default: T0)");
+  cmd.add_option("--bound", opt.settings.search.gait.force_bound,
+                 "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
+                 "same unit as A (default: T0)");
   CLI::Option* rho_max =
-      cmd.add_option("--rho-max", opt.search.gait.rho_max,
+      cmd.add_option("--rho-max", opt.settings.search.gait.rho_max,
                      "largest spectral radius of the impact map (docs/model.md sections 8, 12); "
                      "inf: no stability requirement")
           ->capture_default_str()
           ->type_name(kFloatOrInf);
   cmd.add_flag_callback(
-         "--stable", [&opt] { opt.search.gait.rho_max = 1.0; },
+         "--stable", [&opt] { opt.settings.search.gait.rho_max = 1.0; },
          "the same as --rho-max 1: stable orbits, up to marginal stability")
       ->excludes(rho_max);
-  cmd.add_option("--max-time", opt.search.max_time,
+  cmd.add_option("--max-time", opt.settings.search.max_time,
                  "time limit [s] of each optimisation; when reached, the best point so far is "
                  "reported with status max_time (inf: none)")
       ->capture_default_str()
       ->type_name(kFloatOrInf);
-  cmd.add_option("--harmonics", opt.search.harmonics,
+  cmd.add_option("--harmonics", opt.settings.search.harmonics,
                  "number K of harmonics of the Fourier force: fourier (P3), or reach (the fastest "
                  "Fourier drive from rest, climbing from the sine: K = 1 is the sine)")
       ->capture_default_str();
-  cmd.add_option("--global-algorithm", opt.search.global_algorithm,
+  cmd.add_option("--global-algorithm", opt.settings.search.global_algorithm,
                  "global stage of forcing/fourier: multistart (scan + local polishes) or an "
                  "NLopt algorithm: GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS")
       ->capture_default_str();
-  cmd.add_option("--local-algorithm", opt.search.local_algorithm,
+  cmd.add_option("--local-algorithm", opt.settings.search.local_algorithm,
                  "local constrained polish, NLopt name: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ "
                  "(LD_*: gradients by central differences)")
       ->capture_default_str();
-  cmd.add_option("--global-evaluations", opt.search.global_evaluations,
+  cmd.add_option("--global-evaluations", opt.settings.search.global_evaluations,
                  fmt::format("evaluation budget of an NLopt global algorithm (not used by "
                              "multistart), 10 to {}",
                              kMaxStageEvaluations))
       ->capture_default_str();
-  cmd.add_option("--hops", opt.search.hops,
+  cmd.add_option("--hops", opt.settings.search.hops,
                  fmt::format("forcing: basin-hopping restarts from random perturbations of the "
                              "best point after the starts, 0 to {}",
                              kMaxStarts))
       ->capture_default_str();
-  opt.starts_option = cmd.add_option(
-      "--starts", opt.starts,
-      fmt::format("number of local polishes of the multistart, 1 to {} (default: 10 for "
-                  "forcing, 20 for fourier)",
-                  kMaxStarts));
+  cmd.add_option("--starts", opt.starts,
+                 fmt::format("number of local polishes of the multistart, 1 to {} (default: 10 for "
+                             "forcing, 20 for fourier)",
+                             kMaxStarts));
 }
 
 // What is printed and written: --json, -o, --force-csv, --from-rest-csv.
@@ -362,25 +244,10 @@ void AddOutputOptions(CLI::App& cmd, OptimizeCliOptions& opt) {
       ->type_name("FILE");
 }
 
-// The reach effort's fields as the flags that set them.
-const FlagNames kReachFlags = {{"reach_evaluations", "--reach-evaluations"},
-                               {"reach_local_evaluations", "--reach-local-evaluations"},
-                               {"reach_seconds", "--reach-seconds"},
-                               {"drive_evaluations", "--drive-evaluations"},
-                               {"drive_polishes", "--drive-polishes"},
-                               {"drive_local_evaluations", "--drive-local-evaluations"},
-                               {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                               {"drive_screens", "--drive-screens"},
-                               {"harmonics", "--harmonics"},
-                               {"band_levels", "--band-levels"},
-                               {"levels", "--pulse-levels"}};
-
 }  // namespace
 
 Command AddOptimizeCommand(CLI::App& app) {
   auto opt = std::make_shared<OptimizeCliOptions>();
-  opt->params = OptimizeJobOptions::RobustParams();  // the robust defaults of the job
-  opt->search = OptimizeJobOptions::RobustRequest();
   CLI::App* cmd = app.add_subcommand(
       "optimize",
       "The fastest gait (docs/model.md section 7) with the margins of a robust gait (section "
@@ -390,7 +257,7 @@ Command AddOptimizeCommand(CLI::App& app) {
       "(valid, stable) for comparison, and which gait to build. With --problem: one problem. "
       "Prints a summary (or --json); -o also writes the JSON. Exit status 0 whenever the "
       "computation ran, valid gait found or not.");
-  cmd->add_option("--problem", opt->problem,
+  cmd->add_option("--problem", opt->settings.problem,
                   "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
                   "A + c <= --bound), fourier (P3: best K-harmonic force with max |F| <= "
                   "--bound) or reach (the fastest motion from rest: A, c, alpha with A + c <= "
@@ -403,32 +270,30 @@ Command AddOptimizeCommand(CLI::App& app) {
                       .description(""))
       ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}).description(""))
       ->type_name("phase|forcing|fourier|reach");  // the help and the completion show these
-  opt->A_option =
-      cmd->add_option("--A", opt->A,
-                      "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
-                      "of (m1+m2) omega^2 L");
-  opt->c_option =
-      cmd->add_option("--c", opt->c, "mean force c > 0 of F for --problem phase (same unit)");
-  AddParamsOptions(*cmd, opt->params);
+  cmd->add_option("--A", opt->settings.A,
+                  "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
+                  "of (m1+m2) omega^2 L");
+  cmd->add_option("--c", opt->settings.c, "mean force c > 0 of F for --problem phase (same unit)");
+  AddParamsOptions(*cmd, opt->settings.params);
   AddFromRestOptions(*cmd, opt->from_rest, true);
   AddDriveBudgetOptions(*cmd, opt->from_rest);
-  cmd->add_option("--alpha", opt->alpha,
+  cmd->add_option("--alpha", opt->settings.alpha,
                   "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
   cmd->add_option("--T0-range", opt->T0_range,
                   "reach: the motor's frequency free, LO:HI: T0 = mu g/(omega^2 L) in [LO, HI] "
                   "(holding --T0), the force bound tied to T0, the speed in units of "
                   "sqrt(mu g L), v_mean/sqrt(T0), maximised (docs/reach.md, Frequency)")
       ->type_name("LO:HI");
-  cmd->add_option("--waveform", opt->waveform,
+  cmd->add_option("--waveform", opt->settings.waveform,
                   "reach: the drives searched: sine (A sin(phi + phi0) + c, the default), fourier "
                   "(--harmonics K, the default when --harmonics is given) or pulse (--pulse-levels "
                   "N constant levels between switching phases), all with max |F| <= --bound")
       ->check(CLI::IsMember({"sine", "fourier", "pulse"}).description(""))
       ->type_name("sine|fourier|pulse");
-  cmd->add_option("--pulse-levels", opt->pulse_levels,
+  cmd->add_option("--pulse-levels", opt->settings.pulse_levels,
                   "reach --waveform pulse: the number N of levels, 2 <= N <= 16")
       ->capture_default_str();
-  cmd->add_option("--band-levels", opt->band_levels,
+  cmd->add_option("--band-levels", opt->settings.band_levels,
                   "main job: the levels of the speed bands, fractions of the speed from rest in "
                   "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
                   "mean speed from rest falls below each (docs/optimize.md)")
@@ -444,7 +309,7 @@ Command AddOptimizeCommand(CLI::App& app) {
                      {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
                       "radius is at most 0.95",
                       "optimize --problem forcing --T0 1 --rho-max 0.95"}});
-  return {cmd, [opt] { return RunNamingFlags(kReachFlags, [&] { return Run(*opt); }); }, {}};
+  return {cmd, [opt] { return RunNamingFlags(kRenamedFields, [&] { return Run(*opt); }); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -3,117 +3,112 @@
 // fastest motion from rest (reach, section 13), or the main job without one.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "bindings.hpp"
 #include "capsubot/job/optimize_job.hpp"
+#include "capsubot/job/optimize_settings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/optimize_json.hpp"
+#include "optimize_keywords.hpp"
 
 namespace capsubot::python {
 namespace {
 
-// An argument the chosen run does not use would be silently ignored: refuse it.
-void RejectUnused(const std::string& problem, std::optional<double> A, std::optional<double> c,
-                  std::optional<double> alpha, std::optional<int> harmonics,
-                  std::optional<std::pair<double, double>> T0_range, const SearchRequest& search) {
-  const auto reject = [&problem](const char* name, const char* runs) {
-    throw std::invalid_argument(fmt::format(
-        "{} conflicts with {}: expected {} only with {}", name,
-        problem.empty() ? "the main job (problem None)" : "problem '" + problem + "'", name, runs));
-  };
-  if (problem != "phase" && A) reject("A", "problem 'phase'");
-  if (problem != "phase" && c) reject("c", "problem 'phase'");
-  if (problem != "reach" && alpha) reject("alpha", "problem 'reach'");
-  if (problem != "reach" && T0_range) reject("T0_range", "problem 'reach'");
-  if (problem != "fourier" && problem != "reach" && harmonics) {
-    reject("harmonics", "problem 'fourier' or 'reach'");
-  }
-  if (problem == "phase" && !std::isnan(search.gait.force_bound)) {
-    reject("bound", "the main job, 'forcing', 'fourier' or 'reach'");
-  }
-  if (problem == "phase" && search.starts) {
-    reject("starts", "the main job, 'forcing', 'fourier' or 'reach'");
-  }
-  if (problem == "phase" && (!A || !c)) {
-    throw std::invalid_argument(
-        "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)");
-  }
+// `value` into `field` of the settings, and `name` given, when the argument is not None.
+template <class T, class U>
+void Take(OptimizeSettings& s, const char* name, const std::optional<T>& value, U& field) {
+  if (!value) return;
+  field = *value;
+  s.given.insert(name);
+}
+
+// The reach search's settings: its starts and budgets, the drive's waveform and levels.
+struct ReachArgs {
+  std::optional<std::string> reach_starts;
+  std::optional<int> reach_evaluations, reach_local_evaluations;
+  std::optional<double> reach_seconds;
+  std::optional<int> drive_evaluations, drive_polishes, drive_local_evaluations,
+      drive_refine_evaluations, drive_screens;
+  std::optional<std::string> waveform;
+  std::optional<int> pulse_levels;
+};
+
+void TakeReach(OptimizeSettings& s, const ReachArgs& a) {
+  Take(s, "reach_starts", a.reach_starts, s.reach_starts);
+  Take(s, "reach_evaluations", a.reach_evaluations, s.reach.global_evaluations);
+  Take(s, "reach_local_evaluations", a.reach_local_evaluations, s.reach.local_evaluations);
+  Take(s, "reach_seconds", a.reach_seconds, s.reach.max_seconds);
+  Take(s, "drive_evaluations", a.drive_evaluations, s.reach.drive_evaluations);
+  Take(s, "drive_polishes", a.drive_polishes, s.reach.drive_polishes);
+  Take(s, "drive_local_evaluations", a.drive_local_evaluations, s.reach.drive_local_evaluations);
+  Take(s, "drive_refine_evaluations", a.drive_refine_evaluations, s.reach.drive_refine_evaluations);
+  Take(s, "drive_screens", a.drive_screens, s.reach.drive_screens);
+  Take(s, "waveform", a.waveform, s.waveform);
+  Take(s, "pulse_levels", a.pulse_levels, s.pulse_levels);
 }
 
 py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                   std::optional<double> c, double T0, double e, double margin, double margin_stroke,
                   double stick_margin, std::optional<double> bound, std::optional<double> rho_max,
                   bool stable, double max_time, std::optional<int> harmonics,
-                  const std::string& global_algorithm, const std::string& local_algorithm,
-                  int global_evaluations, int hops, std::optional<int> starts,
-                  std::optional<double> alpha, const std::string& from_rest_starts,
-                  const std::string& reach_starts, int reach_evaluations,
-                  int reach_local_evaluations, double reach_seconds, int drive_evaluations,
-                  int drive_polishes, int drive_local_evaluations, int drive_refine_evaluations,
-                  int drive_screens, std::optional<std::pair<double, double>> T0_range,
-                  int threads) {
-  const std::string name = problem.value_or("");
-  if (!name.empty() && name != "phase" && name != "forcing" && name != "fourier" &&
-      name != "reach") {
-    throw std::invalid_argument(fmt::format(
-        "problem = '{}' is invalid: expected 'phase', 'forcing', 'fourier', 'reach' or None "
-        "(the main job)",
-        name));
-  }
+                  std::optional<std::string> global_algorithm,
+                  std::optional<std::string> local_algorithm, std::optional<int> global_evaluations,
+                  std::optional<int> hops, std::optional<int> starts, std::optional<double> alpha,
+                  const std::string& from_rest_starts, std::optional<std::string> reach_starts,
+                  std::optional<int> reach_evaluations, std::optional<int> reach_local_evaluations,
+                  std::optional<double> reach_seconds, std::optional<int> drive_evaluations,
+                  std::optional<int> drive_polishes, std::optional<int> drive_local_evaluations,
+                  std::optional<int> drive_refine_evaluations, std::optional<int> drive_screens,
+                  std::optional<std::pair<double, double>> T0_range,
+                  std::optional<std::string> waveform, std::optional<int> pulse_levels,
+                  std::optional<std::vector<double>> band_levels, int threads) {
   if (stable && rho_max) {
     throw std::invalid_argument(fmt::format(
         "stable conflicts with rho_max = {}: stable=True means rho_max = 1; give one of them",
         *rho_max));
   }
-  if (bound && !(std::isfinite(*bound) && *bound > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("bound = {} is invalid: expected a finite bound > 0 (at most T0)", *bound));
+  OptimizeSettings s;
+  s.problem = problem.value_or("");
+  Take(s, "A", A, s.A);
+  Take(s, "c", c, s.c);
+  s.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  Take(s, "bound", bound, s.search.gait.force_bound);
+  if (stable || rho_max) s.search.gait.rho_max = stable ? 1.0 : *rho_max;
+  s.search.max_time = max_time;
+  Take(s, "harmonics", harmonics, s.search.harmonics);
+  Take(s, "global_algorithm", global_algorithm, s.search.global_algorithm);
+  Take(s, "local_algorithm", local_algorithm, s.search.local_algorithm);
+  Take(s, "global_evaluations", global_evaluations, s.search.global_evaluations);
+  Take(s, "hops", hops, s.search.hops);
+  Take(s, "starts", starts, s.search.starts);
+  Take(s, "alpha", alpha, s.alpha);
+  if (T0_range) {
+    std::tie(s.T0_min, s.T0_max) = *T0_range;
+    s.given.insert("T0_range");
   }
+  Take(s, "band_levels", band_levels, s.band_levels);
+  TakeReach(s, {reach_starts, reach_evaluations, reach_local_evaluations, reach_seconds,
+                drive_evaluations, drive_polishes, drive_local_evaluations,
+                drive_refine_evaluations, drive_screens, waveform, pulse_levels});
+  s.from_rest_starts = from_rest_starts;
+  s.threads = threads;
   OptimizeJobOptions job;
-  job.search.gait.force_bound = bound.value_or(kNaN);
-  if (stable || rho_max) job.search.gait.rho_max = stable ? 1.0 : *rho_max;
-  job.search.max_time = max_time;
-  job.search.global_algorithm = global_algorithm;
-  job.search.local_algorithm = local_algorithm;
-  job.search.starts = starts;
-  job.search.global_evaluations = global_evaluations;
-  job.search.hops = hops;
-  job.search.harmonics = harmonics.value_or(FourierOptions{}.harmonics);
-  RejectUnused(name, A, c, alpha, harmonics, T0_range, job.search);
-  job.params = Params{T0, e, margin, margin_stroke, stick_margin};
-  job.check = FromRestCheck(from_rest_starts, threads);
-  ReachEffort effort;
-  effort.global_evaluations = reach_evaluations;
-  effort.local_evaluations = reach_local_evaluations;
-  effort.max_seconds = reach_seconds;
-  effort.drive_evaluations = drive_evaluations;
-  effort.drive_polishes = drive_polishes;
-  effort.drive_local_evaluations = drive_local_evaluations;
-  effort.drive_refine_evaluations = drive_refine_evaluations;
-  effort.drive_screens = drive_screens;
-  if (name.empty() || name == "reach") {
-    const StartGrid grid = ParseStartGrid("reach_starts", reach_starts);
-    effort.n_x = grid.n_x;
-    effort.n_psi = grid.n_psi;
+  try {
+    job = OptimizeJobFrom(s, SettingNames{kOptimizeKeywords, SettingNames::Style::kKeywords});
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(WithFlagNames(error.what(), kOptimizeKeywords));
   }
-  if (name.empty()) job.mode = MainJob{effort};
-  if (name == "phase") job.mode = PhaseProblem{*A, *c};
-  if (name == "forcing") job.mode = ForcingProblem{};
-  if (name == "fourier") job.mode = FourierProblem{};
-  if (name == "reach") {
-    job.mode = ReachProblem{effort, alpha.value_or(kNaN),
-                            harmonics ? DriveFamily::Fourier(*harmonics) : DriveFamily{},
-                            T0_range ? T0_range->first : kNaN, T0_range ? T0_range->second : kNaN};
-  }
-  job.Validate();
   const nlohmann::json result = RunWithoutGil([&](SignalCheck& signals) {
     job.search.interrupt = signals.AsInterrupt();
     return json::OptimizeJobJson(RunOptimizeJob(job));
@@ -137,36 +132,54 @@ constexpr const char* kOptimizeDoc =
     "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n"
     "    alpha   reach: a fixed mass ratio 0 < alpha < 1 (None: alpha is optimised too)\n";
 
-constexpr const char* kOptimizeOptionsDoc =
-    "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
-    "            [force]; None: T0\n"
-    "    rho_max largest spectral radius of the impact map (capsubot documentation, model\n"
-    "            sections 8, 12); float('inf'): no stability requirement; None: 0.9\n"
-    "    stable  the same as rho_max = 1 (not with rho_max)\n"
-    "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
-    "    harmonics  number K of harmonics of the Fourier force, 1..16: fourier (None: 3), or\n"
-    "            reach (None: the sine; K >= 2: the fastest Fourier drive, climbing from the\n"
-    "            sine, with ladder and speed_ratio_to_sine in the result)\n"
-    "    global_algorithm  'multistart' or an NLopt global algorithm: GN_ISRES, GN_ORIG_DIRECT,\n"
-    "            GN_ORIG_DIRECT_L, GN_AGS (main job, forcing, fourier)\n"
-    "    local_algorithm  the local polish: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ\n"
-    "    global_evaluations  budget of an NLopt global algorithm, >= 10\n"
-    "    hops    P2: basin-hopping restarts after the starts, >= 0\n"
-    "    starts  local polishes of the multistart, >= 1; None: 10 (forcing), 20 (fourier)\n"
-    "    reach_starts  grid 'NXxNPSI' of starts from rest inside the reach search (main job,\n"
-    "            reach; the winner is re-checked on from_rest_starts)\n"
-    "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the reach\n"
-    "            search's global stage (DIRECT-L, >= 1) and local polish (Sbplx, >= 0)\n"
-    "    reach_seconds  wall-clock limit of the reach search [s] (the re-checks come on top);\n"
-    "            when it stops the search the result depends on the machine's speed\n"
-    "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2:\n"
-    "            the Halton points of each step K >= 2 (>= 1), its Nelder-Mead polishes (>= 1)\n"
-    "            and their evaluations (>= 0)\n"
-    "    drive_refine_evaluations, drive_screens  reach with harmonics >= 2 or a pulse: the\n"
-    "            controlled random search after the Halton points (>= 0) and the short\n"
-    "            Nelder-Mead screens before the polishes (>= 0)\n"
-    "    T0_range  reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] (holding T0),\n"
-    "            the bound tied to T0, v_mean/sqrt(T0) maximised; frequency in the result\n"
+// The arguments of the search, with their defaults (None: the default, which the argument is
+// not given; a problem that does not use an argument refuses it when given).
+std::string OptimizeOptionsDoc() {
+  const OptimizeSettings d;
+  return fmt::format(
+      "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
+      "            [force]; None: T0\n"
+      "    rho_max largest spectral radius of the impact map (capsubot documentation, model\n"
+      "            sections 8, 12); float('inf'): no stability requirement; None: {}\n"
+      "    stable  the same as rho_max = 1 (not with rho_max)\n"
+      "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
+      "    harmonics  number K of harmonics of the Fourier force, 1..16: fourier (None: {}), or\n"
+      "            reach (None: the sine; K >= 2: the fastest Fourier drive, climbing from the\n"
+      "            sine, with ladder and speed_ratio_to_sine in the result)\n"
+      "    global_algorithm  'multistart' or an NLopt global algorithm: GN_ISRES, GN_ORIG_DIRECT,\n"
+      "            GN_ORIG_DIRECT_L, GN_AGS (main job, forcing, fourier, reach); None: '{}'\n"
+      "    local_algorithm  the local polish: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ; None: '{}'\n"
+      "    global_evaluations  budget of an NLopt global algorithm, >= 10; None: {}\n"
+      "    hops    P2: basin-hopping restarts after the starts, >= 0; None: {}\n"
+      "    starts  local polishes of the multistart, >= 1; None: 10 (forcing), 20 (fourier)\n"
+      "    reach_starts  grid 'NXxNPSI' of starts from rest inside the reach search (main job,\n"
+      "            reach; the winner is re-checked on from_rest_starts); None: '{}'\n"
+      "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the reach\n"
+      "            search's global stage (DIRECT-L, >= 1) and local polish (Sbplx, >= 0);\n"
+      "            None: {}, {}\n"
+      "    reach_seconds  wall-clock limit of the reach search [s] (the re-checks come on top);\n"
+      "            when it stops the search the result depends on the machine's speed; None: {}\n"
+      "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2\n"
+      "            or a pulse: the Halton points of each step K >= 2 (>= 1), its Nelder-Mead\n"
+      "            polishes (>= 1) and their evaluations (>= 0); None: {}, {}, {}\n"
+      "    drive_refine_evaluations, drive_screens  reach with harmonics >= 2 or a pulse: the\n"
+      "            controlled random search after the Halton points (>= 0) and the short\n"
+      "            Nelder-Mead screens before the polishes (>= 0); None: {}, {}\n"
+      "    T0_range  reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] (holding T0),\n"
+      "            the bound tied to T0, v_mean/sqrt(T0) maximised; frequency in the result\n"
+      "    waveform  reach: the drives searched, 'sine', 'fourier' (the default with harmonics)\n"
+      "            or 'pulse' (pulse_levels constant levels, 2..16; None: {})\n"
+      "    band_levels  main job: the levels of the speed bands, fractions of the speed from\n"
+      "            rest in (0, 1); None: {}\n",
+      d.search.gait.rho_max, FourierOptions{}.harmonics, d.search.global_algorithm,
+      d.search.local_algorithm, d.search.global_evaluations, d.search.hops, d.reach_starts,
+      d.reach.global_evaluations, d.reach.local_evaluations, d.reach.max_seconds,
+      d.reach.drive_evaluations, d.reach.drive_polishes, d.reach.drive_local_evaluations,
+      d.reach.drive_refine_evaluations, d.reach.drive_screens, d.pulse_levels,
+      fmt::join(d.band_levels, ", "));
+}
+
+constexpr const char* kOptimizeReturnsDoc =
     "Returns a dict. For a problem: the keys of solve for the optimum (A, c, phi0, phi1, "
     "alpha, u, v_plus, I, v_mean, x_min, x_max, stroke, clearance, valid, violations; cos, sin "
     "and coefficients for fourier), problem, status ('ok', 'no_valid_orbit', "
@@ -190,9 +203,8 @@ constexpr const char* kOptimizeOptionsDoc =
 void BindOptimize(py::module_& m) {
   const std::string doc = std::string(kOptimizeDoc) + kModelArgsDoc + kMarginArgsDoc +
                           "            (margin_stroke and stick_margin default to 0.02 here)\n" +
-                          kFromRestArgsDoc + kOptimizeOptionsDoc + kUnits;
+                          kFromRestArgsDoc + OptimizeOptionsDoc() + kOptimizeReturnsDoc + kUnits;
   const ForcingDesignOptions p2;
-  const ReachOptions reach;
   const Params robust = OptimizeJobOptions::RobustParams();
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
@@ -201,20 +213,17 @@ void BindOptimize(py::module_& m) {
         py::arg("stick_margin") = robust.stick_margin, py::arg("bound") = py::none(),
         py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
         py::arg("max_time") = p2.max_time, py::arg("harmonics") = py::none(),
-        py::arg("global_algorithm") = p2.effort.global_algorithm,
-        py::arg("local_algorithm") = p2.local_algorithm,
-        py::arg("global_evaluations") = p2.effort.global_evaluations, py::arg("hops") = p2.hops,
+        py::arg("global_algorithm") = py::none(), py::arg("local_algorithm") = py::none(),
+        py::arg("global_evaluations") = py::none(), py::arg("hops") = py::none(),
         py::arg("starts") = py::none(), py::arg("alpha") = py::none(),
-        py::arg("from_rest_starts") = kDefaultFromRestStarts,
-        py::arg("reach_starts") = kDefaultReachStarts,
-        py::arg("reach_evaluations") = reach.global_evaluations,
-        py::arg("reach_local_evaluations") = reach.local_evaluations,
-        py::arg("reach_seconds") = reach.max_seconds,
-        py::arg("drive_evaluations") = ReachEffort{}.drive_evaluations,
-        py::arg("drive_polishes") = ReachEffort{}.drive_polishes,
-        py::arg("drive_local_evaluations") = ReachEffort{}.drive_local_evaluations,
-        py::arg("drive_refine_evaluations") = ReachEffort{}.drive_refine_evaluations,
-        py::arg("drive_screens") = ReachEffort{}.drive_screens, py::arg("T0_range") = py::none(),
+        py::arg("from_rest_starts") = OptimizeSettings{}.from_rest_starts,
+        py::arg("reach_starts") = py::none(), py::arg("reach_evaluations") = py::none(),
+        py::arg("reach_local_evaluations") = py::none(), py::arg("reach_seconds") = py::none(),
+        py::arg("drive_evaluations") = py::none(), py::arg("drive_polishes") = py::none(),
+        py::arg("drive_local_evaluations") = py::none(),
+        py::arg("drive_refine_evaluations") = py::none(), py::arg("drive_screens") = py::none(),
+        py::arg("T0_range") = py::none(), py::arg("waveform") = py::none(),
+        py::arg("pulse_levels") = py::none(), py::arg("band_levels") = py::none(),
         py::arg("threads") = AttractorOptions{}.threads);
 }
 

@@ -101,7 +101,7 @@ def test_optimize_messages():
         "problem = 'speed' is invalid: expected 'phase', 'forcing', 'fourier', 'reach' or None "
         "(the main job)")
     assert message(opt, problem="phase", A=0.2) == (
-        "problem 'phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)")
+        "problem='phase' needs the force shape: give A and c (F = A sin(phi + phi0) + c)")
     assert message(opt, problem="forcing", bound=math.nan) == (
         "bound = nan is invalid: expected a finite bound > 0 (at most T0)")
     assert message(opt, problem="forcing", bound=-1.0) == (
@@ -111,18 +111,18 @@ def test_optimize_messages():
     assert message(opt, problem="forcing", starts=0) == (
         "starts = 0 is invalid: expected 1 <= starts <= 1000")
     assert message(opt, problem="forcing", rho_max=0.0) == (
-        "rho_max = 0 is invalid: expected rho_max > 0 (infinity: no stability requirement)")
+        "rho_max = 0 is invalid: expected rho_max > 0 (inf: no stability requirement)")
     assert message(opt, problem="forcing", max_time=0.0) == (
-        "max_time = 0 is invalid: expected a time limit max_time > 0 [s] (infinity: none)")
+        "max_time = 0 is invalid: expected a time limit > 0 seconds (inf: none)")
     assert message(opt, problem="phase", A=0.2, c=0.03, stable=True, rho_max=0.5) == (
         "stable conflicts with rho_max = 0.5: stable=True means rho_max = 1; give one of them")
     assert message(opt, problem="forcing", A=0.2) == (
-        "A conflicts with problem 'forcing': expected A only with problem 'phase'")
+        "A conflicts with problem='forcing': expected A only with problem='phase'")
     assert message(opt, problem="phase", A=0.2, c=0.03, starts=3) == (
-        "starts conflicts with problem 'phase': expected starts only with the main job, "
-        "'forcing', 'fourier' or 'reach'")
+        "starts conflicts with problem='phase': expected starts only with the main job "
+        "(problem=None) or problem='forcing' or problem='fourier' or problem='reach'")
     assert message(opt, problem="forcing", alpha=0.3) == (
-        "alpha conflicts with problem 'forcing': expected alpha only with problem 'reach'")
+        "alpha conflicts with problem='forcing': expected alpha only with problem='reach'")
     assert message(opt, problem="phase", A=0.2, c=0.03, from_rest_starts="8by8") == (
         "from_rest_starts = 8by8 is invalid: expected NXxNPSI, two whole numbers from 1 to 100000 "
         "(e.g. 8x8)")

@@ -22,6 +22,8 @@ struct StartGrid {
 
   /// n_x * n_psi.
   std::int64_t Starts() const { return static_cast<std::int64_t>(n_x) * n_psi; }
+  /// The grid as it is written, "NXxNPSI" ("8x8"): what ParseStartGrid reads.
+  std::string Text() const { return std::to_string(n_x) + "x" + std::to_string(n_psi); }
   /// Throws std::invalid_argument naming the first bad size, its value and the rule (n_x,
   /// n_psi, and n_x * n_psi <= kMaxRestStarts).
   void Validate() const;

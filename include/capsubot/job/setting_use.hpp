@@ -1,0 +1,41 @@
+#pragma once
+// Which modes of a job use a setting. A mode is what a job's mode setting selects (`optimize`'s
+// problem, "" for the main job); a setting given to a mode that does not use it would be
+// silently ignored, so the job refuses it; a setting left to its default that a mode does not
+// use does not shape the mode's output (a front end leaves it out of the provenance).
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "capsubot/job/setting_names.hpp"
+
+namespace capsubot {
+
+struct SettingUse {
+  std::string setting;             ///< the field, "hops"
+  std::vector<std::string> modes;  ///< the modes that use it ("": the main job)
+  bool UsedBy(const std::string& mode) const;
+};
+
+/// The settings of `uses` that `mode` does not use, in the table's order.
+std::vector<std::string> UnusedSettings(const std::vector<SettingUse>& uses,
+                                        const std::string& mode);
+
+/// How a job's messages name its modes: `mode_setting` given a mode's name ("--problem forcing"),
+/// and `main_mode` (the mode "") with the mode setting absent: "the main job (no --problem)".
+struct ModeNames {
+  const char* mode_setting;  ///< the field that selects the mode, "problem"
+  const char* main_mode;     ///< what the mode "" is, "the main job"
+  std::string Of(const std::string& mode, const SettingNames& names) const;
+};
+
+/// Throws std::invalid_argument for the first setting of `uses` in `given` that `mode` does not
+/// use: "<setting> <verb> <mode>: expected <setting> only with <mode> or <mode>", in `names`
+/// ("--alpha conflicts with the main job (no --problem): expected --alpha only with --problem
+/// reach").
+void RejectUnusedSettings(const std::vector<SettingUse>& uses, const std::set<std::string>& given,
+                          const std::string& mode, const ModeNames& modes,
+                          const SettingNames& names, const char* verb = "conflicts with");
+
+}  // namespace capsubot

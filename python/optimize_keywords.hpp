@@ -1,0 +1,13 @@
+#pragma once
+// The keywords of the optimize job's settings: each keyword is its setting's field name
+// (OptimizeSettings), but for the fields of the lower stages' messages named otherwise.
+
+#include "capsubot/job/setting_names.hpp"
+
+namespace capsubot::python {
+
+/// The keyword of each field whose keyword is not the field's own name ("levels" of a pulse
+/// drive, set by pulse_levels).
+inline const FlagNames kOptimizeKeywords = {{"levels", "pulse_levels"}};
+
+}  // namespace capsubot::python

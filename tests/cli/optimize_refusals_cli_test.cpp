@@ -1,0 +1,232 @@
+// The two front ends refuse the same optimize settings with the same message, each in its own
+// names. The cases are generated from the library's table of which problem uses which setting
+// (OptimizeSettingUses): every setting given to every problem that does not use it, plus the
+// rules beyond the table (settings that do not go together, given values that are not
+// admissible). For each case the library's own refusal is computed here with the command line's
+// flags and with the Python module's keywords; the program must print the first on stderr
+// (exit status 2) and the module must raise ValueError with the second.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "apps/optimize_flags.hpp"
+#include "capsubot/job/optimize_settings.hpp"
+#include "python/optimize_keywords.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+// A setting given with a sample value: as typed on the command line, as a Python literal, and
+// as it lands in the settings.
+struct Given {
+  std::string field;
+  std::string flag_value;
+  std::string keyword_value;
+  std::function<void(OptimizeSettings&)> set;
+};
+
+// A sample value of every setting of the table (and of the settings of the rules beyond it).
+// A setting added to the table without a sample here fails the test (SampleOf).
+const std::map<std::string, Given>& Samples() {
+  static const std::map<std::string, Given> samples = [] {
+    std::map<std::string, Given> m;
+    const auto add = [&m](Given g) { m[g.field] = std::move(g); };
+    add({"A", "0.3", "0.3", [](OptimizeSettings& s) { s.A = 0.3; }});
+    add({"c", "0.1", "0.1", [](OptimizeSettings& s) { s.c = 0.1; }});
+    add({"harmonics", "2", "2", [](OptimizeSettings& s) { s.search.harmonics = 2; }});
+    add({"hops", "3", "3", [](OptimizeSettings& s) { s.search.hops = 3; }});
+    add({"starts", "5", "5", [](OptimizeSettings& s) { s.search.starts = 5; }});
+    add({"bound", "0.5", "0.5", [](OptimizeSettings& s) { s.search.gait.force_bound = 0.5; }});
+    add({"global_algorithm", "GN_ISRES", "'GN_ISRES'",
+         [](OptimizeSettings& s) { s.search.global_algorithm = "GN_ISRES"; }});
+    add({"local_algorithm", "LD_MMA", "'LD_MMA'",
+         [](OptimizeSettings& s) { s.search.local_algorithm = "LD_MMA"; }});
+    add({"global_evaluations", "500", "500",
+         [](OptimizeSettings& s) { s.search.global_evaluations = 500; }});
+    add({"alpha", "0.5", "0.5", [](OptimizeSettings& s) { s.alpha = 0.5; }});
+    add({"T0_range", "0.5:1", "(0.5, 1.0)", [](OptimizeSettings& s) {
+           s.T0_min = 0.5;
+           s.T0_max = 1.0;
+         }});
+    add({"waveform", "pulse", "'pulse'", [](OptimizeSettings& s) { s.waveform = "pulse"; }});
+    add({"pulse_levels", "4", "4", [](OptimizeSettings& s) { s.pulse_levels = 4; }});
+    add({"reach_starts", "2x2", "'2x2'", [](OptimizeSettings& s) { s.reach_starts = "2x2"; }});
+    add({"reach_evaluations", "10", "10",
+         [](OptimizeSettings& s) { s.reach.global_evaluations = 10; }});
+    add({"reach_local_evaluations", "5", "5",
+         [](OptimizeSettings& s) { s.reach.local_evaluations = 5; }});
+    add({"reach_seconds", "5", "5", [](OptimizeSettings& s) { s.reach.max_seconds = 5.0; }});
+    add({"drive_evaluations", "10", "10",
+         [](OptimizeSettings& s) { s.reach.drive_evaluations = 10; }});
+    add({"drive_refine_evaluations", "20", "20",
+         [](OptimizeSettings& s) { s.reach.drive_refine_evaluations = 20; }});
+    add({"drive_screens", "4", "4", [](OptimizeSettings& s) { s.reach.drive_screens = 4; }});
+    add({"drive_polishes", "3", "3", [](OptimizeSettings& s) { s.reach.drive_polishes = 3; }});
+    add({"drive_local_evaluations", "50", "50",
+         [](OptimizeSettings& s) { s.reach.drive_local_evaluations = 50; }});
+    add({"band_levels", "0.9", "[0.9]", [](OptimizeSettings& s) { s.band_levels = {0.9}; }});
+    return m;
+  }();
+  return samples;
+}
+
+Given SampleOf(const std::string& field) {
+  const auto it = Samples().find(field);
+  if (it == Samples().end()) throw std::logic_error("no sample value of the setting " + field);
+  return it->second;
+}
+
+// `field` given the number `value` (a bad value of a setting).
+Given With(const std::string& field, const std::string& value,
+           std::function<void(OptimizeSettings&)> set) {
+  return {field, value, value, std::move(set)};
+}
+
+// `field` given the text `value`.
+Given WithText(const std::string& field, const std::string& value,
+               std::function<void(OptimizeSettings&)> set) {
+  return {field, value, "'" + value + "'", std::move(set)};
+}
+
+struct Case {
+  std::string problem;  // "" the main job
+  std::vector<Given> given;
+};
+
+const std::vector<std::string> kProblems = {"", "phase", "forcing", "fourier", "reach"};
+
+// Every setting of the table given to every problem that does not use it (the problem phase
+// with its force shape, so that only the setting is wrong).
+std::vector<Case> TableCases() {
+  std::vector<Case> cases;
+  for (const SettingUse& use : OptimizeSettingUses()) {
+    for (const std::string& problem : kProblems) {
+      if (use.UsedBy(problem)) continue;
+      Case c{problem, {}};
+      if (problem == "phase") c.given = {SampleOf("A"), SampleOf("c")};
+      c.given.push_back(SampleOf(use.setting));
+      cases.push_back(c);
+    }
+  }
+  return cases;
+}
+
+// The rules beyond the table: settings that do not go together, values that are not admissible.
+std::vector<Case> RuleCases() {
+  std::vector<Case> cases;
+  for (const char* budget : {"drive_evaluations", "drive_polishes", "drive_local_evaluations",
+                             "drive_refine_evaluations", "drive_screens"}) {
+    cases.push_back({"reach", {SampleOf(budget)}});
+  }
+  cases.push_back({"forcing", {SampleOf("global_evaluations")}});
+  cases.push_back({"reach", {SampleOf("waveform"), SampleOf("harmonics")}});
+  cases.push_back({"reach", {SampleOf("pulse_levels")}});
+  cases.push_back({"reach",
+                   {WithText("waveform", "sine", [](OptimizeSettings& s) { s.waveform = "sine"; }),
+                    SampleOf("harmonics")}});
+  cases.push_back({"phase", {SampleOf("A")}});
+  cases.push_back(
+      {"phase", {With("A", "-1", [](OptimizeSettings& s) { s.A = -1.0; }), SampleOf("c")}});
+  cases.push_back({"forcing", {With("bound", "-1", [](OptimizeSettings& s) {
+                     s.search.gait.force_bound = -1.0;
+                   })}});
+  cases.push_back({"", {With("starts", "0", [](OptimizeSettings& s) { s.search.starts = 0; })}});
+  cases.push_back(
+      {"forcing", {With("hops", "-1", [](OptimizeSettings& s) { s.search.hops = -1; })}});
+  cases.push_back({"reach", {WithText("reach_starts", "0x3", [](OptimizeSettings& s) {
+                     s.reach_starts = "0x3";
+                   })}});
+  return cases;
+}
+
+// The library's refusal of `c` in `names`; empty when it accepts the case.
+std::string LibraryMessage(const Case& c, const SettingNames& names) {
+  OptimizeSettings s;
+  s.problem = c.problem;
+  for (const Given& g : c.given) {
+    g.set(s);
+    s.given.insert(g.field);
+  }
+  try {
+    OptimizeJobFrom(s, names);
+  } catch (const std::invalid_argument& e) {
+    return WithFlagNames(e.what(), names.flags);
+  }
+  return "";
+}
+
+std::string CommandLine(const Case& c) {
+  std::string args = c.problem.empty() ? "optimize" : "optimize --problem " + c.problem;
+  for (const Given& g : c.given) {
+    args += " " + SettingNames{app::kOptimizeFlags}.Name(g.field) + " " + g.flag_value;
+  }
+  return args;
+}
+
+std::string PythonCall(const Case& c) {
+  std::string call = c.problem.empty() ? "run(" : "run(problem='" + c.problem + "', ";
+  for (const Given& g : c.given) {
+    call += SettingNames{python::kOptimizeKeywords}.Name(g.field) + "=" + g.keyword_value + ", ";
+  }
+  return call + ")\n";
+}
+
+// The messages of the Python module for `cases`, in order ("" where it accepts one): one
+// interpreter runs them all.
+std::vector<std::string> PythonMessages(const std::vector<Case>& cases) {
+  const std::filesystem::path script = testing::TempPath("capsubot_refusals.py");
+  {
+    std::ofstream out(script);
+    out << "import json, capsubot\nmessages = []\n"
+        << "def run(**kw):\n"
+        << "    try:\n        capsubot.optimize(**kw)\n        messages.append('')\n"
+        << "    except ValueError as e:\n        messages.append(str(e))\n";
+    for (const Case& c : cases) out << PythonCall(c);
+    out << "print(json.dumps(messages))\n";
+  }
+  const auto r = testing::RunShell("PYTHONPATH=" + std::string(CAPSUBOT_PYTHONPATH) + " " +
+                                   CAPSUBOT_PYTHON + " " + script.string());
+  std::filesystem::remove(script);
+  EXPECT_EQ(r.status, 0) << r.out;
+  return nlohmann::json::parse(r.out).get<std::vector<std::string>>();
+}
+
+TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) {
+  std::vector<Case> cases = TableCases();
+  const std::size_t table_cases = cases.size();
+  for (const Case& c : RuleCases()) cases.push_back(c);
+  // Every setting of the table is refused by at least one problem (the main job uses none of
+  // A, c, alpha; phase none of the search's): the table yields cases for every setting.
+  ASSERT_GE(table_cases, OptimizeSettingUses().size());
+
+  const SettingNames flags{app::kOptimizeFlags};
+  const SettingNames keywords{python::kOptimizeKeywords, SettingNames::Style::kKeywords};
+  const std::vector<std::string> python = PythonMessages(cases);
+  ASSERT_EQ(python.size(), cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    const std::string args = CommandLine(c);
+    const std::string cli_message = LibraryMessage(c, flags);
+    const std::string python_message = LibraryMessage(c, keywords);
+    ASSERT_FALSE(cli_message.empty()) << "the library accepts " << args;
+    // The two names of the first setting differ (a flag and a keyword) but the rule is one.
+    EXPECT_NE(cli_message, python_message) << args;
+
+    const auto r = testing::RunCli(args + " 2>&1 >/dev/null");
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(r.out, "capsubot optimize: error: " + cli_message + "\n") << args;
+    EXPECT_EQ(python[k], python_message) << PythonCall(c);
+  }
+}
+
+}  // namespace
+}  // namespace capsubot
