@@ -323,26 +323,4 @@ CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads, const std::string& he
           "", kIntegerValidator));
 }
 
-bool OptionUse::UsedBy(const std::string& run) const {
-  return std::any_of(runs.begin(), runs.end(),
-                     [&run](const char* r) { return r != nullptr && run == r; });
-}
-
-std::vector<std::string> UnusedOptions(const std::vector<OptionUse>& uses, const std::string& run) {
-  std::vector<std::string> unused;
-  for (const OptionUse& use : uses) {
-    if (!use.UsedBy(run)) unused.emplace_back(use.option);
-  }
-  return unused;
-}
-
-const OptionUse* GivenUnusedOption(const CLI::App& command, const std::vector<OptionUse>& uses,
-                                   const std::string& run) {
-  for (const OptionUse& use : uses) {
-    const CLI::Option* option = command.get_option_no_throw(use.option);
-    if (option != nullptr && option->count() > 0 && !use.UsedBy(run)) return &use;
-  }
-  return nullptr;
-}
-
 }  // namespace capsubot::app

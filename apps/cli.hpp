@@ -117,21 +117,4 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what);
 /// Refuses a --checkpoint-seconds below 0 or NaN (std::invalid_argument naming the option).
 void RequireCheckpointSeconds(double seconds);
 
-/// Which runs of a command use an option (a run is what the command's mode option selects,
-/// e.g. `optimize --problem`); an option not listed determines the content of every run.
-struct OptionUse {
-  const char* option;               ///< long name, "--hops"
-  std::array<const char*, 4> runs;  ///< the runs that use it; unused entries are nullptr
-  bool UsedBy(const std::string& run) const;
-};
-
-/// The long names of the options of `uses` that `run` does not use: their defaults do not
-/// shape its output (left out of the provenance).
-std::vector<std::string> UnusedOptions(const std::vector<OptionUse>& uses, const std::string& run);
-
-/// The first option of `uses` given on `command` that `run` does not use (it would be
-/// silently ignored: the caller refuses it), nullptr if none.
-const OptionUse* GivenUnusedOption(const CLI::App& command, const std::vector<OptionUse>& uses,
-                                   const std::string& run);
-
 }  // namespace capsubot::app

@@ -21,11 +21,13 @@
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/design_job.hpp"
+#include "capsubot/job/design_settings.hpp"
 #include "capsubot/report/design_json.hpp"
 #include "capsubot/report/design_text.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "design_config.hpp"
+#include "design_flags.hpp"
 #include "from_rest_report.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
@@ -52,29 +54,11 @@ struct DesignCliOptions {
   int pulse_levels = 3;     // --pulse-levels (pulse)
 };
 
-// The runs of design: "" one design, "from-rest" with part (b), "grid" one design a point,
-// "drive" the fastest drive.
-const std::vector<OptionUse> kOptionUses = {
-    {"--from-rest-starts", {"from-rest", "drive"}},
-    {"--reach-starts", {"from-rest", "drive"}},
-    {"--reach-evaluations", {"from-rest", "drive"}},
-    {"--reach-local-evaluations", {"from-rest", "drive"}},
-    {"--reach-seconds", {"from-rest", "drive"}},
-    {"--threads", {"from-rest", "grid", "drive"}},
-    {"--json", {"", "from-rest", "drive"}},
-    {"--output", {"", "from-rest", "grid", "drive"}},
-    {"--force-max", {"drive"}},
-    {"--harmonics", {"drive"}},
-    {"--pulse-levels", {"drive"}},
-    {"--drive-evaluations", {"drive"}},
-    {"--drive-polishes", {"drive"}},
-    {"--drive-local-evaluations", {"drive"}},
-    {"--drive-refine-evaluations", {"drive"}},
-    {"--drive-screens", {"drive"}},
-    {"--shard", {"grid"}},
-    {"--resume", {"grid"}},
-    {"--band-levels", {"", "from-rest"}},
-};
+// The command line's outputs that only some runs write.
+const std::vector<SettingUse> kOutputUses = {{"json", {"", "from-rest", "drive"}},
+                                             {"output", {"", "from-rest", "grid", "drive"}},
+                                             {"shard", {"grid"}},
+                                             {"resume", {"grid"}}};
 
 std::string RunOf(const DesignCliOptions& opt) {
   if (!opt.drive.empty()) return "drive";
@@ -82,10 +66,26 @@ std::string RunOf(const DesignCliOptions& opt) {
   return opt.part_b ? "from-rest" : "";
 }
 
-std::string RunName(const std::string& run) {
-  if (run == "grid") return "--grid";
-  if (run == "drive") return "--drive";
-  return run.empty() ? "one design (no --from-rest, no --grid)" : "--from-rest";
+// The settings given on `cmd`, by field.
+std::set<std::string> GivenSettings(const CLI::App& cmd) {
+  std::set<std::string> given;
+  for (const auto& [field, flag] : kDesignFlags) {
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) given.insert(field);
+  }
+  return given;
+}
+
+// The options the run does not use: their defaults do not shape its output.
+std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
+  const SettingNames names{kDesignFlags};
+  std::vector<std::string> unused;
+  for (const auto* uses : {&DesignSettingUses(), &kOutputUses}) {
+    for (const std::string& field : UnusedSettings(*uses, RunOf(opt))) {
+      unused.push_back(names.Name(field));
+    }
+  }
+  return unused;
 }
 
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
@@ -101,14 +101,11 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
         "--from-rest is invalid with --grid: expected one of them (a grid writes the "
         "one-impact gait of each point to the CSV -o)");
   }
-  if (const OptionUse* use = GivenUnusedOption(cmd, kOptionUses, run)) {
-    std::string expected;
-    for (const char* r : use->runs) {
-      if (r != nullptr) expected += (expected.empty() ? "" : " or ") + RunName(r);
-    }
-    throw std::invalid_argument(fmt::format("{} is invalid with {}: expected {} only with {}",
-                                            use->option, RunName(run), use->option, expected));
-  }
+  const SettingNames names{kDesignFlags};
+  const auto run_name = [&names](const std::string& r) { return DesignRunName(r, names); };
+  const std::set<std::string> given = GivenSettings(cmd);
+  RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
+  RejectUnusedSettings(kOutputUses, given, run, run_name, names, "is invalid with");
 }
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
@@ -269,9 +266,8 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   const DesignJobResult r = RunDesignJob(options);
   if (opt.json) {
     nlohmann::json j = json::DesignJobJson(r);
-    j["provenance"] = WithSettings(JsonProvenance(cmd, UnusedOptions(kOptionUses, RunOf(opt))), cmd,
-                                   opt.config, settings)
-                          .Json();
+    j["provenance"] =
+        WithSettings(JsonProvenance(cmd, UnusedOptionsOf(opt)), cmd, opt.config, settings).Json();
     WriteResult(opt.output, j.dump() + "\n");
   } else {
     WriteResult(opt.output, text::DesignJobText(r));

@@ -129,7 +129,9 @@ std::unique_ptr<AtomicFile> OpenIfAsked(const std::string& path, const char* opt
 int Run(const OptimizeCliOptions& opt) {
   const OptimizeSettings settings = SettingsOf(opt);
   const SettingNames names{kOptimizeFlags};
-  RejectUnusedSettings(kOutputUses, settings.given, settings.problem, kOptimizeModes, names);
+  RejectUnusedSettings(
+      kOutputUses, settings.given, settings.problem,
+      [&names](const std::string& problem) { return OptimizeProblemName(problem, names); }, names);
   OptimizeJobOptions job = OptimizeJobFrom(settings, names);
   job.on_stage = [](const std::string& stage) { ShowStage(stage); };
   RequireDistinctOutputs(

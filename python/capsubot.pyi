@@ -253,12 +253,12 @@ def design(
     rho_max: float = 0.9,
     scan_points: int = 64,
     from_rest: bool = False,
-    from_rest_starts: str = "8x8",
-    reach_starts: str = "4x4",
-    reach_evaluations: int = 100,
-    reach_local_evaluations: int = 30,
-    reach_seconds: float = 20.0,
-    threads: int = 0,
+    from_rest_starts: str | None = None,
+    reach_starts: str | None = None,
+    reach_evaluations: int | None = None,
+    reach_local_evaluations: int | None = None,
+    reach_seconds: float | None = None,
+    threads: int | None = None,
 ) -> dict[str, Any]:
     """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait."""
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -13,8 +14,10 @@
 
 #include "bindings.hpp"
 #include "capsubot/job/design_job.hpp"
+#include "capsubot/job/design_settings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/design_json.hpp"
+#include "design_keywords.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -42,15 +45,50 @@ void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
   }
 }
 
+// The from-rest part's arguments; None: not given (the part's default).
+struct FromRestArgs {
+  std::optional<std::string> from_rest_starts, reach_starts;
+  std::optional<int> reach_evaluations, reach_local_evaluations;
+  std::optional<double> reach_seconds;
+  std::optional<int> threads;
+};
+
+// Part (b) as the arguments give it; a setting of it given without from_rest is refused, as
+// the command line refuses it (DesignSettingUses).
+DesignFromRestPart FromRestPart(const FromRestArgs& a, bool from_rest) {
+  DesignFromRestPart part;
+  std::set<std::string> given;
+  const auto take = [&given](const char* name, const auto& value, auto& field) {
+    if (!value) return;
+    field = *value;
+    given.insert(name);
+  };
+  std::string from_rest_starts = part.from_rest_starts.Text();
+  std::string reach_starts = part.reach_starts.Text();
+  take("from_rest_starts", a.from_rest_starts, from_rest_starts);
+  take("reach_starts", a.reach_starts, reach_starts);
+  take("reach_evaluations", a.reach_evaluations, part.reach_evaluations);
+  take("reach_local_evaluations", a.reach_local_evaluations, part.reach_local_evaluations);
+  take("reach_seconds", a.reach_seconds, part.reach_seconds);
+  take("threads", a.threads, part.threads);
+  RejectUnusedSettings(DesignSettingUses(), given, from_rest ? "from-rest" : "", DesignRunKeywords,
+                       kDesignKeywords, "is invalid with");
+  part.from_rest_starts = ParseStartGrid("from_rest_starts", from_rest_starts);
+  part.reach_starts = ParseStartGrid("reach_starts", reach_starts);
+  part.threads = CapThreads(part.threads);
+  return part;
+}
+
 py::dict DesignDict(double m1, double L, double mu, double g, double e,
                     std::optional<double> force_amplitude, double force_bias,
                     std::optional<std::vector<double>> force_cos,
                     std::optional<std::vector<double>> force_sin, std::optional<double> frequency,
                     std::optional<Range> frequency_range, std::optional<Range> m2_range,
                     double margin, double margin_stroke, double stick_margin, double rho_max,
-                    int scan_points, bool from_rest, const std::string& from_rest_starts,
-                    const std::string& reach_starts, int reach_evaluations,
-                    int reach_local_evaluations, double reach_seconds, int threads) {
+                    int scan_points, bool from_rest, std::optional<std::string> from_rest_starts,
+                    std::optional<std::string> reach_starts, std::optional<int> reach_evaluations,
+                    std::optional<int> reach_local_evaluations, std::optional<double> reach_seconds,
+                    std::optional<int> threads) {
   RequireOne(force_amplitude.has_value(), force_sin.has_value(), "force_amplitude", "force_sin");
   if (force_cos && force_amplitude) {
     throw std::invalid_argument(
@@ -85,14 +123,9 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
   in.stick_margin = stick_margin;
   in.rho_max = rho_max;
   in.scan_points = scan_points;
-  DesignFromRestPart part;
-  part.from_rest_starts = ParseStartGrid("from_rest_starts", from_rest_starts);
-  part.reach_starts = ParseStartGrid("reach_starts", reach_starts);
-  part.reach_evaluations = reach_evaluations;
-  part.reach_local_evaluations = reach_local_evaluations;
-  part.reach_seconds = reach_seconds;
-  part.threads = CapThreads(threads);
-  if (!from_rest) part.Validate();  // refused as with from_rest: a bad value is never ignored
+  DesignFromRestPart part = FromRestPart({from_rest_starts, reach_starts, reach_evaluations,
+                                          reach_local_evaluations, reach_seconds, threads},
+                                         from_rest);
   const DesignJobResult r = RunWithoutGil([&](SignalCheck& check) {
     // Design tells its robots on this thread, and the robustness's continuations and the
     // from-rest search ask their interrupt there: where Ctrl-C is seen.
@@ -133,6 +166,9 @@ constexpr const char* kDesignDoc =
     "    scan_points  log-spaced samples of each searched variable, >= 3\n"
     "    from_rest  also find the fastest motion reached from rest in each direction\n"
     "            (key from_rest_best; simulated, a few seconds)\n"
+    "    from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations,\n"
+    "    reach_seconds, threads  with from_rest only (None: the default below; given without\n"
+    "            from_rest they are refused, as the command line refuses them):\n"
     "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
     "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
     "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
@@ -164,12 +200,10 @@ void BindDesign(py::module_& m) {
         py::arg("m2_range") = py::none(), py::arg("margin") = in.margin,
         py::arg("margin_stroke") = in.margin_stroke, py::arg("stick_margin") = in.stick_margin,
         py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points,
-        py::arg("from_rest").noconvert() = false,
-        py::arg("from_rest_starts") = kDefaultFromRestStarts,
-        py::arg("reach_starts") = kDefaultReachStarts,
-        py::arg("reach_evaluations") = rest.reach_evaluations,
-        py::arg("reach_local_evaluations") = rest.reach_local_evaluations,
-        py::arg("reach_seconds") = rest.reach_seconds, py::arg("threads") = rest.threads);
+        py::arg("from_rest").noconvert() = false, py::arg("from_rest_starts") = py::none(),
+        py::arg("reach_starts") = py::none(), py::arg("reach_evaluations") = py::none(),
+        py::arg("reach_local_evaluations") = py::none(), py::arg("reach_seconds") = py::none(),
+        py::arg("threads") = py::none());
 }
 
 }  // namespace capsubot::python

@@ -46,6 +46,11 @@ std::vector<std::string> UnusedOptimizeSettings(const OptimizeSettings& settings
   return unused;
 }
 
+std::string OptimizeProblemName(const std::string& problem, const SettingNames& names) {
+  if (problem.empty()) return fmt::format("the main job ({})", names.Absent("problem"));
+  return names.Given("problem", problem);
+}
+
 namespace {
 
 // The budgets of a drive search want a drive: a Fourier drive of K >= 2 or a pulse drive.
@@ -60,14 +65,16 @@ void RejectDriveBudgetsWithoutDrive(const OptimizeSettings& s, const SettingName
     throw std::invalid_argument(fmt::format(
         "{} conflicts with {} without {} K >= 2 or {}: expected {} only with a Fourier drive of "
         "K >= 2 harmonics or a pulse drive",
-        name, kOptimizeModes.Of(s.problem, names), names.Name("harmonics"),
+        name, OptimizeProblemName(s.problem, names), names.Name("harmonics"),
         names.Given("waveform", "pulse"), name));
   }
 }
 
 // The settings given together that contradict each other or that the problem ignores.
 void RejectConflicts(const OptimizeSettings& s, const SettingNames& names) {
-  RejectUnusedSettings(OptimizeSettingUses(), s.given, s.problem, kOptimizeModes, names);
+  RejectUnusedSettings(
+      OptimizeSettingUses(), s.given, s.problem,
+      [&names](const std::string& problem) { return OptimizeProblemName(problem, names); }, names);
   RejectDriveBudgetsWithoutDrive(s, names);
   if (s.Given("global_evaluations") && s.search.global_algorithm == kMultistart) {
     throw std::invalid_argument(fmt::format(
@@ -120,7 +127,7 @@ void RequireAdmissibleValues(const OptimizeSettings& s, const SettingNames& name
   if (s.problem == "phase" && (std::isnan(s.A) || std::isnan(s.c))) {
     throw std::invalid_argument(
         fmt::format("{} needs the force shape: give {} and {} (F = A sin(phi + phi0) + c)",
-                    kOptimizeModes.Of("phase", names), names.Name("A"), names.Name("c")));
+                    OptimizeProblemName("phase", names), names.Name("A"), names.Name("c")));
   }
 }
 

@@ -20,23 +20,18 @@ std::vector<std::string> UnusedSettings(const std::vector<SettingUse>& uses,
   return unused;
 }
 
-std::string ModeNames::Of(const std::string& mode, const SettingNames& names) const {
-  if (mode.empty()) return fmt::format("{} ({})", main_mode, names.Absent(mode_setting));
-  return names.Given(mode_setting, mode);
-}
-
 void RejectUnusedSettings(const std::vector<SettingUse>& uses, const std::set<std::string>& given,
-                          const std::string& mode, const ModeNames& modes,
+                          const std::string& mode, const ModeName& mode_name,
                           const SettingNames& names, const char* verb) {
   for (const SettingUse& use : uses) {
     if (given.count(use.setting) == 0 || use.UsedBy(mode)) continue;
     std::string expected;
     for (const std::string& m : use.modes) {
-      expected += (expected.empty() ? "" : " or ") + modes.Of(m, names);
+      expected += (expected.empty() ? "" : " or ") + mode_name(m);
     }
     const std::string name = names.Name(use.setting);
     throw std::invalid_argument(fmt::format("{} {} {}: expected {} only with {}", name, verb,
-                                            modes.Of(mode, names), name, expected));
+                                            mode_name(mode), name, expected));
   }
 }
 

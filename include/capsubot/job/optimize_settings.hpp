@@ -44,8 +44,9 @@ struct OptimizeSettings {
 /// The problems that use each setting ("": the main job); a setting not listed shapes every one.
 const std::vector<SettingUse>& OptimizeSettingUses();
 
-/// How the optimize job names its modes: the setting `problem`, the mode "" the main job.
-inline constexpr ModeNames kOptimizeModes{"problem", "the main job"};
+/// The problem `problem` in `names`: "--problem forcing", or the main job ("the main job (no
+/// --problem)") for "".
+std::string OptimizeProblemName(const std::string& problem, const SettingNames& names);
 
 /// The settings that do not shape the output of the problem `settings` asks for: those its
 /// problem does not use, and global_evaluations under the multistart global stage.

@@ -4,6 +4,7 @@
 // silently ignored, so the job refuses it; a setting left to its default that a mode does not
 // use does not shape the mode's output (a front end leaves it out of the provenance).
 
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -22,20 +23,15 @@ struct SettingUse {
 std::vector<std::string> UnusedSettings(const std::vector<SettingUse>& uses,
                                         const std::string& mode);
 
-/// How a job's messages name its modes: `mode_setting` given a mode's name ("--problem forcing"),
-/// and `main_mode` (the mode "") with the mode setting absent: "the main job (no --problem)".
-struct ModeNames {
-  const char* mode_setting;  ///< the field that selects the mode, "problem"
-  const char* main_mode;     ///< what the mode "" is, "the main job"
-  std::string Of(const std::string& mode, const SettingNames& names) const;
-};
+/// A mode as a job's messages name it, in a front end's names ("--problem forcing").
+using ModeName = std::function<std::string(const std::string& mode)>;
 
 /// Throws std::invalid_argument for the first setting of `uses` in `given` that `mode` does not
 /// use: "<setting> <verb> <mode>: expected <setting> only with <mode> or <mode>", in `names`
 /// ("--alpha conflicts with the main job (no --problem): expected --alpha only with --problem
 /// reach").
 void RejectUnusedSettings(const std::vector<SettingUse>& uses, const std::set<std::string>& given,
-                          const std::string& mode, const ModeNames& modes,
+                          const std::string& mode, const ModeName& mode_name,
                           const SettingNames& names, const char* verb = "conflicts with");
 
 }  // namespace capsubot

@@ -1,11 +1,12 @@
-// The two front ends refuse the same optimize settings with the same message, each in its own
-// names. The cases are generated from the library's table of which problem uses which setting
-// (OptimizeSettingUses): every setting given to every problem that does not use it, plus the
-// rules beyond the table (settings that do not go together, given values that are not
-// admissible). For each case the library's own refusal is computed here with the command line's
-// flags and with the Python module's keywords; the program must print the first on stderr
-// (exit status 2) and the module must raise ValueError with the second.
+// The two front ends refuse the same settings with the same message, each in its own names.
+// The cases are generated from the library's tables of which mode of a job uses which setting
+// (OptimizeSettingUses, DesignSettingUses): every setting given to every mode that does not use
+// it, plus for optimize the rules beyond the table (settings that do not go together, given
+// values that are not admissible). For each case the library's own refusal is computed here
+// with the command line's flags and with the Python module's keywords; the program must print
+// the first on stderr (exit status 2) and the module must raise ValueError with the second.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,12 +14,16 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "apps/design_flags.hpp"
 #include "apps/optimize_flags.hpp"
+#include "capsubot/job/design_settings.hpp"
 #include "capsubot/job/optimize_settings.hpp"
+#include "python/design_keywords.hpp"
 #include "python/optimize_keywords.hpp"
 #include "test_utils.hpp"
 
@@ -180,17 +185,19 @@ std::string PythonCall(const Case& c) {
   return call + ")\n";
 }
 
-// The messages of the Python module for `cases`, in order ("" where it accepts one): one
-// interpreter runs them all.
-std::vector<std::string> PythonMessages(const std::vector<Case>& cases) {
+// The messages of the Python module for the calls `calls` (each `run(...)` line), in order (""
+// where it accepts one, "TypeError" where it has no such argument): one interpreter runs them.
+std::vector<std::string> PythonMessages(const std::vector<std::string>& calls,
+                                        const std::string& function) {
   const std::filesystem::path script = testing::TempPath("capsubot_refusals.py");
   {
     std::ofstream out(script);
     out << "import json, capsubot\nmessages = []\n"
         << "def run(**kw):\n"
-        << "    try:\n        capsubot.optimize(**kw)\n        messages.append('')\n"
-        << "    except ValueError as e:\n        messages.append(str(e))\n";
-    for (const Case& c : cases) out << PythonCall(c);
+        << "    try:\n        capsubot." << function << "(**kw)\n        messages.append('')\n"
+        << "    except ValueError as e:\n        messages.append(str(e))\n"
+        << "    except TypeError:\n        messages.append('TypeError')\n";
+    for (const std::string& call : calls) out << call;
     out << "print(json.dumps(messages))\n";
   }
   const auto r = testing::RunShell("PYTHONPATH=" + std::string(CAPSUBOT_PYTHONPATH) + " " +
@@ -210,7 +217,9 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
 
   const SettingNames flags{app::kOptimizeFlags};
   const SettingNames keywords{python::kOptimizeKeywords, SettingNames::Style::kKeywords};
-  const std::vector<std::string> python = PythonMessages(cases);
+  std::vector<std::string> calls;
+  for (const Case& c : cases) calls.push_back(PythonCall(c));
+  const std::vector<std::string> python = PythonMessages(calls, "optimize");
   ASSERT_EQ(python.size(), cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
@@ -225,6 +234,88 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(r.out, "capsubot optimize: error: " + cli_message + "\n") << args;
     EXPECT_EQ(python[k], python_message) << PythonCall(c);
+  }
+}
+
+// The design job: the runs both front ends have (one design, and with the fastest motion from
+// rest), every setting given to the one that does not use it. The robot of examples/robot.toml.
+const char* kDesignRobot =
+    "m1=0.2, L=0.02, mu=0.3, e=0.7, force_amplitude=0.5, force_bias=0.1, "
+    "frequency=20, ";
+
+// The settings of the design job's table with a sample value: as typed, as a Python literal.
+const std::map<std::string, std::pair<std::string, std::string>> kDesignSamples = {
+    {"from_rest_starts", {"4x4", "'4x4'"}},
+    {"reach_starts", {"2x2", "'2x2'"}},
+    {"reach_evaluations", {"10", "10"}},
+    {"reach_local_evaluations", {"5", "5"}},
+    {"reach_seconds", {"5", "5"}},
+    {"threads", {"1", "1"}},
+    {"force_max", {"1", "1.0"}},
+    {"harmonics", {"2", "2"}},
+    {"pulse_levels", {"3", "3"}},
+    {"drive_evaluations", {"10", "10"}},
+    {"drive_polishes", {"3", "3"}},
+    {"drive_local_evaluations", {"50", "50"}},
+    {"drive_refine_evaluations", {"20", "20"}},
+    {"drive_screens", {"4", "4"}},
+    {"band_levels", {"0.9", "[0.9]"}}};
+
+// The settings of the command line's drive design, which the Python module's design() does not
+// have: it refuses them as unknown arguments (TypeError).
+const std::set<std::string> kCommandLineOnly = {"force_max",
+                                                "harmonics",
+                                                "pulse_levels",
+                                                "drive_evaluations",
+                                                "drive_polishes",
+                                                "drive_local_evaluations",
+                                                "drive_refine_evaluations",
+                                                "drive_screens"};
+
+TEST(DesignRefusals, BothFrontEndsRefuseASettingTheRunDoesNotUseInTheirOwnNames) {
+  struct DesignCase {
+    std::string run, field;
+  };
+  std::vector<DesignCase> cases;
+  std::vector<std::string> calls;
+  for (const SettingUse& use : DesignSettingUses()) {
+    for (const std::string run : {"", "from-rest"}) {
+      if (use.UsedBy(run)) continue;
+      cases.push_back({run, use.setting});
+      calls.push_back(fmt::format("run({}from_rest={}, {}={})\n", kDesignRobot,
+                                  run.empty() ? "False" : "True", use.setting,
+                                  kDesignSamples.at(use.setting).second));
+    }
+  }
+  ASSERT_GE(cases.size(), DesignSettingUses().size());  // each setting is refused somewhere
+  const std::vector<std::string> python = PythonMessages(calls, "design");
+  ASSERT_EQ(python.size(), cases.size());
+  const SettingNames flags{app::kDesignFlags};
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const DesignCase& c = cases[k];
+    const std::string args = fmt::format("design --config {}/examples/robot.toml{} {} {}",
+                                         CAPSUBOT_SOURCE_DIR, c.run.empty() ? "" : " --from-rest",
+                                         flags.Name(c.field), kDesignSamples.at(c.field).first);
+    const auto refusal = [&c](const SettingNames& names, const ModeName& run_name) {
+      try {
+        RejectUnusedSettings(DesignSettingUses(), {c.field}, c.run, run_name, names,
+                             "is invalid with");
+      } catch (const std::invalid_argument& e) {
+        return std::string(e.what());
+      }
+      return std::string();
+    };
+    const std::string cli_message =
+        refusal(flags, [&flags](const std::string& run) { return DesignRunName(run, flags); });
+    ASSERT_FALSE(cli_message.empty()) << args;
+    const auto r = testing::RunCli(args + " 2>&1 >/dev/null");
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(r.out, "capsubot design: error: " + cli_message + "\n") << args;
+    if (kCommandLineOnly.count(c.field) > 0) {
+      EXPECT_EQ(python[k], "TypeError") << calls[k];
+    } else {
+      EXPECT_EQ(python[k], refusal(python::kDesignKeywords, python::DesignRunKeywords)) << calls[k];
+    }
   }
 }
 
