@@ -44,9 +44,9 @@ std::string ReachText(const ReachResult& r) {
     spread += fmt::format("{}{} starts of the re-runs hit the work bound (null above)",
                           spread.empty() ? "" : "; ", r.spread.event_limit_starts);
   }
-  t += fmt::format("    settings         {} (largest relative change {:.2g})\n",
+  t += fmt::format("    settings         {} (largest relative change {})\n",
                    spread.empty() ? std::string("no re-run") : spread,
-                   r.spread.max_relative_deviation);
+                   Num(r.spread.max_relative_deviation, 2));
   t += fmt::format(
       "    solver           {} ({} from-rest evaluations, {:.1f} s search, status "
       "{})\n",
