@@ -17,7 +17,7 @@ void WriteFromRestCsv(const MainJobResult& result, std::ostream& out) {
   const auto rows = [&](const char* gait, const Attractors& a) {
     for (const Attractor& at : a.attractors) {
       const Motion& m = at.motion;
-      out << gait << ",attractor," << FormatNumber(m.mean_velocity) << ','
+      out << gait << ",attractor," << FormatNumber(at.mean_velocity) << ','
           << FormatNumber(at.fraction) << ',' << m.period << ',' << m.impacts_right << ','
           << m.impacts_left << ',' << (at.one_impact_orbit ? 1 : 0) << '\n';
     }
