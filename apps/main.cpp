@@ -179,11 +179,7 @@ int main(int argc, char** argv) {
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
     app.parse(args);
-  } catch (const CLI::CallForHelp& e) {
-    return CheckStdout("capsubot", app.exit(e));
-  } catch (const CLI::CallForAllHelp& e) {
-    return CheckStdout("capsubot", app.exit(e));
-  } catch (const CLI::CallForVersion& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version: printed by exit()
     return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::ParseError& e) {
     return RefuseCommandLine(app, e);

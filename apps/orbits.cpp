@@ -8,10 +8,10 @@
 
 #include "capsubot/job/orbits_job.hpp"
 #include "capsubot/report/orbits_text.hpp"
+#include "capsubot/report/solution_json.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 #include "result_output.hpp"
 
 namespace capsubot::app {
