@@ -1,8 +1,7 @@
 #pragma once
-// Options and output shared by the commands on long-run motions (attractors, basins,
-// periodic, bifurcation): the robot, the simulation lengths, the start grid, JSON of motions.
+// Options shared by the commands on long-run motions (attractors, basins, periodic,
+// bifurcation, continue): the robot, the simulation lengths, the start grid, the start state.
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 
@@ -10,17 +9,9 @@
 #include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/numerics/not_computed.hpp"
-#include "capsubot/report/attractors_json.hpp"
-#include "capsubot/report/attractors_text.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
-
-// The JSON and words of motions are the report stage's (src/report/), the same for the Python
-// module.
-using json::AttractorsJson;
-using json::MotionJson;
-using text::AttractorWords;
 
 /// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
 struct RobotOptions {

@@ -14,6 +14,7 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 #include "start_shard.hpp"
 
 namespace capsubot::app {
@@ -41,13 +42,8 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   o.backend = &ranks.backend();
   o.progress = CountProgress("starts");
   const AttractorsJobResult r = RunAttractorsJob(o);
-  if (opt.json) {
-    nlohmann::json j = json::AttractorsJobJson(r);
-    AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
-  } else {
-    fmt::print("{}", text::AttractorsJobText(r));
-  }
+  fmt::print("{}", opt.json ? JsonOutput(json::AttractorsJobJson(r), JsonProvenance(cmd))
+                            : text::AttractorsJobText(r));
   return 0;
 }
 

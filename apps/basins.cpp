@@ -17,6 +17,7 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 #include "start_shard.hpp"
 
 namespace capsubot::app {
@@ -65,13 +66,8 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   if (!opt.plot.empty()) {
     DrawPng([&r](const std::string& png) { return text::BasinsPlotScript(r, png); }, opt.plot);
   }
-  if (opt.json) {
-    nlohmann::json j = json::BasinsJobJson(r);
-    AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
-  } else {
-    fmt::print("{}", text::BasinsJobText(r));
-  }
+  fmt::print("{}", opt.json ? JsonOutput(json::BasinsJobJson(r), JsonProvenance(cmd))
+                            : text::BasinsJobText(r));
   return 0;
 }
 

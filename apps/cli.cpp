@@ -28,10 +28,7 @@ namespace {
 std::vector<double> ParseCoefficients(const char* option, const std::string& text,
                                       bool phases = false) {
   std::vector<double> values;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
-    const std::string element = text.substr(start, end - start);
+  for (const std::string& element : SplitText(text, ',')) {
     try {
       values.push_back(phases ? ParsePhase(element, option) : ParseNumber(element, option));
     } catch (const std::invalid_argument&) {
@@ -40,9 +37,8 @@ std::vector<double> ParseCoefficients(const char* option, const std::string& tex
           QuoteForMessage(text), phases ? "phases (numbers or multiples of pi)" : "numbers",
           values.size() + 1, element));
     }
-    if (end == text.size()) return values;
-    start = end + 1;
   }
+  return values;
 }
 
 constexpr const char* kIntegerValidator = "integer";
@@ -238,6 +234,17 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
           "whole {} is not checkpointed)",
           flag, what, what));
     }
+  }
+}
+
+std::vector<std::string> SplitText(const std::string& text, char separator) {
+  std::vector<std::string> pieces;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = std::min(text.find(separator, start), text.size());
+    pieces.push_back(text.substr(start, end - start));
+    if (end == text.size()) return pieces;
+    start = end + 1;
   }
 }
 

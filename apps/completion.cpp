@@ -39,12 +39,8 @@ std::vector<std::string> ValueWords(const CLI::Option& option) {
   const std::string list = type.substr(0, type.find(':'));  // ":..." a check's description
   std::vector<std::string> words;
   if (list.find('|') == std::string::npos) return words;
-  std::size_t at = 0;
-  while (at <= list.size()) {
-    const std::size_t end = std::min(list.find('|', at), list.size());
-    const std::string word = list.substr(at, end - at);
+  for (const std::string& word : SplitText(list, '|')) {
     if (!word.empty() && !IsTypeName(word)) words.push_back(word);
-    at = end + 1;
   }
   return words;
 }

@@ -17,6 +17,7 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "result_output.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -55,22 +56,16 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   if (!opt.output.empty()) CheckWritable(opt.output, "-o");
   const ContinueJobResult result = RunContinueJob(job);
   const text::CsvTable table = text::ContinueJobCsv(result);
+  std::string written;  // the note of the text on the CSV written
   if (!opt.output.empty() && table.rows > 0) {
     AtomicFile file(opt.output, "-o");
     file.stream() << OutputProvenance(cmd).CommentLine() << table.text;
     file.Commit();
+    written = fmt::format("  written        {} {}points to {}\n", table.rows,
+                          job.follow ? "curve " : "", opt.output);
   }
-  if (opt.json) {
-    nlohmann::json j = json::ContinueJobJson(result);
-    AddProvenanceJson(j, cmd);
-    fmt::print("{}\n", j.dump());
-    return 0;
-  }
-  fmt::print("{}", text::ContinueJobText(result));
-  if (!opt.output.empty() && table.rows > 0) {
-    fmt::print("  written        {} {}points to {}\n", table.rows, job.follow ? "curve " : "",
-               opt.output);
-  }
+  fmt::print("{}", opt.json ? JsonOutput(json::ContinueJobJson(result), JsonProvenance(cmd))
+                            : text::ContinueJobText(result) + written);
   return 0;
 }
 

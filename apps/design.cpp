@@ -264,14 +264,13 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   }
   CheckResultOutput(opt.output);
   const DesignJobResult r = RunDesignJob(options);
-  if (opt.json) {
-    nlohmann::json j = json::DesignJobJson(r);
-    j["provenance"] =
-        WithSettings(JsonProvenance(cmd, UnusedOptionsOf(opt)), cmd, opt.config, settings).Json();
-    WriteResult(opt.output, j.dump() + "\n");
-  } else {
+  if (!opt.json) {
     WriteResult(opt.output, text::DesignJobText(r));
+    return 0;
   }
+  const Provenance provenance = WithSettings(
+      JsonProvenance(cmd, UnusedOptionsOf(opt)), cmd, opt.config, settings);
+  WriteResult(opt.output, JsonOutput(json::DesignJobJson(r), provenance));
   return 0;
 }
 

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "capsubot/io/io.hpp"
+#include "cli.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -220,17 +221,13 @@ Value FromText(const Setting& s, const std::string& who, const std::string& text
       v.number = static_cast<double>(ParseInteger(text, who, std::numeric_limits<int>::min(),
                                                   std::numeric_limits<int>::max()));
       return v;
-    case Kind::kList: {
-      std::size_t start = 0;
-      while (true) {
-        const std::size_t end = std::min(text.find(',', start), text.size());
+    case Kind::kList:
+      for (const std::string& element : SplitText(text, ',')) {
         double x = 0.0;
-        if (!ToNumber(text.substr(start, end - start), x)) Bad(who, text, Rule(s.kind), where);
+        if (!ToNumber(element, x)) Bad(who, text, Rule(s.kind), where);
         v.list.push_back(x);
-        if (end == text.size()) return v;
-        start = end + 1;
       }
-    }
+      return v;
     case Kind::kRange: {
       const std::size_t colon = text.find(':');
       double lo = 0.0, hi = 0.0;

@@ -8,7 +8,6 @@
 
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
-#include "report.hpp"
 
 namespace capsubot::app {
 

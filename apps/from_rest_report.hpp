@@ -1,10 +1,7 @@
 #pragma once
-// What the robot reaches from rest, as the commands report it (docs/model.md sections 12 and 13):
-// the `from_rest` object of a gait, the `reach` object of the fastest motion from rest, their
-// text, and the options that size them. Shared by optimize, solve and the commands that report
-// a gait.
+// What the robot reaches from rest (docs/model.md sections 12 and 13): the options that size the
+// check of a gait from rest and the reach search. Shared by optimize, solve, design and sweep.
 
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "capsubot/attract/gait_from_rest.hpp"
@@ -12,19 +9,9 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/reach/reach_effort.hpp"
-#include "capsubot/report/attractors_json.hpp"
-#include "capsubot/report/from_rest_text.hpp"
-#include "capsubot/report/optimize_json.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
-
-// The `from_rest` and `reach` objects are the shared layer's (src/report/), the same for the
-// Python module.
-using json::FromRestJson;
-using json::ReachJson;
-using text::FromRestText;
-using text::ReachText;
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {

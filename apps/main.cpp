@@ -19,6 +19,7 @@
 
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/version.hpp"
+#include "cli.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "ranks.hpp"
@@ -54,12 +55,9 @@ std::vector<std::string> UnexpectedArguments(const CLI::ParseError& e) {
   const std::string text = e.what();
   const std::size_t colon = text.find(": ");
   std::vector<std::string> words;
-  std::size_t at = colon == std::string::npos ? text.size() : colon + 2;
-  while (at < text.size()) {
-    const std::size_t space = text.find(' ', at);
-    const std::size_t end = space == std::string::npos ? text.size() : space;
-    if (end > at) words.push_back(text.substr(at, end - at));
-    at = end + 1;
+  if (colon == std::string::npos) return words;
+  for (const std::string& word : capsubot::app::SplitText(text.substr(colon + 2), ' ')) {
+    if (!word.empty()) words.push_back(word);
   }
   return words;
 }
@@ -179,11 +177,7 @@ int main(int argc, char** argv) {
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
     app.parse(args);
-  } catch (const CLI::CallForHelp& e) {
-    return CheckStdout("capsubot", app.exit(e));
-  } catch (const CLI::CallForAllHelp& e) {
-    return CheckStdout("capsubot", app.exit(e));
-  } catch (const CLI::CallForVersion& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version: printed by exit()
     return CheckStdout("capsubot", app.exit(e));
   } catch (const CLI::ParseError& e) {
     return RefuseCommandLine(app, e);

@@ -8,10 +8,10 @@
 
 #include "capsubot/job/orbits_job.hpp"
 #include "capsubot/report/orbits_text.hpp"
+#include "capsubot/report/solution_json.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
-#include "report.hpp"
 #include "result_output.hpp"
 
 namespace capsubot::app {
@@ -33,9 +33,8 @@ int Run(OrbitsOptions& opt, const CLI::App& cmd) {
     WriteResult(opt.output, text::OrbitsJobText(result, "--max-evaluations"));
     return 0;
   }
-  nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
-  AddProvenanceJson(j, cmd);
-  WriteResult(opt.output, j.dump() + "\n");
+  const nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
+  WriteResult(opt.output, JsonOutput(j, JsonProvenance(cmd)));
   if (!result.complete) {
     fmt::print(stderr, "capsubot orbits: note: {}\n",
                text::OrbitsIncompleteNote("--max-evaluations"));

@@ -58,13 +58,8 @@ int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {
   o.shooting = opt.shooting;
   CheckResultOutput(opt.output);
   const PeriodicJobResult r = RunPeriodicJob(o);
-  if (opt.json) {
-    nlohmann::json j = json::PeriodicJobJson(r);
-    AddProvenanceJson(j, cmd);
-    WriteResult(opt.output, j.dump() + "\n");
-  } else {
-    WriteResult(opt.output, text::PeriodicJobText(r));
-  }
+  WriteResult(opt.output, opt.json ? JsonOutput(json::PeriodicJobJson(r), JsonProvenance(cmd))
+                                   : text::PeriodicJobText(r));
   return 0;
 }
 

@@ -35,4 +35,9 @@ void WriteResult(const std::string& path, const std::string& text) {
   file.Commit();
 }
 
+std::string JsonOutput(nlohmann::json j, const Provenance& provenance) {
+  j["provenance"] = provenance.Json();
+  return j.dump() + "\n";
+}
+
 }  // namespace capsubot::app

@@ -151,13 +151,8 @@ int Run(const SimulateOptions& opt, const CLI::App& cmd) {
   if (events_file) events_file->Commit();
   if (trajectory_file) trajectory_file->Commit();
   PrintNotes(r);
-  if (opt.json) {
-    nlohmann::json j = json::SimulateJobJson(r);
-    AddProvenanceJson(j, cmd);
-    WriteResult(opt.output, j.dump() + "\n");
-  } else {
-    WriteResult(opt.output, text::SimulateJobText(r));
-  }
+  WriteResult(opt.output, opt.json ? JsonOutput(json::SimulateJobJson(r), JsonProvenance(cmd))
+                                   : text::SimulateJobText(r));
   return 0;
 }
 

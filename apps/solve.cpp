@@ -66,16 +66,11 @@ int Run(const SolveOptions& opt, const CLI::App& cmd) {
                  StatusName(orbit.status));
     }
   }
-  if (opt.json) {
-    nlohmann::json j = json::SolveJobJson(r);
-    // Without --stability the orbit is not checked from rest: its grid does not shape the output.
-    AddProvenanceJson(j, cmd,
-                      opt.stability ? std::vector<std::string>{}
-                                    : std::vector<std::string>{"--from-rest-starts"});
-    WriteResult(opt.output, j.dump() + "\n");
-  } else {
-    WriteResult(opt.output, text::SolveJobText(r));
-  }
+  // Without --stability the orbit is not checked from rest: its grid does not shape the output.
+  const std::vector<std::string> unused =
+      opt.stability ? std::vector<std::string>{} : std::vector<std::string>{"--from-rest-starts"};
+  WriteResult(opt.output, opt.json ? JsonOutput(json::SolveJobJson(r), JsonProvenance(cmd, unused))
+                                   : text::SolveJobText(r));
   return 0;
 }
 

@@ -25,22 +25,6 @@ Vec4 Zero() { return {0.0, 0.0, 0.0, 0.0}; }
 
 }  // namespace
 
-Condition Condition::Arclength(const Vec4& t, const Vec4& y, double sigma) {
-  Condition c;
-  c.a = t;
-  c.b = sigma;
-  for (std::size_t i = 0; i < 4; ++i) c.b += t[i] * y[i];
-  return c;
-}
-
-Condition Condition::Parameter(double lambda) {
-  Condition c;
-  c.a = Zero();
-  c.a[3] = 1.0;
-  c.b = lambda;
-  return c;
-}
-
 BranchSystem::BranchSystem(const RobotFamily& family, const ContinuationOptions& options,
                            int period, Section section)
     : family_(family),

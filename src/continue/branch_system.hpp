@@ -14,6 +14,7 @@
 #include "capsubot/attract/detail/period_map.hpp"
 #include "capsubot/attract/detail/stroboscopic.hpp"
 #include "capsubot/continue/continuation.hpp"
+#include "continue/linear_condition.hpp"
 
 namespace capsubot::detail {
 
@@ -56,13 +57,8 @@ inline bool SameEvents(const Node& a, const Node& b) {
 }
 
 /// One linear condition a . y = b that closes the extended system: the arclength condition
-/// t_i . (y - y_i) = sigma, or a fixed parameter.
-struct Condition {
-  Vec4 a{};
-  double b = 0.0;
-  static Condition Arclength(const Vec4& t, const Vec4& y, double sigma);
-  static Condition Parameter(double lambda);
-};
+/// t_i . (y - y_i) = sigma, or the parameter fixed (Condition::Fixed(3, lambda)).
+using Condition = LinearCondition<4>;
 
 /// The Neimark-Sacker test function of multipliers mu: the product over pairs of
 /// Re(mu_i mu_j - 1) (1 for fewer than two). It changes sign where a complex pair crosses the

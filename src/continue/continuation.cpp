@@ -84,7 +84,7 @@ bool AtEnd(detail::BranchSystem& system, const Node& a, const Vec4& beyond, doub
   y[3] = edge;
   const Vec4 chord = y;
   int iterations = 0;
-  if (system.Correct(detail::Condition::Parameter(edge), a.J, y, &iterations) !=
+  if (system.Correct(detail::Condition::Fixed(3, edge), a.J, y, &iterations) !=
           Outcome::kConverged ||
       !system.Complete(y, a.t, b)) {
     return false;

@@ -33,21 +33,6 @@ constexpr int kPullBacks = 4;
 
 }  // namespace
 
-CurveClosure CurveClosure::Arclength(const Vec5& t, const Vec5& y, double sigma) {
-  CurveClosure c;
-  c.a = t;
-  c.b = sigma;
-  for (std::size_t i = 0; i < 5; ++i) c.b += t[i] * y[i];
-  return c;
-}
-
-CurveClosure CurveClosure::Fixed(std::size_t index, double value) {
-  CurveClosure c;
-  c.a[index] = 1.0;
-  c.b = value;
-  return c;
-}
-
 CurveSystem::CurveSystem(const RobotSurface& surface, const CurveOptions& options,
                          SpecialPointType type, int period, Section section)
     : surface_(surface),

@@ -32,12 +32,7 @@ struct CurveNode {
 
 /// One linear condition a . y = b that closes the extended system: the arclength condition
 /// t_i . (y - y_i) = sigma, or one coordinate fixed.
-struct CurveClosure {
-  Vec5 a{};
-  double b = 0.0;
-  static CurveClosure Arclength(const Vec5& t, const Vec5& y, double sigma);
-  static CurveClosure Fixed(std::size_t index, double value);
-};
+using CurveClosure = LinearCondition<5>;
 
 class CurveSystem {
  public:

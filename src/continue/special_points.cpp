@@ -71,7 +71,7 @@ bool MotionAt(SmoothSystem& system, const Node& a, const Node& near, double sigm
   for (std::size_t i = 0; i < 4; ++i) y[i] = near.y[i] + (sigma - sigma_near) * a.t[i];
   y[3] = a.y[3] + sigma * a.t[3];
   int iterations = 0;
-  return system.Correct(Condition::Parameter(y[3]), a.J, y, &iterations) ==
+  return system.Correct(Condition::Fixed(3, y[3]), a.J, y, &iterations) ==
              SmoothSystem::Outcome::kConverged &&
          system.Measure(y, node);
 }

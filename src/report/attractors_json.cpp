@@ -38,9 +38,7 @@ nlohmann::json AttractorsJson(const Attractors& a) {
 }
 
 nlohmann::json AttractorsJobJson(const AttractorsJobResult& result) {
-  nlohmann::json j = AttractorsJson(result.attractors);
-  j["force"] = ForcingJson(result.options.forcing);
-  return j;
+  return WithForceJson(AttractorsJson(result.attractors), result.options.forcing);
 }
 
 nlohmann::json BasinsJobJson(const BasinsJobResult& result) {

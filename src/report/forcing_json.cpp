@@ -34,4 +34,9 @@ nlohmann::json ForcingJson(const Forcing& f) {
   return j;
 }
 
+nlohmann::json WithForceJson(nlohmann::json j, const Forcing& forcing) {
+  j["force"] = ForcingJson(forcing);
+  return j;
+}
+
 }  // namespace capsubot::json

@@ -27,9 +27,7 @@ nlohmann::json PeriodicJson(const PeriodicMotion& m) {
 }
 
 nlohmann::json PeriodicJobJson(const PeriodicJobResult& result) {
-  nlohmann::json j = PeriodicJson(result.motion);
-  j["force"] = ForcingJson(result.options.forcing);
-  return j;
+  return WithForceJson(PeriodicJson(result.motion), result.options.forcing);
 }
 
 }  // namespace capsubot::json

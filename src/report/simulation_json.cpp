@@ -46,10 +46,9 @@ nlohmann::json SimulationJson(const SimResult& r, const SimOptions& sim, const S
 }
 
 nlohmann::json SimulateJobJson(const SimulateJobResult& result) {
-  nlohmann::json j =
-      SimulationJson(result.run, result.sim, result.orbit ? &*result.orbit : nullptr);
-  j["force"] = ForcingJson(result.options.forcing);
-  return j;
+  return WithForceJson(
+      SimulationJson(result.run, result.sim, result.orbit ? &*result.orbit : nullptr),
+      result.options.forcing);
 }
 
 }  // namespace capsubot::json

@@ -269,7 +269,7 @@ class PlaneMap : public SmoothSystem {
     Node n;
     Vec4 y = {guess[0], guess[1], 0.0, lambda};
     int iterations = 0;
-    EXPECT_EQ(Correct(Condition::Parameter(lambda), {}, y, &iterations), Outcome::kConverged);
+    EXPECT_EQ(Correct(Condition::Fixed(3, lambda), {}, y, &iterations), Outcome::kConverged);
     Complete(y, {0.0, 0.0, 0.0, 1.0}, &n);
     return n;
   }

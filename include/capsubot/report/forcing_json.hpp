@@ -13,4 +13,8 @@ namespace capsubot::json {
 /// "pulse", "levels": [L_1..L_N], "switches": [s_1..s_N], "phi0"} for a pulse force.
 nlohmann::json ForcingJson(const Forcing& forcing);
 
+/// `j`, the JSON object of a job's result, with the force it was run with: "force":
+/// ForcingJson(forcing).
+nlohmann::json WithForceJson(nlohmann::json j, const Forcing& forcing);
+
 }  // namespace capsubot::json
