@@ -28,7 +28,7 @@
 #include "commands.hpp"
 #include "design_config.hpp"
 #include "design_flags.hpp"
-#include "from_rest_report.hpp"
+#include "from_rest_options.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"

@@ -26,7 +26,7 @@
 #include "capsubot/report/optimize_text.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
-#include "from_rest_report.hpp"
+#include "from_rest_options.hpp"
 #include "help_format.hpp"
 #include "optimize_flags.hpp"
 #include "progress.hpp"
@@ -156,7 +156,7 @@ int Run(const OptimizeCliOptions& opt) {
     from_rest_csv->Commit();
   }
   nlohmann::json j = json::OptimizeJobJson(result);
-  AddProvenanceJson(j, *opt.cmd, UnusedOptionsOf(opt));
+  j["provenance"] = JsonProvenance(*opt.cmd, UnusedOptionsOf(opt)).Json();
   if (json_file != nullptr) {
     json_file->stream() << j.dump(2) << '\n';
     json_file->Commit();

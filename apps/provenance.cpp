@@ -108,9 +108,4 @@ Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string
   return OutputProvenance(command, exclude);
 }
 
-void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
-                       const std::vector<std::string>& unused) {
-  j["provenance"] = JsonProvenance(command, unused).Json();
-}
-
 }  // namespace capsubot::app

@@ -42,13 +42,8 @@ Provenance CommandProvenance(const CLI::App& command, const std::vector<std::str
 /// names of options the run does not use or that do not shape this output).
 Provenance OutputProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
 
-/// The provenance AddProvenanceJson adds: OutputProvenance(command, unused) without what only
-/// shapes the CSV files (--samples, --samples-per-period).
+/// The provenance of a JSON output ("provenance"): OutputProvenance(command, unused) without
+/// what only shapes the CSV files (--samples, --samples-per-period).
 Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
-
-/// Adds "provenance" (JsonProvenance(command, unused).Json()) to a JSON output of the parsed
-/// subcommand `command`.
-void AddProvenanceJson(nlohmann::json& j, const CLI::App& command,
-                       const std::vector<std::string>& unused = {});
 
 }  // namespace capsubot::app

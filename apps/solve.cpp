@@ -11,7 +11,7 @@
 #include "capsubot/report/solution_json.hpp"
 #include "capsubot/report/solve_text.hpp"
 #include "commands.hpp"
-#include "from_rest_report.hpp"
+#include "from_rest_options.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"

@@ -23,7 +23,7 @@
 #include "capsubot/report/sweep_text.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
-#include "from_rest_report.hpp"
+#include "from_rest_options.hpp"
 #include "gnuplot.hpp"
 #include "help_format.hpp"
 #include "progress.hpp"

@@ -1,4 +1,4 @@
-#include "from_rest_report.hpp"
+#include "from_rest_options.hpp"
 
 #include <fmt/format.h>
 
