@@ -47,21 +47,11 @@ struct OptimizeCliOptions {
   CLI::App* cmd = nullptr;
 };
 
-// The messages of the lower stages name these fields by their flags; the others (alpha,
-// global_algorithm, force_bound, ...) keep the library's field names.
-const FlagNames kRenamedFields = {{"reach_evaluations", "--reach-evaluations"},
-                                  {"reach_local_evaluations", "--reach-local-evaluations"},
-                                  {"reach_seconds", "--reach-seconds"},
-                                  {"drive_evaluations", "--drive-evaluations"},
-                                  {"drive_polishes", "--drive-polishes"},
-                                  {"drive_local_evaluations", "--drive-local-evaluations"},
-                                  {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                                  {"drive_screens", "--drive-screens"},
-                                  {"harmonics", "--harmonics"},
-                                  {"band_levels", "--band-levels"},
-                                  {"levels", "--pulse-levels"},
-                                  {"from_rest_starts", "--from-rest-starts"},
-                                  {"reach_starts", "--reach-starts"}};
+// The messages of the lower stages name their fields by the flags, but for alpha and the
+// algorithms, whose rules speak of the library's fields ("alpha = 2 is invalid: expected
+// 0 < alpha < 1 (or NaN: free)", "local_algorithm = ... is invalid: expected one of ...").
+const FlagNames kRenamedFields =
+    Without(kOptimizeFlags, {"alpha", "global_algorithm", "local_algorithm"});
 
 // The command line's outputs that only some problems write.
 const std::vector<SettingUse> kOutputUses = {{"from_rest_csv", {""}}};

@@ -32,6 +32,14 @@ std::string SettingNames::Absent(const std::string& field) const {
   return style == Style::kFlags ? "no " + Name(field) : Name(field) + "=None";
 }
 
+FlagNames Without(const FlagNames& names, const std::set<std::string>& fields) {
+  FlagNames kept;
+  for (const auto& entry : names) {
+    if (fields.count(entry.first) == 0) kept.push_back(entry);
+  }
+  return kept;
+}
+
 namespace {
 
 bool NamePart(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }

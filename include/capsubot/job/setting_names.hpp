@@ -5,6 +5,7 @@
 // rules of the jobs write their messages with it, and a message of a lower stage (which begins
 // with a field's name: "record = 3 is invalid: ...") is rewritten with it.
 
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,9 @@ struct SettingNames {
   /// `field` not given: "no --problem" or "problem=None".
   std::string Absent(const std::string& field) const;
 };
+
+/// `names` without the entries of `fields`.
+FlagNames Without(const FlagNames& names, const std::set<std::string>& fields);
 
 /// `message` with its first word replaced by its flag when it is a field of `names` and is
 /// followed by ' ' or ':' ("--record = 3 is invalid: ..."), and with every "field = " in the
