@@ -85,8 +85,7 @@ int Run(const BifurcationCommandOptions& opt, const CLI::App& cmd) {
   Ranks ranks;  // under mpirun: rank 0 runs the study, the others compute its parts
   if (ranks.worker()) {
     const RobotModel& robot = plan.robot;
-    return ranks.Serve(BifurcationBlocks(robot.forcing, robot.params, robot.alpha, plan.diagram),
-                       plan.diagram.threads);
+    return ranks.Serve(BifurcationBlocks(robot, plan.diagram), plan.diagram.threads);
   }
   fmt::print("{}", text::BifurcationJobText(RunBifurcationJob(job, ranks.backend())));
   return 0;

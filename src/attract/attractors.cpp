@@ -166,18 +166,17 @@ std::int64_t CountReached(const Attractors& attractors, const Forcing& forcing, 
                        [&](const Motion& m) { return MatchesOrbit(m, forcing, orbit, tolerance); });
 }
 
-BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, double alpha,
-                                 const std::vector<PhaseState>& starts,
+BlockComputeFactory MotionBlocks(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                  const AttractorOptions& options) {
   static_assert(std::is_trivially_copyable<Motion>::value, "a Motion's bytes are its value");
-  return [&forcing, &params, alpha, &starts, &options]() -> BlockCompute {
+  return [&robot, &starts, &options]() -> BlockCompute {
     auto recorder = std::make_shared<detail::Recorder>();
-    return [&forcing, &params, alpha, &starts, &options, recorder](
-               std::int64_t begin, std::int64_t end, std::string& out) {
+    return [&robot, &starts, &options, recorder](std::int64_t begin, std::int64_t end,
+                                                 std::string& out) {
       for (std::int64_t i = begin; i < end; ++i) {
         const Motion m = detail::ClassifyMotion(
-            forcing, params, alpha, options.motion,
-            {starts[static_cast<std::size_t>(i)], SimMode::kRest}, *recorder);
+            robot, options.motion, {starts[static_cast<std::size_t>(i)], SimMode::kRest},
+            *recorder);
         out.append(reinterpret_cast<const char*>(&m), sizeof m);
       }
       return end - begin;
@@ -185,12 +184,12 @@ BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, d
   };
 }
 
-void StreamLongRunMotions(const Forcing& forcing, const Params& params, double alpha,
-                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          std::int64_t first, const MotionSink& sink, const BlockBackend& backend) {
-  params.Validate();
+void StreamLongRunMotions(const RobotModel& robot, const std::vector<PhaseState>& starts,
+                          const AttractorOptions& options, std::int64_t first,
+                          const MotionSink& sink, const BlockBackend& backend) {
+  robot.params.Validate();
   options.Validate();
-  for (const PhaseState& s : starts) ValidateStart(alpha, s);
+  for (const PhaseState& s : starts) ValidateStart(robot.alpha, s);
   const auto n = static_cast<std::int64_t>(starts.size());
   if (first < 0 || first > n) {
     throw std::invalid_argument(fmt::format(
@@ -202,7 +201,7 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
   plan.threads = WorkerThreads(options.threads, std::max<std::int64_t>(1, n - first));
   plan.block = BalancedBlock(n - first, backend.Threads(plan.threads), kStartsPerBlock);
   std::vector<Motion> block;
-  backend.Run(plan, MotionBlocks(forcing, params, alpha, starts, options),
+  backend.Run(plan, MotionBlocks(robot, starts, options),
               [&](std::int64_t begin, std::int64_t end, const std::string& bytes, std::int64_t) {
                 const auto count = static_cast<std::size_t>(end - begin);
                 if (bytes.size() != count * sizeof(Motion)) {
@@ -217,14 +216,13 @@ void StreamLongRunMotions(const Forcing& forcing, const Params& params, double a
               });
 }
 
-std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
-                                   const std::vector<PhaseState>& starts,
+std::vector<Motion> LongRunMotions(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                    const AttractorOptions& options, const StartsProgress& progress,
                                    const BlockBackend& backend) {
   std::vector<Motion> motions(starts.size());
   const auto n = static_cast<std::int64_t>(starts.size());
   StreamLongRunMotions(
-      forcing, params, alpha, starts, options, 0,
+      robot, starts, options, 0,
       [&](std::int64_t begin, std::int64_t end, const Motion* block) {
         std::copy(block, block + (end - begin), motions.begin() + begin);
         if (progress) progress(end, n);
@@ -281,20 +279,19 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
   return out;
 }
 
-Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
-                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          const StartsProgress& progress, const BlockBackend& backend) {
-  Attractors out = GroupMotions(
-      starts, LongRunMotions(forcing, params, alpha, starts, options, progress, backend),
-      Grouping{options.velocity_tolerance, options.irregular_tolerance});
+Attractors ClassifyStarts(const RobotModel& robot, const std::vector<PhaseState>& starts,
+                          const AttractorOptions& options, const StartsProgress& progress,
+                          const BlockBackend& backend) {
+  Attractors out = GroupMotions(starts, LongRunMotions(robot, starts, options, progress, backend),
+                                Grouping{options.velocity_tolerance, options.irregular_tolerance});
   // The analytic one-impact orbits are needed only if a motion has their shape.
   const bool any = std::any_of(out.attractors.begin(), out.attractors.end(),
                                [](const Attractor& a) { return OneImpactShape(a.motion); });
   if (any) {
-    const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+    const std::vector<Solution> orbits = FindRobotOrbits(robot);
     for (Attractor& a : out.attractors) {
       for (const Solution& s : orbits) {
-        if (MatchesOrbit(a.motion, forcing, s.orbit, options.orbit_tolerance)) {
+        if (MatchesOrbit(a.motion, robot.forcing, s.orbit, options.orbit_tolerance)) {
           a.one_impact_orbit = true;
         }
       }
@@ -313,11 +310,10 @@ std::vector<PhaseState> GridStarts(int n_x, int n_psi) {
   return starts;
 }
 
-Attractors FindAttractors(const Forcing& forcing, const Params& params, double alpha,
-                          const FromRestOptions& options, const StartsProgress& progress) {
+Attractors FindAttractors(const RobotModel& robot, const FromRestOptions& options,
+                          const StartsProgress& progress) {
   options.Validate();
-  return ClassifyStarts(forcing, params, alpha, GridStarts(options.n_x, options.n_psi),
-                        options.attractor, progress);
+  return ClassifyStarts(robot, GridStarts(options.n_x, options.n_psi), options.attractor, progress);
 }
 
 }  // namespace capsubot

@@ -89,15 +89,13 @@ void Sweep(const RobotModel& base, const BifurcationOptions& o, SweepDirection d
     BifurcationPoint point;
     point.param = value;
     point.direction = direction;
-    point.motion =
-        detail::ClassifyMotion(r.forcing, r.params, r.alpha, o.motion, s, recorder, true);
+    point.motion = detail::ClassifyMotion(r, o.motion, s, recorder, true);
     s = {point.motion.section, point.motion.mode};
     if (point.motion.status == MotionStatus::kPeriodic && recorder.impacts.empty()) {
       // Stopped early on a periodic motion: its impacts of one period p stand for the record.
       detail::MapState again = s;
       recorder.Start(point.motion.period, false, false, true, s.z.psi);
-      detail::Advance(r.forcing, r.params, r.alpha, o.motion, again, point.motion.period, nullptr,
-                      &recorder);
+      detail::Advance(r, o.motion, again, point.motion.period, nullptr, &recorder);
     }
     if (point.motion.status != MotionStatus::kEventLimit) {
       for (const detail::Recorder::Impact& im : recorder.impacts) {
@@ -109,8 +107,7 @@ void Sweep(const RobotModel& base, const BifurcationOptions& o, SweepDirection d
     if (o.multipliers && point.motion.status == MotionStatus::kPeriodic) {
       Motion& m = point.motion;
       if (!m.refined) {  // Newton's method from the motion's state gives its multipliers
-        const PeriodicMotion pm =
-            ShootPeriodicMotion(r.forcing, r.params, r.alpha, m.section, m.period, shooting);
+        const PeriodicMotion pm = ShootPeriodicMotion(r, m.section, m.period, shooting);
         if (pm.status == ShootingStatus::kConverged && !pm.multipliers.empty()) {
           m.spectral_radius = pm.spectral_radius;
           m.multiplier_re = pm.multipliers.front().real();
@@ -130,7 +127,7 @@ void Analytic(const RobotModel& base, const BifurcationOptions& o, BifurcationDi
   for (int i = 0; i < o.steps; ++i) {
     const double value = Value(o, i);
     const RobotModel r = At(base, o.param, o.harmonic, value);
-    for (const Solution& s : FindRobotOrbits(r.forcing, r.params, r.alpha)) {
+    for (const Solution& s : FindRobotOrbits(r)) {
       if (!s.validity.valid()) continue;
       BifurcationPoint point;
       point.param = value;
@@ -164,17 +161,15 @@ struct Study {
   int total_parts = 0;
 };
 
-Study PlanStudy(const Forcing& forcing, const Params& params, double alpha,
-                const BifurcationOptions& options) {
+Study PlanStudy(const RobotModel& robot, const BifurcationOptions& options) {
   options.Validate();
   const bool two = !options.over_values.empty();
-  CheckRobotParameter(forcing, options.param, options.harmonic);
-  if (two) CheckRobotParameter(forcing, options.over, options.over_harmonic);
+  CheckRobotParameter(robot.forcing, options.param, options.harmonic);
+  if (two) CheckRobotParameter(robot.forcing, options.over, options.over_harmonic);
   Study study;
   study.overs = two ? options.over_values : std::vector<double>{kNaN};
   for (double over : study.overs) {
-    const RobotModel base{forcing, params, alpha};
-    study.bases.push_back(two ? At(base, options.over, options.over_harmonic, over) : base);
+    study.bases.push_back(two ? At(robot, options.over, options.over_harmonic, over) : robot);
     // Every robot of the range must be valid: check both ends and name the one that is not.
     for (double value : {options.from, options.to}) {
       const RobotModel r = At(study.bases.back(), options.param, options.harmonic, value);
@@ -282,10 +277,10 @@ BifurcationDiagram ReadPartBytes(const std::string& bytes, const Study& study, s
 
 // The computers of the parts (BifurcationBlocks); `done` (if any) is told each value they
 // simulate.
-BlockComputeFactory PartBlocks(const Forcing& forcing, const Params& params, double alpha,
-                               const BifurcationOptions& options, ValuesDone* done) {
-  return [&forcing, &params, alpha, &options, done]() -> BlockCompute {
-    auto study = std::make_shared<const Study>(PlanStudy(forcing, params, alpha, options));
+BlockComputeFactory PartBlocks(const RobotModel& robot, const BifurcationOptions& options,
+                               ValuesDone* done) {
+  return [&robot, &options, done]() -> BlockCompute {
+    auto study = std::make_shared<const Study>(PlanStudy(robot, options));
     return [study, &options, done](std::int64_t begin, std::int64_t end, std::string& out) {
       for (std::int64_t k = begin; k < end; ++k) {
         AppendPartBytes(ComputePart(*study, options, k, done), out);
@@ -383,16 +378,14 @@ int BifurcationParts(const BifurcationOptions& options) {
   return values * ((options.up ? 1 : 0) + (options.down ? 1 : 0) + (options.analytic ? 1 : 0));
 }
 
-void ValidateBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                         const BifurcationOptions& options) {
-  PlanStudy(forcing, params, alpha, options);
+void ValidateBifurcation(const RobotModel& robot, const BifurcationOptions& options) {
+  PlanStudy(robot, options);
 }
 
-void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                       const BifurcationOptions& options, int first,
+void StreamBifurcation(const RobotModel& robot, const BifurcationOptions& options, int first,
                        const BifurcationPartSink& sink, const StartsProgress& progress,
                        const BlockBackend& backend) {
-  const Study study = PlanStudy(forcing, params, alpha, options);
+  const Study study = PlanStudy(robot, options);
   const auto parts = static_cast<std::int64_t>(study.parts.size());
   if (first < 0 || first > parts) {
     throw std::invalid_argument(fmt::format(
@@ -409,7 +402,7 @@ void StreamBifurcation(const Forcing& forcing, const Params& params, double alph
   plan.end = parts;
   plan.block = 1;  // a part a block: the parts are few and long
   plan.threads = WorkerThreads(options.threads, std::max<std::int64_t>(1, parts - first));
-  backend.Run(plan, PartBlocks(forcing, params, alpha, options, &done),
+  backend.Run(plan, PartBlocks(robot, options, &done),
               [&](std::int64_t k, std::int64_t, const std::string& bytes, std::int64_t) {
                 // Block k is part k alone (plan.block = 1).
                 const BifurcationDiagram part = ReadPartBytes(bytes, study, k);
@@ -418,17 +411,15 @@ void StreamBifurcation(const Forcing& forcing, const Params& params, double alph
               });
 }
 
-BlockComputeFactory BifurcationBlocks(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options) {
-  return PartBlocks(forcing, params, alpha, options, nullptr);
+BlockComputeFactory BifurcationBlocks(const RobotModel& robot, const BifurcationOptions& options) {
+  return PartBlocks(robot, options, nullptr);
 }
 
-BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options,
+BifurcationDiagram ComputeBifurcation(const RobotModel& robot, const BifurcationOptions& options,
                                       const StartsProgress& progress, const BlockBackend& backend) {
   BifurcationDiagram out;
   StreamBifurcation(
-      forcing, params, alpha, options, 0,
+      robot, options, 0,
       [&out](const BifurcationDiagram& part) {
         out.parts.push_back(part.parts.front());
         out.impacts.insert(out.impacts.end(), part.impacts.begin(), part.impacts.end());

@@ -124,7 +124,7 @@ GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Params& params,
   return CheckGaitFromRest(orbit, orbit.forcing, params, options);
 }
 
-GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& robot, const Params& params,
+GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& motor, const Params& params,
                                const FromRestOptions& options) {
   params.Validate();
   options.Validate();
@@ -133,11 +133,12 @@ GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& robot, const P
     out.summary = "not checked from rest: the gait's orbit does not exist";
     return out;
   }
-  out.attractors = FindAttractors(robot, params, orbit.alpha, options);
+  const RobotModel robot{motor, params, orbit.alpha};  // the gait's mass ratio
+  out.attractors = FindAttractors(robot, options);
   std::vector<bool> on_gait(out.attractors.motions.size(), false);
   for (std::size_t k = 0; k < on_gait.size(); ++k) {
     on_gait[k] =
-        MatchesOrbit(out.attractors.motions[k], robot, orbit, options.attractor.orbit_tolerance);
+        MatchesOrbit(out.attractors.motions[k], motor, orbit, options.attractor.orbit_tolerance);
     out.reached += on_gait[k] ? 1 : 0;
   }
   out.summary = AttractorsSummary(out.attractors, options.attractor.motion.max_period, on_gait);

@@ -126,11 +126,8 @@ Motion FromPeriodic(const PeriodicMotion& pm) {
 // the end of every chunk of 2 max_period periods of the transient, the early stop.
 class LongRun : public SimObserver {
  public:
-  LongRun(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& o,
-          Recorder& recorder)
-      : forcing_(forcing),
-        params_(params),
-        alpha_(alpha),
+  LongRun(const RobotModel& robot, const MotionOptions& o, Recorder& recorder)
+      : robot_(robot),
         o_(o),
         recorder_(recorder),
         right_(static_cast<std::size_t>(2 * o.max_period), 0),
@@ -171,7 +168,7 @@ class LongRun : public SimObserver {
     ++tries_;
     const SimState& last = ring_.back();
     MapState s{{last.x, last.u, last.v, psi_}, last.mode}, moved;
-    const PeriodicMotion pm = RefinePeriodicMotion(forcing_, params_, alpha_, o_, s, p, &moved);
+    const PeriodicMotion pm = RefinePeriodicMotion(robot_, o_, s, p, &moved);
     if (pm.status != ShootingStatus::kConverged || !(pm.spectral_radius <= kSettledRadius) ||
         !(Distance(moved.z, pm.state) <= kSettledDistance)) {
       return false;
@@ -221,9 +218,7 @@ class LongRun : public SimObserver {
   const SimState& RecordMiddle() const { return record_middle_; }
 
  private:
-  const Forcing& forcing_;
-  const Params& params_;
-  double alpha_;
+  const RobotModel& robot_;
   const MotionOptions& o_;
   Recorder& recorder_;
   std::vector<SimState> ring_;
@@ -240,24 +235,21 @@ class LongRun : public SimObserver {
 // max_period periods to see the events, the section moved into their largest gap, then
 // 2 max_period periods of section states. 0 when none repeats within state_tolerance (or the
 // work bound is hit).
-int ProbePeriod(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& o,
-                MapState s, Recorder& probe, MapState* at) {
+int ProbePeriod(const RobotModel& robot, const MotionOptions& o, MapState s, Recorder& probe,
+                MapState* at) {
   const int P = o.max_period;
   MapState look = s;
   probe.Start(P, false, true);
-  if (Advance(forcing, params, alpha, o, look, P, nullptr, &probe).status ==
-      SimStatus::kEventLimit) {
+  if (Advance(robot, o, look, P, nullptr, &probe).status == SimStatus::kEventLimit) {
     return 0;
   }
   const double shift = SectionShift(probe.event_phases);
-  if (shift > 0.0 && Advance(forcing, params, alpha, o, s, shift / kTau, nullptr).status ==
-                         SimStatus::kEventLimit) {
+  if (shift > 0.0 && Advance(robot, o, s, shift / kTau, nullptr).status == SimStatus::kEventLimit) {
     return 0;
   }
   *at = s;
   probe.Start(2 * P, true, false);
-  if (Advance(forcing, params, alpha, o, s, 2 * P, nullptr, &probe, true).status ==
-          SimStatus::kEventLimit ||
+  if (Advance(robot, o, s, 2 * P, nullptr, &probe, true).status == SimStatus::kEventLimit ||
       static_cast<int>(probe.samples.size()) != 2 * P + 1) {
     return 0;
   }
@@ -306,9 +298,8 @@ Motion FromRecord(const Recorder& recorder, const LongRun& run, const SimResult&
 
 }  // namespace
 
-Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
-                      const MotionOptions& options, MapState s, Recorder& recorder,
-                      bool keep_impacts) {
+Motion ClassifyMotion(const RobotModel& robot, const MotionOptions& options, MapState s,
+                      Recorder& recorder, bool keep_impacts) {
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   const double psi = s.z.psi;
   const int T = options.transient, R = options.record;
@@ -316,13 +307,14 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   // would do: restarting it would perturb the motion by rounding, and a chaotic transient
   // would then end elsewhere.
   recorder.Start(R, false, false, keep_impacts, psi, T * kTau);
-  LongRun run(forcing, params, alpha, options, recorder);
+  LongRun run(robot, options, recorder);
   run.SetPhase(psi);
-  SimOptions o = RunOptions(options, alpha, s.z);
+  SimOptions o = RunOptions(options, robot.alpha, s.z);
   o.transient = T;
   o.periods = R;
   o.sample_step = kTau;
-  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + psi), params, o, &run);
+  const Forcing& forcing = robot.forcing;
+  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + psi), robot.params, o, &run);
   const SimState& f = r.final_state;
   MapState end{{f.x, f.u, f.v, psi}, f.mode};
   if (r.status == SimStatus::kEventLimit) {
@@ -346,12 +338,12 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
   const std::vector<SimState>* samples = &run.Ring();
   int p = DetectPeriod(*samples, options.max_period, options.state_tolerance);
   if (p == 0 && !run.SectionClear()) {  // the states may flip across an event
-    p = ProbePeriod(forcing, params, alpha, options, end, probe, &at);
+    p = ProbePeriod(robot, options, end, probe, &at);
     samples = &probe.samples;
   }
   if (p > 0) {
     MapState moved;
-    const PeriodicMotion pm = RefinePeriodicMotion(forcing, params, alpha, options, at, p, &moved);
+    const PeriodicMotion pm = RefinePeriodicMotion(robot, options, at, p, &moved);
     if (pm.status == ShootingStatus::kConverged &&
         Distance(moved.z, pm.state) <= kRefinedDistance) {
       return FromPeriodic(pm);
@@ -364,13 +356,13 @@ Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha
 
 }  // namespace detail
 
-Motion LongRunMotion(const Forcing& forcing, const Params& params, double alpha,
-                     const PhaseState& start, const MotionOptions& options) {
-  params.Validate();
+Motion LongRunMotion(const RobotModel& robot, const PhaseState& start,
+                     const MotionOptions& options) {
+  robot.params.Validate();
   options.Validate();
-  ValidateStart(alpha, start);
+  ValidateStart(robot.alpha, start);
   detail::Recorder recorder;
-  return detail::ClassifyMotion(forcing, params, alpha, options, {start, SimMode::kRest}, recorder);
+  return detail::ClassifyMotion(robot, options, {start, SimMode::kRest}, recorder);
 }
 
 PhaseState RestStart(double x0, double psi) {

@@ -21,8 +21,9 @@ double Residual(const Vec3& z, const PhaseState& image) {
          scale;
 }
 
-bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z) {
-  const double velocity = kTau * (forcing.MaxAbs() + params.T0) / (alpha * (1.0 - alpha));
+bool WithinScale(const RobotModel& robot, const Vec3& z) {
+  const double velocity =
+      kTau * (robot.forcing.MaxAbs() + robot.params.T0) / (robot.alpha * (1.0 - robot.alpha));
   const double bound = kMaxStateScale * std::max(1.0, velocity);
   return std::isfinite(z[0]) && std::abs(z[0]) <= bound && std::abs(z[1]) <= bound &&
          std::abs(z[2]) <= bound;
@@ -53,13 +54,12 @@ MotionOptions SimulationOf(const ShootingOptions& o) {
 bool PeriodMap::Map(const PhaseState& z, int p, MapState* out, double* displacement,
                     Recorder* recorder) const {
   *out = {z, SimMode::kRest};
-  return Advance(forcing_, params_, alpha_, motion_, *out, p, displacement, recorder).status !=
-         SimStatus::kEventLimit;
+  return Advance(robot_, motion_, *out, p, displacement, recorder).status != SimStatus::kEventLimit;
 }
 
 bool PeriodMap::Shift(MapState& s, double periods, SimObserver* observer, bool sample) const {
-  return Advance(forcing_, params_, alpha_, motion_, s, periods, nullptr, observer, sample)
-             .status != SimStatus::kEventLimit;
+  return Advance(robot_, motion_, s, periods, nullptr, observer, sample).status !=
+         SimStatus::kEventLimit;
 }
 
 void DifferenceColumn(const MapState& plus, const MapState& minus, double displacement_plus,

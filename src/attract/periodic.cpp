@@ -49,8 +49,8 @@ class InterruptObserver : public SimObserver {
 
 class Shooter {
  public:
-  Shooter(const Forcing& forcing, const Params& params, double alpha, const ShootingOptions& o)
-      : map_(forcing, params, alpha, detail::SimulationOf(o)), interrupt_(o.interrupt) {}
+  Shooter(const RobotModel& robot, const ShootingOptions& o)
+      : map_(robot, detail::SimulationOf(o)), interrupt_(o.interrupt) {}
 
   // P^p(z): false if the simulation hit the work bound. Asks the interrupt first.
   bool Map(const PhaseState& z, int p, detail::MapState* out) const {
@@ -177,8 +177,7 @@ PeriodicMotion Shoot(Shooter& shooter, PhaseState z0, int p, const ShootingOptio
   out.mode = mode;
   out.dimension = d;
   if (out.status == ShootingStatus::kEventLimit) return out;
-  const bool resolved = detail::WithinScale(shooter.map().forcing(), shooter.map().params(),
-                                            shooter.map().alpha(), z);
+  const bool resolved = detail::WithinScale(shooter.map().robot(), z);
   out.out_of_scale = !resolved;
   out.status = res <= o.residual_tolerance && resolved ? ShootingStatus::kConverged
                                                        : ShootingStatus::kNoConvergence;
@@ -223,11 +222,10 @@ ShootingOptions ShootingOf(const MotionOptions& mo) {
   return o;
 }
 
-PeriodicMotion RefinePeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                    const MotionOptions& options, MapState s, int p,
-                                    MapState* moved) {
+PeriodicMotion RefinePeriodicMotion(const RobotModel& robot, const MotionOptions& options,
+                                    MapState s, int p, MapState* moved) {
   const ShootingOptions o = ShootingOf(options);
-  Shooter shooter(forcing, params, alpha, o);
+  Shooter shooter(robot, o);
   *moved = s;
   if (!shooter.PlaceSection(s, p)) {
     PeriodicMotion fail;
@@ -267,12 +265,12 @@ void ShootingOptions::Validate() const {
   }
 }
 
-PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                  const PhaseState& start, const ShootingOptions& options) {
-  params.Validate();
+PeriodicMotion FindPeriodicMotion(const RobotModel& robot, const PhaseState& start,
+                                  const ShootingOptions& options) {
+  robot.params.Validate();
   options.Validate();
-  ValidateStart(alpha, start);
-  Shooter shooter(forcing, params, alpha, options);
+  ValidateStart(robot.alpha, start);
+  Shooter shooter(robot, options);
   detail::MapState s{start, SimMode::kRest};
   s.z.psi -= kTau * std::floor(s.z.psi / kTau);
   PeriodicMotion fail;
@@ -280,7 +278,7 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   const MotionOptions mo = detail::SimulationOf(options);
   InterruptObserver watch(options.interrupt);
   if (options.transient > 0 &&
-      detail::Advance(forcing, params, alpha, mo, s, options.transient, nullptr, &watch).status ==
+      detail::Advance(robot, mo, s, options.transient, nullptr, &watch).status ==
           SimStatus::kEventLimit) {
     return fail;
   }
@@ -291,17 +289,16 @@ PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, 
   return ShootMinimal(shooter, s.z, p, options);
 }
 
-PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                   const PhaseState& start, int period,
+PeriodicMotion ShootPeriodicMotion(const RobotModel& robot, const PhaseState& start, int period,
                                    const ShootingOptions& options) {
-  params.Validate();
+  robot.params.Validate();
   options.Validate();
-  ValidateStart(alpha, start);
+  ValidateStart(robot.alpha, start);
   if (period < 1 || period > kMaxPeriodLimit) {
     throw std::invalid_argument(
         fmt::format("period = {} is invalid: expected 1 <= period <= 64", period));
   }
-  Shooter shooter(forcing, params, alpha, options);
+  Shooter shooter(robot, options);
   PhaseState z = start;
   z.psi -= kTau * std::floor(z.psi / kTau);
   return ShootMinimal(shooter, z, period, options);

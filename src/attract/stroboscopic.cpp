@@ -53,13 +53,14 @@ SimOptions RunOptions(const MotionOptions& options, double alpha, const PhaseSta
   return o;
 }
 
-SimResult Advance(const Forcing& forcing, const Params& params, double alpha,
-                  const MotionOptions& options, MapState& s, double periods, double* displacement,
-                  SimObserver* observer, bool sample) {
-  SimOptions o = RunOptions(options, alpha, s.z);
+SimResult Advance(const RobotModel& robot, const MotionOptions& options, MapState& s,
+                  double periods, double* displacement, SimObserver* observer, bool sample) {
+  SimOptions o = RunOptions(options, robot.alpha, s.z);
   o.periods = periods;
   o.sample_step = sample ? kTau : 0.0;
-  const SimResult r = Simulate(forcing.WithPhase(forcing.phi0() + s.z.psi), params, o, observer);
+  const Forcing& forcing = robot.forcing;
+  const SimResult r =
+      Simulate(forcing.WithPhase(forcing.phi0() + s.z.psi), robot.params, o, observer);
   const SimState& f = r.final_state;
   s.z.x = f.x;
   s.z.u = f.u;

@@ -32,7 +32,7 @@ constexpr double kBornDistance = 10.0;
 // bound.
 bool FlipDirection(const RobotModel& r, const SpecialPoint& pd, const ShootingOptions& so,
                    detail::Vec3* direction) {
-  const detail::PeriodMap map(r.forcing, r.params, r.alpha, detail::SimulationOf(so));
+  const detail::PeriodMap map(r, detail::SimulationOf(so));
   const std::vector<int> free = detail::FreeCoordinates(pd.motion.mode, pd.motion.state.v);
   const int d = static_cast<int>(free.size());
   Eigen::MatrixXd J;
@@ -55,7 +55,7 @@ bool FlipDirection(const RobotModel& r, const SpecialPoint& pd, const ShootingOp
 // its state does not stay there.
 bool GenuinelyDoubled(const RobotModel& r, const PeriodicMotion& m, int p,
                       const ShootingOptions& so) {
-  const PeriodicMotion half = ShootPeriodicMotion(r.forcing, r.params, r.alpha, m.state, p, so);
+  const PeriodicMotion half = ShootPeriodicMotion(r, m.state, p, so);
   if (half.status != ShootingStatus::kConverged) return true;
   const double moved =
       std::max({std::abs(half.state.x - m.state.x), std::abs(half.state.u - m.state.u),
@@ -106,8 +106,7 @@ Branch SwitchAtPeriodDoubling(const RobotFamily& family, const SpecialPoint& pd,
         z.x += a * w[0];
         z.u += a * w[1];
         z.v += a * w[2];
-        const PeriodicMotion m =
-            ShootPeriodicMotion(r.forcing, r.params, r.alpha, z, 2 * p, options.shooting);
+        const PeriodicMotion m = ShootPeriodicMotion(r, z, 2 * p, options.shooting);
         if (m.status != ShootingStatus::kConverged || !BornAt(pd, m, offset) ||
             !GenuinelyDoubled(r, m, p, options.shooting)) {
           continue;

@@ -39,13 +39,13 @@ double BranchSystem::LambdaStep(double lambda) const {
 
 bool BranchSystem::Image(const Vec4& y, MapState* out, double* displacement) {
   const RobotModel r = Robot(y[3]);
-  const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+  const PeriodMap map(r, motion_);
   return map.Map(State(y), p_, out, displacement);
 }
 
 bool BranchSystem::Run(const Vec4& y, MapRun* run) {
   const RobotModel r = Robot(y[3]);
-  return run->Run(PeriodMap(r.forcing, r.params, r.alpha, motion_), State(y), p_);
+  return run->Run(PeriodMap(r, motion_), State(y), p_);
 }
 
 bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* grad,
@@ -55,7 +55,7 @@ bool BranchSystem::Jacobian(const Vec4& y, Eigen::MatrixXd* J, Eigen::VectorXd* 
   if (grad != nullptr) grad->resize(d + 1);
   {
     const RobotModel r = Robot(y[3]);
-    const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+    const PeriodMap map(r, motion_);
     if (!CentralJacobian(map, State(y), {y[0], y[1], y[2]}, p_, section_.free,
                          step_factor * options_.shooting.step, J, grad)) {
       return false;
@@ -101,7 +101,7 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
       return Outcome::kFailed;
     }
     const RobotModel robot = Robot(y[3]);
-    if (!WithinScale(robot.forcing, robot.params, robot.alpha, {y[0], y[1], y[2]})) {
+    if (!WithinScale(robot, {y[0], y[1], y[2]})) {
       return Outcome::kFailed;
     }
     MapState image;
@@ -152,7 +152,7 @@ BranchSystem::Outcome BranchSystem::Correct(const Condition& condition, Eigen::M
 
 bool BranchSystem::Measure(const Vec4& y, Node* node) {
   const RobotModel r = Robot(y[3]);
-  const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+  const PeriodMap map(r, motion_);
   node->y = y;
   PeriodicMotion& m = node->motion;
   m.status = ShootingStatus::kConverged;
@@ -187,7 +187,7 @@ PeriodicMotion BranchSystem::Reshoot(double lambda, const PhaseState& state,
   const RobotModel robot = Robot(lambda);
   ShootingOptions shooting = options_.shooting;
   shooting.step *= step_factor;
-  return ShootPeriodicMotion(robot.forcing, robot.params, robot.alpha, state, p_, shooting);
+  return ShootPeriodicMotion(robot, state, p_, shooting);
 }
 
 bool BranchSystem::Tangent(const Eigen::MatrixXd& J, const Vec4& orient, Vec4* tangent) const {
@@ -270,7 +270,7 @@ bool BranchSystem::Replace(Node* node) {
   const double h = options_.shooting.step;
   const auto carry = [&](const Vec4& y, MapState* s) {
     const RobotModel r = Robot(y[3]);
-    const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+    const PeriodMap map(r, motion_);
     *s = {State(y), section_.mode};
     return map.Shift(*s, shift);
   };

@@ -294,8 +294,7 @@ Branch ContinueBranch(const RobotFamily& family, const PhaseState& start,
   for (double lambda : {options.from, options.start, options.to}) CheckRobot(family, lambda, start);
   Branch branch;
   const RobotModel r = family(options.start);
-  const PeriodicMotion pm =
-      FindPeriodicMotion(r.forcing, r.params, r.alpha, start, options.shooting);
+  const PeriodicMotion pm = FindPeriodicMotion(r, start, options.shooting);
   if (pm.status != ShootingStatus::kConverged) {
     branch.status = pm.status == ShootingStatus::kEventLimit ? ContinuationStatus::kEventLimit
                                                              : ContinuationStatus::kNoMotion;

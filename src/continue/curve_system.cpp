@@ -80,7 +80,7 @@ int CurveSystem::Side(int r, const Vec5& y, double h, const Eigen::RowVectorXd* 
 
 bool CurveSystem::Image(const Vec5& y, MapState* out, double* displacement) {
   const RobotModel r = Robot(y);
-  const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+  const PeriodMap map(r, motion_);
   return map.Map(State(y), p_, out, displacement);
 }
 
@@ -276,7 +276,7 @@ bool CurveSystem::Complete(const Vec5& y, const Vec5& orient, CurveNode* node) {
   node->y = y;
   if (!Jacobian(y, &node->J, &node->condition)) return false;
   const RobotModel r = Robot(y);
-  const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+  const PeriodMap map(r, motion_);
   PeriodicMotion& m = node->motion;
   m.status = ShootingStatus::kConverged;
   m.period = p_;
@@ -312,7 +312,7 @@ bool CurveSystem::Replace(CurveNode* node) {
   std::vector<double> phases = node->event_phases;
   const double shift = SectionShift(phases) / kTau;
   const RobotModel r = Robot(node->y);
-  const PeriodMap map(r.forcing, r.params, r.alpha, motion_);
+  const PeriodMap map(r, motion_);
   MapState at{State(node->y), section_.mode};
   if (!map.Shift(at, shift)) return false;
   section_ = {at.z.psi, at.mode, FreeCoordinates(at.mode, at.z.v)};

@@ -241,9 +241,7 @@ std::string EdgeText(const BandEdge& e, const ValueText& value) {
 // T0 (relative to its value), e over [0, 1] and alpha halfway to each end of (0, 1).
 std::vector<RobustnessParameter> ModelParameters(const RobotModel& m,
                                                  const RobustnessOptions& options) {
-  const auto along = [&](const char* name) {
-    return NamedParameterFamily(m.forcing, m.params, m.alpha, name);
-  };
+  const auto along = [&](const char* name) { return NamedParameterFamily(m, name); };
   return {RelativeParameter("T0", along("T0"), m.params.T0, options.t0_factor),
           {"e", along("e"), m.params.e, 0.0, 1.0, 1.0},
           {"alpha", along("alpha"), m.alpha, 0.5 * m.alpha, 0.5 * (1.0 + m.alpha), 1.0}};
@@ -389,9 +387,9 @@ ParameterRobustness ContinueRobustness(const RobustnessParameter& p, const Phase
 GaitRobustness ComputeMotionRobustness(const MotionToContinue& m,
                                        const RobustnessOptions& options) {
   options.Validate();
-  m.params.Validate();
+  m.robot.params.Validate();
   GaitRobustness g;
-  for (const RobustnessParameter& p : ModelParameters({m.forcing, m.params, m.alpha}, options)) {
+  for (const RobustnessParameter& p : ModelParameters(m.robot, options)) {
     g.parameters.push_back(ContinueRobustness(p, m.start, options));
   }
   return g;
@@ -417,7 +415,7 @@ GaitRobustness ComputeSpeedBands(const RobotModel& robot, const RobustnessOption
 }
 
 GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options) {
-  return ComputeMotionRobustness({orbit.forcing, Params{orbit.T0, orbit.e, 0.0}, orbit.alpha,
+  return ComputeMotionRobustness({{orbit.forcing, Params{orbit.T0, orbit.e, 0.0}, orbit.alpha},
                                   OrbitImpactState(orbit, orbit.forcing)},
                                  options);
 }

@@ -51,7 +51,7 @@ double BeyondSign(const Branch& branch, const SpecialPoint& grazing) {
 // state z where m passes z's phase (p times in its period p); infinite at the work bound.
 double DistanceAtPhase(const RobotModel& r, const PeriodicMotion& m, const PhaseState& z,
                        const ShootingOptions& so) {
-  const detail::PeriodMap map(r.forcing, r.params, r.alpha, detail::SimulationOf(so));
+  const detail::PeriodMap map(r, detail::SimulationOf(so));
   detail::MapState s{m.state, m.mode};
   const double shift = std::fmod(std::fmod(z.psi - m.state.psi, kTau) + kTau, kTau) / kTau;
   double nearest = kFar;
@@ -71,8 +71,7 @@ PeriodicMotion MotionBeyond(const RobotModel& r, const SpecialPoint& grazing, do
                             ShootingOptions so) {
   for (int transient : {0, kSettlePeriods}) {
     so.transient = transient;
-    const PeriodicMotion m =
-        FindPeriodicMotion(r.forcing, r.params, r.alpha, grazing.motion.state, so);
+    const PeriodicMotion m = FindPeriodicMotion(r, grazing.motion.state, so);
     if (m.status == ShootingStatus::kConverged && !SameImpactsPerPeriod(m, grazing.motion) &&
         DistanceAtPhase(r, m, grazing.motion.state, so) <= near) {
       return m;

@@ -18,9 +18,9 @@ PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing) {
   return {1.0, -orbit.e * orbit.u, orbit.v_plus, orbit.forcing.phi0() - forcing.phi0()};
 }
 
-PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha) {
-  RefusePulse(forcing, "from_orbit (a start on the analytic one-impact orbit)");
-  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+PhaseState OneImpactOrbitStart(const RobotModel& robot) {
+  RefusePulse(robot.forcing, "from_orbit (a start on the analytic one-impact orbit)");
+  const std::vector<Solution> orbits = FindRobotOrbits(robot);
   const Solution* best = nullptr;
   double best_radius = 0.0;
   for (const Solution& s : orbits) {
@@ -35,18 +35,16 @@ PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, dou
     throw std::invalid_argument(fmt::format(
         "from_orbit is invalid for this robot: it has no valid one-impact orbit at alpha = {} "
         "(capsubot orbits lists them)",
-        alpha));
+        robot.alpha));
   }
-  return OrbitImpactState(best->orbit, forcing);
+  return OrbitImpactState(best->orbit, robot.forcing);
 }
 
-RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
-                                 const std::string& param) {
+RobotFamily NamedParameterFamily(const RobotModel& robot, const std::string& param) {
   int harmonic = 0;
   const ModelParameter which = ParseRobotParameter(param, &harmonic);
-  CheckRobotParameter(forcing, which, harmonic);
-  const RobotModel base{forcing, params, alpha};
-  return [base, which, harmonic](double value) {
+  CheckRobotParameter(robot.forcing, which, harmonic);
+  return [base = robot, which, harmonic](double value) {
     RobotModel r = base;
     SetParameter(r, which, harmonic, value);
     return r;
@@ -67,15 +65,15 @@ double RobotValueInRange(const RobotModel& robot, const std::string& param, cons
   return value;
 }
 
-RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
-                                   const std::string& param, const std::string& param2) {
+RobotSurface NamedParameterSurface(const RobotModel& robot, const std::string& param,
+                                   const std::string& param2) {
   int h1 = 0, h2 = 0;
   const ModelParameter p1 = ParseRobotParameter(param, &h1);
-  CheckRobotParameter(forcing, p1, h1);
+  CheckRobotParameter(robot.forcing, p1, h1);
   ModelParameter p2 = ModelParameter::kA;
   try {  // the messages name the second parameter: "param2 = ..." instead of "parameter = ..."
     p2 = ParseRobotParameter(param2, &h2);
-    CheckRobotParameter(forcing, p2, h2);
+    CheckRobotParameter(robot.forcing, p2, h2);
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what(), word = "parameter";
     if (message.compare(0, word.size(), word) != 0) throw;
@@ -89,11 +87,10 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
     throw std::invalid_argument(fmt::format(
         "param2 = {} is invalid: expected a parameter other than param = {}", param2, param));
   }
-  const RobotModel base{forcing, params, alpha};
   // A is set first: it makes the force the harmonic family anew, which a1 set before would
   // leave (a1 != 0 is no longer that family, and A no longer settable).
   const bool a_second = p2 == ModelParameter::kA;
-  return [base, p1, h1, p2, h2, a_second](double lambda, double mu) {
+  return [base = robot, p1, h1, p2, h2, a_second](double lambda, double mu) {
     RobotModel r = base;
     if (a_second) SetParameter(r, p2, h2, mu);
     SetParameter(r, p1, h1, lambda);
@@ -102,16 +99,15 @@ RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params,
   };
 }
 
-Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
-                         const std::string& param, const PhaseState& start,
+Branch ContinueParameter(const RobotModel& robot, const std::string& param, const PhaseState& start,
                          ContinuationOptions options) {
-  const RobotFamily family = NamedParameterFamily(forcing, params, alpha, param);
-  params.Validate();
+  const RobotFamily family = NamedParameterFamily(robot, param);
+  robot.params.Validate();
   ContinuationOptions range = options;  // the options' own rules first, the start's value aside
   range.start = options.from;
   range.Validate();
-  options.start = RobotValueInRange({forcing, params, alpha}, param, {"from", options.from},
-                                    {"to", options.to}, "branch");
+  options.start =
+      RobotValueInRange(robot, param, {"from", options.from}, {"to", options.to}, "branch");
   return ContinueBranch(family, start, options);
 }
 

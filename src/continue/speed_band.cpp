@@ -26,7 +26,7 @@ class SpeedFromRest {
   // The attractors at `lambda` (simulated anew), their speed kept.
   capsubot::Attractors Attractors(double lambda) {
     const RobotModel r = family_(lambda);
-    capsubot::Attractors a = FindAttractors(r.forcing, r.params, r.alpha, options_);
+    capsubot::Attractors a = FindAttractors(r, options_);
     speeds_.emplace(lambda, a.mean_velocity);
     return a;
   }

@@ -96,7 +96,7 @@ void ScanFlight(const Flight& f, SimMode mode, double start, double end, Wall on
 
 bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
                       const MotionOptions& motion, WallApproach* approach, Wall only) {
-  const PeriodMap map(robot.forcing, robot.params, robot.alpha, motion);
+  const PeriodMap map(robot, motion);
   MapState s{z, SimMode::kRest};
   EventLog log;
   if (!map.Shift(s, p, &log)) return false;
@@ -122,7 +122,7 @@ bool FindWallApproach(const RobotModel& robot, const PhaseState& z, int p,
 
 bool GrazingCondition(const RobotModel& robot, const PhaseState& z, const WallApproach& approach,
                       const MotionOptions& motion, double* g) {
-  const PeriodMap map(robot.forcing, robot.params, robot.alpha, motion);
+  const PeriodMap map(robot, motion);
   const double q0 = 0.5 * (approach.start + approach.phase);
   MapState s{z, SimMode::kRest};
   if (!map.Shift(s, q0 / kTau) || s.mode != approach.mode) return false;

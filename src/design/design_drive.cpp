@@ -73,10 +73,10 @@ DriveForce Negated(DriveForce d) {
 // The dimensionless robot of the winner, its force negated for the backward drive.
 DesignModel ModelOf(const DesignInput& in, const ReachResult& r, const Robot& robot, double sign) {
   DesignModel m;
-  m.forcing = ScaledDrive(r.forcing, sign);
-  m.params.T0 = r.T0;
-  m.params.e = in.e;
-  m.alpha = r.alpha;
+  m.robot.forcing = ScaledDrive(r.forcing, sign);
+  m.robot.params.T0 = r.T0;
+  m.robot.params.e = in.e;
+  m.robot.alpha = r.alpha;
   m.omega = robot.omega;
   return m;
 }

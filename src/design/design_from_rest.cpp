@@ -73,7 +73,7 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
   }
   const Robot r = ctx->At(y, n);
   const DesignModel m = MapToModel(*ctx->input, r.m2, r.frequency);
-  const Attractors a = FindAttractors(m.forcing, m.params, m.alpha, ctx->search);
+  const Attractors a = FindAttractors(m.robot, ctx->search);
   ++ctx->evaluations;
   const bool feasible = a.event_limit_starts == 0 && !std::isnan(a.mean_velocity);
   if (!feasible) ++ctx->rejected;
@@ -96,7 +96,7 @@ Energy AttractorEnergy(const DesignModel& m, const Motion& motion, const MotionO
     }
   } observer;
   SimOptions sim;
-  sim.alpha = m.alpha;
+  sim.alpha = m.robot.alpha;
   sim.x0 = motion.section.x;
   sim.u0 = motion.section.u;
   sim.v0 = motion.section.v;
@@ -104,8 +104,8 @@ Energy AttractorEnergy(const DesignModel& m, const Motion& motion, const MotionO
   sim.chatter_velocity = options.chatter_velocity;
   sim.max_events_per_period = options.max_events_per_period;
   sim.energy = true;
-  const Forcing f = m.forcing.WithPhase(m.forcing.phi0() + motion.section.psi);
-  const SimResult r = Simulate(f, m.params, sim, &observer);
+  const Forcing f = m.robot.forcing.WithPhase(m.robot.forcing.phi0() + motion.section.psi);
+  const SimResult r = Simulate(f, m.robot.params, sim, &observer);
   u = observer.u;
   if (r.status != SimStatus::kOk) return {};
   Energy e = r.energy;
@@ -257,7 +257,7 @@ FromRestBest EvaluateModelFromRest(const DesignInput& in, const DesignModel& mod
   b.frequency_hz = frequency;
   b.model = model;
   const DesignModel& m = b.model;
-  b.attractors = FindAttractors(m.forcing, m.params, m.alpha, from_rest);
+  b.attractors = FindAttractors(m.robot, from_rest);
   b.mean_velocity = b.attractors.mean_velocity;
   b.forward_fraction = b.backward_fraction = 0.0;
   for (const Attractor& a : b.attractors.attractors) {
@@ -292,7 +292,7 @@ FromRestBest EvaluateModelFromRest(const DesignInput& in, const DesignModel& mod
   }
   b.energy = sum;
   const double I = b.mean_velocity * kTau;  // displacement per forcing period [L]
-  detail::FillUserUnits(in, m.params.T0, m.omega, b.mean_velocity, I, u, b.energy, b);
+  detail::FillUserUnits(in, m.robot.params.T0, m.omega, b.mean_velocity, I, u, b.energy, b);
   b.message = Describe(in, b);  // with its speed
   return b;
 }

@@ -125,16 +125,16 @@ DesignModel MapToModel(const DesignInput& in, double m2, double frequency) {
       if (!f.cos.empty()) a[k] = f.cos[k] / force_unit;
       b[k] = f.sin[k] / force_unit;
     }
-    m.forcing = Forcing::Fourier(f.bias / force_unit, a, b, 0.0);
+    m.robot.forcing = Forcing::Fourier(f.bias / force_unit, a, b, 0.0);
   } else {
-    m.forcing = Forcing::Harmonic(f.amplitude / force_unit, f.bias / force_unit, 0.0);
+    m.robot.forcing = Forcing::Harmonic(f.amplitude / force_unit, f.bias / force_unit, 0.0);
   }
-  m.params.T0 = in.mu * in.g / w2L;
-  m.params.e = in.e;
-  m.params.margin = in.margin;
-  m.params.margin_stroke = in.margin_stroke;
-  m.params.stick_margin = in.stick_margin;
-  m.alpha = m2 / (in.m1 + m2);
+  m.robot.params.T0 = in.mu * in.g / w2L;
+  m.robot.params.e = in.e;
+  m.robot.params.margin = in.margin;
+  m.robot.params.margin_stroke = in.margin_stroke;
+  m.robot.params.stick_margin = in.stick_margin;
+  m.robot.alpha = m2 / (in.m1 + m2);
   return m;
 }
 

@@ -13,7 +13,7 @@ namespace capsubot {
 RobotFamily InnerMassFamily(const DesignInput& input, double m2, double frequency) {
   return [input, m2, frequency](double lambda) {
     const DesignModel m = MapToModel(input, lambda * m2, frequency);
-    return RobotModel{m.forcing, m.params, m.alpha};
+    return m.robot;
   };
 }
 
@@ -28,11 +28,9 @@ GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gai
   const Orbit& o = gait.solution.orbit;
   // The design's robot has phi0 = 0: the orbit's impact falls at its phase phi0 of that force.
   // Every family is of that robot, so that the bands' starts from rest are the same.
-  const Forcing& motor = gait.model.forcing;
-  const PhaseState start = OrbitImpactState(o, motor);
-  const auto along = [&](const char* name) {
-    return NamedParameterFamily(motor, Params{o.T0, o.e, 0.0}, o.alpha, name);
-  };
+  const RobotModel robot{gait.model.robot.forcing, Params{o.T0, o.e, 0.0}, o.alpha};
+  const PhaseState start = OrbitImpactState(o, robot.forcing);
+  const auto along = [&](const char* name) { return NamedParameterFamily(robot, name); };
   GaitRobustness g;
   const auto follow = [&](const RobustnessParameter& p) {
     return ContinueRobustness(p, start, options);

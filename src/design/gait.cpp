@@ -56,8 +56,8 @@ std::array<double, kLimits> LimitSlacks(const DesignInput& in, const Validity& v
 
 // The limits whose slack at the gait is below kBindingTol (a NaN slack never binds).
 std::vector<std::string> Binding(const DesignInput& in, const Gait& gait) {
-  const std::array<double, kLimits> slack =
-      LimitSlacks(in, gait.solution.validity, gait.model.params.T0, gait.stability.spectral_radius);
+  const std::array<double, kLimits> slack = LimitSlacks(
+      in, gait.solution.validity, gait.model.robot.params.T0, gait.stability.spectral_radius);
   std::vector<std::string> names;
   for (std::size_t k = 0; k < kLimits; ++k) {
     if (slack[k] <= kBindingTol) names.emplace_back(LimitName(k));
@@ -110,12 +110,12 @@ Gait EvaluateGait(const DesignInput& input, double m2, double frequency, double*
   gait.frequency_hz = frequency;
   gait.model = MapToModel(input, m2, frequency);
   const DesignModel& m = gait.model;
-  if (!WithinForceBound(m.forcing.MaxAbs(), m.params.T0)) {
+  if (!WithinForceBound(m.robot.forcing.MaxAbs(), m.robot.params.T0)) {
     gait.status = GaitStatus::kMotorSlidesShell;
     return gait;
   }
   const std::vector<Solution> orbits =
-      FindRobotOrbits(m.forcing, m.params, m.alpha, &gait.complete, input.orbit_evaluations);
+      FindRobotOrbits(m.robot, &gait.complete, input.orbit_evaluations);
   gait.orbits = static_cast<int>(orbits.size());
   gait.status = orbits.empty() ? GaitStatus::kNoOrbit : GaitStatus::kNotRobust;
   for (const Solution& s : orbits) {

@@ -80,7 +80,7 @@ BifurcationJobPlan PlanBifurcationJob(const BifurcationJobOptions& options) {
         fmt::format("to = {} is invalid with from = {}: expected a range, to other than from",
                     FormatNumber(d.to), FormatNumber(d.from)));
   }
-  ValidateBifurcation(plan.robot.forcing, plan.robot.params, alpha, d);
+  ValidateBifurcation(plan.robot, d);
   return plan;
 }
 
@@ -96,8 +96,7 @@ BifurcationJobResult RunBifurcationJob(const BifurcationJobOptions& options,
   result.summary = options.files.summary;
   if (plan.diagram.shards > 1) {
     const BifurcationShardSummary s =
-        WriteBifurcationShard(robot.forcing, robot.params, robot.alpha, plan.diagram, options.files,
-                              options.progress, backend);
+        WriteBifurcationShard(robot, plan.diagram, options.files, options.progress, backend);
     result.impact_rows = s.impacts;
     result.summary_rows = s.summary_rows;
     result.parts = s.parts;
@@ -105,8 +104,7 @@ BifurcationJobResult RunBifurcationJob(const BifurcationJobOptions& options,
     return result;
   }
   CheckWritable(options.files.impacts, "impacts");  // fail on an unwritable path before the run
-  result.rows = ComputeBifurcation(robot.forcing, robot.params, robot.alpha, plan.diagram,
-                                   options.progress, backend);
+  result.rows = ComputeBifurcation(robot, plan.diagram, options.progress, backend);
   WriteDiagram(result.rows, plan.diagram, options.files);
   result.impact_rows = static_cast<std::int64_t>(result.rows.impacts.size());
   if (!result.summary.empty()) {

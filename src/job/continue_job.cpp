@@ -45,8 +45,7 @@ SwitchResult Switch(const ContinueJobOptions& options, const Branch& branch) {
   const SpecialPoint* at = First(branch, TypeOf(s.point), !grazing);
   if (at == nullptr) return s;
   s.at = *at;
-  const RobotFamily family =
-      NamedParameterFamily(options.forcing, options.params, options.alpha, options.param);
+  const RobotFamily family = NamedParameterFamily(ContinuedRobot(options), options.param);
   s.branch = grazing ? SwitchAtGrazing(family, branch, *at, options.continuation)
                      : SwitchAtPeriodDoubling(family, *at, options.continuation);
   return s;
@@ -72,9 +71,8 @@ FollowResult FollowCurve(const ContinueJobOptions& options, const Branch& branch
   c.to2 = f.to2;
   c.start2 = r.value2;
   c.continuation = options.continuation;
-  r.curve = FollowSpecialPoint(NamedParameterSurface(options.forcing, options.params, options.alpha,
-                                                     options.param, f.param2),
-                               *sp, c);
+  r.curve = FollowSpecialPoint(
+      NamedParameterSurface(ContinuedRobot(options), options.param, f.param2), *sp, c);
   return r;
 }
 
@@ -93,14 +91,14 @@ SwitchPoint ParseSwitchPoint(const std::string& name) {
 void ContinueJobOptions::Validate() const {
   params.Validate();
   if (const PhaseState* state = std::get_if<PhaseState>(&start)) RequirePhase("psi", state->psi);
-  NamedParameterFamily(forcing, params, alpha, param);  // the name, and the force has it
+  NamedParameterFamily(ContinuedRobot(*this), param);  // the name, and the force has it
   ContinuationOptions range = continuation;  // the options' own rules, the start's value aside
   range.start = range.from;
   range.Validate();
   RobotValueInRange(ContinuedRobot(*this), param, {"from", continuation.from},
                     {"to", continuation.to}, "branch");
   if (!follow) return;
-  NamedParameterSurface(forcing, params, alpha, param, follow->param2);
+  NamedParameterSurface(ContinuedRobot(*this), param, follow->param2);
   if (!IsFollowable(follow->type)) {
     throw std::invalid_argument(fmt::format(
         "follow = {} is invalid: expected one of fold, period_doubling, grazing, speed_extremum",
@@ -127,10 +125,10 @@ ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
   result.param = options.param;
   tell(fmt::format("the branch in {}", options.param));
   const PhaseState start = std::holds_alternative<FromOneImpactOrbit>(options.start)
-                               ? OneImpactOrbitStart(options.forcing, options.params, options.alpha)
+                               ? OneImpactOrbitStart(ContinuedRobot(options))
                                : std::get<PhaseState>(options.start);
-  result.branch = ContinueParameter(options.forcing, options.params, options.alpha, options.param,
-                                    start, options.continuation);
+  result.branch =
+      ContinueParameter(ContinuedRobot(options), options.param, start, options.continuation);
   if (options.switch_at) {
     tell(*options.switch_at == SwitchPoint::kGrazing
              ? "the branch beyond its first grazing"

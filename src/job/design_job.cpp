@@ -89,7 +89,7 @@ DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one
     r.robustness = ComputeDesignRobustness(options.input, r.design.one_impact, robustness);
     const Orbit& o = r.design.one_impact.solution.orbit;
     // The robot of the speed bands (the motor's force, phi0 = 0): the same starts from rest.
-    r.gait_from_rest = CheckGaitFromRest(o, r.design.one_impact.model.forcing,
+    r.gait_from_rest = CheckGaitFromRest(o, r.design.one_impact.model.robot.forcing,
                                          Params{o.T0, o.e, 0.0}, robustness.band.from_rest);
   }
   if (one.from_rest) {

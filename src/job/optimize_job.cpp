@@ -100,7 +100,7 @@ MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
   }
   if (const Motion* motion = PeriodicMotionFromRest(r.reach)) {
     r.reach_robustness =
-        ComputeMotionRobustness({r.reach.forcing, p, r.reach.alpha, motion->section}, robustness);
+        ComputeMotionRobustness({{r.reach.forcing, p, r.reach.alpha}, motion->section}, robustness);
   } else if (!std::isnan(r.reach.mean_velocity)) {
     r.reach_robustness = ComputeSpeedBands({r.reach.forcing, p, r.reach.alpha}, robustness,
                                            "its most common motion from rest is not periodic");

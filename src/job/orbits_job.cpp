@@ -24,7 +24,7 @@ OrbitsJobResult RunOrbitsJob(const OrbitsJobOptions& options) {
   OrbitsJobResult r;
   r.options = options;
   r.options.interrupt = nullptr;
-  r.orbits = FindRobotOrbits(options.forcing, options.params, options.alpha, &r.complete,
+  r.orbits = FindRobotOrbits({options.forcing, options.params, options.alpha}, &r.complete,
                              options.max_evaluations, [&options] { Poll(options.interrupt); });
   return r;
 }

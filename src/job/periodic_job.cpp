@@ -38,12 +38,11 @@ PeriodicJobResult RunPeriodicJob(const PeriodicJobOptions& options) {
   result.options.on_stage = {};
   TellStage(options.on_stage, "periodic: Newton shooting");
   const PhaseState state = StartState(options.start);
-  const Forcing& f = options.forcing;
+  const RobotModel robot{options.forcing, options.params, options.alpha};
   if (const auto* known = std::get_if<PeriodicOfPeriod>(&options.start)) {
-    result.motion =
-        ShootPeriodicMotion(f, options.params, options.alpha, state, known->period, shooting);
+    result.motion = ShootPeriodicMotion(robot, state, known->period, shooting);
   } else {
-    result.motion = FindPeriodicMotion(f, options.params, options.alpha, state, shooting);
+    result.motion = FindPeriodicMotion(robot, state, shooting);
   }
   TellStage(options.on_stage, "");
   return result;

@@ -8,9 +8,7 @@
 
 namespace capsubot {
 
-BlockComputeFactory StartMapWork::Blocks() const {
-  return MotionBlocks(forcing, params, alpha, starts, attractor);
-}
+BlockComputeFactory StartMapWork::Blocks() const { return MotionBlocks(robot, starts, attractor); }
 
 namespace detail {
 
@@ -30,7 +28,7 @@ AttractorsJobResult RunStartMap(const AttractorsJobOptions& options,
     std::get<StartMapShard>(result.options.run).file.u0 = u0;
     TellStage(options.on_stage, fmt::format("{}: shard {}/{} of {} starts", command, file.shard,
                                             file.shards, starts.size()));
-    result.shard = WriteStartShard(options.forcing, options.params, options.alpha, starts,
+    result.shard = WriteStartShard({options.forcing, options.params, options.alpha}, starts,
                                    options.attractor, file, options.progress, backend);
     TellStage(options.on_stage, "");
     return result;
@@ -38,7 +36,7 @@ AttractorsJobResult RunStartMap(const AttractorsJobOptions& options,
   const WholeStartMap& whole = std::get<WholeStartMap>(options.run);
   if (!whole.output.empty()) CheckWritable(whole.output, "output");  // before the long run
   TellStage(options.on_stage, fmt::format("{}: {} starts", command, starts.size()));
-  result.attractors = ClassifyStarts(options.forcing, options.params, options.alpha, starts,
+  result.attractors = ClassifyStarts({options.forcing, options.params, options.alpha}, starts,
                                      options.attractor, options.progress, backend);
   if (!whole.output.empty()) {
     WriteStartMap(whole.output, starts, result.attractors, u0, whole.comments);
@@ -50,9 +48,7 @@ AttractorsJobResult RunStartMap(const AttractorsJobOptions& options,
 StartMapWork StartMapWorkOf(const AttractorsJobOptions& options,
                             const std::vector<PhaseState>& starts) {
   StartMapWork work;
-  work.forcing = options.forcing;
-  work.params = options.params;
-  work.alpha = options.alpha;
+  work.robot = {options.forcing, options.params, options.alpha};
   work.attractor = options.attractor;
   if (const auto* shard = std::get_if<StartMapShard>(&options.run)) {
     work.starts = ShardStarts(starts, shard->file.shard, shard->file.shards);

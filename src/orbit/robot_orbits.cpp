@@ -35,16 +35,16 @@ constexpr double kMinWidth = 1e-10;  // phase resolution of the exclusion refine
 // with it: then only the one-sided test min(|Psi(lo)|, |Psi(hi)|) > L w is used (valid with one
 // jump in the interval), and a "sign change" at a jump is rejected because Psi is not small there.
 struct PsiFunction {
-  const Forcing* forcing;
-  const Params* params;
-  double a;
+  const RobotModel* robot;  // its alpha is a
   double operator()(double phi0) const {
-    const Orbit o = ComputeOrbit(forcing->WithPhase(phi0), *params);
+    const Orbit o = ComputeOrbit(robot->forcing.WithPhase(phi0), robot->params);
+    const double a = robot->alpha;
     return (1.0 - a) * o.psi0 + a * o.psi1;
   }
   // dPsi/dphi0 from the envelope identity above.
   double Derivative(double phi0) const {
-    const Orbit o = ComputeOrbit(forcing->WithPhase(phi0), *params);
+    const Orbit o = ComputeOrbit(robot->forcing.WithPhase(phi0), robot->params);
+    const double a = robot->alpha;
     const Forcing& f = o.forcing;
     const double F0 = f.F(0.0);
     return (1.0 - a) * kTau * (F0 - f.mean()) - a * (f.Pi(o.phi1) - o.phi1 * F0);
@@ -71,11 +71,11 @@ struct Interval {
   double lo, hi, plo, phi;
 };
 
-void CheckRobotOrbitsInput(const Params& params, double alpha, std::int64_t max_evaluations) {
-  params.Validate();
-  if (!(alpha > 0.0 && alpha < 1.0)) {
+void CheckRobotOrbitsInput(const RobotModel& robot, std::int64_t max_evaluations) {
+  robot.params.Validate();
+  if (!(robot.alpha > 0.0 && robot.alpha < 1.0)) {
     throw std::invalid_argument(
-        fmt::format("mass ratio alpha = {} is invalid: expected 0 < alpha < 1", alpha));
+        fmt::format("mass ratio alpha = {} is invalid: expected 0 < alpha < 1", robot.alpha));
   }
   if (max_evaluations < 1) {
     throw std::invalid_argument(
@@ -171,19 +171,21 @@ std::vector<Root> OneRootPerBand(const PsiFunction& psi, double accept, std::vec
 
 }  // namespace
 
-std::vector<Solution> FindRobotOrbits(const Forcing& forcing, const Params& params, double alpha,
-                                      bool* complete, std::int64_t max_evaluations,
+std::vector<Solution> FindRobotOrbits(const RobotModel& robot, bool* complete,
+                                      std::int64_t max_evaluations,
                                       const std::function<void()>& poll) {
-  CheckRobotOrbitsInput(params, alpha, max_evaluations);
+  CheckRobotOrbitsInput(robot, max_evaluations);
   if (complete != nullptr) *complete = true;
   std::vector<Solution> found;
+  const Forcing& forcing = robot.forcing;
+  const Params& params = robot.params;
   double S = 0.0;
   for (int k = 1; k <= forcing.harmonics(); ++k) S += std::hypot(forcing.a(k), forcing.b(k));
   // Without a directed force there is no orbit; a constant force has no phase to choose.
   if (!(forcing.mean() > 0.0) || S == 0.0) return found;
 
-  const PsiFunction psi{&forcing, &params, alpha};
-  const double L = kTau * S * (1.0 + alpha);
+  const PsiFunction psi{&robot};
+  const double L = kTau * S * (1.0 + robot.alpha);
   // Rounding allowance in Psi (its terms are of order tau^2 (S + c + T0)).
   const double noise = 1e-12 * kTau * kTau * (S + forcing.mean() + params.T0);
   const PsiBounds bounds{L, noise, L * kMinWidth + noise, forcing.MaxAbs() < params.T0};

@@ -93,6 +93,7 @@ struct Context {
   Forcing ForceAt(const double* y) const {
     return DriveAt(family, y, BoundAt(ParamsAt(y).T0, AlphaAt(y)), phi0);
   }
+  RobotModel RobotAt(const double* y) const { return {ForceAt(y), ParamsAt(y), AlphaAt(y)}; }
   double AlphaAt(const double* y) const {
     return std::isnan(fixed_alpha) ? y[family.Dimension()] : fixed_alpha;
   }
@@ -107,26 +108,24 @@ struct Context {
 // The objective at y; infeasible (the penalty) when a start ends in event_limit.
 double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) {
   auto* ctx = static_cast<Context*>(data);
-  const Params p = ctx->ParamsAt(y);
-  const Forcing f = ctx->ForceAt(y);
+  const RobotModel robot = ctx->RobotAt(y);
   Attractors a;
   try {
-    a = FindAttractors(f, p, ctx->AlphaAt(y), ctx->search);
+    a = FindAttractors(robot, ctx->search);
   } catch (const TimeUp&) {
     ctx->time_up = true;
     return ctx->penalty;
   }
   ++ctx->evaluations;
-  const double score = ctx->Score(a, p.T0);
+  const double score = ctx->Score(a, robot.params.T0);
   if (!(score > ctx->penalty)) ++ctx->rejected_evaluations;
   ctx->seen.push_back({std::vector<double>(y, y + n), score});
   return score;
 }
 
 // Mean velocity of a spread run, NaN if a start hit the work bound (counted in `spread`).
-double SpreadRun(const Forcing& forcing, const Params& params, double alpha,
-                 const FromRestOptions& options, ReachSpread& spread) {
-  const Attractors a = FindAttractors(forcing, params, alpha, options);
+double SpreadRun(const RobotModel& robot, const FromRestOptions& options, ReachSpread& spread) {
+  const Attractors a = FindAttractors(robot, options);
   spread.event_limit_starts += a.event_limit_starts;
   return a.event_limit_starts > 0 ? ReachSpread::kNaN : a.mean_velocity;
 }
@@ -136,18 +135,17 @@ double RelativeChange(double v, double mean_velocity) {
   return std::abs(v - mean_velocity) / std::abs(mean_velocity);
 }
 
-ReachSpread Spread(const Forcing& forcing, const Params& params, double alpha,
-                   const FromRestOptions& check, double mean_velocity) {
+ReachSpread Spread(const RobotModel& robot, const FromRestOptions& check, double mean_velocity) {
   ReachSpread s;
   FromRestOptions small = check, large = check;
   small.attractor.motion.chatter_velocity /= kChatterFactor;
   large.attractor.motion.chatter_velocity *= kChatterFactor;
-  s.chatter_small = SpreadRun(forcing, params, alpha, small, s);
-  s.chatter_large = SpreadRun(forcing, params, alpha, large, s);
-  if (params.e == 1.0) {
-    Params p = params;
-    p.e = kNearlyElastic;
-    s.e_0999 = SpreadRun(forcing, p, alpha, check, s);
+  s.chatter_small = SpreadRun(robot, small, s);
+  s.chatter_large = SpreadRun(robot, large, s);
+  if (robot.params.e == 1.0) {
+    RobotModel nearly_elastic = robot;
+    nearly_elastic.params.e = kNearlyElastic;
+    s.e_0999 = SpreadRun(nearly_elastic, check, s);
   }
   if (s.event_limit_starts > 0) {
     s.max_relative_deviation = HUGE_VAL;
@@ -164,9 +162,7 @@ ReachSpread Spread(const Forcing& forcing, const Params& params, double alpha,
 
 // A force to re-check with the full settings, and what it reached.
 struct Candidate {
-  Forcing forcing;
-  double alpha;
-  Params params;  // the robot's, or at the candidate's T0
+  RobotModel robot;  // its params the robot's, or at the candidate's T0
   Attractors attractors;
   bool is_seed;
 };
@@ -262,15 +258,14 @@ const Candidate* Winner(std::vector<Candidate>& candidates, const Context& ctx,
   // Best first (ties: the seed, the simpler gait); infeasible candidates last.
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](const Candidate& a, const Candidate& b) {
-                     const double sa = ctx.Score(a.attractors, a.params.T0),
-                                  sb = ctx.Score(b.attractors, b.params.T0);
+                     const double sa = ctx.Score(a.attractors, a.robot.params.T0),
+                                  sb = ctx.Score(b.attractors, b.robot.params.T0);
                      return sa > sb || (sa == sb && a.is_seed && !b.is_seed);
                    });
   const Candidate* best = nullptr;
   for (const Candidate& c : candidates) {
-    if (!(ctx.Score(c.attractors, c.params.T0) > ctx.penalty)) break;
-    const ReachSpread spread =
-        Spread(c.forcing, c.params, c.alpha, options.check, c.attractors.mean_velocity);
+    if (!(ctx.Score(c.attractors, c.robot.params.T0) > ctx.penalty)) break;
+    const ReachSpread spread = Spread(c.robot, options.check, c.attractors.mean_velocity);
     if (best == nullptr) {
       best = &c;
       out.spread = spread;
@@ -378,24 +373,19 @@ std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
                     [&](const DriveSeed& d) { return SamePoint(p.y, PointOf(ctx, d)); })) {
       continue;
     }
-    const Params params = ctx.ParamsAt(p.y.data());
-    const Forcing f = ctx.ForceAt(p.y.data());
-    const double alpha = ctx.AlphaAt(p.y.data());
-    candidates.push_back(
-        {f, alpha, params, FindAttractors(f, params, alpha, options.check), false});
+    const RobotModel robot = ctx.RobotAt(p.y.data());
+    candidates.push_back({robot, FindAttractors(robot, options.check), false});
     ++ctx.evaluations;
   }
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    const double alpha = std::isnan(options.alpha) ? starts[i].alpha : options.alpha;
-    Params params = ctx.params;
-    params.T0 = SeedT0(ctx, starts[i]);
-    const Forcing f = WithHarmonicsOf(ctx.family, starts[i].forcing);
-    if (i == 0 && seed_starts && alpha == seed.gait.solution.orbit.alpha) {
-      candidates.push_back({f, alpha, params, seed.from_rest.attractors, false});
+    RobotModel robot{WithHarmonicsOf(ctx.family, starts[i].forcing), ctx.params,
+                     std::isnan(options.alpha) ? starts[i].alpha : options.alpha};
+    robot.params.T0 = SeedT0(ctx, starts[i]);
+    if (i == 0 && seed_starts && robot.alpha == seed.gait.solution.orbit.alpha) {
+      candidates.push_back({robot, seed.from_rest.attractors, false});
       continue;
     }
-    candidates.push_back(
-        {f, alpha, params, FindAttractors(f, params, alpha, options.check), false});
+    candidates.push_back({robot, FindAttractors(robot, options.check), false});
     ++ctx.evaluations;
   }
   return candidates;
@@ -405,11 +395,11 @@ std::vector<Candidate> Recheck(Context& ctx, const ReachOptions& options,
 // drive besides the starting ones).
 void Report(const Candidate& best, const Context& ctx, const ReachOptions& options,
             const std::string& message, bool searched, ReachResult& out) {
-  out.forcing = best.forcing;
+  out.forcing = best.robot.forcing;
   out.max_abs_force = out.forcing.MaxAbs();
-  out.force_bound = ctx.BoundAt(best.params.T0, best.alpha);
-  out.alpha = best.alpha;
-  out.T0 = best.params.T0;
+  out.force_bound = ctx.BoundAt(best.robot.params.T0, best.robot.alpha);
+  out.alpha = best.robot.alpha;
+  out.T0 = best.robot.params.T0;
   out.attractors = best.attractors;
   out.mean_velocity = best.attractors.mean_velocity;
   if (ctx.FreeT0()) out.physical_speed = out.mean_velocity / std::sqrt(out.T0);

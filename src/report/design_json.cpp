@@ -64,10 +64,10 @@ nlohmann::json DirectionJson(const DesignInput& in, const FromRestBest* b) {
   const DesignModel& m = b->model;
   const bool ran = b->status != FromRestStatus::kNotRun;
   nlohmann::json d;
-  d["T0"] = ran ? m.params.T0 : nan;
-  d["A"] = ran && m.forcing.harmonic() ? m.forcing.amplitude() : nan;
-  d["c"] = ran ? m.forcing.mean() : nan;
-  d["alpha"] = ran ? m.alpha : nan;
+  d["T0"] = ran ? m.robot.params.T0 : nan;
+  d["A"] = ran && m.robot.forcing.harmonic() ? m.robot.forcing.amplitude() : nan;
+  d["c"] = ran ? m.robot.forcing.mean() : nan;
+  d["alpha"] = ran ? m.robot.alpha : nan;
   d["phi0"] = nan;  // no single impact phase: the starts cover every motor phase
   d["mean_velocity"] = b->mean_velocity;
   if (b->ok()) AddEnergyJson(d, b->energy);

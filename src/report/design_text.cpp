@@ -171,7 +171,7 @@ std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_
   if (!b.ok()) return t;
   const DesignModel& m = b.model;
   t += fmt::format("    inner mass      m2 = {}   (alpha = {:.6g}), f = {}\n", Num(b.m2_kg, " kg"),
-                   m.alpha, Num(b.frequency_hz, " Hz"));
+                   m.robot.alpha, Num(b.frequency_hz, " Hz"));
   t += fmt::format("    mean speed      {} over the starts, {} per period\n",
                    Num(b.speed_mm_s, " mm/s"), Num(b.displacement_mm, " mm"));
   t += fmt::format("    impact velocity {}\n",
@@ -185,10 +185,10 @@ std::string FromRestLines(const DesignInput& in, const FromRestBest& b, int max_
                    Num(b.friction_loss_mj, " mJ"), Num(b.impact_loss_mj, " mJ"));
   t += fmt::format("    cost            COT = {}, efficiency mu/COT = {}\n", Num(b.cot, ""),
                    Num(b.efficiency, ""));
-  t +=
-      fmt::format("    dimensionless   T0 = {}, A = {}, c = {}, alpha = {}\n", Num(m.params.T0, ""),
-                  Num(m.forcing.harmonic() ? m.forcing.amplitude() : kNaN, ""),
-                  Num(m.forcing.mean(), ""), Num(m.alpha, ""));
+  t += fmt::format("    dimensionless   T0 = {}, A = {}, c = {}, alpha = {}\n",
+                   Num(m.robot.params.T0, ""),
+                   Num(m.robot.forcing.harmonic() ? m.robot.forcing.amplitude() : kNaN, ""),
+                   Num(m.robot.forcing.mean(), ""), Num(m.robot.alpha, ""));
   return t + AttractorLines(b.attractors, 1e3 * b.model.omega * in.L, max_period);
 }
 

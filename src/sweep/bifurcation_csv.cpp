@@ -80,13 +80,13 @@ void BifurcationShardFiles::Validate() const {
   }
 }
 
-BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Params& params,
-                                              double alpha, const BifurcationOptions& options,
+BifurcationShardSummary WriteBifurcationShard(const RobotModel& robot,
+                                              const BifurcationOptions& options,
                                               const BifurcationShardFiles& files,
                                               const StartsProgress& progress,
                                               const BlockBackend& backend) {
   files.Validate();
-  ValidateBifurcation(forcing, params, alpha, options);
+  ValidateBifurcation(robot, options);
   const bool over = !options.over_values.empty();
   const std::string lines =
       files.comments + fmt::format("# shard {}/{} of {} continuations\n", options.shard,
@@ -135,7 +135,7 @@ BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Para
   for (const auto& file : open) file_rows.push_back(file->rows_resumed() - file->points_done());
   std::string rows;
   StreamBifurcation(
-      forcing, params, alpha, options, summary.resumed,
+      robot, options, summary.resumed,
       [&](const BifurcationDiagram& part) {
         const std::int64_t index = summary.parts++;
         for (std::size_t k = 0; k < open.size(); ++k) {

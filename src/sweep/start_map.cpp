@@ -85,8 +85,7 @@ std::vector<PhaseState> ShardStarts(const std::vector<PhaseState>& starts, int s
   return mine;
 }
 
-StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, double alpha,
-                                  const std::vector<PhaseState>& starts,
+StartShardSummary WriteStartShard(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                   const AttractorOptions& attractor,
                                   const StartShardOptions& options, const StartsProgress& progress,
                                   const BlockBackend& backend) {
@@ -98,9 +97,9 @@ StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, 
       StartMapHeader(options.u0);
   std::string description = "map of starts " + head;  // one line: the checkpoint's record
   std::replace(description.begin(), description.end(), '\n', '\x1f');
-  params.Validate();  // before the file is touched
+  robot.params.Validate();  // before the file is touched
   attractor.Validate();
-  for (const PhaseState& s : mine) ValidateStart(alpha, s);
+  for (const PhaseState& s : mine) ValidateStart(robot.alpha, s);
   detail::SweepFile file(options.output, description, head,
                          {static_cast<std::int64_t>(mine.size()), {}}, options.resume,
                          options.checkpoint_seconds, "shard");
@@ -109,7 +108,7 @@ StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, 
   summary.resumed = file.points_done();
   std::string rows;
   StreamLongRunMotions(
-      forcing, params, alpha, mine, attractor, file.points_done(),
+      robot, mine, attractor, file.points_done(),
       [&](std::int64_t begin, std::int64_t end, const Motion* motions) {
         rows.clear();
         for (std::int64_t i = begin; i < end; ++i) {

@@ -342,8 +342,7 @@ void SweepRowWriter::AppendReach(RowBuffer& out) const {
 int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
   bool complete = true;
   const RobotModel& robot = point_.robot;
-  const std::vector<Solution> orbits =
-      FindRobotOrbits(robot.forcing, robot.params, robot.alpha, &complete);
+  const std::vector<Solution> orbits = FindRobotOrbits(robot, &complete);
   if (!complete) {  // never write a row set that may miss orbits
     throw std::runtime_error(fmt::format(
         "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "

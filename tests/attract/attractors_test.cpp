@@ -64,7 +64,7 @@ SimState After(const Forcing& forcing, const Params& params, double alpha, const
 
 TEST(Attractors, StableOptimumFromRestEndsInThreeRightOneLeftMotionAtItsLongRunVelocity) {
   const StableOptimum r;
-  const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, FromRestOptions{});
+  const Attractors a = FindAttractors({r.forcing, r.params, r.alpha}, FromRestOptions{});
   ASSERT_EQ(a.starts, 64);
   ASSERT_EQ(a.motions.size(), 64U);
   ASSERT_FALSE(a.attractors.empty());
@@ -89,7 +89,7 @@ TEST(Attractors, StableOptimumFromRestEndsInThreeRightOneLeftMotionAtItsLongRunV
   }
   EXPECT_EQ(checked, top.starts);
   // The analytic one-impact orbits of this robot (the promised 0.0358) are reached by no start.
-  const std::vector<Solution> orbits = FindRobotOrbits(r.forcing, r.params, r.alpha);
+  const std::vector<Solution> orbits = FindRobotOrbits({r.forcing, r.params, r.alpha});
   ASSERT_GE(orbits.size(), 1U);
   for (const Solution& s : orbits) EXPECT_EQ(CountReached(a, r.forcing, s.orbit), 0);
 }
@@ -106,10 +106,10 @@ TEST(Attractors, DoNotDependOnTheThreadCountTheEarlyStopOrTheReuseOfCycles) {
   full.attractor.motion.converged_tolerance = 0.0;  // the whole transient and record
   FromRestOptions searched = full;  // and every event searched, none taken from a cycle
   searched.attractor.motion.reuse_cycles = false;
-  const Attractors a1 = FindAttractors(r.forcing, r.params, r.alpha, one);
-  const Attractors a2 = FindAttractors(r.forcing, r.params, r.alpha, two);
-  const Attractors af = FindAttractors(r.forcing, r.params, r.alpha, full);
-  const Attractors as = FindAttractors(r.forcing, r.params, r.alpha, searched);
+  const Attractors a1 = FindAttractors({r.forcing, r.params, r.alpha}, one);
+  const Attractors a2 = FindAttractors({r.forcing, r.params, r.alpha}, two);
+  const Attractors af = FindAttractors({r.forcing, r.params, r.alpha}, full);
+  const Attractors as = FindAttractors({r.forcing, r.params, r.alpha}, searched);
   ASSERT_EQ(a1.motions.size(), 16U);
   ASSERT_EQ(a2.motions.size(), 16U);
   ASSERT_EQ(af.motions.size(), 16U);
@@ -144,7 +144,7 @@ TEST(Attractors, StartOnStableOneImpactOrbitWithClearanceStaysOnIt) {
   start.u = -o.e * o.u;
   start.v = o.v_plus;
   start.psi = 0.0;
-  const Motion m = LongRunMotion(o.forcing, params, o.alpha, start, MotionOptions{});
+  const Motion m = LongRunMotion({o.forcing, params, o.alpha}, start, MotionOptions{});
   EXPECT_EQ(m.status, MotionStatus::kPeriodic);
   EXPECT_EQ(m.period, 1);
   EXPECT_EQ(m.impacts_right, 1);
@@ -153,7 +153,7 @@ TEST(Attractors, StartOnStableOneImpactOrbitWithClearanceStaysOnIt) {
   EXPECT_TRUE(MatchesOrbit(m, o.forcing, o, kOrbitTol));
   // As one start among others: the attractor is flagged and counted as reached.
   const std::vector<PhaseState> starts = {start, RestStart(0.5, 1.0)};
-  const Attractors a = ClassifyStarts(o.forcing, params, o.alpha, starts, AttractorOptions{});
+  const Attractors a = ClassifyStarts({o.forcing, params, o.alpha}, starts, AttractorOptions{});
   ASSERT_EQ(a.labels.size(), 2U);
   EXPECT_TRUE(a.attractors[static_cast<std::size_t>(a.labels[0])].one_impact_orbit);
   EXPECT_GE(CountReached(a, o.forcing, o), 1);
@@ -166,7 +166,7 @@ TEST(Attractors, OneImpactOrbitIsReachedFromRestAndRecognisedWhateverTheMotorPha
   const Solution s = SmallStableOrbit(&params);
   const Orbit& o = s.orbit;
   const Forcing robot = o.forcing.WithPhase(o.forcing.phi0() + 1.0);
-  const Attractors a = FindAttractors(robot, params, o.alpha, FromRestOptions{});
+  const Attractors a = FindAttractors({robot, params, o.alpha}, FromRestOptions{});
   int flagged = 0;
   for (const Attractor& at : a.attractors) flagged += at.one_impact_orbit ? 1 : 0;
   EXPECT_EQ(flagged, 1);
@@ -186,7 +186,7 @@ TEST(Attractors, ClassifiesPeriodTwoMotion) {
   FromRestOptions opt;
   opt.n_x = 2;
   opt.n_psi = 2;
-  const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, opt);
+  const Attractors a = FindAttractors({r.forcing, r.params, r.alpha}, opt);
   ASSERT_EQ(a.attractors.size(), 1U);
   const Motion& m = a.attractors.front().motion;
   EXPECT_EQ(m.status, MotionStatus::kPeriodic);
@@ -202,7 +202,7 @@ TEST(Attractors, ClassifiesPeriodTwoMotion) {
   EXPECT_TRUE(Near(two.v, m.section.v, kOrbitTol));
   // The period search includes its bound: with max_period = 2 the same motion.
   opt.attractor.motion.max_period = 2;
-  const Attractors bound = FindAttractors(r.forcing, r.params, r.alpha, opt);
+  const Attractors bound = FindAttractors({r.forcing, r.params, r.alpha}, opt);
   ASSERT_EQ(bound.attractors.size(), 1U);
   EXPECT_EQ(bound.attractors.front().motion.status, MotionStatus::kPeriodic);
   EXPECT_EQ(bound.attractors.front().motion.period, 2);
@@ -220,7 +220,7 @@ TEST(Attractors, StartsThatHitTheWorkBoundFormTheirOwnClass) {
   opt.n_x = 2;
   opt.n_psi = 2;
   opt.attractor.motion.max_events_per_period = 10;
-  const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, opt);
+  const Attractors a = FindAttractors({r.forcing, r.params, r.alpha}, opt);
   ASSERT_EQ(a.attractors.size(), 1U);
   EXPECT_EQ(a.attractors.front().motion.status, MotionStatus::kEventLimit);
   EXPECT_TRUE(std::isnan(a.attractors.front().motion.mean_velocity));
@@ -255,7 +255,7 @@ TEST(AttractorsInput, BadOptionsAreNamedWithTheirValueAndRule) {
   const StableOptimum r;
   const auto message = [&](const FromRestOptions& o, double alpha) -> std::string {
     try {
-      FindAttractors(r.forcing, r.params, alpha, o);
+      FindAttractors({r.forcing, r.params, alpha}, o);
     } catch (const std::invalid_argument& e) {
       return e.what();
     }

@@ -55,7 +55,7 @@ TEST(Bifurcation, UpAndDownSweepsDifferWhereTwoAttractorsCoexist) {
   o.steps = 21;
   o.start = RestStart(0.5, 1.0);
   o.analytic = false;
-  const BifurcationDiagram d = ComputeBifurcation(kOptimumForce, params, 0.66, o);
+  const BifurcationDiagram d = ComputeBifurcation({kOptimumForce, params, 0.66}, o);
   ASSERT_EQ(d.summary.size(), 42U);
   const BifurcationPoint* up = Find(d, SweepDirection::kUp, 0.676);
   const BifurcationPoint* down = Find(d, SweepDirection::kDown, 0.676);
@@ -114,7 +114,7 @@ TEST(Bifurcation, AnalyticRowsAreTheValidOneImpactOrbits) {
   o.steps = 2;
   o.up = true;
   o.down = false;
-  const BifurcationDiagram d = ComputeBifurcation(forcing, params, o.from, o);
+  const BifurcationDiagram d = ComputeBifurcation({forcing, params, o.from}, o);
   int analytic = 0, matching = 0;
   for (const BifurcationPoint& p : d.summary) {
     if (p.direction != SweepDirection::kAnalytic) continue;
@@ -154,9 +154,7 @@ void ExpectSameRows(const std::vector<BifurcationPoint>& a, const std::vector<Bi
 // The small stable orbit's robot (the robot of `capsubot bifurcation`'s examples), T0 stepped
 // over 3 values, one diagram per value of the restitution in `over_e`.
 struct StudyOverE {
-  Params params{0.1, 0.5};
-  Forcing force = Forcing::Harmonic(0.05, 0.02, -2.842);
-  double alpha = 0.2792869076315278;
+  RobotModel robot{Forcing::Harmonic(0.05, 0.02, -2.842), Params{0.1, 0.5}, 0.2792869076315278};
   BifurcationOptions o;
 
   explicit StudyOverE(std::vector<double> over_e) {
@@ -175,20 +173,18 @@ TEST(Bifurcation, StudyOverASecondParameterIsTheDiagramAtEachValueAndItsShardsPa
   // The small stable orbit's robot, T0 stepped, at 3 restitutions: each diagram of the study
   // is the diagram computed alone with that e; 3 shards hold every part exactly once.
   StudyOverE study_e({0.4, 0.5, 0.6});
-  const Params& params = study_e.params;
-  const Forcing& force = study_e.force;
-  const double alpha = study_e.alpha;
+  const RobotModel& robot = study_e.robot;
   const BifurcationOptions& o = study_e.o;
-  const BifurcationDiagram study = ComputeBifurcation(force, params, alpha, o);
+  const BifurcationDiagram study = ComputeBifurcation(robot, o);
   ASSERT_EQ(study.total_parts, 9);  // 3 values x (up, down, analytic)
   EXPECT_EQ(BifurcationContinuations(o), 6);
   int values = 0;
   for (double e : o.over_values) {
     BifurcationOptions alone = o;
     alone.over_values.clear();
-    Params p = params;
-    p.e = e;
-    const BifurcationDiagram d = ComputeBifurcation(force, p, alpha, alone);
+    RobotModel at_e = robot;
+    at_e.params.e = e;
+    const BifurcationDiagram d = ComputeBifurcation(at_e, alone);
     std::vector<BifurcationPoint> rows;
     for (const BifurcationPoint& r : study.summary) {
       if (r.over == e) rows.push_back(r);
@@ -204,7 +200,7 @@ TEST(Bifurcation, StudyOverASecondParameterIsTheDiagramAtEachValueAndItsShardsPa
     BifurcationOptions shard = o;
     shard.shard = k;
     shard.shards = 3;
-    const BifurcationDiagram d = ComputeBifurcation(force, params, alpha, shard);
+    const BifurcationDiagram d = ComputeBifurcation(robot, shard);
     for (int part : d.parts) ++seen[static_cast<std::size_t>(part)];
     joined.insert(joined.end(), d.summary.begin(), d.summary.end());
   }
@@ -221,20 +217,18 @@ TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
   // resumed shard), the parts after it come in order with the rows ComputeBifurcation gives
   // them, and only the values of the one sweep left are simulated (the progress total).
   StudyOverE study_e({0.4, 0.6});
-  const Params& params = study_e.params;
-  const Forcing& force = study_e.force;
-  const double alpha = study_e.alpha;
+  const RobotModel& robot = study_e.robot;
   BifurcationOptions& o = study_e.o;
   o.shards = 2;
   o.threads = 3;
-  const BifurcationDiagram whole = ComputeBifurcation(force, params, alpha, o);
+  const BifurcationDiagram whole = ComputeBifurcation(robot, o);
   ASSERT_EQ(whole.parts, (std::vector<int>{0, 2, 3, 5}));
   EXPECT_EQ(BifurcationParts(o), 6);
   std::vector<int> parts;
   std::vector<BifurcationPoint> rows;
   std::int64_t total = 0;
   StreamBifurcation(
-      force, params, alpha, o, 1,
+      robot, o, 1,
       [&](const BifurcationDiagram& part) {
         ASSERT_EQ(part.parts.size(), 1u);
         EXPECT_EQ(part.total_parts, 6);
@@ -249,7 +243,7 @@ TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
   ExpectSameRows(rows, std::vector<BifurcationPoint>(later, whole.summary.end()), "from part 1");
   const auto message = [&](int first) {
     try {
-      StreamBifurcation(force, params, alpha, o, first, [](const BifurcationDiagram&) {});
+      StreamBifurcation(robot, o, first, [](const BifurcationDiagram&) {});
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }
@@ -260,7 +254,7 @@ TEST(Bifurcation, StreamedFromALaterPartGivesTheLaterPartsOnlyInOrder) {
   EXPECT_EQ(message(-1),
             "first part = -1 is invalid: expected 0 <= first <= 4 (the parts of the shard)");
   int calls = 0;
-  StreamBifurcation(force, params, alpha, o, 4, [&](const BifurcationDiagram&) { ++calls; });
+  StreamBifurcation(robot, o, 4, [&](const BifurcationDiagram&) { ++calls; });
   EXPECT_EQ(calls, 0);  // every part done: nothing computed
 }
 
@@ -296,17 +290,15 @@ TEST(Bifurcation, PartsComputedElsewhereGiveTheThreadedDiagram) {
   // summary, with their second parameter and part; the progress counts the values of each
   // sweep part when it arrives (the analytic parts simulate none).
   StudyOverE study_e({0.4, 0.6});
-  const Params& params = study_e.params;
-  const Forcing& force = study_e.force;
-  const double alpha = study_e.alpha;
+  const RobotModel& robot = study_e.robot;
   const BifurcationOptions& o = study_e.o;
-  const BifurcationDiagram threaded = ComputeBifurcation(force, params, alpha, o);
+  const BifurcationDiagram threaded = ComputeBifurcation(robot, o);
   ASSERT_EQ(threaded.parts, (std::vector<int>{0, 1, 2, 3, 4, 5}));
-  const ElsewhereBackend elsewhere(BifurcationBlocks(force, params, alpha, o));
+  const ElsewhereBackend elsewhere(BifurcationBlocks(robot, o));
   std::vector<std::int64_t> done;
   std::int64_t total = 0;
   const BifurcationDiagram d = ComputeBifurcation(
-      force, params, alpha, o,
+      robot, o,
       [&](std::int64_t n, std::int64_t of) {
         done.push_back(n);
         total = of;
@@ -344,11 +336,11 @@ TEST(Bifurcation, OverTheSineCoefficientOfOneHarmonicEqualsTheDiagramOverA) {
   o.start = RestStart(0.5, 1.0);
   o.analytic = false;
   const double alpha = 0.6435592358295166;
-  const BifurcationDiagram by_A = ComputeBifurcation(kOptimumForce, Params{}, alpha, o);
+  const BifurcationDiagram by_A = ComputeBifurcation({kOptimumForce, Params{}, alpha}, o);
   o.param = ModelParameter::kSin;
   o.harmonic = 1;
   const BifurcationDiagram by_b1 = ComputeBifurcation(
-      Forcing::Fourier(c, {0.0}, {kOptimumForce.amplitude()}, phi0), Params{}, alpha, o);
+      {Forcing::Fourier(c, {0.0}, {kOptimumForce.amplitude()}, phi0), Params{}, alpha}, o);
   ASSERT_EQ(by_A.summary.size(), 8U);
   ASSERT_EQ(by_b1.summary.size(), by_A.summary.size());
   ASSERT_EQ(by_b1.impacts.size(), by_A.impacts.size());
@@ -382,10 +374,10 @@ TEST(Bifurcation, OverACosineCoefficientSimulatesTheForceWithThatCoefficient) {
   std::vector<double> velocities;
   for (double a2 : {-0.03, 0.0, 0.03}) {
     o.from = o.to = a2;
-    const BifurcationDiagram d = ComputeBifurcation(base, Params{}, alpha, o);
+    const BifurcationDiagram d = ComputeBifurcation({base, Params{}, alpha}, o);
     ASSERT_EQ(d.summary.size(), 2U);
-    const Motion expected = LongRunMotion(Forcing::Fourier(c, {0.0, a2}, {A, 0.02}, phi0), Params{},
-                                          alpha, o.start, o.motion);
+    const Motion expected = LongRunMotion(
+        {Forcing::Fourier(c, {0.0, a2}, {A, 0.02}, phi0), Params{}, alpha}, o.start, o.motion);
     const Motion& m = d.summary[0].motion;
     EXPECT_EQ(m.status, expected.status) << "a2 = " << a2;
     EXPECT_EQ(m.period, expected.period) << "a2 = " << a2;
@@ -425,46 +417,62 @@ TEST(BifurcationInput, BadParameterAndRangeAreNamed) {
   fourier.harmonic = 2;
   fourier.from = 0.0;
   fourier.to = 0.1;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, fourier);
+            }),
             "parameter = a2 is invalid for this force: expected a_k or b_k with 1 <= k <= K = 1, "
             "its harmonics");
   fourier.harmonic = 0;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, fourier); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, fourier);
+            }),
             "harmonic = 0 is invalid: expected 1 <= k <= 16 for a_k and b_k, else 0");
   BifurcationOptions o;
   o.param = ModelParameter::kRestitution;
   o.from = 0.5;
   o.to = 1.5;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "e = 1.5 makes the robot invalid: restitution e = 1.5 is invalid: expected 0 <= e "
             "<= 1");
   o.to = 1.0;
   o.steps = 1;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "steps = 1 is invalid: expected 2 <= steps <= 10000000");
   // The second parameter of a study and the shards.
   o.steps = 3;
   o.over = o.param;
   o.over_values = {0.5};
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "second parameter = e is invalid: expected a parameter other than the diagram's");
   o.over = ModelParameter::kT0;
   o.over_values = {0.5, std::nan("")};
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "second parameter T0 = nan is invalid: expected finite values");
   o.over_values = {0.5, -1.0};
   EXPECT_NE(message([&] {
-              ComputeBifurcation(kOptimumForce, Params{}, 0.5, o);
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
             }).find(" at T0 = -1 makes the robot invalid: "),
             std::string::npos);
   o.over_values = {0.5, 1.0};
   o.shards = 5;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "shard count N = 5 is invalid: the study has 4 continuations (2 values of the second "
             "parameter x 2 directions): expected 1 <= N <= 4");
   o.shards = 2;
   o.shard = 2;
-  EXPECT_EQ(message([&] { ComputeBifurcation(kOptimumForce, Params{}, 0.5, o); }),
+  EXPECT_EQ(message([&] {
+              ComputeBifurcation({kOptimumForce, Params{}, 0.5}, o);
+            }),
             "shard K = 2 is invalid: expected 0 <= K < N = 2");
 }
 

@@ -56,7 +56,7 @@ TEST_P(ChatterSettingsFromRest, EveryStartEndsInTheSameMotionWhateverTheCutOff) 
   const Forcing forcing = Forcing::Harmonic(k.A, k.c, k.phi0);
   const Params params{1.0, k.e};
   const std::vector<PhaseState> starts = GridStarts(kGrid, kGrid);
-  const Attractors ref = ClassifyStarts(forcing, params, k.alpha, starts, Options(1e-6));
+  const Attractors ref = ClassifyStarts({forcing, params, k.alpha}, starts, Options(1e-6));
   ASSERT_EQ(ref.starts, kGrid * kGrid);
   EXPECT_EQ(ref.event_limit_starts, 0);
   ASSERT_FALSE(ref.attractors.empty());
@@ -69,7 +69,7 @@ TEST_P(ChatterSettingsFromRest, EveryStartEndsInTheSameMotionWhateverTheCutOff) 
                               top.example.psi, kDirectTransient, kDirectRecord);
   EXPECT_TRUE(testing::RelNear(top.motion.mean_velocity, direct, kDirectRelTol));
   for (const double velocity : {1e-4, 1e-8, 1e-10}) {
-    const Attractors a = ClassifyStarts(forcing, params, k.alpha, starts, Options(velocity));
+    const Attractors a = ClassifyStarts({forcing, params, k.alpha}, starts, Options(velocity));
     EXPECT_EQ(a.event_limit_starts, 0) << velocity;
     ASSERT_EQ(a.motions.size(), ref.motions.size());
     for (std::size_t i = 0; i < a.motions.size(); ++i) {

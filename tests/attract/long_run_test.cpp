@@ -85,8 +85,8 @@ TEST(LongRun, EarlyStopChangesNoAnswerOverRandomRobots) {
     full.motion.converged_tolerance = 0.0;
     const std::vector<PhaseState> starts = {RestStart(unit(rng), kTau * unit(rng)),
                                             RestStart(unit(rng), kTau * unit(rng))};
-    const std::vector<Motion> a = LongRunMotions(forcing, params, alpha, starts, stop);
-    const std::vector<Motion> b = LongRunMotions(forcing, params, alpha, starts, full);
+    const std::vector<Motion> a = LongRunMotions({forcing, params, alpha}, starts, stop);
+    const std::vector<Motion> b = LongRunMotions({forcing, params, alpha}, starts, full);
     for (std::size_t k = 0; k < starts.size(); ++k) {
       SCOPED_TRACE("robot " + std::to_string(robot) + " start " + std::to_string(k));
       ASSERT_EQ(a[k].status, b[k].status);
@@ -103,14 +103,14 @@ TEST(LongRun, EarlyStopChangesNoAnswerOverRandomRobots) {
         EXPECT_EQ(a[k].mean_velocity, b[k].mean_velocity);  // the same run, bit for bit
       }
       const std::vector<Motion> one =
-          LongRunMotions(forcing, params, alpha, {starts[k]}, stop);  // no cross-talk
+          LongRunMotions({forcing, params, alpha}, {starts[k]}, stop);  // no cross-talk
       EXPECT_EQ(one[0].mean_velocity, a[k].mean_velocity);
     }
     // Did the early stop act? A run it stopped records no impact of the record.
     for (const PhaseState& start : starts) {
       detail::Recorder recorder;
-      detail::ClassifyMotion(forcing, params, alpha, stop.motion, {start, SimMode::kRest}, recorder,
-                             true);
+      detail::ClassifyMotion({forcing, params, alpha}, stop.motion, {start, SimMode::kRest},
+                             recorder, true);
       early += recorder.impacts.empty() ? 1 : 0;
     }
   }
@@ -130,7 +130,7 @@ TEST(LongRun, AttractorsAgreeWithDirectRunsOfTheSameStarts) {
   FromRestOptions o;
   o.attractor.motion.transient = transient;
   o.attractor.motion.record = record;
-  const Attractors a = FindAttractors(r.forcing, r.params, r.alpha, o);
+  const Attractors a = FindAttractors({r.forcing, r.params, r.alpha}, o);
   ASSERT_EQ(a.motions.size(), 64U);
   const std::vector<PhaseState> starts = GridStarts(8, 8);
   double direct_sum = 0.0;
@@ -199,7 +199,7 @@ TEST(LongRun, DocExamplesAgreeWithDirectRunsOfTheSameStarts) {
     o.attractor.motion.transient = transient;
     o.attractor.motion.record = record;
     o.attractor.motion.max_period = ex.max_period;
-    const Attractors a = FindAttractors(ex.forcing, ex.params, ex.alpha, o);
+    const Attractors a = FindAttractors({ex.forcing, ex.params, ex.alpha}, o);
     const std::vector<PhaseState> starts = GridStarts(8, 8);
     ASSERT_EQ(a.motions.size(), starts.size());
     EXPECT_EQ(a.event_limit_starts, 0);
@@ -237,7 +237,7 @@ TEST(LongRun, PeriodIsTheSmallestWithTheMultipliersOfOnePeriod) {
   z.psi = 4.437859415761879;
   for (int period : {1, 2, 3, 6}) {
     SCOPED_TRACE("shot with period " + std::to_string(period));
-    const PeriodicMotion pm = ShootPeriodicMotion(forcing, params, s.orbit.alpha, z, period, {});
+    const PeriodicMotion pm = ShootPeriodicMotion({forcing, params, s.orbit.alpha}, z, period, {});
     ASSERT_EQ(pm.status, ShootingStatus::kConverged);
     EXPECT_EQ(pm.period, 1);
     EXPECT_EQ(pm.impacts_right, 1);
@@ -248,7 +248,7 @@ TEST(LongRun, PeriodIsTheSmallestWithTheMultipliersOfOnePeriod) {
   }
   ShootingOptions from_near;
   from_near.max_period = 8;
-  const PeriodicMotion found = FindPeriodicMotion(forcing, params, s.orbit.alpha, z, from_near);
+  const PeriodicMotion found = FindPeriodicMotion({forcing, params, s.orbit.alpha}, z, from_near);
   EXPECT_EQ(found.period, 1);
   EXPECT_TRUE(Near(found.spectral_radius, st.spectral_radius, kMultiplierTol));
 }
@@ -260,7 +260,7 @@ TEST(LongRun, SlowlyConvergingPeriodOneNearPeriodDoublingIsPeriodOne) {
   Params params;
   const Forcing forcing = Forcing::Harmonic(0.2, 0.03, -2.518525390);
   const double alpha = 0.645;
-  const std::vector<Solution> orbits = FindRobotOrbits(forcing, params, alpha);
+  const std::vector<Solution> orbits = FindRobotOrbits({forcing, params, alpha});
   const Solution* stable = nullptr;
   for (const Solution& s : orbits) {
     if (s.validity.valid() && ComputeStability(s.orbit).stable) stable = &s;
@@ -284,7 +284,7 @@ TEST(LongRun, SlowlyConvergingPeriodOneNearPeriodDoublingIsPeriodOne) {
     o.transient = transient;
     o.record = 16;
     o.converged_tolerance = 0.0;
-    const Motion m = LongRunMotion(forcing, params, alpha, start, o);
+    const Motion m = LongRunMotion({forcing, params, alpha}, start, o);
     if (m.status != MotionStatus::kPeriodic) continue;  // not yet within state_tolerance
     ++periodic;
     EXPECT_EQ(m.period, 1);
@@ -318,7 +318,7 @@ TEST(LongRun, SectionIsOffTheImpactForEveryTransient) {
     o.motion.transient = transient;
     o.motion.record = 200;
     const std::vector<PhaseState> starts = GridStarts(4, 3);
-    const Attractors a = ClassifyStarts(r.forcing, r.params, r.alpha, starts, o);
+    const Attractors a = ClassifyStarts({r.forcing, r.params, r.alpha}, starts, o);
     int on_orbit = 0;
     for (std::size_t k = 0; k < starts.size(); ++k) {
       const Motion& m = a.motions[k];
@@ -337,7 +337,7 @@ TEST(LongRun, SectionIsOffTheImpactForEveryTransient) {
     b.steps = 2;
     b.start = RestStart(0.125, 0.0);
     b.motion.transient = transient;
-    const BifurcationDiagram d = ComputeBifurcation(r.forcing, r.params, r.alpha, b);
+    const BifurcationDiagram d = ComputeBifurcation({r.forcing, r.params, r.alpha}, b);
     ASSERT_FALSE(d.summary.empty());
     EXPECT_EQ(d.summary.front().motion.period, 1);
     EXPECT_TRUE(Near(d.summary.front().spectral_radius, rho, kMultiplierTol));
@@ -497,7 +497,7 @@ TEST(LongRun, NoVerdictWithoutConvergence) {
   z.u = 1e10;
   ShootingOptions o;
   o.max_iterations = 3;
-  const PeriodicMotion pm = FindPeriodicMotion(forcing, params, 0.5, z, o);
+  const PeriodicMotion pm = FindPeriodicMotion({forcing, params, 0.5}, z, o);
   EXPECT_NE(pm.status, ShootingStatus::kConverged);
   EXPECT_FALSE(pm.stable);
 }

@@ -55,7 +55,7 @@ TEST(Periodic, FindsOneImpactOrbitOfSolveWithItsMultipliers) {
   start.u = -o.e * o.u * 1.01;
   start.v = o.v_plus * 0.99;
   start.psi = 0.0;
-  const PeriodicMotion m = FindPeriodicMotion(o.forcing, params, o.alpha, start, {});
+  const PeriodicMotion m = FindPeriodicMotion({o.forcing, params, o.alpha}, start, {});
   ASSERT_EQ(m.status, ShootingStatus::kConverged);
   EXPECT_LE(m.residual, 1e-12);
   EXPECT_EQ(m.period, 1);
@@ -81,7 +81,7 @@ TEST(Periodic, FindsOneImpactOrbitOfSolveWithItsMultipliers) {
   // A ten times finer difference step gives the same multipliers.
   ShootingOptions fine;
   fine.step = 1e-7;
-  const PeriodicMotion f = FindPeriodicMotion(o.forcing, params, o.alpha, start, fine);
+  const PeriodicMotion f = FindPeriodicMotion({o.forcing, params, o.alpha}, start, fine);
   ASSERT_EQ(f.multipliers.size(), 2U);
   EXPECT_TRUE(Near(std::abs(f.multipliers[0] - m.multipliers[0]), 0.0, 1e-7));
 }
@@ -92,7 +92,7 @@ TEST(Periodic, ThreeRightOneLeftMotionOfStableOptimumHasTheLongRunVelocity) {
   ShootingOptions opt;
   opt.transient = 200;
   const PeriodicMotion m =
-      FindPeriodicMotion(kOptimumForce, params, alpha, RestStart(0.5, 1.0), opt);
+      FindPeriodicMotion({kOptimumForce, params, alpha}, RestStart(0.5, 1.0), opt);
   ASSERT_EQ(m.status, ShootingStatus::kConverged);
   EXPECT_LE(m.residual, 1e-12);
   EXPECT_EQ(m.period, 1);
@@ -115,7 +115,7 @@ TEST(Periodic, PeriodTwoMotionAndItsMultipliers) {
   ShootingOptions opt;
   opt.transient = 200;
   const PeriodicMotion m =
-      FindPeriodicMotion(kOptimumForce, params, alpha, RestStart(0.5, 1.0), opt);
+      FindPeriodicMotion({kOptimumForce, params, alpha}, RestStart(0.5, 1.0), opt);
   ASSERT_EQ(m.status, ShootingStatus::kConverged);
   EXPECT_EQ(m.period, 2);
   EXPECT_EQ(m.impacts_right, 7);
@@ -150,14 +150,14 @@ TEST(Periodic, FlipOfTheTwoRightOneLeftMotionIsLocatedAlongAlpha) {
   params.T0 = 0.5;
   ShootingOptions opt;
   opt.transient = 300;
-  PeriodicMotion m = FindPeriodicMotion(kOptimumForce, params, 0.70, RestStart(0.5, 1.0), opt);
+  PeriodicMotion m = FindPeriodicMotion({kOptimumForce, params, 0.70}, RestStart(0.5, 1.0), opt);
   ASSERT_EQ(m.status, ShootingStatus::kConverged);
   ASSERT_EQ(m.period, 1);
   ASSERT_EQ(m.impacts_right, 2);
   ASSERT_EQ(m.impacts_left, 1);
   int steps = 0;
   for (double alpha = 0.69; alpha >= 0.684 - 1e-12; alpha -= 0.002, ++steps) {
-    m = ShootPeriodicMotion(kOptimumForce, params, alpha, m.state, 1, {});
+    m = ShootPeriodicMotion({kOptimumForce, params, alpha}, m.state, 1, {});
     ASSERT_EQ(m.status, ShootingStatus::kConverged) << alpha;
     EXPECT_GT(m.multipliers[0].real(), -1.0) << alpha;
   }
@@ -166,7 +166,7 @@ TEST(Periodic, FlipOfTheTwoRightOneLeftMotionIsLocatedAlongAlpha) {
   double lo = 0.682, hi = 0.684;
   PhaseState z = m.state;
   const auto top = [&](double alpha) {
-    const PeriodicMotion q = ShootPeriodicMotion(kOptimumForce, params, alpha, z, 1, {});
+    const PeriodicMotion q = ShootPeriodicMotion({kOptimumForce, params, alpha}, z, 1, {});
     EXPECT_EQ(q.status, ShootingStatus::kConverged);
     EXPECT_TRUE(Near(q.multipliers[0].imag(), 0.0, 1e-12));
     z = q.state;
@@ -178,7 +178,7 @@ TEST(Periodic, FlipOfTheTwoRightOneLeftMotionIsLocatedAlongAlpha) {
     const double mid = 0.5 * (lo + hi);
     (top(mid) < -1.0 ? lo : hi) = mid;
   }
-  const PeriodicMotion flip = ShootPeriodicMotion(kOptimumForce, params, hi, z, 1, {});
+  const PeriodicMotion flip = ShootPeriodicMotion({kOptimumForce, params, hi}, z, 1, {});
   EXPECT_TRUE(Near(flip.distance_to_minus_one, 0.0, 1e-6));
   EXPECT_TRUE(Near(hi, 0.6822, 1e-3));  // where the scan saw the crossing
   // Past the flip, the simulator leaves the period-1 motion (slowly: the multiplier is about
@@ -187,7 +187,7 @@ TEST(Periodic, FlipOfTheTwoRightOneLeftMotionIsLocatedAlongAlpha) {
   kicked.x += 1e-4;
   MotionOptions slow;
   slow.transient = 3000;
-  const Motion after = LongRunMotion(kOptimumForce, params, hi - 0.002, kicked, slow);
+  const Motion after = LongRunMotion({kOptimumForce, params, hi - 0.002}, kicked, slow);
   EXPECT_EQ(after.status, MotionStatus::kPeriodic);
   EXPECT_EQ(after.period, 2);
   EXPECT_EQ(after.impacts_right, 4);
@@ -198,7 +198,7 @@ TEST(PeriodicInput, BadOptionsAreNamed) {
   const Params params;
   const auto message = [&](const ShootingOptions& o) -> std::string {
     try {
-      FindPeriodicMotion(kOptimumForce, params, 0.5, RestStart(0.5, 0.0), o);
+      FindPeriodicMotion({kOptimumForce, params, 0.5}, RestStart(0.5, 0.0), o);
     } catch (const std::invalid_argument& e) {
       return e.what();
     }

@@ -21,20 +21,17 @@ namespace {
 using capsubot::Forcing;
 using capsubot::Params;
 
-struct Robot {
-  Forcing forcing =
-      Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047);
-  Params params;
-  double alpha = 0.6435592358295166;
-};
+capsubot::RobotModel Robot() {
+  return {Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047),
+          Params{}, 0.6435592358295166};
+}
 
 void BM_LongRunMotionOneStart300Periods(benchmark::State& state) {
-  const Robot r;
+  const capsubot::RobotModel r = Robot();
   const capsubot::MotionOptions opt;  // 200 + 100 periods
   double sum = 0.0;
   for (auto _ : state) {
-    sum += capsubot::LongRunMotion(r.forcing, r.params, r.alpha, capsubot::RestStart(0.5, 1.0), opt)
-               .mean_velocity;
+    sum += capsubot::LongRunMotion(r, capsubot::RestStart(0.5, 1.0), opt).mean_velocity;
   }
   benchmark::DoNotOptimize(sum);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * 300);  // periods
@@ -42,12 +39,12 @@ void BM_LongRunMotionOneStart300Periods(benchmark::State& state) {
 BENCHMARK(BM_LongRunMotionOneStart300Periods)->Unit(benchmark::kMillisecond);
 
 void BM_FindAttractors64StartsTwoThreads(benchmark::State& state) {
-  const Robot r;
+  const capsubot::RobotModel r = Robot();
   capsubot::FromRestOptions opt;  // 8 x 8 starts, 200 + 100 periods
   opt.attractor.threads = 2;
   double sum = 0.0;
   for (auto _ : state) {
-    sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
+    sum += capsubot::FindAttractors(r, opt).mean_velocity;
   }
   benchmark::DoNotOptimize(sum);
 }
@@ -55,7 +52,7 @@ BENCHMARK(BM_FindAttractors64StartsTwoThreads)->Unit(benchmark::kMillisecond)->U
 
 // A 1000-value bifurcation diagram in T0, both directions, 2 threads (wanted <= 1 s).
 void Bifurcation1000Values(benchmark::State& state, double converged_tolerance, bool reuse = true) {
-  const Robot r;
+  const capsubot::RobotModel r = Robot();
   capsubot::BifurcationOptions opt;
   opt.param = capsubot::ModelParameter::kT0;
   opt.from = 0.5;
@@ -67,7 +64,7 @@ void Bifurcation1000Values(benchmark::State& state, double converged_tolerance, 
   opt.motion.reuse_cycles = reuse;
   std::size_t rows = 0;
   for (auto _ : state) {
-    rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
+    rows += capsubot::ComputeBifurcation(r, opt).summary.size();
   }
   benchmark::DoNotOptimize(rows);
 }
@@ -99,7 +96,7 @@ BENCHMARK(BM_Bifurcation1000ValuesBothDirectionsFull300PeriodsSearchingEveryEven
 
 // A 256 x 256 basin map, 200 + 100 periods per start, 2 threads (wanted <= 10 s).
 void Basins256x256(benchmark::State& state, double converged_tolerance, bool reuse = true) {
-  const Robot r;
+  const capsubot::RobotModel r = Robot();
   capsubot::FromRestOptions opt;
   opt.n_x = 256;
   opt.n_psi = 256;
@@ -108,7 +105,7 @@ void Basins256x256(benchmark::State& state, double converged_tolerance, bool reu
   opt.attractor.motion.reuse_cycles = reuse;
   double sum = 0.0;
   for (auto _ : state) {
-    sum += capsubot::FindAttractors(r.forcing, r.params, r.alpha, opt).mean_velocity;
+    sum += capsubot::FindAttractors(r, opt).mean_velocity;
   }
   benchmark::DoNotOptimize(sum);
 }

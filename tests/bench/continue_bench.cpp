@@ -79,7 +79,7 @@ void BM_BifurcationSameRange200Values(benchmark::State& state) {
   opt.threads = 1;
   std::size_t rows = 0;
   for (auto _ : state) {
-    rows += capsubot::ComputeBifurcation(r.forcing, r.params, r.alpha, opt).summary.size();
+    rows += capsubot::ComputeBifurcation(r, opt).summary.size();
   }
   benchmark::DoNotOptimize(rows);
 }

@@ -15,12 +15,12 @@ using capsubot::Params;
 
 // One evaluation of the reach objective for the robot (A, c, phi0, alpha).
 void ReachObjective(benchmark::State& state, const Forcing& forcing, double alpha) {
-  const Params params;  // T0 = 1, e = 1
+  const capsubot::RobotModel robot{forcing, Params{}, alpha};  // T0 = 1, e = 1
   capsubot::FromRestOptions opt = capsubot::CheapFromRestOptions();
   opt.attractor.threads = 2;
   double sum = 0.0;
   for (auto _ : state) {
-    sum += capsubot::FindAttractors(forcing, params, alpha, opt).mean_velocity;
+    sum += capsubot::FindAttractors(robot, opt).mean_velocity;
   }
   benchmark::DoNotOptimize(sum);
 }

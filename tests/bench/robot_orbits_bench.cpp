@@ -13,8 +13,9 @@ using capsubot::Forcing;
 using capsubot::Params;
 
 void FindOrbits(benchmark::State& state, const Forcing& force, const Params& params, double alpha) {
+  const capsubot::RobotModel robot{force, params, alpha};
   std::size_t found = 0;
-  for (auto _ : state) found += capsubot::FindRobotOrbits(force, params, alpha).size();
+  for (auto _ : state) found += capsubot::FindRobotOrbits(robot).size();
   benchmark::DoNotOptimize(found);
   state.SetItemsProcessed(state.iterations());
 }

@@ -46,7 +46,9 @@ struct Family {
   Orbit orbit;
   Params params;
   std::string name;
-  RobotFamily Of() const { return NamedParameterFamily(orbit.forcing, params, orbit.alpha, name); }
+  RobotFamily Of() const {
+    return NamedParameterFamily({orbit.forcing, params, orbit.alpha}, name);
+  }
 };
 
 Branch Follow(const Family& f, double start, double from, double to, std::vector<double> steps) {
@@ -65,8 +67,7 @@ double ExistenceEnd(const Family& f, const PeriodicMotion& a, double inside, dou
   for (int k = 0; k < 200 && std::abs(beyond - inside) > kBisectionWidth; ++k) {
     const double mid = 0.5 * (inside + beyond);
     const RobotModel r = f.Of()(mid);
-    const PeriodicMotion m =
-        ShootPeriodicMotion(r.forcing, r.params, r.alpha, state, 1, ShootingOptions{});
+    const PeriodicMotion m = ShootPeriodicMotion(r, state, 1, ShootingOptions{});
     if (m.status == ShootingStatus::kConverged && m.impacts_right == a.impacts_right &&
         m.impacts_left == a.impacts_left) {
       inside = mid;
@@ -95,8 +96,7 @@ void ExpectMultipliersOfItsSide(const Family& f, const Branch& b, bool forward) 
   const SpecialPoint& g = forward ? b.special_points.back() : b.special_points.front();
   const double outwards = forward ? b.points.back().tangent : -b.points.front().tangent;
   const RobotModel r = f.Of()(g.parameter - (outwards > 0.0 ? kInside : -kInside));
-  const PeriodicMotion in =
-      ShootPeriodicMotion(r.forcing, r.params, r.alpha, g.motion.state, 1, ShootingOptions{});
+  const PeriodicMotion in = ShootPeriodicMotion(r, g.motion.state, 1, ShootingOptions{});
   ASSERT_EQ(in.status, ShootingStatus::kConverged);
   EXPECT_NEAR(g.motion.spectral_radius, in.spectral_radius,
               kMultiplierContinuity * std::max(1.0, in.spectral_radius))
@@ -148,8 +148,7 @@ TEST(ContinuationEdges, StatesOutOfTheRobotsScaleAreNoPeriodicMotion) {
   // (2): the map returns the state exactly, which is no periodic motion.
   const RobotModel r = Robot(OrbitAt(kA, kPhi0).alpha);
   ShootingOptions so;
-  const PeriodicMotion m =
-      FindPeriodicMotion(r.forcing, r.params, r.alpha, {0.5, 0.0, 1e16, 1.0}, so);
+  const PeriodicMotion m = FindPeriodicMotion(r, {0.5, 0.0, 1e16, 1.0}, so);
   EXPECT_NE(m.status, ShootingStatus::kConverged) << m.mean_velocity;
   // The continuation from the largest doubles: no motion, not a branch at infinity.
   const Branch b = ContinueBranch([](double alpha) { return Robot(alpha); },
@@ -164,9 +163,9 @@ TEST(ContinuationEdges, BranchOfConstantSpeedHasNoSpeedExtremum) {
   const Orbit o = OrbitAt(kA, kPhi0);
   ContinuationOptions opt = Range(-20.0, 20.0, kPhi0);
   opt.max_points = 400;
-  const Branch b =
-      ContinueParameter(Forcing::Harmonic(kA, testing::kC, kPhi0), testing::OrbitParams(), o.alpha,
-                        "phi0", AfterImpact(o, kPhi0), opt);
+  const Branch b = ContinueParameter(
+      {Forcing::Harmonic(kA, testing::kC, kPhi0), testing::OrbitParams(), o.alpha}, "phi0",
+      AfterImpact(o, kPhi0), opt);
   ASSERT_EQ(b.status, ContinuationStatus::kOk);
   ASSERT_GE(b.points.size(), 100u);
   for (const BranchPoint& p : b.points) {

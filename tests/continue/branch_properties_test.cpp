@@ -60,8 +60,7 @@ std::vector<Solution> RandomOrbits(unsigned seed = kSeed, int count = kRobots) {
 // The motion m exists at lambda with its impacts: Newton shooting with its period from `state`.
 bool Exists(const RobotFamily& f, const PeriodicMotion& m, double lambda, PhaseState* state) {
   const RobotModel r = f(lambda);
-  const PeriodicMotion s =
-      ShootPeriodicMotion(r.forcing, r.params, r.alpha, *state, m.period, ShootingOptions{});
+  const PeriodicMotion s = ShootPeriodicMotion(r, *state, m.period, ShootingOptions{});
   if (s.status != ShootingStatus::kConverged || s.impacts_right != m.impacts_right ||
       s.impacts_left != m.impacts_left) {
     return false;
@@ -128,8 +127,8 @@ void CheckBothSides(const RobotFamily& f, const Branch& b, const SpecialPoint& s
   for (int k = 0; k < 2; ++k) {
     const double lambda = sp.parameter + (k == 0 ? -probe : probe);
     const RobotModel r = f(lambda);
-    const PeriodicMotion m = ShootPeriodicMotion(r.forcing, r.params, r.alpha, sp.motion.state,
-                                                 sp.motion.period, ShootingOptions{});
+    const PeriodicMotion m =
+        ShootPeriodicMotion(r, sp.motion.state, sp.motion.period, ShootingOptions{});
     ASSERT_EQ(m.status, ShootingStatus::kConverged) << lambda;
     sides[k] = CriticalSide(sp.type, m);
   }
@@ -158,7 +157,7 @@ TEST(BranchProperties, RandomRobotsBranchesAreMotionsAndTheirSpecialPointsHold) 
     const Orbit& o = s.orbit;
     SCOPED_TRACE(::testing::Message() << "A " << o.forcing.MaxAbs() << " alpha " << o.alpha);
     const Params params{o.T0, o.e, 0.0};
-    const RobotFamily family = NamedParameterFamily(o.forcing, params, o.alpha, "alpha");
+    const RobotFamily family = NamedParameterFamily({o.forcing, params, o.alpha}, "alpha");
     ContinuationOptions opt;
     opt.from = std::max(0.02, o.alpha - 0.1);
     opt.to = std::min(0.98, o.alpha + 0.1);
@@ -227,8 +226,7 @@ const SpecialPoint* FirstDoubling(const Branch& b) {
 // max |P^p(z) - z| over x, u, v for the robot at lambda; infinity at the work bound.
 double HalvesApart(const RobotFamily& f, double lambda, const PhaseState& z, int p) {
   const RobotModel r = f(lambda);
-  const detail::PeriodMap map(r.forcing, r.params, r.alpha,
-                              detail::SimulationOf(ShootingOptions{}));
+  const detail::PeriodMap map(r, detail::SimulationOf(ShootingOptions{}));
   detail::MapState image;
   if (!map.Map(z, p, &image)) return std::numeric_limits<double>::infinity();
   return std::max(
@@ -272,7 +270,7 @@ TEST(BranchProperties, RandomRobotsSwitchedBranchesStartOnTheMotionBornAtTheDoub
     const Orbit& o = s.orbit;
     SCOPED_TRACE(::testing::Message() << "A " << o.forcing.MaxAbs() << " e " << o.e);
     const RobotFamily family =
-        NamedParameterFamily(o.forcing, Params{o.T0, o.e, 0.0}, o.alpha, "e");
+        NamedParameterFamily({o.forcing, Params{o.T0, o.e, 0.0}, o.alpha}, "e");
     ContinuationOptions opt;
     opt.from = 0.05;
     opt.to = 1.0;

@@ -62,7 +62,7 @@ TEST(BranchSwitch, PeriodTwoBranchAgreesWithShootingAtEveryPoint) {
     EXPECT_EQ(b.motion.impacts_right, 4);
     EXPECT_EQ(b.motion.impacts_left, 2);
     const PeriodicMotion shot =
-        ShootPeriodicMotion(kForce, params, b.parameter, b.motion.state, 2, ShootingOptions{});
+        ShootPeriodicMotion({kForce, params, b.parameter}, b.motion.state, 2, ShootingOptions{});
     ASSERT_EQ(shot.status, ShootingStatus::kConverged);
     EXPECT_LE(std::abs(shot.state.x - b.motion.state.x), kStateTol);
     EXPECT_LE(std::abs(shot.state.u - b.motion.state.u), kStateTol);

@@ -156,7 +156,7 @@ TEST(Continuation, PeriodDoublingIsWhereThePeriodTwoMotionOfTheLongRunsBegins) {
   EXPECT_TRUE(Near(pd->parameter, 0.6822, 1e-3));
   // The shooting at the located value finds the multiplier -1.
   const PeriodicMotion at =
-      ShootPeriodicMotion(force, params, pd->parameter, pd->motion.state, 1, {});
+      ShootPeriodicMotion({force, params, pd->parameter}, pd->motion.state, 1, {});
   ASSERT_EQ(at.status, ShootingStatus::kConverged);
   EXPECT_TRUE(Near(at.multipliers[0].real(), -1.0, 1e-6));
   // Brute force on both sides: long runs from the flip's state, slightly kicked.
@@ -164,13 +164,13 @@ TEST(Continuation, PeriodDoublingIsWhereThePeriodTwoMotionOfTheLongRunsBegins) {
   kicked.x += 1e-4;
   MotionOptions slow;
   slow.transient = 3000;
-  const Motion below = LongRunMotion(force, params, pd->parameter - 0.002, kicked, slow);
-  const Motion above = LongRunMotion(force, params, pd->parameter + 0.002, kicked, slow);
+  const Motion below = LongRunMotion({force, params, pd->parameter - 0.002}, kicked, slow);
+  const Motion above = LongRunMotion({force, params, pd->parameter + 0.002}, kicked, slow);
   EXPECT_EQ(below.period, 2);
   EXPECT_EQ(above.period, 1);
   // The period-2 motion exists below the flip: the shooting with period 2 finds it.
   const PeriodicMotion two =
-      ShootPeriodicMotion(force, params, pd->parameter - 0.002, below.section, 2, {});
+      ShootPeriodicMotion({force, params, pd->parameter - 0.002}, below.section, 2, {});
   ASSERT_EQ(two.status, ShootingStatus::kConverged);
   EXPECT_EQ(two.period, 2);
   EXPECT_EQ(two.impacts_right, 4);

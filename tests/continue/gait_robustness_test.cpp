@@ -39,7 +39,7 @@ RobotModel At(const Orbit& o, const std::string& name, double value) {
 PeriodicMotion Shoot(const Orbit& o, const std::string& name, double value,
                      const PhaseState& start) {
   const RobotModel r = At(o, name, value);
-  return ShootPeriodicMotion(r.forcing, r.params, r.alpha, start, 1, ShootingOptions{});
+  return ShootPeriodicMotion(r, start, 1, ShootingOptions{});
 }
 
 // The checks of one limit in direction `sign` (-1 down, +1 up) from the gait's value.
@@ -137,19 +137,18 @@ constexpr double kSpeedTol = 1e-5;
 
 TEST(GaitRobustness, AChatteringCountChangeIsNoSpecialPoint) {
   const RobotModel r = ReachWinner();
-  const Motion m =
-      LongRunMotion(r.forcing, r.params, r.alpha, RestStart(0.0625, 0.0), MotionOptions{});
+  const Motion m = LongRunMotion(r, RestStart(0.0625, 0.0), MotionOptions{});
   ASSERT_EQ(m.status, MotionStatus::kPeriodic);
-  const GaitRobustness g = ComputeMotionRobustness({r.forcing, r.params, r.alpha, m.section});
+  const GaitRobustness g = ComputeMotionRobustness({r, m.section});
   ASSERT_EQ(g.parameters.size(), 3U);
   for (const CountChange& c : kCountChanges) {
     SCOPED_TRACE(c.name);
-    const RobotFamily family = NamedParameterFamily(r.forcing, r.params, r.alpha, c.name);
+    const RobotFamily family = NamedParameterFamily(r, c.name);
     // The independent view: Newton shooting on each side; the motion and its speed go on.
     PeriodicMotion side[2];
     for (int k : {0, 1}) {
       const RobotModel at = family(c.at + (k == 0 ? -kSide : kSide));
-      side[k] = FindPeriodicMotion(at.forcing, at.params, at.alpha, m.section, ShootingOptions{});
+      side[k] = FindPeriodicMotion(at, m.section, ShootingOptions{});
       ASSERT_EQ(side[k].status, ShootingStatus::kConverged);
       EXPECT_GE(side[k].impacts_right, 60);  // the chattering sequence on both sides
     }

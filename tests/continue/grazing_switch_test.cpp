@@ -54,8 +54,7 @@ double Distance(double x, double u, double v, const PhaseState& z) {
 // there, and a direct run of the simulator from it returns to it after each period p with the
 // motion's impacts, for as many returns as its instability lets any run stay on it.
 ::testing::AssertionResult IsPeriodicMotion(const RobotModel& r, const PeriodicMotion& m) {
-  const PeriodicMotion shot =
-      ShootPeriodicMotion(r.forcing, r.params, r.alpha, m.state, m.period, ShootingOptions{});
+  const PeriodicMotion shot = ShootPeriodicMotion(r, m.state, m.period, ShootingOptions{});
   const double moved = Distance(shot.state.x, shot.state.u, shot.state.v, m.state);
   if (shot.status != ShootingStatus::kConverged || !(shot.residual <= kShootingTol) ||
       !(moved <= kShootingTol)) {
@@ -86,7 +85,7 @@ TEST(GrazingSwitch, RobustGaitGoesOnBeyondItsGrazingWithOtherImpactsPerPeriod) {
   // checks such ends against a bisection on the motion's existence).
   const Orbit o = RobustGait();
   const Params params{o.T0, o.e, 0.0};
-  const RobotFamily family = NamedParameterFamily(o.forcing, params, o.alpha, "alpha");
+  const RobotFamily family = NamedParameterFamily({o.forcing, params, o.alpha}, "alpha");
   const ContinuationOptions range = Range(0.5 * o.alpha, 0.5 * (1.0 + o.alpha), o.alpha);
   const Branch gait = ContinueBranch(family, OrbitImpactState(o, o.forcing), range);
   ASSERT_EQ(gait.status, ContinuationStatus::kOk) << gait.message;

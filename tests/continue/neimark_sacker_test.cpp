@@ -86,8 +86,8 @@ double Distance(const PhaseState& a, const PhaseState& b) {
 // smallest distance between an iterate and the one p <= 64 periods later (0 for a motion of
 // period p).
 std::vector<double> Orbit(const Forcing& forcing, const PeriodicMotion& m, double* closes) {
-  const Params params = NsParams();
-  const detail::PeriodMap map(forcing, params, kNsAlpha, detail::SimulationOf(ShootingOptions{}));
+  const RobotModel robot{forcing, NsParams(), kNsAlpha};
+  const detail::PeriodMap map(robot, detail::SimulationOf(ShootingOptions{}));
   const PhaseState& fixed = m.state;
   detail::MapState s{fixed, m.mode};
   s.z.x += 1e-3;
@@ -115,7 +115,7 @@ TEST(NeimarkSacker, TheCapsulesTwoWallMotionLosesStabilityThroughAComplexPair) {
   o.from = 0.18;
   o.to = 0.2;
   o.start = 0.2;
-  const Branch b = ContinueBranch(NamedParameterFamily(kNsForce, params, kNsAlpha, "A"),
+  const Branch b = ContinueBranch(NamedParameterFamily({kNsForce, params, kNsAlpha}, "A"),
                                   RestStart(1.0 / 6.0, kTau / 3.0), o);
   ASSERT_EQ(b.status, ContinuationStatus::kOk) << b.message;
   const SpecialPoint* ns = nullptr;
@@ -141,7 +141,7 @@ TEST(NeimarkSacker, TheCapsulesTwoWallMotionLosesStabilityThroughAComplexPair) {
     const double A = ns->parameter + (side == 0 ? -kSide : kSide);
     const Forcing f = Forcing::Harmonic(A, 0.03, -2.9);
     const PeriodicMotion m =
-        ShootPeriodicMotion(f, params, kNsAlpha, ns->motion.state, 1, ShootingOptions{});
+        ShootPeriodicMotion({f, params, kNsAlpha}, ns->motion.state, 1, ShootingOptions{});
     ASSERT_EQ(m.status, ShootingStatus::kConverged) << "A = " << A;
     EXPECT_EQ(m.impacts_right, 1);
     EXPECT_EQ(m.impacts_left, 2);
@@ -166,7 +166,7 @@ TEST(NeimarkSacker, TheCapsulesTwoWallMotionLosesStabilityThroughAComplexPair) {
     const double A = ns->parameter + (k == 0 ? 1.0 : 4.0) * kCurveOffset;
     const Forcing f = Forcing::Harmonic(A, 0.03, -2.9);
     const PeriodicMotion m =
-        ShootPeriodicMotion(f, params, kNsAlpha, fixed[1].state, 1, ShootingOptions{});
+        ShootPeriodicMotion({f, params, kNsAlpha}, fixed[1].state, 1, ShootingOptions{});
     ASSERT_EQ(m.status, ShootingStatus::kConverged) << "A = " << A;
     EXPECT_GT(m.spectral_radius, 1.0) << "A = " << A;
     const std::vector<double> d = Orbit(f, m, &closes);

@@ -89,8 +89,7 @@ TEST(SpecialCurve, PeriodDoublingCurveHasAMultiplierMinusOneAtEveryPoint) {
   for (const CurvePoint& p : c.points) {
     // Newton shooting with period 1 from the point's state, at its robot: its own Jacobian.
     const RobotModel r = AlphaA(p.parameter, p.parameter2);
-    const PeriodicMotion m =
-        ShootPeriodicMotion(r.forcing, r.params, r.alpha, p.motion.state, 1, {});
+    const PeriodicMotion m = ShootPeriodicMotion(r, p.motion.state, 1, {});
     ASSERT_EQ(m.status, ShootingStatus::kConverged) << p.parameter << " " << p.parameter2;
     double nearest = HUGE_VAL;
     for (const auto& mu : m.multipliers) nearest = std::min(nearest, std::abs(mu + 1.0));
@@ -189,11 +188,13 @@ TEST(SpecialCurveInput, BadOptionsAreNamed) {
             "special point type = segment_change (located = true) is invalid: expected a located "
             "fold, period_doubling, grazing or speed_extremum");
   const Forcing f = Forcing::Harmonic(kA, kC, kPhi0);
-  EXPECT_EQ(testing::InvalidArgumentMessage(
-                [&] { NamedParameterSurface(f, OrbitParams(), 0.3, "A", "A"); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] {
+              NamedParameterSurface({f, OrbitParams(), 0.3}, "A", "A");
+            }),
             "param2 = A is invalid: expected a parameter other than param = A");
-  EXPECT_EQ(testing::InvalidArgumentMessage(
-                [&] { NamedParameterSurface(f, OrbitParams(), 0.3, "b1", "A"); }),
+  EXPECT_EQ(testing::InvalidArgumentMessage([&] {
+              NamedParameterSurface({f, OrbitParams(), 0.3}, "b1", "A");
+            }),
             "param2 = A is invalid: expected a parameter other than param = b1");
 }
 

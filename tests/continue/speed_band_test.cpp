@@ -66,7 +66,7 @@ double DirectSpeed(const RobotModel& r, const FromRestOptions& grid) {
 
 RobotFamily Along(const std::string& name) {
   const RobotModel r = ReachWinner();
-  return NamedParameterFamily(r.forcing, r.params, r.alpha, name);
+  return NamedParameterFamily(r, name);
 }
 
 // The parameters of the reach winner whose bands are checked, with their ranges (those of

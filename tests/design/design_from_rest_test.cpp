@@ -56,7 +56,7 @@ double ScanSpeed(double m2) {
   p.T0 = in.mu * in.g / (w * w * in.L);
   p.e = in.e;
   const Forcing f = Forcing::Harmonic(0.5 / (M * w * w * in.L), 0.1 / (M * w * w * in.L), 0.0);
-  const Attractors a = FindAttractors(f, p, m2 / M, FromRestOptions{});
+  const Attractors a = FindAttractors({f, p, m2 / M}, FromRestOptions{});
   EXPECT_EQ(a.event_limit_starts, 0);
   return 1e3 * w * in.L * a.mean_velocity;
 }
@@ -109,13 +109,13 @@ double DirectStartSpeed(const DesignInput& in, const DesignModel& m, int i, int 
   const FromRestOptions o = DesignFromRestOptions().check;
   const PhaseState s = GridStart(i, j, o.n_x, o.n_psi);
   SimOptions so;
-  so.alpha = m.alpha;
+  so.alpha = m.robot.alpha;
   so.x0 = s.x;
   so.u0 = s.u;
   so.v0 = s.v;
   so.transient = o.attractor.motion.transient;
   so.periods = kDirectRecord;
-  const SimResult r = Simulate(m.forcing.WithPhase(s.psi), m.params, so);
+  const SimResult r = Simulate(m.robot.forcing.WithPhase(s.psi), m.robot.params, so);
   EXPECT_EQ(r.status, SimStatus::kOk);
   return 1e3 * m.omega * in.L * r.v_mean;
 }
@@ -212,14 +212,14 @@ TEST(DesignFromRest, EnergyOfAPeriodicMotionBalancesAndMatchesADirectRunFromItsS
   // The same budget from the attractor's own first start: transient, then its period, tallied.
   const DesignModel& m = b.model;
   SimOptions so;
-  so.alpha = m.alpha;
+  so.alpha = m.robot.alpha;
   so.x0 = a.example.x;
   so.u0 = a.example.u;
   so.v0 = a.example.v;
   so.transient = DesignFromRestOptions().check.attractor.motion.transient;
   so.periods = a.motion.period;
   so.energy = true;
-  const SimResult run = Simulate(m.forcing.WithPhase(a.example.psi), m.params, so);
+  const SimResult run = Simulate(m.robot.forcing.WithPhase(a.example.psi), m.robot.params, so);
   ASSERT_EQ(run.status, SimStatus::kOk);
   const double unit = 1e3 * (in.m1 + b.m2_kg) * m.omega * m.omega * in.L * in.L;  // mJ
   EXPECT_TRUE(

@@ -109,10 +109,10 @@ TEST(DesignRobustness, InnerMassFamilyIsTheDesignsRobotAtEveryMass) {
         << lambda;
   }
   // At the design's mass it is the gait's robot itself.
-  EXPECT_EQ(family(1.0).alpha, gait.model.alpha);
-  EXPECT_EQ(family(1.0).forcing.amplitude(), gait.model.forcing.amplitude());
-  EXPECT_EQ(family(1.0).forcing.mean(), gait.model.forcing.mean());
-  EXPECT_EQ(family(1.0).params.T0, gait.model.params.T0);
+  EXPECT_EQ(family(1.0).alpha, gait.model.robot.alpha);
+  EXPECT_EQ(family(1.0).forcing.amplitude(), gait.model.robot.forcing.amplitude());
+  EXPECT_EQ(family(1.0).forcing.mean(), gait.model.robot.forcing.mean());
+  EXPECT_EQ(family(1.0).params.T0, gait.model.robot.params.T0);
 }
 
 // The example robot with the margins off and rho_max = 1: its gait (EvaluateGait) is any valid
@@ -197,8 +197,7 @@ TEST(DesignRobustness, ASegmentChangeTheGaitSurvivesIsNoLimitAndTheBandSaysHowFa
   DesignInput moved = in;
   moved.mu = 0.24;
   const DesignModel m = MapToModel(moved, gait.m2_kg, gait.frequency_hz);
-  const double speed =
-      FindAttractors(m.forcing, m.params, m.alpha, options.band.from_rest).mean_velocity;
+  const double speed = FindAttractors(m.robot, options.band.from_rest).mean_velocity;
   EXPECT_GE(speed, kLevel * mu.band.nominal_speed);
 }
 

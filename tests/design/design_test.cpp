@@ -50,12 +50,13 @@ TEST(Design, MapsThePhysicalRobotToTheModelOfSections2And9) {
   const double m2 = 0.3, f = 17.0;
   const DesignModel m = MapToModel(in, m2, f);
   const double w = 2.0 * M_PI * f;
-  EXPECT_TRUE(NearAbsBelowOne(m.params.T0, 0.3 * 9.81 / (w * w * 0.02), kMapRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(m.robot.params.T0, 0.3 * 9.81 / (w * w * 0.02), kMapRelTol));
   EXPECT_TRUE(
-      NearAbsBelowOne(m.forcing.amplitude(), 0.5 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(m.forcing.mean(), 0.1 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(m.alpha, 0.3 / 0.5, kMapRelTol));
-  EXPECT_EQ(m.params.e, 0.7);
+      NearAbsBelowOne(m.robot.forcing.amplitude(), 0.5 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
+  EXPECT_TRUE(
+      NearAbsBelowOne(m.robot.forcing.mean(), 0.1 / ((0.2 + 0.3) * w * w * 0.02), kMapRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(m.robot.alpha, 0.3 / 0.5, kMapRelTol));
+  EXPECT_EQ(m.robot.params.e, 0.7);
 }
 
 TEST(Design, GaitOfAChosenMassIsTheOrbitThatSolveGivesForTheMappedParameters) {
@@ -79,8 +80,8 @@ TEST(Design, GaitOfAChosenMassIsTheOrbitThatSolveGivesForTheMappedParameters) {
   EXPECT_TRUE(NearAbsBelowOne(g.impact_velocity_m_s, w * 0.02 * s.orbit.u, kMapRelTol));
   // The gait is the fastest stable valid orbit among the robot's orbits.
   int robust = 0;
-  for (const Solution& o : FindRobotOrbits(Forcing::Harmonic(0.5 / unit, 0.1 / unit, 0.0), p,
-                                           kStableM2 / (0.2 + kStableM2))) {
+  for (const Solution& o : FindRobotOrbits(
+           {Forcing::Harmonic(0.5 / unit, 0.1 / unit, 0.0), p, kStableM2 / (0.2 + kStableM2)})) {
     if (!o.validity.valid() || ComputeStability(o.orbit).spectral_radius > 1.0) continue;
     ++robust;
     EXPECT_LE(o.orbit.v_mean, g.solution.orbit.v_mean);
@@ -126,7 +127,7 @@ void ExpectSameDimensionlessGait(const Gait& a, const Gait& b) {
   EXPECT_TRUE(NearAbsBelowOne(ob.T0, oa.T0, kMapRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.forcing.amplitude(), oa.forcing.amplitude(), kMapRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.forcing.mean(), oa.forcing.mean(), kMapRelTol));
-  EXPECT_TRUE(NearAbsBelowOne(b.model.alpha, a.model.alpha, kMapRelTol));
+  EXPECT_TRUE(NearAbsBelowOne(b.model.robot.alpha, a.model.robot.alpha, kMapRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.alpha, oa.alpha, kRootRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.forcing.phi0(), oa.forcing.phi0(), kRootRelTol));
   EXPECT_TRUE(NearAbsBelowOne(ob.I, oa.I, kRootRelTol));
@@ -175,8 +176,8 @@ TEST(Design, ExampleRobotBestMassAgreesWithAnIndependentScan) {
     const double m2 =
         kReferenceLo * std::pow(kReferenceHi / kReferenceLo, i / (kReferenceScan - 1.0));
     const double unit = (0.2 + m2) * w * w * 0.02;
-    for (const Solution& s : FindRobotOrbits(Forcing::Harmonic(0.5 / unit, 0.1 / unit, 0.0),
-                                             Params{T0, 0.7}, m2 / (0.2 + m2))) {
+    for (const Solution& s : FindRobotOrbits(
+             {Forcing::Harmonic(0.5 / unit, 0.1 / unit, 0.0), Params{T0, 0.7}, m2 / (0.2 + m2)})) {
       if (!s.validity.valid() || !ComputeStability(s.orbit).stable) continue;
       const double v = w * 0.02 * s.orbit.v_mean;  // m/s
       if (v > best_v) {

@@ -45,14 +45,14 @@ TEST(AttractorsJob, IsTheClassificationOfTheGridFromRest) {
   const AttractorsJobOptions o = SmallMap();
   const AttractorsJobResult r = RunAttractorsJob(o);
   const Attractors direct =
-      ClassifyStarts(o.forcing, o.params, o.alpha, GridStarts(2, 3), o.attractor);
+      ClassifyStarts({o.forcing, o.params, o.alpha}, GridStarts(2, 3), o.attractor);
   EXPECT_TRUE(SameAttractors(r.attractors, direct));
   FromRestOptions from_rest;
   from_rest.n_x = 2;
   from_rest.n_psi = 3;
   from_rest.attractor = o.attractor;
   EXPECT_TRUE(
-      SameAttractors(r.attractors, FindAttractors(o.forcing, o.params, o.alpha, from_rest)));
+      SameAttractors(r.attractors, FindAttractors({o.forcing, o.params, o.alpha}, from_rest)));
   // The robot's known motion from rest (tests/attract/attractors_test.cpp): 3 right + 1 left.
   ASSERT_EQ(r.attractors.attractors.size(), 1U);
   EXPECT_EQ(r.attractors.attractors[0].motion.impacts_right, 3);

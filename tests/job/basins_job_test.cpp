@@ -52,7 +52,7 @@ TEST(BasinsJob, VelocityPlaneStartsAtThePositionsAndVelocitiesOfItsCells) {
   const BasinsJobResult r = RunBasinsJob(o);
   EXPECT_TRUE(SameAttractors(
       r.map.attractors,
-      ClassifyStarts(o.map.forcing, o.map.params, o.map.alpha, starts, o.map.attractor)));
+      ClassifyStarts({o.map.forcing, o.map.params, o.map.alpha}, starts, o.map.attractor)));
 }
 
 TEST(BasinsJob, RestPlaneIsTheMapOfTheAttractorsJob) {

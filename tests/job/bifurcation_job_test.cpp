@@ -50,7 +50,7 @@ TEST(BifurcationJob, WritesTheDiagramOfComputeBifurcation) {
   const BifurcationJobOptions job = SmallStudy("bifurcation_job");
   const BifurcationJobResult r = RunBifurcationJob(job);
   const BifurcationDiagram d =
-      ComputeBifurcation(job.robot.forcing, job.robot.params, job.robot.alpha, job.diagram);
+      ComputeBifurcation({job.robot.forcing, job.robot.params, job.robot.alpha}, job.diagram);
   ASSERT_EQ(r.rows.impacts.size(), d.impacts.size());
   ASSERT_EQ(r.rows.summary.size(), d.summary.size());
   for (std::size_t i = 0; i < d.impacts.size(); ++i) {

@@ -69,7 +69,7 @@ TEST(OptimizeJob, MainJobContinuesBothMotionsAsTheStagesDo) {
   const Motion& motion = r.reach.attractors.attractors.front().motion;
   ASSERT_EQ(motion.status, MotionStatus::kPeriodic);
   const GaitRobustness reached =
-      ComputeMotionRobustness({r.reach.forcing, job.params, r.reach.alpha, motion.section});
+      ComputeMotionRobustness({{r.reach.forcing, job.params, r.reach.alpha}, motion.section});
   ASSERT_EQ(r.reach_robustness.parameters.size(), 3U);
   for (std::size_t i = 0; i < 3; ++i) {
     const ParameterRobustness& p = r.reach_robustness.parameters[i];
@@ -105,7 +105,7 @@ TEST(OptimizeJob, MainJobClimbsFromTheSineToTheFastestDrives) {
       EXPECT_GE(d.mean_velocity, r.drives[k - 1].mean_velocity);
     }
     // The reported speed is that of an independent run of the reported drive.
-    EXPECT_EQ(FindAttractors(d.forcing, job.params, d.alpha, job.check).mean_velocity,
+    EXPECT_EQ(FindAttractors({d.forcing, job.params, d.alpha}, job.check).mean_velocity,
               d.mean_velocity);
   }
 }

@@ -23,7 +23,7 @@ TEST(OrbitsJob, FindsWhatTheSearchFinds) {
   const OrbitsJobOptions o = Robot();
   const OrbitsJobResult r = RunOrbitsJob(o);
   bool complete = false;
-  const std::vector<Solution> direct = FindRobotOrbits(o.forcing, o.params, o.alpha, &complete);
+  const std::vector<Solution> direct = FindRobotOrbits({o.forcing, o.params, o.alpha}, &complete);
   ASSERT_FALSE(direct.empty());
   ASSERT_EQ(r.orbits.size(), direct.size());
   for (std::size_t i = 0; i < direct.size(); ++i) {

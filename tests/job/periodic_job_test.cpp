@@ -50,7 +50,7 @@ TEST(PeriodicJob, FromRestRunsItsTransientThenShoots) {
   EXPECT_EQ(stages, (std::vector<std::string>{"periodic: Newton shooting", ""}));
   ShootingOptions so;
   so.transient = 200;  // the start's default
-  EXPECT_TRUE(SameMotion(r.motion, FindPeriodicMotion(robot.forcing, robot.params, robot.alpha,
+  EXPECT_TRUE(SameMotion(r.motion, FindPeriodicMotion({robot.forcing, robot.params, robot.alpha},
                                                       RestStart(0.5, 1.0), so)));
   EXPECT_EQ(r.options.shooting.transient, 200);
   // The motion from rest of this robot (tests/attract/periodic_test.cpp): 3 right + 1 left.
@@ -64,13 +64,14 @@ TEST(PeriodicJob, FromAStateShootsAtOnceAndWithThePeriodKnownSkipsTheSearch) {
   PeriodicFromState near;
   near.state = {1.0, -0.2, 0.17, 0.0};
   const PeriodicJobResult r = RunPeriodicJob(Robot(robot, near));
-  EXPECT_TRUE(SameMotion(r.motion, FindPeriodicMotion(robot.forcing, robot.params, robot.alpha,
+  EXPECT_TRUE(SameMotion(r.motion, FindPeriodicMotion({robot.forcing, robot.params, robot.alpha},
                                                       near.state, ShootingOptions{})));
   EXPECT_EQ(r.options.shooting.transient, 0);
   EXPECT_EQ(r.motion.period, 1);
   const PeriodicJobResult known = RunPeriodicJob(Robot(robot, PeriodicOfPeriod{near.state, 1}));
-  EXPECT_TRUE(SameMotion(known.motion, ShootPeriodicMotion(robot.forcing, robot.params, robot.alpha,
-                                                           near.state, 1, ShootingOptions{})));
+  EXPECT_TRUE(
+      SameMotion(known.motion, ShootPeriodicMotion({robot.forcing, robot.params, robot.alpha},
+                                                   near.state, 1, ShootingOptions{})));
 }
 
 TEST(PeriodicJob, StartPhaseThatIsNoPhaseIsRefusedNamingPsi) {

@@ -117,14 +117,14 @@ std::vector<LongCall> LongCalls() {
          ShootingOptions o;
          o.transient = 1000;
          o.interrupt = i;
-         FindPeriodicMotion(kSmallOrbitForce, SmallOrbitParams(), 0.3, RestStart(0.5, 0.0), o);
+         FindPeriodicMotion({kSmallOrbitForce, SmallOrbitParams(), 0.3}, RestStart(0.5, 0.0), o);
        }},
       {"periodic_newton",
        [](const Interrupt& i) {
          const Orbit orbit = Solve(kSmallOrbitForce, SmallOrbitParams()).orbit;
          ShootingOptions o;
          o.interrupt = i;
-         ShootPeriodicMotion(orbit.forcing, SmallOrbitParams(), orbit.alpha, NearSmallOrbit(), 1,
+         ShootPeriodicMotion({orbit.forcing, SmallOrbitParams(), orbit.alpha}, NearSmallOrbit(), 1,
                              o);
        }},
       {"gait_from_rest",
@@ -178,11 +178,11 @@ TEST(Interrupt, ThatNeverThrowsIsAskedOnTheCallingThreadAndChangesNoNumber) {
     ShootingOptions o;
     o.transient = 200;
     const PeriodicMotion plain =
-        FindPeriodicMotion(kSmallOrbitForce, SmallOrbitParams(), 0.3, RestStart(0.5, 0.0), o);
+        FindPeriodicMotion({kSmallOrbitForce, SmallOrbitParams(), 0.3}, RestStart(0.5, 0.0), o);
     CountingInterrupt interrupt(0);
     o.interrupt = interrupt.Get();
     const PeriodicMotion asked =
-        FindPeriodicMotion(kSmallOrbitForce, SmallOrbitParams(), 0.3, RestStart(0.5, 0.0), o);
+        FindPeriodicMotion({kSmallOrbitForce, SmallOrbitParams(), 0.3}, RestStart(0.5, 0.0), o);
     EXPECT_GE(interrupt.asks(), o.transient);  // at least once a period of the transient
     EXPECT_EQ(interrupt.foreign_asks(), 0);
     EXPECT_EQ(asked.state.x, plain.state.x);
@@ -192,10 +192,10 @@ TEST(Interrupt, ThatNeverThrowsIsAskedOnTheCallingThreadAndChangesNoNumber) {
   }
   {
     FromRestOptions o;
-    const Attractors plain = FindAttractors(kSmallOrbitForce, SmallOrbitParams(), 0.3, o);
+    const Attractors plain = FindAttractors({kSmallOrbitForce, SmallOrbitParams(), 0.3}, o);
     CountingInterrupt interrupt(0);
     o.attractor.interrupt = interrupt.Get();
-    const Attractors asked = FindAttractors(kSmallOrbitForce, SmallOrbitParams(), 0.3, o);
+    const Attractors asked = FindAttractors({kSmallOrbitForce, SmallOrbitParams(), 0.3}, o);
     EXPECT_GT(interrupt.asks(), 0);
     EXPECT_EQ(interrupt.foreign_asks(), 0);
     EXPECT_EQ(asked.mean_velocity, plain.mean_velocity);

@@ -34,7 +34,7 @@ TEST(Reach, IsNeverSlowerFromRestThanTheRobustGaitItWasSeededWith) {
   const double seed_v = r.seed.from_rest.attractors.mean_velocity;
   EXPECT_GE(r.mean_velocity, seed_v) << r.message;
   // The reported robot, re-run independently with the full settings.
-  const Attractors again = FindAttractors(r.forcing, params, r.alpha, o.check);
+  const Attractors again = FindAttractors({r.forcing, params, r.alpha}, o.check);
   EXPECT_EQ(again.event_limit_starts, 0);
   EXPECT_TRUE(Near(again.mean_velocity, r.mean_velocity, kSameRun));
   EXPECT_EQ(r.attractors.starts, 16);
@@ -122,7 +122,7 @@ TEST(Reach, EventLimitPointsAreNeverPicked) {
     EXPECT_EQ(r.attractors.event_limit_starts, 0) << r.message;
     EXPECT_FALSE(std::isnan(r.mean_velocity));
     EXPECT_EQ(r.alpha, 0.95);
-    const Attractors again = FindAttractors(r.forcing, params, r.alpha, o.check);
+    const Attractors again = FindAttractors({r.forcing, params, r.alpha}, o.check);
     EXPECT_EQ(again.event_limit_starts, 0);
   }
 }

@@ -35,7 +35,7 @@ class RobotOrbits : public ::testing::TestWithParam<Case> {};
 
 TEST_P(RobotOrbits, EveryReturnedOrbitHasTheRobotsMassRatio) {
   const Case& k = GetParam();
-  const std::vector<Solution> found = FindRobotOrbits(k.force, P(k), k.alpha);
+  const std::vector<Solution> found = FindRobotOrbits({k.force, P(k), k.alpha});
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Orbit& o = found[i].orbit;
     ASSERT_TRUE(o.ok());
@@ -55,7 +55,7 @@ TEST_P(RobotOrbits, EveryReturnedOrbitHasTheRobotsMassRatio) {
 // in such a bracket.
 TEST_P(RobotOrbits, NoRootIsMissedComparedWithADenseScan) {
   const Case& k = GetParam();
-  const std::vector<Solution> found = FindRobotOrbits(k.force, P(k), k.alpha);
+  const std::vector<Solution> found = FindRobotOrbits({k.force, P(k), k.alpha});
   std::vector<std::pair<double, double>> brackets;
   double prev_phi = NAN, prev_d = NAN, prev_phi1 = NAN;
   for (int i = 0; i <= kDenseScan; ++i) {
@@ -88,7 +88,7 @@ TEST_P(RobotOrbits, ContainsTheOrbitItsMassRatioCameFrom) {
   for (const double phi0 : {-2.8, -2.0, 2.5}) {
     const Orbit o = ComputeOrbit(k.force.WithPhase(phi0), P(k));
     if (!o.ok()) continue;
-    const std::vector<Solution> found = FindRobotOrbits(k.force, P(k), o.alpha);
+    const std::vector<Solution> found = FindRobotOrbits({k.force, P(k), o.alpha});
     int matches = 0;
     for (const Solution& s : found) matches += std::abs(s.orbit.forcing.phi0() - phi0) < 1e-9;
     EXPECT_EQ(matches, 1) << "phi0 = " << phi0 << ", alpha = " << o.alpha;
@@ -186,7 +186,7 @@ TEST(RobotOrbitsNearFold, ReturnEachOrbitOnceForAlphasApproachingTheFoldFromBoth
     for (const double side : {-1.0, 1.0}) {
       const double a = fold + side * d;
       const int expected = scan_count(a);
-      const std::vector<Solution> found = FindRobotOrbits(f, p, a);
+      const std::vector<Solution> found = FindRobotOrbits({f, p, a});
       EXPECT_EQ(static_cast<int>(found.size()), expected) << "alpha = fold + " << side * d;
       // Below the fold the pair exists: two more orbits than above it.
       if (side < 0.0) below_with_pair += expected >= 2;
@@ -196,20 +196,20 @@ TEST(RobotOrbitsNearFold, ReturnEachOrbitOnceForAlphasApproachingTheFoldFromBoth
   EXPECT_EQ(checked, 20);
   EXPECT_EQ(below_with_pair, 10);
   // The command line's case: two orbits, 0.0095 apart (it listed 32 before the bands).
-  EXPECT_EQ(FindRobotOrbits(f, p, 0.68618).size(), 2U);
+  EXPECT_EQ(FindRobotOrbits({f, p, 0.68618}).size(), 2U);
 }
 
 TEST(RobotOrbitsInput, BadMassRatioIsRejectedWithItsRule) {
   Params p;
   try {
-    FindRobotOrbits(Forcing::Harmonic(0.5, 0.5, 0.0), p, 1.5);
+    FindRobotOrbits({Forcing::Harmonic(0.5, 0.5, 0.0), p, 1.5});
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "mass ratio alpha = 1.5 is invalid: expected 0 < alpha < 1");
   }
   p.T0 = -1.0;
   try {
-    FindRobotOrbits(Forcing::Harmonic(0.5, 0.5, 0.0), p, 0.5);
+    FindRobotOrbits({Forcing::Harmonic(0.5, 0.5, 0.0), p, 0.5});
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "friction bound T0 = -1 is invalid: expected a finite T0 > 0");
@@ -225,15 +225,15 @@ TEST(RobotOrbitsInput, SearchStoppedByTheWorkBoundIsReportedIncomplete) {
   p.T0 = 0.1;
   p.e = 0.5;
   bool complete = false;
-  const std::vector<Solution> all = FindRobotOrbits(f, p, 0.199, &complete);
+  const std::vector<Solution> all = FindRobotOrbits({f, p, 0.199}, &complete);
   EXPECT_TRUE(complete);
   EXPECT_GE(all.size(), 2U);
   complete = true;
-  const std::vector<Solution> cut = FindRobotOrbits(f, p, 0.199, &complete, 600);
+  const std::vector<Solution> cut = FindRobotOrbits({f, p, 0.199}, &complete, 600);
   EXPECT_FALSE(complete);
   EXPECT_LE(cut.size(), all.size());
   try {
-    FindRobotOrbits(f, p, 0.199, &complete, 0);
+    FindRobotOrbits({f, p, 0.199}, &complete, 0);
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "max_evaluations = 0 is invalid: expected >= 1");
@@ -242,10 +242,10 @@ TEST(RobotOrbitsInput, SearchStoppedByTheWorkBoundIsReportedIncomplete) {
 
 TEST(RobotOrbitsInput, NoOrbitWithoutPositiveMeanForce) {
   Params p;
-  EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3).empty());
-  EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, -0.1, 0.0), p, 0.3).empty());
+  EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3}).empty());
+  EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, -0.1, 0.0), p, 0.3}).empty());
   bool complete = false;  // nothing to search: complete
-  EXPECT_TRUE(FindRobotOrbits(Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3, &complete).empty());
+  EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3}, &complete).empty());
   EXPECT_TRUE(complete);
 }
 

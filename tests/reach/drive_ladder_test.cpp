@@ -146,7 +146,7 @@ TEST(DriveLadder, BeatsARandomSearchOfTheSameBudget) {
       }
       const double alpha = std::uniform_real_distribution<double>(0.05, 0.95)(rng);
       const Forcing f = DriveAt(family, y.data(), l.params.T0, best.forcing.phi0());
-      const Attractors a = FindAttractors(f, l.params, alpha, o.search);
+      const Attractors a = FindAttractors({f, l.params, alpha}, o.search);
       if (a.event_limit_starts == 0 && a.mean_velocity > best_score) {
         best_score = a.mean_velocity;
         best_force = f;
@@ -154,7 +154,8 @@ TEST(DriveLadder, BeatsARandomSearchOfTheSameBudget) {
       }
     }
     ASSERT_FALSE(std::isnan(best_alpha));
-    const double random_v = FindAttractors(best_force, l.params, best_alpha, o.check).mean_velocity;
+    const double random_v =
+        FindAttractors({best_force, l.params, best_alpha}, o.check).mean_velocity;
     EXPECT_GE(best.mean_velocity, random_v) << "random search seed " << seed;
   }
 }
@@ -212,7 +213,7 @@ TEST(DriveLadder, WithTheFrequencyFreeEveryStepKeepsTheBoundOfItsOwnT0) {
     EXPECT_EQ(step.physical_speed, step.mean_velocity / std::sqrt(step.T0));
     Params at = params;
     at.T0 = step.T0;
-    EXPECT_EQ(FindAttractors(step.forcing, at, step.alpha, QuickCheck()).mean_velocity,
+    EXPECT_EQ(FindAttractors({step.forcing, at, step.alpha}, QuickCheck()).mean_velocity,
               step.mean_velocity);
   }
   const ReachResult &one = ladder.steps[0], &two = ladder.steps[1];

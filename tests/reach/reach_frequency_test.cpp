@@ -38,7 +38,7 @@ TEST(ReachFrequency, TheWinnersSpeedIsItsMeanVelocityOverTheRootOfItsT0) {
   // The reported numbers are those of the robot at the winner's T0, run again here.
   Params at = params;
   at.T0 = r.T0;
-  EXPECT_EQ(FindAttractors(r.forcing, at, r.alpha, o.check).mean_velocity, r.mean_velocity);
+  EXPECT_EQ(FindAttractors({r.forcing, at, r.alpha}, o.check).mean_velocity, r.mean_velocity);
   // The robust gait at the robot's own T0 is one of the candidates: the winner is at least as
   // fast in units of sqrt(mu g L) as the gait's motion from rest (sqrt(T0) = 1 there).
   ASSERT_TRUE(r.seed.from_rest.checked);

@@ -592,7 +592,7 @@ TEST(Sweep, RobotModeWritesOneRowPerOrbitOfThatMassRatio) {
   int points_without = 0, orbits_seen = 0;
   for (int i = 0; i < 19; ++i) {
     const double alpha = o.grid.axes[0].Value(i);
-    const std::vector<Solution> orbits = FindRobotOrbits(o.forcing, o.params, alpha);
+    const std::vector<Solution> orbits = FindRobotOrbits({o.forcing, o.params, alpha});
     if (orbits.empty()) {
       ASSERT_LT(r, rows.size());
       std::vector<std::string> expected(14, "");

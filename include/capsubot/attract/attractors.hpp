@@ -21,6 +21,7 @@
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 #include "capsubot/parallel/blocks.hpp"
@@ -116,8 +117,8 @@ struct Motion {
 /// periods, place the section, record options.record periods and classify. Throws
 /// std::invalid_argument for bad params, alpha, start or options; simulator outcomes (an event
 /// limit) are statuses.
-Motion LongRunMotion(const Forcing& forcing, const Params& params, double alpha,
-                     const PhaseState& start, const MotionOptions& options);
+Motion LongRunMotion(const RobotModel& robot, const PhaseState& start,
+                     const MotionOptions& options);
 
 /// A start from rest (docs/model.md section 12): x = x0, u = v = 0 at forcing phase psi.
 PhaseState RestStart(double x0, double psi);
@@ -195,8 +196,7 @@ struct Attractors {
 /// The long-run motion of every start, in the order given, computed in blocks of starts by
 /// `backend` (this process's threads by default). Throws std::invalid_argument for bad inputs
 /// (naming the field).
-std::vector<Motion> LongRunMotions(const Forcing& forcing, const Params& params, double alpha,
-                                   const std::vector<PhaseState>& starts,
+std::vector<Motion> LongRunMotions(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                    const AttractorOptions& options,
                                    const StartsProgress& progress = {},
                                    const BlockBackend& backend = LocalBlocks());
@@ -210,10 +210,9 @@ using MotionSink = std::function<void(std::int64_t begin, std::int64_t end, cons
 /// options.interrupt asked after each. The motions do not depend on `first`, the backend or
 /// the threads. Throws
 /// std::invalid_argument for bad inputs (naming the field) before any call of `sink`.
-void StreamLongRunMotions(const Forcing& forcing, const Params& params, double alpha,
-                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          std::int64_t first, const MotionSink& sink,
-                          const BlockBackend& backend = LocalBlocks());
+void StreamLongRunMotions(const RobotModel& robot, const std::vector<PhaseState>& starts,
+                          const AttractorOptions& options, std::int64_t first,
+                          const MotionSink& sink, const BlockBackend& backend = LocalBlocks());
 
 /// How motions are grouped into attractors (AttractorOptions' two tolerances).
 struct Grouping {
@@ -233,16 +232,14 @@ Attractors GroupMotions(const std::vector<PhaseState>& starts, std::vector<Motio
 /// The long-run motion of every start (LongRunMotions) grouped into attractors (GroupMotions),
 /// the one-impact orbits recognised. Throws
 /// std::invalid_argument for bad inputs (naming the field).
-Attractors ClassifyStarts(const Forcing& forcing, const Params& params, double alpha,
-                          const std::vector<PhaseState>& starts, const AttractorOptions& options,
-                          const StartsProgress& progress = {},
+Attractors ClassifyStarts(const RobotModel& robot, const std::vector<PhaseState>& starts,
+                          const AttractorOptions& options, const StartsProgress& progress = {},
                           const BlockBackend& backend = LocalBlocks());
 
 /// The computers of ClassifyStarts' blocks (blocks.hpp): unit i is starts[i], its bytes the
 /// bytes of its Motion (processes of one machine type exchange them). The arguments must
 /// outlive the computers. A distributed backend's workers compute with these.
-BlockComputeFactory MotionBlocks(const Forcing& forcing, const Params& params, double alpha,
-                                 const std::vector<PhaseState>& starts,
+BlockComputeFactory MotionBlocks(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                  const AttractorOptions& options);
 
 /// Starts from rest on the grid of GridStart.
@@ -258,8 +255,8 @@ struct FromRestOptions {
 
 /// The attractors reached from rest (docs/model.md section 12): starts in the order
 /// i = 0..n_x-1 (outer), j = 0..n_psi-1 (inner).
-Attractors FindAttractors(const Forcing& forcing, const Params& params, double alpha,
-                          const FromRestOptions& options, const StartsProgress& progress = {});
+Attractors FindAttractors(const RobotModel& robot, const FromRestOptions& options,
+                          const StartsProgress& progress = {});
 
 /// True when `motion` is the one-impact orbit `orbit` (docs/model.md section 4) of the robot
 /// driven by `forcing`: period 1, one right and no left impact per period, and the section

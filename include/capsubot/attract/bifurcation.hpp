@@ -113,15 +113,13 @@ struct BifurcationDiagram {
 /// names the parameter and the value).
 /// `progress` (optional) is told the parameter values simulated so far (up and down sweeps
 /// together) of their total, in increasing order.
-BifurcationDiagram ComputeBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options,
+BifurcationDiagram ComputeBifurcation(const RobotModel& robot, const BifurcationOptions& options,
                                       const StartsProgress& progress = {},
                                       const BlockBackend& backend = LocalBlocks());
 
 /// Throws what ComputeBifurcation throws for bad inputs, without computing anything (a writer
 /// checks its inputs before it opens a file).
-void ValidateBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                         const BifurcationOptions& options);
+void ValidateBifurcation(const RobotModel& robot, const BifurcationOptions& options);
 
 /// Receives one part of a diagram: its rows, parts = {its id}, total_parts.
 using BifurcationPartSink = std::function<void(const BifurcationDiagram& part)>;
@@ -135,8 +133,7 @@ using BifurcationPartSink = std::function<void(const BifurcationDiagram& part)>;
 /// when it arrives). Throws std::invalid_argument for bad inputs before any call of `sink`;
 /// what `sink` throws stops the run (no further call) and is rethrown once the parts being
 /// computed end.
-void StreamBifurcation(const Forcing& forcing, const Params& params, double alpha,
-                       const BifurcationOptions& options, int first,
+void StreamBifurcation(const RobotModel& robot, const BifurcationOptions& options, int first,
                        const BifurcationPartSink& sink, const StartsProgress& progress = {},
                        const BlockBackend& backend = LocalBlocks());
 
@@ -144,7 +141,6 @@ void StreamBifurcation(const Forcing& forcing, const Params& params, double alph
 /// shard, its bytes the values of its ImpactPoint and BifurcationPoint rows (processes of one
 /// machine type exchange them). The arguments must outlive the computers; the study is
 /// planned (and checked) by each computer. A distributed backend's workers compute with these.
-BlockComputeFactory BifurcationBlocks(const Forcing& forcing, const Params& params, double alpha,
-                                      const BifurcationOptions& options);
+BlockComputeFactory BifurcationBlocks(const RobotModel& robot, const BifurcationOptions& options);
 
 }  // namespace capsubot

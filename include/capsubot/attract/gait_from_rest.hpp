@@ -33,10 +33,10 @@ struct GaitFromRest {
 GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Params& params,
                                const FromRestOptions& options = {});
 
-/// The same with the robot's force `robot` (the orbit's force up to its phase: a motor's own
+/// The same with the robot's force `motor` (the orbit's force up to its phase: a motor's own
 /// force, phi0 = 0, whose phase origin then counts the start phases psi, as the design's speed
-/// bands count them).
-GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& robot, const Params& params,
+/// bands count them); the robot is that force with `params` and the orbit's alpha.
+GaitFromRest CheckGaitFromRest(const Orbit& orbit, const Forcing& motor, const Params& params,
                                const FromRestOptions& options = {});
 
 /// Where the inner body stays in a periodic motion without impacts: "at rest against the right

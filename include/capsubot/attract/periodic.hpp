@@ -81,13 +81,12 @@ struct PeriodicMotion {
 /// the period p <= max_period is the one whose p-th iterate comes back closest (the smallest
 /// such p within rounding), then Newton's method on P^p(z) - z. Throws std::invalid_argument
 /// for bad params, alpha, start or options; outcomes are statuses.
-PeriodicMotion FindPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                  const PhaseState& start, const ShootingOptions& options);
+PeriodicMotion FindPeriodicMotion(const RobotModel& robot, const PhaseState& start,
+                                  const ShootingOptions& options);
 
 /// The same with the period given (1 <= period <= 64) and no transient: Newton from `start`,
 /// whose phase is taken as the section.
-PeriodicMotion ShootPeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                   const PhaseState& start, int period,
+PeriodicMotion ShootPeriodicMotion(const RobotModel& robot, const PhaseState& start, int period,
                                    const ShootingOptions& options);
 
 }  // namespace capsubot

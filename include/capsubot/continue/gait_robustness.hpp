@@ -96,12 +96,10 @@ struct GaitRobustness {
   std::string Summary(const std::string& indent = "  ") const;
 };
 
-/// A periodic motion to continue: the robot (force, T0 and e of `params`, alpha) and a state
-/// on the motion (a fixed point of its period map, as Newton shooting refines it).
+/// A periodic motion to continue: the robot (its force, T0 and e of its params, alpha) and a
+/// state on the motion (a fixed point of its period map, as Newton shooting refines it).
 struct MotionToContinue {
-  Forcing forcing;
-  Params params;
-  double alpha;
+  RobotModel robot;
   PhaseState start;
 };
 

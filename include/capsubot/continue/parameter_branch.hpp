@@ -7,7 +7,7 @@
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/continue/special_curve.hpp"
 #include "capsubot/model/forcing.hpp"
-#include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
 namespace capsubot {
@@ -20,14 +20,13 @@ PhaseState OrbitImpactState(const Orbit& orbit, const Forcing& forcing);
 /// The start on the robot's valid one-impact orbit with the smallest spectral radius
 /// (FindRobotOrbits, docs/orbit.md), right after its impact. Throws std::invalid_argument
 /// ("from_orbit is invalid for this robot: ...") when the robot has none.
-PhaseState OneImpactOrbitStart(const Forcing& forcing, const Params& params, double alpha);
+PhaseState OneImpactOrbitStart(const RobotModel& robot);
 
 /// The robot at each value of the parameter named `param` (A, c, alpha, T0, e, phi0, a1..a16,
 /// b1..b16: the robot parameters of ModelParameter), the rest as given. Throws
 /// std::invalid_argument for a name it does not know or a parameter the force does not have. The
 /// family holds copies.
-RobotFamily NamedParameterFamily(const Forcing& forcing, const Params& params, double alpha,
-                                 const std::string& param);
+RobotFamily NamedParameterFamily(const RobotModel& robot, const std::string& param);
 
 /// One end of a parameter's range with the name a message gives it ("from", "to2").
 struct RangeEnd {
@@ -47,16 +46,15 @@ double RobotValueInRange(const RobotModel& robot, const std::string& param, cons
 /// as NamedParameterFamily does for either name (for param2 the message begins "param2 = "
 /// instead of "parameter = "), and when both name the same parameter
 /// ("param2 = A is invalid: expected a parameter other than param = A").
-RobotSurface NamedParameterSurface(const Forcing& forcing, const Params& params, double alpha,
-                                   const std::string& param, const std::string& param2);
+RobotSurface NamedParameterSurface(const RobotModel& robot, const std::string& param,
+                                   const std::string& param2);
 
 /// Follows the periodic motion near `start` in the parameter named `param` (A, c, alpha, T0,
 /// e, phi0, a1..a16, b1..b16: the robot parameters of ModelParameter) over [options.from,
 /// options.to], from the robot's own value of it (which sets options.start). Throws
 /// std::invalid_argument for a parameter the force does not have, bad params, bad options or the
 /// robot's value outside the range; outcomes are statuses of the Branch (ContinueBranch).
-Branch ContinueParameter(const Forcing& forcing, const Params& params, double alpha,
-                         const std::string& param, const PhaseState& start,
+Branch ContinueParameter(const RobotModel& robot, const std::string& param, const PhaseState& start,
                          ContinuationOptions options);
 
 }  // namespace capsubot

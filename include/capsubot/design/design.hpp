@@ -17,6 +17,7 @@
 #include "capsubot/model/energy.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_options.hpp"
 #include "capsubot/orbit/stability.hpp"
@@ -95,9 +96,9 @@ struct DesignInput {
 
 /// The dimensionless model of one robot (docs/model.md sections 2 and 9).
 struct DesignModel {
-  Forcing forcing;      ///< F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs)
-  Params params;        ///< T0, e and the clearance margin d
-  double alpha = kNaN;  ///< m2/(m1+m2)
+  /// The robot: F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs); T0, e
+  /// and the margins d, d_s, s; alpha = m2/(m1+m2).
+  RobotModel robot;
   double omega = kNaN;  ///< 2 pi f [rad/s]
 };
 

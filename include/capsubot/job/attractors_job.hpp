@@ -13,6 +13,7 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/parallel/blocks.hpp"
 #include "capsubot/sweep/start_map.hpp"
@@ -61,9 +62,7 @@ struct AttractorsJobOptions {
 /// shard) and how each is classified. The workers of a distributed backend compute the same
 /// blocks (Blocks(): MotionBlocks, which refer to this object: it must outlive them).
 struct StartMapWork {
-  Forcing forcing;
-  Params params;
-  double alpha = kNaN;
+  RobotModel robot;
   std::vector<PhaseState> starts;
   AttractorOptions attractor;
 

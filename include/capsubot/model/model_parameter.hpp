@@ -9,8 +9,7 @@
 #include <string>
 
 #include "capsubot/model/forcing.hpp"
-#include "capsubot/model/params.hpp"
-#include "capsubot/numerics/not_computed.hpp"
+#include "capsubot/model/robot_model.hpp"
 
 namespace capsubot {
 
@@ -72,14 +71,6 @@ bool IsRobotParameter(ModelParameter parameter);
 /// Throws std::invalid_argument "parameter = <name> is invalid: expected one of A, c, alpha,
 /// T0, e, phi0, or a Fourier coefficient a1..a16, b1..b16".
 ModelParameter ParseRobotParameter(const std::string& name, int* harmonic = nullptr);
-
-/// The robot at one point of a study (one value of a diagram's or a branch's parameter, one
-/// point of a grid): its force, its parameters and its mass ratio.
-struct RobotModel {
-  Forcing forcing;      ///< the motor force
-  Params params;        ///< T0, e (and the margins, which are requirements, not the robot's)
-  double alpha = kNaN;  ///< mass ratio, 0 < alpha < 1
-};
 
 /// Throws std::invalid_argument unless `parameter` (with `harmonic`) is a robot parameter that can
 /// be set on `forcing`: not A, a_k, b_k on a pulse force ("parameter = A is invalid for a pulse

@@ -63,8 +63,8 @@ struct BifurcationShardSummary {
 /// std::invalid_argument for bad inputs or a checkpoint of another run or shard, IoError for a
 /// file that cannot be used or a damaged checkpoint or partial file; the inputs and both
 /// checkpoints are checked before any file is touched.
-BifurcationShardSummary WriteBifurcationShard(const Forcing& forcing, const Params& params,
-                                              double alpha, const BifurcationOptions& options,
+BifurcationShardSummary WriteBifurcationShard(const RobotModel& robot,
+                                              const BifurcationOptions& options,
                                               const BifurcationShardFiles& files,
                                               const StartsProgress& progress = {},
                                               const BlockBackend& backend = LocalBlocks());

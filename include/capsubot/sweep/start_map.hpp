@@ -66,8 +66,7 @@ struct StartShardSummary {
 /// `resume` continues after the last checkpoint. `progress` is told the shard's starts done.
 /// Throws std::invalid_argument for bad inputs or a checkpoint of another run or shard (before
 /// any file is touched), IoError for a file that cannot be used or a damaged checkpoint.
-StartShardSummary WriteStartShard(const Forcing& forcing, const Params& params, double alpha,
-                                  const std::vector<PhaseState>& starts,
+StartShardSummary WriteStartShard(const RobotModel& robot, const std::vector<PhaseState>& starts,
                                   const AttractorOptions& attractor,
                                   const StartShardOptions& options,
                                   const StartsProgress& progress = {},

@@ -31,7 +31,7 @@ double Residual(const Vec3& z, const PhaseState& image);
 /// relative velocity in one period (docs/model.md section 3). Beyond it a period's change is
 /// lost in the state's rounding, and a residual below any tolerance proves nothing: such a
 /// state is no periodic motion the shooting or the continuation may report.
-bool WithinScale(const Forcing& forcing, const Params& params, double alpha, const Vec3& z);
+bool WithinScale(const RobotModel& robot, const Vec3& z);
 inline constexpr double kMaxStateScale = 1e6;
 
 /// The free coordinates (indices into (x, u, v)) of a section in mode `mode` with capsule
@@ -44,8 +44,8 @@ MotionOptions SimulationOf(const ShootingOptions& options);
 /// P^p of one robot. Holds references: the robot must outlive it.
 class PeriodMap {
  public:
-  PeriodMap(const Forcing& forcing, const Params& params, double alpha, const MotionOptions& motion)
-      : forcing_(forcing), params_(params), alpha_(alpha), motion_(motion) {}
+  PeriodMap(const RobotModel& robot, const MotionOptions& motion)
+      : robot_(robot), motion_(motion) {}
 
   /// P^p(z) into *out; adds the capsule displacement to *displacement (if given); the recorder
   /// (if given) sees the run. False if the simulation hit the work bound.
@@ -57,14 +57,10 @@ class PeriodMap {
   bool Shift(MapState& s, double periods, SimObserver* observer = nullptr,
              bool sample = false) const;
 
-  const Forcing& forcing() const { return forcing_; }
-  const Params& params() const { return params_; }
-  double alpha() const { return alpha_; }
+  const RobotModel& robot() const { return robot_; }
 
  private:
-  const Forcing& forcing_;
-  const Params& params_;
-  double alpha_;
+  const RobotModel& robot_;
   MotionOptions motion_;
 };
 

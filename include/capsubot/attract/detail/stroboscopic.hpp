@@ -73,9 +73,9 @@ ShootingOptions ShootingOf(const MotionOptions& options);
 /// Simulates `periods` (> 0, any real) forcing periods from s, updates s (state, phase, mode)
 /// and adds the capsule displacement to *displacement (if given). The observer gets phases
 /// measured from s.z.psi; with `sample` the samples are at whole periods.
-SimResult Advance(const Forcing& forcing, const Params& params, double alpha,
-                  const MotionOptions& options, MapState& s, double periods, double* displacement,
-                  SimObserver* observer = nullptr, bool sample = false);
+SimResult Advance(const RobotModel& robot, const MotionOptions& options, MapState& s,
+                  double periods, double* displacement, SimObserver* observer = nullptr,
+                  bool sample = false);
 
 /// The phase shift in [0, tau) to the middle of the largest gap between the event phases
 /// (mod tau) of `phases` (sorted in place); 0 when there is no event.
@@ -94,17 +94,15 @@ int DetectPeriod(const std::vector<SimState>& samples, int max_period, double to
 /// The motion from s (the whole of LongRunMotion after validation), reusing `recorder`. With
 /// `keep_impacts`, the recorder holds the impacts of the record afterwards (phases from the
 /// section's phase); it holds none when the early stop skipped the record.
-Motion ClassifyMotion(const Forcing& forcing, const Params& params, double alpha,
-                      const MotionOptions& options, MapState s, Recorder& recorder,
-                      bool keep_impacts = false);
+Motion ClassifyMotion(const RobotModel& robot, const MotionOptions& options, MapState s,
+                      Recorder& recorder, bool keep_impacts = false);
 
 /// The periodic motion of period p (or a divisor of it) through the state s (periodic.cpp):
 /// the section is moved off the events of the next p periods from s, then Newton's method on
 /// the p-th iterate with the simulator settings of `options`; the period is the smallest
 /// divisor of p whose iterate returns to the fixed point. The reported state lies at that
 /// section. *moved receives s at that section (the start of the Newton iteration).
-PeriodicMotion RefinePeriodicMotion(const Forcing& forcing, const Params& params, double alpha,
-                                    const MotionOptions& options, MapState s, int p,
-                                    MapState* moved);
+PeriodicMotion RefinePeriodicMotion(const RobotModel& robot, const MotionOptions& options,
+                                    MapState s, int p, MapState* moved);
 
 }  // namespace capsubot::detail
