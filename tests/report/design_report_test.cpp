@@ -169,9 +169,9 @@ TEST(DesignJsonReport, FromRestBestHasBothDirectionsAndTheFasterOneIsBuilt) {
   DesignFromRestResult b;
   b.forward.status = FromRestStatus::kOk;
   b.forward.speed_mm_s = 1e3;  // faster than the gait's kMmPerS * 0.002 = 5.03 mm/s from rest
-  b.forward.model.forcing = Forcing::Harmonic(0.7, 0.1, 0.0);
-  b.forward.model.params.T0 = 0.3;
-  b.forward.model.alpha = 0.2;
+  b.forward.model.robot.forcing = Forcing::Harmonic(0.7, 0.1, 0.0);
+  b.forward.model.robot.params.T0 = 0.3;
+  b.forward.model.robot.alpha = 0.2;
   b.forward.model.omega = kTau * 20.0;
   b.forward.attractors = CheckedFromRest().attractors;
   b.backward.direction = Direction::kBackward;
