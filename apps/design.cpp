@@ -106,6 +106,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   const std::set<std::string> given = GivenSettings(cmd);
   RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
   RejectUnusedSettings(kOutputUses, given, run, run_name, names, "is invalid with");
+  if (run == "drive") RejectUnusedDriveSettings(opt.drive, given, names);
 }
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
@@ -268,8 +269,8 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
     WriteResult(opt.output, text::DesignJobText(r));
     return 0;
   }
-  const Provenance provenance = WithSettings(
-      JsonProvenance(cmd, UnusedOptionsOf(opt)), cmd, opt.config, settings);
+  const Provenance provenance =
+      WithSettings(JsonProvenance(cmd, UnusedOptionsOf(opt)), cmd, opt.config, settings);
   WriteResult(opt.output, JsonOutput(json::DesignJobJson(r), provenance));
   return 0;
 }

@@ -47,12 +47,6 @@ struct OptimizeCliOptions {
   CLI::App* cmd = nullptr;
 };
 
-// The messages of the lower stages name their fields by the flags, but for alpha and the
-// algorithms, whose rules speak of the library's fields ("alpha = 2 is invalid: expected
-// 0 < alpha < 1 (or NaN: free)", "local_algorithm = ... is invalid: expected one of ...").
-const FlagNames kRenamedFields =
-    Without(kOptimizeFlags, {"alpha", "global_algorithm", "local_algorithm"});
-
 // The command line's outputs that only some problems write.
 const std::vector<SettingUse> kOutputUses = {{"from_rest_csv", {""}}};
 
@@ -301,7 +295,8 @@ Command AddOptimizeCommand(CLI::App& app) {
                      {"P2 alone: the fastest gait with A + c <= T0 whose spectral "
                       "radius is at most 0.95",
                       "optimize --problem forcing --T0 1 --rho-max 0.95"}});
-  return {cmd, [opt] { return RunNamingFlags(kRenamedFields, [&] { return Run(*opt); }); }, {}};
+  return {
+      cmd, [opt] { return RunNamingFlags(kOptimizeRenamedFields, [&] { return Run(*opt); }); }, {}};
 }
 
 }  // namespace capsubot::app

@@ -39,4 +39,10 @@ inline const FlagNames kOptimizeFlags = {{"problem", "--problem"},
                                          {"from_rest_csv", "--from-rest-csv"},
                                          {"levels", "--pulse-levels"}};
 
+/// The messages of the lower stages name their fields by the flags, but for alpha and the
+/// algorithms, whose rules speak of the library's fields ("alpha = 2 is invalid: expected
+/// 0 < alpha < 1 (or NaN: free)", "local_algorithm = ... is invalid: expected one of ...").
+inline const FlagNames kOptimizeRenamedFields =
+    Without(kOptimizeFlags, {"alpha", "global_algorithm", "local_algorithm"});
+
 }  // namespace capsubot::app

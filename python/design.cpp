@@ -166,9 +166,20 @@ constexpr const char* kDesignDoc =
     "    scan_points  log-spaced samples of each searched variable, >= 3\n"
     "    from_rest  also find the fastest motion reached from rest in each direction\n"
     "            (key from_rest_best; simulated, a few seconds)\n"
-    "    from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations,\n"
-    "    reach_seconds, threads  with from_rest only (None: the default below; given without\n"
-    "            from_rest they are refused, as the command line refuses them):\n"
+    "    from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations,\n";
+
+// The from-rest arguments' defaults (None), from the library's DesignFromRestPart.
+std::string FromRestArgsDoc() {
+  const DesignFromRestPart d;
+  return fmt::format(
+      "    reach_seconds, threads  with from_rest only (None: '{}', '{}', {}, {}, {}, {});\n"
+      "            given without from_rest they are refused, as the command line refuses them):\n",
+      d.from_rest_starts.Text(), d.reach_starts.Text(), d.reach_evaluations,
+      d.reach_local_evaluations, d.reach_seconds, d.threads);
+}
+
+constexpr const char* kDesignDocTail =
+
     "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
     "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
     "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
@@ -193,7 +204,8 @@ constexpr const char* kDesignDoc =
 void BindDesign(py::module_& m) {
   const DesignInput in;
   const DesignFromRestPart rest;
-  m.def("design", &DesignDict, kDesignDoc, py::kw_only(), py::arg("m1"), py::arg("L"),
+  const std::string doc = kDesignDoc + FromRestArgsDoc() + kDesignDocTail;
+  m.def("design", &DesignDict, doc.c_str(), py::kw_only(), py::arg("m1"), py::arg("L"),
         py::arg("mu"), py::arg("g") = in.g, py::arg("e"), py::arg("force_amplitude") = py::none(),
         py::arg("force_bias"), py::arg("force_cos") = py::none(), py::arg("force_sin") = py::none(),
         py::arg("frequency") = py::none(), py::arg("frequency_range") = py::none(),

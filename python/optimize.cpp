@@ -79,7 +79,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
         *rho_max));
   }
   OptimizeSettings s;
-  s.problem = problem.value_or("");
+  Take(s, "problem", problem, s.problem);
   Take(s, "A", A, s.A);
   Take(s, "c", c, s.c);
   s.params = Params{T0, e, margin, margin_stroke, stick_margin};
@@ -102,7 +102,7 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
                 drive_evaluations, drive_polishes, drive_local_evaluations,
                 drive_refine_evaluations, drive_screens, waveform, pulse_levels});
   s.from_rest_starts = from_rest_starts;
-  s.threads = threads;
+  s.threads = CapThreads(threads);
   OptimizeJobOptions job;
   try {
     job = OptimizeJobFrom(s, SettingNames{kOptimizeKeywords, SettingNames::Style::kKeywords});

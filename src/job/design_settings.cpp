@@ -25,6 +25,22 @@ const std::vector<SettingUse>& DesignSettingUses() {
   return uses;
 }
 
+void RejectUnusedDriveSettings(const std::string& drive, const std::set<std::string>& given,
+                               const SettingNames& names) {
+  const std::vector<SettingUse> uses = {
+      {"harmonics", {"fourier"}},
+      {"pulse_levels", {"pulse"}},
+      {"drive_evaluations", {"fourier", "pulse"}},
+      {"drive_polishes", {"fourier", "pulse"}},
+      {"drive_local_evaluations", {"fourier", "pulse"}},
+      {"drive_refine_evaluations", {"fourier", "pulse"}},
+      {"drive_screens", {"fourier", "pulse"}},
+  };
+  RejectUnusedSettings(
+      uses, given, drive, [&names](const std::string& d) { return names.Given("drive", d); }, names,
+      "is invalid with");
+}
+
 std::string DesignRunName(const std::string& run, const SettingNames& names) {
   if (run.empty()) {
     return fmt::format("one design ({}, {})", names.Absent("from_rest"), names.Absent("grid"));

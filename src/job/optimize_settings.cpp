@@ -55,8 +55,9 @@ namespace {
 
 // The budgets of a drive search want a drive: a Fourier drive of K >= 2 or a pulse drive.
 void RejectDriveBudgetsWithoutDrive(const OptimizeSettings& s, const SettingNames& names) {
-  const bool drives = (s.Given("harmonics") && s.search.harmonics >= 2) ||
-                      s.waveform == "fourier" || s.waveform == "pulse";
+  // A Fourier drive of K = 1 harmonic is the sine: no drive search runs.
+  const bool drives = s.waveform == "pulse" || (s.search.harmonics >= 2 &&
+                                                (s.Given("harmonics") || s.waveform == "fourier"));
   if (drives) return;
   for (const char* field : {"drive_evaluations", "drive_polishes", "drive_local_evaluations",
                             "drive_refine_evaluations", "drive_screens"}) {
@@ -68,6 +69,20 @@ void RejectDriveBudgetsWithoutDrive(const OptimizeSettings& s, const SettingName
         name, OptimizeProblemName(s.problem, names), names.Name("harmonics"),
         names.Given("waveform", "pulse"), name));
   }
+}
+
+// The problem must be one of the job's (given as "": not a problem; not given: the main job).
+void RequireKnownProblem(const OptimizeSettings& s, const SettingNames& names) {
+  const std::string& p = s.problem;
+  if ((p.empty() && !s.Given("problem")) || p == "phase" || p == "forcing" || p == "fourier" ||
+      p == "reach") {
+    return;
+  }
+  const auto value = [&names](const std::string& text) { return names.Value(text); };
+  throw std::invalid_argument(fmt::format(
+      "{} = {} is invalid: expected {}, {}, {}, {} or {} (the main job)", names.Name("problem"),
+      value(p), value("phase"), value("forcing"), value("fourier"), value("reach"),
+      names.style == SettingNames::Style::kFlags ? "none" : "None"));
 }
 
 // The settings given together that contradict each other or that the problem ignores.
@@ -108,6 +123,14 @@ void RequireAdmissibleValues(const OptimizeSettings& s, const SettingNames& name
   RequireAdmissible(s, "A", std::isfinite(s.A) && s.A >= 0.0, s.A, "a finite amplitude A >= 0",
                     names);
   RequireAdmissible(s, "c", std::isfinite(s.c), s.c, "a finite mean force c", names);
+  RequireAdmissible(s, "alpha", !std::isnan(s.alpha), s.alpha, "a mass ratio 0 < alpha < 1", names);
+  if (s.Given("T0_range") && !(s.T0_min > 0.0 && s.T0_min < s.T0_max && std::isfinite(s.T0_max))) {
+    const bool flags = names.style == SettingNames::Style::kFlags;
+    throw std::invalid_argument(
+        fmt::format(flags ? "{} = {}:{} is invalid: expected LO:HI, two numbers 0 < LO < HI"
+                          : "{} = ({}, {}) is invalid: expected (lo, hi), two numbers 0 < lo < hi",
+                    names.Name("T0_range"), s.T0_min, s.T0_max));
+  }
   RequireAdmissible(s, "bound",
                     std::isfinite(search.gait.force_bound) && search.gait.force_bound > 0.0,
                     search.gait.force_bound, "a finite bound > 0 (at most T0)", names);
@@ -134,8 +157,8 @@ void RequireAdmissibleValues(const OptimizeSettings& s, const SettingNames& name
 // The drives of the reach problem: the waveform pulse (pulse_levels N), fourier (harmonics K,
 // whose default waveform it is), or the sine.
 DriveFamily ReachDrive(const OptimizeSettings& s, const SettingNames& names) {
-  if (!(s.waveform.empty() || s.waveform == "sine" || s.waveform == "fourier" ||
-        s.waveform == "pulse")) {
+  if (!((s.waveform.empty() && !s.Given("waveform")) || s.waveform == "sine" ||
+        s.waveform == "fourier" || s.waveform == "pulse")) {
     throw std::invalid_argument(fmt::format("{} = {} is invalid: expected {}, {} or {}",
                                             names.Name("waveform"), names.Value(s.waveform),
                                             names.Value("sine"), names.Value("fourier"),
@@ -192,16 +215,13 @@ OptimizeMode ModeOf(const OptimizeSettings& s, const SettingNames& names) {
   if (problem == "reach") {
     return ReachProblem{ReachEffortOf(s), s.alpha, ReachDrive(s, names), s.T0_min, s.T0_max};
   }
-  const auto value = [&names](const char* text) { return names.Value(text); };
-  throw std::invalid_argument(fmt::format(
-      "{} = {} is invalid: expected {}, {}, {}, {} or {} (the main job)", names.Name("problem"),
-      value(problem.c_str()), value("phase"), value("forcing"), value("fourier"), value("reach"),
-      names.style == SettingNames::Style::kFlags ? "none" : "None"));
+  throw std::logic_error("problem " + problem + " has no mode");
 }
 
 }  // namespace
 
 OptimizeJobOptions OptimizeJobFrom(const OptimizeSettings& settings, const SettingNames& names) {
+  RequireKnownProblem(settings, names);
   RejectConflicts(settings, names);
   RequireAdmissibleValues(settings, names);
   OptimizeJobOptions job;

@@ -441,6 +441,15 @@ std::vector<BadCase> BadCases() {
       {"output_of_one_design_unwritable", "-o /no/such/dir/d.json" + cfg,
        "-o /no/such/dir/d.json cannot be written: No such file or directory"},
       // Options of another run would be silently ignored.
+      {"harmonics_with_sine_drive", "--drive sine --force-max 1 --harmonics 3" + cfg,
+       "--harmonics is invalid with --drive sine: expected --harmonics only with --drive "
+       "fourier"},
+      {"levels_with_fourier_drive", "--drive fourier --force-max 1 --pulse-levels 4" + cfg,
+       "--pulse-levels is invalid with --drive fourier: expected --pulse-levels only with "
+       "--drive pulse"},
+      {"budget_with_sine_drive", "--drive sine --force-max 1 --drive-screens 4" + cfg,
+       "--drive-screens is invalid with --drive sine: expected --drive-screens only with --drive "
+       "fourier or --drive pulse"},
       {"reach_without_from_rest", "--reach-starts 2x2" + cfg,
        "--reach-starts is invalid with one design (no --from-rest, no --grid): expected "
        "--reach-starts only with --from-rest"},

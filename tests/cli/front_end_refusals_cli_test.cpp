@@ -132,6 +132,16 @@ std::vector<Case> RuleCases() {
                              "drive_refine_evaluations", "drive_screens"}) {
     cases.push_back({"reach", {SampleOf(budget)}});
   }
+  // A Fourier drive of one harmonic is the sine: no drive search, no drive budget.
+  cases.push_back(
+      {"reach",
+       {WithText("waveform", "fourier", [](OptimizeSettings& s) { s.waveform = "fourier"; }),
+        With("harmonics", "1", [](OptimizeSettings& s) { s.search.harmonics = 1; }),
+        SampleOf("drive_evaluations")}});
+  cases.push_back({"reach", {Given{"T0_range", "1:0.5", "(1.0, 0.5)", [](OptimizeSettings& s) {
+                                     s.T0_min = 1.0;
+                                     s.T0_max = 0.5;
+                                   }}}});
   cases.push_back({"forcing", {SampleOf("global_evaluations")}});
   cases.push_back({"reach", {SampleOf("waveform"), SampleOf("harmonics")}});
   cases.push_back({"reach", {SampleOf("pulse_levels")}});
@@ -153,8 +163,9 @@ std::vector<Case> RuleCases() {
   return cases;
 }
 
-// The library's refusal of `c` in `names`; empty when it accepts the case.
-std::string LibraryMessage(const Case& c, const SettingNames& names) {
+// The library's refusal of `c` in `names`, its lower stages' fields renamed by `renamed`;
+// empty when it accepts the case.
+std::string LibraryMessage(const Case& c, const SettingNames& names, const FlagNames& renamed) {
   OptimizeSettings s;
   s.problem = c.problem;
   for (const Given& g : c.given) {
@@ -164,7 +175,7 @@ std::string LibraryMessage(const Case& c, const SettingNames& names) {
   try {
     OptimizeJobFrom(s, names);
   } catch (const std::invalid_argument& e) {
-    return WithFlagNames(e.what(), names.flags);
+    return WithFlagNames(e.what(), renamed);
   }
   return "";
 }
@@ -224,8 +235,8 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
     const std::string args = CommandLine(c);
-    const std::string cli_message = LibraryMessage(c, flags);
-    const std::string python_message = LibraryMessage(c, keywords);
+    const std::string cli_message = LibraryMessage(c, flags, app::kOptimizeRenamedFields);
+    const std::string python_message = LibraryMessage(c, keywords, keywords.flags);
     ASSERT_FALSE(cli_message.empty()) << "the library accepts " << args;
     // The two names of the first setting differ (a flag and a keyword) but the rule is one.
     EXPECT_NE(cli_message, python_message) << args;

@@ -3,6 +3,7 @@
 // fastest motion from rest ("from-rest"), a design grid ("grid"), the fastest drive ("drive").
 // Both front ends refuse a setting given to a run that does not use it (RejectUnusedSettings).
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,13 @@ namespace capsubot {
 
 /// The runs that use each setting of the design job; a setting not listed shapes every run.
 const std::vector<SettingUse>& DesignSettingUses();
+
+/// Refuses (std::invalid_argument, in `names`) a setting of the drive design that the waveform
+/// `drive` ("sine", "fourier" or "pulse") does not use: harmonics without fourier, pulse_levels
+/// without pulse, the budgets of a drive search (drive_*) with the sine, which is searched as the
+/// reach problem.
+void RejectUnusedDriveSettings(const std::string& drive, const std::set<std::string>& given,
+                               const SettingNames& names);
 
 /// The run `run` in `names`: the setting that selects it ("--from-rest", "--grid", "--drive"),
 /// or for "" one design without them ("one design (no --from-rest, no --grid)").
