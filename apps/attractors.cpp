@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "attract_options.hpp"
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/attractors_text.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 struct AttractorsCommandOptions {
   RobotOptions robot;
-  std::string starts = "8x8";
+  std::string starts = StartGrid{}.Text();
   std::string output;  // the per-start CSV; empty: none
   StartShardCliOptions shard;
   int threads = 0;

@@ -71,14 +71,8 @@ void ParseStarts(const char* name, const std::string& text, FromRestOptions& opt
 /// (lowered to the command line's cap, CapThreads of limits.hpp).
 FromRestOptions FromRestCheck(const std::string& starts, int threads);
 
-/// The default grid of the check from rest, as the command line's --from-rest-starts.
-inline constexpr const char* kDefaultFromRestStarts = "8x8";
-
 /// The default grid of a basin map, as `capsubot basins --starts`.
 inline constexpr const char* kDefaultBasinStarts = "64x64";
-
-/// The default grid of starts inside a reach search, as the command line's --reach-starts.
-inline constexpr const char* kDefaultReachStarts = "4x4";
 
 /// The docstring lines of the from-rest check (from_rest_starts, threads).
 inline constexpr const char* kFromRestArgsDoc =

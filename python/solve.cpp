@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/solve_job.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/solution_json.hpp"
@@ -129,7 +130,7 @@ void BindSolve(py::module_& m) {
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
         py::arg("margin_stroke") = Params{}.margin_stroke,
         py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability").noconvert() = false,
-        py::arg("from_rest_starts") = kDefaultFromRestStarts,
+        py::arg("from_rest_starts") = StartGrid{}.Text(),
         py::arg("threads") = AttractorOptions{}.threads);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
                                      kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
