@@ -259,6 +259,7 @@ def design(
     reach_local_evaluations: int | None = None,
     reach_seconds: float | None = None,
     threads: int | None = None,
+    band_levels: list[float] | None = None,
 ) -> dict[str, Any]:
     """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait."""
 

@@ -88,7 +88,7 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
                     int scan_points, bool from_rest, std::optional<std::string> from_rest_starts,
                     std::optional<std::string> reach_starts, std::optional<int> reach_evaluations,
                     std::optional<int> reach_local_evaluations, std::optional<double> reach_seconds,
-                    std::optional<int> threads) {
+                    std::optional<int> threads, std::optional<std::vector<double>> band_levels) {
   RequireOne(force_amplitude.has_value(), force_sin.has_value(), "force_amplitude", "force_sin");
   if (force_cos && force_amplitude) {
     throw std::invalid_argument(
@@ -136,6 +136,7 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
       part.interrupt = check.AsInterrupt();
       one.from_rest = part;
     }
+    if (band_levels) one.band_levels = *band_levels;
     options.mode = one;
     return RunDesignJob(options);
   });
@@ -186,7 +187,10 @@ constexpr const char* kDesignDocTail =
     "            search and of the local polish, per direction\n"
     "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
     "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
-    "            are lowered to that); the result does not depend on it\n\n"
+    "            are lowered to that); the result does not depend on it\n"
+    "    band_levels  the levels of the gait's speed bands, fractions of the speed from rest in\n"
+    "            (0, 1): how far mu, e and m2 move, each way, before the mean speed from rest\n"
+    "            falls below each (capsubot documentation, design); None: [0.95]\n\n"
     "Returns a dict: status ('ok', 'motor_slides_shell', 'no_gait'), message, one_impact "
     "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
     "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
@@ -215,7 +219,7 @@ void BindDesign(py::module_& m) {
         py::arg("from_rest").noconvert() = false, py::arg("from_rest_starts") = py::none(),
         py::arg("reach_starts") = py::none(), py::arg("reach_evaluations") = py::none(),
         py::arg("reach_local_evaluations") = py::none(), py::arg("reach_seconds") = py::none(),
-        py::arg("threads") = py::none());
+        py::arg("threads") = py::none(), py::arg("band_levels") = py::none());
 }
 
 }  // namespace capsubot::python

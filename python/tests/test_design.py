@@ -26,6 +26,15 @@ def test_equals_the_command_line():
                               "0.01:1", "--scan-points", 8, "--rho-max", 0.8))
 
 
+def test_band_levels_equal_the_command_line():
+    found = capsubot.design(**ROBOT, frequency=20, band_levels=[0.9, 0.8])
+    assert same(found, cli_json("design", *CLI_ROBOT, "--frequency", 20, "--band-levels",
+                                "0.9,0.8"))
+    for name in ("mu", "e", "m2_kg"):
+        levels = found["robustness"][name]["band"]["levels"]
+        assert [level["level"] for level in levels] == [0.9, 0.8]
+
+
 def test_fourier_force_equals_the_command_line():
     robot = {k: v for k, v in ROBOT.items() if k != "force_amplitude"}
     found = capsubot.design(**robot, force_sin=[0.5, 0.1], force_cos=[0.0, 0.05], frequency=20)
