@@ -116,9 +116,9 @@ const char* SpeedBandStatusName(SpeedBandStatus status) {
 
 void SpeedBandOptions::Validate() const {
   if (levels.empty() || levels.size() > kMaxBandLevels) {
-    throw std::invalid_argument(fmt::format(
-        "band_levels = {} levels is invalid: expected 1 to {} levels", levels.size(),
-        kMaxBandLevels));
+    throw std::invalid_argument(
+        fmt::format("band_levels = {} levels is invalid: expected 1 to {} levels", levels.size(),
+                    kMaxBandLevels));
   }
   for (std::size_t i = 0; i < levels.size(); ++i) {
     if (!(levels[i] > 0.0 && levels[i] < 1.0)) {
@@ -131,12 +131,12 @@ void SpeedBandOptions::Validate() const {
     }
   }
   if (!(tolerance >= 1e-9 && tolerance <= 0.1)) {
-    throw std::invalid_argument(fmt::format(
-        "tolerance = {} is invalid: expected 1e-9 <= tolerance <= 0.1", tolerance));
+    throw std::invalid_argument(
+        fmt::format("tolerance = {} is invalid: expected 1e-9 <= tolerance <= 0.1", tolerance));
   }
   if (!(first_step >= 1e-6 && first_step <= 1.0)) {
-    throw std::invalid_argument(fmt::format(
-        "first_step = {} is invalid: expected 1e-6 <= first_step <= 1", first_step));
+    throw std::invalid_argument(
+        fmt::format("first_step = {} is invalid: expected 1e-6 <= first_step <= 1", first_step));
   }
   from_rest.Validate();
 }
@@ -183,8 +183,8 @@ SpeedBand ComputeSpeedBand(const RobotFamily& family, const std::string& name, d
   const double lowest = *std::min_element(options.levels.begin(), options.levels.end());
   const double width = options.tolerance * (to - from);
   for (const bool up_side : {false, true}) {
-    const std::vector<WalkPoint> walk = Walk(speed, band.nominal_speed, value, up_side ? to : from,
-                                             options.first_step, lowest);
+    const std::vector<WalkPoint> walk =
+        Walk(speed, band.nominal_speed, value, up_side ? to : from, options.first_step, lowest);
     for (double level : options.levels) {
       (up_side ? band.up : band.down)
           .push_back(FindEdge(speed, band.nominal_speed, walk, level, width));

@@ -178,8 +178,7 @@ TEST(SpeedBand, EvaluationsAreBounded) {
 TEST(SpeedBand, ARobotThatDoesNotMoveHasNoBand) {
   RobotModel still = ReachWinner();
   still.forcing = Forcing::Harmonic(0.0, 0.0, 0.0);
-  const SpeedBand b = ComputeSpeedBand([&](double) { return still; }, "T0", 1.0, 0.5, 2.0,
-                                       Small());
+  const SpeedBand b = ComputeSpeedBand([&](double) { return still; }, "T0", 1.0, 0.5, 2.0, Small());
   EXPECT_EQ(b.status, SpeedBandStatus::kNoSpeed);
   EXPECT_TRUE(b.down.empty());
   EXPECT_EQ(b.nominal_speed, 0.0);
@@ -187,8 +186,7 @@ TEST(SpeedBand, ARobotThatDoesNotMoveHasNoBand) {
 
 TEST(SpeedBand, RefusesBadOptionsNamingThem) {
   const auto message = [](const SpeedBandOptions& o, double value = 1.0) {
-    return InvalidArgumentMessage(
-        [&] { ComputeSpeedBand(Along("T0"), "T0", value, 0.5, 2.0, o); });
+    return InvalidArgumentMessage([&] { ComputeSpeedBand(Along("T0"), "T0", value, 0.5, 2.0, o); });
   };
   SpeedBandOptions o;
   o.levels = {1.5};
