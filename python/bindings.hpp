@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <utility>
@@ -60,6 +61,16 @@ inline constexpr const char* kForcingArgsDoc =
 inline constexpr const char* kModelArgsDoc =
     "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
     "    e       coefficient of restitution, 0 <= e <= 1\n";
+
+/// An argument that None leaves to its default: `field` = `*value`, and `name` into `given` (the
+/// settings given, which the library's rules read), when it is not None.
+template <class T, class U>
+void TakeGiven(std::set<std::string>& given, const char* name, const std::optional<T>& value,
+               U& field) {
+  if (!value) return;
+  field = *value;
+  given.insert(name);
+}
 
 /// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
 /// options.n_psi (the library's ParseStartGrid: its syntax and limits); throws

@@ -58,19 +58,15 @@ struct FromRestArgs {
 DesignFromRestPart FromRestPart(const FromRestArgs& a, bool from_rest) {
   DesignFromRestPart part;
   std::set<std::string> given;
-  const auto take = [&given](const char* name, const auto& value, auto& field) {
-    if (!value) return;
-    field = *value;
-    given.insert(name);
-  };
   std::string from_rest_starts = part.from_rest_starts.Text();
   std::string reach_starts = part.reach_starts.Text();
-  take("from_rest_starts", a.from_rest_starts, from_rest_starts);
-  take("reach_starts", a.reach_starts, reach_starts);
-  take("reach_evaluations", a.reach_evaluations, part.reach_evaluations);
-  take("reach_local_evaluations", a.reach_local_evaluations, part.reach_local_evaluations);
-  take("reach_seconds", a.reach_seconds, part.reach_seconds);
-  take("threads", a.threads, part.threads);
+  TakeGiven(given, "from_rest_starts", a.from_rest_starts, from_rest_starts);
+  TakeGiven(given, "reach_starts", a.reach_starts, reach_starts);
+  TakeGiven(given, "reach_evaluations", a.reach_evaluations, part.reach_evaluations);
+  TakeGiven(given, "reach_local_evaluations", a.reach_local_evaluations,
+            part.reach_local_evaluations);
+  TakeGiven(given, "reach_seconds", a.reach_seconds, part.reach_seconds);
+  TakeGiven(given, "threads", a.threads, part.threads);
   RejectUnusedSettings(DesignSettingUses(), given, from_rest ? "from-rest" : "", DesignRunKeywords,
                        kDesignKeywords, "is invalid with");
   part.from_rest_starts = ParseStartGrid("from_rest_starts", from_rest_starts);

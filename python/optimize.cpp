@@ -25,14 +25,6 @@
 namespace capsubot::python {
 namespace {
 
-// `value` into `field` of the settings, and `name` given, when the argument is not None.
-template <class T, class U>
-void Take(OptimizeSettings& s, const char* name, const std::optional<T>& value, U& field) {
-  if (!value) return;
-  field = *value;
-  s.given.insert(name);
-}
-
 // The reach search's settings: its starts and budgets, the drive's waveform and levels.
 struct ReachArgs {
   std::optional<std::string> reach_starts;
@@ -45,17 +37,20 @@ struct ReachArgs {
 };
 
 void TakeReach(OptimizeSettings& s, const ReachArgs& a) {
-  Take(s, "reach_starts", a.reach_starts, s.reach_starts);
-  Take(s, "reach_evaluations", a.reach_evaluations, s.reach.global_evaluations);
-  Take(s, "reach_local_evaluations", a.reach_local_evaluations, s.reach.local_evaluations);
-  Take(s, "reach_seconds", a.reach_seconds, s.reach.max_seconds);
-  Take(s, "drive_evaluations", a.drive_evaluations, s.reach.drive_evaluations);
-  Take(s, "drive_polishes", a.drive_polishes, s.reach.drive_polishes);
-  Take(s, "drive_local_evaluations", a.drive_local_evaluations, s.reach.drive_local_evaluations);
-  Take(s, "drive_refine_evaluations", a.drive_refine_evaluations, s.reach.drive_refine_evaluations);
-  Take(s, "drive_screens", a.drive_screens, s.reach.drive_screens);
-  Take(s, "waveform", a.waveform, s.waveform);
-  Take(s, "pulse_levels", a.pulse_levels, s.pulse_levels);
+  TakeGiven(s.given, "reach_starts", a.reach_starts, s.reach_starts);
+  TakeGiven(s.given, "reach_evaluations", a.reach_evaluations, s.reach.global_evaluations);
+  TakeGiven(s.given, "reach_local_evaluations", a.reach_local_evaluations,
+            s.reach.local_evaluations);
+  TakeGiven(s.given, "reach_seconds", a.reach_seconds, s.reach.max_seconds);
+  TakeGiven(s.given, "drive_evaluations", a.drive_evaluations, s.reach.drive_evaluations);
+  TakeGiven(s.given, "drive_polishes", a.drive_polishes, s.reach.drive_polishes);
+  TakeGiven(s.given, "drive_local_evaluations", a.drive_local_evaluations,
+            s.reach.drive_local_evaluations);
+  TakeGiven(s.given, "drive_refine_evaluations", a.drive_refine_evaluations,
+            s.reach.drive_refine_evaluations);
+  TakeGiven(s.given, "drive_screens", a.drive_screens, s.reach.drive_screens);
+  TakeGiven(s.given, "waveform", a.waveform, s.waveform);
+  TakeGiven(s.given, "pulse_levels", a.pulse_levels, s.pulse_levels);
 }
 
 py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
@@ -79,25 +74,25 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
         *rho_max));
   }
   OptimizeSettings s;
-  Take(s, "problem", problem, s.problem);
-  Take(s, "A", A, s.A);
-  Take(s, "c", c, s.c);
+  TakeGiven(s.given, "problem", problem, s.problem);
+  TakeGiven(s.given, "A", A, s.A);
+  TakeGiven(s.given, "c", c, s.c);
   s.params = Params{T0, e, margin, margin_stroke, stick_margin};
-  Take(s, "bound", bound, s.search.gait.force_bound);
+  TakeGiven(s.given, "bound", bound, s.search.gait.force_bound);
   if (stable || rho_max) s.search.gait.rho_max = stable ? 1.0 : *rho_max;
   s.search.max_time = max_time;
-  Take(s, "harmonics", harmonics, s.search.harmonics);
-  Take(s, "global_algorithm", global_algorithm, s.search.global_algorithm);
-  Take(s, "local_algorithm", local_algorithm, s.search.local_algorithm);
-  Take(s, "global_evaluations", global_evaluations, s.search.global_evaluations);
-  Take(s, "hops", hops, s.search.hops);
-  Take(s, "starts", starts, s.search.starts);
-  Take(s, "alpha", alpha, s.alpha);
+  TakeGiven(s.given, "harmonics", harmonics, s.search.harmonics);
+  TakeGiven(s.given, "global_algorithm", global_algorithm, s.search.global_algorithm);
+  TakeGiven(s.given, "local_algorithm", local_algorithm, s.search.local_algorithm);
+  TakeGiven(s.given, "global_evaluations", global_evaluations, s.search.global_evaluations);
+  TakeGiven(s.given, "hops", hops, s.search.hops);
+  TakeGiven(s.given, "starts", starts, s.search.starts);
+  TakeGiven(s.given, "alpha", alpha, s.alpha);
   if (T0_range) {
     std::tie(s.T0_min, s.T0_max) = *T0_range;
     s.given.insert("T0_range");
   }
-  Take(s, "band_levels", band_levels, s.band_levels);
+  TakeGiven(s.given, "band_levels", band_levels, s.band_levels);
   TakeReach(s, {reach_starts, reach_evaluations, reach_local_evaluations, reach_seconds,
                 drive_evaluations, drive_polishes, drive_local_evaluations,
                 drive_refine_evaluations, drive_screens, waveform, pulse_levels});
