@@ -13,7 +13,7 @@ namespace capsubot::app {
 
 void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   AddForcingOptions(cmd, o.forcing);
-  AddParamsOptions(cmd, o.params, false);
+  AddParamsOptions(cmd, o.params);
   cmd.add_option("--alpha", o.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
   if (!with_motion) return;

@@ -11,6 +11,7 @@
 
 #include "capsubot/job/setting_names.hpp"
 #include "capsubot/model/forcing.hpp"
+#include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/numerics/not_computed.hpp"
@@ -53,9 +54,9 @@ struct ForcingOptions {
 /// Adds --A, --c, --phi0, --cos, --sin, --waveform, --levels, --switches to `cmd`.
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
 
-/// Adds --T0, --e and (with `with_margin`) the margins --margin, --margin-stroke,
-/// --stick-margin to `cmd` (their defaults: the values in `params`).
-void AddParamsOptions(CLI::App& cmd, Params& params, bool with_margin = true);
+/// Adds --T0, --e and (given `margins`) the margins --margin, --margin-stroke, --stick-margin to
+/// `cmd` (their defaults: the values in `params` and `margins`).
+void AddParamsOptions(CLI::App& cmd, Params& params, Margins* margins = nullptr);
 
 /// Gives every numeric option of `app` and of its subcommands the one number syntax of
 /// capsubot::ParseNumber (floating-point options) or ParseInteger (integer options: the

@@ -260,7 +260,7 @@ Command AddOptimizeCommand(CLI::App& app) {
                   "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
                   "of (m1+m2) omega^2 L");
   cmd->add_option("--c", opt->settings.c, "mean force c > 0 of F for --problem phase (same unit)");
-  AddParamsOptions(*cmd, opt->settings.params);
+  AddParamsOptions(*cmd, opt->settings.params, &opt->settings.search.gait.margins);
   AddFromRestOptions(*cmd, opt->from_rest, true);
   AddDriveBudgetOptions(*cmd, opt->from_rest);
   cmd->add_option("--alpha", opt->settings.alpha,

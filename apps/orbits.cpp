@@ -52,7 +52,7 @@ Command AddOrbitsCommand(CLI::App& app) {
       "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, none missed, each with "
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);
-  AddParamsOptions(*cmd, opt->job.params);
+  AddParamsOptions(*cmd, opt->job.params, &opt->job.margins);
   cmd->add_option("--alpha", opt->job.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
   Bounded(cmd->add_option("--max-evaluations", opt->job.max_evaluations,

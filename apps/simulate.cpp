@@ -167,7 +167,7 @@ Command AddSimulateCommand(CLI::App& app) {
       "located to ~1e-13 in phase. Independent of the analytic orbit: use it to confirm an "
       "orbit of `solve`. The force is F(phi) = A sin(phi + phi0) + c with phi = 0 at the start.");
   AddForcingOptions(*cmd, opt->forcing);
-  AddParamsOptions(*cmd, opt->params, false);
+  AddParamsOptions(*cmd, opt->params);
   opt->alpha_option = cmd->add_option("--alpha", opt->sim.alpha,
                                       "mass ratio m2/(m1+m2), 0 < alpha < 1 (required unless "
                                       "--from-orbit)");

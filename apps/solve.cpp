@@ -22,6 +22,7 @@ namespace {
 struct SolveOptions {
   ForcingOptions forcing;
   Params params;
+  Margins margins;
   bool json = false;
   bool stability = false;
   std::string trajectory;
@@ -51,6 +52,7 @@ void WriteTrajectory(const Orbit& o, const std::string& path, int samples, const
 int Run(const SolveOptions& opt, const CLI::App& cmd) {
   SolveJobOptions o;
   o.params = opt.params;
+  o.margins = opt.margins;
   const FromRestOptions from_rest = opt.from_rest.Check();  // bad grids before any work
   o.forcing = opt.forcing.Build();
   if (opt.stability) o.stability = from_rest;
@@ -84,7 +86,7 @@ Command AddSolveCommand(CLI::App& app) {
       "mass ratio alpha, impact velocity u, step I and mean velocity, with every validity "
       "condition of section 5. Exit status 0 whenever the computation ran, valid orbit or not.");
   AddForcingOptions(*cmd, opt->forcing);
-  AddParamsOptions(*cmd, opt->params);
+  AddParamsOptions(*cmd, opt->params, &opt->margins);
   cmd->add_flag("--json", opt->json,
                 "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
                 "v_mean, x_min, x_max, valid, violations, and energy {motor_work, "

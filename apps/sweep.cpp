@@ -38,6 +38,7 @@ struct SweepCliOptions {
   std::vector<std::string> grids;
   ForcingOptions forcing;
   Params params;
+  Margins margins;
   bool stability = false;
   std::string optimize;          // empty: no --optimize
   PhaseOptions phase;            // --scan-points
@@ -119,12 +120,12 @@ class ModeReader {
   std::vector<std::pair<std::string, std::string>> defaults_;
 };
 
-void ReadParams(ModeReader& r, const SweepCliOptions& o, Params& p) {
+void ReadParams(ModeReader& r, const SweepCliOptions& o, Params& p, Margins& m) {
   r.Take("--T0", p.T0, o.params.T0);
   r.Take("--e", p.e, o.params.e);
-  r.Take("--margin", p.margin, o.params.margin);
-  r.Take("--margin-stroke", p.margin_stroke, o.params.margin_stroke);
-  r.Take("--stick-margin", p.stick_margin, o.params.stick_margin);
+  r.Take("--margin", m.clearance, o.margins.clearance);
+  r.Take("--margin-stroke", m.clearance_stroke, o.margins.clearance_stroke);
+  r.Take("--stick-margin", m.stick, o.margins.stick);
 }
 
 void ReadForce(ModeReader& r, const SweepCliOptions& o, SweepForce& f) {
@@ -159,14 +160,14 @@ void ReadSearch(ModeReader& r, const SweepCliOptions& o, SearchRequest& s) {
 }
 
 void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepOrbitMode& m) {
-  ReadParams(r, o, m.params);
+  ReadParams(r, o, m.params, m.margins);
   ReadForce(r, o, m.force);
   r.Take("--phi0", m.phi0, std::optional<double>(o.forcing.phi0));
   r.Take("--stability", m.stability, o.stability);
 }
 
 void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepPhaseMode& m) {
-  ReadParams(r, o, m.params);
+  ReadParams(r, o, m.params, m.phase.gait.margins);
   ReadForce(r, o, m.force);
   r.Take("--stability", m.stability, o.stability);
   ReadRhoMax(r, o, m.phase.gait.rho_max);
@@ -174,21 +175,21 @@ void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepPhaseMode& m) {
 }
 
 void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepForcingMode& m) {
-  ReadParams(r, o, m.params);
+  ReadParams(r, o, m.params, m.search.gait.margins);
   r.Take("--stability", m.stability, o.stability);
   ReadSearch(r, o, m.search);
   r.Take("--hops", m.search.hops, o.search.hops);
 }
 
 void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepFourierMode& m) {
-  ReadParams(r, o, m.params);
+  ReadParams(r, o, m.params, m.search.gait.margins);
   r.Take("--stability", m.stability, o.stability);
   ReadSearch(r, o, m.search);
   r.Take("--harmonics", m.search.harmonics, o.search.harmonics);
 }
 
 void ReadMode(ModeReader& r, const SweepCliOptions& o, SweepReachMode& m) {
-  ReadParams(r, o, m.params);
+  ReadParams(r, o, m.params, m.search.gait.margins);
   ReadSearch(r, o, m.search);
   r.Take("--hops", m.search.hops, o.search.hops);
   r.Take("--alpha", m.reach.alpha, o.alpha);
@@ -380,7 +381,7 @@ void AddInputOptions(CLI::App* cmd, SweepCliOptions& opt) {
       "motor phase phi0 [rad] at the impact (phi = 0): F(phi) = A sin(phi + phi0) + c; "
       "required unless phi0 has a --grid, is optimised (--optimize) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
-  AddParamsOptions(*cmd, opt.params);
+  AddParamsOptions(*cmd, opt.params, &opt.margins);
   cmd->add_option(
          "--output,-o", opt.file.output,
          "the CSV file to write (required); - writes to standard output (no --resume then)")

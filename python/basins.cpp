@@ -41,7 +41,7 @@ py::dict BasinsDict(std::optional<double> A, std::optional<double> c, std::optio
   BasinsJobOptions o;
   AttractorsJobOptions& map = o.map;
   map.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  map.params = Params{T0, e, 0.0};
+  map.params = Params{T0, e};
   map.alpha = alpha;
   map.starts = ParseStartGrid("starts", starts);
   MotionOptions& mo = map.attractor.motion;

@@ -42,7 +42,7 @@ py::dict BifurcationDict(
                py::arg("max_events_per_period") = max_events_per_period));
   BifurcationJobOptions job;
   job.robot.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  job.robot.params = Params{T0, e, 0.0};
+  job.robot.params = Params{T0, e};
   job.robot.alpha = alpha.value_or(BifurcationOptions::kNaN);
   BifurcationOptions& o = job.diagram;
   o.param = ParseRobotParameter(param, &o.harmonic);

@@ -125,7 +125,7 @@ py::dict ContinueBranchDict(
     double step, double chatter_velocity) {
   ContinueJobOptions job;
   job.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  job.params = Params{T0, e, 0.0};
+  job.params = Params{T0, e};
   job.alpha = alpha;
   job.param = param;
   const std::optional<PhaseState> state =

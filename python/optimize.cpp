@@ -77,7 +77,8 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   TakeGiven(s.given, "problem", problem, s.problem);
   TakeGiven(s.given, "A", A, s.A);
   TakeGiven(s.given, "c", c, s.c);
-  s.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  s.params = Params{T0, e};
+  s.search.gait.margins = Margins{margin, margin_stroke, stick_margin};
   TakeGiven(s.given, "bound", bound, s.search.gait.force_bound);
   if (stable || rho_max) s.search.gait.rho_max = stable ? 1.0 : *rho_max;
   s.search.max_time = max_time;
@@ -200,17 +201,16 @@ void BindOptimize(py::module_& m) {
                           "            (margin_stroke and stick_margin default to 0.02 here)\n" +
                           kFromRestArgsDoc + OptimizeOptionsDoc() + kOptimizeReturnsDoc + kUnits;
   const ForcingDesignOptions p2;
-  const Params robust = OptimizeJobOptions::RobustParams();
+  const Margins robust = RobustMargins();
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),
         py::arg("A") = py::none(), py::arg("c") = py::none(), py::arg("T0") = Params{}.T0,
-        py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("margin_stroke") = robust.margin_stroke,
-        py::arg("stick_margin") = robust.stick_margin, py::arg("bound") = py::none(),
-        py::arg("rho_max") = py::none(), py::arg("stable").noconvert() = false,
-        py::arg("max_time") = p2.max_time, py::arg("harmonics") = py::none(),
-        py::arg("global_algorithm") = py::none(), py::arg("local_algorithm") = py::none(),
-        py::arg("global_evaluations") = py::none(), py::arg("hops") = py::none(),
-        py::arg("starts") = py::none(), py::arg("alpha") = py::none(),
+        py::arg("e") = Params{}.e, py::arg("margin") = robust.clearance,
+        py::arg("margin_stroke") = robust.clearance_stroke, py::arg("stick_margin") = robust.stick,
+        py::arg("bound") = py::none(), py::arg("rho_max") = py::none(),
+        py::arg("stable").noconvert() = false, py::arg("max_time") = p2.max_time,
+        py::arg("harmonics") = py::none(), py::arg("global_algorithm") = py::none(),
+        py::arg("local_algorithm") = py::none(), py::arg("global_evaluations") = py::none(),
+        py::arg("hops") = py::none(), py::arg("starts") = py::none(), py::arg("alpha") = py::none(),
         py::arg("from_rest_starts") = OptimizeSettings{}.from_rest_starts,
         py::arg("reach_starts") = py::none(), py::arg("reach_evaluations") = py::none(),
         py::arg("reach_local_evaluations") = py::none(), py::arg("reach_seconds") = py::none(),

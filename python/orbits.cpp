@@ -21,7 +21,8 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
                 double T0, double e, double margin, double margin_stroke, double stick_margin,
                 std::int64_t max_evaluations) {
   OrbitsJobOptions job;
-  job.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  job.params = Params{T0, e};
+  job.margins = Margins{margin, margin_stroke, stick_margin};
   job.params.Validate();
   job.forcing = ForceSpec{A, c, std::nullopt, cos, sin}.Build(false);
   job.alpha = alpha;
@@ -68,9 +69,10 @@ void BindOrbits(py::module_& m) {
                           kMarginArgsDoc + kOrbitsArgsDoc + kUnits;
   m.def("orbits", &Orbits, doc.c_str(), py::kw_only(), py::arg("alpha"), py::arg("A") = py::none(),
         py::arg("c"), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin,
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
+        py::arg("margin") = Margins{}.clearance,
+        py::arg("margin_stroke") = Margins{}.clearance_stroke,
+        py::arg("stick_margin") = Margins{}.stick,
         py::arg("max_evaluations") = kRobotOrbitsMaxEvaluations);
 }
 

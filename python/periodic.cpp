@@ -51,7 +51,7 @@ py::dict Periodic(std::optional<double> A, std::optional<double> c, std::optiona
                   std::optional<int> transient, std::optional<int> period, int max_period,
                   double step, double chatter_velocity) {
   PeriodicJobOptions o;
-  o.params = Params{T0, e, 0.0};
+  o.params = Params{T0, e};
   o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.alpha = alpha;
   o.start = Start(x0, u0, v0, psi, from_rest, transient, period);

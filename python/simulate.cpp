@@ -145,7 +145,7 @@ py::dict Simulate(std::optional<double> A, std::optional<double> c, std::optiona
                   double transient, double chatter_velocity, std::int64_t max_events_per_period,
                   bool events, bool trajectory, long samples_per_period) {
   SimulateJobOptions o;
-  o.params = Params{T0, e, 0.0};
+  o.params = Params{T0, e};
   o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.start = Start(alpha, x0, u0, v0, from_orbit);
   o.sim.y0 = y0;

@@ -69,7 +69,8 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
                double T0, double e, double margin, double margin_stroke, double stick_margin,
                bool stability, const std::string& from_rest_starts, int threads) {
   SolveJobOptions o;
-  o.params = Params{T0, e, margin, margin_stroke, stick_margin};
+  o.params = Params{T0, e};
+  o.margins = Margins{margin, margin_stroke, stick_margin};
   const FromRestOptions check = FromRestCheck(from_rest_starts, threads);
   o.forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   if (stability) o.stability = check;
@@ -83,7 +84,7 @@ py::dict Solve(std::optional<double> A, double c, std::optional<double> phi0,
 py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi0,
                     std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                     double T0, double e, long samples) {
-  const Params params{T0, e, 0.0};
+  const Params params{T0, e};
   params.Validate();
   const Forcing forcing = ForceSpec{A, c, phi0, cos, sin}.Build();
   if (samples < 2 || samples > kMaxTrajectoryRows) {
@@ -127,9 +128,10 @@ void BindSolve(py::module_& m) {
                                 kFromRestArgsDoc + "\n" + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
-        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e, py::arg("margin") = Params{}.margin,
-        py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability").noconvert() = false,
+        py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
+        py::arg("margin") = Margins{}.clearance,
+        py::arg("margin_stroke") = Margins{}.clearance_stroke,
+        py::arg("stick_margin") = Margins{}.stick, py::arg("stability").noconvert() = false,
         py::arg("from_rest_starts") = StartGrid{}.Text(),
         py::arg("threads") = AttractorOptions{}.threads);
   const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +

@@ -165,9 +165,9 @@ class GridSolver {
         if (!(std::isfinite(A) && A >= 0.0)) (void)Forcing::Harmonic(A, c, phi0);
         b[0] = A;
         const Forcing forcing = Forcing::Fourier(c, a, b, phi0);  // no allocation
-        const Params params{in[kT0], in[kRestitution], in[kMargin], in[kMarginStroke],
-                            in[kStickMargin]};
-        Store(p, capsubot::Solve(forcing, params));
+        const Params params{in[kT0], in[kRestitution]};
+        const Margins margins{in[kMargin], in[kMarginStroke], in[kStickMargin]};
+        Store(p, capsubot::Solve(forcing, params, margins));
       } catch (...) {
         Fail(p, std::current_exception());
         return p - begin;
@@ -369,8 +369,9 @@ void BindSolveGrid(py::module_& m) {
       std::string(kSolveGridDoc) + kModelArgsDoc + kMarginArgsDoc + kSolveGridOptionsDoc + kUnits;
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
-        py::arg("margin") = Params{}.margin, py::arg("margin_stroke") = Params{}.margin_stroke,
-        py::arg("stick_margin") = Params{}.stick_margin, py::arg("stability").noconvert() = false,
+        py::arg("margin") = Margins{}.clearance,
+        py::arg("margin_stroke") = Margins{}.clearance_stroke,
+        py::arg("stick_margin") = Margins{}.stick, py::arg("stability").noconvert() = false,
         py::arg("threads") = py::none());
 }
 

@@ -60,12 +60,12 @@ class ArgReader {
   std::vector<std::string> read_;
 };
 
-void ReadParams(ArgReader& r, const SweepArgs& a, Params& p) {
+void ReadParams(ArgReader& r, const SweepArgs& a, Params& p, Margins& m) {
   r.Take("T0", p.T0, a.T0);
   r.Take("e", p.e, a.e);
-  r.Take("margin", p.margin, a.margin);
-  r.Take("margin_stroke", p.margin_stroke, a.margin_stroke);
-  r.Take("stick_margin", p.stick_margin, a.stick_margin);
+  r.Take("margin", m.clearance, a.margin);
+  r.Take("margin_stroke", m.clearance_stroke, a.margin_stroke);
+  r.Take("stick_margin", m.stick, a.stick_margin);
 }
 
 void ReadForce(ArgReader& r, const SweepArgs& a, SweepForce& f) {
@@ -90,14 +90,14 @@ void ReadSearch(ArgReader& r, const SweepArgs& a, SearchRequest& s) {
 }
 
 void ReadMode(ArgReader& r, const SweepArgs& a, SweepOrbitMode& m) {
-  ReadParams(r, a, m.params);
+  ReadParams(r, a, m.params, m.margins);
   ReadForce(r, a, m.force);
   r.Take("phi0", m.phi0, a.phi0);
   r.Take("stability", m.stability, a.stability);
 }
 
 void ReadMode(ArgReader& r, const SweepArgs& a, SweepPhaseMode& m) {
-  ReadParams(r, a, m.params);
+  ReadParams(r, a, m.params, m.phase.gait.margins);
   ReadForce(r, a, m.force);
   r.Take("stability", m.stability, a.stability);
   ReadRhoMax(r, a, m.phase.gait.rho_max);
@@ -105,21 +105,21 @@ void ReadMode(ArgReader& r, const SweepArgs& a, SweepPhaseMode& m) {
 }
 
 void ReadMode(ArgReader& r, const SweepArgs& a, SweepForcingMode& m) {
-  ReadParams(r, a, m.params);
+  ReadParams(r, a, m.params, m.search.gait.margins);
   r.Take("stability", m.stability, a.stability);
   ReadSearch(r, a, m.search);
   r.Take("hops", m.search.hops, a.hops);
 }
 
 void ReadMode(ArgReader& r, const SweepArgs& a, SweepFourierMode& m) {
-  ReadParams(r, a, m.params);
+  ReadParams(r, a, m.params, m.search.gait.margins);
   r.Take("stability", m.stability, a.stability);
   ReadSearch(r, a, m.search);
   r.Take("harmonics", m.search.harmonics, a.harmonics);
 }
 
 void ReadMode(ArgReader& r, const SweepArgs& a, SweepReachMode& m) {
-  ReadParams(r, a, m.params);
+  ReadParams(r, a, m.params, m.search.gait.margins);
   ReadSearch(r, a, m.search);
   r.Take("hops", m.search.hops, a.hops);
   r.Take("alpha", m.reach.alpha, a.alpha);

@@ -415,7 +415,7 @@ GaitRobustness ComputeSpeedBands(const RobotModel& robot, const RobustnessOption
 }
 
 GaitRobustness ComputeGaitRobustness(const Orbit& orbit, const RobustnessOptions& options) {
-  return ComputeMotionRobustness({{orbit.forcing, Params{orbit.T0, orbit.e, 0.0}, orbit.alpha},
+  return ComputeMotionRobustness({{orbit.forcing, Params{orbit.T0, orbit.e}, orbit.alpha},
                                   OrbitImpactState(orbit, orbit.forcing)},
                                  options);
 }

@@ -83,7 +83,8 @@ void DesignInput::Validate() const {
   Require(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && lo < hi,
           fmt::format("inner mass range m2 = {}:{} is invalid: expected 0 < M2MIN < M2MAX [kg]", lo,
                       hi));
-  Params{1.0, e, margin, margin_stroke, stick_margin}.Validate();  // the margins' rules
+  Params{1.0, e}.Validate();  // the rule of e
+  Margins{margin, margin_stroke, stick_margin}.Validate();
   Require(rho_max > 0.0, fmt::format("rho_max = {} is invalid: expected rho_max > 0 (infinity: "
                                      "no stability requirement)",
                                      rho_max));
@@ -131,9 +132,7 @@ DesignModel MapToModel(const DesignInput& in, double m2, double frequency) {
   }
   m.robot.params.T0 = in.mu * in.g / w2L;
   m.robot.params.e = in.e;
-  m.robot.params.margin = in.margin;
-  m.robot.params.margin_stroke = in.margin_stroke;
-  m.robot.params.stick_margin = in.stick_margin;
+  m.margins = {in.margin, in.margin_stroke, in.stick_margin};
   m.robot.alpha = m2 / (in.m1 + m2);
   return m;
 }

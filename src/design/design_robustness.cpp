@@ -28,7 +28,7 @@ GaitRobustness ComputeDesignRobustness(const DesignInput& input, const Gait& gai
   const Orbit& o = gait.solution.orbit;
   // The design's robot has phi0 = 0: the orbit's impact falls at its phase phi0 of that force.
   // Every family is of that robot, so that the bands' starts from rest are the same.
-  const RobotModel robot{gait.model.robot.forcing, Params{o.T0, o.e, 0.0}, o.alpha};
+  const RobotModel robot{gait.model.robot.forcing, Params{o.T0, o.e}, o.alpha};
   const PhaseState start = OrbitImpactState(o, robot.forcing);
   const auto along = [&](const char* name) { return NamedParameterFamily(robot, name); };
   GaitRobustness g;

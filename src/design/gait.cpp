@@ -115,7 +115,7 @@ Gait EvaluateGait(const DesignInput& input, double m2, double frequency, double*
     return gait;
   }
   const std::vector<Solution> orbits =
-      FindRobotOrbits(m.robot, &gait.complete, input.orbit_evaluations);
+      FindRobotOrbits(m.robot, m.margins, &gait.complete, input.orbit_evaluations);
   gait.orbits = static_cast<int>(orbits.size());
   gait.status = orbits.empty() ? GaitStatus::kNoOrbit : GaitStatus::kNotRobust;
   for (const Solution& s : orbits) {

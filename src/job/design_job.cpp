@@ -90,7 +90,7 @@ DesignJobResult RunOne(const DesignJobOptions& options, const DesignOneMode& one
     const Orbit& o = r.design.one_impact.solution.orbit;
     // The robot of the speed bands (the motor's force, phi0 = 0): the same starts from rest.
     r.gait_from_rest = CheckGaitFromRest(o, r.design.one_impact.model.robot.forcing,
-                                         Params{o.T0, o.e, 0.0}, robustness.band.from_rest);
+                                         Params{o.T0, o.e}, robustness.band.from_rest);
   }
   if (one.from_rest) {
     TellStage(options.on_stage, "design: 3/3 the fastest motion from rest");

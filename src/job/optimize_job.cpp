@@ -72,8 +72,6 @@ void FastestDrives(const OptimizeJobOptions& options, const MainJob& job, MainJo
 
 MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
   const Params& p = options.params;
-  Params exact = p;  // the exact optima: no margins
-  exact.margin = exact.margin_stroke = exact.stick_margin = 0.0;
   MainJobResult r;
   r.params = p;
   r.gait = options.search.gait;
@@ -81,8 +79,8 @@ MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
   // 1. The paper's problem as the paper poses it (valid orbits, no margins): c = A = T0/2, best
   // phase. Its force sits on the friction bound, so any stick margin would exclude it.
   TellStage(options.on_stage, "optimize: 1/5 the paper's problem (P1)");
-  r.paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), exact,
-                          PhaseOptionsFor(options.search.WithRhoMax(kInf)));
+  r.paper = OptimizePhase(Forcing::Harmonic(p.T0 / 2.0, p.T0 / 2.0, 0.0), p,
+                          PhaseOptionsFor(options.search.Exact(kInf)));
   // 2. The fastest robust gait, checked from rest inside 3; 3. the fastest motion from rest,
   // seeded with it; 4. how far it carries; 5. the exact optima, valid and stable.
   TellStage(options.on_stage, "optimize: 2/5 the fastest robust gait (P2)");
@@ -106,8 +104,8 @@ MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
                                            "its most common motion from rest is not periodic");
   }
   TellStage(options.on_stage, "optimize: 5/5 the exact optima without margins");
-  r.fastest = OptimizeForcing(exact, ForcingOptionsFor(options.search.WithRhoMax(kInf)));
-  r.stable = OptimizeForcing(exact, ForcingOptionsFor(options.search.WithRhoMax(1.0)));
+  r.fastest = OptimizeForcing(p, ForcingOptionsFor(options.search.Exact(kInf)));
+  r.stable = OptimizeForcing(p, ForcingOptionsFor(options.search.Exact(1.0)));
   TellStage(options.on_stage, "");
   return r;
 }
@@ -123,10 +121,8 @@ ReachJobResult RunReach(const OptimizeJobOptions& options, const ReachProblem& j
   ReachOptions sine_options = ReachOptionsFor(options, job.reach, job.alpha);
   sine_options.T0_min = job.T0_min;
   sine_options.T0_max = job.T0_max;
-  ReachJobResult r{options.params,
-                   options.search.gait.rho_max,
-                   OptimizeReach(options.params, robust, sine_options),
-                   {}};
+  ReachJobResult r{
+      options.params, options.search.gait, OptimizeReach(options.params, robust, sine_options), {}};
   if (!sine) {
     TellStage(
         options.on_stage,
@@ -166,8 +162,7 @@ ProblemJobResult RunProblem(const OptimizeJobOptions& options) {
   GaitFromRest from_rest =
       CheckGaitFromRest(result.solution.orbit, options.params, FromRestOptionsFor(options));
   TellStage(options.on_stage, "");
-  return {name, options.params, options.search.gait.rho_max, std::move(result),
-          std::move(from_rest)};
+  return {name, options.params, options.search.gait, std::move(result), std::move(from_rest)};
 }
 
 }  // namespace
@@ -187,16 +182,10 @@ ReachEffort MainJob::MainJobDriveEffort() {
   return e;
 }
 
-Params OptimizeJobOptions::RobustParams() {
-  Params p;
-  p.margin_stroke = kRobustMarginStroke;
-  p.stick_margin = kRobustStickMargin;
-  return p;
-}
-
 SearchRequest OptimizeJobOptions::RobustRequest() {
   SearchRequest r;
   r.gait.rho_max = kRobustRhoMax;
+  r.gait.margins = RobustMargins();
   return r;
 }
 

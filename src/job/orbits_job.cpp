@@ -12,6 +12,7 @@ namespace capsubot {
 void OrbitsJobOptions::Validate() const {
   RefusePulse(forcing, "orbits");
   params.Validate();
+  margins.Validate();
   if (max_evaluations < 1 || max_evaluations > kMaxOrbitEvaluations) {
     throw std::invalid_argument(
         fmt::format("max_evaluations = {} is invalid: expected 1 <= max_evaluations <= {}",
@@ -24,8 +25,9 @@ OrbitsJobResult RunOrbitsJob(const OrbitsJobOptions& options) {
   OrbitsJobResult r;
   r.options = options;
   r.options.interrupt = nullptr;
-  r.orbits = FindRobotOrbits({options.forcing, options.params, options.alpha}, &r.complete,
-                             options.max_evaluations, [&options] { Poll(options.interrupt); });
+  r.orbits = FindRobotOrbits({options.forcing, options.params, options.alpha}, options.margins,
+                             &r.complete, options.max_evaluations,
+                             [&options] { Poll(options.interrupt); });
   return r;
 }
 

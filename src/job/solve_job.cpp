@@ -10,6 +10,7 @@ namespace capsubot {
 void SolveJobOptions::Validate() const {
   RefusePulse(forcing, "solve");
   params.Validate();
+  margins.Validate();
   if (stability) stability->Validate();
 }
 
@@ -20,7 +21,7 @@ SolveJobResult RunSolveJob(const SolveJobOptions& options) {
   if (result.options.stability) result.options.stability->attractor.interrupt = {};
   result.options.on_stage = {};
   TellStage(options.on_stage, options.stability ? "solve: 1/2 the orbit" : "solve: the orbit");
-  result.solution = Solve(options.forcing, options.params);
+  result.solution = Solve(options.forcing, options.params, options.margins);
   result.energy = OrbitEnergy(result.solution.orbit);
   if (options.stability) {
     TellStage(options.on_stage, "solve: 2/2 its stability and check from rest");

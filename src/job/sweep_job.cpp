@@ -84,6 +84,7 @@ void CheckReachBudgets(const ReachOptions& reach) {
 void SetMode(const SweepOrbitMode& m, SweepOptions& s) {
   s.optimize = SweepOptimize::kNone;
   s.params = m.params;
+  s.margins = m.margins;
   s.stability = m.stability;
   const bool robot = s.grid.Has(ModelParameter::kAlpha);
   if (robot && m.phi0) {
@@ -127,8 +128,7 @@ void SetMode(const SweepReachMode& m, SweepOptions& s) {
 }  // namespace
 
 SweepReachMode::SweepReachMode() {
-  params.margin_stroke = kRobustMarginStroke;
-  params.stick_margin = kRobustStickMargin;
+  search.gait.margins = RobustMargins();
   search.gait.rho_max = kRobustRhoMax;
 }
 

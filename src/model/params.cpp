@@ -16,18 +16,6 @@ void Params::Validate() const {
     throw std::invalid_argument(
         fmt::format("restitution e = {} is invalid: expected 0 <= e <= 1", e));
   }
-  if (!(margin >= 0.0 && margin < 0.5)) {
-    throw std::invalid_argument(
-        fmt::format("margin d = {} is invalid: expected 0 <= d < 0.5", margin));
-  }
-  if (!(margin_stroke >= 0.0 && margin_stroke < 0.5)) {
-    throw std::invalid_argument(
-        fmt::format("stroke margin d_s = {} is invalid: expected 0 <= d_s < 0.5", margin_stroke));
-  }
-  if (!(stick_margin >= 0.0 && stick_margin < 1.0)) {
-    throw std::invalid_argument(
-        fmt::format("stick margin s = {} is invalid: expected 0 <= s < 1", stick_margin));
-  }
 }
 
 }  // namespace capsubot

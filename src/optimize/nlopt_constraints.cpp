@@ -14,7 +14,7 @@ namespace {
 // (e >= 1e-3) keep e itself; a smaller one would leave the constraint far below the others.
 constexpr double kSeparationScaleFloor = 1e-3;
 
-bool ClearanceRequired(const Params& p) { return p.margin > 0.0 || p.margin_stroke > 0.0; }
+bool ClearanceRequired(const Margins& m) { return m.clearance > 0.0 || m.clearance_stroke > 0.0; }
 
 // The validity condition that row i checks (kCount for the problem's own requirements).
 Condition ConditionOf(int index) {
@@ -55,10 +55,10 @@ bool ConstraintSetup::Applies(int index) const {
   switch (index) {
     case kLeftWallIndex:
     case kRightWallIndex:
-      return !ClearanceRequired(params);
+      return !ClearanceRequired(margins);
     case kClearanceLeftIndex:
     case kClearanceRightIndex:
-      return ClearanceRequired(params);
+      return ClearanceRequired(margins);
     case kForceBoundIndex:
       return std::isfinite(force_bound);
     case kRhoMaxIndex:
@@ -75,7 +75,7 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double
   const Params& p = setup.params;
   Solution& s = ev.solution;
   s.orbit = ComputeOrbit(forcing, p);
-  s.validity = CheckValidity(s.orbit, p);
+  s.validity = CheckValidity(s.orbit, setup.margins);
   const Orbit& o = s.orbit;
   const Validity& v = s.validity;
   const double length = setup.length();
@@ -84,7 +84,7 @@ Evaluation Evaluate(const Forcing& forcing, const ConstraintSetup& setup, double
   ev.force = std::isnan(force) ? v.max_force : force;
   ev.g[kForceBoundIndex] = (ev.force - setup.force_bound) / p.T0;
   if (!std::isnan(v.rest_force)) {
-    ev.g[kStickIndex] = (v.rest_force - (1.0 - p.stick_margin) * p.T0) / p.T0;
+    ev.g[kStickIndex] = (v.rest_force - (1.0 - setup.margins.stick) * p.T0) / p.T0;
   }
   ev.g[kRhoMaxIndex] = stability_required ? kNoOrbitConstraint : 0.0;
   if (o.ok()) {
@@ -153,22 +153,23 @@ std::vector<Margin> BindingMargins(const Evaluation& ev, const ConstraintSetup& 
   std::vector<Margin> margins;
   if (!ev.solution.orbit.ok()) return margins;
   auto active = [&](int i) { return setup.Applies(i) && std::abs(ev.g[i]) <= tol; };
-  const Params& p = setup.params;
+  const Margins& m = setup.margins;
   if (active(kClearanceLeftIndex) || active(kClearanceRightIndex)) {
-    const double stroke_clearance = p.margin_stroke * ev.solution.validity.stroke;
-    margins.push_back(p.margin >= stroke_clearance ? Margin::kClearance : Margin::kClearanceStroke);
+    const double stroke_clearance = m.clearance_stroke * ev.solution.validity.stroke;
+    margins.push_back(m.clearance >= stroke_clearance ? Margin::kClearance
+                                                      : Margin::kClearanceStroke);
   }
-  if (p.stick_margin > 0.0 && active(kStickIndex)) margins.push_back(Margin::kStickMargin);
+  if (m.stick > 0.0 && active(kStickIndex)) margins.push_back(Margin::kStickMargin);
   if (active(kRhoMaxIndex)) margins.push_back(Margin::kRhoMax);
   return margins;
 }
 
 std::string RequirementWords(const ConstraintSetup& setup) {
-  const Params& p = setup.params;
+  const Margins& m = setup.margins;
   std::string words;
-  if (p.margin > 0.0 || p.margin_stroke > 0.0 || p.stick_margin > 0.0) {
-    words = fmt::format("margins d = {:g}, d_s = {:g}, s = {:g}", p.margin, p.margin_stroke,
-                        p.stick_margin);
+  if (m.Any()) {
+    words = fmt::format("margins d = {:g}, d_s = {:g}, s = {:g}", m.clearance, m.clearance_stroke,
+                        m.stick);
   }
   if (setup.Applies(kRhoMaxIndex)) {
     words += fmt::format("{}spectral radius <= {:g}", words.empty() ? "" : "; ", setup.rho_max);
@@ -198,7 +199,7 @@ std::string DescribeViolations(const Evaluation& ev, const ConstraintSetup& setu
         break;
       case Condition::kStick:
         add(fmt::format("stick (max |F| at rest = {:.6g} > (1 - s) T0 = {:g})", v.rest_force,
-                        (1.0 - p.stick_margin) * p.T0));
+                        (1.0 - setup.margins.stick) * p.T0));
         break;
       case Condition::kForceBelowFriction:
         add(fmt::format("force_below_friction (max |F| = {:.6g} > T0 = {:g})", v.max_force, p.T0));

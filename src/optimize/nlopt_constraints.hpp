@@ -46,7 +46,7 @@ const char* ConstraintName(int index);
 
 /// What the constraints are measured against.
 struct ConstraintSetup {
-  Params params;  ///< T0, e and the margins d, d_s, s
+  Params params;  ///< T0, e
   /// Bound on max |F| (P2, P3), held up to rounding (WithinForceBound); infinity for none
   /// (P1: the force is given, and validity's force_below_friction already bounds it by T0).
   double force_bound = std::numeric_limits<double>::infinity();
@@ -55,6 +55,8 @@ struct ConstraintSetup {
   /// Relative rounding allowed rho_max when a result found at another T0 is checked after
   /// scaling (docs/model.md section 6): 0 in the search itself.
   double rho_rel_tol = 0.0;
+  /// The margins d, d_s, s (last: an aggregate initialised up to rho_rel_tol has none).
+  Margins margins{};
 
   /// Whether row i is part of the problem: the walls without a clearance margin, the
   /// clearance rows with one (they imply the walls), the force bound and rho_max when set.

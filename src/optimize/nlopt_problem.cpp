@@ -167,6 +167,7 @@ Evaluation PolishPhase(const Problem& problem,
   PhaseOptions phase;
   phase.scan_points = kFinalPhaseScan;
   phase.gait.rho_max = problem.setup.rho_max;
+  phase.gait.margins = problem.setup.margins;
   phase.interrupt = tracker.interrupt;
   const OptimizeResult p1 =
       OptimizePhase(problem.build(tracker.best_y.data()), problem.setup.params, phase);

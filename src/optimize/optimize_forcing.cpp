@@ -112,6 +112,7 @@ std::string PhaseExactPolish(const detail::Problem& problem, const ForcingDesign
   NestedContext ctx{&problem, &tracker, PhaseOptions{}, bound};
   ctx.phase.scan_points = kNestedPhaseScan;
   ctx.phase.gait.rho_max = options.gait.rho_max;
+  ctx.phase.gait.margins = options.gait.margins;
   ctx.phase.interrupt = tracker.interrupt;
   const double before = tracker.best.I;
   OptimizeStatus status = OptimizeStatus::kOk;

@@ -336,7 +336,8 @@ OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
   params.Validate();
   options.Validate();
   // No force bound: the force is given, and validity bounds max |F| by T0 (up to rounding).
-  const detail::ConstraintSetup setup{params, HUGE_VAL, options.gait.rho_max};
+  const detail::ConstraintSetup setup{params, HUGE_VAL, options.gait.rho_max, 0.0,
+                                      options.gait.margins};
   PhaseSearch search(forcing, setup, options.max_time, options.interrupt);
   const CircleScan scan = ScanCircle(search, options.scan_points);
   detail::Evaluation winner = scan.at[scan.best];

@@ -20,7 +20,9 @@ ForcingDesignOptions GaitOptionsFor(const SearchRequest& request) {
 
 PhaseOptions PhaseOptionsFor(const SearchRequest& request) {
   PhaseOptions p;
-  p.gait.rho_max = request.gait.rho_max;  // P1 optimises the phase of a given force: no bound
+  // P1 optimises the phase of a given force: no bound.
+  p.gait.rho_max = request.gait.rho_max;
+  p.gait.margins = request.gait.margins;
   p.max_time = request.max_time;
   p.interrupt = request.interrupt;
   return p;

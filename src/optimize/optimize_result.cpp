@@ -25,30 +25,6 @@ const char* MarginName(Margin margin) {
   return detail::EnumName(kNames, margin);
 }
 
-void GaitRequirements::Validate() const {
-  if (!(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0))) {
-    throw std::invalid_argument(fmt::format(
-        "force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)", force_bound));
-  }
-  if (!(rho_max > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "rho_max = {} is invalid: expected rho_max > 0 (infinity: no stability requirement)",
-        rho_max));
-  }
-}
-
-double GaitRequirements::BoundFor(const Params& params) const {
-  const double bound = std::isnan(force_bound) ? params.T0 : force_bound;
-  if (!(bound <= params.T0)) {
-    throw std::invalid_argument(
-        fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
-                    "above the friction bound moves the capsule without impacts, docs/model.md "
-                    "section 6)",
-                    bound, params.T0));
-  }
-  return bound;
-}
-
 void OptimizeOptions::Validate() const {
   gait.Validate();
   if (!(max_time > 0.0)) {

@@ -12,13 +12,13 @@ double SetUpPipeline(Pipeline& pipeline, const Params& params, const SearchOptio
   params.Validate();
   const double bound = options.gait.BoundFor(params);
   Problem& problem = pipeline.problem;
-  problem.setup = {params, bound, options.gait.rho_max};
+  problem.setup = {params, bound, options.gait.rho_max, 0.0, options.gait.margins};
   // The stick condition max |F| on [phi1, tau] <= (1 - s) T0 follows from the force bound
   // (max |F| <= A + c <= bound, docs/model.md section 7) when bound <= (1 - s) T0, and at the
   // default bound T0 with s = 0 the two rows are one plane: NLopt is given the bound only.
   // COBYLA's linear subproblem can cycle forever, without evaluating, on such a repeated
   // active row. Validity (Evaluate) still checks the stick condition.
-  const bool stick_implied = bound <= (1.0 - params.stick_margin) * params.T0;
+  const bool stick_implied = bound <= (1.0 - options.gait.margins.stick) * params.T0;
   problem.constraints.clear();
   for (int i = 0; i < kConstraintCount; ++i) {
     if (i == kStickIndex && stick_implied) continue;
@@ -140,12 +140,14 @@ OptimizeResult AtReferenceScale(
   if (r.solution.orbit.status == OrbitStatus::kNotRun) return r;
   // The optimum at the reference may lie on rho = rho_max: scaled, its spectral radius holds
   // the bound to rounding, as the force bound does (kForceBoundRelTol).
-  const ConstraintSetup setup{params, bound, options.gait.rho_max, kForceBoundRelTol};
-  const ConstraintSetup reference_setup{reference, bound / k, options.gait.rho_max};
+  const Margins& margins = options.gait.margins;
+  const ConstraintSetup setup{params, bound, options.gait.rho_max, kForceBoundRelTol, margins};
+  const ConstraintSetup reference_setup{reference, bound / k, options.gait.rho_max, 0.0, margins};
   // Whether a scale-dependent condition binds at the reference: then T0 may do better.
   const Evaluation at_reference = Evaluate(r.solution.orbit.forcing, reference_setup);
-  const bool exact = !(std::abs(at_reference.g[kLeftWallIndex]) <= options.active_tol) &&
-                     !(params.margin > 0.0 && r.solution.validity.clearance == params.margin);
+  const bool exact =
+      !(std::abs(at_reference.g[kLeftWallIndex]) <= options.active_tol) &&
+      !(margins.clearance > 0.0 && r.solution.validity.clearance == margins.clearance);
   const Evaluation ev = Evaluate(Scaled(r.solution.orbit.forcing, k), setup);
   r.solution = ev.solution;
   r.spectral_radius = SpectralRadius(ev);

@@ -71,8 +71,10 @@ struct Interval {
   double lo, hi, plo, phi;
 };
 
-void CheckRobotOrbitsInput(const RobotModel& robot, std::int64_t max_evaluations) {
+void CheckRobotOrbitsInput(const RobotModel& robot, const Margins& margins,
+                           std::int64_t max_evaluations) {
   robot.params.Validate();
+  margins.Validate();
   if (!(robot.alpha > 0.0 && robot.alpha < 1.0)) {
     throw std::invalid_argument(
         fmt::format("mass ratio alpha = {} is invalid: expected 0 < alpha < 1", robot.alpha));
@@ -171,10 +173,10 @@ std::vector<Root> OneRootPerBand(const PsiFunction& psi, double accept, std::vec
 
 }  // namespace
 
-std::vector<Solution> FindRobotOrbits(const RobotModel& robot, bool* complete,
-                                      std::int64_t max_evaluations,
+std::vector<Solution> FindRobotOrbits(const RobotModel& robot, const Margins& margins,
+                                      bool* complete, std::int64_t max_evaluations,
                                       const std::function<void()>& poll) {
-  CheckRobotOrbitsInput(robot, max_evaluations);
+  CheckRobotOrbitsInput(robot, margins, max_evaluations);
   if (complete != nullptr) *complete = true;
   std::vector<Solution> found;
   const Forcing& forcing = robot.forcing;
@@ -193,7 +195,7 @@ std::vector<Solution> FindRobotOrbits(const RobotModel& robot, bool* complete,
       psi, bounds.accept, CandidateRoots(psi, bounds, max_evaluations, poll, complete));
   for (const Root& band : bands) {
     const double phi0 = band.phi0 >= kPi ? band.phi0 - kTau : band.phi0;  // [-pi, pi)
-    found.push_back(Solve(forcing.WithPhase(phi0), params));
+    found.push_back(Solve(forcing.WithPhase(phi0), params, margins));
   }
   std::sort(found.begin(), found.end(), [](const Solution& x, const Solution& y) {
     return x.orbit.forcing.phi0() < y.orbit.forcing.phi0();

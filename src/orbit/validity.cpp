@@ -59,7 +59,7 @@ std::vector<std::string> Validity::ViolationNames() const {
   return names;
 }
 
-Validity CheckValidity(const Orbit& o, const Params& params) {
+Validity CheckValidity(const Orbit& o, const Margins& margins) {
   Validity v;
   v.checked = true;
   v.max_force = o.forcing.MaxAbs();
@@ -74,7 +74,7 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
   }
   const Range rest = o.forcing.Bounds(detail::StopAngle(o), Angle::Of(kTau));
   v.rest_force = std::max(std::abs(rest.min), std::abs(rest.max));
-  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, (1.0 - params.stick_margin) * o.T0));
+  Set(v, Condition::kStick, !WithinForceBound(v.rest_force, (1.0 - margins.stick) * o.T0));
   if (!o.ok()) {
     Set(v, Condition::kMassRatio, true);
     return v;
@@ -85,7 +85,7 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
   // After the impact x' = -e u < 0; for e = 0 the inner body must accelerate away: x''(0+) < 0.
   Set(v, Condition::kSeparation, !(o.e * o.u > 0.0 || (o.e == 0.0 && o.ddx(0.0) < 0.0)));
   v.stroke = (v.x_max > 1.0 ? v.x_max : 1.0) - v.x_min;
-  v.clearance = std::max(params.margin, params.margin_stroke * v.stroke);
+  v.clearance = std::max(margins.clearance, margins.clearance_stroke * v.stroke);
   if (v.clearance > 0.0) {
     Set(v, Condition::kClearance, !(v.x_min >= v.clearance) || v.x_max > 1.0 - v.clearance);
   }
@@ -95,10 +95,11 @@ Validity CheckValidity(const Orbit& o, const Params& params) {
   return v;
 }
 
-Solution Solve(const Forcing& forcing, const Params& params) {
+Solution Solve(const Forcing& forcing, const Params& params, const Margins& margins) {
   // The members are initialized in order, so the check sees the finished orbit (and the
   // solution is not cleared first, as it is when the validity starts as Validity{}).
-  Solution s{ComputeOrbit(forcing, params), CheckValidity(s.orbit, params)};  // validates params
+  // ComputeOrbit validates the params, then the margins are (in that order, as messages go).
+  Solution s{ComputeOrbit(forcing, params), (margins.Validate(), CheckValidity(s.orbit, margins))};
   return s;
 }
 

@@ -447,6 +447,7 @@ FromRestOptions CheapFromRestOptions() {
 ForcingDesignOptions RobustSeedDesign() {
   ForcingDesignOptions d;
   d.gait.rho_max = kRobustRhoMax;
+  d.gait.margins = RobustMargins();
   return d;
 }
 
@@ -508,12 +509,6 @@ void ReachOptions::Validate() const {
   search.Validate();
   check.Validate();
   seed_design.Validate();
-  Require(seed_margin_stroke >= 0.0 && seed_margin_stroke < 0.5,
-          fmt::format("seed_margin_stroke = {} is invalid: expected 0 <= seed_margin_stroke < 0.5",
-                      seed_margin_stroke));
-  Require(seed_stick_margin >= 0.0 && seed_stick_margin < 1.0,
-          fmt::format("seed_stick_margin = {} is invalid: expected 0 <= seed_stick_margin < 1",
-                      seed_stick_margin));
 }
 
 ReachResult OptimizeReach(const Params& params, const ReachOptions& options) {
@@ -521,10 +516,7 @@ ReachResult OptimizeReach(const Params& params, const ReachOptions& options) {
   params.Validate();
   ForcingDesignOptions design = options.seed_design;
   design.gait.force_bound = options.force_bound;
-  Params seed_params = params;
-  seed_params.margin_stroke = options.seed_margin_stroke;
-  seed_params.stick_margin = options.seed_stick_margin;
-  return OptimizeReach(params, OptimizeForcing(seed_params, design), options);
+  return OptimizeReach(params, OptimizeForcing(params, design), options);
 }
 
 namespace {

@@ -40,13 +40,13 @@ nlohmann::json OptimizeResultJson(const OptimizeResult& r, const char* problem) 
   return j;
 }
 
-void AddRequirementsJson(nlohmann::json& j, const Params& p, double rho_max) {
+void AddRequirementsJson(nlohmann::json& j, const Params& p, const GaitRequirements& gait) {
   j["T0"] = p.T0;
   j["e"] = p.e;
-  j["margin"] = p.margin;
-  j["margin_stroke"] = p.margin_stroke;
-  j["stick_margin"] = p.stick_margin;
-  j["rho_max"] = rho_max;  // nlohmann::json writes infinity as null
+  j["margin"] = gait.margins.clearance;
+  j["margin_stroke"] = gait.margins.clearance_stroke;
+  j["stick_margin"] = gait.margins.stick;
+  j["rho_max"] = gait.rho_max;  // nlohmann::json writes infinity as null
 }
 
 namespace {
@@ -55,7 +55,7 @@ nlohmann::json Json(const ProblemJobResult& pr) {
   const OptimizeResult& r = pr.result;
   nlohmann::json j = OptimizeResultJson(r, pr.problem.c_str());
   j["from_rest"] = FromRestJson(pr.from_rest);
-  AddRequirementsJson(j, pr.params, pr.rho_max);
+  AddRequirementsJson(j, pr.params, pr.gait);
   if (pr.problem == "fourier") {
     j["baseline_I"] = r.baseline_I;
     j["gain"] = r.found() ? r.solution.orbit.I / r.baseline_I - 1.0 : kNaN;
@@ -158,7 +158,7 @@ nlohmann::json LadderJson(const std::vector<ReachResult>& ladder) {
 
 nlohmann::json Json(const ReachJobResult& r) {
   nlohmann::json j = ReachJson(r.reach);
-  AddRequirementsJson(j, r.params, r.rho_max);
+  AddRequirementsJson(j, r.params, r.gait);
   if (r.ladder.empty()) return j;
   j["speed_ratio_to_sine"] = r.reach.mean_velocity / r.ladder.front().mean_velocity;
   j["ladder"] = LadderJson(r.ladder);
@@ -167,7 +167,7 @@ nlohmann::json Json(const ReachJobResult& r) {
 
 nlohmann::json Json(const MainJobResult& r) {
   nlohmann::json j;
-  AddRequirementsJson(j, r.params, r.gait.rho_max);
+  AddRequirementsJson(j, r.params, r.gait);
   j["force_bound"] = r.gait.force_bound;
   j["paper"] = OptimizeResultJson(r.paper, "phase");
   j["paper"]["note"] =

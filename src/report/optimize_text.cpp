@@ -149,7 +149,8 @@ std::string MainHeader(const MainJobResult& r) {
       "units: I = capsule displacement per forcing period in gap lengths L (the inner body's "
       "free gap); velocity in omega L\n"
       "(change them with --T0, --e, --margin, --margin-stroke, --stick-margin, --rho-max)\n\n",
-      p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.gait.rho_max);
+      p.T0, p.e, r.gait.margins.clearance, r.gait.margins.clearance_stroke, r.gait.margins.stick,
+      r.gait.rho_max);
   return t;
 }
 
@@ -182,7 +183,8 @@ std::string PaperText(const MainJobResult& r) {
           "this\n"
           "   orbit would fit for T0 <= {} (a shorter shell or a faster motor). At T0 = {:g} a\n"
           "   weaker, differently shaped force is needed:\n",
-          Num(v.x_min, 4), Num(LargestFittingT0(paper.solution, p.margin), 4), p.T0);
+          Num(v.x_min, 4), Num(LargestFittingT0(paper.solution, r.gait.margins.clearance), 4),
+          p.T0);
     }
   }
   return t;
@@ -293,27 +295,29 @@ std::string LadderText(const std::vector<ReachResult>& ladder) {
 
 std::string Text(const ReachJobResult& r) {
   const Params& p = r.params;
+  const Margins& m = r.gait.margins;
   const ReachResult& reach = r.reach;
   return fmt::format(
              "capsubot optimize --problem reach: T0 = {:g}, e = {:g}; seed: the robust gait "
              "(margins d = {:g}, d_s = {:g}, s = {:g}, spectral radius <= {:g})\n"
              "  status           {}\n"
              "  {}\n{}",
-             p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, r.rho_max,
+             p.T0, p.e, m.clearance, m.clearance_stroke, m.stick, r.gait.rho_max,
              OptimizeStatusName(reach.status), reach.message, ReachText(reach)) +
          LadderText(r.ladder);
 }
 
 std::string Text(const ProblemJobResult& pr) {
   const Params& p = pr.params;
+  const Margins& m = pr.gait.margins;
   const OptimizeResult& r = pr.result;
   std::string t;
   t += fmt::format(
       "capsubot optimize --problem {}: T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, "
       "s = {:g}, spectral radius <= {:g}\n",
-      pr.problem, p.T0, p.e, p.margin, p.margin_stroke, p.stick_margin, pr.rho_max);
+      pr.problem, p.T0, p.e, m.clearance, m.clearance_stroke, m.stick, pr.gait.rho_max);
   t += fmt::format("  status           {}\n  {}\n", OptimizeStatusName(r.status), r.message);
-  t += GaitText(r, pr.rho_max) + FromRestText(pr.from_rest);
+  t += GaitText(r, pr.gait.rho_max) + FromRestText(pr.from_rest);
   if (pr.problem == "fourier") {
     t += fmt::format(
         "    gain over P2     {} (harmonic optimum I = {})\n",

@@ -19,7 +19,7 @@ std::string OrbitsJobText(const OrbitsJobResult& r, const char* bound_name) {
   t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
                    ForceFormula(o.forcing.WithPhase(0.0)));
   t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", o.params.T0, o.params.e,
-                   o.params.margin);
+                   o.margins.clearance);
   t += fmt::format("  {} orbit(s)\n", r.orbits.size());
   if (!r.complete) t += fmt::format("  note: {}\n", OrbitsIncompleteNote(bound_name));
   if (!r.orbits.empty()) {

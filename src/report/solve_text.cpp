@@ -12,17 +12,17 @@
 
 namespace capsubot::text {
 
-std::string SolutionTable(const Solution& s, const Params& p) {
+std::string SolutionTable(const Solution& s, const Params& p, const Margins& m) {
   const Orbit& o = s.orbit;
   const Validity& v = s.validity;
   std::string t;
   t += fmt::format("one-impact periodic orbit\n");
   t += fmt::format("  force            {}\n", ForceFormula(o.forcing));
-  t += fmt::format("  model            T0 = {:g}, e = {:g}, margin = {:g}{}\n", p.T0, p.e, p.margin,
-                   p.margin_stroke > 0.0 || p.stick_margin > 0.0
-                       ? fmt::format(", margin_stroke = {:g}, stick_margin = {:g}", p.margin_stroke,
-                                     p.stick_margin)
-                       : std::string());
+  t += fmt::format(
+      "  model            T0 = {:g}, e = {:g}, margin = {:g}{}\n", p.T0, p.e, m.clearance,
+      m.clearance_stroke > 0.0 || m.stick > 0.0
+          ? fmt::format(", margin_stroke = {:g}, stick_margin = {:g}", m.clearance_stroke, m.stick)
+          : std::string());
   t += fmt::format("  status           {}\n", StatusName(o.status));
   t += fmt::format("  stop phase       phi1   = {}\n", Num(o.phi1));
   t += fmt::format("  mass ratio       alpha  = {}   (m2/(m1+m2))\n", Num(o.alpha));
@@ -69,7 +69,8 @@ std::string StabilityTable(const Stability& st) {
 }
 
 std::string SolveJobText(const SolveJobResult& r) {
-  std::string t = SolutionTable(r.solution, r.options.params) + EnergyTable(r.energy);
+  std::string t =
+      SolutionTable(r.solution, r.options.params, r.options.margins) + EnergyTable(r.energy);
   if (r.options.stability) t += StabilityTable(r.stability) + FromRestText(r.from_rest, 2);
   return t;
 }

@@ -97,6 +97,21 @@ std::int64_t ShardPoint(const SweepOptions& o, std::int64_t i) {
   return o.shard + i * std::max(1, o.shards);
 }
 
+const Margins& SweepMargins(const SweepOptions& o) {
+  switch (o.optimize) {
+    case SweepOptimize::kNone:
+      return o.margins;
+    case SweepOptimize::kPhase:
+      return o.phase.gait.margins;
+    case SweepOptimize::kFourier:
+      return o.fourier.harmonic.gait.margins;
+    case SweepOptimize::kForcing:
+    case SweepOptimize::kReach:
+      break;
+  }
+  return o.design.gait.margins;
+}
+
 const char* SweepOptimizeName(SweepOptimize mode) { return RuleOf(mode).name; }
 
 std::vector<SweepOptimize> SweepOptimizeModes() {
@@ -126,6 +141,7 @@ SweepOptimize ParseSweepOptimize(const std::string& name) {
 void SweepOptions::Validate() const {
   grid.Validate();
   params.Validate();
+  SweepMargins(*this).Validate();
   ValidateFile(grid.size());
   if (block_points < 0) {
     throw std::invalid_argument(

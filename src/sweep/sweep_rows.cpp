@@ -113,10 +113,11 @@ std::string SweepDescription(const SweepOptions& o) {
   for (int k = 1; k <= f.harmonics(); ++k) {
     d += fmt::format(" a{}={} b{}={}", k, Hex(f.a(k)), k, Hex(f.b(k)));
   }
-  d += fmt::format(
-      " T0={} e={} margin={} margin_stroke={} stick_margin={} stability={} optimize={}",
-      Hex(o.params.T0), Hex(o.params.e), Hex(o.params.margin), Hex(o.params.margin_stroke),
-      Hex(o.params.stick_margin), o.stability, SweepOptimizeName(o.optimize));
+  d +=
+      fmt::format(" T0={} e={} margin={} margin_stroke={} stick_margin={} stability={} optimize={}",
+                  Hex(o.params.T0), Hex(o.params.e), Hex(SweepMargins(o).clearance),
+                  Hex(SweepMargins(o).clearance_stroke), Hex(SweepMargins(o).stick), o.stability,
+                  SweepOptimizeName(o.optimize));
   switch (o.optimize) {
     case SweepOptimize::kNone:
       break;
@@ -141,7 +142,12 @@ std::string SweepDescription(const SweepOptions& o) {
 }
 
 SweepPoint::SweepPoint(const SweepOptions& o)
-    : mode(o.optimize), phase(o.phase), design(o.design), fourier(o.fourier), reach(o.reach) {
+    : mode(o.optimize),
+      phase(o.phase),
+      design(o.design),
+      fourier(o.fourier),
+      reach(o.reach),
+      margins(o.margins) {
   robot.forcing = o.forcing;
   robot.params = o.params;
   // The sweep's threads work on different points (the result does not depend on this).
@@ -177,6 +183,10 @@ GaitRequirements& SweepPoint::Gait() {
   return design.gait;
 }
 
+Margins& SweepPoint::ModeMargins() {
+  return mode == SweepOptimize::kNone ? margins : Gait().margins;
+}
+
 void SweepPoint::Set(const GridAxis& axis, double value) {
   switch (axis.parameter) {
     case ModelParameter::kA:  // b_1 of a series that a_k and b_k axes may have extended
@@ -192,13 +202,13 @@ void SweepPoint::Set(const GridAxis& axis, double value) {
       SetParameter(robot, axis.parameter, axis.harmonic, value);
       break;
     case ModelParameter::kMargin:
-      robot.params.margin = value;
+      ModeMargins().clearance = value;
       break;
     case ModelParameter::kMarginStroke:
-      robot.params.margin_stroke = value;
+      ModeMargins().clearance_stroke = value;
       break;
     case ModelParameter::kStickMargin:
-      robot.params.stick_margin = value;
+      ModeMargins().stick = value;
       break;
     case ModelParameter::kBound:
       Gait().force_bound = value;
@@ -342,7 +352,7 @@ void SweepRowWriter::AppendReach(RowBuffer& out) const {
 int SweepRowWriter::AppendRobotPoint(std::int64_t point, RowBuffer& out) {
   bool complete = true;
   const RobotModel& robot = point_.robot;
-  const std::vector<Solution> orbits = FindRobotOrbits(robot, &complete);
+  const std::vector<Solution> orbits = FindRobotOrbits(robot, point_.margins, &complete);
   if (!complete) {  // never write a row set that may miss orbits
     throw std::runtime_error(fmt::format(
         "robot orbits at grid point {} (alpha = {}): the search stopped at its work bound, "
@@ -372,7 +382,7 @@ int SweepRowWriter::AppendPoint(std::int64_t point, RowBuffer& out) {
   if (RobotMode(options_)) return AppendRobotPoint(point, out);
   AppendGridValues(out);
   if (options_.optimize == SweepOptimize::kNone) {
-    AppendSolution(Solve(point_.robot.forcing, point_.robot.params), out);
+    AppendSolution(Solve(point_.robot.forcing, point_.robot.params, point_.margins), out);
     out.push_back('\n');
     return 1;
   }

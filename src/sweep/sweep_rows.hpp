@@ -85,17 +85,21 @@ struct SweepPoint {
   ForcingDesignOptions design;
   FourierOptions fourier;
   ReachOptions reach;
+  Margins margins;  ///< the orbits' margins without optimisation (SweepOptions::margins)
 
   /// The sweep's fixed values (the grid not applied yet).
   explicit SweepPoint(const SweepOptions& options);
   /// Sets the value of one gridded parameter: a robot parameter by SetParameter (an A axis
-  /// sets b_1, the force being a series when a_k or b_k axes extend it), a margin in the
-  /// robot's params, the force bound or rho_max in the mode's GaitRequirements. Axes over phi0
+  /// sets b_1, the force being a series when a_k or b_k axes extend it), a margin among the
+  /// mode's (`margins` without optimisation, else those of the mode's GaitRequirements), the
+  /// force bound or rho_max in the mode's GaitRequirements. Axes over phi0
   /// go first: a coefficient set after the phase rebuilds the force with the phase reduced, as
   /// one series (Forcing::Fourier).
   void Set(const GridAxis& axis, double value);
   /// The gait the mode asks for (the reach search's bound is that of its seed, `design`).
   GaitRequirements& Gait();
+  /// The margins of the mode's orbits (SweepMargins).
+  Margins& ModeMargins();
 };
 
 /// Formats the rows of grid points. One per worker thread (holds scratch space).

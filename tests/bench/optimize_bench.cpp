@@ -19,11 +19,10 @@ namespace {
 using capsubot::Forcing;
 using capsubot::Params;
 
-Params Model(double T0, double e = 1.0, double margin = 0.0) {
+Params Model(double T0, double e = 1.0) {
   Params p;
   p.T0 = T0;
   p.e = e;
-  p.margin = margin;
   return p;
 }
 
@@ -43,10 +42,10 @@ void BM_OptimizePhase(benchmark::State& state) {
 }
 BENCHMARK(BM_OptimizePhase)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
-double ReferenceI(const Params& params, bool stable) {
+double ReferenceI(const Params& params, double margin, bool stable) {
   static std::map<std::pair<std::pair<double, double>, std::pair<double, bool>>, double> cache;
   const auto key =
-      std::make_pair(std::make_pair(params.T0, params.e), std::make_pair(params.margin, stable));
+      std::make_pair(std::make_pair(params.T0, params.e), std::make_pair(margin, stable));
   if (cache.count(key) == 0) {
     double best = -HUGE_VAL;
     for (const char* local : {"LN_COBYLA", "LD_SLSQP"}) {
@@ -58,6 +57,7 @@ double ReferenceI(const Params& params, bool stable) {
       o.effort.local_evaluations = 100000;
       o.local_algorithm = local;
       if (stable) o.gait.rho_max = 1.0;
+      o.gait.margins.clearance = margin;
       const auto r = capsubot::OptimizeForcing(params, o);
       if (r.found()) best = std::max(best, r.solution.orbit.I);
     }
@@ -72,10 +72,12 @@ double ReferenceI(const Params& params, bool stable) {
 void BM_OptimizeForcing(benchmark::State& state) {
   const double T0 = state.range(0) / 1000.0;
   const bool stable = state.range(1) != 0;
-  const Params params = state.range(2) != 0 ? Model(T0, 0.6, 0.1) : Model(T0);
+  const bool rugged = state.range(2) != 0;
+  const Params params = rugged ? Model(T0, 0.6) : Model(T0);
   capsubot::ForcingDesignOptions o;
   if (stable) o.gait.rho_max = 1.0;
-  const double reference = ReferenceI(params, stable);
+  o.gait.margins.clearance = rugged ? 0.1 : 0.0;
+  const double reference = ReferenceI(params, o.gait.margins.clearance, stable);
   double I = 0.0;
   int evaluations = 0;
   for (auto _ : state) {

@@ -179,9 +179,8 @@ TEST(ContinuationEdges, BranchOfConstantSpeedHasNoSpeedExtremum) {
 TEST(ContinuationEdges, BranchEndingAtAWallEndsAtItsGrazingWhateverTheSteps) {
   // The one-impact family of A = 0.2, c = 0.03 in alpha: its free flight touches the left wall
   // at the lower end and the right wall at the upper end (`continue ... --from-orbit`).
-  const Family f{
-      ComputeOrbit(Forcing::Harmonic(0.2, 0.03, -2.57993980854766), Params{1.0, 1.0, 0.0}),
-      Params{1.0, 1.0, 0.0}, "alpha"};
+  const Family f{ComputeOrbit(Forcing::Harmonic(0.2, 0.03, -2.57993980854766), Params{1.0, 1.0}),
+                 Params{1.0, 1.0}, "alpha"};
   ASSERT_TRUE(f.orbit.ok());
   const std::vector<std::vector<double>> steps = {
       {0.01, 1e-7, 0.05}, {0.001, 1e-7, 0.05}, {0.01, 1e-9, 0.01}, {0.01, 1e-7, 0.2}};
@@ -202,13 +201,13 @@ TEST(ContinuationEdges, RobustGaitEndsInT0AndAlphaAtItsLeftWallGrazing) {
   // alpha the lower end is where its flight touches the left wall (in alpha at 0.6319567436,
   // not at the 0.6319608 a bisection on the corrector's trials once reported).
   const Orbit o = RobustGait();
-  const Family t0{o, Params{o.T0, o.e, 0.0}, "T0"};
+  const Family t0{o, Params{o.T0, o.e}, "T0"};
   const Branch bt = Follow(t0, o.T0, 0.5 * o.T0, 2.0 * o.T0, {0.01, 1e-7, 0.05});
   ASSERT_EQ(bt.status, ContinuationStatus::kOk);
   ExpectOneMotion(bt);
   ExpectGrazingEnd(t0, bt, false, Wall::kLeft);
   ExpectMultipliersOfItsSide(t0, bt, false);  // 0.81 stable, not the -419 of straddling ones
-  const Family alpha{o, Params{o.T0, o.e, 0.0}, "alpha"};
+  const Family alpha{o, Params{o.T0, o.e}, "alpha"};
   const Branch ba =
       Follow(alpha, o.alpha, 0.5 * o.alpha, 0.5 * (1.0 + o.alpha), {0.01, 1e-7, 0.05});
   ASSERT_EQ(ba.status, ContinuationStatus::kOk);

@@ -49,7 +49,7 @@ std::vector<Solution> RandomOrbits(unsigned seed = kSeed, int count = kRobots) {
   std::vector<Solution> out;
   for (int k = 0; k < kMaxDraws && static_cast<int>(out.size()) < count; ++k) {
     const double a = A(rng), c = ratio(rng) * a, p = phi0(rng), r = e(rng);
-    const Solution s = Solve(Forcing::Harmonic(a, c, p), Params{1.0, r, 0.0});
+    const Solution s = Solve(Forcing::Harmonic(a, c, p), Params{1.0, r});
     if (s.orbit.ok() && s.validity.valid() && s.orbit.alpha > 0.05 && s.orbit.alpha < 0.95) {
       out.push_back(s);
     }
@@ -156,7 +156,7 @@ TEST(BranchProperties, RandomRobotsBranchesAreMotionsAndTheirSpecialPointsHold) 
   for (const Solution& s : robots) {
     const Orbit& o = s.orbit;
     SCOPED_TRACE(::testing::Message() << "A " << o.forcing.MaxAbs() << " alpha " << o.alpha);
-    const Params params{o.T0, o.e, 0.0};
+    const Params params{o.T0, o.e};
     const RobotFamily family = NamedParameterFamily({o.forcing, params, o.alpha}, "alpha");
     ContinuationOptions opt;
     opt.from = std::max(0.02, o.alpha - 0.1);
@@ -269,8 +269,7 @@ TEST(BranchProperties, RandomRobotsSwitchedBranchesStartOnTheMotionBornAtTheDoub
     if (doublings == kDoublingsWanted) break;
     const Orbit& o = s.orbit;
     SCOPED_TRACE(::testing::Message() << "A " << o.forcing.MaxAbs() << " e " << o.e);
-    const RobotFamily family =
-        NamedParameterFamily({o.forcing, Params{o.T0, o.e, 0.0}, o.alpha}, "e");
+    const RobotFamily family = NamedParameterFamily({o.forcing, Params{o.T0, o.e}, o.alpha}, "e");
     ContinuationOptions opt;
     opt.from = 0.05;
     opt.to = 1.0;

@@ -31,7 +31,7 @@ constexpr double kAcross = 1e-5;
 
 // The robot of the gait with parameter `name` set to `value`.
 RobotModel At(const Orbit& o, const std::string& name, double value) {
-  RobotModel r{o.forcing, Params{o.T0, o.e, 0.0}, o.alpha};
+  RobotModel r{o.forcing, Params{o.T0, o.e}, o.alpha};
   SetParameter(r, ParseRobotParameter(name), 0, value);
   return r;
 }

@@ -84,7 +84,7 @@ TEST(GrazingSwitch, RobustGaitGoesOnBeyondItsGrazingWithOtherImpactsPerPeriod) {
   // grazes the left wall at alpha = 0.6319567436 with alpha falling (branch_edges_test.cpp
   // checks such ends against a bisection on the motion's existence).
   const Orbit o = RobustGait();
-  const Params params{o.T0, o.e, 0.0};
+  const Params params{o.T0, o.e};
   const RobotFamily family = NamedParameterFamily({o.forcing, params, o.alpha}, "alpha");
   const ContinuationOptions range = Range(0.5 * o.alpha, 0.5 * (1.0 + o.alpha), o.alpha);
   const Branch gait = ContinueBranch(family, OrbitImpactState(o, o.forcing), range);

@@ -24,14 +24,14 @@ struct JobRobot {
 /// --json`): from rest it settles into 3 right and 1 left impacts per period.
 inline JobRobot StableOptimum() {
   return {Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047),
-          Params{1.0, 1.0, 0.0}, 0.6435592358295166};
+          Params{1.0, 1.0}, 0.6435592358295166};
 }
 
 /// A stable valid one-impact orbit with clearance (`capsubot solve --A 0.05 --c 0.02 --phi0
 /// -2.842 --T0 0.1 --e 0.5 --stability`: alpha = 0.2792869076315278, spectral radius 0.16);
 /// from rest it coexists with a period-12 motion.
 inline JobRobot SmallOrbit() {
-  return {Forcing::Harmonic(0.05, 0.02, -2.842), Params{0.1, 0.5, 0.0}, 0.2792869076315278};
+  return {Forcing::Harmonic(0.05, 0.02, -2.842), Params{0.1, 0.5}, 0.2792869076315278};
 }
 
 /// Bit for bit the same double (NaN equals NaN): a job must give exactly what the library calls

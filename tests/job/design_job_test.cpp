@@ -136,7 +136,7 @@ TEST(DesignJob, PartAsGaitIsCheckedFromRestAndTheAdviceFollowsFromIt) {
   so.transient = kDirectPeriods;
   so.periods = 100.0;
   const SimResult direct = Simulate(orbit.forcing.WithPhase(orbit.forcing.phi0() + top.example.psi),
-                                    Params{orbit.T0, orbit.e, 0.0}, so);
+                                    Params{orbit.T0, orbit.e}, so);
   ASSERT_EQ(direct.status, SimStatus::kOk) << direct.message;
   EXPECT_EQ(direct.impacts_right + direct.impacts_left, 0);
   EXPECT_LE(std::abs(direct.v_mean), 1e-12);

@@ -43,8 +43,9 @@ TEST(OptimizeJob, PhaseProblemIsP1CheckedFromRest) {
   EXPECT_EQ(result.from_rest.attractors.starts, 9);
   EXPECT_EQ(result.from_rest.reached, from_rest.reached);
   EXPECT_EQ(result.from_rest.attractors.mean_velocity, from_rest.attractors.mean_velocity);
-  EXPECT_EQ(result.rho_max, kRobustRhoMax);  // the robust default of the job
-  EXPECT_EQ(result.params.margin_stroke, kRobustMarginStroke);
+  EXPECT_EQ(result.gait.rho_max, kRobustRhoMax);  // the robust default of the job
+  EXPECT_EQ(result.gait.margins.clearance_stroke, kRobustMarginStroke);
+  EXPECT_EQ(result.gait.margins.stick, kRobustStickMargin);
   EXPECT_EQ(RecommendedForcing(OptimizeJobResult(result)).phi0(),
             direct.solution.orbit.forcing.phi0());
 }

@@ -14,7 +14,7 @@ namespace {
 OrbitsJobOptions Robot() {
   OrbitsJobOptions o;
   o.forcing = Forcing::Harmonic(0.05, 0.02, 0.0);
-  o.params = Params{0.1, 0.5, 0.0};
+  o.params = Params{0.1, 0.5};
   o.alpha = 0.28;
   return o;
 }
@@ -23,7 +23,8 @@ TEST(OrbitsJob, FindsWhatTheSearchFinds) {
   const OrbitsJobOptions o = Robot();
   const OrbitsJobResult r = RunOrbitsJob(o);
   bool complete = false;
-  const std::vector<Solution> direct = FindRobotOrbits({o.forcing, o.params, o.alpha}, &complete);
+  const std::vector<Solution> direct =
+      FindRobotOrbits({o.forcing, o.params, o.alpha}, {}, &complete);
   ASSERT_FALSE(direct.empty());
   ASSERT_EQ(r.orbits.size(), direct.size());
   for (std::size_t i = 0; i < direct.size(); ++i) {
@@ -32,6 +33,27 @@ TEST(OrbitsJob, FindsWhatTheSearchFinds) {
   }
   EXPECT_EQ(r.complete, complete);
   EXPECT_EQ(r.options.alpha, 0.28);
+}
+
+// The margins judge every orbit found: each validity is CheckValidity's with them, and a
+// clearance of 0.49 (the inner body kept within 0.49..0.51) breaks the orbits that exist.
+TEST(OrbitsJob, JudgesEveryOrbitWithTheMargins) {
+  OrbitsJobOptions o = Robot();
+  const OrbitsJobResult plain = RunOrbitsJob(o);
+  o.margins.clearance = 0.49;
+  const OrbitsJobResult strict = RunOrbitsJob(o);
+  ASSERT_FALSE(plain.orbits.empty());
+  ASSERT_EQ(strict.orbits.size(), plain.orbits.size());
+  int broken = 0;
+  for (std::size_t i = 0; i < plain.orbits.size(); ++i) {
+    EXPECT_EQ(strict.orbits[i].validity.violations,
+              CheckValidity(plain.orbits[i].orbit, o.margins).violations);
+    EXPECT_FALSE(plain.orbits[i].validity.violated(Condition::kClearance)) << i;
+    if (strict.orbits[i].validity.violated(Condition::kClearance)) ++broken;
+  }
+  EXPECT_GT(broken, 0);
+  o.margins.clearance = 0.5;
+  EXPECT_THROW(RunOrbitsJob(o), std::invalid_argument);
 }
 
 TEST(OrbitsJob, RefusesAWorkBoundOutOfRangeNamingIt) {
@@ -51,7 +73,7 @@ TEST(OrbitsJob, AnInterruptStopsTheSearch) {
   struct Stop {};
   OrbitsJobOptions o;
   o.forcing = Forcing::Harmonic(0.00527714, 0.00105543, 0.0);
-  o.params = Params{3e7, 0.7, 0.0};
+  o.params = Params{3e7, 0.7};
   o.alpha = 0.3333;
   o.max_evaluations = 1000000000;
   int asked = 0;

@@ -148,14 +148,15 @@ TEST(SweepJob, ModesTakeTheirOwnDefaults) {
   const SweepOptions reach = PlanSweepJob(job);
   EXPECT_EQ(reach.optimize, SweepOptimize::kReach);
   EXPECT_EQ(reach.design.gait.rho_max, kRobustRhoMax);  // the robust seed of docs/model.md 12
-  EXPECT_EQ(reach.params.margin_stroke, kRobustMarginStroke);
-  EXPECT_EQ(reach.params.stick_margin, kRobustStickMargin);
+  EXPECT_EQ(reach.design.gait.margins.clearance_stroke, kRobustMarginStroke);
+  EXPECT_EQ(reach.design.gait.margins.stick, kRobustStickMargin);
+  EXPECT_EQ(&SweepMargins(reach), &reach.design.gait.margins);  // the seed's are the sweep's
   EXPECT_TRUE(std::isinf(reach.reach.max_seconds));
   job.mode = SweepModeNamed("forcing");
   const SweepOptions forcing = PlanSweepJob(job);
   EXPECT_EQ(forcing.optimize, SweepOptimize::kForcing);
   EXPECT_TRUE(std::isinf(forcing.design.gait.rho_max));
-  EXPECT_EQ(forcing.params.margin_stroke, 0.0);
+  EXPECT_EQ(forcing.design.gait.margins.clearance_stroke, 0.0);
   // The search request is the one vocabulary: P2's options are ForcingOptionsFor's.
   SweepForcingMode mode;
   mode.search.starts = 3;

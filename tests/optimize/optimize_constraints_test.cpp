@@ -15,7 +15,7 @@ namespace capsubot {
 namespace {
 
 // A valid orbit (T0 = 0.1, dense scan through Solve): c = A = T0/4 at phi0 = 2.5.
-const Params kParams{0.1, 1.0, 0.0};
+const Params kParams{0.1, 1.0};
 Forcing ValidForce() { return Forcing::Harmonic(0.025, 0.025, 2.5); }
 
 TEST(ForceBoundConstraint, ForceOneUlpAboveTheBoundIsWithinIt) {

@@ -51,6 +51,7 @@ std::ostream& operator<<(std::ostream& os, const DesignCase& k) {
 ForcingDesignOptions OptionsFor(const DesignCase& k) {
   ForcingDesignOptions o;
   o.gait.force_bound = k.bound_ratio * k.T0;
+  o.gait.margins.clearance = k.margin;
   if (k.stable) o.gait.rho_max = 1.0;
   return o;
 }
@@ -59,7 +60,7 @@ class ForcingOptimum : public ::testing::TestWithParam<DesignCase> {};
 
 TEST_P(ForcingOptimum, BeatsTenThousandRandomValidSamples) {
   const DesignCase k = GetParam();
-  const Params params{k.T0, k.e, k.margin};
+  const Params params{k.T0, k.e};
   const double bound = k.bound_ratio * k.T0;
   const OptimizeResult r = OptimizeForcing(params, OptionsFor(k));
   ASSERT_TRUE(r.found()) << r.message;
@@ -73,7 +74,8 @@ TEST_P(ForcingOptimum, BeatsTenThousandRandomValidSamples) {
     ++draws;
     const double s = bound * std::pow(1e-3, unit(rng)), share = unit(rng);
     const Solution sol =
-        Solve(Forcing::Harmonic(s * (1.0 - share), s * share, -kPi + kTau * unit(rng)), params);
+        Solve(Forcing::Harmonic(s * (1.0 - share), s * share, -kPi + kTau * unit(rng)), params,
+              Margins{k.margin});
     if (!sol.validity.valid()) continue;
     if (k.stable && !(ComputeStability(sol.orbit).spectral_radius <= 1.0)) continue;
     ++valid;
@@ -85,7 +87,7 @@ TEST_P(ForcingOptimum, BeatsTenThousandRandomValidSamples) {
 
 TEST_P(ForcingOptimum, SatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   const DesignCase k = GetParam();
-  const Params params{k.T0, k.e, k.margin};
+  const Params params{k.T0, k.e};
   const double bound = k.bound_ratio * k.T0;
   const OptimizeResult r = OptimizeForcing(params, OptionsFor(k));
   ASSERT_TRUE(r.found()) << r.message;
@@ -94,7 +96,7 @@ TEST_P(ForcingOptimum, SatisfiesEveryConstraintWhenRecheckedThroughSolve) {
   EXPECT_GE(phi0, -kPi);
   EXPECT_LT(phi0, kPi);
   // Rebuilt from the three numbers alone, as `capsubot solve --A --c --phi0` would.
-  const Solution s = Solve(Forcing::Harmonic(A, c, phi0), params);
+  const Solution s = Solve(Forcing::Harmonic(A, c, phi0), params, Margins{k.margin});
   EXPECT_TRUE(s.validity.valid()) << "violations: " << s.validity.violations;
   EXPECT_LE(A + c, bound * (1.0 + kSameValueTol));
   EXPECT_GT(c, 0.0);
@@ -128,12 +130,13 @@ INSTANTIATE_TEST_SUITE_P(Designs, ForcingOptimum,
 TEST(OptimizeForcing, RobustOptimumHoldsEveryMarginAndNamesTheOnesThatBind) {
   // The command's robust defaults (docs/model.md section 12), re-checked through Solve with
   // the same margins and through the stability of the orbit.
-  const Params params{1.0, 1.0, 0.0, 0.02, 0.02};
+  const Params params{1.0, 1.0};
   ForcingDesignOptions o;
   o.gait.rho_max = 0.9;
+  o.gait.margins = Margins{0.0, 0.02, 0.02};
   const OptimizeResult r = OptimizeForcing(params, o);
   ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
-  const Solution s = Solve(r.solution.orbit.forcing, params);
+  const Solution s = Solve(r.solution.orbit.forcing, params, o.gait.margins);
   ASSERT_TRUE(s.validity.valid()) << s.validity.violations;
   const double rho = ComputeStability(s.orbit).spectral_radius;
   EXPECT_LE(rho, o.gait.rho_max);
@@ -160,9 +163,10 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
   // docs/model.md section 6: A, c, T0 -> k A, k c, k T0 keeps every condition of the robust
   // problem but the left wall, which only relaxes: the robust optimum at T0 = 1e-7 is the one
   // at 1e-3 scaled by 1e-4 (the left wall does not bind there).
-  const Params reference{1e-3, 1.0, 0.0, 0.02, 0.02}, tiny{1e-7, 1.0, 0.0, 0.02, 0.02};
+  const Params reference{1e-3, 1.0}, tiny{1e-7, 1.0};
   ForcingDesignOptions o;
   o.gait.rho_max = 0.9;
+  o.gait.margins = Margins{0.0, 0.02, 0.02};
   const OptimizeResult at_reference = OptimizeForcing(reference, o);
   const OptimizeResult at_tiny = OptimizeForcing(tiny, o);
   ASSERT_EQ(at_tiny.status, OptimizeStatus::kOk) << at_tiny.message;
@@ -170,7 +174,7 @@ TEST(OptimizeForcing, BelowTheReferenceT0TheOptimumIsTheScaledReferenceOptimum) 
                                        1e-4 * at_reference.solution.orbit.I, kScalingTol));
   EXPECT_TRUE(
       testing::Near(at_tiny.solution.orbit.alpha, at_reference.solution.orbit.alpha, kScalingTol));
-  EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny).validity.valid());
+  EXPECT_TRUE(Solve(at_tiny.solution.orbit.forcing, tiny, o.gait.margins).validity.valid());
 }
 
 TEST(OptimizeForcing, ATinyRestitutionGivesTheAnswerOfASmallOne) {
@@ -181,16 +185,18 @@ TEST(OptimizeForcing, ATinyRestitutionGivesTheAnswerOfASmallOne) {
   // nearest point breaks the same conditions.
   ForcingDesignOptions o;
   o.gait.rho_max = 0.9;
-  const OptimizeResult small = OptimizeForcing(Params{1.0, 1e-6, 0.0, 0.02, 0.02}, o);
+  o.gait.margins = Margins{0.0, 0.02, 0.02};
+  const OptimizeResult small = OptimizeForcing(Params{1.0, 1e-6}, o);
   ASSERT_EQ(small.status, OptimizeStatus::kNoValidOrbit) << small.message;
   ASSERT_NE(small.solution.validity.violations, 0U);
   for (const double e : {1e-300, 1e-200, 1e-20}) {
-    const Params params{1.0, e, 0.0, 0.02, 0.02};
+    const Params params{1.0, e};
     const OptimizeResult tiny = OptimizeForcing(params, o);
     EXPECT_EQ(tiny.status, small.status) << "e = " << e << ": " << tiny.message;
     const Forcing& f = tiny.solution.orbit.forcing;
     EXPECT_TRUE(std::isfinite(f.amplitude()) && std::isfinite(f.mean())) << "e = " << e;
-    EXPECT_EQ(Solve(f, params).validity.violations, small.solution.validity.violations)
+    EXPECT_EQ(Solve(f, params, o.gait.margins).validity.violations,
+              small.solution.validity.violations)
         << "e = " << e << ": " << tiny.message;
   }
 }
@@ -200,7 +206,7 @@ TEST(OptimizeForcing, OptimumScalesWithT0AsOnlyTheLeftWallDependsOnScale) {
   // stick and mass-ratio conditions (they depend on 1 - x only through its sign), scales I
   // and 1 - x by k. Only x >= 0, i.e. k (1 - x) <= 1, depends on k.
   const double T0 = 1.0, k = 0.5;
-  const Params big{T0, 1.0, 0.0}, small{k * T0, 1.0, 0.0};
+  const Params big{T0, 1.0}, small{k * T0, 1.0};
   const OptimizeResult at_big = OptimizeForcing(big);
   const OptimizeResult at_small = OptimizeForcing(small);
   ASSERT_TRUE(at_big.found() && at_small.found());
@@ -234,7 +240,7 @@ TEST(OptimizeForcing, OptimumIsAPeriodicOrbitOfTheSimulator) {
   // only the left wall (x_min = 0, no interior maximum) and the force stays below the friction
   // bound at rest (with A + c = T0 the capsule sits exactly at breakaway, which a simulation
   // resolves only by chattering). One simulated period from the post-impact state returns.
-  const Params params{0.1, 1.0, 0.0};
+  const Params params{0.1, 1.0};
   ForcingDesignOptions options;
   options.gait.force_bound = 0.09;
   const OptimizeResult r = OptimizeForcing(params, options);
@@ -254,7 +260,7 @@ TEST(OptimizeForcing, ReturnsWhereTheStickConditionAndTheForceBoundCoincide) {
   // and A + c <= T0 (force bound) are the same plane; given both, COBYLA's linear subproblem
   // cycled without evaluating, past every evaluation and time limit (the test's ctest TIMEOUT
   // catches that). Within the time limit the search ends with a valid optimum.
-  const Params params{0.011547819846894581, 0.725, 0.0};
+  const Params params{0.011547819846894581, 0.725};
   const OptimizeResult r = OptimizeForcing(params);
   EXPECT_EQ(r.status, OptimizeStatus::kOk) << r.message;
   ASSERT_TRUE(r.found()) << r.message;
@@ -264,7 +270,7 @@ TEST(OptimizeForcing, ReturnsWhereTheStickConditionAndTheForceBoundCoincide) {
 class LocalAlgorithm : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LocalAlgorithm, AgreesWithTheDefaultOnTheOptimum) {
-  const Params params{1.0, 1.0, 0.0};
+  const Params params{1.0, 1.0};
   ForcingDesignOptions o;
   o.local_algorithm = GetParam();
   const OptimizeResult r = OptimizeForcing(params, o);
@@ -282,7 +288,7 @@ class GlobalAlgorithm : public ::testing::TestWithParam<std::string> {};
 TEST_P(GlobalAlgorithm, ReturnsAValidGaitNoBetterThanTheMultistartOptimum) {
   // NLopt's global algorithms are stochastic or coarse: they must return a valid gait, which
   // cannot beat the multistart optimum (up to its accuracy).
-  const Params params{0.1, 1.0, 0.0};
+  const Params params{0.1, 1.0};
   ForcingDesignOptions o;
   o.effort.global_algorithm = GetParam();
   o.effort.global_evaluations = 3000;  // keeps GN_ORIG_DIRECT (quadratic bookkeeping) fast
@@ -329,9 +335,9 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   EXPECT_EQ(ErrorOf(Params{}, above),
             "force_bound = 2 is invalid: expected force_bound <= T0 = 1 (a force above the "
             "friction bound moves the capsule without impacts, docs/model.md section 6)");
-  Params wide;
-  wide.margin = 0.5;
-  EXPECT_EQ(ErrorOf(wide, {}), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");
+  ForcingDesignOptions wide;
+  wide.gait.margins.clearance = 0.5;
+  EXPECT_EQ(ErrorOf(Params{}, wide), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");
   ForcingDesignOptions many_hops;
   many_hops.hops = 2000000000;
   EXPECT_EQ(ErrorOf(Params{}, many_hops),

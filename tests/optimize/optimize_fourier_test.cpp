@@ -33,7 +33,7 @@ FourierOptions Quick(int K) {
 }
 
 TEST(OptimizeFourier, NeverLosesToTheHarmonicOptimumAndRecordsIt) {
-  const Params params{1.0, 1.0, 0.0};
+  const Params params{1.0, 1.0};
   const OptimizeResult r = OptimizeFourier(params, Quick(3));
   ASSERT_TRUE(r.found()) << r.message;
   const OptimizeResult p2 = OptimizeForcing(params);
@@ -46,7 +46,7 @@ TEST(OptimizeFourier, KeepsTheHarmonicOptimumWhenTheForceBoundBinds) {
   // T0 = 0.3, bound 0.8 T0: the P2 optimum uses its whole bound, A + c = 0.24. Rebuilt as a
   // series (a_1 = A sin phi0, b_1 = A cos phi0), its max |F| exceeds 0.24 by one ulp; that is
   // the bound up to rounding, so P3 starts from a valid point and its gain is never negative.
-  const Params params{0.3, 1.0, 0.0};
+  const Params params{0.3, 1.0};
   FourierOptions o;
   o.harmonics = 3;
   o.search.starts = 2;
@@ -59,9 +59,10 @@ TEST(OptimizeFourier, KeepsTheHarmonicOptimumWhenTheForceBoundBinds) {
 }
 
 TEST(OptimizeFourier, OptimumSatisfiesEveryConstraintWhenRecheckedThroughSolve) {
-  const Params params{0.3, 0.8, 0.02};
+  const Params params{0.3, 0.8};
   FourierOptions o = Quick(2);
   o.harmonic.gait.force_bound = 0.25;
+  o.harmonic.gait.margins.clearance = 0.02;
   const OptimizeResult r = OptimizeFourier(params, o);
   ASSERT_TRUE(r.found()) << r.message;
   const Forcing& f = r.solution.orbit.forcing;
@@ -71,16 +72,16 @@ TEST(OptimizeFourier, OptimumSatisfiesEveryConstraintWhenRecheckedThroughSolve) 
     a.push_back(f.a(k));
     b.push_back(f.b(k));
   }
-  const Solution s = Solve(Forcing::Fourier(f.mean(), a, b, 0.0), params);
+  const Solution s = Solve(Forcing::Fourier(f.mean(), a, b, 0.0), params, o.harmonic.gait.margins);
   EXPECT_TRUE(s.validity.valid()) << s.validity.violations;
   EXPECT_GT(f.mean(), 0.0);
   EXPECT_LE(s.validity.max_force, 0.25 * (1.0 + kSameValueTol));
-  EXPECT_GE(s.validity.x_min, params.margin);
+  EXPECT_GE(s.validity.x_min, o.harmonic.gait.margins.clearance);
   EXPECT_EQ(s.orbit.I, r.solution.orbit.I);
 }
 
 TEST(OptimizeFourier, OptimumIsAPeriodicOrbitOfTheSimulator) {
-  const Params params{1.0, 1.0, 0.0};
+  const Params params{1.0, 1.0};
   const OptimizeResult r = OptimizeFourier(params, Quick(3));
   ASSERT_TRUE(r.found()) << r.message;
   const Orbit& o = r.solution.orbit;

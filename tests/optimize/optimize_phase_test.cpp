@@ -33,12 +33,12 @@ struct ScanBest {
   int valid = 0;
 };
 
-ScanBest DenseScan(const Forcing& shape, const Params& params, bool stable = false,
-                   double rho_max = 1.0) {
+ScanBest DenseScan(const Forcing& shape, const Params& params, const Margins& margins = {},
+                   bool stable = false, double rho_max = 1.0) {
   ScanBest best;
   for (int i = 0; i < kDenseScan; ++i) {
     const double phi0 = -kPi + kTau * i / kDenseScan;
-    const Solution s = Solve(shape.WithPhase(phi0), params);
+    const Solution s = Solve(shape.WithPhase(phi0), params, margins);
     if (!s.validity.valid()) continue;
     if (stable && !(ComputeStability(s.orbit).spectral_radius <= rho_max)) continue;
     ++best.valid;
@@ -53,7 +53,12 @@ ScanBest DenseScan(const Forcing& shape, const Params& params, bool stable = fal
 struct PhaseCase {
   double A_ratio, c_ratio, T0, e, margin;  // A = A_ratio T0, c = c_ratio T0
   double margin_stroke = 0.0, stick_margin = 0.0;
-  Params params() const { return Params{T0, e, margin, margin_stroke, stick_margin}; }
+  Params params() const { return Params{T0, e}; }
+  PhaseOptions options() const {
+    PhaseOptions o;
+    o.gait.margins = Margins{margin, margin_stroke, stick_margin};
+    return o;
+  }
 };
 
 class PhaseOptimum : public ::testing::TestWithParam<PhaseCase> {};
@@ -62,9 +67,9 @@ TEST_P(PhaseOptimum, IsAtLeastTheBestValidPointOfADenseScan) {
   const PhaseCase k = GetParam();
   const Params params = k.params();
   const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
-  const ScanBest scan = DenseScan(shape, params);
+  const ScanBest scan = DenseScan(shape, params, k.options().gait.margins);
   ASSERT_GT(scan.valid, 0) << "test case without valid orbits";
-  const OptimizeResult r = OptimizePhase(shape, params);
+  const OptimizeResult r = OptimizePhase(shape, params, k.options());
   ASSERT_EQ(r.status, OptimizeStatus::kOk) << r.message;
   EXPECT_GE(r.solution.orbit.I, scan.I - kSameValueTol * std::abs(scan.I))
       << "scan best at phi0 = " << scan.phi0 << ", optimiser at "
@@ -75,13 +80,14 @@ TEST_P(PhaseOptimum, IsValidWhenRecheckedThroughSolve) {
   const PhaseCase k = GetParam();
   const Params params = k.params();
   const Forcing shape = Forcing::Harmonic(k.A_ratio * k.T0, k.c_ratio * k.T0, 0.0);
-  const OptimizeResult r = OptimizePhase(shape, params);
+  const OptimizeResult r = OptimizePhase(shape, params, k.options());
   ASSERT_TRUE(r.found()) << r.message;
   const double phi0 = r.solution.orbit.forcing.phi0();
   EXPECT_GE(phi0, -kPi);
   EXPECT_LT(phi0, kPi);
   // Rebuild the force from the numbers alone and solve it as `capsubot solve` does.
-  const Solution again = Solve(Forcing::Harmonic(shape.amplitude(), shape.mean(), phi0), params);
+  const Solution again = Solve(Forcing::Harmonic(shape.amplitude(), shape.mean(), phi0), params,
+                               k.options().gait.margins);
   EXPECT_TRUE(again.validity.valid()) << "violations: " << again.validity.violations;
   EXPECT_EQ(again.orbit.I, r.solution.orbit.I);
   EXPECT_GE(again.validity.x_min, k.margin);
@@ -108,7 +114,7 @@ class PhaseOnFrictionBoundDiagonal : public ::testing::TestWithParam<DiagonalCas
 
 TEST_P(PhaseOnFrictionBoundDiagonal, FindsTheValidPhasesSolveFinds) {
   const DiagonalCase k = GetParam();
-  const Params params{k.T0, 1.0, 0.0};
+  const Params params{k.T0, 1.0};
   const Forcing shape = Forcing::Harmonic(k.A, k.c, 0.0);
   const ScanBest scan = DenseScan(shape, params);
   ASSERT_GT(scan.valid, 0) << "test case without valid orbits";
@@ -130,7 +136,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, PhaseOnFrictionBoundDiagonal,
 
 TEST(OptimizePhase, PaperExampleAtT0OneHasNoValidOrbitAndSaysWhy) {
   // docs/model.md section 6: c = A = T0/2 violates the left-wall condition at T0 = 1.
-  const Params params{1.0, 1.0, 0.0};
+  const Params params{1.0, 1.0};
   const OptimizeResult r = OptimizePhase(Forcing::Harmonic(0.5, 0.5, 0.0), params);
   EXPECT_EQ(r.status, OptimizeStatus::kNoValidOrbit);
   EXPECT_STREQ(OptimizeStatusName(r.status), "no_valid_orbit");
@@ -144,7 +150,7 @@ TEST(OptimizePhase, PaperExampleAtT0OneHasNoValidOrbitAndSaysWhy) {
 TEST(OptimizePhase, EdgeOptimumReportsTheGrazedWallAsActive) {
   // At T0 = 0.1 the optimum of c = A = T0/2 grazes the left wall (x_min = 0 within the
   // bisection tolerance); the dense scan's best point lies next to an invalid one.
-  const Params params{0.1, 1.0, 0.0};
+  const Params params{0.1, 1.0};
   const OptimizeResult r = OptimizePhase(Forcing::Harmonic(0.05, 0.05, 0.0), params);
   ASSERT_TRUE(r.found()) << r.message;
   EXPECT_NEAR(r.solution.validity.x_min, 0.0, 1e-9);
@@ -157,7 +163,7 @@ TEST(OptimizePhase, EdgeOptimumAcrossMinusPiIsReportedExactlyAsEvaluated) {
   // that the edge lies just outside [-pi, pi) as the scan sees it (the bisection from scan
   // point 0 or 719 crosses -pi or pi): the optimum is the same, and its reported phi0 in
   // [-pi, pi) is where it was evaluated, so Solve at that phase gives the very same orbit.
-  const Params params{0.1, 1.0, 0.0};
+  const Params params{0.1, 1.0};
   const OptimizeResult upright = OptimizePhase(Forcing::Harmonic(0.05, 0.05, 0.0), params);
   ASSERT_TRUE(upright.found()) << upright.message;
   const double star = upright.solution.orbit.forcing.phi0();
@@ -184,7 +190,7 @@ TEST(OptimizePhase, FindsAValidArcNarrowerThanItsScanSpacing) {
   // c = A = T0/2 at T0 = 0.108: the only valid arc is about 0.12 rad wide (dense scan), far
   // narrower than the 0.39 rad spacing of a 16-point scan, which sees no valid point; the
   // search from the local minima of the violation finds it.
-  const Params params{0.108, 1.0, 0.0};
+  const Params params{0.108, 1.0};
   const Forcing shape = Forcing::Harmonic(0.054, 0.054, 0.0);
   const ScanBest scan = DenseScan(shape, params);
   ASSERT_GT(scan.valid, 0);
@@ -198,11 +204,11 @@ TEST(OptimizePhase, FindsAValidArcNarrowerThanItsScanSpacing) {
 
 TEST(OptimizePhase, StableOptimumIsStableAndBeatsTheStableDenseScan) {
   // At T0 = 0.3 this shape has stable and unstable valid phases (a scan finds both).
-  const Params params{0.3, 1.0, 0.0};
+  const Params params{0.3, 1.0};
   const Forcing shape = Forcing::Harmonic(0.09, 0.03, 0.0);
   PhaseOptions options;
   options.gait.rho_max = 1.0;
-  const ScanBest scan = DenseScan(shape, params, true, 1.0);
+  const ScanBest scan = DenseScan(shape, params, {}, true, 1.0);
   const OptimizeResult r = OptimizePhase(shape, params, options);
   ASSERT_GT(scan.valid, 0) << "test case without stable valid orbits";
   ASSERT_TRUE(r.found()) << r.message;
@@ -234,10 +240,10 @@ TEST(OptimizePhase, BadOptionsAreRejectedWithTheRule) {
               "rho_max = 0 is invalid: expected rho_max > 0 (infinity: no stability "
               "requirement)");
   }
-  Params wide;
-  wide.margin = 0.5;
+  PhaseOptions wide;
+  wide.gait.margins.clearance = 0.5;
   try {
-    OptimizePhase(shape, wide);
+    OptimizePhase(shape, Params{}, wide);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");

@@ -97,9 +97,13 @@ TEST(SearchRequest, GivenStartsReachP2AndP3) {
   EXPECT_EQ(FourierOptionsFor(r).search.starts, 4);
 }
 
-TEST(SearchRequest, WithRhoMaxChangesOnlyTheStabilityRequirement) {
-  const SearchRequest exact = Request().WithRhoMax(SearchRequest{}.gait.rho_max);
+TEST(SearchRequest, ExactDropsTheMarginsAndSetsOnlyTheStabilityRequirement) {
+  SearchRequest robust = Request();
+  robust.gait.margins = RobustMargins();
+  const SearchRequest exact = robust.Exact(SearchRequest{}.gait.rho_max);
   EXPECT_TRUE(std::isinf(exact.gait.rho_max));
+  EXPECT_FALSE(exact.gait.margins.Any());
+  EXPECT_TRUE(robust.gait.margins.Any());
   EXPECT_EQ(ForcingOptionsFor(exact).hops, 3);
   EXPECT_EQ(ForcingOptionsFor(exact).gait.force_bound, 0.7);
 }

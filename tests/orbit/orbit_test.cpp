@@ -221,7 +221,7 @@ TEST(Orbit, NonFiniteQuantitiesAreAStatusNeverAnOrbit) {
   // So does a huge T0, although T0 tau overflows (g(tau) = -inf): the shell stops at once,
   // phi1 = Pi(tau)/(T0 + F(0)) to first order (g is linear there; c tau/T0 in double), and
   // T0 phi1^2/2 = (c tau)^2/(2 T0) is tiny.
-  const Orbit stiff = ComputeOrbit(Forcing::Harmonic(0.5, 0.5, -2.9), Params{1e308, 1.0, 0.0});
+  const Orbit stiff = ComputeOrbit(Forcing::Harmonic(0.5, 0.5, -2.9), Params{1e308, 1.0});
   ASSERT_TRUE(stiff.ok());
   EXPECT_TRUE(NearAbsBelowOne(stiff.phi1 * 1e308, 0.5 * kTau, 1e-15));
   EXPECT_TRUE(stiff.alpha > 0.0 && stiff.alpha < 1.0);
@@ -249,12 +249,10 @@ TEST(Params, RejectBadValuesNamingParameterValueAndRule) {
     Params p;
     const char* message;
   } bad[] = {
-      {{0.0, 1.0, 0.0}, "friction bound T0 = 0 is invalid: expected a finite T0 > 0"},
-      {{INFINITY, 1.0, 0.0}, "friction bound T0 = inf is invalid: expected a finite T0 > 0"},
-      {{1.0, 1.3, 0.0}, "restitution e = 1.3 is invalid: expected 0 <= e <= 1"},
-      {{1.0, std::nan(""), 0.0}, "restitution e = nan is invalid: expected 0 <= e <= 1"},
-      {{1.0, 1.0, 0.5}, "margin d = 0.5 is invalid: expected 0 <= d < 0.5"},
-      {{1.0, 1.0, -0.1}, "margin d = -0.1 is invalid: expected 0 <= d < 0.5"},
+      {{0.0, 1.0}, "friction bound T0 = 0 is invalid: expected a finite T0 > 0"},
+      {{INFINITY, 1.0}, "friction bound T0 = inf is invalid: expected a finite T0 > 0"},
+      {{1.0, 1.3}, "restitution e = 1.3 is invalid: expected 0 <= e <= 1"},
+      {{1.0, std::nan("")}, "restitution e = nan is invalid: expected 0 <= e <= 1"},
   };
   for (const auto& b : bad) {
     try {

@@ -225,15 +225,15 @@ TEST(RobotOrbitsInput, SearchStoppedByTheWorkBoundIsReportedIncomplete) {
   p.T0 = 0.1;
   p.e = 0.5;
   bool complete = false;
-  const std::vector<Solution> all = FindRobotOrbits({f, p, 0.199}, &complete);
+  const std::vector<Solution> all = FindRobotOrbits({f, p, 0.199}, {}, &complete);
   EXPECT_TRUE(complete);
   EXPECT_GE(all.size(), 2U);
   complete = true;
-  const std::vector<Solution> cut = FindRobotOrbits({f, p, 0.199}, &complete, 600);
+  const std::vector<Solution> cut = FindRobotOrbits({f, p, 0.199}, {}, &complete, 600);
   EXPECT_FALSE(complete);
   EXPECT_LE(cut.size(), all.size());
   try {
-    FindRobotOrbits({f, p, 0.199}, &complete, 0);
+    FindRobotOrbits({f, p, 0.199}, {}, &complete, 0);
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "max_evaluations = 0 is invalid: expected >= 1");
@@ -245,7 +245,7 @@ TEST(RobotOrbitsInput, NoOrbitWithoutPositiveMeanForce) {
   EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3}).empty());
   EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, -0.1, 0.0), p, 0.3}).empty());
   bool complete = false;  // nothing to search: complete
-  EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3}, &complete).empty());
+  EXPECT_TRUE(FindRobotOrbits({Forcing::Harmonic(0.5, 0.0, 0.0), p, 0.3}, {}, &complete).empty());
   EXPECT_TRUE(complete);
 }
 

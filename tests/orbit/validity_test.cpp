@@ -167,8 +167,8 @@ TEST(Validity, PlasticImpactNeedsTheInnerBodyToMoveAway) {
 
 TEST(Validity, ClearanceMarginIsCheckedOnlyWhenRequired) {
   const Forcing f = Forcing::Harmonic(0.05, 0.02, -2.5);  // x_min = 0.166 (valid_no_max)
-  EXPECT_FALSE(Solve(f, Params{0.1, 0.5, 0.1}).validity.violated(Condition::kClearance));
-  const Solution s = Solve(f, Params{0.1, 0.5, 0.2});
+  EXPECT_FALSE(Solve(f, Params{0.1, 0.5}, Margins{0.1}).validity.violated(Condition::kClearance));
+  const Solution s = Solve(f, Params{0.1, 0.5}, Margins{0.2});
   EXPECT_EQ(s.validity.ViolationNames(), std::vector<std::string>{"clearance"});
 }
 
@@ -198,18 +198,20 @@ TEST(Validity, StrokeClearanceIsDsTimesTheRangeOfX) {
   const double x_min = plain.validity.x_min, stroke = 1.0 - x_min;  // x = 1 at the impact
   EXPECT_EQ(plain.validity.stroke, stroke);
   const double d_s = x_min / stroke;  // the clearance that x_min just meets
-  Params p = k.params;
-  p.margin_stroke = d_s * (1.0 - 1e-9);
-  const Validity holds = Solve(k.forcing, p).validity;
+  Margins m;
+  m.clearance_stroke = d_s * (1.0 - 1e-9);
+  const Validity holds = Solve(k.forcing, k.params, m).validity;
   EXPECT_TRUE(holds.valid());
-  EXPECT_EQ(holds.clearance, p.margin_stroke * stroke);
-  p.margin_stroke = d_s * (1.0 + 1e-9);
-  const Validity fails = Solve(k.forcing, p).validity;
+  EXPECT_EQ(holds.clearance, m.clearance_stroke * stroke);
+  m.clearance_stroke = d_s * (1.0 + 1e-9);
+  const Validity fails = Solve(k.forcing, k.params, m).validity;
   EXPECT_EQ(fails.ViolationNames(), std::vector<std::string>{"clearance"});
   // The absolute clearance d wins when it is the larger.
-  p.margin = 0.5 * x_min;
-  p.margin_stroke = 0.1 * d_s;
-  EXPECT_EQ(Solve(k.forcing, p).validity.clearance, 0.5 * x_min);
+  m.clearance = 0.5 * x_min;
+  m.clearance_stroke = 0.1 * d_s;
+  EXPECT_EQ(Solve(k.forcing, k.params, m).validity.clearance, 0.5 * x_min);
+  // The same check on the orbit alone.
+  EXPECT_EQ(CheckValidity(plain.orbit, m).clearance, 0.5 * x_min);
 }
 
 TEST(Validity, StickMarginLowersTheForceAllowedAtRest) {
@@ -218,37 +220,38 @@ TEST(Validity, StickMarginLowersTheForceAllowedAtRest) {
   ASSERT_TRUE(plain.validity.valid());
   const double s = 1.0 - plain.validity.rest_force / k.params.T0;  // the margin it just meets
   ASSERT_GT(s, 0.0);
-  Params p = k.params;
-  p.stick_margin = s * (1.0 - 1e-6);
-  EXPECT_TRUE(Solve(k.forcing, p).validity.valid());
-  p.stick_margin = s * (1.0 + 1e-6);
-  EXPECT_EQ(Solve(k.forcing, p).validity.ViolationNames(), std::vector<std::string>{"stick"});
+  Margins m;
+  m.stick = s * (1.0 - 1e-6);
+  EXPECT_TRUE(Solve(k.forcing, k.params, m).validity.valid());
+  m.stick = s * (1.0 + 1e-6);
+  EXPECT_EQ(Solve(k.forcing, k.params, m).validity.ViolationNames(),
+            std::vector<std::string>{"stick"});
 }
 
 TEST(Validity, MarginsOutsideTheirRangeAreRejectedWithTheRule) {
   struct Bad {
-    Params params;
+    Margins margins;
     const char* message;
   };
   const Bad cases[] = {
-      {Params{1.0, 1.0, 0.0, 0.5, 0.0},
-       "stroke margin d_s = 0.5 is invalid: expected 0 <= d_s < 0.5"},
-      {Params{1.0, 1.0, 0.0, -0.1, 0.0},
-       "stroke margin d_s = -0.1 is invalid: expected 0 <= d_s < 0.5"},
-      {Params{1.0, 1.0, 0.0, 0.0, 1.0}, "stick margin s = 1 is invalid: expected 0 <= s < 1"},
-      {Params{1.0, 1.0, 0.0, 0.0, NAN}, "stick margin s = nan is invalid: expected 0 <= s < 1"},
+      {Margins{0.5, 0.0, 0.0}, "margin d = 0.5 is invalid: expected 0 <= d < 0.5"},
+      {Margins{-0.1, 0.0, 0.0}, "margin d = -0.1 is invalid: expected 0 <= d < 0.5"},
+      {Margins{0.0, 0.5, 0.0}, "stroke margin d_s = 0.5 is invalid: expected 0 <= d_s < 0.5"},
+      {Margins{0.0, -0.1, 0.0}, "stroke margin d_s = -0.1 is invalid: expected 0 <= d_s < 0.5"},
+      {Margins{0.0, 0.0, 1.0}, "stick margin s = 1 is invalid: expected 0 <= s < 1"},
+      {Margins{0.0, 0.0, NAN}, "stick margin s = nan is invalid: expected 0 <= s < 1"},
   };
   int checked = 0;
   for (const Bad& b : cases) {
     try {
-      b.params.Validate();
+      b.margins.Validate();
       ADD_FAILURE() << "accepted: " << b.message;
     } catch (const std::invalid_argument& e) {
       EXPECT_EQ(std::string(e.what()), b.message);
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 4);
+  EXPECT_EQ(checked, 6);
 }
 
 }  // namespace

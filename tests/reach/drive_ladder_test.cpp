@@ -50,13 +50,10 @@ FromRestOptions QuickCheck() {
 }
 
 OptimizeResult RobustSeed(const Params& params) {
-  Params p = params;
-  p.margin_stroke = kRobustMarginStroke;
-  p.stick_margin = kRobustStickMargin;
-  ForcingDesignOptions d = RobustSeedDesign();
+  ForcingDesignOptions d = RobustSeedDesign();  // with the robust gait's margins
   d.hops = 2;
   d.effort.starts = 3;
-  return OptimizeForcing(p, d);
+  return OptimizeForcing(params, d);
 }
 
 // The mean velocity over the starts of `check` of direct runs from rest: `transient` periods,

@@ -24,8 +24,8 @@ using testing::Printed;
 // robust gait (I = 0.0625) checked from rest, the reach winner, the exact optimum (I = 0.125).
 MainJobResult HandMadeMainJob() {
   MainJobResult r;
-  r.params = OptimizeJobOptions::RobustParams();
   r.params.T0 = 0.8;
+  r.gait.margins = RobustMargins();
   r.gait.force_bound = 0.8;
   r.gait.rho_max = 0.9;
   r.paper = HandMadeGait(0.4, 0.4, 0.25, 0.5);

@@ -28,9 +28,9 @@ using testing::Printed;
 ProblemJobResult FourierProblem() {
   ProblemJobResult pr;
   pr.problem = "fourier";
-  pr.params = OptimizeJobOptions::RobustParams();
   pr.params.T0 = 0.8;
-  pr.rho_max = GaitRequirements::kInf;
+  pr.gait.margins = RobustMargins();
+  pr.gait.rho_max = GaitRequirements::kInf;
   pr.result = HandMadeGait(0.5, 0.25, 0.5, 0.25);
   pr.result.solution.orbit.forcing = Forcing::Fourier(0.25, {0.125, 0.0}, {0.5, 0.0625}, -2.5);
   pr.result.baseline_I = 0.4;
@@ -86,7 +86,7 @@ TEST(OptimizeTextReport, ProblemWritesTheGaitInPlainTermsAndItsGain) {
 
 TEST(OptimizeTextReport, ASpectralRadiusOnItsBoundIsSaid) {
   ProblemJobResult pr = FourierProblem();
-  pr.rho_max = 0.9;
+  pr.gait.rho_max = 0.9;
   pr.result.spectral_radius = 0.9 + 1e-9;  // within the optimiser's tolerance of the bound
   EXPECT_TRUE(Has(text::OptimizeJobText(pr),
                   "spectral radius 0.9 -> on the required bound "
@@ -98,8 +98,8 @@ TEST(OptimizeTextReport, ASpectralRadiusOnItsBoundIsSaid) {
 // The reach problem of a Fourier drive: its ladder K = 1 (the sine), 2, the winner K = 2.
 ReachJobResult FourierReach() {
   ReachJobResult r;
-  r.params = OptimizeJobOptions::RobustParams();
-  r.rho_max = 0.9;
+  r.gait.margins = RobustMargins();
+  r.gait.rho_max = 0.9;
   ReachResult sine = HandMadeReach(0.02);
   ReachResult two = HandMadeReach(0.03);
   two.drive = DriveFamily::Fourier(2);
@@ -128,7 +128,7 @@ TEST(OptimizeJsonReport, ReachHasItsDriveAndTheLadderAgainstTheSine) {
 
 TEST(OptimizeJsonReport, ReachOfTheSineWithoutWinnerHasNulls) {
   ReachJobResult r;
-  r.rho_max = 0.9;
+  r.gait.rho_max = 0.9;
   r.reach.status = OptimizeStatus::kNoValidOrbit;
   const nlohmann::json j = Printed(json::OptimizeJobJson(r));
   EXPECT_EQ(j["status"], "no_valid_orbit");

@@ -118,7 +118,7 @@ TEST(SolveTextReport, TableWritesEachQuantityWithTenDigits) {
 TEST(SolveTextReport, TableNamesTheViolationsAndTheMarginsGiven) {
   Solution s = HandMadeOrbit(Bit(Condition::kLeftWall) | Bit(Condition::kClearance));
   s.validity.clearance = 0.015;
-  const std::string t = text::SolutionTable(s, Params{0.8, 0.9, 0.0, 0.02, 0.05});
+  const std::string t = text::SolutionTable(s, Params{0.8, 0.9}, Margins{0.0, 0.02, 0.05});
   EXPECT_TRUE(Has(t, "  valid            no: violated left_wall, clearance\n"));
   EXPECT_TRUE(Has(t, "margin = 0, margin_stroke = 0.02, stick_margin = 0.05\n"));
   EXPECT_TRUE(Has(t, "  clearance        0.015 required from both walls (stroke 0.75)\n"));

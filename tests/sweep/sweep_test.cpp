@@ -235,8 +235,9 @@ TEST(Sweep, ModelParameterAxesReachSolve) {
     Params p;
     p.T0 = 0.5;
     p.e = o.grid.Value(k, 0);
-    p.margin = o.grid.Value(k, 1);
-    const auto cells = SolutionCells(Solve(o.forcing, p));
+    Margins m;
+    m.clearance = o.grid.Value(k, 1);
+    const auto cells = SolutionCells(Solve(o.forcing, p, m));
     EXPECT_EQ(std::vector<std::string>(rows[k + 1].begin() + 2, rows[k + 1].end()), cells) << k;
   }
 }
@@ -745,8 +746,7 @@ TEST(Sweep, ReachPerPointEqualsOptimizeReachSeededByOptimizeForcing) {
   SweepOptions o;
   o.grid.axes = {ParseGridAxis("T0=0.5,1")};
   o.optimize = SweepOptimize::kReach;
-  o.params.margin_stroke = kRobustMarginStroke;
-  o.params.stick_margin = kRobustStickMargin;
+  o.design.gait.margins = RobustMargins();
   o.design.gait.rho_max = kRobustRhoMax;
   o.design.effort.starts = 2;
   o.design.hops = 1;

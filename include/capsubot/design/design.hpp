@@ -96,9 +96,10 @@ struct DesignInput {
 
 /// The dimensionless model of one robot (docs/model.md sections 2 and 9).
 struct DesignModel {
-  /// The robot: F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs); T0, e
-  /// and the margins d, d_s, s; alpha = m2/(m1+m2).
+  /// The robot: F in units of (m1+m2) omega^2 L, phi0 = 0 (the orbits choose theirs); T0, e;
+  /// alpha = m2/(m1+m2).
   RobotModel robot;
+  Margins margins;      ///< the margins d, d_s, s its gaits must keep
   double omega = kNaN;  ///< 2 pi f [rad/s]
 };
 

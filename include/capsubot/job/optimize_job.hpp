@@ -73,20 +73,19 @@ const char* OptimizeModeName(const OptimizeMode& mode);
 
 struct OptimizeJobOptions {
   OptimizeMode mode;
-  /// The robot and the margins of a robust gait (docs/model.md section 12).
-  Params params = RobustParams();
-  /// The gait asked for (force bound, rho_max) and the search of P1-P3; its interrupt is asked
-  /// by every stage of the job.
+  /// The robot's T0 and e.
+  Params params;
+  /// The gait asked for (by default the robust gait of docs/model.md section 12: its margins,
+  /// force bound and rho_max) and the search of P1-P3; its interrupt is asked by every stage
+  /// of the job.
   SearchRequest search = RobustRequest();
   /// The from-rest check of every reported gait (the reach winner's re-check too).
   FromRestOptions check;
   /// Told each stage of the job.
   StageCallback on_stage;
 
-  /// The defaults of a robust gait: Params{} with the stroke and stick margins of
-  /// docs/model.md section 12.
-  static Params RobustParams();
-  /// SearchRequest{} with the stability requirement of a robust gait (kRobustRhoMax).
+  /// SearchRequest{} asking for the robust gait of docs/model.md section 12: the margins
+  /// RobustMargins() and spectral radius <= kRobustRhoMax.
   static SearchRequest RobustRequest();
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
@@ -96,7 +95,7 @@ struct OptimizeJobOptions {
 /// The main job's results (MainJob).
 struct MainJobResult {
   Params params;
-  GaitRequirements gait;  ///< the force bound (T0 when not given) and rho_max
+  GaitRequirements gait;  ///< the margins, the force bound (T0 when not given) and rho_max
   OptimizeResult paper;   ///< P1 at c = A = T0/2, no margins
   OptimizeResult robust;  ///< P2 with the margins (its from-rest check: reach.seed)
   ReachResult reach;      ///< the fastest motion from rest (of the sine)
@@ -117,7 +116,7 @@ struct MainJobResult {
 struct ProblemJobResult {
   std::string problem;  ///< "phase", "forcing" or "fourier"
   Params params;
-  double rho_max;
+  GaitRequirements gait;  ///< the margins and rho_max asked for
   OptimizeResult result;
   GaitFromRest from_rest;
 };
@@ -125,8 +124,8 @@ struct ProblemJobResult {
 /// The reach problem's result.
 struct ReachJobResult {
   Params params;
-  double rho_max;     ///< the seed's stability requirement
-  ReachResult reach;  ///< the winner of the family asked for
+  GaitRequirements gait;  ///< the seed's margins and stability requirement
+  ReachResult reach;      ///< the winner of the family asked for
   /// A Fourier drive's ladder: the winners of K = 1 (the sine), 2, ..., K; a pulse drive's: the
   /// sine's winner and the pulse's; empty for the sine.
   std::vector<ReachResult> ladder;

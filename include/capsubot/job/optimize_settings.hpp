@@ -20,8 +20,9 @@ struct OptimizeSettings {
   std::string problem;  ///< "" (the main job), "phase", "forcing", "fourier" or "reach"
   double A = kNaN;      ///< phase: the amplitude of F = A sin(phi + phi0) + c
   double c = kNaN;      ///< phase: the mean force
-  Params params = OptimizeJobOptions::RobustParams();
-  /// The gait asked for and the search of P1-P3 (`bound` is search.gait.force_bound).
+  Params params;        ///< T0, e
+  /// The gait asked for (its margins, bound and rho_max: by default the robust gait) and the
+  /// search of P1-P3 (`bound` is search.gait.force_bound).
   SearchRequest search = OptimizeJobOptions::RobustRequest();
   /// The check from rest of every gait, NXxNPSI (StartGrid::Text; default 8x8).
   std::string from_rest_starts = StartGrid{}.Text();

@@ -18,7 +18,8 @@ namespace capsubot {
 
 struct SolveJobOptions {
   Forcing forcing;  ///< the force F(phi) = G(phi + phi0), phi = 0 at the impact
-  Params params;    ///< T0, e and the margins of the validity conditions
+  Params params;    ///< T0, e
+  Margins margins;  ///< the margins of the validity conditions (none: physical validity)
   /// Also the stability of the orbit and its check from rest on this grid of starts (with
   /// its threads and interrupt); none: the orbit alone.
   std::optional<FromRestOptions> stability;
@@ -26,7 +27,7 @@ struct SolveJobOptions {
   StageCallback on_stage;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule (params,
-  /// the grid and options of the check from rest).
+  /// margins, the grid and options of the check from rest).
   void Validate() const;
 };
 

@@ -33,7 +33,8 @@ struct SweepForce {
 /// No optimisation: the orbit of the given force and its validity at every point (Solve); with
 /// a grid over alpha, every orbit of the robot with that mass ratio.
 struct SweepOrbitMode {
-  Params params;     ///< T0, e and the margins, except the gridded ones
+  Params params;     ///< T0 and e, except the gridded ones
+  Margins margins;   ///< the margins of the orbits' validity, except the gridded ones
   SweepForce force;  ///< the force, except the gridded parts
   /// Motor phase at the impact phi0 [rad]; none: the grid gives it (phi0), or the robot's
   /// orbits do (alpha: then it must be none).
@@ -43,18 +44,19 @@ struct SweepOrbitMode {
 
 /// P1: the best impact phase phi0 for the force shape at every point (OptimizePhase).
 struct SweepPhaseMode {
-  Params params;           ///< T0, e and the margins, except the gridded ones
+  Params params;           ///< T0 and e, except the gridded ones
   SweepForce force;        ///< the shape of the force (phi0 is what P1 finds)
   bool stability = false;  ///< add the stability columns
-  /// P1's options: gait.rho_max (a grid over rho_max replaces it), scan_points, tolerances.
+  /// P1's options: gait.margins and gait.rho_max (grids over them replace them), scan_points,
+  /// tolerances.
   PhaseOptions phase;
 };
 
 /// P2: the best A, c, phi0 with max |F| <= the bound at every point (OptimizeForcing).
 struct SweepForcingMode {
-  Params params;           ///< T0, e and the margins, except the gridded ones
+  Params params;           ///< T0 and e, except the gridded ones
   bool stability = false;  ///< add the stability columns
-  /// The bound and rho_max (grids over bound and rho_max replace them) and the search effort;
+  /// The margins, the bound and rho_max (grids over them replace them) and the search effort;
   /// its harmonics are not used.
   SearchRequest search;
 };
@@ -62,9 +64,9 @@ struct SweepForcingMode {
 /// P3: the best force of `search.harmonics` harmonics with max |F| <= the bound
 /// (OptimizeFourier).
 struct SweepFourierMode {
-  Params params;           ///< T0, e and the margins, except the gridded ones
+  Params params;           ///< T0 and e, except the gridded ones
   bool stability = false;  ///< add the stability columns
-  /// The bound, rho_max, harmonics and the search effort; its hops are not used.
+  /// The margins, the bound, rho_max, harmonics and the search effort; its hops are not used.
   SearchRequest search;
 };
 
@@ -73,10 +75,10 @@ struct SweepFourierMode {
 /// robust gait's margins and rho_max.
 struct SweepReachMode {
   SweepReachMode();
-  /// T0, e and the margins, except the gridded ones; d_s and s default to the robust gait's.
+  /// T0 and e, except the gridded ones.
   Params params;
-  /// The seed's P2: the bound (also the reach search's), rho_max (default kRobustRhoMax) and
-  /// the search effort; its harmonics are not used.
+  /// The seed's P2: the margins (default RobustMargins()), the bound (also the reach search's),
+  /// rho_max (default kRobustRhoMax) and the search effort; its harmonics are not used.
   SearchRequest search;
   /// The search from rest: a fixed alpha (NaN: optimised), its grids of starts and evaluation
   /// budgets. Its force_bound is search.gait.force_bound's (must be NaN here) and max_seconds

@@ -14,7 +14,7 @@ namespace capsubot {
 /// grid) too.
 struct RobotModel {
   Forcing forcing;      ///< the motor force
-  Params params;        ///< T0, e (and the margins, which are requirements, not the robot's)
+  Params params;        ///< T0, e (what a gait must keep is apart: GaitRequirements)
   double alpha = kNaN;  ///< mass ratio, 0 < alpha < 1
 };
 

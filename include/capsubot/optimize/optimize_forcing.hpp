@@ -35,7 +35,7 @@ struct ForcingDesignOptions : SearchOptions {
 };
 
 /// P2: A, c, phi0 maximising I subject to the conditions of docs/model.md section 5 with the
-/// margins of params (clearance max(d, d_s * stroke), stick margin s), A + c <= bound and
+/// margins of options.gait (clearance max(d, d_s * stroke), stick margin s), A + c <= bound and
 /// spectral radius <= rho_max. The returned optimum is re-checked through Solve and is valid
 /// whenever status is kOk (kMaxTime: the best point when the time limit was reached).
 /// Throws std::invalid_argument for bad params or options.

@@ -1,6 +1,6 @@
 #pragma once
 // P1 of docs/model.md section 7: the impact phase phi0 that maximises the step I for a given force
-// shape, over valid orbits (with the margins of params, section 12, and optionally a bound on
+// shape, over valid orbits (with the margins of its options, section 12, and optionally a bound on
 // the spectral radius).
 
 #include "capsubot/model/forcing.hpp"
@@ -33,7 +33,7 @@ struct PhaseOptions : OptimizeOptions {
 /// returning the best point; never worse than the best valid point of its scan.
 /// Status kOk, kNoValidOrbit with the point nearest to validity, or kMaxTime (the best point
 /// of the part searched). Throws std::invalid_argument for bad params or options. Validity
-/// includes the margins of params (clearance, stick margin).
+/// includes the margins of options.gait (clearance, stick margin).
 OptimizeResult OptimizePhase(const Forcing& forcing, const Params& params,
                              const PhaseOptions& options = {});
 

@@ -15,8 +15,8 @@
 namespace capsubot {
 
 struct SearchRequest {
-  /// The gait asked for: the force bound (NaN: T0) and rho_max (infinity: no stability
-  /// requirement); the margins are those of the problems' Params.
+  /// The gait asked for: the force bound (NaN: T0), rho_max (infinity: no stability
+  /// requirement) and the margins d, d_s, s of every orbit.
   GaitRequirements gait;
   /// Wall-clock limit of one optimisation [s].
   double max_time = OptimizeOptions{}.max_time;
@@ -35,10 +35,12 @@ struct SearchRequest {
   /// Asked by every problem built from the request (OptimizeOptions::interrupt).
   Interrupt interrupt;
 
-  /// The same request with another stability requirement (the exact optima: inf, or 1).
-  SearchRequest WithRhoMax(double other) const {
+  /// The same request for an exact optimum: no margins, and the stability requirement
+  /// `rho_max` (inf, or 1).
+  SearchRequest Exact(double rho_max) const {
     SearchRequest r = *this;
-    r.gait.rho_max = other;
+    r.gait.margins = {};
+    r.gait.rho_max = rho_max;
     return r;
   }
 };

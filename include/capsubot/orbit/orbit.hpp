@@ -54,7 +54,7 @@ struct Orbit {
   double v(double phi) const;    ///< capsule velocity
 };
 
-/// Builds the orbit for this force and T0, e (params.margin is not used here).
+/// Builds the orbit for this force and T0, e.
 /// Throws std::invalid_argument for invalid params; never for a force without orbit.
 Orbit ComputeOrbit(const Forcing& forcing, const Params& params);
 

@@ -20,12 +20,14 @@ inline constexpr std::int64_t kRobotOrbitsMaxEvaluations = 4000000;
 
 /// Every one-impact orbit of a robot with fixed mass ratio alpha = robot.alpha: all roots phi0 in
 /// [-pi, pi) of alpha(phi0) = alpha (docs/model.md section 8), each solved and checked (the phi0
-/// of robot.forcing is ignored). If the work bound max_evaluations (>= 1) stops the search before
+/// of robot.forcing is ignored), validity with the `margins` (docs/model.md section 12; none:
+/// the physical validity). If the work bound max_evaluations (>= 1) stops the search before
 /// every part of the circle is decided, the list may miss orbits: *complete (if given) is set to
-/// false then, true otherwise. Throws std::invalid_argument for bad params, alpha or
+/// false then, true otherwise. Throws std::invalid_argument for bad params, margins, alpha or
 /// max_evaluations. `poll` (optional) is called every kRobotOrbitsPollEvaluations evaluations: what
 /// it throws stops the search and is rethrown (a caller's cancellation).
-std::vector<Solution> FindRobotOrbits(const RobotModel& robot, bool* complete = nullptr,
+std::vector<Solution> FindRobotOrbits(const RobotModel& robot, const Margins& margins = {},
+                                      bool* complete = nullptr,
                                       std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations,
                                       const std::function<void()>& poll = {});
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/orbit.hpp"
 
@@ -59,10 +60,10 @@ inline bool WithinForceBound(double force, double bound) {
   return force <= bound * (1.0 + kForceBoundRelTol);
 }
 
-/// Checks every condition of docs/model.md section 5, with the margins of `params` (section
-/// 12): the clearance max(d, d_s * stroke) from both walls and |F| <= (1 - s) T0 at rest.
-/// params must be valid and be those of the orbit.
-Validity CheckValidity(const Orbit& orbit, const Params& params);
+/// Checks every condition of docs/model.md section 5, with the `margins` (section 12): the
+/// clearance max(d, d_s * stroke) from both walls and |F| <= (1 - s) T0 at rest. The margins
+/// must be valid; none (the default): the orbit's physical validity alone.
+Validity CheckValidity(const Orbit& orbit, const Margins& margins = {});
 
 /// An orbit together with its validity: what `capsubot solve` computes.
 struct Solution {
@@ -70,7 +71,8 @@ struct Solution {
   Validity validity;
 };
 
-/// ComputeOrbit + CheckValidity (params validated; throws std::invalid_argument if bad).
-Solution Solve(const Forcing& forcing, const Params& params);
+/// ComputeOrbit + CheckValidity (params, then margins validated; throws std::invalid_argument
+/// if bad).
+Solution Solve(const Forcing& forcing, const Params& params, const Margins& margins = {});
 
 }  // namespace capsubot

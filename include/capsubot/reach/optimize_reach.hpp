@@ -38,9 +38,8 @@ std::vector<std::string> ReachLocalAlgorithmNames();
 /// The from-rest settings used inside the search by default: 4 x 4 starts, 100 + 32 periods.
 FromRestOptions CheapFromRestOptions();
 
-/// The default seed design: P2 restricted to gaits with spectral radius <= kRobustRhoMax (the
-/// clearance and stick margins of the robust gait are ReachOptions::seed_margin_stroke and
-/// seed_stick_margin).
+/// The default seed design: P2 restricted to the robust gait (docs/model.md section 12): the
+/// margins RobustMargins() and spectral radius <= kRobustRhoMax.
 ForcingDesignOptions RobustSeedDesign();
 
 /// A drive that starts a search: a force of the family (e.g. the winner of a smaller family)
@@ -128,13 +127,9 @@ struct ReachOptions {
   /// From-rest settings of the re-check, the reported attractors and the spread (full).
   FromRestOptions check;
   /// The seed: the robust gait of P2 (docs/model.md section 12), the same as the main job of
-  /// `capsubot optimize`: spectral radius <= kRobustRhoMax here, force bound from force_bound.
+  /// `capsubot optimize`: its margins and spectral radius <= kRobustRhoMax here, force bound
+  /// from force_bound.
   ForcingDesignOptions seed_design = RobustSeedDesign();
-  /// The seed's clearance d_s in units of the stroke (Params::margin_stroke for its P2; the
-  /// other parameters are the robot's); 0 <= seed_margin_stroke < 0.5.
-  double seed_margin_stroke = kRobustMarginStroke;
-  /// The seed's stick margin s (Params::stick_margin for its P2); 0 <= seed_stick_margin < 1.
-  double seed_stick_margin = kRobustStickMargin;
 
   // Defined out of line: GCC 12 misreads the value-initialised temporaries of this aggregate
   // (its interrupts "may be used uninitialized").

@@ -11,8 +11,10 @@
 
 namespace capsubot::text {
 
-/// A readable multi-line summary of a solved orbit.
-std::string SolutionTable(const Solution& solution, const Params& params);
+/// A readable multi-line summary of a solved orbit, with the margins its validity was checked
+/// with.
+std::string SolutionTable(const Solution& solution, const Params& params,
+                          const Margins& margins = {});
 
 /// Readable lines on the energy budget per period.
 std::string EnergyTable(const Energy& energy);

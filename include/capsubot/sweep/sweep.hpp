@@ -81,8 +81,11 @@ struct SweepOptions : GridFileOptions {
   /// family; a grid over a_k or b_k beyond its K adds harmonics (the others 0). Its phi0 is
   /// ignored with an optimisation or an alpha grid; the whole force with P2, P3 and reach.
   Forcing forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
-  /// T0, e and the margins at every point, except the gridded ones.
+  /// T0 and e at every point, except the gridded ones.
   Params params;
+  /// The margins of the orbits without optimisation (kNone), except the gridded ones; an
+  /// optimisation's are those of its options' gait (SweepMargins).
+  Margins margins;
   /// Add the stability columns (docs/model.md section 8).
   bool stability = false;
   /// What to compute at each point.
@@ -95,8 +98,8 @@ struct SweepOptions : GridFileOptions {
   /// Options of P3 (OptimizeFourier); a grid over bound or rho_max sets those of its `harmonic`.
   FourierOptions fourier;
   /// Options of the reach search (OptimizeReach). Its force bound is design.force_bound and its
-  /// seed is OptimizeForcing(params, design) at the point (its seed_design and seed margins
-  /// are not used); max_seconds must be infinite (SweepReachOptions): the evaluation budgets
+  /// seed is OptimizeForcing(params, design) at the point (its seed_design is
+  /// not used); max_seconds must be infinite (SweepReachOptions): the evaluation budgets
   /// bound each point, so that the rows do not depend on the machine's speed. Each point runs
   /// on one thread.
   ReachOptions reach = SweepReachOptions();
@@ -108,6 +111,11 @@ struct SweepOptions : GridFileOptions {
   /// bound grid against T0), so that no point fails part-way.
   void Validate() const;
 };
+
+/// The margins of the orbits of the sweep's mode: `margins` without optimisation, else those of
+/// the optimiser's gait (phase.gait, design.gait for P2 and the reach search's seed,
+/// fourier.harmonic.gait).
+const Margins& SweepMargins(const SweepOptions& options);
 
 /// How far a sweep is, reported after each block written.
 struct SweepProgress {
