@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "capsubot/io/io.hpp"
+#include "test_utils.hpp"
 
 namespace capsubot {
 namespace {
@@ -86,14 +87,9 @@ TEST(SweepSettings, TheReachSearchKeepsTheRobustGaitsDefaultsAndSaysSo) {
   EXPECT_TRUE(SweepModeDefaults(SettingsOf("forcing")).empty());
 }
 
-// `settings`' refusal in `names`.
+// `settings`' refusal in `names` ("" when accepted).
 std::string Refusal(const SweepSettings& settings, const SettingNames& names) {
-  try {
-    SweepJobFrom(settings, names);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return testing::InvalidArgumentMessage([&] { SweepJobFrom(settings, names); });
 }
 
 TEST(SweepSettings, TheRulesNameTheSettingsInTheFrontEndsNames) {
