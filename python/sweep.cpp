@@ -5,239 +5,47 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/job/sweep_settings.hpp"
 #include "capsubot/model/limits.hpp"
+#include "sweep_keywords.hpp"
 
 namespace capsubot::python {
 namespace {
 
-// The arguments a mode may read; None (or False): not given, the mode's default.
-struct SweepArgs {
-  std::optional<double> A, c, phi0;
-  std::optional<std::vector<double>> cos, sin;
-  std::optional<double> T0, e, margin, margin_stroke, stick_margin;
-  bool stability = false;
-  std::optional<double> rho_max;
-  bool stable_only = false;
-  std::optional<int> scan_points;
-  std::optional<double> bound;
-  std::optional<int> harmonics, starts, hops;
-  std::optional<std::string> global_algorithm, local_algorithm;
-  std::optional<int> global_evaluations;
-  std::optional<double> alpha;
-  std::optional<std::string> from_rest_starts, reach_starts;
-  std::optional<int> reach_evaluations, reach_local_evaluations;
-};
-
-// Puts what a mode reads into its options (an argument given replaces the mode's default) and
-// notes the names it reads: an argument given that the mode does not read is refused.
-class ArgReader {
- public:
-  template <class T, class V>
-  void Take(const char* name, T& field, const std::optional<V>& value) {
-    read_.emplace_back(name);
-    if (value) field = *value;
-  }
-  void Take(const char* name, bool& field, bool value) {
-    read_.emplace_back(name);
-    field = field || value;
-  }
-  bool Reads(const std::string& name) const {
-    return std::find(read_.begin(), read_.end(), name) != read_.end();
-  }
-
- private:
-  std::vector<std::string> read_;
-};
-
-void ReadParams(ArgReader& r, const SweepArgs& a, Params& p, Margins& m) {
-  r.Take("T0", p.T0, a.T0);
-  r.Take("e", p.e, a.e);
-  r.Take("margin", m.clearance, a.margin);
-  r.Take("margin_stroke", m.clearance_stroke, a.margin_stroke);
-  r.Take("stick_margin", m.stick, a.stick_margin);
-}
-
-void ReadForce(ArgReader& r, const SweepArgs& a, SweepForce& f) {
-  r.Take("A", f.A, a.A);
-  r.Take("c", f.c, a.c);
-  r.Take("sin", f.sin, a.sin);
-  r.Take("cos", f.cos, a.cos);
-}
-
-void ReadRhoMax(ArgReader& r, const SweepArgs& a, double& rho_max) {
-  r.Take("stable_only", rho_max, a.stable_only ? std::optional<double>(1.0) : std::nullopt);
-  r.Take("rho_max", rho_max, a.rho_max);
-}
-
-void ReadSearch(ArgReader& r, const SweepArgs& a, SearchRequest& s) {
-  ReadRhoMax(r, a, s.gait.rho_max);
-  r.Take("bound", s.gait.force_bound, a.bound);
-  r.Take("starts", s.starts, a.starts);
-  r.Take("global_algorithm", s.global_algorithm, a.global_algorithm);
-  r.Take("local_algorithm", s.local_algorithm, a.local_algorithm);
-  r.Take("global_evaluations", s.global_evaluations, a.global_evaluations);
-}
-
-void ReadMode(ArgReader& r, const SweepArgs& a, SweepOrbitMode& m) {
-  ReadParams(r, a, m.params, m.margins);
-  ReadForce(r, a, m.force);
-  r.Take("phi0", m.phi0, a.phi0);
-  r.Take("stability", m.stability, a.stability);
-}
-
-void ReadMode(ArgReader& r, const SweepArgs& a, SweepPhaseMode& m) {
-  ReadParams(r, a, m.params, m.phase.gait.margins);
-  ReadForce(r, a, m.force);
-  r.Take("stability", m.stability, a.stability);
-  ReadRhoMax(r, a, m.phase.gait.rho_max);
-  r.Take("scan_points", m.phase.scan_points, a.scan_points);
-}
-
-void ReadMode(ArgReader& r, const SweepArgs& a, SweepForcingMode& m) {
-  ReadParams(r, a, m.params, m.search.gait.margins);
-  r.Take("stability", m.stability, a.stability);
-  ReadSearch(r, a, m.search);
-  r.Take("hops", m.search.hops, a.hops);
-}
-
-void ReadMode(ArgReader& r, const SweepArgs& a, SweepFourierMode& m) {
-  ReadParams(r, a, m.params, m.search.gait.margins);
-  r.Take("stability", m.stability, a.stability);
-  ReadSearch(r, a, m.search);
-  r.Take("harmonics", m.search.harmonics, a.harmonics);
-}
-
-void ReadMode(ArgReader& r, const SweepArgs& a, SweepReachMode& m) {
-  ReadParams(r, a, m.params, m.search.gait.margins);
-  ReadSearch(r, a, m.search);
-  r.Take("hops", m.search.hops, a.hops);
-  r.Take("alpha", m.reach.alpha, a.alpha);
-  std::optional<StartGrid> check, search;
-  if (a.from_rest_starts) check = ParseStartGrid("from_rest_starts", *a.from_rest_starts);
-  if (a.reach_starts) search = ParseStartGrid("reach_starts", *a.reach_starts);
-  r.Take("from_rest_starts", m.reach.check.n_x, check ? std::optional(check->n_x) : std::nullopt);
-  r.Take("from_rest_starts", m.reach.check.n_psi,
-         check ? std::optional(check->n_psi) : std::nullopt);
-  r.Take("reach_starts", m.reach.search.n_x, search ? std::optional(search->n_x) : std::nullopt);
-  r.Take("reach_starts", m.reach.search.n_psi,
-         search ? std::optional(search->n_psi) : std::nullopt);
-  r.Take("reach_evaluations", m.reach.global_evaluations, a.reach_evaluations);
-  r.Take("reach_local_evaluations", m.reach.local_evaluations, a.reach_local_evaluations);
-}
-
-std::string ModeText(const std::string& name) {
-  return name.empty() ? "no optimize" : "optimize " + name;
-}
-
-// Refuses an argument given that the mode `name` does not read (it would be silently
-// ignored), naming the modes that read it, as the command line refuses such an option.
-void RejectUnread(const std::vector<std::string>& given, const std::string& name,
-                  const ArgReader& reader) {
-  std::vector<std::string> modes = {""};
-  for (SweepOptimize mode : SweepOptimizeModes()) modes.emplace_back(SweepOptimizeName(mode));
-  for (const std::string& arg : given) {
-    if (reader.Reads(arg)) continue;
-    std::string readers;
-    for (const std::string& other : modes) {
-      SweepMode mode = SweepModeNamed(other);
-      ArgReader r;
-      std::visit([&](auto& m) { ReadMode(r, SweepArgs{}, m); }, mode);
-      if (r.Reads(arg)) readers += (readers.empty() ? "" : ", ") + ModeText(other);
-    }
-    throw std::invalid_argument(fmt::format(
-        "{} is invalid {}: expected it only with {}", arg,
-        name.empty() ? std::string("without optimize") : "with optimize " + name, readers));
-  }
-}
-
-// An argument that gives a value the grid also gives.
-void RejectGridConflicts(const Grid& grid, const py::dict& arguments) {
-  for (const GridAxis& axis : grid.axes) {
-    const py::str name(axis.name());
-    if (arguments.contains(name) && !arguments[name].is_none()) {
-      throw std::invalid_argument(
-          fmt::format("{} = {} is invalid with grid {}: expected the value from only one of them",
-                      axis.name(), FormatNumber(arguments[name].cast<double>()), axis.ToString()));
-    }
-    if (axis.parameter == ModelParameter::kRhoMax && arguments["stable_only"].cast<bool>()) {
-      throw std::invalid_argument(fmt::format(
-          "stable_only (rho_max = 1) is invalid with grid {}: expected the value from only one "
-          "of them",
-          axis.ToString()));
-    }
-  }
-}
-
-// The job's options named as the module's arguments, where the command line names its options
-// (the job names its reach budgets by their place in the options): "field = value".
-std::string WithArgumentNames(std::string message) {
-  const std::pair<std::string, std::string> names[] = {
-      {"reach.global_evaluations = ", "reach_evaluations = "},
-      {"reach.local_evaluations = ", "reach_local_evaluations = "}};
-  for (const auto& [field, argument] : names) {
-    for (std::size_t at = message.find(field); at != std::string::npos;
-         at = message.find(field, at + argument.size())) {
-      message.replace(at, field.size(), argument);
-    }
-  }
-  return message;
-}
-
-SweepJobOptions JobOptions(const std::vector<std::string>& grid, const std::string& optimize,
-                           const SweepArgs& args, const py::dict& arguments, int threads) {
-  SweepJobOptions job;
-  for (const std::string& spec : grid) job.grid.axes.push_back(ParseGridAxis(spec));
-  job.mode = SweepModeNamed(optimize);
-  if (args.stable_only && args.rho_max) {
-    throw std::invalid_argument(fmt::format(
-        "stable_only conflicts with rho_max = {}: stable_only=True means rho_max = 1; give one "
-        "of them",
-        *args.rho_max));
-  }
-  RejectGridConflicts(job.grid, arguments);
-  ArgReader reader;
-  std::visit([&](auto& m) { ReadMode(reader, args, m); }, job.mode);
-  std::vector<std::string> given;
-  for (const auto& [key, value] : arguments) {
-    const bool flag = py::isinstance<py::bool_>(value);
-    if (flag ? value.cast<bool>() : !value.is_none()) given.push_back(key.cast<std::string>());
-  }
-  RejectUnread(given, optimize, reader);
-  if (args.global_evaluations && args.global_algorithm.value_or(kMultistart) == kMultistart) {
-    throw std::invalid_argument(
-        "global_evaluations is invalid with global_algorithm multistart: expected an NLopt "
-        "global algorithm with it (multistart has no evaluation budget)");
-  }
-  job.file.threads = CapThreads(threads);
-  return job;
-}
-
-py::dict SweepDict(const std::vector<std::string>& grid, std::optional<std::string> optimize,
-                   const SweepArgs& args, const py::dict& arguments, int threads) {
+// The job of the settings `s` and the grid's axes `grid`, run; ValueError in the module's names.
+py::dict SweepDict(SweepSettings& s, const std::vector<std::string>& grid,
+                   const py::dict& arguments) {
   const py::dict provenance = JobProvenance("sweep", arguments);
   const OutputFolder folder;
   try {
-    SweepJobOptions job = JobOptions(grid, optimize.value_or(""), args, arguments, threads);
-    job.file.output = folder.File("sweep.csv");
+    for (const std::string& spec : grid) s.grid.axes.push_back(ParseGridAxis(spec));
+    s.file.output = folder.File("sweep.csv");
+    const SweepJobOptions job =
+        SweepJobFrom(s, SettingNames{kSweepKeywords, SettingNames::Style::kKeywords});
     RunWithoutGil([&](SignalCheck&) { return RunSweepJob(job); });
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(WithArgumentNames(e.what()));
+    throw std::invalid_argument(WithFlagNames(e.what(), kSweepKeywords));
   }
   py::dict d;
   d["columns"] = CsvColumns(folder.File("sweep.csv"));
   d["provenance"] = provenance;
   return d;
+}
+
+// A flag argument: given when true.
+void TakeFlag(std::set<std::string>& given, const char* name, bool value, bool& field) {
+  if (!value) return;
+  field = true;
+  given.insert(name);
 }
 
 constexpr const char* kSweepDoc =
@@ -289,32 +97,41 @@ py::dict Sweep(const std::vector<std::string>& grid, std::optional<std::string> 
                std::optional<double> alpha, std::optional<std::string> from_rest_starts,
                std::optional<std::string> reach_starts, std::optional<int> reach_evaluations,
                std::optional<int> reach_local_evaluations, int threads) {
-  const SweepArgs args{A,
-                       c,
-                       phi0,
-                       cos,
-                       sin,
-                       T0,
-                       e,
-                       margin,
-                       margin_stroke,
-                       stick_margin,
-                       stability,
-                       rho_max,
-                       stable_only,
-                       scan_points,
-                       bound,
-                       harmonics,
-                       starts,
-                       hops,
-                       global_algorithm,
-                       local_algorithm,
-                       global_evaluations,
-                       alpha,
-                       from_rest_starts,
-                       reach_starts,
-                       reach_evaluations,
-                       reach_local_evaluations};
+  if (stable_only && rho_max) {
+    throw std::invalid_argument(fmt::format(
+        "stable_only conflicts with rho_max = {}: stable_only=True means rho_max = 1; give one "
+        "of them",
+        *rho_max));
+  }
+  SweepSettings s;  // the arguments given (None, or False: not given)
+  s.optimize = optimize.value_or("");
+  TakeGiven(s.given, "A", A, s.A);
+  TakeGiven(s.given, "c", c, s.c);
+  TakeGiven(s.given, "phi0", phi0, s.phi0);
+  TakeGiven(s.given, "sin", sin, s.sin);
+  TakeGiven(s.given, "cos", cos, s.cos);
+  TakeGiven(s.given, "T0", T0, s.params.T0);
+  TakeGiven(s.given, "e", e, s.params.e);
+  TakeGiven(s.given, "margin", margin, s.margins.clearance);
+  TakeGiven(s.given, "margin_stroke", margin_stroke, s.margins.clearance_stroke);
+  TakeGiven(s.given, "stick_margin", stick_margin, s.margins.stick);
+  TakeFlag(s.given, "stability", stability, s.stability);
+  TakeGiven(s.given, "rho_max", rho_max, s.search.gait.rho_max);
+  TakeFlag(s.given, "stable_only", stable_only, s.stable_only);
+  TakeGiven(s.given, "scan_points", scan_points, s.scan_points);
+  TakeGiven(s.given, "bound", bound, s.search.gait.force_bound);
+  TakeGiven(s.given, "harmonics", harmonics, s.search.harmonics);
+  TakeGiven(s.given, "starts", starts, s.search.starts);
+  TakeGiven(s.given, "hops", hops, s.search.hops);
+  TakeGiven(s.given, "global_algorithm", global_algorithm, s.search.global_algorithm);
+  TakeGiven(s.given, "local_algorithm", local_algorithm, s.search.local_algorithm);
+  TakeGiven(s.given, "global_evaluations", global_evaluations, s.search.global_evaluations);
+  TakeGiven(s.given, "alpha", alpha, s.alpha);
+  TakeGiven(s.given, "from_rest_starts", from_rest_starts, s.from_rest_starts);
+  TakeGiven(s.given, "reach_starts", reach_starts, s.reach_starts);
+  TakeGiven(s.given, "reach_evaluations", reach_evaluations, s.reach_evaluations);
+  TakeGiven(s.given, "reach_local_evaluations", reach_local_evaluations, s.reach_local_evaluations);
+  s.file.threads = CapThreads(threads);
   const py::dict arguments(
       py::arg("A") = A, py::arg("c") = c, py::arg("phi0") = phi0, py::arg("cos") = cos,
       py::arg("sin") = sin, py::arg("T0") = T0, py::arg("e") = e, py::arg("margin") = margin,
@@ -328,7 +145,7 @@ py::dict Sweep(const std::vector<std::string>& grid, std::optional<std::string> 
       py::arg("from_rest_starts") = from_rest_starts, py::arg("reach_starts") = reach_starts,
       py::arg("reach_evaluations") = reach_evaluations,
       py::arg("reach_local_evaluations") = reach_local_evaluations);
-  py::dict d = SweepDict(grid, optimize, args, arguments, threads);
+  py::dict d = SweepDict(s, grid, arguments);
   py::dict options = d["provenance"]["options"];
   options["grid"] = grid;
   options["optimize"] = optimize;

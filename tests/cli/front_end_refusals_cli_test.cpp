@@ -1,10 +1,11 @@
 // The two front ends refuse the same settings with the same message, each in its own names.
 // The cases are generated from the library's tables of which mode of a job uses which setting
-// (OptimizeSettingUses, DesignSettingUses): every setting given to every mode that does not use
-// it, plus for optimize the rules beyond the table (settings that do not go together, given
-// values that are not admissible). For each case the library's own refusal is computed here
-// with the command line's flags and with the Python module's keywords; the program must print
-// the first on stderr (exit status 2) and the module must raise ValueError with the second.
+// (OptimizeSettingUses, DesignSettingUses, SweepSettingUses): every setting given to every mode
+// that does not use it, plus for optimize and sweep the rules beyond the table (settings that do
+// not go together, given values that are not admissible). For each case the library's own refusal
+// is computed here with the command line's flags and with the Python module's keywords; the program
+// must print the first on stderr (exit status 2) and the module must raise ValueError with the
+// second.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -21,23 +22,28 @@
 
 #include "apps/design_flags.hpp"
 #include "apps/optimize_flags.hpp"
+#include "apps/sweep_flags.hpp"
 #include "capsubot/job/design_settings.hpp"
 #include "capsubot/job/optimize_settings.hpp"
+#include "capsubot/job/sweep_settings.hpp"
 #include "python/design_keywords.hpp"
 #include "python/optimize_keywords.hpp"
+#include "python/sweep_keywords.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
 namespace {
 
-// A setting given with a sample value: as typed on the command line, as a Python literal, and
-// as it lands in the settings.
-struct Given {
+// A setting given with a sample value: as typed on the command line (empty for a flag), as a
+// Python literal, and as it lands in the job's settings.
+template <class Settings>
+struct GivenOf {
   std::string field;
   std::string flag_value;
   std::string keyword_value;
-  std::function<void(OptimizeSettings&)> set;
+  std::function<void(Settings&)> set;
 };
+using Given = GivenOf<OptimizeSettings>;
 
 // A sample value of every setting of the table (and of the settings of the rules beyond it).
 // A setting added to the table without a sample here fails the test (SampleOf).
@@ -84,11 +90,16 @@ const std::map<std::string, Given>& Samples() {
   return samples;
 }
 
-Given SampleOf(const std::string& field) {
-  const auto it = Samples().find(field);
-  if (it == Samples().end()) throw std::logic_error("no sample value of the setting " + field);
+// The sample of `field` in `samples`.
+template <class Settings>
+GivenOf<Settings> SampleIn(const std::map<std::string, GivenOf<Settings>>& samples,
+                           const std::string& field) {
+  const auto it = samples.find(field);
+  if (it == samples.end()) throw std::logic_error("no sample value of the setting " + field);
   return it->second;
 }
+
+Given SampleOf(const std::string& field) { return SampleIn(Samples(), field); }
 
 // `field` given the number `value` (a bad value of a setting).
 Given With(const std::string& field, const std::string& value,
@@ -326,6 +337,221 @@ TEST(DesignRefusals, BothFrontEndsRefuseASettingTheRunDoesNotUseInTheirOwnNames)
       EXPECT_EQ(python[k], "TypeError") << calls[k];
     } else {
       EXPECT_EQ(python[k], refusal(python::kDesignKeywords, python::DesignRunKeywords)) << calls[k];
+    }
+  }
+}
+
+// The sweep job: every setting given to every mode that does not read it, and the rules beyond
+// the table (a value given both as a setting and by the grid, no evaluation budget under the
+// multistart stage, no pulse force, a bad grid of starts, an unknown mode, the reach search's
+// budgets). Each case sweeps a one-point grid over e unless it says otherwise.
+using SweepGiven = GivenOf<SweepSettings>;
+
+// A sample value of every setting of the sweep's table and of the model's parameters (which a
+// grid may give too); a flag has no value on the command line.
+const std::map<std::string, SweepGiven>& SweepSamples() {
+  static const std::map<std::string, SweepGiven> samples = [] {
+    std::map<std::string, SweepGiven> m;
+    const auto add = [&m](SweepGiven g) { m[g.field] = std::move(g); };
+    add({"A", "0.3", "0.3", [](SweepSettings& s) { s.A = 0.3; }});
+    add({"c", "0.1", "0.1", [](SweepSettings& s) { s.c = 0.1; }});
+    add({"phi0", "0.5", "0.5", [](SweepSettings& s) { s.phi0 = 0.5; }});
+    add({"sin", "0.2", "[0.2]", [](SweepSettings& s) { s.sin = {0.2}; }});
+    add({"cos", "0.1", "[0.1]", [](SweepSettings& s) { s.cos = {0.1}; }});
+    add({"waveform", "sine", "'sine'", [](SweepSettings& s) { s.waveform = "sine"; }});
+    add({"levels", "1,2", "[1.0, 2.0]", [](SweepSettings&) {}});
+    add({"switches", "0,1", "[0.0, 1.0]", [](SweepSettings&) {}});
+    add({"T0", "0.2", "0.2", [](SweepSettings& s) { s.params.T0 = 0.2; }});
+    add({"e", "0.5", "0.5", [](SweepSettings& s) { s.params.e = 0.5; }});
+    add({"margin", "0.1", "0.1", [](SweepSettings& s) { s.margins.clearance = 0.1; }});
+    add({"margin_stroke", "0.1", "0.1",
+         [](SweepSettings& s) { s.margins.clearance_stroke = 0.1; }});
+    add({"stick_margin", "0.1", "0.1", [](SweepSettings& s) { s.margins.stick = 0.1; }});
+    add({"stability", "", "True", [](SweepSettings& s) { s.stability = true; }});
+    add({"rho_max", "0.9", "0.9", [](SweepSettings& s) { s.search.gait.rho_max = 0.9; }});
+    add({"stable_only", "", "True", [](SweepSettings& s) { s.stable_only = true; }});
+    add({"scan_points", "50", "50", [](SweepSettings& s) { s.scan_points = 50; }});
+    add({"bound", "0.5", "0.5", [](SweepSettings& s) { s.search.gait.force_bound = 0.5; }});
+    add({"harmonics", "2", "2", [](SweepSettings& s) { s.search.harmonics = 2; }});
+    add({"starts", "5", "5", [](SweepSettings& s) { s.search.starts = 5; }});
+    add({"hops", "3", "3", [](SweepSettings& s) { s.search.hops = 3; }});
+    add({"global_algorithm", "GN_ISRES", "'GN_ISRES'",
+         [](SweepSettings& s) { s.search.global_algorithm = "GN_ISRES"; }});
+    add({"local_algorithm", "LD_MMA", "'LD_MMA'",
+         [](SweepSettings& s) { s.search.local_algorithm = "LD_MMA"; }});
+    add({"global_evaluations", "500", "500",
+         [](SweepSettings& s) { s.search.global_evaluations = 500; }});
+    add({"alpha", "0.5", "0.5", [](SweepSettings& s) { s.alpha = 0.5; }});
+    add({"from_rest_starts", "2x2", "'2x2'", [](SweepSettings& s) { s.from_rest_starts = "2x2"; }});
+    add({"reach_starts", "2x2", "'2x2'", [](SweepSettings& s) { s.reach_starts = "2x2"; }});
+    add({"reach_evaluations", "10", "10", [](SweepSettings& s) { s.reach_evaluations = 10; }});
+    add({"reach_local_evaluations", "5", "5",
+         [](SweepSettings& s) { s.reach_local_evaluations = 5; }});
+    return m;
+  }();
+  return samples;
+}
+
+SweepGiven SweepSampleOf(const std::string& field) { return SampleIn(SweepSamples(), field); }
+
+// The settings of the command line's force that the Python module's sweep() does not have: it
+// refuses them as unknown arguments (TypeError).
+const std::set<std::string> kSweepCommandLineOnly = {"waveform", "levels", "switches"};
+
+// The options the command line declares with `needs(--optimize)`: without --optimize its parser
+// refuses them before the library sees them.
+const std::set<std::string> kNeedsOptimize = {"rho_max", "stable_only", "scan_points"};
+
+struct SweepCase {
+  std::string mode;  // "" the orbit of the force
+  std::vector<std::string> grid;
+  std::vector<SweepGiven> given;
+};
+
+const std::vector<std::string> kSweepModes = {"", "phi0", "forcing", "fourier", "reach"};
+
+// Every setting of the table given to every mode that does not read it. --cos needs --sin on
+// the command line: its cases give both, and sin, before cos in the table, is the one refused.
+std::vector<SweepCase> SweepTableCases() {
+  std::vector<SweepCase> cases;
+  for (const SettingUse& use : SweepSettingUses()) {
+    for (const std::string& mode : kSweepModes) {
+      if (use.UsedBy(mode)) continue;
+      SweepCase c{mode, {"e=0.5"}, {}};
+      if (use.setting == "cos") c.given.push_back(SweepSampleOf("sin"));
+      c.given.push_back(SweepSampleOf(use.setting));
+      cases.push_back(c);
+    }
+  }
+  return cases;
+}
+
+// The first mode that reads `field` ("" for a setting every mode reads).
+std::string ModeReading(const std::string& field) {
+  for (const SettingUse& use : SweepSettingUses()) {
+    if (use.setting == field) return use.modes.front();
+  }
+  return "";
+}
+
+std::vector<SweepCase> SweepRuleCases() {
+  std::vector<SweepCase> cases;
+  // Every setting a grid can give, given to a mode that reads it, with a grid over it.
+  for (const char* field : {"A", "c", "phi0", "T0", "e", "margin", "margin_stroke", "stick_margin",
+                            "alpha", "rho_max", "bound"}) {
+    cases.push_back(
+        {ModeReading(field), {std::string(field) + "=0.2,0.3"}, {SweepSampleOf(field)}});
+  }
+  cases.push_back({"forcing", {"rho_max=0.2,0.3"}, {SweepSampleOf("stable_only")}});
+  cases.push_back({"forcing", {"e=0.5"}, {SweepSampleOf("global_evaluations")}});
+  cases.push_back({"reach",
+                   {"e=0.5"},
+                   {SweepGiven{"global_algorithm", "multistart", "'multistart'",
+                               [](SweepSettings& s) { s.search.global_algorithm = "multistart"; }},
+                    SweepSampleOf("global_evaluations")}});
+  cases.push_back({"", {"e=0.5"}, {SweepSampleOf("levels")}});
+  cases.push_back({"phi0", {"e=0.5"}, {SweepSampleOf("switches")}});
+  cases.push_back({"", {"e=0.5"}, {{"waveform", "pulse", "'pulse'", [](SweepSettings& s) {
+                                      s.waveform = "pulse";
+                                    }}}});
+  cases.push_back({"reach", {"e=0.5"}, {{"from_rest_starts", "0x3", "'0x3'", [](SweepSettings& s) {
+                                           s.from_rest_starts = "0x3";
+                                         }}}});
+  cases.push_back({"reach", {"e=0.5"}, {{"reach_starts", "2y2", "'2y2'", [](SweepSettings& s) {
+                                           s.reach_starts = "2y2";
+                                         }}}});
+  cases.push_back({"reach", {"e=0.5"}, {{"reach_evaluations", "0", "0", [](SweepSettings& s) {
+                                           s.reach_evaluations = 0;
+                                         }}}});
+  cases.push_back({"best", {"e=0.5"}, {}});
+  return cases;
+}
+
+// The library's refusal of `c` in `names`, its lower stages' fields renamed by `renamed`;
+// empty when it accepts the case.
+std::string SweepLibraryMessage(const SweepCase& c, const SettingNames& names,
+                                const FlagNames& renamed) {
+  SweepSettings s;
+  s.optimize = c.mode;
+  for (const std::string& spec : c.grid) s.grid.axes.push_back(ParseGridAxis(spec));
+  for (const SweepGiven& g : c.given) {
+    g.set(s);
+    s.given.insert(g.field);
+  }
+  s.file.output = "-";
+  try {
+    SweepJobFrom(s, names);
+  } catch (const std::invalid_argument& e) {
+    return WithFlagNames(e.what(), renamed);
+  }
+  return "";
+}
+
+std::string SweepCommandLine(const SweepCase& c) {
+  std::string args = "sweep -o -";
+  for (const std::string& spec : c.grid) args += " --grid " + spec;
+  if (!c.mode.empty()) args += " --optimize " + c.mode;
+  for (const SweepGiven& g : c.given) {
+    args += " " + SettingNames{app::kSweepFlags}.Name(g.field);
+    if (!g.flag_value.empty()) args += " " + g.flag_value;
+  }
+  return args;
+}
+
+std::string SweepPythonCall(const SweepCase& c) {
+  std::string call = "run(grid=[";
+  for (const std::string& spec : c.grid) call += "'" + spec + "', ";
+  call += "], ";
+  if (!c.mode.empty()) call += "optimize='" + c.mode + "', ";
+  for (const SweepGiven& g : c.given) {
+    call += SettingNames{python::kSweepKeywords}.Name(g.field) + "=" + g.keyword_value + ", ";
+  }
+  return call + ")\n";
+}
+
+bool CommandLineOnly(const SweepCase& c) {
+  for (const SweepGiven& g : c.given) {
+    if (kSweepCommandLineOnly.count(g.field) > 0) return true;
+  }
+  return false;
+}
+
+TEST(SweepRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) {
+  std::vector<SweepCase> cases = SweepTableCases();
+  // Every setting of the table is left out by at least one mode (none is read by all five).
+  ASSERT_GE(cases.size(), SweepSettingUses().size());
+  for (const SweepCase& c : SweepRuleCases()) cases.push_back(c);
+
+  const SettingNames flags{app::kSweepFlags};
+  const SettingNames keywords{python::kSweepKeywords, SettingNames::Style::kKeywords};
+  std::vector<std::string> calls;
+  for (const SweepCase& c : cases) calls.push_back(SweepPythonCall(c));
+  const std::vector<std::string> python = PythonMessages(calls, "sweep");
+  ASSERT_EQ(python.size(), cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const SweepCase& c = cases[k];
+    const std::string args = SweepCommandLine(c);
+    const std::string cli_message = SweepLibraryMessage(c, flags, app::kSweepRenamedFields);
+    const std::string python_message = SweepLibraryMessage(c, keywords, keywords.flags);
+    ASSERT_FALSE(cli_message.empty()) << "the library accepts " << args;
+
+    const auto r = testing::RunCli(args + " 2>&1 >/dev/null");
+    EXPECT_EQ(r.status, 2) << args;
+    const std::string& field = c.given.empty() ? std::string() : c.given.back().field;
+    if (c.mode.empty() && kNeedsOptimize.count(field) > 0) {
+      EXPECT_EQ(
+          r.out,
+          fmt::format("capsubot sweep: error: {} requires --optimize (see capsubot sweep --help)\n",
+                      flags.Name(field)))
+          << args;
+    } else {
+      EXPECT_EQ(r.out, "capsubot sweep: error: " + cli_message + "\n") << args;
+    }
+    if (CommandLineOnly(c)) {
+      EXPECT_EQ(python[k], "TypeError") << calls[k];
+    } else {
+      EXPECT_NE(cli_message, python_message) << args;
+      EXPECT_EQ(python[k], python_message) << calls[k];
     }
   }
 }
