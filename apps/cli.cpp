@@ -237,17 +237,6 @@ void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what) 
   }
 }
 
-std::vector<std::string> SplitText(const std::string& text, char separator) {
-  std::vector<std::string> pieces;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = std::min(text.find(separator, start), text.size());
-    pieces.push_back(text.substr(start, end - start));
-    if (end == text.size()) return pieces;
-    start = end + 1;
-  }
-}
-
 bool IsStandardOutput(const std::string& path) {
   if (path == "-") return true;
   struct stat file = {};

@@ -93,10 +93,6 @@ CLI::Option* AddThreadsOption(CLI::App& cmd, int& threads,
 /// standard output writes to (/dev/stdout, or the file it is redirected to).
 bool IsStandardOutput(const std::string& path);
 
-/// The pieces of `text` between the `separator`s, empty ones included: "1,,2" -> {"1", "", "2"},
-/// "" -> {""}.
-std::vector<std::string> SplitText(const std::string& text, char separator);
-
 /// Refuses (std::invalid_argument) `output` of `option` ("-o") on standard output
 /// (IsStandardOutput) together with --json (`json`), which prints its object there too: the
 /// two would be mixed in one stream ("-o - with --json is invalid: ...").

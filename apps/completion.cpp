@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/io/io.hpp"
 #include "capsubot/model/version.hpp"
 #include "cli.hpp"
 #include "commands.hpp"

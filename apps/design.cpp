@@ -50,8 +50,8 @@ struct DesignCliOptions {
   std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
   std::string drive;        // --drive: sine, fourier or pulse (empty: no drive design)
   double force_max = kNaN;  // --force-max [N]
-  int harmonics = 2;        // --harmonics (fourier)
-  int pulse_levels = 3;     // --pulse-levels (pulse)
+  int harmonics = kDesignDriveHarmonics;       // --harmonics (fourier)
+  int pulse_levels = kDesignDrivePulseLevels;  // --pulse-levels (pulse)
 };
 
 // The command line's outputs that only some runs write.
@@ -91,17 +91,13 @@ std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
 void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   const std::string run = RunOf(opt);
-  if (!opt.drive.empty() && (opt.part_b || !opt.grids.empty())) {
-    throw std::invalid_argument(fmt::format(
-        "{} is invalid with --drive: expected one of them (--drive searches the force itself)",
-        opt.part_b ? "--from-rest" : "--grid"));
-  }
+  const SettingNames names{kDesignFlags};
+  if (!opt.drive.empty()) RejectRunsWithDrive(opt.part_b, !opt.grids.empty(), names);
   if (!opt.grids.empty() && opt.part_b) {
     throw std::invalid_argument(
         "--from-rest is invalid with --grid: expected one of them (a grid writes the "
         "one-impact gait of each point to the CSV -o)");
   }
-  const SettingNames names{kDesignFlags};
   const auto run_name = [&names](const std::string& r) { return DesignRunName(r, names); };
   const std::set<std::string> given = GivenSettings(cmd);
   RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
@@ -109,7 +105,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (run == "drive") RejectUnusedDriveSettings(opt.drive, given, names);
 }
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using Settings = DesignSettingTexts;
 
 // `p` (a provenance of `cmd`) with --config FILE and the settings' flags as typed replaced by
 // the value of every setting of the input (`settings`, BuildDesignInput), as flags in their
@@ -233,9 +229,8 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
 DesignDriveMode DriveMode(const DesignCliOptions& opt) {
   DesignDriveMode mode;
   DriveDesignOptions& d = mode.options;
-  if (opt.drive == "fourier") d.drive = DriveFamily::Fourier(opt.harmonics);
-  if (opt.drive == "pulse") d.drive = DriveFamily::Pulse(opt.pulse_levels);
-  if (opt.drive == "sine") d.drive = DriveFamily{};
+  d.drive =
+      DesignDriveFamily(opt.drive, opt.harmonics, opt.pulse_levels, SettingNames{kDesignFlags});
   d.force_max = opt.force_max;
   d.effort = opt.from_rest.Effort();
   d.check = opt.from_rest.Check();
@@ -250,10 +245,7 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   DesignJobOptions options;
   options.input = BuildDesignInput(opt.config, {}, &settings, opt.drive.empty());
   if (!opt.drive.empty()) {
-    if (std::isnan(opt.force_max)) {
-      throw std::invalid_argument(
-          "setting force-max is missing: --drive needs the motor's peak force, give --force-max");
-    }
+    RequireDriveForceMax(opt.force_max);
     options.mode = DriveMode(opt);
     if (ProgressShown()) options.on_stage = [](const std::string& text) { ShowStage(text); };
   } else {

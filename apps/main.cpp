@@ -56,7 +56,7 @@ std::vector<std::string> UnexpectedArguments(const CLI::ParseError& e) {
   const std::size_t colon = text.find(": ");
   std::vector<std::string> words;
   if (colon == std::string::npos) return words;
-  for (const std::string& word : capsubot::app::SplitText(text.substr(colon + 2), ' ')) {
+  for (const std::string& word : capsubot::SplitText(text.substr(colon + 2), ' ')) {
     if (!word.empty()) words.push_back(word);
   }
   return words;

@@ -3,7 +3,7 @@ their types and defaults, and what it returns; help(capsubot.<name>) gives the u
 keys of the results. Installed as the stub-only package capsubot-stubs (PEP 561), which type
 checkers and editors read for the module; the project's tests keep it in step with the module."""
 
-from typing import Any, Sequence
+from typing import Any, Literal, Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -235,23 +235,24 @@ def continue_branch(
 
 def design(
     *,
-    m1: float,
-    L: float,
-    mu: float,
-    g: float = 9.81,
-    e: float,
-    force_amplitude: float | None = None,
-    force_bias: float,
-    force_cos: Sequence[float] | None = None,
-    force_sin: Sequence[float] | None = None,
-    frequency: float | None = None,
-    frequency_range: tuple[float, float] | None = None,
-    m2_range: tuple[float, float] | None = None,
-    margin: float = 0.0,
-    margin_stroke: float = 0.02,
-    stick_margin: float = 0.02,
-    rho_max: float = 0.9,
-    scan_points: int = 64,
+    config: str | None = None,
+    m1: float | str | None = None,
+    L: float | str | None = None,
+    mu: float | str | None = None,
+    g: float | str | None = None,
+    e: float | str | None = None,
+    force_amplitude: float | str | None = None,
+    force_bias: float | str | None = None,
+    force_cos: Sequence[float] | str | None = None,
+    force_sin: Sequence[float] | str | None = None,
+    frequency: float | str | None = None,
+    frequency_range: tuple[float, float] | str | None = None,
+    m2_range: tuple[float, float] | str | None = None,
+    margin: float | str | None = None,
+    margin_stroke: float | str | None = None,
+    stick_margin: float | str | None = None,
+    rho_max: float | str | None = None,
+    scan_points: int | str | None = None,
     from_rest: bool = False,
     from_rest_starts: str | None = None,
     reach_starts: str | None = None,
@@ -260,8 +261,18 @@ def design(
     reach_seconds: float | None = None,
     threads: int | None = None,
     band_levels: list[float] | None = None,
+    drive: Literal["sine", "fourier", "pulse"] | None = None,
+    force_max: float | None = None,
+    harmonics: int | None = None,
+    pulse_levels: int | None = None,
+    drive_evaluations: int | None = None,
+    drive_polishes: int | None = None,
+    drive_local_evaluations: int | None = None,
+    drive_refine_evaluations: int | None = None,
+    drive_screens: int | None = None,
 ) -> dict[str, Any]:
-    """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait."""
+    """A real robot in SI units: the inner mass (and frequency) of its fastest robust gait, or
+    its fastest drive from rest (drive=)."""
 
 def sweep(
     *,

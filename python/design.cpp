@@ -1,9 +1,13 @@
 // design: a real robot in SI units; the inner mass (and motor frequency) of its fastest robust
-// one-impact gait, with speed, power and cost of transport, as `capsubot design --json`.
+// one-impact gait, with speed, power and cost of transport, or its fastest drive from rest, as
+// `capsubot design --json`. The robot's settings are the library's table
+// (capsubot/config/design_config.hpp), read as the command line reads them: a config file, then
+// the keyword arguments.
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -13,6 +17,9 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "capsubot/attract/start_grid.hpp"
+#include "capsubot/config/design_config.hpp"
+#include "capsubot/io/io.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
 #include "capsubot/model/limits.hpp"
@@ -22,27 +29,70 @@
 namespace capsubot::python {
 namespace {
 
-using Range = std::pair<double, double>;
-
-// As the command line's ranges MIN:MAX: a range has MIN < MAX (one frequency is `frequency`).
-void RequireRange(const char* name, const std::optional<Range>& range) {
-  if (range && !(range->first < range->second)) {
-    throw std::invalid_argument(
-        fmt::format("{} = ({}, {}) is invalid: expected (MIN, MAX) with MIN < MAX", name,
-                    range->first, range->second));
+// The keyword of a setting of the robot (or of "config", "drive", "force-max"): its name with
+// _ for -, force-amplitude -> force_amplitude.
+std::string Keyword(std::string name) {
+  for (char& c : name) {
+    if (c == '-') c = '_';
   }
+  return name;
 }
 
-// One of two alternatives must be given, not both (names as the arguments).
-void RequireOne(bool a, bool b, const char* name_a, const char* name_b) {
-  if (a && b) {
-    throw std::invalid_argument(std::string(name_a) + " and " + name_b +
-                                " are exclusive: give one of them");
+// The module's names of the robot's settings in the library's messages.
+DesignConfigNames KeywordNamesOfSettings() { return {Keyword, Keyword, "as keyword arguments"}; }
+
+// The robot's settings, in the table's order: the keyword arguments design() declares.
+constexpr std::size_t kRobotSettingCount = 17;
+
+const std::vector<std::string>& RobotKeywords() {
+  static const std::vector<std::string> keywords = [] {
+    std::vector<std::string> out;
+    for (const DesignRobotSetting& s : DesignRobotSettings()) out.push_back(Keyword(s.name));
+    return out;
+  }();
+  return keywords;
+}
+
+// A number as the text the library reads: shortest round-trip form, "nan" for NaN (which the
+// library refuses, as the command line refuses --m1 nan); anything else as its repr, which the
+// library refuses with its rule.
+std::string NumberText(const py::handle& x) {
+  if (py::isinstance<py::bool_>(x)) return py::repr(x);
+  if (PyIndex_Check(x.ptr())) return py::str(py::int_(py::reinterpret_borrow<py::object>(x)));
+  if (PyFloat_Check(x.ptr())) {
+    const double value = x.cast<double>();
+    return std::isnan(value) ? "nan" : FormatNumber(value);
   }
-  if (!a && !b) {
-    throw std::invalid_argument(std::string(name_a) + " is missing: give " + name_a + " (or " +
-                                name_b + ")");
+  return py::repr(x);
+}
+
+// A keyword argument's value as the text of the setting: a str as it is ("10:40"), a sequence
+// joined as a list "0.5,0.1" or a range "10:40", a number; anything else as its repr.
+std::string SettingText(const DesignRobotSetting& setting, const py::handle& x) {
+  if (py::isinstance<py::str>(x)) return x.cast<std::string>();
+  // An empty sequence as Python shows it ([]), which the library refuses.
+  if (!py::isinstance<py::sequence>(x) || py::len(x) == 0) return NumberText(x);
+  const std::string separator = std::string(setting.syntax) == "MIN:MAX" ? ":" : ",";
+  std::string text;
+  for (const py::handle element : x) {
+    text += (text.empty() ? "" : separator) + NumberText(element);
   }
+  return text;
+}
+
+// The robot from the config file and the keyword arguments given (not None), as the command
+// line builds it from --config and its flags.
+DesignInput RobotInput(const std::optional<std::string>& config,
+                       const std::vector<py::object>& robot, bool motor_force) {
+  DesignConfigInput input;
+  input.config = config.value_or("");
+  input.motor_force = motor_force;
+  const std::vector<DesignRobotSetting>& settings = DesignRobotSettings();
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    if (!robot[i].is_none())
+      input.given.emplace_back(settings[i].name, SettingText(settings[i], robot[i]));
+  }
+  return BuildDesignInput(input, KeywordNamesOfSettings());
 }
 
 // The from-rest part's arguments; None: not given (the part's default).
@@ -53,76 +103,106 @@ struct FromRestArgs {
   std::optional<int> threads;
 };
 
-// Part (b) as the arguments give it; a setting of it given without from_rest is refused, as
-// the command line refuses it (DesignSettingUses).
-DesignFromRestPart FromRestPart(const FromRestArgs& a, bool from_rest) {
-  DesignFromRestPart part;
+// The drive design's arguments; None: not given (the command line's default).
+struct DriveArgs {
+  std::optional<std::string> drive;
+  std::optional<double> force_max;
+  std::optional<int> harmonics, pulse_levels;
+  std::optional<int> drive_evaluations, drive_polishes, drive_local_evaluations,
+      drive_refine_evaluations, drive_screens;
+};
+
+// The settings of the runs given (not None), by field.
+std::set<std::string> GivenSettings(const FromRestArgs& r, const DriveArgs& d, bool band_levels) {
   std::set<std::string> given;
-  std::string from_rest_starts = part.from_rest_starts.Text();
-  std::string reach_starts = part.reach_starts.Text();
-  TakeGiven(given, "from_rest_starts", a.from_rest_starts, from_rest_starts);
-  TakeGiven(given, "reach_starts", a.reach_starts, reach_starts);
-  TakeGiven(given, "reach_evaluations", a.reach_evaluations, part.reach_evaluations);
-  TakeGiven(given, "reach_local_evaluations", a.reach_local_evaluations,
-            part.reach_local_evaluations);
-  TakeGiven(given, "reach_seconds", a.reach_seconds, part.reach_seconds);
-  TakeGiven(given, "threads", a.threads, part.threads);
-  RejectUnusedSettings(DesignSettingUses(), given, from_rest ? "from-rest" : "", DesignRunKeywords,
-                       kDesignKeywords, "is invalid with");
-  part.from_rest_starts = ParseStartGrid("from_rest_starts", from_rest_starts);
-  part.reach_starts = ParseStartGrid("reach_starts", reach_starts);
-  part.threads = CapThreads(part.threads);
+  const auto take = [&given](const char* field, bool is_given) {
+    if (is_given) given.insert(field);
+  };
+  take("from_rest_starts", r.from_rest_starts.has_value());
+  take("reach_starts", r.reach_starts.has_value());
+  take("reach_evaluations", r.reach_evaluations.has_value());
+  take("reach_local_evaluations", r.reach_local_evaluations.has_value());
+  take("reach_seconds", r.reach_seconds.has_value());
+  take("threads", r.threads.has_value());
+  take("force_max", d.force_max.has_value());
+  take("harmonics", d.harmonics.has_value());
+  take("pulse_levels", d.pulse_levels.has_value());
+  take("drive_evaluations", d.drive_evaluations.has_value());
+  take("drive_polishes", d.drive_polishes.has_value());
+  take("drive_local_evaluations", d.drive_local_evaluations.has_value());
+  take("drive_refine_evaluations", d.drive_refine_evaluations.has_value());
+  take("drive_screens", d.drive_screens.has_value());
+  take("band_levels", band_levels);
+  return given;
+}
+
+// A setting given to a run that does not use it is refused, as the command line refuses it
+// (DesignSettingUses, RejectUnusedDriveSettings), before the robot is read.
+void RejectUnusedArguments(const std::set<std::string>& given, const DriveArgs& d, bool from_rest) {
+  if (d.drive) {
+    DesignDriveFamily(*d.drive, kDesignDriveHarmonics, kDesignDrivePulseLevels, kDesignKeywords);
+    RejectRunsWithDrive(from_rest, false, kDesignKeywords);
+  }
+  const std::string run = d.drive ? "drive" : from_rest ? "from-rest" : "";
+  RejectUnusedSettings(DesignSettingUses(), given, run, DesignRunKeywords, kDesignKeywords,
+                       "is invalid with");
+  if (d.drive) RejectUnusedDriveSettings(*d.drive, given, kDesignKeywords);
+}
+
+// Part (b) as the arguments give it.
+DesignFromRestPart FromRestPart(const FromRestArgs& a) {
+  DesignFromRestPart part;
+  part.from_rest_starts =
+      ParseStartGrid("from_rest_starts", a.from_rest_starts.value_or(part.from_rest_starts.Text()));
+  part.reach_starts =
+      ParseStartGrid("reach_starts", a.reach_starts.value_or(part.reach_starts.Text()));
+  part.reach_evaluations = a.reach_evaluations.value_or(part.reach_evaluations);
+  part.reach_local_evaluations = a.reach_local_evaluations.value_or(part.reach_local_evaluations);
+  part.reach_seconds = a.reach_seconds.value_or(part.reach_seconds);
+  part.threads = CapThreads(a.threads.value_or(part.threads));
   return part;
 }
 
-py::dict DesignDict(double m1, double L, double mu, double g, double e,
-                    std::optional<double> force_amplitude, double force_bias,
-                    std::optional<std::vector<double>> force_cos,
-                    std::optional<std::vector<double>> force_sin, std::optional<double> frequency,
-                    std::optional<Range> frequency_range, std::optional<Range> m2_range,
-                    double margin, double margin_stroke, double stick_margin, double rho_max,
-                    int scan_points, bool from_rest, std::optional<std::string> from_rest_starts,
-                    std::optional<std::string> reach_starts, std::optional<int> reach_evaluations,
-                    std::optional<int> reach_local_evaluations, std::optional<double> reach_seconds,
-                    std::optional<int> threads, std::optional<std::vector<double>> band_levels) {
-  RequireOne(force_amplitude.has_value(), force_sin.has_value(), "force_amplitude", "force_sin");
-  if (force_cos && force_amplitude) {
-    throw std::invalid_argument(
-        "force_amplitude and force_cos are exclusive: give one of them (force_cos goes with "
-        "force_sin)");
+// The fastest drive as the arguments give it, with the command line's defaults: the reach
+// search's grids, the design's from-rest budgets and time limit, the drive budgets.
+DesignDriveMode DriveMode(const DriveArgs& d, const FromRestArgs& r) {
+  RequireDriveForceMax(d.force_max.value_or(kNaN), KeywordNamesOfSettings());
+  const DesignFromRestPart part;
+  DesignDriveMode mode;
+  DriveDesignOptions& o = mode.options;
+  o.drive = DesignDriveFamily(*d.drive, d.harmonics.value_or(kDesignDriveHarmonics),
+                              d.pulse_levels.value_or(kDesignDrivePulseLevels), kDesignKeywords);
+  o.force_max = *d.force_max;
+  ReachEffort& e = o.effort;
+  const StartGrid reach_starts =
+      ParseStartGrid("reach_starts", r.reach_starts.value_or(StartGrid{e.n_x, e.n_psi}.Text()));
+  e.n_x = reach_starts.n_x;
+  e.n_psi = reach_starts.n_psi;
+  e.global_evaluations = r.reach_evaluations.value_or(part.reach_evaluations);
+  e.local_evaluations = r.reach_local_evaluations.value_or(part.reach_local_evaluations);
+  e.max_seconds = r.reach_seconds.value_or(part.reach_seconds);
+  e.drive_evaluations = d.drive_evaluations.value_or(e.drive_evaluations);
+  e.drive_polishes = d.drive_polishes.value_or(e.drive_polishes);
+  e.drive_local_evaluations = d.drive_local_evaluations.value_or(e.drive_local_evaluations);
+  e.drive_refine_evaluations = d.drive_refine_evaluations.value_or(e.drive_refine_evaluations);
+  e.drive_screens = d.drive_screens.value_or(e.drive_screens);
+  o.check = FromRestCheck(r.from_rest_starts.value_or(StartGrid{}.Text()), r.threads.value_or(0));
+  return mode;
+}
+
+// The run: one design (with part (b) when from_rest) or the fastest drive.
+DesignJobResult RunDesign(DesignJobOptions& options, const FromRestArgs& r, const DriveArgs& d,
+                          bool from_rest, const std::optional<std::vector<double>>& band_levels) {
+  if (d.drive) {
+    DesignDriveMode drive = DriveMode(d, r);
+    return RunWithoutGil([&](SignalCheck& check) {
+      drive.interrupt = check.AsInterrupt();
+      options.mode = drive;
+      return RunDesignJob(options);
+    });
   }
-  RequireOne(frequency.has_value(), frequency_range.has_value(), "frequency", "frequency_range");
-  RequireSeriesTerms("force_sin", "b", force_sin);
-  RequireSeriesTerms("force_cos", "a", force_cos);
-  RequireRange("frequency_range", frequency_range);
-  RequireRange("m2_range", m2_range);
-  DesignJobOptions options;
-  DesignInput& in = options.input;
-  in.m1 = m1;
-  in.L = L;
-  in.mu = mu;
-  in.g = g;
-  in.e = e;
-  in.force.amplitude = force_amplitude.value_or(DesignInput::kNaN);
-  in.force.bias = force_bias;
-  in.force.cos = force_cos.value_or(std::vector<double>());
-  in.force.sin = force_sin.value_or(std::vector<double>());
-  const Range f = frequency_range.value_or(Range(frequency.value_or(0.0), frequency.value_or(0.0)));
-  in.frequency_min = f.first;
-  in.frequency_max = f.second;
-  if (m2_range) {
-    in.m2_min = m2_range->first;
-    in.m2_max = m2_range->second;
-  }
-  in.margin = margin;
-  in.margin_stroke = margin_stroke;
-  in.stick_margin = stick_margin;
-  in.rho_max = rho_max;
-  in.scan_points = scan_points;
-  DesignFromRestPart part = FromRestPart({from_rest_starts, reach_starts, reach_evaluations,
-                                          reach_local_evaluations, reach_seconds, threads},
-                                         from_rest);
-  const DesignJobResult r = RunWithoutGil([&](SignalCheck& check) {
+  DesignFromRestPart part = FromRestPart(r);
+  return RunWithoutGil([&](SignalCheck& check) {
     // Design tells its robots on this thread, and the robustness's continuations and the
     // from-rest search ask their interrupt there: where Ctrl-C is seen.
     DesignOneMode one;
@@ -136,57 +216,108 @@ py::dict DesignDict(double m1, double L, double mu, double g, double e,
     options.mode = one;
     return RunDesignJob(options);
   });
-  return py::dict(ToPython(json::DesignJobJson(r)));
+}
+
+// The library's field names in messages, as design()'s keywords.
+const FlagNames kRenamedFields = {{"levels", "pulse_levels"}};
+
+py::dict DesignDict(const std::optional<std::string>& config, const std::vector<py::object>& robot,
+                    bool from_rest, const FromRestArgs& r,
+                    const std::optional<std::vector<double>>& band_levels, const DriveArgs& d) {
+  try {
+    RejectUnusedArguments(GivenSettings(r, d, band_levels.has_value()), d, from_rest);
+    DesignJobOptions options;
+    options.input = RobotInput(config, robot, !d.drive);
+    return py::dict(
+        ToPython(json::DesignJobJson(RunDesign(options, r, d, from_rest, band_levels))));
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(WithFlagNames(error.what(), kRenamedFields));
+  } catch (const IoError& error) {  // the config file cannot be read
+    PyErr_SetString(PyExc_OSError, error.what());
+    throw py::error_already_set();
+  }
+}
+
+// `text` filled into lines of at most kDocWidth characters: the first after `line` (the
+// argument's name), the others after `indent`.
+constexpr std::size_t kDocWidth = 92;
+
+std::string Fill(const std::string& text, std::string line, const std::string& indent) {
+  std::string out;
+  bool fresh = true;  // no word on the line yet
+  for (const std::string& word : SplitText(text, ' ')) {
+    if (!fresh && line.size() + 1 + word.size() > kDocWidth) {
+      out += line + "\n";
+      line = indent;
+      fresh = true;
+    }
+    line += (fresh ? "" : " ") + word;
+    fresh = false;
+  }
+  return out + line + "\n";
+}
+
+// The docstring lines of the robot's settings, from the library's table.
+std::string RobotArgsDoc() {
+  std::string doc;
+  const std::vector<DesignRobotSetting>& settings = DesignRobotSettings();
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    std::string first = "    " + RobotKeywords()[i];
+    first += first.size() < 12 ? std::string(12 - first.size(), ' ') : "  ";
+    doc += Fill(settings[i].help, first, std::string(12, ' '));
+  }
+  return doc;
 }
 
 constexpr const char* kDesignDoc =
     "Design a real robot in SI units: for the shell (m1, gap L, friction mu) and the motor "
     "force, the inner mass m2 (and the frequency, with frequency_range) of the fastest robust "
-    "one-impact gait, with its speed, motor power, losses and cost of transport "
-    "(capsubot documentation, design): the dict `capsubot design --json` prints.\n\n"
-    "Arguments (keyword only, named as the settings of `capsubot design` with _ for -):\n"
-    "    m1      shell mass [kg], > 0\n"
-    "    L       free gap of the inner body between the walls [m], > 0\n"
-    "    mu      friction coefficient of the shell on the floor, > 0\n"
-    "    g       gravity [m/s^2], > 0\n"
-    "    e       coefficient of restitution of the impacts, 0 <= e <= 1\n"
-    "    force_amplitude  amplitude A_N [N] of F_N = A_N sin(omega t + phase) + c_N, >= 0\n"
-    "    force_bias  mean c_N [N] of the motor force, >= 0\n"
-    "    force_cos, force_sin  Fourier motor force instead of the amplitude: coefficients\n"
-    "            a_1..a_K, b_1..b_K [N] of F_N = c_N + sum_k (a_k cos k s + b_k sin k s)\n"
-    "    frequency  motor frequency f [Hz], > 0; or\n"
-    "    frequency_range  (fmin, fmax) [Hz]: search the frequency too\n"
-    "    m2_range  (m2min, m2max) [kg] searched, default (0.01 m1, 10 m1)\n"
-    "    margin, margin_stroke, stick_margin  the robust gait's clearances and stick margin\n"
-    "            (capsubot documentation, model section 12)\n"
-    "    rho_max  largest admissible multiplier modulus, > 0 (inf: no stability requirement)\n"
-    "    scan_points  log-spaced samples of each searched variable, >= 3\n"
-    "    from_rest  also find the fastest motion reached from rest in each direction\n"
-    "            (key from_rest_best; simulated, a few seconds)\n"
-    "    from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations,\n";
+    "one-impact gait, with its speed, motor power, losses and cost of transport; or, with "
+    "drive, the fastest drive from rest (capsubot documentation, design): the dict `capsubot "
+    "design --json` prints.\n\n"
+    "Arguments (keyword only). The robot: a TOML config file and the settings of `capsubot "
+    "design` (keys of the file as written there, keywords with _ for -); the keywords "
+    "override the file; None: not given (the file's value, else the default):\n"
+    "    config  TOML file with the robot (m1 = 0.2, force-sin = [0.5], frequency-range = "
+    "[10, 40])\n";
 
-// The from-rest arguments' defaults (None), from the library's DesignFromRestPart.
-std::string FromRestArgsDoc() {
+// The run's arguments, with their defaults (None) from the library.
+std::string RunArgsDoc() {
   const DesignFromRestPart d;
+  const ReachEffort effort;
   return fmt::format(
-      "    reach_seconds, threads  with from_rest only (None: '{}', '{}', {}, {}, {}, {});\n"
-      "            given without from_rest they are refused, as the command line refuses them):\n",
+      "    from_rest  also find the fastest motion reached from rest in each direction\n"
+      "            (key from_rest_best; simulated, a few seconds)\n"
+      "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
+      "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
+      "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
+      "            search and of the local polish, per direction\n"
+      "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
+      "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
+      "            are lowered to that); the result does not depend on it\n"
+      "            (with from_rest or drive only; None: '{}', '{}', {}, {}, {}, {}; with drive\n"
+      "            the grids are '{}' and '{}')\n"
+      "    band_levels  the levels of the gait's speed bands, fractions of the speed from rest in\n"
+      "            (0, 1): how far mu, e and m2 move, each way, before the mean speed from rest\n"
+      "            falls below each (capsubot documentation, design); None: [0.95]\n"
+      "    drive   'sine', 'fourier' or 'pulse': instead of the one-impact design, the fastest\n"
+      "            drive from rest of that waveform, the frequency over frequency_range and the\n"
+      "            inner mass over m2_range, under the motor's peak force_max (no force_*\n"
+      "            settings)\n"
+      "    force_max  with drive: the motor's peak force max |F_N| [N], > 0\n"
+      "    harmonics  with drive='fourier': harmonics K, 1 <= K <= 16 (None: {})\n"
+      "    pulse_levels  with drive='pulse': constant levels N, 2 <= N <= 16 (None: {})\n"
+      "    drive_evaluations, drive_polishes, drive_local_evaluations, drive_refine_evaluations,\n"
+      "    drive_screens  the budgets of the drive search, as `capsubot design` (None: {}, {}, "
+      "{}, {}, {})\n\n",
       d.from_rest_starts.Text(), d.reach_starts.Text(), d.reach_evaluations,
-      d.reach_local_evaluations, d.reach_seconds, d.threads);
+      d.reach_local_evaluations, d.reach_seconds, d.threads, StartGrid{}.Text(),
+      StartGrid{effort.n_x, effort.n_psi}.Text(), kDesignDriveHarmonics, kDesignDrivePulseLevels,
+      effort.drive_evaluations, effort.drive_polishes, effort.drive_local_evaluations,
+      effort.drive_refine_evaluations, effort.drive_screens);
 }
 
 constexpr const char* kDesignDocTail =
-
-    "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
-    "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
-    "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
-    "            search and of the local polish, per direction\n"
-    "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
-    "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
-    "            are lowered to that); the result does not depend on it\n"
-    "    band_levels  the levels of the gait's speed bands, fractions of the speed from rest in\n"
-    "            (0, 1): how far mu, e and m2 move, each way, before the mean speed from rest\n"
-    "            falls below each (capsubot documentation, design); None: [0.95]\n\n"
     "Returns a dict: status ('ok', 'motor_slides_shell', 'no_gait'), message, one_impact "
     "{status, m2_kg, frequency_hz, speed_mm_s, displacement_mm, impact_velocity_m_s, "
     "energy_mj, power_mw, power_positive_mw, friction_loss_mj, impact_loss_mj, cot, "
@@ -195,27 +326,60 @@ constexpr const char* kDesignDocTail =
     "gait: {mu, e, m2_kg: {value, from, to, status, message, down, up}}, each limit {type, "
     "the parameter's value, located, ...}; else None); with from_rest, "
     "from_rest_best {forward, backward: the same keys, forward_fraction, backward_fraction, "
-    "attractors}.\n\n"
+    "attractors}; with drive, the keys of `capsubot design --drive --json`.\n\n"
     "Raises ValueError for bad input (the message names the parameter, its value and the "
-    "rule). Runs without the GIL; Ctrl-C interrupts it (KeyboardInterrupt).";
+    "rule), OSError for an unreadable config file. Runs without the GIL; Ctrl-C interrupts it "
+    "(KeyboardInterrupt).";
+
+// One robot argument of design()'s signature (a Python object: None, a number, a sequence or
+// a str, read by the library as the text of the setting).
+template <std::size_t>
+using RobotArg = py::object;
+
+template <std::size_t... I>
+void DefineDesign(py::module_& m, const std::string& doc, std::index_sequence<I...>) {
+  const std::vector<std::string>& keywords = RobotKeywords();
+  m.def(
+      "design",
+      [](std::optional<std::string> config, RobotArg<I>... robot, bool from_rest,
+         std::optional<std::string> from_rest_starts, std::optional<std::string> reach_starts,
+         std::optional<int> reach_evaluations, std::optional<int> reach_local_evaluations,
+         std::optional<double> reach_seconds, std::optional<int> threads,
+         std::optional<std::vector<double>> band_levels, std::optional<std::string> drive,
+         std::optional<double> force_max, std::optional<int> harmonics,
+         std::optional<int> pulse_levels, std::optional<int> drive_evaluations,
+         std::optional<int> drive_polishes, std::optional<int> drive_local_evaluations,
+         std::optional<int> drive_refine_evaluations, std::optional<int> drive_screens) {
+        return DesignDict(
+            config, {robot...}, from_rest,
+            {from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations,
+             reach_seconds, threads},
+            band_levels,
+            {drive, force_max, harmonics, pulse_levels, drive_evaluations, drive_polishes,
+             drive_local_evaluations, drive_refine_evaluations, drive_screens});
+      },
+      doc.c_str(), py::kw_only(), py::arg("config") = py::none(),
+      py::arg(keywords[I].c_str()) = py::none()..., py::arg("from_rest").noconvert() = false,
+      py::arg("from_rest_starts") = py::none(), py::arg("reach_starts") = py::none(),
+      py::arg("reach_evaluations") = py::none(), py::arg("reach_local_evaluations") = py::none(),
+      py::arg("reach_seconds") = py::none(), py::arg("threads") = py::none(),
+      py::arg("band_levels") = py::none(), py::arg("drive") = py::none(),
+      py::arg("force_max") = py::none(), py::arg("harmonics") = py::none(),
+      py::arg("pulse_levels") = py::none(), py::arg("drive_evaluations") = py::none(),
+      py::arg("drive_polishes") = py::none(), py::arg("drive_local_evaluations") = py::none(),
+      py::arg("drive_refine_evaluations") = py::none(), py::arg("drive_screens") = py::none());
+}
 
 }  // namespace
 
 void BindDesign(py::module_& m) {
-  const DesignInput in;
-  const DesignFromRestPart rest;
-  const std::string doc = kDesignDoc + FromRestArgsDoc() + kDesignDocTail;
-  m.def("design", &DesignDict, doc.c_str(), py::kw_only(), py::arg("m1"), py::arg("L"),
-        py::arg("mu"), py::arg("g") = in.g, py::arg("e"), py::arg("force_amplitude") = py::none(),
-        py::arg("force_bias"), py::arg("force_cos") = py::none(), py::arg("force_sin") = py::none(),
-        py::arg("frequency") = py::none(), py::arg("frequency_range") = py::none(),
-        py::arg("m2_range") = py::none(), py::arg("margin") = in.margin,
-        py::arg("margin_stroke") = in.margin_stroke, py::arg("stick_margin") = in.stick_margin,
-        py::arg("rho_max") = in.rho_max, py::arg("scan_points") = in.scan_points,
-        py::arg("from_rest").noconvert() = false, py::arg("from_rest_starts") = py::none(),
-        py::arg("reach_starts") = py::none(), py::arg("reach_evaluations") = py::none(),
-        py::arg("reach_local_evaluations") = py::none(), py::arg("reach_seconds") = py::none(),
-        py::arg("threads") = py::none(), py::arg("band_levels") = py::none());
+  if (RobotKeywords().size() != kRobotSettingCount) {
+    throw std::logic_error(
+        fmt::format("design() declares {} settings of the robot, the table has {}",
+                    kRobotSettingCount, RobotKeywords().size()));
+  }
+  const std::string doc = kDesignDoc + RobotArgsDoc() + RunArgsDoc() + kDesignDocTail;
+  DefineDesign(m, doc, std::make_index_sequence<kRobotSettingCount>());
 }
 
 }  // namespace capsubot::python

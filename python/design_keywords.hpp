@@ -1,7 +1,7 @@
 #pragma once
-// How the Python module's design() names the runs of the design job: it has one design and
-// one design with the fastest motion from rest (from_rest=True); the grid and the drive design
-// are the command line's.
+// How the Python module's design() names the runs of the design job: it has one design, one
+// design with the fastest motion from rest (from_rest=True) and the drive design (drive=); the
+// grid is the command line's.
 
 #include <string>
 
@@ -13,8 +13,7 @@ namespace capsubot::python {
 inline std::string DesignRunKeywords(const std::string& run) {
   if (run.empty()) return "one design (from_rest=False)";
   if (run == "from-rest") return "from_rest=True";
-  return run == "grid" ? "a design grid (capsubot design --grid)"
-                       : "a drive design (capsubot design --drive)";
+  return run == "grid" ? "a design grid (capsubot design --grid)" : "drive";
 }
 
 /// design()'s keywords are the settings' field names.

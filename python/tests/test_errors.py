@@ -188,15 +188,16 @@ REFUSED = [
      "cos = [] is invalid: expected the coefficients a_1..a_K, 1 <= K <= 16"),
     ("design_empty_force_sin", capsubot.design,
      {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_sin": [], "force_bias": 0.1,
-      "frequency": 20.0}, ValueError, "force_sin = [] is invalid: expected the coefficients"),
+      "frequency": 20.0}, ValueError,
+     "force_sin = [] is invalid: expected comma-separated numbers"),
     ("design_empty_frequency_range", capsubot.design,
      {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_amplitude": 0.5, "force_bias": 0.1,
       "frequency_range": (10, 10)}, ValueError,
-     "frequency_range = (10, 10) is invalid: expected (MIN, MAX) with MIN < MAX"),
+     "frequency_range = 10:10 is invalid: expected MIN:MAX with MIN < MAX"),
     ("design_inverted_m2_range", capsubot.design,
      {"m1": 0.2, "L": 0.02, "mu": 0.3, "e": 0.7, "force_amplitude": 0.5, "force_bias": 0.1,
       "frequency": 20.0, "m2_range": (0.3, 0.1)}, ValueError,
-     "m2_range = (0.3, 0.1) is invalid: expected (MIN, MAX) with MIN < MAX"),
+     "m2_range = 0.3:0.1 is invalid: expected MIN:MAX with MIN < MAX"),
 ]
 
 

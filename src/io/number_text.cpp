@@ -168,4 +168,15 @@ std::int64_t ParseInteger(std::string_view text, const std::string& name, std::i
   return static_cast<std::int64_t>(value);
 }
 
+std::vector<std::string> SplitText(const std::string& text, char separator) {
+  std::vector<std::string> pieces;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = std::min(text.find(separator, start), text.size());
+    pieces.push_back(text.substr(start, end - start));
+    if (end == text.size()) return pieces;
+    start = end + 1;
+  }
+}
+
 }  // namespace capsubot

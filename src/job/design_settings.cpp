@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 namespace capsubot {
 
 const std::vector<SettingUse>& DesignSettingUses() {
@@ -39,6 +41,23 @@ void RejectUnusedDriveSettings(const std::string& drive, const std::set<std::str
   RejectUnusedSettings(
       uses, given, drive, [&names](const std::string& d) { return names.Given("drive", d); }, names,
       "is invalid with");
+}
+
+DriveFamily DesignDriveFamily(const std::string& drive, int harmonics, int pulse_levels,
+                              const SettingNames& names) {
+  if (drive == "sine") return DriveFamily{};
+  if (drive == "fourier") return DriveFamily::Fourier(harmonics);
+  if (drive == "pulse") return DriveFamily::Pulse(pulse_levels);
+  throw std::invalid_argument(fmt::format("{} is invalid: expected {}, {} or {}",
+                                          names.Given("drive", drive), names.Value("sine"),
+                                          names.Value("fourier"), names.Value("pulse")));
+}
+
+void RejectRunsWithDrive(bool from_rest, bool grid, const SettingNames& names) {
+  if (!from_rest && !grid) return;
+  throw std::invalid_argument(fmt::format(
+      "{} is invalid with {}: expected one of them ({} searches the force itself)",
+      names.Name(from_rest ? "from_rest" : "grid"), names.Name("drive"), names.Name("drive")));
 }
 
 std::string DesignRunName(const std::string& run, const SettingNames& names) {

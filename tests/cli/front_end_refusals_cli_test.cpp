@@ -259,8 +259,10 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
   }
 }
 
-// The design job: the runs both front ends have (one design, and with the fastest motion from
-// rest), every setting given to the one that does not use it. The robot of examples/robot.toml.
+// The design job: one design, with the fastest motion from rest and the drive design (the runs
+// both front ends have), every setting given to the one that does not use it; every setting of
+// the drive design given to a waveform that does not use it; the drive with the motion from
+// rest. The robot of examples/robot.toml.
 const char* kDesignRobot =
     "m1=0.2, L=0.02, mu=0.3, e=0.7, force_amplitude=0.5, force_bias=0.1, "
     "frequency=20, ";
@@ -283,62 +285,99 @@ const std::map<std::string, std::pair<std::string, std::string>> kDesignSamples 
     {"drive_screens", {"4", "4"}},
     {"band_levels", {"0.9", "[0.9]"}}};
 
-// The settings of the command line's drive design, which the Python module's design() does not
-// have: it refuses them as unknown arguments (TypeError).
-const std::set<std::string> kCommandLineOnly = {"force_max",
-                                                "harmonics",
-                                                "pulse_levels",
-                                                "drive_evaluations",
-                                                "drive_polishes",
-                                                "drive_local_evaluations",
-                                                "drive_refine_evaluations",
-                                                "drive_screens"};
+// A case: the run ("", "from-rest" or "drive"), the drive's waveform, the setting given (a
+// field of kDesignSamples, or "from_rest" with the drive), and the library's refusal in names.
+struct DesignCase {
+  std::string run, waveform, field;
+  std::function<void(const SettingNames&, const ModeName&)> refuse;
+};
 
-TEST(DesignRefusals, BothFrontEndsRefuseASettingTheRunDoesNotUseInTheirOwnNames) {
-  struct DesignCase {
-    std::string run, field;
-  };
+// The library's refusal of `c` in `names` (runs named by `run_name`); empty when it accepts it.
+std::string DesignRefusal(const DesignCase& c, const SettingNames& names,
+                          const ModeName& run_name) {
+  try {
+    c.refuse(names, run_name);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<DesignCase> DesignCases() {
   std::vector<DesignCase> cases;
-  std::vector<std::string> calls;
   for (const SettingUse& use : DesignSettingUses()) {
-    for (const std::string run : {"", "from-rest"}) {
+    for (const std::string run : {"", "from-rest", "drive"}) {
       if (use.UsedBy(run)) continue;
-      cases.push_back({run, use.setting});
-      calls.push_back(fmt::format("run({}from_rest={}, {}={})\n", kDesignRobot,
-                                  run.empty() ? "False" : "True", use.setting,
-                                  kDesignSamples.at(use.setting).second));
+      const std::string field = use.setting;
+      cases.push_back({run, "sine", field, [run, field](const SettingNames& n, const ModeName& m) {
+                         RejectUnusedSettings(DesignSettingUses(), {field}, run, m, n,
+                                              "is invalid with");
+                       }});
     }
   }
+  for (const std::string waveform : {"sine", "fourier", "pulse"}) {
+    for (const std::string field :
+         {"harmonics", "pulse_levels", "drive_evaluations", "drive_polishes",
+          "drive_local_evaluations", "drive_refine_evaluations", "drive_screens"}) {
+      cases.push_back(
+          {"drive", waveform, field, [waveform, field](const SettingNames& n, const ModeName&) {
+             RejectUnusedDriveSettings(waveform, {field}, n);
+           }});
+    }
+  }
+  cases.push_back({"drive", "sine", "from_rest", [](const SettingNames& n, const ModeName&) {
+                     RejectRunsWithDrive(true, false, n);
+                   }});
+  return cases;
+}
+
+// The case as the module's call and as the program's arguments.
+std::string DesignCall(const DesignCase& c) {
+  const std::string run = c.run == "drive"
+                              ? "drive='" + c.waveform + "', force_max=1.0, "
+                              : fmt::format("from_rest={}, ", c.run.empty() ? "False" : "True");
+  const std::string given =
+      c.field == "from_rest" ? "from_rest=True" : c.field + "=" + kDesignSamples.at(c.field).second;
+  return "run(" + std::string(kDesignRobot) + run + given + ")\n";
+}
+
+std::string DesignArgs(const DesignCase& c) {
+  const SettingNames flags{app::kDesignFlags};
+  std::string args = fmt::format("design --config {}/examples/robot.toml", CAPSUBOT_SOURCE_DIR);
+  if (c.run == "from-rest") args += " --from-rest";
+  if (c.run == "drive") args += " --drive " + c.waveform + " --force-max 1";
+  if (c.field == "from_rest") return args + " --from-rest";
+  return args + " " + flags.Name(c.field) + " " + kDesignSamples.at(c.field).first;
+}
+
+TEST(DesignRefusals, BothFrontEndsRefuseASettingTheRunDoesNotUseInTheirOwnNames) {
+  const std::vector<DesignCase> cases = DesignCases();
   ASSERT_GE(cases.size(), DesignSettingUses().size());  // each setting is refused somewhere
+  std::vector<std::string> calls;
+  for (const DesignCase& c : cases) calls.push_back(DesignCall(c));
   const std::vector<std::string> python = PythonMessages(calls, "design");
   ASSERT_EQ(python.size(), cases.size());
   const SettingNames flags{app::kDesignFlags};
+  const ModeName run_flag = [&flags](const std::string& run) { return DesignRunName(run, flags); };
+  std::size_t refused = 0;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const DesignCase& c = cases[k];
-    const std::string args = fmt::format("design --config {}/examples/robot.toml{} {} {}",
-                                         CAPSUBOT_SOURCE_DIR, c.run.empty() ? "" : " --from-rest",
-                                         flags.Name(c.field), kDesignSamples.at(c.field).first);
-    const auto refusal = [&c](const SettingNames& names, const ModeName& run_name) {
-      try {
-        RejectUnusedSettings(DesignSettingUses(), {c.field}, c.run, run_name, names,
-                             "is invalid with");
-      } catch (const std::invalid_argument& e) {
-        return std::string(e.what());
-      }
-      return std::string();
-    };
-    const std::string cli_message =
-        refusal(flags, [&flags](const std::string& run) { return DesignRunName(run, flags); });
-    ASSERT_FALSE(cli_message.empty()) << args;
+    const std::string args = DesignArgs(c);
+    const std::string cli_message = DesignRefusal(c, flags, run_flag);
+    const std::string python_message =
+        DesignRefusal(c, python::kDesignKeywords, python::DesignRunKeywords);
+    if (cli_message.empty()) {  // a waveform that uses the setting
+      EXPECT_EQ(python_message, "") << calls[k];
+      continue;
+    }
+    ++refused;
+    EXPECT_NE(cli_message, python_message) << args;  // a flag and a keyword, one rule
     const auto r = testing::RunCli(args + " 2>&1 >/dev/null");
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(r.out, "capsubot design: error: " + cli_message + "\n") << args;
-    if (kCommandLineOnly.count(c.field) > 0) {
-      EXPECT_EQ(python[k], "TypeError") << calls[k];
-    } else {
-      EXPECT_EQ(python[k], refusal(python::kDesignKeywords, python::DesignRunKeywords)) << calls[k];
-    }
+    EXPECT_EQ(python[k], python_message) << calls[k];
   }
+  EXPECT_GE(refused, DesignSettingUses().size());
 }
 
 // The sweep job: every setting given to every mode that does not read it, and the rules beyond

@@ -160,4 +160,8 @@ std::int64_t ParseInteger(std::string_view text, const std::string& name, std::i
 /// `text` as shown in a message: quoted when empty or holding spaces or control characters.
 std::string QuoteForMessage(std::string_view text);
 
+/// The pieces of `text` between the `separator`s, empty ones included: "1,,2" -> {"1", "", "2"},
+/// "" -> {""}.
+std::vector<std::string> SplitText(const std::string& text, char separator);
+
 }  // namespace capsubot

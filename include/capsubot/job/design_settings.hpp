@@ -9,6 +9,7 @@
 
 #include "capsubot/job/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
+#include "capsubot/reach/drive_family.hpp"
 
 namespace capsubot {
 
@@ -21,6 +22,20 @@ const std::vector<SettingUse>& DesignSettingUses();
 /// reach problem.
 void RejectUnusedDriveSettings(const std::string& drive, const std::set<std::string>& given,
                                const SettingNames& names);
+
+/// The harmonics of the drive design's waveform "fourier" and the levels of "pulse", when not
+/// given.
+inline constexpr int kDesignDriveHarmonics = 2;
+inline constexpr int kDesignDrivePulseLevels = 3;
+
+/// The waveform `drive` of the drive design: "sine", "fourier" with `harmonics` or "pulse" with
+/// `pulse_levels`. Throws std::invalid_argument, in `names`, for another name.
+DriveFamily DesignDriveFamily(const std::string& drive, int harmonics, int pulse_levels,
+                              const SettingNames& names);
+
+/// Refuses (std::invalid_argument, in `names`) the drive design asked together with the motion
+/// from rest (`from_rest`) or a grid (`grid`): it searches the force itself. Accepts neither.
+void RejectRunsWithDrive(bool from_rest, bool grid, const SettingNames& names);
 
 /// The run `run` in `names`: the setting that selects it ("--from-rest", "--grid", "--drive"),
 /// or for "" one design without them ("one design (no --from-rest, no --grid)").
