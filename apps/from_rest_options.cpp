@@ -60,39 +60,60 @@ void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
       ->capture_default_str();
 }
 
+namespace {
+
+// A budget of the reach search: its flag, its field, its help (its default is shown).
+struct BudgetFlag {
+  const char* flag;
+  int FromRestCliOptions::*field;
+  const char* help;
+};
+
+// The evaluation budgets of the reach search's stages, in the order of --help.
+const BudgetFlag kReachBudgets[] = {
+    {"--reach-evaluations", &FromRestCliOptions::reach_evaluations,
+     "from-rest evaluations of the reach search's global stage (DIRECT-L), >= 1"},
+    {"--reach-local-evaluations", &FromRestCliOptions::reach_local_evaluations,
+     "from-rest evaluations of the reach search's local polish (Sbplx), >= 0"},
+};
+
+// The budgets of each Fourier drive K >= 2 and pulse drive, in the order of --help.
+const BudgetFlag kDriveBudgets[] = {
+    {"--drive-evaluations", &FromRestCliOptions::drive_evaluations,
+     "from-rest evaluations of the first global stage (Halton points of the box) of each "
+     "Fourier drive K >= 2 (--harmonics) and pulse drive, >= 1"},
+    {"--drive-polishes", &FromRestCliOptions::drive_polishes,
+     "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best distinct points, "
+     ">= 1"},
+    {"--drive-local-evaluations", &FromRestCliOptions::drive_local_evaluations,
+     "from-rest evaluations of each of those polishes, >= 0"},
+    {"--drive-refine-evaluations", &FromRestCliOptions::drive_refine_evaluations,
+     "from-rest evaluations of the controlled random search (GN_CRS2_LM) after the Halton "
+     "points, from the best of them, >= 0"},
+    {"--drive-screens", &FromRestCliOptions::drive_screens,
+     "short local screens (Nelder-Mead, a quarter of a polish's evaluations each) before the "
+     "polishes, from the best distinct points, >= 0"},
+};
+
+template <std::size_t N>
+void AddBudgets(CLI::App& cmd, FromRestCliOptions& o, const BudgetFlag (&budgets)[N]) {
+  for (const BudgetFlag& b : budgets) {
+    cmd.add_option(b.flag, o.*b.field, b.help)->capture_default_str();
+  }
+}
+
+}  // namespace
+
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--reach-starts", o.reach_starts,
                  "grid NXxNPSI of starts from rest inside the reach search (the winner is "
                  "re-checked on --from-rest-starts)")
       ->capture_default_str();
-  cmd.add_option("--reach-evaluations", o.reach_evaluations,
-                 "from-rest evaluations of the reach search's global stage (DIRECT-L), >= 1")
-      ->capture_default_str();
-  cmd.add_option("--reach-local-evaluations", o.reach_local_evaluations,
-                 "from-rest evaluations of the reach search's local polish (Sbplx), >= 0")
-      ->capture_default_str();
+  AddBudgets(cmd, o, kReachBudgets);
 }
 
 void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
-  cmd.add_option("--drive-evaluations", o.drive_evaluations,
-                 "from-rest evaluations of the first global stage (Halton points of the box) of "
-                 "each Fourier drive K >= 2 (--harmonics) and pulse drive, >= 1")
-      ->capture_default_str();
-  cmd.add_option("--drive-polishes", o.drive_polishes,
-                 "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best "
-                 "distinct points, >= 1")
-      ->capture_default_str();
-  cmd.add_option("--drive-local-evaluations", o.drive_local_evaluations,
-                 "from-rest evaluations of each of those polishes, >= 0")
-      ->capture_default_str();
-  cmd.add_option("--drive-refine-evaluations", o.drive_refine_evaluations,
-                 "from-rest evaluations of the controlled random search (GN_CRS2_LM) after the "
-                 "Halton points, from the best of them, >= 0")
-      ->capture_default_str();
-  cmd.add_option("--drive-screens", o.drive_screens,
-                 "short local screens (Nelder-Mead, a quarter of a polish's evaluations each) "
-                 "before the polishes, from the best distinct points, >= 0")
-      ->capture_default_str();
+  AddBudgets(cmd, o, kDriveBudgets);
 }
 
 }  // namespace capsubot::app

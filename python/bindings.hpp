@@ -23,6 +23,7 @@
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
 
 namespace capsubot::python {
 
@@ -71,6 +72,18 @@ void TakeGiven(std::set<std::string>& given, const char* name, const std::option
   field = *value;
   given.insert(name);
 }
+
+/// The keywords of the search of P2, P3 and of the reach search's seed (optimize() and sweep());
+/// None: not given.
+struct SearchKeywords {
+  std::optional<double> bound;
+  std::optional<int> harmonics, starts, hops, global_evaluations;
+  std::optional<std::string> global_algorithm, local_algorithm;
+};
+
+/// The keywords given into `search` (bound: search.gait.force_bound), each as TakeGiven.
+void TakeSearch(std::set<std::string>& given, const SearchKeywords& keywords,
+                SearchRequest& search);
 
 /// A grid of starts "NXxNPSI" (e.g. "8x8") given as the argument `name` into options.n_x,
 /// options.n_psi (the library's ParseStartGrid: its syntax and limits); throws

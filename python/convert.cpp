@@ -22,6 +22,16 @@ void ParseStarts(const char* name, const std::string& text, FromRestOptions& o) 
   o.n_psi = grid.n_psi;
 }
 
+void TakeSearch(std::set<std::string>& given, const SearchKeywords& k, SearchRequest& search) {
+  TakeGiven(given, "bound", k.bound, search.gait.force_bound);
+  TakeGiven(given, "harmonics", k.harmonics, search.harmonics);
+  TakeGiven(given, "starts", k.starts, search.starts);
+  TakeGiven(given, "hops", k.hops, search.hops);
+  TakeGiven(given, "global_algorithm", k.global_algorithm, search.global_algorithm);
+  TakeGiven(given, "local_algorithm", k.local_algorithm, search.local_algorithm);
+  TakeGiven(given, "global_evaluations", k.global_evaluations, search.global_evaluations);
+}
+
 FromRestOptions FromRestCheck(const std::string& starts, int threads) {
   FromRestOptions o;
   ParseStarts("from_rest_starts", starts, o);

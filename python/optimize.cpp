@@ -79,15 +79,12 @@ py::dict Optimize(std::optional<std::string> problem, std::optional<double> A,
   TakeGiven(s.given, "c", c, s.c);
   s.params = Params{T0, e};
   s.search.gait.margins = Margins{margin, margin_stroke, stick_margin};
-  TakeGiven(s.given, "bound", bound, s.search.gait.force_bound);
   if (stable || rho_max) s.search.gait.rho_max = stable ? 1.0 : *rho_max;
   s.search.max_time = max_time;
-  TakeGiven(s.given, "harmonics", harmonics, s.search.harmonics);
-  TakeGiven(s.given, "global_algorithm", global_algorithm, s.search.global_algorithm);
-  TakeGiven(s.given, "local_algorithm", local_algorithm, s.search.local_algorithm);
-  TakeGiven(s.given, "global_evaluations", global_evaluations, s.search.global_evaluations);
-  TakeGiven(s.given, "hops", hops, s.search.hops);
-  TakeGiven(s.given, "starts", starts, s.search.starts);
+  TakeSearch(
+      s.given,
+      {bound, harmonics, starts, hops, global_evaluations, global_algorithm, local_algorithm},
+      s.search);
   TakeGiven(s.given, "alpha", alpha, s.alpha);
   if (T0_range) {
     std::tie(s.T0_min, s.T0_max) = *T0_range;

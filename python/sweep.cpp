@@ -119,13 +119,10 @@ py::dict Sweep(const std::vector<std::string>& grid, std::optional<std::string> 
   TakeGiven(s.given, "rho_max", rho_max, s.search.gait.rho_max);
   TakeFlag(s.given, "stable_only", stable_only, s.stable_only);
   TakeGiven(s.given, "scan_points", scan_points, s.scan_points);
-  TakeGiven(s.given, "bound", bound, s.search.gait.force_bound);
-  TakeGiven(s.given, "harmonics", harmonics, s.search.harmonics);
-  TakeGiven(s.given, "starts", starts, s.search.starts);
-  TakeGiven(s.given, "hops", hops, s.search.hops);
-  TakeGiven(s.given, "global_algorithm", global_algorithm, s.search.global_algorithm);
-  TakeGiven(s.given, "local_algorithm", local_algorithm, s.search.local_algorithm);
-  TakeGiven(s.given, "global_evaluations", global_evaluations, s.search.global_evaluations);
+  TakeSearch(
+      s.given,
+      {bound, harmonics, starts, hops, global_evaluations, global_algorithm, local_algorithm},
+      s.search);
   TakeGiven(s.given, "alpha", alpha, s.alpha);
   TakeGiven(s.given, "from_rest_starts", from_rest_starts, s.from_rest_starts);
   TakeGiven(s.given, "reach_starts", reach_starts, s.reach_starts);
