@@ -26,6 +26,7 @@ struct OrbitsOptions {
 
 int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   opt.job.params.Validate();
+  opt.job.margins.Validate();
   opt.job.forcing = opt.forcing.Build(false);
   CheckResultOutput(opt.output);
   const OrbitsJobResult result = RunOrbitsJob(opt.job);

@@ -24,6 +24,7 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
   job.params = Params{T0, e};
   job.margins = Margins{margin, margin_stroke, stick_margin};
   job.params.Validate();
+  job.margins.Validate();
   job.forcing = ForceSpec{A, c, std::nullopt, cos, sin}.Build(false);
   job.alpha = alpha;
   job.max_evaluations = max_evaluations;

@@ -28,12 +28,6 @@ FromRestOptions FromRestOptionsFor(const OptimizeJobOptions& options) {
   return check;
 }
 
-// The reach search of the job: its effort, the request's force bound, the job's check.
-ReachOptions ReachOptionsFor(const OptimizeJobOptions& options, const ReachEffort& effort,
-                             double alpha) {
-  return effort.Options(options.search.gait.force_bound, alpha, FromRestOptionsFor(options));
-}
-
 // How far the main job's motions carry: their continuations (asking the job's interrupt) and
 // the speed bands of their robots from rest over the job's check grid.
 RobustnessOptions RobustnessOptionsFor(const OptimizeJobOptions& options, const MainJob& job) {
@@ -87,7 +81,7 @@ MainJobResult RunMain(const OptimizeJobOptions& options, const MainJob& job) {
   r.robust = OptimizeForcing(p, ForcingOptionsFor(options.search));
   TellStage(options.on_stage,
             "optimize: 3/5 the fastest motion from rest (simulated starts; up to a minute)");
-  r.reach = OptimizeReach(p, r.robust, ReachOptionsFor(options, job.reach, kNaN));
+  r.reach = OptimizeReach(p, r.robust, options.ReachOptionsOf(job.reach, kNaN));
   TellStage(options.on_stage, "optimize: 3/5 the fastest Fourier and pulse drives from rest");
   FastestDrives(options, job, r);
   TellStage(options.on_stage,
@@ -118,7 +112,7 @@ ReachJobResult RunReach(const OptimizeJobOptions& options, const ReachProblem& j
   TellStage(options.on_stage, fmt::format("optimize: 2/{} the fastest motion from rest of the sine "
                                           "(simulated starts; up to a minute)",
                                           sine ? 2 : 3));
-  ReachOptions sine_options = ReachOptionsFor(options, job.reach, job.alpha);
+  ReachOptions sine_options = options.ReachOptionsOf(job.reach, job.alpha);
   sine_options.T0_min = job.T0_min;
   sine_options.T0_max = job.T0_max;
   ReachJobResult r{
@@ -182,6 +176,13 @@ ReachEffort MainJob::MainJobDriveEffort() {
   return e;
 }
 
+ReachOptions OptimizeJobOptions::ReachOptionsOf(const ReachEffort& effort, double alpha) const {
+  ReachOptions r = effort.Options(search.gait.force_bound, alpha, FromRestOptionsFor(*this));
+  r.seed_design.gait.margins = search.gait.margins;
+  r.seed_design.gait.rho_max = search.gait.rho_max;
+  return r;
+}
+
 SearchRequest OptimizeJobOptions::RobustRequest() {
   SearchRequest r;
   r.gait.rho_max = kRobustRhoMax;
@@ -218,13 +219,13 @@ void OptimizeJobOptions::Validate() const {
           fmt::format("drive_harmonics = {} is invalid: expected 2 <= drive_harmonics <= {}",
                       job->drive_harmonics, kMaxHarmonics));
     }
-    ReachOptionsFor(*this, job->reach, kNaN).Validate();
+    ReachOptionsOf(job->reach, kNaN).Validate();
     RobustnessOptionsFor(*this, *job).Validate();
   }
   if (const auto* job = std::get_if<ReachProblem>(&mode)) {
     job->reach.Validate();
     job->drive.Validate();
-    ReachOptions reach = ReachOptionsFor(*this, job->reach, job->alpha);
+    ReachOptions reach = ReachOptionsOf(job->reach, job->alpha);
     reach.T0_min = job->T0_min;
     reach.T0_max = job->T0_max;
     reach.Validate();

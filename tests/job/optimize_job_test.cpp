@@ -161,6 +161,33 @@ TEST(OptimizeJob, AnInterruptAbandonsTheJob) {
   EXPECT_EQ(asked, 3);
 }
 
+// The seeds a reach search computes itself (one per motor frequency with T0 free) ask for the
+// job's gait, as its robust seed does: the request's margins and rho_max, whatever they are.
+TEST(OptimizeJob, TheReachSearchsOwnSeedsAskForTheJobsGait) {
+  OptimizeJobOptions job;
+  job.check = SmallCheck();
+  job.search.gait.margins = Margins{0.05, 0.1, 0.2};
+  job.search.gait.rho_max = 0.8;
+  job.search.gait.force_bound = 0.7;
+  ReachEffort effort;
+  effort.global_evaluations = 7;
+  const ReachOptions r = job.ReachOptionsOf(effort, 0.4);
+  EXPECT_EQ(r.seed_design.gait.margins.clearance, 0.05);
+  EXPECT_EQ(r.seed_design.gait.margins.clearance_stroke, 0.1);
+  EXPECT_EQ(r.seed_design.gait.margins.stick, 0.2);
+  EXPECT_EQ(r.seed_design.gait.rho_max, 0.8);
+  EXPECT_EQ(r.force_bound, 0.7);
+  EXPECT_EQ(r.alpha, 0.4);
+  EXPECT_EQ(r.global_evaluations, 7);
+  EXPECT_EQ(r.check.n_x, 3);
+  // The defaults: the robust gait of the library's own default seed.
+  const ReachOptions robust = OptimizeJobOptions{}.ReachOptionsOf(ReachEffort{}, kNaN);
+  EXPECT_EQ(robust.seed_design.gait.margins.clearance_stroke,
+            RobustSeedDesign().gait.margins.clearance_stroke);
+  EXPECT_EQ(robust.seed_design.gait.margins.stick, RobustSeedDesign().gait.margins.stick);
+  EXPECT_EQ(robust.seed_design.gait.rho_max, RobustSeedDesign().gait.rho_max);
+}
+
 TEST(OptimizeJob, ModeNamesAreTheProblemNames) {
   EXPECT_STREQ(OptimizeModeName(MainJob{}), "");
   EXPECT_STREQ(OptimizeModeName(PhaseProblem{}), "phase");

@@ -42,7 +42,7 @@ using StartMapRun = std::variant<WholeStartMap, StartMapShard>;
 
 struct AttractorsJobOptions {
   Forcing forcing;             ///< the force F = G(psi + phi0) at the starts' phases psi
-  Params params;               ///< T0 and e (the margins are not used)
+  Params params;               ///< T0 and e
   double alpha = kNaN;         ///< mass ratio m2/(m1+m2); 0 < alpha < 1
   StartGrid starts;            ///< n_x starting positions x n_psi starting phases, from rest
   AttractorOptions attractor;  ///< each start's simulation, the grouping, threads, interrupt

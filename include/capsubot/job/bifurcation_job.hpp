@@ -15,9 +15,9 @@
 namespace capsubot {
 
 struct BifurcationJobOptions {
-  /// The robot: its force, T0 and e (the margins are not used) and its mass ratio alpha,
-  /// 0 < alpha < 1; alpha may be NaN when the diagram steps alpha or the study's second
-  /// parameter is alpha (their first value is then the robot's).
+  /// The robot: its force, T0 and e and its mass ratio alpha, 0 < alpha < 1; alpha may be NaN when
+  /// the diagram steps alpha or the study's second parameter is alpha (their first value is then
+  /// the robot's).
   RobotModel robot;
   /// The diagram: the parameter, its range (from != to) and steps, the directions, the motion,
   /// the start, the second parameter's values, the shard, the threads. Its analytic orbits go

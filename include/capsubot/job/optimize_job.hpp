@@ -88,6 +88,13 @@ struct OptimizeJobOptions {
   /// RobustMargins() and spectral radius <= kRobustRhoMax.
   static SearchRequest RobustRequest();
 
+  /// The options of a reach search of this job with `effort` and mass ratio `alpha` (NaN:
+  /// free): the request's force bound, the job's check from rest (asking the request's
+  /// interrupt), and the seeds the search computes itself (one per motor frequency when T0 is
+  /// free) asking for the request's gait (its margins and rho_max), as the robust gait that
+  /// seeds it does.
+  ReachOptions ReachOptionsOf(const ReachEffort& effort, double alpha) const;
+
   /// Throws std::invalid_argument naming the first bad field, its value and the rule.
   void Validate() const;
 };

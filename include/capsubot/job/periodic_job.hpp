@@ -38,7 +38,7 @@ using PeriodicStart = std::variant<PeriodicFromState, PeriodicFromRest, Periodic
 
 struct PeriodicJobOptions {
   Forcing forcing;      ///< the force F = G(psi + phi0) at the start's phase psi
-  Params params;        ///< T0 and e (the margins are not used)
+  Params params;        ///< T0 and e
   double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
   PeriodicStart start;  ///< a state, from rest, or a state with its period
   /// Newton's method and the simulator (max_period, step, chatter_velocity, ..., interrupt);

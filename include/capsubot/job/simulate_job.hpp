@@ -34,7 +34,7 @@ using SimulateStart = std::variant<SimulateFromState, SimulateFromOrbit>;
 
 struct SimulateJobOptions {
   Forcing forcing;      ///< the force F(phi) = G(phi + phi0), phi = 0 at the start
-  Params params;        ///< T0 and e (the margins are not used)
+  Params params;        ///< T0 and e
   SimulateStart start;  ///< a state, or the analytic orbit
   /// The run: y0, periods, transient, chatter_velocity, max_events_per_period (at most
   /// kMaxEventsPerPeriod) and the simulator's other settings. The job sets its start (alpha,

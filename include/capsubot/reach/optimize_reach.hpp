@@ -194,7 +194,7 @@ struct ReachResult {
 };
 
 /// The fastest motion from rest with A + c <= bound, seeded by the robust P2 gait (computed
-/// with options.seed_design on params with the seed's margins). Throws std::invalid_argument
+/// with options.seed_design: its margins and rho_max, on params). Throws std::invalid_argument
 /// for bad params or options. Every evaluation asks options.search.attractor.interrupt, the
 /// re-checks options.check.attractor.interrupt, the seed's P2 options.seed_design.interrupt
 /// (interrupt.hpp): set all three to abandon the run from outside.
