@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "capsubot/attract/start_grid.hpp"
@@ -40,9 +41,30 @@ const std::vector<SettingUse>& OptimizeSettingUses() {
   return uses;
 }
 
+namespace {
+
+// The budgets of the search of a drive (a Fourier drive of K >= 2, or a pulse drive).
+constexpr const char* kDriveBudgets[] = {"drive_evaluations", "drive_polishes",
+                                         "drive_local_evaluations", "drive_refine_evaluations",
+                                         "drive_screens"};
+
+// Whether the reach problem of `s` searches a drive beyond the sine: a pulse drive, or a Fourier
+// drive of K >= 2 harmonics (K = 1 is the sine: no drive search runs).
+bool SearchesDrive(const OptimizeSettings& s) {
+  return s.waveform == "pulse" ||
+         (s.search.harmonics >= 2 && (s.Given("harmonics") || s.waveform == "fourier"));
+}
+
+}  // namespace
+
 std::vector<std::string> UnusedOptimizeSettings(const OptimizeSettings& settings) {
   std::vector<std::string> unused = UnusedSettings(OptimizeSettingUses(), settings.problem);
   if (settings.search.global_algorithm == kMultistart) unused.emplace_back("global_evaluations");
+  if (settings.problem == "reach") {
+    if (!SearchesDrive(settings))
+      unused.insert(unused.end(), std::begin(kDriveBudgets), std::end(kDriveBudgets));
+    if (settings.waveform != "pulse") unused.emplace_back("pulse_levels");
+  }
   return unused;
 }
 
@@ -55,12 +77,8 @@ namespace {
 
 // The budgets of a drive search want a drive: a Fourier drive of K >= 2 or a pulse drive.
 void RejectDriveBudgetsWithoutDrive(const OptimizeSettings& s, const SettingNames& names) {
-  // A Fourier drive of K = 1 harmonic is the sine: no drive search runs.
-  const bool drives = s.waveform == "pulse" || (s.search.harmonics >= 2 &&
-                                                (s.Given("harmonics") || s.waveform == "fourier"));
-  if (drives) return;
-  for (const char* field : {"drive_evaluations", "drive_polishes", "drive_local_evaluations",
-                            "drive_refine_evaluations", "drive_screens"}) {
+  if (SearchesDrive(s)) return;
+  for (const char* field : kDriveBudgets) {
     if (!s.Given(field)) continue;
     const std::string name = names.Name(field);
     throw std::invalid_argument(fmt::format(

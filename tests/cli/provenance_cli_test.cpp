@@ -113,6 +113,15 @@ std::vector<ProvenanceCase> Cases() {
        "--from-rest-starts",
        "1x1",
        {"--threads", "--harmonics", "--hops", "--reach-starts", "--global-evaluations"}},
+      // The reach problem of the sine runs no drive search: its budgets are left out.
+      {"OptimizeReachSine",
+       "optimize",
+       "--problem reach --from-rest-starts 2x2 --reach-starts 2x2 --reach-evaluations 10 "
+       "--reach-local-evaluations 5 --hops 2 --starts 3 --json",
+       "--reach-evaluations",
+       "10",
+       {"--drive-evaluations", "--drive-polishes", "--drive-local-evaluations",
+        "--drive-refine-evaluations", "--drive-screens", "--pulse-levels"}},
       {"Attractors",
        "attractors",
        kRobot + " --starts 2x2 --transient 40 --record 16 --threads 1 --json",

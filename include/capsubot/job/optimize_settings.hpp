@@ -50,7 +50,9 @@ const std::vector<SettingUse>& OptimizeSettingUses();
 std::string OptimizeProblemName(const std::string& problem, const SettingNames& names);
 
 /// The settings that do not shape the output of the problem `settings` asks for: those its
-/// problem does not use, and global_evaluations under the multistart global stage.
+/// problem does not use, global_evaluations under the multistart global stage, and for the
+/// reach problem the drive budgets without a drive search beyond the sine and pulse_levels
+/// without a pulse drive.
 std::vector<std::string> UnusedOptimizeSettings(const OptimizeSettings& settings);
 
 /// The job `settings` ask for. Throws std::invalid_argument, in `names`, for a setting given to
