@@ -157,9 +157,9 @@ DesignFromRestPart FromRestPart(const FromRestCliOptions& cli) {
   DesignFromRestPart part;
   part.reach_starts = ParseStartGrid("--reach-starts", cli.reach_starts);
   part.from_rest_starts = ParseStartGrid("--from-rest-starts", cli.starts);
-  part.reach_evaluations = cli.reach_evaluations;
-  part.reach_local_evaluations = cli.reach_local_evaluations;
-  part.reach_seconds = cli.reach_seconds;
+  part.reach_evaluations = cli.budgets.global_evaluations;
+  part.reach_local_evaluations = cli.budgets.local_evaluations;
+  part.reach_seconds = cli.budgets.max_seconds;
   part.threads = cli.threads;
   return part;
 }
@@ -234,7 +234,6 @@ DesignDriveMode DriveMode(const DesignCliOptions& opt) {
   d.force_max = opt.force_max;
   d.effort = opt.from_rest.Effort();
   d.check = opt.from_rest.Check();
-  d.effort.max_seconds = opt.from_rest.reach_seconds;
   return mode;
 }
 
@@ -313,9 +312,9 @@ Command AddDesignCommand(CLI::App& app) {
   AddDesignConfigOptions(*cmd, opt->config);
   // The from-rest options of `optimize --problem reach`, with the design's smaller budgets.
   const DesignFromRestPart defaults;
-  opt->from_rest.reach_evaluations = defaults.reach_evaluations;
-  opt->from_rest.reach_local_evaluations = defaults.reach_local_evaluations;
-  opt->from_rest.reach_seconds = defaults.reach_seconds;
+  opt->from_rest.budgets.global_evaluations = defaults.reach_evaluations;
+  opt->from_rest.budgets.local_evaluations = defaults.reach_local_evaluations;
+  opt->from_rest.budgets.max_seconds = defaults.reach_seconds;
   AddFromRestOptions(*cmd, opt->from_rest, true);
   cmd->add_flag("--from-rest", opt->part_b,
                 "also find the fastest motion reached from rest in each direction (part b, "

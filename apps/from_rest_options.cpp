@@ -20,21 +20,8 @@ FromRestOptions FromRestCliOptions::Check() const {
   return o;
 }
 
-ReachEffort FromRestCliOptions::Budgets() const {
-  ReachEffort effort;
-  effort.global_evaluations = reach_evaluations;
-  effort.local_evaluations = reach_local_evaluations;
-  effort.max_seconds = reach_seconds;
-  effort.drive_evaluations = drive_evaluations;
-  effort.drive_polishes = drive_polishes;
-  effort.drive_local_evaluations = drive_local_evaluations;
-  effort.drive_refine_evaluations = drive_refine_evaluations;
-  effort.drive_screens = drive_screens;
-  return effort;
-}
-
 ReachEffort FromRestCliOptions::Effort() const {
-  ReachEffort effort = Budgets();
+  ReachEffort effort = budgets;
   const StartGrid grid = ParseStartGrid("--reach-starts", reach_starts);
   effort.n_x = grid.n_x;
   effort.n_psi = grid.n_psi;
@@ -54,7 +41,7 @@ void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
   if (!reach) return;
   AddReachBudgetOptions(cmd, o);
   cmd.add_option(
-         "--reach-seconds", o.reach_seconds,
+         "--reach-seconds", o.budgets.max_seconds,
          "wall-clock limit of the reach search in seconds, looked at between two evaluations of "
          "its grid (the re-checks come on top)")
       ->capture_default_str();
@@ -65,32 +52,32 @@ namespace {
 // A budget of the reach search: its flag, its field, its help (its default is shown).
 struct BudgetFlag {
   const char* flag;
-  int FromRestCliOptions::*field;
+  int ReachEffort::*field;
   const char* help;
 };
 
 // The evaluation budgets of the reach search's stages, in the order of --help.
 const BudgetFlag kReachBudgets[] = {
-    {"--reach-evaluations", &FromRestCliOptions::reach_evaluations,
+    {"--reach-evaluations", &ReachEffort::global_evaluations,
      "from-rest evaluations of the reach search's global stage (DIRECT-L), >= 1"},
-    {"--reach-local-evaluations", &FromRestCliOptions::reach_local_evaluations,
+    {"--reach-local-evaluations", &ReachEffort::local_evaluations,
      "from-rest evaluations of the reach search's local polish (Sbplx), >= 0"},
 };
 
 // The budgets of each Fourier drive K >= 2 and pulse drive, in the order of --help.
 const BudgetFlag kDriveBudgets[] = {
-    {"--drive-evaluations", &FromRestCliOptions::drive_evaluations,
+    {"--drive-evaluations", &ReachEffort::drive_evaluations,
      "from-rest evaluations of the first global stage (Halton points of the box) of each "
      "Fourier drive K >= 2 (--harmonics) and pulse drive, >= 1"},
-    {"--drive-polishes", &FromRestCliOptions::drive_polishes,
+    {"--drive-polishes", &ReachEffort::drive_polishes,
      "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best distinct points, "
      ">= 1"},
-    {"--drive-local-evaluations", &FromRestCliOptions::drive_local_evaluations,
+    {"--drive-local-evaluations", &ReachEffort::drive_local_evaluations,
      "from-rest evaluations of each of those polishes, >= 0"},
-    {"--drive-refine-evaluations", &FromRestCliOptions::drive_refine_evaluations,
+    {"--drive-refine-evaluations", &ReachEffort::drive_refine_evaluations,
      "from-rest evaluations of the controlled random search (GN_CRS2_LM) after the Halton "
      "points, from the best of them, >= 0"},
-    {"--drive-screens", &FromRestCliOptions::drive_screens,
+    {"--drive-screens", &ReachEffort::drive_screens,
      "short local screens (Nelder-Mead, a quarter of a polish's evaluations each) before the "
      "polishes, from the best distinct points, >= 0"},
 };
@@ -98,7 +85,7 @@ const BudgetFlag kDriveBudgets[] = {
 template <std::size_t N>
 void AddBudgets(CLI::App& cmd, FromRestCliOptions& o, const BudgetFlag (&budgets)[N]) {
   for (const BudgetFlag& b : budgets) {
-    cmd.add_option(b.flag, o.*b.field, b.help)->capture_default_str();
+    cmd.add_option(b.flag, o.budgets.*b.field, b.help)->capture_default_str();
   }
 }
 

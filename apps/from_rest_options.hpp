@@ -18,23 +18,15 @@ struct FromRestCliOptions {
   std::string starts = StartGrid{}.Text();  ///< --from-rest-starts: the full grid NXxNPSI
   /// --reach-starts: the grid inside the reach search
   std::string reach_starts = StartGrid{ReachEffort{}.n_x, ReachEffort{}.n_psi}.Text();
-  int reach_evaluations = ReachOptions{}.global_evaluations;       ///< --reach-evaluations
-  int reach_local_evaluations = ReachOptions{}.local_evaluations;  ///< --reach-local-evaluations
-  double reach_seconds = ReachOptions{}.max_seconds;               ///< --reach-seconds
-  int drive_evaluations = ReachEffort{}.drive_evaluations;         ///< --drive-evaluations
-  int drive_polishes = ReachEffort{}.drive_polishes;               ///< --drive-polishes
-  int drive_local_evaluations =
-      ReachEffort{}.drive_local_evaluations;  ///< --drive-local-evaluations
-  int drive_refine_evaluations =
-      ReachEffort{}.drive_refine_evaluations;       ///< --drive-refine-evaluations
-  int drive_screens = ReachEffort{}.drive_screens;  ///< --drive-screens
-  int threads = 0;                                  ///< --threads
+  /// The budgets and time limit of the reach search: --reach-evaluations,
+  /// --reach-local-evaluations, --reach-seconds and the --drive-* budgets (its grid: the
+  /// default; --reach-starts gives it).
+  ReachEffort budgets;
+  int threads = 0;  ///< --threads
 
   /// The full from-rest settings (grid of --from-rest-starts); throws std::invalid_argument
   /// naming the option for a bad grid.
   FromRestOptions Check() const;
-  /// The budgets and time limit of the reach search (its grid: the default).
-  ReachEffort Budgets() const;
   /// The effort of the reach search (grid of --reach-starts, budgets, time limit); throws
   /// std::invalid_argument naming the option for a bad grid.
   ReachEffort Effort() const;

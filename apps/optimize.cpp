@@ -99,7 +99,7 @@ OptimizeSettings SettingsOf(const OptimizeCliOptions& opt) {
   if (s.problem == "reach") std::tie(s.T0_min, s.T0_max) = ParseT0Range(opt.T0_range);
   s.from_rest_starts = opt.from_rest.starts;
   s.reach_starts = opt.from_rest.reach_starts;
-  s.reach = opt.from_rest.Budgets();
+  s.reach = opt.from_rest.budgets;
   s.threads = opt.from_rest.threads;
   return s;
 }

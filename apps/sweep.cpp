@@ -68,8 +68,8 @@ SweepSettings SettingsOf(const SweepCliOptions& opt, const CLI::App& cmd) {
   if (s.Given("starts")) s.search.starts = opt.starts;
   s.from_rest_starts = opt.from_rest.starts;
   s.reach_starts = opt.from_rest.reach_starts;
-  s.reach_evaluations = opt.from_rest.reach_evaluations;
-  s.reach_local_evaluations = opt.from_rest.reach_local_evaluations;
+  s.reach_evaluations = opt.from_rest.budgets.global_evaluations;
+  s.reach_local_evaluations = opt.from_rest.budgets.local_evaluations;
   if (!opt.shard.empty()) std::tie(s.file.shard, s.file.shards) = ParseShard(opt.shard);
   return s;
 }
