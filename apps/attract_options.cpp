@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "capsubot/job/motion_settings.hpp"
 #include "progress.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 
@@ -17,32 +19,7 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   cmd.add_option("--alpha", o.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
       ->required();
   if (!with_motion) return;
-  cmd.add_option("--transient", o.motion.transient,
-                 "forcing periods simulated before the motion is recorded, >= 0")
-      ->capture_default_str();
-  cmd.add_option(
-         "--record", o.motion.record,
-         "forcing periods recorded (period, impacts, mean velocity), 2 max-period <= N <= 1e7 "
-         "(about 50 bytes a period per thread)")
-      ->capture_default_str();
-  cmd.add_option("--max-period", o.motion.max_period,
-                 "largest period searched, in forcing periods (0 is reported when none is found)")
-      ->capture_default_str();
-  cmd.add_option("--state-tolerance", o.motion.state_tolerance,
-                 "two states of the stroboscopic map are the same when x, u, v differ by at most "
-                 "this")
-      ->capture_default_str();
-  cmd.add_option("--converged-tolerance", o.motion.converged_tolerance,
-                 "early stop: a motion whose states already repeat to this tolerance is periodic "
-                 "(0: always run the whole transient and record)")
-      ->capture_default_str();
-  cmd.add_option("--chatter-velocity", o.motion.chatter_velocity,
-                 "an impact slower than this (omega L) with the inner body pushed into the wall "
-                 "ends a chattering sequence: the body then rests on the wall")
-      ->capture_default_str();
-  cmd.add_option("--max-events-per-period", o.motion.max_events_per_period,
-                 "work bound: a start needing more events per period ends as event_limit")
-      ->capture_default_str();
+  AddSettings(cmd, o.motion, MotionSettings(), MotionFlagNames());
 }
 
 std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {

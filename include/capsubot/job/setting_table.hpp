@@ -1,0 +1,35 @@
+#pragma once
+// A job's settings as the front ends offer them: one row per field of an options struct, with
+// what it means and the range a front end checks while reading it. The library writes each
+// help once; it names the other settings by their fields in braces ("at most {max_period}"),
+// and a front end writes them in its own names (HelpIn), as it does the library's messages.
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "capsubot/job/setting_names.hpp"
+
+namespace capsubot {
+
+/// One setting: the field of `Options` it sets and what it means.
+template <class Options>
+struct SettingRow {
+  const char* field;  ///< the name the rules and messages use, "max_period"
+  std::variant<double Options::*, int Options::*, std::int64_t Options::*, bool Options::*> member;
+  const char* help;  ///< what it means and the rule of its value, fields in braces
+  /// An integer's range, checked while reading it (lo < hi), or none (lo == hi).
+  std::int64_t lo = 0, hi = 0;
+  bool show_default = true;  ///< whether the front end shows the default value
+};
+
+/// The settings of one options struct, in the order a front end lists them.
+template <class Options>
+using SettingTable = std::vector<SettingRow<Options>>;
+
+/// `help` with each "{field}" whose field has an entry in `names` written as its name there
+/// ("{max_period}" -> "--max-period"); other braces ("{x, u, v}") are kept.
+std::string HelpIn(const std::string& help, const FlagNames& names);
+
+}  // namespace capsubot
