@@ -12,7 +12,7 @@ namespace capsubot::app {
 
 /// Adds one option per row of `table` to `cmd` (a flag for a bool field), named by `flags`,
 /// bound to the row's field of `options`, with the row's help in the flags' names, its range
-/// (Bounded) and its default (unless the row hides it).
+/// (Bounded), its default (unless the row hides it) and its type name (when the row has one).
 template <class Options>
 void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& table,
                  const FlagNames& flags) {
@@ -29,6 +29,7 @@ void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& t
             CLI::Option* option = cmd.add_option(flag, field, help);
             if (row.lo < row.hi) Bounded(option, row.lo, row.hi);
             if (row.show_default) option->capture_default_str();
+            if (row.type_name != nullptr) option->type_name(row.type_name);
           }
         },
         row.member);

@@ -17,11 +17,15 @@ namespace capsubot {
 template <class Options>
 struct SettingRow {
   const char* field;  ///< the name the rules and messages use, "max_period"
-  std::variant<double Options::*, int Options::*, std::int64_t Options::*, bool Options::*> member;
+  std::variant<double Options::*, int Options::*, std::int64_t Options::*, bool Options::*,
+               std::string Options::*>
+      member;
   const char* help;  ///< what it means and the rule of its value, fields in braces
   /// An integer's range, checked while reading it (lo < hi), or none (lo == hi).
   std::int64_t lo = 0, hi = 0;
   bool show_default = true;  ///< whether the front end shows the default value
+  /// The kind of value a front end shows in its help ("FILE", "NXxNPSI"); nullptr: the type's.
+  const char* type_name = nullptr;
 };
 
 /// The settings of one options struct, in the order a front end lists them.
