@@ -5,13 +5,7 @@
 namespace capsubot::json {
 
 nlohmann::json MotionJson(const Motion& m) {
-  nlohmann::json j;
-  j["status"] = MotionStatusName(m.status);
-  j["period"] = m.period;
-  j["impacts_right"] = m.impacts_right;
-  j["impacts_left"] = m.impacts_left;
-  j["mean_velocity"] = m.mean_velocity;  // NaN is written as null
-  return j;
+  return MotionCountsJson(MotionStatusName(m.status), m);
 }
 
 nlohmann::json AttractorsJson(const Attractors& a) {

@@ -1,16 +1,12 @@
 #include "capsubot/report/periodic_json.hpp"
 
+#include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/forcing_json.hpp"
 
 namespace capsubot::json {
 
 nlohmann::json PeriodicJson(const PeriodicMotion& m) {
-  nlohmann::json j;
-  j["status"] = ShootingStatusName(m.status);
-  j["period"] = m.period;
-  j["impacts_right"] = m.impacts_right;
-  j["impacts_left"] = m.impacts_left;
-  j["mean_velocity"] = m.mean_velocity;
+  nlohmann::json j = MotionCountsJson(ShootingStatusName(m.status), m);
   j["state"] = {{"x", m.state.x}, {"u", m.state.u}, {"v", m.state.v}, {"psi", m.state.psi}};
   j["mode"] = SimModeName(m.mode);
   j["dimension"] = m.dimension;

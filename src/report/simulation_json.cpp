@@ -24,16 +24,16 @@ void AddTallyJson(nlohmann::json& j, const SimTally& t) {
 
 nlohmann::json SimulationJson(const SimResult& r, const SimOptions& sim, const Solution* orbit) {
   const SimState& f = r.final_state;
-  nlohmann::json j;
-  j["status"] = SimStatusName(r.status);
-  j["message"] = r.message;
-  j["alpha"] = sim.alpha;
-  j["phi"] = f.phi;
-  j["x"] = f.x;
-  j["u"] = f.u;
-  j["v"] = f.v;
-  j["y"] = f.y;
-  j["mode"] = SimModeName(f.mode);
+  // The run's end: its status and final state.
+  nlohmann::json j = {{"status", SimStatusName(r.status)},
+                      {"message", r.message},
+                      {"alpha", sim.alpha},
+                      {"phi", f.phi},
+                      {"x", f.x},
+                      {"u", f.u},
+                      {"v", f.v},
+                      {"y", f.y},
+                      {"mode", SimModeName(f.mode)}};
   AddTallyJson(j, r);
   if (sim.transient > 0.0) {
     nlohmann::json t;

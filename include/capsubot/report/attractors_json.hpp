@@ -12,8 +12,19 @@
 
 namespace capsubot::json {
 
-/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity"} of a motion (null
-/// for what was not found).
+/// {"status", "period", "impacts_right", "impacts_left", "mean_velocity"}: what a motion of
+/// any kind says of itself (a Motion of the map, a PeriodicMotion found by shooting), with its
+/// status named `status`; NaN is written as null.
+template <class AnyMotion>
+nlohmann::json MotionCountsJson(const char* status, const AnyMotion& m) {
+  return {{"status", status},
+          {"period", m.period},
+          {"impacts_right", m.impacts_right},
+          {"impacts_left", m.impacts_left},
+          {"mean_velocity", m.mean_velocity}};
+}
+
+/// MotionCountsJson of a motion of the map (null for what was not found).
 nlohmann::json MotionJson(const Motion& motion);
 
 /// The attractors object: {"starts", "attractors": [...], "mean_velocity",
