@@ -167,7 +167,11 @@ Forcing ForcingOptions::Build(bool need_phase) const {
     spec.sin = Sines();
     if (!cos_text.empty()) spec.cos = Cosines();
   }
-  return spec.Build(need_phase, "--");
+  static const FlagNames kForceFlags = {{"A", "--A"},           {"c", "--c"},
+                                        {"phi0", "--phi0"},     {"sin", "--sin"},
+                                        {"cos", "--cos"},       {"waveform", "--waveform"},
+                                        {"levels", "--levels"}, {"switches", "--switches"}};
+  return spec.Build(need_phase, kForceFlags);
 }
 
 void AddParamsOptions(CLI::App& cmd, Params& p, Margins* margins) {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/model/limits.hpp"

@@ -2,7 +2,7 @@
 // The flags of the design job's settings that only some runs use: the command line's table of
 // names for the library's rule (DesignSettingUses) and its provenance.
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot::app {
 

@@ -2,7 +2,7 @@
 // The flags of the optimize job's settings: the command line's one table of names for the
 // library's rules (OptimizeJobFrom) and its provenance.
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot::app {
 

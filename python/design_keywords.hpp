@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot::python {
 

@@ -2,7 +2,7 @@
 // The keywords of the optimize job's settings: each keyword is its setting's field name
 // (OptimizeSettings), but for the fields of the lower stages' messages named otherwise.
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot::python {
 

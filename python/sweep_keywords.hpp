@@ -2,7 +2,7 @@
 // The keywords of the sweep job's settings: each keyword is its setting's field name
 // (SweepSettings), but for the fields of the lower stages' messages named otherwise.
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot::python {
 

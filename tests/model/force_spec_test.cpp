@@ -12,9 +12,15 @@
 namespace capsubot {
 namespace {
 
-std::string Refusal(const ForceSpec& spec, bool need_phase, const std::string& prefix) {
+// A front end that names the parameters by flags.
+const FlagNames kFlags = {{"A", "--A"},           {"c", "--c"},
+                          {"phi0", "--phi0"},     {"sin", "--sin"},
+                          {"cos", "--cos"},       {"waveform", "--waveform"},
+                          {"levels", "--levels"}, {"switches", "--switches"}};
+
+std::string Refusal(const ForceSpec& spec, bool need_phase, const FlagNames& names) {
   try {
-    spec.Build(need_phase, prefix);
+    spec.Build(need_phase, names);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -39,17 +45,18 @@ TEST(ForceSpec, BuildsTheHarmonicForceAndTheSeries) {
 
 TEST(ForceSpec, NamesWhatIsMissingOrContradictoryInTheFrontEndsTerms) {
   const ForceSpec no_phase{0.5, 0.2, std::nullopt, std::nullopt, std::nullopt};
-  EXPECT_EQ(Refusal(no_phase, false, ""), "");
-  EXPECT_EQ(Refusal(no_phase, true, ""), "phi0 is missing: give the impact phase phi0 [rad]");
-  EXPECT_EQ(Refusal(no_phase, true, "--"), "--phi0 is missing: give the impact phase phi0 [rad]");
+  EXPECT_EQ(Refusal(no_phase, false, {}), "");
+  EXPECT_EQ(Refusal(no_phase, true, {}), "phi0 is missing: give the impact phase phi0 [rad]");
+  EXPECT_EQ(Refusal(no_phase, true, kFlags), "--phi0 is missing: give the impact phase phi0 [rad]");
   const ForceSpec nothing{std::nullopt, 0.2, 0.0, std::nullopt, std::nullopt};
-  EXPECT_EQ(Refusal(nothing, true, "--"), "--A is missing: give the amplitude A (or --sin/--cos)");
+  EXPECT_EQ(Refusal(nothing, true, kFlags),
+            "--A is missing: give the amplitude A (or --sin/--cos)");
   const ForceSpec both{0.5, 0.2, 0.0, std::nullopt, std::vector<double>{0.1}};
-  EXPECT_EQ(Refusal(both, true, "").rfind("A and sin are exclusive", 0), 0U);
+  EXPECT_EQ(Refusal(both, true, {}).rfind("A and sin are exclusive", 0), 0U);
   const ForceSpec cos_alone{std::nullopt, 0.2, 0.0, std::vector<double>{0.1}, std::nullopt};
-  EXPECT_EQ(Refusal(cos_alone, true, "").rfind("cos needs sin", 0), 0U);
+  EXPECT_EQ(Refusal(cos_alone, true, {}).rfind("cos needs sin", 0), 0U);
   const ForceSpec empty{std::nullopt, 0.2, 0.0, std::nullopt, std::vector<double>{}};
-  EXPECT_EQ(Refusal(empty, true, "").rfind("sin = [] is invalid", 0), 0U);
+  EXPECT_EQ(Refusal(empty, true, {}).rfind("sin = [] is invalid", 0), 0U);
 }
 
 TEST(ForceSpec, BuildsAPulseForceFromItsLevelsAndSwitches) {
@@ -72,31 +79,31 @@ TEST(ForceSpec, NamesWhatAPulseForceMissesOrMayNotHave) {
   ForceSpec pulse;
   pulse.waveform = "pulse";
   pulse.levels = std::vector<double>{0.5};
-  EXPECT_EQ(Refusal(pulse, true, "--"),
+  EXPECT_EQ(Refusal(pulse, true, kFlags),
             "--switches is missing: a pulse force needs --levels L_1,...,L_N and --switches "
             "s_1,...,s_N [rad]");
   pulse.switches = std::vector<double>{7.0};
-  EXPECT_EQ(Refusal(pulse, true, "--"),
+  EXPECT_EQ(Refusal(pulse, true, kFlags),
             "--switches: s_1 = 7 is invalid: expected 0 <= s < 2 pi (phases in radians)");
   pulse.switches = std::vector<double>{1.0};
   pulse.c = 0.1;
-  EXPECT_EQ(Refusal(pulse, true, ""),
+  EXPECT_EQ(Refusal(pulse, true, {}),
             "c = 0.1 is invalid with waveform pulse: expected no c (the levels give the mean "
             "force)");
   pulse.c.reset();
   pulse.A = 0.3;
-  EXPECT_EQ(Refusal(pulse, true, "--"),
+  EXPECT_EQ(Refusal(pulse, true, kFlags),
             "--waveform pulse takes --levels and --switches: --A is invalid with it");
   ForceSpec fourier{std::nullopt, 0.1, 0.0, std::nullopt, std::vector<double>{0.2}};
   fourier.levels = std::vector<double>{0.5};
   fourier.waveform = "fourier";
-  EXPECT_EQ(Refusal(fourier, true, "--"),
+  EXPECT_EQ(Refusal(fourier, true, kFlags),
             "--levels is invalid with --waveform fourier: expected it only with --waveform pulse");
   fourier.waveform = "square";
-  EXPECT_EQ(Refusal(fourier, true, ""),
+  EXPECT_EQ(Refusal(fourier, true, {}),
             "waveform = 'square' is invalid: expected sine, fourier or pulse");
   const ForceSpec no_c{0.5, std::nullopt, 0.0, std::nullopt, std::nullopt};
-  EXPECT_EQ(Refusal(no_c, true, "--"), "--c is missing: give the mean force c");
+  EXPECT_EQ(Refusal(no_c, true, kFlags), "--c is missing: give the mean force c");
 }
 
 TEST(ForceSpec, TheAnalyticOrbitRefusesAPulseForce) {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
 #include "capsubot/reach/drive_family.hpp"
 

@@ -10,7 +10,7 @@
 
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/optimize_job.hpp"
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
 
 namespace capsubot {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "capsubot/attract/start_grid.hpp"
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
 #include "capsubot/job/sweep_job.hpp"
 #include "capsubot/numerics/not_computed.hpp"

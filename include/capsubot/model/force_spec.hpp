@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "capsubot/model/forcing.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot {
 
@@ -29,9 +30,9 @@ struct ForceSpec {
   /// sin, cos without sin, an empty series, no A and no sin, no c, (with `need_phase`) no phi0,
   /// an unknown waveform, parts of another waveform, a pulse force's bad levels or switches
   /// (Forcing::Pulse) or its c (the levels give the mean).
-  /// Messages name the parameters with `prefix`: "" (A, sin: the Python module) or "--" (--A,
-  /// --sin: the command line).
-  Forcing Build(bool need_phase = true, const std::string& prefix = "") const;
+  /// Messages name the parameters (the fields A, c, phi0, sin, cos, waveform, levels, switches)
+  /// in the front end's `names` (none: the fields themselves, the Python module's keywords).
+  Forcing Build(bool need_phase = true, const FlagNames& names = {}) const;
 };
 
 /// Throws std::invalid_argument "a pulse force is invalid for <what>: ..." for a pulse force:

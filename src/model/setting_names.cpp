@@ -1,4 +1,4 @@
-#include "capsubot/job/setting_names.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 #include <fmt/format.h>
 
