@@ -41,6 +41,15 @@ PhaseState ParseRestStart(const char* name, const std::string& text);
 /// The flags of the long-run options (MotionOptions' fields, threads): for WithFlagNames.
 const FlagNames& MotionFlagNames();
 
+/// The flags of a start: the state's --x0, --u0, --v0, --psi and the other starts --from-rest,
+/// --from-orbit (for StartStateSpec's messages).
+inline const FlagNames kStartFlags = {{"x0", "--x0"},
+                                      {"u0", "--u0"},
+                                      {"v0", "--v0"},
+                                      {"psi", "--psi"},
+                                      {"from_rest", "--from-rest"},
+                                      {"from_orbit", "--from-orbit"}};
+
 /// The start state of a command given as --x0, --u0, --v0 and --psi (all four, or none when
 /// another option gives the start).
 struct StartStateOptions {

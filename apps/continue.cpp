@@ -39,7 +39,7 @@ struct ContinueCommandOptions {
 int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   ContinueJobOptions& job = opt.job;
   const std::optional<PhaseState> state =
-      opt.start_state.Spec().Build(opt.from_orbit, "--", "--from-orbit", "--from-orbit");
+      opt.start_state.Spec().Build(opt.from_orbit, "from_orbit", "--from-orbit", kStartFlags);
   job.start = state ? ContinueStart(*state) : FromOneImpactOrbit{};
   job.forcing = opt.robot.forcing.Build();
   job.params = opt.robot.params;

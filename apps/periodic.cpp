@@ -34,7 +34,7 @@ struct PeriodicCommandOptions {
 PeriodicStart Start(const PeriodicCommandOptions& opt) {
   const bool transient = opt.transient_option->count() > 0;
   const std::optional<PhaseState> state = opt.start_state.Spec().Build(
-      !opt.from_rest.empty(), "--", "--from-rest", "--from-rest X0,PSI");
+      !opt.from_rest.empty(), "from_rest", "--from-rest X0,PSI", kStartFlags);
   if (!state) {
     const PhaseState rest = ParseRestStart("--from-rest", opt.from_rest);
     PeriodicFromRest start;

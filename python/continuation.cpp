@@ -129,7 +129,7 @@ py::dict ContinueBranchDict(
   job.alpha = alpha;
   job.param = param;
   const std::optional<PhaseState> state =
-      StartStateSpec{x0, u0, v0, psi}.Build(from_orbit, "", "from_orbit", "from_orbit=True");
+      StartStateSpec{x0, u0, v0, psi}.Build(from_orbit, "from_orbit", "from_orbit=True");
   job.start = state ? ContinueStart(*state) : FromOneImpactOrbit{};
   job.switch_at = SwitchAt(switch_at);
   job.follow = Follow(param2, from2, to2, follow);

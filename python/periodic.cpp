@@ -25,7 +25,7 @@ PeriodicStart Start(std::optional<double> x0, std::optional<double> u0, std::opt
                     const std::optional<std::pair<double, double>>& from_rest,
                     std::optional<int> transient, std::optional<int> period) {
   const std::optional<PhaseState> given = StartStateSpec{x0, u0, v0, psi}.Build(
-      from_rest.has_value(), "", "from_rest", "from_rest=(x0, psi)");
+      from_rest.has_value(), "from_rest", "from_rest=(x0, psi)");
   if (period && transient) {
     throw std::invalid_argument(
         "period and transient are exclusive: with the period given, Newton starts at the start "

@@ -7,18 +7,19 @@
 #include <string>
 
 #include "capsubot/attract/attractors.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot {
 
 struct StartStateSpec {
   std::optional<double> x0, u0, v0, psi;
 
-  /// The state, or none when `other_given` (the other kind of start). Throws
-  /// std::invalid_argument for both kinds or an incomplete state. Messages name the state's
-  /// parameters with `prefix` ("" or "--"), the other start `other` ("from_rest",
-  /// "--from-rest") and how to ask for it `ask_other` ("from_rest=(x0, psi)").
-  std::optional<PhaseState> Build(bool other_given, const std::string& prefix,
-                                  const std::string& other, const std::string& ask_other) const;
+  /// The state, or none when `other_given` (the other kind of start, the setting `other`:
+  /// "from_rest"). Throws std::invalid_argument for both kinds or an incomplete state; the
+  /// messages name the settings (x0, u0, v0, psi, `other`) in the front end's `names` and say
+  /// how to ask for the other start in its syntax, `ask_other`.
+  std::optional<PhaseState> Build(bool other_given, const std::string& other,
+                                  const std::string& ask_other, const FlagNames& names = {}) const;
 };
 
 }  // namespace capsubot
