@@ -266,17 +266,6 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   return 0;
 }
 
-// The library's field names in messages, as the flags that set them.
-const FlagNames kFlags = {{"band_levels", "--band-levels"},
-                          {"force_max", "--force-max"},
-                          {"harmonics", "--harmonics"},
-                          {"levels", "--pulse-levels"},
-                          {"drive_evaluations", "--drive-evaluations"},
-                          {"drive_polishes", "--drive-polishes"},
-                          {"drive_local_evaluations", "--drive-local-evaluations"},
-                          {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                          {"drive_screens", "--drive-screens"}};
-
 // The options of the drive design (--drive and what sizes it).
 void AddDriveOptions(CLI::App& cmd, DesignCliOptions& opt) {
   cmd.add_option("--drive", opt.drive,
@@ -364,7 +353,7 @@ Command AddDesignCommand(CLI::App& app) {
                       "--force-bias 0.1 --frequency 20 --grid m2=0.2:0.26:4:log "
                       "--grid e=0.5,0.7 -o grid.csv"}});
   // A grid is distributed under mpirun; one design runs on one process.
-  return {cmd, [opt, cmd] { return RunNamingFlags(kFlags, [&] { return Run(*opt, *cmd); }); },
+  return {cmd, [opt, cmd] { return RunNamingFlags(kDesignFlags, [&] { return Run(*opt, *cmd); }); },
           [opt] { return !opt->grids.empty(); }};
 }
 

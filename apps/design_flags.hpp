@@ -6,8 +6,9 @@
 
 namespace capsubot::app {
 
-/// The flag of each setting of the design job that a run may not use, and of the switches that
-/// select the runs (--from-rest, --grid, --drive).
+/// The flag of each setting of the design job that a run may not use, of the switches that
+/// select the runs (--from-rest, --grid, --drive), and of the fields of the lower stages'
+/// messages ("levels" of a pulse drive).
 inline const FlagNames kDesignFlags = {{"from_rest_starts", "--from-rest-starts"},
                                        {"reach_starts", "--reach-starts"},
                                        {"reach_evaluations", "--reach-evaluations"},
@@ -19,6 +20,7 @@ inline const FlagNames kDesignFlags = {{"from_rest_starts", "--from-rest-starts"
                                        {"force_max", "--force-max"},
                                        {"harmonics", "--harmonics"},
                                        {"pulse_levels", "--pulse-levels"},
+                                       {"levels", "--pulse-levels"},
                                        {"drive_evaluations", "--drive-evaluations"},
                                        {"drive_polishes", "--drive-polishes"},
                                        {"drive_local_evaluations", "--drive-local-evaluations"},

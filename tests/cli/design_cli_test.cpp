@@ -387,7 +387,7 @@ std::vector<BadCase> BadCases() {
        "--m2-range = 0.1:x is invalid: expected MIN:MAX with MIN < MAX"},
       {"reach_starts", "--from-rest --reach-starts 0x4" + cfg, "--reach-starts = 0x4 is invalid"},
       {"reach_evaluations", "--from-rest --reach-evaluations 0" + cfg,
-       "reach_evaluations = 0 is invalid: expected 1 <= reach_evaluations <= 100000"},
+       "--reach-evaluations = 0 is invalid: expected 1 <= reach_evaluations <= 100000"},
       {"frequency_range_inverted", "--frequency-range 30:20" + cfg,
        "--frequency-range = 30:20 is invalid: expected MIN:MAX with MIN < MAX"},
       {"frequency_range_empty", "--frequency-range 20:20" + cfg,
@@ -408,19 +408,19 @@ std::vector<BadCase> BadCases() {
        "and frequency in the --config file)"},
       {"rho_max", "--rho-max 0" + cfg, "rho_max = 0 is invalid: expected rho_max > 0"},
       {"grid_name", "--grid mass=1:2:3 -o x.csv" + cfg,
-       "grid mass=1:2:3 is invalid: unknown parameter 'mass': expected one of m1, L, mu, g, e, "
+       "--grid mass=1:2:3 is invalid: unknown parameter 'mass': expected one of m1, L, mu, g, e, "
        "force-amplitude, force-bias, frequency, m2, margin, margin-stroke, stick-margin, "
        "rho-max"},
       {"grid_number", "--grid m2=0x1p-3:0.3:5 -o x.csv" + cfg,
-       "grid m2=0x1p-3:0.3:5 is invalid: lo = '0x1p-3' is not a number"},
+       "--grid m2=0x1p-3:0.3:5 is invalid: lo = '0x1p-3' is not a number"},
       {"grid_domain", "--grid e=0.5,1.5 -o x.csv" + cfg,
-       "grid e=0.5,1.5 is invalid: expected restitutions 0 <= e <= 1"},
+       "--grid e=0.5,1.5 is invalid: expected restitutions 0 <= e <= 1"},
       {"grid_log", "--grid m2=0:0.3:5:log -o x.csv" + cfg,
-       "grid m2=0:0.3:5:log is invalid: expected lo > 0 and hi > 0 for a log grid"},
+       "--grid m2=0:0.3:5:log is invalid: expected lo > 0 and hi > 0 for a log grid"},
       {"grid_infinite", "--grid m1=0.2,inf -o x.csv" + cfg,
-       "grid m1=0.2,inf is invalid: expected finite values (not NaN or infinite)"},
+       "--grid m1=0.2,inf is invalid: expected finite values (not NaN or infinite)"},
       {"grid_rho_max", "--grid rho-max=0,inf -o x.csv" + cfg,
-       "grid rho-max=0,inf is invalid: expected spectral radius bounds rho-max > 0 (inf: no "
+       "--grid rho-max=0,inf is invalid: expected spectral radius bounds rho-max > 0 (inf: no "
        "bound)"},
       {"grid_twice", "--grid e=0.5 --grid e=0.6 -o x.csv" + cfg,
        "grid e=0.6 is invalid: parameter e already has a grid (e=0.5): expected each parameter "
