@@ -4,8 +4,6 @@
 // before the next one it is back there with u = u_impact); bad grids and a missing orbit are
 // refused before anything is written.
 
-#include "capsubot/report/orbit_csv.hpp"
-
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -13,6 +11,7 @@
 #include <vector>
 
 #include "capsubot/model/limits.hpp"
+#include "capsubot/report/orbit_csv.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot {
