@@ -3,16 +3,17 @@
 
 #include <fmt/format.h>
 
-#include <cstdint>
 #include <memory>
 
 #include "capsubot/job/orbits_job.hpp"
+#include "capsubot/job/orbits_settings.hpp"
 #include "capsubot/report/orbits_text.hpp"
 #include "capsubot/report/solution_json.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -20,25 +21,23 @@ namespace {
 struct OrbitsOptions {
   ForcingOptions forcing;
   OrbitsJobOptions job;
-  bool json = false;
-  std::string output;  // -o: the text or JSON printed; empty: standard output
+  ResultOutput output;
 };
+
+const FlagNames kOrbitsFlags = {{"alpha", "--alpha"}, {"max_evaluations", "--max-evaluations"}};
 
 int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   opt.job.params.Validate();
   opt.job.margins.Validate();
   opt.job.forcing = opt.forcing.Build(false);
-  CheckResultOutput(opt.output);
+  CheckResultOutput(opt.output.path);
   const OrbitsJobResult result = RunOrbitsJob(opt.job);
-  if (!opt.json) {
-    WriteResult(opt.output, text::OrbitsJobText(result, "--max-evaluations"));
-    return 0;
-  }
-  const nlohmann::json j = {{"orbits", json::RobotOrbitsJson(result.orbits, result.complete)}};
-  WriteResult(opt.output, JsonOutput(j, JsonProvenance(cmd)));
-  if (!result.complete) {
-    fmt::print(stderr, "capsubot orbits: note: {}\n",
-               text::OrbitsIncompleteNote("--max-evaluations"));
+  const std::string bound = SettingNames{kOrbitsFlags}.Name("max_evaluations");
+  opt.output.Write(cmd, result, json::OrbitsJobJson,
+                   [&](const OrbitsJobResult& r) { return text::OrbitsJobText(r, bound.c_str()); });
+  // The text ends with this note; the JSON says it by "complete": false, and on stderr.
+  if (opt.output.json && !result.complete) {
+    fmt::print(stderr, "capsubot orbits: note: {}\n", text::OrbitsIncompleteNote(bound.c_str()));
   }
   return 0;
 }
@@ -54,20 +53,14 @@ Command AddOrbitsCommand(CLI::App& app) {
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);
   AddParamsOptions(*cmd, opt->job.params, &opt->job.margins);
-  cmd->add_option("--alpha", opt->job.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
-      ->required();
-  Bounded(cmd->add_option("--max-evaluations", opt->job.max_evaluations,
-                          "work bound of the search: evaluations of the orbit equation while "
-                          "refining the circle (default 4000000, far above what the tested "
-                          "forces need); when it is hit, orbits may be missing: a note says so"),
-          1, kMaxOrbitEvaluations)
-      ->capture_default_str();
-  cmd->add_flag("--json", opt->json,
-                "print one JSON object: orbits (an array with one object per orbit, sorted by "
-                "phi0, with the keys of `solve --stability --json` without from_rest, and "
-                "complete: false when the search hit its work bound and orbits may be missing; a "
-                "note on stderr then says so) and provenance");
-  AddResultOutputOption(*cmd, opt->output, "the orbits");
+  AddSettings(*cmd, opt->job, OrbitsSettings(), kOrbitsFlags);
+  cmd->get_option("--alpha")->required();
+  opt->output.Add(*cmd,
+                  "print one JSON object: orbits (an array with one object per orbit, sorted by "
+                  "phi0, with the keys of `solve --stability --json` without from_rest, and "
+                  "complete: false when the search hit its work bound and orbits may be missing; "
+                  "a note on stderr then says so) and provenance",
+                  "the orbits");
   SetExamples(*cmd, {{"every one-impact orbit of the robot with mass ratio 0.28, none "
                       "missed",
                       "orbits --A 0.05 --c 0.02 --T0 0.1 --e 0.5 --alpha 0.28"}});

@@ -8,12 +8,14 @@
 
 #include "attract_options.hpp"
 #include "capsubot/job/periodic_job.hpp"
+#include "capsubot/job/shooting_settings.hpp"
 #include "capsubot/report/periodic_json.hpp"
 #include "capsubot/report/periodic_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -24,10 +26,12 @@ struct PeriodicCommandOptions {
   StartStateOptions start_state;  // --x0, --u0, --v0, --psi
   std::string from_rest;
   int transient = 0;
-  bool json = false;
-  std::string output;  // -o: the text or JSON printed; empty: standard output
+  ResultOutput output;
   CLI::Option* transient_option = nullptr;
 };
+
+const FlagNames kShootingFlags = {
+    {"max_period", "--max-period"}, {"step", "--step"}, {"chatter_velocity", "--chatter-velocity"}};
 
 // The start --from-rest or --x0, --u0, --v0, --psi give, with --transient when given (else
 // the start's default).
@@ -56,10 +60,8 @@ int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {
   o.alpha = opt.robot.alpha;
   o.start = Start(opt);
   o.shooting = opt.shooting;
-  CheckResultOutput(opt.output);
-  const PeriodicJobResult r = RunPeriodicJob(o);
-  WriteResult(opt.output, opt.json ? JsonOutput(json::PeriodicJobJson(r), JsonProvenance(cmd))
-                                   : text::PeriodicJobText(r));
+  CheckResultOutput(opt.output.path);
+  opt.output.Write(cmd, RunPeriodicJob(o), json::PeriodicJobJson, text::PeriodicJobText);
   return 0;
 }
 
@@ -82,21 +84,13 @@ Command AddPeriodicCommand(CLI::App& app) {
   opt->transient_option =
       cmd->add_option("--transient", opt->transient,
                       "periods simulated before shooting (default 200 with --from-rest, else 0)");
-  cmd->add_option("--max-period", opt->shooting.max_period,
-                  "largest period searched, in forcing periods")
-      ->capture_default_str();
-  cmd->add_option("--step", opt->shooting.step,
-                  "step of the central finite differences of the Jacobian")
-      ->capture_default_str();
-  cmd->add_option("--chatter-velocity", opt->shooting.chatter_velocity,
-                  "the simulator's chatter cut-off (omega L)")
-      ->capture_default_str();
-  cmd->add_flag("--json", opt->json,
-                "print one JSON object: status, period, impacts_right, impacts_left, "
-                "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
-                "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
-                "distance_to_unit_circle, residual, iterations, provenance");
-  AddResultOutputOption(*cmd, opt->output, "the motion");
+  AddSettings(*cmd, opt->shooting, ShootingSettings(), kShootingFlags);
+  opt->output.Add(*cmd,
+                  "print one JSON object: status, period, impacts_right, impacts_left, "
+                  "mean_velocity, state {x, u, v, psi}, mode, dimension, multipliers [[re, im], "
+                  "...], spectral_radius, stable, distance_to_plus_one, distance_to_minus_one, "
+                  "distance_to_unit_circle, residual, iterations, provenance",
+                  "the motion");
   SetExamples(*cmd, {{"that motion found exactly by Newton's method from the start at "
                       "rest x0 = 0.5, psi = 1",
                       "periodic --A 0.34063197373861814 --c 0.06410131873607934 "

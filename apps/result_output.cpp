@@ -40,4 +40,9 @@ std::string JsonOutput(nlohmann::json j, const Provenance& provenance) {
   return j.dump() + "\n";
 }
 
+void ResultOutput::Add(CLI::App& cmd, const std::string& json_help, const std::string& what) {
+  cmd.add_flag("--json", json, json_help);
+  AddResultOutputOption(cmd, path, what);
+}
+
 }  // namespace capsubot::app

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "provenance.hpp"
 
@@ -27,5 +28,23 @@ void WriteResult(const std::string& path, const std::string& text);
 /// (`provenance`, e.g. JsonProvenance(cmd)), on one line ended by a newline. A command ends with
 /// WriteResult(path, json ? JsonOutput(...) : text), so that only the output asked is built.
 std::string JsonOutput(nlohmann::json j, const Provenance& provenance);
+
+/// The --json and -o of a command: in which form its result is printed, and where.
+struct ResultOutput {
+  bool json = false;  ///< --json: the JSON object of the result with its provenance
+  std::string path;   ///< -o: the file written; empty or "-": standard output
+
+  /// Adds --json (`json_help`) and -o (AddResultOutputOption with `what`) to `cmd`.
+  void Add(CLI::App& cmd, const std::string& json_help, const std::string& what);
+
+  /// Writes `result`: with --json `to_json(result)` with JsonProvenance(cmd, unused), else
+  /// `to_text(result)` (only the form asked is built), by WriteResult.
+  template <class Result, class ToJson, class ToText>
+  void Write(const CLI::App& cmd, const Result& result, ToJson to_json, ToText to_text,
+             const std::vector<std::string>& unused = {}) const {
+    WriteResult(path,
+                json ? JsonOutput(to_json(result), JsonProvenance(cmd, unused)) : to_text(result));
+  }
+};
 
 }  // namespace capsubot::app

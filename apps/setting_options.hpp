@@ -2,37 +2,59 @@
 // The command line's options of a job's settings, declared from the library's table of them.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "capsubot/job/setting_table.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
 
-/// Adds one option per row of `table` to `cmd` (a flag for a bool field), named by `flags`,
-/// bound to the row's field of `options`, with the row's help in the flags' names, its range
-/// (Bounded), its default (unless the row hides it) and its type name (when the row has one).
+/// Adds the option of `row` to `cmd` (a flag for a bool field), named by `flags`, bound to the
+/// row's field of `options`, with the row's help in the flags' names, its range (Bounded), its
+/// default (unless the row hides it) and its type name (when the row has one).
+template <class Options>
+CLI::Option* AddSetting(CLI::App& cmd, Options& options, const SettingRow<Options>& row,
+                        const FlagNames& flags) {
+  const std::string flag = SettingNames{flags}.Name(row.field);
+  const std::string help = HelpIn(row.help, flags);
+  return std::visit(
+      [&](auto member) -> CLI::Option* {
+        auto& field = options.*member;
+        if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) {
+          return cmd.add_flag(flag, field, help);
+        } else {
+          CLI::Option* option = cmd.add_option(flag, field, help);
+          if (row.lo < row.hi) Bounded(option, row.lo, row.hi);
+          if (row.show_default) option->capture_default_str();
+          if (row.type_name != nullptr) option->type_name(row.type_name);
+          return option;
+        }
+      },
+      row.member);
+}
+
+/// Adds one option per row of `table` to `cmd`, in the table's order (AddSetting).
 template <class Options>
 void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& table,
                  const FlagNames& flags) {
-  const SettingNames names{flags};
-  for (const SettingRow<Options>& row : table) {
-    const std::string flag = names.Name(row.field);
-    const std::string help = HelpIn(row.help, flags);
-    std::visit(
-        [&](auto member) {
-          auto& field = options.*member;
-          if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) {
-            cmd.add_flag(flag, field, help);
-          } else {
-            CLI::Option* option = cmd.add_option(flag, field, help);
-            if (row.lo < row.hi) Bounded(option, row.lo, row.hi);
-            if (row.show_default) option->capture_default_str();
-            if (row.type_name != nullptr) option->type_name(row.type_name);
-          }
-        },
-        row.member);
+  for (const SettingRow<Options>& row : table) AddSetting(cmd, options, row, flags);
+}
+
+/// Adds the options of the rows of `fields` only, in that order: for a command that lists
+/// other options between them. Throws std::logic_error for a field the table has no row of.
+template <class Options>
+void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& table,
+                 const FlagNames& flags, const std::vector<std::string>& fields) {
+  for (const std::string& field : fields) {
+    const auto row = std::find_if(table.begin(), table.end(),
+                                  [&](const SettingRow<Options>& r) { return field == r.field; });
+    if (row == table.end()) throw std::logic_error("no setting " + field + " in the table");
+    AddSetting(cmd, options, *row, flags);
   }
 }
 

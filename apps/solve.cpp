@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/orbit_trajectory_settings.hpp"
 #include "capsubot/job/solve_job.hpp"
+#include "capsubot/report/orbit_csv.hpp"
 #include "capsubot/report/solution_json.hpp"
 #include "capsubot/report/solve_text.hpp"
 #include "commands.hpp"
@@ -15,6 +17,7 @@
 #include "help_format.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -23,29 +26,30 @@ struct SolveOptions {
   ForcingOptions forcing;
   Params params;
   Margins margins;
-  bool json = false;
   bool stability = false;
   std::string trajectory;
-  std::string output;  // -o: the text or JSON printed; empty: standard output
-  int samples = 1001;
+  OrbitTrajectoryOptions grid;  // --samples of --trajectory
+  ResultOutput output;
   FromRestCliOptions from_rest;  // with --stability: the orbit checked from rest
 };
+
+const FlagNames kTrajectoryFlags = {{"trajectory", "--trajectory"}, {"samples", "--samples"}};
 
 // What the trajectory of the orbit does not depend on: the check of the orbit's validity and
 // stability (its margins; the grid of starts from rest).
 const std::vector<std::string> kNotInTrajectory = {"--margin", "--margin-stroke", "--stick-margin",
                                                    "--stability", "--from-rest-starts"};
 
-void WriteTrajectory(const Orbit& o, const std::string& path, int samples, const CLI::App& cmd) {
-  AtomicFile file(path, "--trajectory");
-  auto& out = file.stream();
-  out << OutputProvenance(cmd, kNotInTrajectory).CommentLine() << "phi,x,u,v\n";
-  for (int i = 0; i < samples; ++i) {
-    const double phi = kTau * i / (samples - 1);
-    // phi = 0 is just after the impact, phi = tau just before the next one.
-    out << FormatNumber(phi) << ',' << FormatNumber(o.x(phi)) << ',' << FormatNumber(o.dx(phi))
-        << ',' << FormatNumber(o.v(phi)) << '\n';
+// Writes the trajectory of `orbit` to --trajectory, or says on stderr why not: no orbit.
+void WriteTrajectory(const Orbit& orbit, const SolveOptions& opt, const CLI::App& cmd) {
+  if (!orbit.ok()) {
+    fmt::print(stderr, "capsubot solve: note: --trajectory not written: no orbit ({})\n",
+               StatusName(orbit.status));
+    return;
   }
+  AtomicFile file(opt.trajectory, "--trajectory");
+  file.stream() << OutputProvenance(cmd, kNotInTrajectory).CommentLine();
+  text::WriteOrbitTrajectoryCsv(file.stream(), orbit, opt.grid);
   file.Commit();
 }
 
@@ -56,23 +60,14 @@ int Run(const SolveOptions& opt, const CLI::App& cmd) {
   const FromRestOptions from_rest = opt.from_rest.Check();  // bad grids before any work
   o.forcing = opt.forcing.Build();
   if (opt.stability) o.stability = from_rest;
-  RequireDistinctOutputs({{opt.output, "-o"}, {opt.trajectory, "--trajectory"}});
-  CheckResultOutput(opt.output);
+  RequireDistinctOutputs({{opt.output.path, "-o"}, {opt.trajectory, "--trajectory"}});
+  CheckResultOutput(opt.output.path);
   const SolveJobResult r = RunSolveJob(o);
-  const Orbit& orbit = r.solution.orbit;
-  if (!opt.trajectory.empty()) {
-    if (orbit.ok()) {
-      WriteTrajectory(orbit, opt.trajectory, opt.samples, cmd);
-    } else {
-      fmt::print(stderr, "capsubot solve: note: --trajectory not written: no orbit ({})\n",
-                 StatusName(orbit.status));
-    }
-  }
+  if (!opt.trajectory.empty()) WriteTrajectory(r.solution.orbit, opt, cmd);
   // Without --stability the orbit is not checked from rest: its grid does not shape the output.
   const std::vector<std::string> unused =
       opt.stability ? std::vector<std::string>{} : std::vector<std::string>{"--from-rest-starts"};
-  WriteResult(opt.output, opt.json ? JsonOutput(json::SolveJobJson(r), JsonProvenance(cmd, unused))
-                                   : text::SolveJobText(r));
+  opt.output.Write(cmd, r, json::SolveJobJson, text::SolveJobText, unused);
   return 0;
 }
 
@@ -87,7 +82,7 @@ Command AddSolveCommand(CLI::App& app) {
       "condition of section 5. Exit status 0 whenever the computation ran, valid orbit or not.");
   AddForcingOptions(*cmd, opt->forcing);
   AddParamsOptions(*cmd, opt->params, &opt->margins);
-  cmd->add_flag("--json", opt->json,
+  cmd->add_flag("--json", opt->output.json,
                 "print one JSON object (keys A, c, phi0, T0, e, phi1, alpha, u, v_plus, I, "
                 "v_mean, x_min, x_max, valid, violations, and energy {motor_work, "
                 "motor_work_positive, friction_loss, impact_loss} per period in (m1+m2) "
@@ -106,11 +101,9 @@ Command AddSolveCommand(CLI::App& app) {
                       "write phi, x, u, v over one period to this CSV file (phi = 0 just after "
                       "the impact)")
           ->type_name("FILE");
-  Bounded(cmd->add_option("--samples", opt->samples, "number of rows of --trajectory"), 2,
-          kMaxTrajectoryRows)
-      ->capture_default_str()
-      ->needs(trajectory);
-  AddResultOutputOption(*cmd, opt->output, "the orbit");
+  AddSettings(*cmd, opt->grid, OrbitTrajectorySettings(), kTrajectoryFlags);
+  cmd->get_option("--samples")->needs(trajectory);
+  AddResultOutputOption(*cmd, opt->output.path, "the orbit");
   SetExamples(*cmd, {{"the paper's worked example: c = A = T0/2 at the paper's impact "
                       "phase (not a valid orbit)",
                       "solve --A 0.5 --c 0.5 --phi0 -2.944899971002"},

@@ -52,4 +52,19 @@ std::string SimulateJobText(const SimulateJobResult& job) {
   return t;
 }
 
+std::vector<std::string> SimulateJobNotes(const SimulateJobResult& r) {
+  std::vector<std::string> notes;
+  if (r.orbit && !r.orbit->validity.valid()) {
+    std::string names;
+    for (const auto& n : r.orbit->validity.ViolationNames()) {
+      names += (names.empty() ? "" : ", ") + n;
+    }
+    notes.push_back(fmt::format("the analytic orbit is not valid ({})", names));
+  }
+  if (r.run.status == SimStatus::kEventLimit) {
+    notes.push_back("stopped early: " + r.run.message);
+  }
+  return notes;
+}
+
 }  // namespace capsubot::text

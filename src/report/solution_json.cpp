@@ -74,4 +74,8 @@ nlohmann::json RobotOrbitsJson(const std::vector<Solution>& orbits, bool complet
   return all;
 }
 
+nlohmann::json OrbitsJobJson(const OrbitsJobResult& result) {
+  return {{"orbits", RobotOrbitsJson(result.orbits, result.complete)}};
+}
+
 }  // namespace capsubot::json

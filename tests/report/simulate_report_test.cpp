@@ -1,11 +1,14 @@
-// The report of an event-driven simulation (simulate_text, simulation_json): a run built here by
-// hand, so that each figure printed is known; the transient, the chattering and the analytic
-// orbit appear only when the run has them.
+// The report of an event-driven simulation (simulate_text, simulation_json, simulate_csv): a run
+// built here by hand, so that each figure printed is known; the transient, the chattering and
+// the analytic orbit appear only when the run has them; its notes; its CSV rows.
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "capsubot/report/simulate_csv.hpp"
 #include "capsubot/report/simulate_text.hpp"
 #include "capsubot/report/simulation_json.hpp"
 #include "report/report_text.hpp"
@@ -115,6 +118,54 @@ TEST(SimulationJsonReport, TransientAndOrbitWhenGivenAndNullForNaN) {
   EXPECT_EQ(j["transient"]["impacts_right"], 4);
   EXPECT_TRUE(j["transient"]["displacement"].is_null());  // not computed: NaN
   EXPECT_EQ(j["orbit"]["status"], "not_run");
+}
+
+TEST(SimulateNotes, SayAnInvalidOrbitAndAnEarlyStopAndNothingElse) {
+  SimulateJobResult r = HandMadeRun();
+  EXPECT_TRUE(text::SimulateJobNotes(r).empty());
+  r.orbit = Solution{};
+  r.orbit->validity.checked = true;
+  EXPECT_TRUE(text::SimulateJobNotes(r).empty());  // a valid orbit is no news
+  r.orbit->validity.violations = (1U << static_cast<unsigned>(Condition::kLeftWall)) |
+                                 (1U << static_cast<unsigned>(Condition::kRightWall));
+  r.run.status = SimStatus::kEventLimit;
+  r.run.message = "more than 10 events per period";
+  const std::vector<std::string> expected = {
+      "the analytic orbit is not valid (left_wall, right_wall)",
+      "stopped early: more than 10 events per period"};
+  EXPECT_EQ(text::SimulateJobNotes(r), expected);
+}
+
+// One row per event and per sample, in the order told, after the header of each file; a file
+// not asked (null) is not written.
+TEST(SimulateCsvReport, WritesARowPerEventAndPerSample) {
+  std::ostringstream events, trajectory;
+  text::SimulateCsv csv(&events, &trajectory);
+  SimEvent impact;
+  impact.kind = EventKind::kImpactRight;
+  impact.after = SimState{1.5, 1.0, -0.25, 0.125, 0.5, SimMode::kSlideForward};
+  impact.u_before = 0.5;
+  impact.v_before = -0.0625;
+  csv.OnEvent(impact);
+  SimEvent stop;
+  stop.kind = EventKind::kStop;
+  stop.after = SimState{2.0, 0.75, 0.25, 0.0, 0.625, SimMode::kRest};
+  stop.u_before = 0.25;
+  stop.v_before = 0.0;
+  csv.OnEvent(stop);
+  csv.OnSample(SimState{0.0, 0.5, 0.0, 0.0, 0.0, SimMode::kRest});
+  EXPECT_EQ(events.str(),
+            "phase,kind,x,u,v,y,u_before,v_before,mode\n"
+            "1.5,impact_right,1,-0.25,0.125,0.5,0.5,-0.0625,slide_forward\n"
+            "2,stop,0.75,0.25,0,0.625,0.25,0,rest\n");
+  EXPECT_EQ(trajectory.str(), "phi,x,u,v,y,mode\n0,0.5,0,0,0,rest\n");
+
+  std::ostringstream only_events;
+  text::SimulateCsv events_only(&only_events, nullptr);
+  events_only.OnSample(SimState{0.0, 0.5, 0.0, 0.0, 0.0, SimMode::kRest});
+  events_only.OnEvent(stop);
+  EXPECT_EQ(only_events.str(),
+            "phase,kind,x,u,v,y,u_before,v_before,mode\n2,stop,0.75,0.25,0,0.625,0.25,0,rest\n");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "capsubot/attract/gait_from_rest.hpp"
+#include "capsubot/job/orbits_job.hpp"
 #include "capsubot/job/solve_job.hpp"
 #include "capsubot/model/energy.hpp"
 #include "capsubot/orbit/stability.hpp"
@@ -37,5 +38,9 @@ nlohmann::json SolveJobJson(const SolveJobResult& result);
 /// keys of SolutionJson, the energy, the stability and "complete" (false: the search hit its
 /// work bound and orbits may be missing).
 nlohmann::json RobotOrbitsJson(const std::vector<Solution>& orbits, bool complete);
+
+/// The object of `capsubot orbits --json` (without provenance): "orbits", the RobotOrbitsJson
+/// of the orbits found.
+nlohmann::json OrbitsJobJson(const OrbitsJobResult& result);
 
 }  // namespace capsubot::json
