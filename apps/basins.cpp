@@ -10,6 +10,7 @@
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/basins_job.hpp"
+#include "capsubot/job/basins_settings.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/basins_text.hpp"
 #include "commands.hpp"
@@ -18,6 +19,7 @@
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 #include "start_shard.hpp"
 
 namespace capsubot::app {
@@ -88,13 +90,8 @@ Command AddBasinsCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--plane", opt->plane, "x0-psi (starts from rest) or x0-u0")
       ->capture_default_str();
-  cmd->add_option("--psi", opt->velocity.psi, "forcing phase of the starts in the x0-u0 plane")
-      ->type_name(kPhase)
-      ->capture_default_str();
-  cmd->add_option("--u-min", opt->velocity.u_min, "smallest u0 of the x0-u0 plane")
-      ->capture_default_str();
-  cmd->add_option("--u-max", opt->velocity.u_max, "largest u0 of the x0-u0 plane")
-      ->capture_default_str();
+  AddSettings(*cmd, opt->velocity, VelocityPlaneSettings(),
+              WithDashedFlags({}, VelocityPlaneSettings()));
   cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")
       ->required()
       ->type_name("FILE");
