@@ -55,14 +55,11 @@ PhaseState ParseRestStart(const char* name, const std::string& text) {
 }
 
 const FlagNames& MotionFlagNames() {
-  static const FlagNames names = {{"transient", "--transient"},
-                                  {"record", "--record"},
-                                  {"max_period", "--max-period"},
-                                  {"state_tolerance", "--state-tolerance"},
-                                  {"converged_tolerance", "--converged-tolerance"},
-                                  {"chatter_velocity", "--chatter-velocity"},
-                                  {"max_events_per_period", "--max-events-per-period"},
-                                  {"threads", "--threads"}};
+  static const FlagNames names = [] {
+    FlagNames n = WithDashedFlags({}, MotionSettings());
+    n.emplace_back("threads", "--threads");
+    return n;
+  }();
   return names;
 }
 

@@ -1,19 +1,15 @@
 // capsubot attractors: the long-run motions reached from rest on a grid of starts
 // (docs/model.md sections 12 and 13), with the exact simulator.
 
-#include <fmt/format.h>
-
 #include <memory>
 #include <stdexcept>
 
 #include "attract_options.hpp"
-#include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/attractors_text.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "progress.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
 #include "start_shard.hpp"
@@ -21,16 +17,7 @@
 namespace capsubot::app {
 namespace {
 
-struct AttractorsCommandOptions {
-  RobotOptions robot;
-  std::string starts = StartGrid{}.Text();
-  std::string output;  // the per-start CSV; empty: none
-  StartShardCliOptions shard;
-  int threads = 0;
-  bool json = false;
-};
-
-int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
+int Run(const MapCommandOptions& opt, const CLI::App& cmd) {
   AttractorsJobOptions o = MapJobOptions(opt.robot, opt.starts, opt.threads);
   if (SplitsRun(opt.shard.shard) && opt.output.empty()) {
     throw std::invalid_argument(
@@ -38,20 +25,19 @@ int Run(const AttractorsCommandOptions& opt, const CLI::App& cmd) {
   }
   RequireOutputApartFromJson(opt.output, "-o", opt.json);
   o.run = MapRun(opt.shard, cmd, o.starts.Starts(), opt.output, {{"--json", opt.json}});
-  Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts
-  if (ranks.worker()) return ServeMap(ranks, AttractorsJobWork(o));
-  o.backend = &ranks.backend();
-  o.progress = CountProgress("starts");
-  const AttractorsJobResult r = RunAttractorsJob(o);
-  fmt::print("{}", opt.json ? JsonOutput(json::AttractorsJobJson(r), JsonProvenance(cmd))
-                            : text::AttractorsJobText(r));
-  return 0;
+  return RunMapOnRanks(
+      o, [&o] { return AttractorsJobWork(o); },
+      [&] {
+        const AttractorsJobResult r = RunAttractorsJob(o);
+        return opt.json ? JsonOutput(json::AttractorsJobJson(r), JsonProvenance(cmd))
+                        : text::AttractorsJobText(r);
+      });
 }
 
 }  // namespace
 
 Command AddAttractorsCommand(CLI::App& app) {
-  auto opt = std::make_shared<AttractorsCommandOptions>();
+  auto opt = std::make_shared<MapCommandOptions>();
   CLI::App* cmd = app.add_subcommand(
       "attractors",
       "What the robot does from rest (docs/model.md sections 12 and 13): the exact simulator is "
@@ -59,30 +45,23 @@ Command AddAttractorsCommand(CLI::App& app) {
       "forcing at phase psi = 2 pi j/NPSI (F = A sin(psi + phi0) + c at the start); after a "
       "transient the long-run motion of each start is classified (period, impacts, mean "
       "velocity) and equal motions are grouped into attractors.");
-  AddRobotOptions(*cmd, opt->robot);
-  cmd->add_option("--starts", opt->starts, "grid of starts NXxNPSI (positions x phases)")
-      ->capture_default_str();
+  AddMapStartOptions(*cmd, *opt, "grid of starts NXxNPSI (positions x phases)");
   cmd->add_option("-o,--output", opt->output,
                   "also write the motion of every start to this CSV (x0, psi, attractor, period, "
                   "impacts_right, impacts_left, mean_velocity, status: the map of `basins`; "
                   "written atomically)")
       ->type_name("FILE");
-  AddStartShardOptions(*cmd, opt->shard, "attractors");
-  AddThreadsOption(*cmd, opt->threads);
-  cmd->add_flag("--json", opt->json,
-                "print one JSON object: starts, attractors (status, period, impacts_right, "
-                "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
-                "one_impact_orbit), mean_velocity (over the starts), event_limit_starts, "
-                "provenance");
-  AddProgressOptions(*cmd);
+  AddMapRunOptions(*cmd, *opt, "attractors",
+                   "print one JSON object: starts, attractors (status, period, impacts_right, "
+                   "impacts_left, mean_velocity, fraction, starts, example_start {x0, psi}, "
+                   "one_impact_orbit), mean_velocity (over the starts), event_limit_starts, "
+                   "provenance");
   SetExamples(*cmd, {{"the fastest stable one-impact gait started from rest on an 8 x "
                       "8 grid: every start settles into another motion",
                       "attractors --A 0.34063197373861814 --c 0.06410131873607934 "
                       "--phi0 -3.1181183398453047 --alpha 0.6435592358295166 --T0 1 "
                       "--e 1"}});
-  return {cmd,
-          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
-          [] { return true; }};
+  return MapCommand(cmd, [opt, cmd] { return Run(*opt, *cmd); });
 }
 
 }  // namespace capsubot::app

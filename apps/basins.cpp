@@ -10,29 +10,25 @@
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/basins_job.hpp"
+#include "capsubot/job/basins_settings.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/basins_text.hpp"
 #include "commands.hpp"
 #include "gnuplot.hpp"
 #include "help_format.hpp"
-#include "progress.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 #include "start_shard.hpp"
 
 namespace capsubot::app {
 namespace {
 
 struct BasinsCommandOptions {
-  RobotOptions robot;
-  std::string starts = "64x64";
+  MapCommandOptions map;  // the robot, --starts, -o, the shard, --threads, --json
   std::string plane = "x0-psi";
   VelocityPlane velocity;  // --psi, --u-min, --u-max
-  std::string output;
   std::string plot;
-  StartShardCliOptions shard;
-  int threads = 0;
-  bool json = false;
 };
 
 // The plane --plane names, with the starts of --psi, --u-min, --u-max in the x0-u0 plane.
@@ -52,23 +48,24 @@ StartPlane Plane(const BasinsCommandOptions& opt) {
 
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   BasinsJobOptions o;
-  o.map = MapJobOptions(opt.robot, opt.starts, opt.threads);
+  const MapCommandOptions& map = opt.map;
+  o.map = MapJobOptions(map.robot, map.starts, map.threads);
   o.plane = Plane(opt);
-  RequireDistinctOutputs({{opt.output, "-o"}, {opt.plot, "--plot"}});
-  RequireOutputApartFromJson(opt.output, "-o", opt.json);
-  o.map.run = MapRun(opt.shard, cmd, o.map.starts.Starts(), opt.output,
-                     {{"--plot", !opt.plot.empty()}, {"--json", opt.json}});
-  Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts
-  if (ranks.worker()) return ServeMap(ranks, BasinsJobWork(o));
-  o.map.backend = &ranks.backend();
-  o.map.progress = CountProgress("starts");
-  const BasinsJobResult r = RunBasinsJob(o);
-  if (!opt.plot.empty()) {
-    DrawPng([&r](const std::string& png) { return text::BasinsPlotScript(r, png); }, opt.plot);
-  }
-  fmt::print("{}", opt.json ? JsonOutput(json::BasinsJobJson(r), JsonProvenance(cmd))
-                            : text::BasinsJobText(r));
-  return 0;
+  RequireDistinctOutputs({{map.output, "-o"}, {opt.plot, "--plot"}});
+  RequireOutputApartFromJson(map.output, "-o", map.json);
+  o.map.run = MapRun(map.shard, cmd, o.map.starts.Starts(), map.output,
+                     {{"--plot", !opt.plot.empty()}, {"--json", map.json}});
+  return RunMapOnRanks(
+      o.map, [&o] { return BasinsJobWork(o); },
+      [&] {
+        const BasinsJobResult r = RunBasinsJob(o);
+        if (!opt.plot.empty()) {
+          DrawPng([&r](const std::string& png) { return text::BasinsPlotScript(r, png); },
+                  opt.plot);
+        }
+        return map.json ? JsonOutput(json::BasinsJobJson(r), JsonProvenance(cmd))
+                        : text::BasinsJobText(r);
+      });
 }
 
 }  // namespace
@@ -83,35 +80,24 @@ Command AddBasinsCommand(CLI::App& app) {
       "u0, capsule at rest, at forcing phase --psi. Writes a CSV (x0, psi or u0, attractor, "
       "period, impacts_right, impacts_left, mean_velocity, status) and with --plot a PNG map "
       "drawn by gnuplot.");
-  AddRobotOptions(*cmd, opt->robot);
-  cmd->add_option("--starts", opt->starts, "grid of starts NXxNY (x0 x psi, or x0 x u0)")
-      ->capture_default_str();
+  opt->map.starts = "64x64";  // finer than the grid of `attractors`: a map is drawn
+  AddMapStartOptions(*cmd, opt->map, "grid of starts NXxNY (x0 x psi, or x0 x u0)");
   cmd->add_option("--plane", opt->plane, "x0-psi (starts from rest) or x0-u0")
       ->capture_default_str();
-  cmd->add_option("--psi", opt->velocity.psi, "forcing phase of the starts in the x0-u0 plane")
-      ->type_name(kPhase)
-      ->capture_default_str();
-  cmd->add_option("--u-min", opt->velocity.u_min, "smallest u0 of the x0-u0 plane")
-      ->capture_default_str();
-  cmd->add_option("--u-max", opt->velocity.u_max, "largest u0 of the x0-u0 plane")
-      ->capture_default_str();
-  cmd->add_option("-o,--output", opt->output, "the CSV file (written atomically)")
+  AddSettings(*cmd, opt->velocity, VelocityPlaneSettings(),
+              WithDashedFlags({}, VelocityPlaneSettings()));
+  cmd->add_option("-o,--output", opt->map.output, "the CSV file (written atomically)")
       ->required()
       ->type_name("FILE");
   cmd->add_option("--plot", opt->plot, "also draw the map into this PNG file (needs gnuplot)")
       ->type_name("FILE");
-  AddStartShardOptions(*cmd, opt->shard, "basins");
-  AddThreadsOption(*cmd, opt->threads);
-  cmd->add_flag("--json", opt->json,
-                "print the attractors object of `attractors --json` with provenance");
-  AddProgressOptions(*cmd);
+  AddMapRunOptions(*cmd, opt->map, "basins",
+                   "print the attractors object of `attractors --json` with provenance");
   SetExamples(*cmd, {{"the basins of coexisting motions over 32 x 32 starts from rest",
                       "basins --A 0.05 --c 0.02 --phi0 -2.842 --T0 0.1 --e 0.5 "
                       "--alpha 0.2792869076315278 --max-period 16 --transient 1000 "
                       "--starts 32x32 -o basins.csv"}});
-  return {cmd,
-          [opt, cmd] { return RunNamingFlags(MotionFlagNames(), [&] { return Run(*opt, *cmd); }); },
-          [] { return true; }};
+  return MapCommand(cmd, [opt, cmd] { return Run(*opt, *cmd); });
 }
 
 }  // namespace capsubot::app

@@ -12,6 +12,7 @@
 
 #include "attract_options.hpp"
 #include "capsubot/job/bifurcation_job.hpp"
+#include "capsubot/job/bifurcation_settings.hpp"
 #include "capsubot/report/bifurcation_text.hpp"
 #include "capsubot/sweep/grid.hpp"
 #include "commands.hpp"
@@ -19,6 +20,7 @@
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "ranks.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -48,6 +50,15 @@ const FlagNames& BifurcationFlagNames() {
                        {"over", "--over"}});
     return n;
   }();
+  return names;
+}
+
+// The names of the settings the options are declared with: those of the messages, and the
+// flags of the fields the messages leave as they are (from, shard, resume).
+FlagNames DeclaredFlagNames() {
+  FlagNames names = WithDashedFlags(BifurcationFlagNames(), BifurcationRangeSettings(),
+                                    BifurcationResumeSettings());
+  names.emplace_back("shard", "--shard");
   return names;
 }
 
@@ -113,10 +124,9 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "a2, ... (a_k, b_k of the force given by --sin/--cos; a1 and b1 of the "
                   "harmonic force are 0 and A)")
       ->required();
-  cmd->add_option("--from", opt->diagram.from, "first value of the parameter")->required();
-  cmd->add_option("--to", opt->diagram.to, "last value of the parameter")->required();
-  cmd->add_option("--steps", opt->diagram.steps, "values of the parameter, both ends included")
-      ->capture_default_str();
+  const FlagNames flags = DeclaredFlagNames();
+  AddSettings(*cmd, opt->diagram, BifurcationRangeSettings(), flags);
+  for (const char* flag : {"--from", "--to"}) cmd->get_option(flag)->required();
   cmd->add_option("--direction", opt->direction, "up, down or both (up, then down)")
       ->capture_default_str();
   cmd->add_option("--start", opt->start,
@@ -149,13 +159,7 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "of -o (or of --summary) into the file of the whole study (docs/cluster.md); a "
                   "shard's files are written as FILE.partial with checkpoints (--resume); 0/1 "
                   "writes the files of the whole study");
-  cmd->add_flag("--resume", opt->files.resume,
-                "with --shard: continue a killed shard from the checkpoints FILE.checkpoint of "
-                "-o and --summary (same options required; their checksums are verified)");
-  cmd->add_option("--checkpoint-seconds", opt->files.checkpoint_seconds,
-                  "with --shard: minimum time [s] between two checkpoints of each shard file "
-                  "(written as FILE.partial, renamed at the end); 0: after every part")
-      ->capture_default_str();
+  AddSettings(*cmd, opt->files, BifurcationResumeSettings(), flags);
   AddThreadsOption(*cmd, opt->diagram.threads);
   AddProgressOptions(*cmd);
   SetExamples(*cmd, {{"a diagram over T0, stepped up and down, for 3 values of e",

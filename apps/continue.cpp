@@ -10,6 +10,7 @@
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/continue_job.hpp"
+#include "capsubot/job/continue_settings.hpp"
 #include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/continue_csv.hpp"
 #include "capsubot/report/continue_text.hpp"
@@ -18,6 +19,7 @@
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -61,32 +63,23 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
     AtomicFile file(opt.output, "-o");
     file.stream() << OutputProvenance(cmd).CommentLine() << table.text;
     file.Commit();
-    written = fmt::format("  written        {} {}points to {}\n", table.rows,
-                          job.follow ? "curve " : "", opt.output);
+    written = text::ContinueCsvWritten(result, table, opt.output);
   }
   fmt::print("{}", opt.json ? JsonOutput(json::ContinueJobJson(result), JsonProvenance(cmd))
                             : text::ContinueJobText(result) + written);
   return 0;
 }
 
-// The continuation's fields as the flags that set them.
+// The continuation's fields as the flags that set them: "--" and the field, and --switch-at.
 const FlagNames& ContinueFlagNames() {
-  static const FlagNames names = {{"param", "--param"},
-                                  {"from", "--from"},
-                                  {"to", "--to"},
-                                  {"max_points", "--max-points"},
-                                  {"initial_step", "--initial-step"},
-                                  {"min_step", "--min-step"},
-                                  {"max_step", "--max-step"},
-                                  {"max_period", "--max-period"},
-                                  {"step", "--step"},
-                                  {"chatter_velocity", "--chatter-velocity"},
-                                  {"from_orbit", "--from-orbit"},
-                                  {"param2", "--param2"},
-                                  {"from2", "--from2"},
-                                  {"to2", "--to2"},
-                                  {"follow", "--follow"},
-                                  {"switch", "--switch-at"}};
+  static const FlagNames names = [] {
+    FlagNames n = WithDashedFlags({}, ContinueParamSettings(), ContinuationRangeSettings(),
+                                  ContinuationStepSettings(), ContinuationShootingSettings(),
+                                  FollowSettings());
+    n.insert(n.end(),
+             {{"from_orbit", "--from-orbit"}, {"follow", "--follow"}, {"switch", "--switch-at"}});
+    return n;
+  }();
   return names;
 }
 
@@ -103,45 +96,16 @@ void AddBranchOptions(CLI::App& cmd, ContinueCommandOptions& opt) {
                  "period just beyond the first grazing, by Newton shooting from its state)")
       ->type_name("POINT")
       ->excludes(switch_flag);
-  opt.param2 =
-      cmd.add_option("--param2", opt.follow.param2,
-                     "also follow the branch's first located special point of the --follow "
-                     "type in two parameters, this one the second (a parameter other than "
-                     "--param)");
-  CLI::Option* from2 =
-      cmd.add_option("--from2", opt.follow.from2, "lower end of the --param2 range");
-  CLI::Option* to2 = cmd.add_option("--to2", opt.follow.to2, "upper end of the --param2 range");
+  AddSettings(cmd, opt.follow, FollowSettings(), ContinueFlagNames());
   CLI::Option* follow =
       cmd.add_option("--follow", opt.follow_type,
                      "the special point followed with --param2: fold, period_doubling, "
                      "grazing or speed_extremum");
-  opt.param2->needs(from2)->needs(to2)->needs(follow);
-  from2->needs(opt.param2);
-  to2->needs(opt.param2);
-  follow->needs(opt.param2);
-}
-
-// The steps of the continuation and of its shooting.
-void AddStepOptions(CLI::App& cmd, ContinueCommandOptions& opt) {
-  cmd.add_option("--max-points", opt.job.continuation.max_points,
-                 "points of the branch (and of the curve), both directions together")
-      ->capture_default_str();
-  cmd.add_option("--initial-step", opt.job.continuation.initial_step, "first arclength step")
-      ->capture_default_str();
-  cmd.add_option("--min-step", opt.job.continuation.min_step,
-                 "smallest arclength step: a failure there ends the branch (lost)")
-      ->capture_default_str();
-  cmd.add_option("--max-step", opt.job.continuation.max_step, "largest arclength step")
-      ->capture_default_str();
-  cmd.add_option("--max-period", opt.job.continuation.shooting.max_period,
-                 "largest period searched at the start, in forcing periods")
-      ->capture_default_str();
-  cmd.add_option("--step", opt.job.continuation.shooting.step,
-                 "step of the central finite differences of the Jacobians")
-      ->capture_default_str();
-  cmd.add_option("--chatter-velocity", opt.job.continuation.shooting.chatter_velocity,
-                 "the simulator's chatter cut-off (omega L)")
-      ->capture_default_str();
+  opt.param2 = cmd.get_option("--param2");
+  for (CLI::Option* part : {cmd.get_option("--from2"), cmd.get_option("--to2"), follow}) {
+    opt.param2->needs(part);
+    part->needs(opt.param2);
+  }
 }
 
 }  // namespace
@@ -156,18 +120,17 @@ Command AddContinueCommand(CLI::App& app) {
       "(docs/continuation.md). The parameter starts at the robot's value; the start is a state "
       "(--x0 --u0 --v0 --psi) or the robot's one-impact orbit (--from-orbit).");
   AddRobotOptions(*cmd, opt->robot, false);
-  cmd->add_option("--param", opt->job.param,
-                  "the parameter followed: A, c, alpha, T0, e, phi0, or a Fourier coefficient "
-                  "a1..a16, b1..b16")
-      ->required();
-  cmd->add_option("--from", opt->job.continuation.from, "lower end of the range")->required();
-  cmd->add_option("--to", opt->job.continuation.to, "upper end of the range")->required();
+  const FlagNames& flags = ContinueFlagNames();
+  AddSettings(*cmd, opt->job, ContinueParamSettings(), flags);
+  AddSettings(*cmd, opt->job.continuation, ContinuationRangeSettings(), flags);
+  for (const char* flag : {"--param", "--from", "--to"}) cmd->get_option(flag)->required();
   opt->start_state.Add(*cmd);
   cmd->add_flag("--from-orbit", opt->from_orbit,
                 "start on the robot's valid one-impact orbit with the smallest spectral radius "
                 "(capsubot orbits), right after its impact");
   AddBranchOptions(*cmd, *opt);
-  AddStepOptions(*cmd, *opt);
+  AddSettings(*cmd, opt->job.continuation, ContinuationStepSettings(), flags);
+  AddSettings(*cmd, opt->job.continuation.shooting, ContinuationShootingSettings(), flags);
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
                   "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label; "

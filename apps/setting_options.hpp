@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstring>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -13,6 +15,31 @@
 #include "cli.hpp"
 
 namespace capsubot::app {
+
+/// The flag of `field`: "--" and the field with '_' written '-' ("max_period" ->
+/// "--max-period"). It lives as long as the program (a FlagNames entry points to it); called
+/// while the commands are declared, before any thread starts.
+inline const char* DashedFlag(const char* field) {
+  static std::set<std::string> flags;  // a set's elements never move
+  std::string flag = std::string("--") + field;
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flags.insert(flag).first->c_str();
+}
+
+/// `names` with the DashedFlag of every field of `tables` that has no entry in it.
+template <class... Options>
+FlagNames WithDashedFlags(FlagNames names, const SettingTable<Options>&... tables) {
+  const auto add = [&names](const auto& table) {
+    for (const auto& row : table) {
+      const bool named = std::any_of(names.begin(), names.end(), [&row](const auto& entry) {
+        return std::strcmp(entry.first, row.field) == 0;
+      });
+      if (!named) names.emplace_back(row.field, DashedFlag(row.field));
+    }
+  };
+  (add(tables), ...);
+  return names;
+}
 
 /// Adds the option of `row` to `cmd` (a flag for a bool field), named by `flags`, bound to the
 /// row's field of `options`, with the row's help in the flags' names, its range (Bounded), its

@@ -5,8 +5,10 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
+#include "progress.hpp"
 #include "provenance.hpp"
 
 namespace capsubot::app {
@@ -26,6 +28,23 @@ void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const ch
                  "with --shard: minimum time [s] between two checkpoints of the shard file; 0: "
                  "after every block of starts")
       ->capture_default_str();
+}
+
+void AddMapStartOptions(CLI::App& cmd, MapCommandOptions& options, const char* starts_help) {
+  AddRobotOptions(cmd, options.robot);
+  cmd.add_option("--starts", options.starts, starts_help)->capture_default_str();
+}
+
+void AddMapRunOptions(CLI::App& cmd, MapCommandOptions& options, const char* name,
+                      const char* json_help) {
+  AddStartShardOptions(cmd, options.shard, name);
+  AddThreadsOption(cmd, options.threads);
+  cmd.add_flag("--json", options.json, json_help);
+  AddProgressOptions(cmd);
+}
+
+Command MapCommand(CLI::App* cmd, const std::function<int()>& run) {
+  return {cmd, [run] { return RunNamingFlags(MotionFlagNames(), run); }, [] { return true; }};
 }
 
 StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std::int64_t starts,
@@ -61,8 +80,17 @@ StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std
   return run;
 }
 
-int ServeMap(Ranks& ranks, const StartMapWork& work) {
-  return ranks.Serve(work.Blocks(), work.attractor.threads);
+int RunMapOnRanks(AttractorsJobOptions& map, const std::function<StartMapWork()>& work,
+                  const std::function<std::string()>& run) {
+  Ranks ranks;  // under mpirun: rank 0 runs the job, the others compute blocks of its starts
+  if (ranks.worker()) {
+    const StartMapWork blocks = work();
+    return ranks.Serve(blocks.Blocks(), blocks.attractor.threads);
+  }
+  map.backend = &ranks.backend();
+  map.progress = CountProgress("starts");
+  fmt::print("{}", run());
+  return 0;
 }
 
 }  // namespace capsubot::app

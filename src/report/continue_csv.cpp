@@ -2,6 +2,8 @@
 
 #include "capsubot/report/continue_csv.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <sstream>
 #include <vector>
@@ -77,6 +79,12 @@ CsvTable ContinueJobCsv(const ContinueJobResult& r) {
                                                : CsvTable{};
   }
   return r.branch.status == ContinuationStatus::kOk ? BranchTable(r.branch, r.param) : CsvTable{};
+}
+
+std::string ContinueCsvWritten(const ContinueJobResult& result, const CsvTable& table,
+                               const std::string& path) {
+  return fmt::format("  written        {} {}points to {}\n", table.rows,
+                     result.follow ? "curve " : "", path);
 }
 
 }  // namespace capsubot::text

@@ -1,8 +1,9 @@
 #pragma once
-// Checks of a job's table of settings (capsubot/job/setting_table.hpp) that every table must
+// Checks of a job's tables of settings (capsubot/job/setting_table.hpp) that every table must
 // pass: each row sets a field of its own (two rows on one member would bind two flags to one
 // value), has a help whose "{field}" names a known setting (else a front end would print the
-// braces), and a range (an integer's) that holds its default and is the job's own rule.
+// braces), and a range (an integer's) that holds its default and is the job's own rule; and
+// the tables of one command gathered with the values their rows bind, checked the same way.
 
 #include <gtest/gtest.h>
 
@@ -10,26 +11,28 @@
 #include <set>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "capsubot/job/setting_table.hpp"
 #include "test_utils.hpp"
 
 namespace capsubot::testing {
 
-/// The names in braces of `help` ("{periods}" -> periods); braces holding anything but a
-/// field's characters (letters, digits, '_') are text, as HelpIn keeps them.
-inline std::set<std::string> BracedFields(const std::string& help) {
-  std::set<std::string> names;
+/// The "{field}" placeholders of `help`: the braces holding a name (lower-case letters, digits,
+/// '_'), which HelpIn writes as a front end's names; braces around other text are kept.
+inline std::vector<std::string> Placeholders(const std::string& help) {
+  std::vector<std::string> names;
   for (std::size_t open = help.find('{'); open != std::string::npos;
        open = help.find('{', open + 1)) {
     const std::size_t close = help.find('}', open);
     if (close == std::string::npos) break;
-    const std::string name = help.substr(open + 1, close - open - 1);
-    const bool field =
-        !name.empty() &&
-        name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
-    if (field) names.insert(name);
+    const std::string inside = help.substr(open + 1, close - open - 1);
+    const bool name =
+        !inside.empty() &&
+        inside.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
+    if (name) names.push_back(inside);
   }
   return names;
 }
@@ -58,7 +61,7 @@ template <class Options>
     if (std::string(row.help).size() < 10) {
       return ::testing::AssertionFailure() << row.field << " has no help: \"" << row.help << "\"";
     }
-    for (const std::string& name : BracedFields(row.help)) {
+    for (const std::string& name : Placeholders(row.help)) {
       if (fields.count(name) == 0) {
         return ::testing::AssertionFailure()
                << "the help of " << row.field << " names {" << name << "}, not a setting";
@@ -123,5 +126,64 @@ template <class Options, class Check>
   if (ranged == 0) return ::testing::AssertionFailure() << "no row has a range";
   return ::testing::AssertionSuccess();
 }
+
+/// The tables of one command, each with the options value its rows bind.
+class SettingTablesCheck {
+ public:
+  /// Adds the rows of `table`, bound to `options` (a field of the command's options struct or
+  /// that struct itself, so that two tables binding one value are seen).
+  template <class Options>
+  void Add(const SettingTable<Options>& table, const Options& options) {
+    for (const SettingRow<Options>& row : table) {
+      if (!fields_.insert(row.field).second) twice_.push_back(row.field);
+      std::visit(
+          [&](auto member) {
+            if (!members_.insert(&(options.*member)).second) twice_.push_back(row.field);
+          },
+          row.member);
+      helps_.emplace_back(row.field, row.help);
+    }
+  }
+
+  /// Every row has a field and a value of its own.
+  ::testing::AssertionResult EachFieldAndValueOnce() const {
+    if (fields_.empty()) return ::testing::AssertionFailure() << "no rows";
+    if (twice_.empty()) return ::testing::AssertionSuccess();
+    auto failure = ::testing::AssertionFailure() << "set twice (field or value):";
+    for (const std::string& field : twice_) failure << ' ' << field;
+    return failure;
+  }
+
+  /// Every placeholder of every help is a field of the tables or one of `others` (settings the
+  /// command reads outside the tables).
+  ::testing::AssertionResult HelpsNameKnownSettings(const std::set<std::string>& others) const {
+    auto failure = ::testing::AssertionFailure();
+    bool ok = true;
+    for (const auto& [field, help] : helps_) {
+      for (const std::string& name : Placeholders(help)) {
+        if (fields_.count(name) == 0 && others.count(name) == 0) {
+          ok = false;
+          failure << field << "'s help names {" << name << "}; ";
+        }
+      }
+    }
+    return ok ? ::testing::AssertionSuccess() : failure;
+  }
+
+  /// The placeholders of all helps, in order.
+  std::vector<std::string> AllPlaceholders() const {
+    std::vector<std::string> all;
+    for (const auto& entry : helps_) {
+      for (const std::string& name : Placeholders(entry.second)) all.push_back(name);
+    }
+    return all;
+  }
+
+ private:
+  std::set<std::string> fields_;
+  std::set<const void*> members_;
+  std::vector<std::string> twice_;
+  std::vector<std::pair<std::string, std::string>> helps_;
+};
 
 }  // namespace capsubot::testing

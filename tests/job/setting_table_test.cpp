@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "capsubot/job/motion_settings.hpp"
+#include "job/setting_table_checks.hpp"
 
 namespace capsubot {
 namespace {
@@ -38,6 +39,25 @@ TEST(SettingTable, EveryMotionSettingSetsAFieldOfItsOwn) {
     std::visit([&](auto m) { EXPECT_TRUE(members.insert(&(o.*m)).second) << row.field; },
                row.member);
   }
+}
+
+// The checks the tables' tests make fail on a table that binds one value twice, repeats a field
+// or names an unknown setting in a help; braces around other text are not names.
+TEST(SettingTable, ChecksFindAValueOrFieldSetTwiceAndAnUnknownSetting) {
+  const SettingTable<MotionOptions> bad = {
+      {"record", &MotionOptions::record, "at least 2 {max_period} as {x, u, v}"},
+      {"periods", &MotionOptions::record, "the {recrod}"},
+      {"record", &MotionOptions::transient, "before {record}"}};
+  const MotionOptions o;
+  testing::SettingTablesCheck check;
+  check.Add(bad, o);
+  const ::testing::AssertionResult once = check.EachFieldAndValueOnce();
+  EXPECT_FALSE(once);
+  EXPECT_STREQ(once.message(), "set twice (field or value): periods record");
+  const ::testing::AssertionResult known = check.HelpsNameKnownSettings({"max_period"});
+  EXPECT_FALSE(known);
+  EXPECT_STREQ(known.message(), "periods's help names {recrod}; ");
+  EXPECT_EQ(check.AllPlaceholders(), (std::vector<std::string>{"max_period", "recrod", "record"}));
 }
 
 }  // namespace

@@ -122,6 +122,16 @@ TEST(ContinueCsvReport, FollowedCurveHasBothParametersAndItsCondition) {
   EXPECT_TRUE(Has(csv.text, "\n0.625,0.75,0.5,0.25,0,1,1,1,0,0.0125,1,1,0,0,1e-12\n"));
 }
 
+// The note of the file written counts the table's rows, and says when they are a curve's.
+TEST(ContinueCsvReport, WrittenNoteCountsTheRowsOfTheBranchOrOfTheCurve) {
+  const ContinueJobResult branch = HandMadeBranch();
+  EXPECT_EQ(text::ContinueCsvWritten(branch, text::ContinueJobCsv(branch), "b.csv"),
+            "  written        3 points to b.csv\n");
+  const ContinueJobResult curve = WithCurve();
+  EXPECT_EQ(text::ContinueCsvWritten(curve, text::ContinueJobCsv(curve), "c.csv"),
+            "  written        2 curve points to c.csv\n");
+}
+
 TEST(ContinuationJsonReport, BranchHasItsEndsPointsAndSpecialPoints) {
   const nlohmann::json j = Printed(json::ContinueJobJson(HandMadeBranch()));
   EXPECT_EQ(j["parameter"], "T0");

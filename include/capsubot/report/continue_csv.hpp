@@ -23,4 +23,9 @@ struct CsvTable {
 /// curve, was not followed (status not ok).
 CsvTable ContinueJobCsv(const ContinueJobResult& result);
 
+/// The line the text report ends with when `table` (ContinueJobCsv(result)) was written to
+/// `path`: "  written        N points to PATH", "N curve points" for a followed curve.
+std::string ContinueCsvWritten(const ContinueJobResult& result, const CsvTable& table,
+                               const std::string& path);
+
 }  // namespace capsubot::text
