@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "capsubot/model/setting_names.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot::app {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/reach/drive_family.hpp"
 
 namespace capsubot {

@@ -10,8 +10,8 @@
 
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/optimize_job.hpp"
-#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot {
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "capsubot/attract/start_grid.hpp"
-#include "capsubot/model/setting_names.hpp"
 #include "capsubot/job/setting_use.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/model/setting_names.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/reach/reach_effort.hpp"
 
