@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "attract_options.hpp"
+#include "capsubot/cluster/ranks.hpp"
 #include "capsubot/job/bifurcation_job.hpp"
 #include "capsubot/job/bifurcation_settings.hpp"
 #include "capsubot/report/bifurcation_text.hpp"
@@ -19,7 +20,6 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "ranks.hpp"
 #include "setting_options.hpp"
 
 namespace capsubot::app {

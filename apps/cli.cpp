@@ -15,9 +15,9 @@
 #include <system_error>
 #include <thread>
 
+#include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/force_spec.hpp"
-#include "ranks.hpp"
 
 namespace capsubot::app {
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "attract_options.hpp"
+#include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
@@ -32,7 +33,6 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "ranks.hpp"
 #include "result_output.hpp"
 
 namespace capsubot::app {

@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/version.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "help_format.hpp"
-#include "ranks.hpp"
 #include "suggest.hpp"
 
 namespace {
@@ -66,7 +66,7 @@ std::vector<std::string> UnexpectedArguments(const CLI::ParseError& e) {
 // command line, so bad input (status 2) is said once, by the process of rank 0; a failure of
 // the computation (status 1) is said by the process it happens on, with its rank.
 int Fail(const std::string& who, const std::string& text, int status) {
-  const int rank = capsubot::app::LaunchedRank();
+  const int rank = capsubot::LaunchedRank();
   if (status == 2 && rank != 0) return status;
   const std::string where =
       rank > 0 ? fmt::format(" (process of rank {} of an MPI job)", rank) : std::string();
@@ -114,7 +114,7 @@ int RefuseCommandLine(const CLI::App& app, const CLI::ParseError& e) {
 // is said on one line and mapped to its status (2 bad input, 1 a failed computation).
 int RunCommand(const capsubot::app::Command& command) {
   const std::string who = "capsubot " + command.parser->get_name();
-  const int processes = capsubot::app::LaunchedProcesses();
+  const int processes = capsubot::LaunchedProcesses();
   if (processes > 1 && !(command.distributed && command.distributed())) {
     return RefuseOneProcessCommand(who, command.parser->get_name(), processes);
   }
@@ -139,7 +139,7 @@ int RunCommand(const capsubot::app::Command& command) {
 int main(int argc, char** argv) {
   using namespace capsubot::app;
   capsubot::InstallTempFileCleanup();
-  UseLauncherStdout();  // rank 0 under mpirun: a failed write to standard output is seen
+  capsubot::UseLauncherStdout();  // rank 0 under mpirun: a failed write to standard output is seen
   // Past the file size limit (ulimit -f) a write fails with EFBIG and the run says so, keeping
   // what can be resumed, instead of being killed by SIGXFSZ without a word.
   std::signal(SIGXFSZ, SIG_IGN);

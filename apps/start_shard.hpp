@@ -11,8 +11,8 @@
 
 #include "attract_options.hpp"
 #include "capsubot/attract/start_grid.hpp"
+#include "capsubot/cluster/ranks.hpp"
 #include "commands.hpp"
-#include "ranks.hpp"
 
 namespace capsubot::app {
 

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
 #include "capsubot/job/sweep_settings.hpp"
@@ -24,7 +25,6 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "ranks.hpp"
 #include "sweep_flags.hpp"
 
 namespace capsubot::app {

@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "ranks.hpp"
+#include "capsubot/cluster/ranks.hpp"
 
-namespace capsubot::app {
+namespace capsubot {
 namespace {
 
 enum Tag : int { kWork = 1, kResult = 2, kError = 3, kStop = 4 };
@@ -208,4 +208,4 @@ int Ranks::Serve(const BlockComputeFactory& make, int threads) {
   }
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot

@@ -1,7 +1,5 @@
 // What the launcher of this process says about its job (ranks.hpp).
 
-#include "ranks.hpp"
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -13,7 +11,9 @@
 #include <initializer_list>
 #include <string>
 
-namespace capsubot::app {
+#include "capsubot/cluster/ranks.hpp"
+
+namespace capsubot {
 
 namespace {
 
@@ -53,4 +53,4 @@ void UseLauncherStdout() {
   ::close(fd);
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot

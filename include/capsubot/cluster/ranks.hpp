@@ -3,15 +3,15 @@
 // runs the command and hands blocks of work to the other ranks, which compute them with
 // their threads and send the bytes back (master-worker, dynamic: a rank gets its next block
 // when it returns one). Started without mpirun, or with one rank, the command runs alone in
-// this process exactly as without MPI. The MPI code lives in apps/cluster/mpi.cpp, built with
-// the CMake option CAPSUBOT_MPI; apps/cluster/alone.cpp replaces it otherwise. See
+// this process exactly as without MPI. The MPI code lives in src/cluster/mpi.cpp, built with
+// the CMake option CAPSUBOT_MPI; src/cluster/alone.cpp replaces it otherwise. See
 // docs/cluster.md.
 
 #include <memory>
 
 #include "capsubot/parallel/blocks.hpp"
 
-namespace capsubot::app {
+namespace capsubot {
 
 /// Processes of the job this process was started in, as its launcher says (mpirun, srun:
 /// OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_SIZE); 1 when started alone.
@@ -54,4 +54,4 @@ class Ranks {
   std::unique_ptr<Job> job_;
 };
 
-}  // namespace capsubot::app
+}  // namespace capsubot

@@ -3,9 +3,9 @@
 
 #include <stdexcept>
 
-#include "ranks.hpp"
+#include "capsubot/cluster/ranks.hpp"
 
-namespace capsubot::app {
+namespace capsubot {
 
 struct Ranks::Job {};
 
@@ -25,4 +25,4 @@ const BlockBackend& Ranks::backend() const { return LocalBlocks(); }
 
 int Ranks::Serve(const BlockComputeFactory&, int) { return 0; }
 
-}  // namespace capsubot::app
+}  // namespace capsubot
