@@ -17,7 +17,9 @@
 
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/params_settings.hpp"
 #include "capsubot/model/force_spec.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 
@@ -175,23 +177,13 @@ Forcing ForcingOptions::Build(bool need_phase) const {
 }
 
 void AddParamsOptions(CLI::App& cmd, Params& p, Margins* margins) {
-  cmd.add_option("--T0", p.T0, "friction bound T0 = mu g/(omega^2 L), dimensionless, > 0")
-      ->capture_default_str();
-  cmd.add_option("--e", p.e, "coefficient of restitution, 0 <= e <= 1")->capture_default_str();
-  if (margins != nullptr) {
-    cmd.add_option("--margin", margins->clearance,
-                   "clearance d required between inner body and walls (fraction of L), "
-                   "0 <= d < 0.5")
-        ->capture_default_str();
-    cmd.add_option("--margin-stroke", margins->clearance_stroke,
-                   "clearance relative to the stroke d_s: the clearance from both walls is at "
-                   "least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (docs/model.md section 12)")
-        ->capture_default_str();
-    cmd.add_option("--stick-margin", margins->stick,
-                   "stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1 "
-                   "(docs/model.md section 12)")
-        ->capture_default_str();
-  }
+  static const FlagNames kFlags = {{"T0", "--T0"},
+                                   {"e", "--e"},
+                                   {"clearance", "--margin"},
+                                   {"clearance_stroke", "--margin-stroke"},
+                                   {"stick", "--stick-margin"}};
+  AddSettings(cmd, p, ParamsSettings(), kFlags);
+  if (margins != nullptr) AddSettings(cmd, *margins, MarginsSettings(), kFlags);
 }
 
 int RunNamingFlags(const FlagNames& names, const std::function<int()>& run) {

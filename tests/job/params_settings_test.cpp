@@ -1,0 +1,39 @@
+// The tables of the robot's parameters and of the margins of a gait
+// (capsubot/job/params_settings.hpp): a row per field, each with a help, and the defaults a
+// front end shows are the library's (Params{}, Margins{}: no margins).
+
+#include "capsubot/job/params_settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <type_traits>
+#include <variant>
+
+#include "setting_table_checks.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::WellFormed;
+
+TEST(ParamsSettings, EachParameterAndMarginHasARowOfItsOwn) {
+  EXPECT_TRUE(WellFormed(ParamsSettings()));
+  EXPECT_TRUE(WellFormed(MarginsSettings()));
+}
+
+// The defaults shown are those of a robot with no margins: the physical validity.
+TEST(ParamsSettings, TheMarginsDefaultToNone) {
+  const Margins none;
+  ASSERT_FALSE(MarginsSettings().empty());
+  for (const auto& row : MarginsSettings()) {
+    std::visit(
+        [&](auto m) {
+          using Field = std::decay_t<decltype(none.*m)>;
+          if constexpr (std::is_same_v<Field, double>) EXPECT_EQ(none.*m, 0.0) << row.field;
+        },
+        row.member);
+  }
+}
+
+}  // namespace
+}  // namespace capsubot
