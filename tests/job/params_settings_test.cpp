@@ -29,7 +29,9 @@ TEST(ParamsSettings, TheMarginsDefaultToNone) {
     std::visit(
         [&](auto m) {
           using Field = std::decay_t<decltype(none.*m)>;
-          if constexpr (std::is_same_v<Field, double>) EXPECT_EQ(none.*m, 0.0) << row.field;
+          if constexpr (std::is_same_v<Field, double>) {
+            EXPECT_EQ(none.*m, 0.0) << row.field;
+          }
         },
         row.member);
   }
