@@ -24,7 +24,7 @@ int Run(const MapCommandOptions& opt, const CLI::App& cmd) {
         "--shard is invalid without -o: expected the shard file to write (docs/cluster.md)");
   }
   RequireOutputApartFromJson(opt.output, "-o", opt.json);
-  o.run = MapRun(opt.shard, cmd, o.starts.Starts(), opt.output, {{"--json", opt.json}});
+  o.run = MapRun(opt.shard, cmd, opt.output, {{"--json", opt.json}});
   return RunMapOnRanks(
       o, [&o] { return AttractorsJobWork(o); },
       [&] {

@@ -53,8 +53,8 @@ int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   o.plane = Plane(opt);
   RequireDistinctOutputs({{map.output, "-o"}, {opt.plot, "--plot"}});
   RequireOutputApartFromJson(map.output, "-o", map.json);
-  o.map.run = MapRun(map.shard, cmd, o.map.starts.Starts(), map.output,
-                     {{"--plot", !opt.plot.empty()}, {"--json", map.json}});
+  o.map.run =
+      MapRun(map.shard, cmd, map.output, {{"--plot", !opt.plot.empty()}, {"--json", map.json}});
   return RunMapOnRanks(
       o.map, [&o] { return BasinsJobWork(o); },
       [&] {

@@ -249,13 +249,6 @@ void RequireOutputApartFromJson(const std::string& output, const char* option, b
       option, output, option, option));
 }
 
-void RequireCheckpointSeconds(double seconds) {
-  if (!(seconds >= 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--checkpoint-seconds = {} is invalid: expected a time >= 0 seconds", seconds));
-  }
-}
-
 void UseStrictValues(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();

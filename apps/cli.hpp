@@ -115,7 +115,4 @@ bool SplitsRun(const std::string& text);
 /// (std::invalid_argument): only a shard is checkpointed, not the whole `what` ("map").
 void RequireShardForResume(const CLI::App& cmd, bool sharded, const char* what);
 
-/// Refuses a --checkpoint-seconds below 0 or NaN (std::invalid_argument naming the option).
-void RequireCheckpointSeconds(double seconds);
-
 }  // namespace capsubot::app

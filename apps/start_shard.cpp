@@ -44,10 +44,17 @@ void AddMapRunOptions(CLI::App& cmd, MapCommandOptions& options, const char* nam
 }
 
 Command MapCommand(CLI::App* cmd, const std::function<int()>& run) {
-  return {cmd, [run] { return RunNamingFlags(MotionFlagNames(), run); }, [] { return true; }};
+  // The job names the shard and its checkpoints by their fields, too.
+  static const FlagNames kFlags = [] {
+    FlagNames names = MotionFlagNames();
+    names.insert(names.end(),
+                 {{"shard", "--shard"}, {"checkpoint_seconds", "--checkpoint-seconds"}});
+    return names;
+  }();
+  return {cmd, [run] { return RunNamingFlags(kFlags, run); }, [] { return true; }};
 }
 
-StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std::int64_t starts,
+StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd,
                    const std::string& output,
                    const std::vector<std::pair<const char*, bool>>& refused) {
   const bool sharded = SplitsRun(options.shard);
@@ -58,13 +65,6 @@ StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std
   StartMapShard run;
   StartShardOptions& file = run.file;
   std::tie(file.shard, file.shards) = ParseShard(options.shard);
-  if (file.shards > starts) {
-    throw std::invalid_argument(
-        fmt::format("--shard = {} is invalid: the map has only {} starts: expected at most as "
-                    "many shards as starts",
-                    options.shard, starts));
-  }
-  RequireCheckpointSeconds(options.checkpoint_seconds);
   for (const auto& [flag, set] : refused) {
     if (set) {
       throw std::invalid_argument(fmt::format(

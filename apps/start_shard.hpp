@@ -49,12 +49,12 @@ void AddMapRunOptions(CLI::App& cmd, MapCommandOptions& options, const char* nam
 /// (MotionFlagNames), its work distributed over the ranks of an MPI job.
 Command MapCommand(CLI::App* cmd, const std::function<int()>& run);
 
-/// The run of the map of `starts` starts of command `cmd`: one shard (--shard K/N, N >= 2)
-/// written to `output`, or the whole map (written to `output` when given), with the run's
-/// provenance as the file's comment lines. Refuses --resume or --checkpoint-seconds without a
-/// shard, more shards than starts, and the `refused` options (flag, given) with a shard: they
-/// need the whole map (std::invalid_argument naming the option).
-StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd, std::int64_t starts,
+/// The run of the map of command `cmd`: one shard (--shard K/N, N >= 2) written to `output`,
+/// or the whole map (written to `output` when given), with the run's provenance as the file's
+/// comment lines. Refuses --resume or --checkpoint-seconds without a shard and the `refused`
+/// options (flag, given) with a shard: they need the whole map (std::invalid_argument naming
+/// the option). The job checks the shard against its starts and the checkpoints' interval.
+StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd,
                    const std::string& output,
                    const std::vector<std::pair<const char*, bool>>& refused);
 

@@ -60,11 +60,11 @@ void WriteStartMap(const std::string& output, const std::vector<PhaseState>& sta
 void StartShardOptions::Validate(std::size_t starts) const {
   if (shards < 1 || shard < 0 || shard >= shards) {
     throw std::invalid_argument(fmt::format(
-        "shard K/N = {}/{} is invalid: expected N >= 1 shards and 0 <= K < N", shard, shards));
+        "shard = {}/{} is invalid: expected K/N with N >= 1 shards and 0 <= K < N", shard, shards));
   }
   if (static_cast<std::size_t>(shards) > starts) {
     throw std::invalid_argument(
-        fmt::format("shard K/N = {}/{} is invalid: the map has only {} starts: expected at most "
+        fmt::format("shard = {}/{} is invalid: the map has only {} starts: expected at most "
                     "as many shards as starts",
                     shard, shards, starts));
   }

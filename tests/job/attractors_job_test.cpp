@@ -126,7 +126,7 @@ TEST(AttractorsJob, BadOptionsAreRefusedNamingTheParameter) {
          s.file.output = "never-written.csv";
          o.run = s;
        },
-       "shard K/N = 0/7 is invalid: the map has only 6 starts"},
+       "shard = 0/7 is invalid: the map has only 6 starts"},
   };
   for (const Case& c : cases) {
     AttractorsJobOptions o = SmallMap();
