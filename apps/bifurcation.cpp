@@ -37,28 +37,22 @@ struct BifurcationCommandOptions {
   bool no_analytic = false;
 };
 
-// Library messages name the job's options; the user typed these flags.
+// The flags of the job's settings: its messages name the settings by their fields.
 const FlagNames& BifurcationFlagNames() {
   static const FlagNames names = [] {
     FlagNames n = MotionFlagNames();
     n.insert(n.end(), {{"steps", "--steps"},
                        {"impacts", "-o"},
                        {"summary", "--summary"},
+                       {"shard", "--shard"},
+                       {"resume", "--resume"},
+                       {"from", "--from"},
                        {"to", "--to"},
                        {"checkpoint_seconds", "--checkpoint-seconds"},
                        {"direction", "--direction"},
                        {"over", "--over"}});
     return n;
   }();
-  return names;
-}
-
-// The names of the settings the options are declared with: those of the messages, and the
-// flags of the fields the messages leave as they are (from, shard, resume).
-FlagNames DeclaredFlagNames() {
-  FlagNames names = WithDashedFlags(BifurcationFlagNames(), BifurcationRangeSettings(),
-                                    BifurcationResumeSettings());
-  names.emplace_back("shard", "--shard");
   return names;
 }
 
@@ -124,7 +118,7 @@ Command AddBifurcationCommand(CLI::App& app) {
                   "a2, ... (a_k, b_k of the force given by --sin/--cos; a1 and b1 of the "
                   "harmonic force are 0 and A)")
       ->required();
-  const FlagNames flags = DeclaredFlagNames();
+  const FlagNames& flags = BifurcationFlagNames();
   AddSettings(*cmd, opt->diagram, BifurcationRangeSettings(), flags);
   for (const char* flag : {"--from", "--to"}) cmd->get_option(flag)->required();
   cmd->add_option("--direction", opt->direction, "up, down or both (up, then down)")

@@ -545,7 +545,7 @@ std::vector<Case> Cases() {
       // Ranges that hold no map or diagram, refused before any work.
       {"BifurcationFromEqualsTo",
        "bifurcation " + kRobot + " --param T0 --from 0.1 --to 0.1 --steps 3 -o o.csv", 2,
-       "--to = 0.1 is invalid with from = 0.1: expected a range, to other than from", none},
+       "--to = 0.1 is invalid with --from = 0.1: expected a range, to other than from", none},
       {"BasinsInvertedURangeOnThePsiPlane",
        "basins " + kRobot + " --starts 2x2 --u-min 5 --u-max -5 -o b.csv", 2,
        "--u-min = 5 and --u-max = -5 are invalid: expected u-min < u-max", none},
