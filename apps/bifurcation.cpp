@@ -161,11 +161,15 @@ Command AddBifurcationCommand(CLI::App& app) {
                       "0.2792869076315278 --param T0 --from 0.08 --to 0.12 --steps 4 "
                       "--transient 40 --record 20 --over e=0.4:0.6:3 -o i.csv --summary "
                       "s.csv"}});
-  return {cmd,
-          [opt, cmd] {
-            return RunNamingFlags(BifurcationFlagNames(), [&] { return Run(*opt, *cmd); });
-          },
-          [] { return true; }};
+  return {
+      cmd,
+      [opt, cmd] {
+        // The study's messages speak of the shard count N and the shard K, not of the
+        // flag's K/N, and of the checkpoints resumed as every grid command does.
+        static const FlagNames kMessageNames = Without(BifurcationFlagNames(), {"shard", "resume"});
+        return RunNamingFlags(kMessageNames, [&] { return Run(*opt, *cmd); });
+      },
+      [] { return true; }};
 }
 
 }  // namespace capsubot::app
