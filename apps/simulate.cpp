@@ -12,6 +12,7 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/simulate_job.hpp"
 #include "capsubot/job/simulate_settings.hpp"
+#include "capsubot/job/simulate_start_spec.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/simulate_csv.hpp"
 #include "capsubot/report/simulate_text.hpp"
@@ -86,15 +87,18 @@ class CsvProgress : public text::SimulateCsv {
 // The start the options give: the analytic orbit (--from-orbit; CLI11 refuses --alpha, --x0,
 // --u0, --v0 with it) or the state of --alpha, --x0, --u0, --v0.
 SimulateStart Start(const SimulateOptions& opt) {
-  if (opt.from_orbit) return SimulateFromOrbit{};
-  if (opt.alpha_option->count() == 0) {
-    throw std::invalid_argument("option --alpha is missing: give the mass ratio (or --from-orbit)");
-  }
-  if (opt.x0_option->count() == 0 || opt.u0_option->count() == 0 || opt.v0_option->count() == 0) {
-    throw std::invalid_argument(
-        "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)");
-  }
-  return opt.state;
+  const auto part = [](const CLI::Option* option, double value) {
+    return option->count() > 0 ? std::optional<double>(value) : std::nullopt;
+  };
+  const SimulateStartSpec spec{part(opt.alpha_option, opt.state.alpha),
+                               part(opt.x0_option, opt.state.x0), part(opt.u0_option, opt.state.u0),
+                               part(opt.v0_option, opt.state.v0)};
+  static const FlagNames kStartFlags = {{"alpha", "--alpha"},
+                                        {"x0", "--x0"},
+                                        {"u0", "--u0"},
+                                        {"v0", "--v0"},
+                                        {"from_orbit", "--from-orbit"}};
+  return spec.Build(opt.from_orbit, "--from-orbit", kStartFlags);
 }
 
 int Run(const SimulateOptions& opt, const CLI::App& cmd) {

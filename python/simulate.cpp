@@ -14,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "capsubot/job/simulate_job.hpp"
+#include "capsubot/job/simulate_start_spec.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/simulation_json.hpp"
 
@@ -115,27 +116,6 @@ py::dict EventTable(const TableObserver& o) {
   return d;
 }
 
-// The start: the analytic orbit (from_orbit) or the state alpha, x0, u0, v0.
-SimulateStart Start(std::optional<double> alpha, std::optional<double> x0, std::optional<double> u0,
-                    std::optional<double> v0, bool from_orbit) {
-  if (from_orbit) {
-    if (alpha || x0 || u0 || v0) {
-      throw std::invalid_argument(
-          "from_orbit takes the state and alpha from the analytic orbit: do not give alpha, "
-          "x0, u0 or v0 with it");
-    }
-    return SimulateFromOrbit{};
-  }
-  if (!alpha) {
-    throw std::invalid_argument("alpha is missing: give the mass ratio (or from_orbit=True)");
-  }
-  if (!x0 || !u0 || !v0) {
-    throw std::invalid_argument(
-        "the initial state is missing: give all of x0, u0, v0 (or from_orbit=True)");
-  }
-  return SimulateFromState{*alpha, *x0, *u0, *v0};
-}
-
 py::dict Simulate(std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
                   std::optional<std::string> waveform, std::optional<std::vector<double>> levels,
@@ -147,7 +127,7 @@ py::dict Simulate(std::optional<double> A, std::optional<double> c, std::optiona
   SimulateJobOptions o;
   o.params = Params{T0, e};
   o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  o.start = Start(alpha, x0, u0, v0, from_orbit);
+  o.start = SimulateStartSpec{alpha, x0, u0, v0}.Build(from_orbit, "from_orbit=True");
   o.sim.y0 = y0;
   o.sim.periods = periods;
   o.sim.transient = transient;

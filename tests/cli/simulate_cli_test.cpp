@@ -152,7 +152,7 @@ TEST(SimulateCli, BadInputsExitWithStatus2AndAMessage) {
   };
   const std::vector<Bad> cases = {
       {"simulate " + kOrbit + " --x0 1 --u0 0 --v0 0",
-       "option --alpha is missing: give the mass ratio (or --from-orbit)"},
+       "--alpha is missing: give the mass ratio (or --from-orbit)"},
       {"simulate " + kOrbit + " --alpha 0.3 --x0 1",
        "the initial state is missing: give all of --x0, --u0, --v0 (or --from-orbit)"},
       {"simulate " + kOrbit + " --from-orbit --alpha 0.3", "--alpha excludes --from-orbit"},
