@@ -21,6 +21,7 @@
 #include "attract_options.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/design_drive_settings.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
 #include "capsubot/report/design_json.hpp"
@@ -34,6 +35,7 @@
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "result_output.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -48,10 +50,7 @@ struct DesignCliOptions {
   std::string shard;  // "K/N", empty: the whole grid
   bool resume = false;
   std::vector<double> band_levels = DesignOneMode{}.band_levels;  // the speed bands' levels
-  std::string drive;        // --drive: sine, fourier or pulse (empty: no drive design)
-  double force_max = kNaN;  // --force-max [N]
-  int harmonics = kDesignDriveHarmonics;       // --harmonics (fourier)
-  int pulse_levels = kDesignDrivePulseLevels;  // --pulse-levels (pulse)
+  DesignDriveChoice drive;  // --drive, --force-max, --harmonics, --pulse-levels
 };
 
 // The command line's outputs that only some runs write.
@@ -61,7 +60,7 @@ const std::vector<SettingUse> kOutputUses = {{"json", {"", "from-rest", "drive"}
                                              {"resume", {"grid"}}};
 
 std::string RunOf(const DesignCliOptions& opt) {
-  if (!opt.drive.empty()) return "drive";
+  if (!opt.drive.drive.empty()) return "drive";
   if (!opt.grids.empty()) return "grid";
   return opt.part_b ? "from-rest" : "";
 }
@@ -92,7 +91,7 @@ std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
 void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   const std::string run = RunOf(opt);
   const SettingNames names{kDesignFlags};
-  if (!opt.drive.empty()) RejectRunsWithDrive(opt.part_b, !opt.grids.empty(), names);
+  if (!opt.drive.drive.empty()) RejectRunsWithDrive(opt.part_b, !opt.grids.empty(), names);
   if (!opt.grids.empty() && opt.part_b) {
     throw std::invalid_argument(
         "--from-rest is invalid with --grid: expected one of them (a grid writes the "
@@ -102,7 +101,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
   const std::set<std::string> given = GivenSettings(cmd);
   RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
   RejectUnusedSettings(kOutputUses, given, run, run_name, names, "is invalid with");
-  if (run == "drive") RejectUnusedDriveSettings(opt.drive, given, names);
+  if (run == "drive") RejectUnusedDriveSettings(opt.drive.drive, given, names);
 }
 
 using Settings = DesignSettingTexts;
@@ -229,9 +228,9 @@ int RunGrid(const DesignCliOptions& opt, const CLI::App& cmd) {
 DesignDriveMode DriveMode(const DesignCliOptions& opt) {
   DesignDriveMode mode;
   DriveDesignOptions& d = mode.options;
-  d.drive =
-      DesignDriveFamily(opt.drive, opt.harmonics, opt.pulse_levels, SettingNames{kDesignFlags});
-  d.force_max = opt.force_max;
+  d.drive = DesignDriveFamily(opt.drive.drive, opt.drive.harmonics, opt.drive.pulse_levels,
+                              SettingNames{kDesignFlags});
+  d.force_max = opt.drive.force_max;
   d.effort = opt.from_rest.Effort();
   d.check = opt.from_rest.Check();
   return mode;
@@ -242,9 +241,9 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
   if (!opt.grids.empty()) return RunGrid(opt, cmd);
   Settings settings;
   DesignJobOptions options;
-  options.input = BuildDesignInput(opt.config, {}, &settings, opt.drive.empty());
-  if (!opt.drive.empty()) {
-    RequireDriveForceMax(opt.force_max);
+  options.input = BuildDesignInput(opt.config, {}, &settings, opt.drive.drive.empty());
+  if (!opt.drive.drive.empty()) {
+    RequireDriveForceMax(opt.drive.force_max);
     options.mode = DriveMode(opt);
     if (ProgressShown()) options.on_stage = [](const std::string& text) { ShowStage(text); };
   } else {
@@ -268,22 +267,12 @@ int Run(const DesignCliOptions& opt, const CLI::App& cmd) {
 
 // The options of the drive design (--drive and what sizes it).
 void AddDriveOptions(CLI::App& cmd, DesignCliOptions& opt) {
-  cmd.add_option("--drive", opt.drive,
-                 "instead of the one-impact design, the fastest drive from rest: the force's "
-                 "waveform (sine: A sin + c; fourier: --harmonics K; pulse: --pulse-levels N "
-                 "constant levels), the motor frequency over --frequency-range and the inner "
-                 "mass over --m2-range, under the motor's peak --force-max, in each direction "
-                 "(docs/design.md, part (c)); no --force-* settings")
-      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
-  cmd.add_option("--force-max", opt.force_max,
-                 "with --drive: the motor's peak force max |F_N| [N], > 0");
-  cmd.add_option("--harmonics", opt.harmonics,
-                 "with --drive fourier: harmonics K of the drive, 1 <= K <= 16 (the search "
-                 "climbs K = 1, 2, ..., K)")
-      ->capture_default_str();
-  cmd.add_option("--pulse-levels", opt.pulse_levels,
-                 "with --drive pulse: constant levels N of the drive, 2 <= N <= 16")
-      ->capture_default_str();
+  // The helps name the robot's ranges, which are the config stage's settings.
+  static const FlagNames flags =
+      WithDashedFlags({{"frequency_range", "--frequency-range"}, {"m2_range", "--m2-range"}},
+                      DesignDriveSettings());
+  AddSettings(cmd, opt.drive, DesignDriveSettings(), flags);
+  cmd.get_option("--drive")->check(CLI::IsMember({"sine", "fourier", "pulse"}));
   AddDriveBudgetOptions(cmd, opt.from_rest);
 }
 

@@ -15,6 +15,7 @@
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/job/sweep_setting_tables.hpp"
 #include "capsubot/job/sweep_settings.hpp"
 #include "capsubot/report/sweep_plot.hpp"
 #include "capsubot/report/sweep_text.hpp"
@@ -25,6 +26,7 @@
 #include "help_format.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "setting_options.hpp"
 #include "sweep_flags.hpp"
 
 namespace capsubot::app {
@@ -137,6 +139,17 @@ int Run(const SweepCliOptions& opt, const CLI::App& cmd) {
   });
 }
 
+// The flags the options of the library's tables are declared with: the sweep's flags, and -o
+// for the output too.
+const FlagNames& SweepDeclaredFlags() {
+  static const FlagNames names = [] {
+    FlagNames n = {{"output", "--output,-o"}};
+    n.insert(n.end(), kSweepFlags.begin(), kSweepFlags.end());
+    return n;
+  }();
+  return names;
+}
+
 // --grid, the force, the model parameters, --output and --stability.
 void AddInputOptions(CLI::App* cmd, SweepCliOptions& opt) {
   cmd->add_option("--grid", opt.grids,
@@ -163,15 +176,10 @@ void AddInputOptions(CLI::App* cmd, SweepCliOptions& opt) {
       "required unless phi0 has a --grid, is optimised (--optimize) or solved for "
       "(--grid alpha); default 0 for a Fourier force");
   AddParamsOptions(*cmd, opt.settings.params, &opt.settings.margins);
-  cmd->add_option(
-         "--output,-o", opt.settings.file.output,
-         "the CSV file to write (required); - writes to standard output (no --resume then)")
-      ->required()
-      ->type_name("FILE");
-  cmd->add_flag("--stability", opt.settings.stability,
-                "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
-                "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss "
-                "(fold, flip or torus when unstable)");
+  const FlagNames& flags = SweepDeclaredFlags();
+  AddSettings(*cmd, opt.settings.file, SweepFileSettings(), flags, {"output"});
+  cmd->get_option("--output")->required();
+  AddSettings(*cmd, opt.settings, SweepModeSettings(), flags, {"stability"});
 }
 
 // --optimize and the options of its modes.
@@ -180,63 +188,27 @@ void AddOptimizeOptions(CLI::App* cmd, SweepCliOptions& opt) {
   for (SweepOptimize mode : SweepOptimizeModes()) {
     modes += (modes.empty() ? "" : "|") + std::string(SweepOptimizeName(mode));
   }
-  CLI::Option* optimize =
-      cmd->add_option(
-             "--optimize", opt.settings.optimize,
-             "the best gait at every point: phi0 (P1: the impact phase for the given force "
-             "shape; adds column phi0), forcing (P2: A, c, phi0 with A + c <= --bound; "
-             "adds A, c, phi0), fourier (P3: a --harmonics K force with max |F| <= "
-             "--bound; adds c, a1..aK, b1..bK) or reach (the fastest motion from rest, as "
-             "`optimize --problem reach`: A, c, phi0, alpha, mean_velocity, ..., the robust "
-             "seed's seed_v_mean and seed_mean_velocity_from_rest; seconds per point); adds a "
-             "status column")
-          ->type_name(modes);
-  CLI::Option* rho_max =
-      cmd->add_option("--rho-max", opt.settings.search.gait.rho_max,
-                      "with --optimize: maximise over orbits whose spectral radius is at most "
-                      "rho_max > 0 (docs/model.md sections 8, 12); inf: no stability requirement")
-          ->capture_default_str()
-          ->type_name(kFloatOrInf)
-          ->needs(optimize);
+  const FlagNames& flags = SweepDeclaredFlags();
+  SweepSettings& s = opt.settings;
+  AddSettings(*cmd, s, SweepModeSettings(), flags, {"optimize"});
+  CLI::Option* optimize = cmd->get_option("--optimize")->type_name(modes);
+  AddSettings(*cmd, s.search.gait, SweepGaitSettings(), flags, {"rho_max"});
+  CLI::Option* rho_max = cmd->get_option("--rho-max")->type_name(kFloatOrInf)->needs(optimize);
   cmd->add_flag_callback(
          "--stable-only", [&opt] { opt.settings.stable_only = true; },
          "with --optimize: the same as --rho-max 1 (valid and stable orbits only)")
       ->excludes(rho_max)
       ->needs(optimize);
-  cmd->add_option("--scan-points", opt.settings.scan_points,
-                  fmt::format("with --optimize phi0: points of the optimiser's initial scan of "
-                              "phi0, {} to {}",
-                              kMinScanPoints, kMaxScanPoints))
-      ->capture_default_str()
-      ->needs(optimize);
-  cmd->add_option("--bound", opt.settings.search.gait.force_bound,
-                  "with --optimize forcing|fourier|reach: the force bound A + c (max |F|) <= "
-                  "bound <= T0 (default: T0)");
-  cmd->add_option("--harmonics", opt.settings.search.harmonics,
-                  "with --optimize fourier: the number K of harmonics")
-      ->capture_default_str();
+  AddSettings(*cmd, s, SweepModeSettings(), flags, {"scan_points"});
+  cmd->get_option("--scan-points")->needs(optimize);
+  AddSettings(*cmd, s.search.gait, SweepGaitSettings(), flags, {"bound"});
+  AddSettings(*cmd, s.search, SweepSearchSettings(), flags, {"harmonics"});
   cmd->add_option("--starts", opt.starts,
                   "with --optimize forcing|fourier|reach: local polishes of the multistart, >= 1 "
                   "(default: 10 for forcing and reach's seed, 20 for fourier)");
-  cmd->add_option("--hops", opt.settings.search.hops,
-                  "with --optimize forcing|reach: basin-hopping restarts after the starts")
-      ->capture_default_str();
-  cmd->add_option("--global-algorithm", opt.settings.search.global_algorithm,
-                  "with --optimize forcing|fourier|reach: multistart or an NLopt global "
-                  "algorithm (GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)")
-      ->capture_default_str();
-  cmd->add_option("--local-algorithm", opt.settings.search.local_algorithm,
-                  "with --optimize forcing|fourier|reach: the local polish (LN_COBYLA, "
-                  "LD_SLSQP, LD_MMA, LD_CCSAQ)")
-      ->capture_default_str();
-  cmd->add_option(
-      "--global-evaluations", opt.settings.search.global_evaluations,
-      fmt::format("with --optimize forcing|fourier|reach: evaluation budget of an NLopt global "
-                  "algorithm (not multistart), 10 to {}",
-                  kMaxStageEvaluations));
-  cmd->add_option("--alpha", opt.settings.alpha,
-                  "with --optimize reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is "
-                  "optimised too)");
+  AddSettings(*cmd, s.search, SweepSearchSettings(), flags,
+              {"hops", "global_algorithm", "local_algorithm", "global_evaluations"});
+  AddSettings(*cmd, s, SweepModeSettings(), flags, {"alpha"});
   // reach: the seed's check from rest and the search's evaluation budgets, which bound each
   // point (no wall-clock limit: the rows must not depend on the machine's speed).
   AddFromRestStartsOption(*cmd, opt.from_rest);
@@ -248,14 +220,8 @@ void AddRunOptions(CLI::App* cmd, SweepCliOptions& opt) {
   cmd->add_flag("--no-header-comment", opt.no_header_comment,
                 "write no comment lines before the header (for tools that cannot skip '#' "
                 "lines; pandas: comment='#', gnuplot: skips them by default)");
-  cmd->add_flag("--resume", opt.settings.file.resume,
-                "continue an interrupted sweep from <output>.checkpoint (same options "
-                "required; the checkpoint's checksums are verified); without it a sweep "
-                "always starts again");
-  cmd->add_option("--checkpoint-seconds", opt.settings.file.checkpoint_seconds,
-                  "minimum time [s] between two checkpoints (each one fsyncs the partial file); "
-                  "0: after every block of rows")
-      ->capture_default_str();
+  AddSettings(*cmd, opt.settings.file, SweepFileSettings(), SweepDeclaredFlags(),
+              {"resume", "checkpoint_seconds"});
   cmd->add_option("--shard", opt.shard,
                   "compute only shard K of N (0 <= K < N): the grid points p with p % N = K; "
                   "the file gets a line '# shard K/N of T points'; `capsubot merge OUT "
