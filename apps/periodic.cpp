@@ -8,6 +8,7 @@
 
 #include "attract_options.hpp"
 #include "capsubot/job/periodic_job.hpp"
+#include "capsubot/job/periodic_start_spec.hpp"
 #include "capsubot/job/shooting_settings.hpp"
 #include "capsubot/report/periodic_json.hpp"
 #include "capsubot/report/periodic_text.hpp"
@@ -36,21 +37,10 @@ const FlagNames kShootingFlags = {
 // The start --from-rest or --x0, --u0, --v0, --psi give, with --transient when given (else
 // the start's default).
 PeriodicStart Start(const PeriodicCommandOptions& opt) {
-  const bool transient = opt.transient_option->count() > 0;
-  const std::optional<PhaseState> state = opt.start_state.Spec().Build(
-      !opt.from_rest.empty(), "from_rest", "--from-rest X0,PSI", kStartFlags);
-  if (!state) {
-    const PhaseState rest = ParseRestStart("--from-rest", opt.from_rest);
-    PeriodicFromRest start;
-    start.x0 = rest.x;
-    start.psi = rest.psi;
-    if (transient) start.transient = opt.transient;
-    return start;
-  }
-  PeriodicFromState start;
-  start.state = *state;
-  if (transient) start.transient = opt.transient;
-  return start;
+  PeriodicStartSpec spec{opt.start_state.Spec(), std::nullopt, std::nullopt, std::nullopt};
+  if (!opt.from_rest.empty()) spec.from_rest = ParseRestStart("--from-rest", opt.from_rest);
+  if (opt.transient_option->count() > 0) spec.transient = opt.transient;
+  return spec.Build("--from-rest X0,PSI", kStartFlags);
 }
 
 int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {

@@ -11,36 +11,12 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "capsubot/attract/start_state_spec.hpp"
 #include "capsubot/job/periodic_job.hpp"
+#include "capsubot/job/periodic_start_spec.hpp"
 #include "capsubot/report/periodic_json.hpp"
 
 namespace capsubot::python {
 namespace {
-
-// The start: a state (x0, u0, v0 at phase psi) or from rest (from_rest = (x0, psi)), with the
-// period when known (Newton from the start itself) or a transient when given.
-PeriodicStart Start(std::optional<double> x0, std::optional<double> u0, std::optional<double> v0,
-                    std::optional<double> psi,
-                    const std::optional<std::pair<double, double>>& from_rest,
-                    std::optional<int> transient, std::optional<int> period) {
-  const std::optional<PhaseState> given = StartStateSpec{x0, u0, v0, psi}.Build(
-      from_rest.has_value(), "from_rest", "from_rest=(x0, psi)");
-  if (period && transient) {
-    throw std::invalid_argument(
-        "period and transient are exclusive: with the period given, Newton starts at the start "
-        "itself");
-  }
-  const PhaseState state = given ? *given : RestStart(from_rest->first, from_rest->second);
-  if (period) return PeriodicOfPeriod{state, *period};
-  if (!from_rest)
-    return PeriodicFromState{state, transient.value_or(PeriodicFromState{}.transient)};
-  PeriodicFromRest rest;
-  rest.x0 = from_rest->first;
-  rest.psi = from_rest->second;
-  rest.transient = transient.value_or(rest.transient);
-  return rest;
-}
 
 py::dict Periodic(std::optional<double> A, std::optional<double> c, std::optional<double> phi0,
                   std::optional<std::vector<double>> cos, std::optional<std::vector<double>> sin,
@@ -54,7 +30,10 @@ py::dict Periodic(std::optional<double> A, std::optional<double> c, std::optiona
   o.params = Params{T0, e};
   o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   o.alpha = alpha;
-  o.start = Start(x0, u0, v0, psi, from_rest, transient, period);
+  std::optional<PhaseState> rest;
+  if (from_rest) rest = RestStart(from_rest->first, from_rest->second);
+  o.start =
+      PeriodicStartSpec{{x0, u0, v0, psi}, rest, transient, period}.Build("from_rest=(x0, psi)");
   o.shooting.max_period = max_period;
   o.shooting.step = step;
   o.shooting.chatter_velocity = chatter_velocity;
