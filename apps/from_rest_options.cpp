@@ -1,13 +1,9 @@
 #include "from_rest_options.hpp"
 
-#include <fmt/format.h>
-
-#include <cmath>
-#include <tuple>
-#include <utility>
-
 #include "attract_options.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/reach_effort_settings.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 
@@ -35,72 +31,38 @@ void AddFromRestStartsOption(CLI::App& cmd, FromRestCliOptions& o) {
       ->capture_default_str();
 }
 
+namespace {
+
+// The flags of the reach search's effort: "--" and the field, and --harmonics its helps name.
+const FlagNames& ReachEffortFlags() {
+  static const FlagNames names =
+      WithDashedFlags({{"harmonics", DashedFlag("harmonics")}}, ReachEffortSettings());
+  return names;
+}
+
+}  // namespace
+
 void AddFromRestOptions(CLI::App& cmd, FromRestCliOptions& o, bool reach) {
   AddFromRestStartsOption(cmd, o);
   AddThreadsOption(cmd, o.threads);
   if (!reach) return;
   AddReachBudgetOptions(cmd, o);
-  cmd.add_option(
-         "--reach-seconds", o.budgets.max_seconds,
-         "wall-clock limit of the reach search in seconds, looked at between two evaluations of "
-         "its grid (the re-checks come on top)")
-      ->capture_default_str();
+  AddSettings(cmd, o.budgets, ReachEffortSettings(), ReachEffortFlags(), {"reach_seconds"});
 }
-
-namespace {
-
-// A budget of the reach search: its flag, its field, its help (its default is shown).
-struct BudgetFlag {
-  const char* flag;
-  int ReachEffort::*field;
-  const char* help;
-};
-
-// The evaluation budgets of the reach search's stages, in the order of --help.
-const BudgetFlag kReachBudgets[] = {
-    {"--reach-evaluations", &ReachEffort::global_evaluations,
-     "from-rest evaluations of the reach search's global stage (DIRECT-L), >= 1"},
-    {"--reach-local-evaluations", &ReachEffort::local_evaluations,
-     "from-rest evaluations of the reach search's local polish (Sbplx), >= 0"},
-};
-
-// The budgets of each Fourier drive K >= 2 and pulse drive, in the order of --help.
-const BudgetFlag kDriveBudgets[] = {
-    {"--drive-evaluations", &ReachEffort::drive_evaluations,
-     "from-rest evaluations of the first global stage (Halton points of the box) of each "
-     "Fourier drive K >= 2 (--harmonics) and pulse drive, >= 1"},
-    {"--drive-polishes", &ReachEffort::drive_polishes,
-     "local polishes (Nelder-Mead) of each Fourier drive K >= 2, from its best distinct points, "
-     ">= 1"},
-    {"--drive-local-evaluations", &ReachEffort::drive_local_evaluations,
-     "from-rest evaluations of each of those polishes, >= 0"},
-    {"--drive-refine-evaluations", &ReachEffort::drive_refine_evaluations,
-     "from-rest evaluations of the controlled random search (GN_CRS2_LM) after the Halton "
-     "points, from the best of them, >= 0"},
-    {"--drive-screens", &ReachEffort::drive_screens,
-     "short local screens (Nelder-Mead, a quarter of a polish's evaluations each) before the "
-     "polishes, from the best distinct points, >= 0"},
-};
-
-template <std::size_t N>
-void AddBudgets(CLI::App& cmd, FromRestCliOptions& o, const BudgetFlag (&budgets)[N]) {
-  for (const BudgetFlag& b : budgets) {
-    cmd.add_option(b.flag, o.budgets.*b.field, b.help)->capture_default_str();
-  }
-}
-
-}  // namespace
 
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
   cmd.add_option("--reach-starts", o.reach_starts,
                  "grid NXxNPSI of starts from rest inside the reach search (the winner is "
                  "re-checked on --from-rest-starts)")
       ->capture_default_str();
-  AddBudgets(cmd, o, kReachBudgets);
+  AddSettings(cmd, o.budgets, ReachEffortSettings(), ReachEffortFlags(),
+              {"reach_evaluations", "reach_local_evaluations"});
 }
 
 void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
-  AddBudgets(cmd, o, kDriveBudgets);
+  AddSettings(cmd, o.budgets, ReachEffortSettings(), ReachEffortFlags(),
+              {"drive_evaluations", "drive_polishes", "drive_local_evaluations",
+               "drive_refine_evaluations", "drive_screens"});
 }
 
 }  // namespace capsubot::app

@@ -20,6 +20,7 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/optimize_job.hpp"
 #include "capsubot/job/optimize_settings.hpp"
+#include "capsubot/job/search_settings.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/report/optimize_csv.hpp"
 #include "capsubot/report/optimize_json.hpp"
@@ -31,6 +32,7 @@
 #include "optimize_flags.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 namespace {
@@ -157,46 +159,15 @@ int Run(const OptimizeCliOptions& opt) {
 // The gait asked for and the search of P1-P3: --bound, --rho-max/--stable, --max-time,
 // --harmonics, the algorithms and their budgets.
 void AddSearchOptions(CLI::App& cmd, OptimizeCliOptions& opt) {
-  cmd.add_option("--bound", opt.settings.search.gait.force_bound,
-                 "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, "
-                 "same unit as A (default: T0)");
-  CLI::Option* rho_max =
-      cmd.add_option("--rho-max", opt.settings.search.gait.rho_max,
-                     "largest spectral radius of the impact map (docs/model.md sections 8, 12); "
-                     "inf: no stability requirement")
-          ->capture_default_str()
-          ->type_name(kFloatOrInf);
+  SearchRequest& search = opt.settings.search;
+  AddSettings(cmd, search.gait, GaitBoundSettings(), kOptimizeFlags);
+  CLI::Option* rho_max = cmd.get_option("--rho-max")->type_name(kFloatOrInf);
   cmd.add_flag_callback(
-         "--stable", [&opt] { opt.settings.search.gait.rho_max = 1.0; },
+         "--stable", [&search] { search.gait.rho_max = 1.0; },
          "the same as --rho-max 1: stable orbits, up to marginal stability")
       ->excludes(rho_max);
-  cmd.add_option("--max-time", opt.settings.search.max_time,
-                 "time limit [s] of each optimisation; when reached, the best point so far is "
-                 "reported with status max_time (inf: none)")
-      ->capture_default_str()
-      ->type_name(kFloatOrInf);
-  cmd.add_option("--harmonics", opt.settings.search.harmonics,
-                 "number K of harmonics of the Fourier force: fourier (P3), or reach (the fastest "
-                 "Fourier drive from rest, climbing from the sine: K = 1 is the sine)")
-      ->capture_default_str();
-  cmd.add_option("--global-algorithm", opt.settings.search.global_algorithm,
-                 "global stage of forcing/fourier: multistart (scan + local polishes) or an "
-                 "NLopt algorithm: GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS")
-      ->capture_default_str();
-  cmd.add_option("--local-algorithm", opt.settings.search.local_algorithm,
-                 "local constrained polish, NLopt name: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ "
-                 "(LD_*: gradients by central differences)")
-      ->capture_default_str();
-  cmd.add_option("--global-evaluations", opt.settings.search.global_evaluations,
-                 fmt::format("evaluation budget of an NLopt global algorithm (not used by "
-                             "multistart), 10 to {}",
-                             kMaxStageEvaluations))
-      ->capture_default_str();
-  cmd.add_option("--hops", opt.settings.search.hops,
-                 fmt::format("forcing: basin-hopping restarts from random perturbations of the "
-                             "best point after the starts, 0 to {}",
-                             kMaxStarts))
-      ->capture_default_str();
+  AddSettings(cmd, search, SearchSettings(), kOptimizeFlags);
+  cmd.get_option("--max-time")->type_name(kFloatOrInf);
   cmd.add_option("--starts", opt.starts,
                  fmt::format("number of local polishes of the multistart, 1 to {} (default: 10 for "
                              "forcing, 20 for fourier)",
@@ -243,12 +214,10 @@ Command AddOptimizeCommand(CLI::App& app) {
       "(valid, stable) for comparison, and which gait to build. With --problem: one problem. "
       "Prints a summary (or --json); -o also writes the JSON. Exit status 0 whenever the "
       "computation ran, valid gait found or not.");
-  cmd->add_option("--problem", opt->settings.problem,
-                  "phase (P1: best phi0 for given --A, --c), forcing (P2: best A, c, phi0 with "
-                  "A + c <= --bound), fourier (P3: best K-harmonic force with max |F| <= "
-                  "--bound) or reach (the fastest motion from rest: A, c, alpha with A + c <= "
-                  "--bound, simulated, seeded with the robust P2 gait); P1, P2 and P3 name the "
-                  "first three; default: the main job")
+  OptimizeSettings& settings = opt->settings;
+  const SettingTable<OptimizeSettings>& table = OptimizeProblemSettings();
+  AddSettings(*cmd, settings, table, kOptimizeFlags, {"problem"});
+  cmd->get_option("--problem")
       ->transform(CLI::Transformer(
                       std::map<std::string, std::string>{
                           {"P1", "phase"}, {"P2", "forcing"}, {"P3", "fourier"}},
@@ -256,30 +225,21 @@ Command AddOptimizeCommand(CLI::App& app) {
                       .description(""))
       ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}).description(""))
       ->type_name("phase|forcing|fourier|reach");  // the help and the completion show these
-  cmd->add_option("--A", opt->settings.A,
-                  "amplitude A >= 0 of F = A sin(phi + phi0) + c for --problem phase, in units "
-                  "of (m1+m2) omega^2 L");
-  cmd->add_option("--c", opt->settings.c, "mean force c > 0 of F for --problem phase (same unit)");
-  AddParamsOptions(*cmd, opt->settings.params, &opt->settings.search.gait.margins);
+  AddSettings(*cmd, settings, table, kOptimizeFlags, {"A", "c"});
+  AddParamsOptions(*cmd, settings.params, &settings.search.gait.margins);
   AddFromRestOptions(*cmd, opt->from_rest, true);
   AddDriveBudgetOptions(*cmd, opt->from_rest);
-  cmd->add_option("--alpha", opt->settings.alpha,
-                  "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)");
+  AddSettings(*cmd, settings, table, kOptimizeFlags, {"alpha"});
   cmd->add_option("--T0-range", opt->T0_range,
                   "reach: the motor's frequency free, LO:HI: T0 = mu g/(omega^2 L) in [LO, HI] "
                   "(holding --T0), the force bound tied to T0, the speed in units of "
                   "sqrt(mu g L), v_mean/sqrt(T0), maximised (docs/reach.md, Frequency)")
       ->type_name("LO:HI");
-  cmd->add_option("--waveform", opt->settings.waveform,
-                  "reach: the drives searched: sine (A sin(phi + phi0) + c, the default), fourier "
-                  "(--harmonics K, the default when --harmonics is given) or pulse (--pulse-levels "
-                  "N constant levels between switching phases), all with max |F| <= --bound")
+  AddSettings(*cmd, settings, table, kOptimizeFlags, {"waveform", "pulse_levels"});
+  cmd->get_option("--waveform")
       ->check(CLI::IsMember({"sine", "fourier", "pulse"}).description(""))
       ->type_name("sine|fourier|pulse");
-  cmd->add_option("--pulse-levels", opt->settings.pulse_levels,
-                  "reach --waveform pulse: the number N of levels, 2 <= N <= 16")
-      ->capture_default_str();
-  cmd->add_option("--band-levels", opt->settings.band_levels,
+  cmd->add_option("--band-levels", settings.band_levels,
                   "main job: the levels of the speed bands, fractions of the speed from rest in "
                   "(0, 1), comma-separated: how far T0, e and alpha move, each way, before the "
                   "mean speed from rest falls below each (docs/optimize.md)")

@@ -10,6 +10,7 @@
 
 #include "capsubot/attract/start_grid.hpp"
 #include "capsubot/job/optimize_job.hpp"
+#include "capsubot/job/setting_table.hpp"
 #include "capsubot/job/setting_use.hpp"
 #include "capsubot/model/setting_names.hpp"
 
@@ -41,6 +42,11 @@ struct OptimizeSettings {
 
   bool Given(const std::string& field) const { return given.count(field) > 0; }
 };
+
+/// problem, A, c, alpha, waveform, pulse_levels: the problem and the settings of its own that a
+/// front end reads as values (the search's: search_settings.hpp; the reach search's effort:
+/// reach_effort_settings.hpp). The range of T0 and the speed bands are read as text.
+const SettingTable<OptimizeSettings>& OptimizeProblemSettings();
 
 /// The problems that use each setting ("": the main job); a setting not listed shapes every one.
 const std::vector<SettingUse>& OptimizeSettingUses();

@@ -1,0 +1,20 @@
+#pragma once
+// The search of the optimize job's gaits (SearchRequest, docs/optimize.md) as `capsubot
+// optimize` offers it: the gait asked for (its force bound and stability requirement; its
+// margins are the model's settings) and how P1-P3 search it (the Fourier force's harmonics, the
+// algorithms, their budgets and time limit). The number of starts, whose default is each
+// problem's own, is read by the front end.
+
+#include "capsubot/job/setting_table.hpp"
+#include "capsubot/model/gait_requirements.hpp"
+#include "capsubot/optimize/optimize_request.hpp"
+
+namespace capsubot {
+
+/// bound, rho_max: the force bound (default: T0) and the largest spectral radius of the gait.
+const SettingTable<GaitRequirements>& GaitBoundSettings();
+
+/// max_time, harmonics, global_algorithm, local_algorithm, global_evaluations, hops.
+const SettingTable<SearchRequest>& SearchSettings();
+
+}  // namespace capsubot

@@ -1,0 +1,90 @@
+// The tables of the optimize job's settings (capsubot/job/optimize_settings.hpp,
+// search_settings.hpp, reach_effort_settings.hpp): `capsubot optimize` declares one option per
+// row, so no two rows may set one field or one value, and a help may name only the job's
+// settings.
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "capsubot/job/optimize_settings.hpp"
+#include "capsubot/job/reach_effort_settings.hpp"
+#include "capsubot/job/search_settings.hpp"
+#include "job/setting_table_checks.hpp"
+#include "test_utils.hpp"
+
+namespace capsubot {
+namespace {
+
+using testing::WellFormed;
+
+// The problem's helps name the force bound and the Fourier drive's harmonics, settings of the
+// search's tables.
+TEST(OptimizeTables, EachTableIsWellFormed) {
+  EXPECT_TRUE(WellFormed(OptimizeProblemSettings(), {"bound", "harmonics"}));
+  EXPECT_TRUE(WellFormed(GaitBoundSettings()));
+  EXPECT_TRUE(WellFormed(SearchSettings()));
+}
+
+// The tables bound to the settings' values as the command binds them.
+testing::SettingTablesCheck OptimizeTables(const OptimizeSettings& s) {
+  testing::SettingTablesCheck check;
+  check.Add(OptimizeProblemSettings(), s);
+  check.Add(GaitBoundSettings(), s.search.gait);
+  check.Add(SearchSettings(), s.search);
+  check.Add(ReachEffortSettings(), s.reach);
+  return check;
+}
+
+TEST(OptimizeTables, EveryRowSetsAFieldAndAValueOfItsOwn) {
+  const OptimizeSettings settings;
+  EXPECT_TRUE(OptimizeTables(settings).EachFieldAndValueOnce());
+}
+
+TEST(OptimizeTables, HelpsNameOnlyTheJobsSettings) {
+  const OptimizeSettings settings;
+  const testing::SettingTablesCheck check = OptimizeTables(settings);
+  ASSERT_FALSE(check.AllPlaceholders().empty());
+  EXPECT_TRUE(check.HelpsNameKnownSettings({}));
+}
+
+// Each row's field is a setting of the job's rules: a setting some problems use
+// (OptimizeSettingUses), refused by that name when given to the problem P1 (phase) that does not
+// use it, or one of the settings every problem uses: the problem, the stability requirement and
+// the time limit.
+TEST(OptimizeTables, TheFieldsAreTheNamesOfTheJobsRules) {
+  const std::set<std::string> every_problem = {"problem", "rho_max", "max_time"};
+  std::set<std::string> used_by_some;
+  for (const SettingUse& use : OptimizeSettingUses()) used_by_some.insert(use.setting);
+  OptimizeSettings phase;
+  phase.problem = "phase";
+  phase.A = 0.3;
+  phase.c = 0.1;
+  const std::vector<std::string> unused = UnusedOptimizeSettings(phase);
+  const std::set<std::string> unused_by_phase(unused.begin(), unused.end());
+  int refused = 0;
+  const auto check = [&](const auto& table) {
+    for (const auto& row : table) {
+      const std::string field = row.field;
+      EXPECT_TRUE(used_by_some.count(field) > 0 || every_problem.count(field) > 0) << field;
+      if (unused_by_phase.count(field) == 0) continue;
+      ++refused;
+      OptimizeSettings s = phase;
+      s.given = {"problem", "A", "c", field};
+      const std::string message =
+          testing::InvalidArgumentMessage([&] { OptimizeJobFrom(s, SettingNames{{}}); });
+      EXPECT_EQ(message.rfind(field + " conflicts with", 0), 0u)
+          << field << ": \"" << message << "\"";
+    }
+  };
+  check(OptimizeProblemSettings());
+  check(GaitBoundSettings());
+  check(SearchSettings());
+  check(ReachEffortSettings());
+  EXPECT_GT(refused, 0);
+}
+
+}  // namespace
+}  // namespace capsubot
