@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <set>
 #include <stdexcept>
@@ -41,9 +42,23 @@ FlagNames WithDashedFlags(FlagNames names, const SettingTable<Options>&... table
   return names;
 }
 
+/// Whether a setting's default is a value to show: not a number not given (NaN) nor an empty
+/// text, which mean "none" (required, or computed by the job).
+template <class Field>
+bool HasDefault(const Field& field) {
+  if constexpr (std::is_floating_point_v<Field>) {
+    return !std::isnan(field);
+  } else if constexpr (std::is_same_v<Field, std::string>) {
+    return !field.empty();
+  } else {
+    return true;
+  }
+}
+
 /// Adds the option of `row` to `cmd` (a flag for a bool field), named by `flags`, bound to the
 /// row's field of `options`, with the row's help in the flags' names, its range (Bounded), its
-/// default (unless the row hides it) and its type name (when the row has one).
+/// default (when it has one: HasDefault, and the row shows it) and its type name (when the
+/// row has one).
 template <class Options>
 CLI::Option* AddSetting(CLI::App& cmd, Options& options, const SettingRow<Options>& row,
                         const FlagNames& flags) {
@@ -57,7 +72,7 @@ CLI::Option* AddSetting(CLI::App& cmd, Options& options, const SettingRow<Option
         } else {
           CLI::Option* option = cmd.add_option(flag, field, help);
           if (row.lo < row.hi) Bounded(option, row.lo, row.hi);
-          if (row.show_default) option->capture_default_str();
+          if (row.default_shown && HasDefault(field)) option->capture_default_str();
           if (row.type_name != nullptr) option->type_name(row.type_name);
           return option;
         }

@@ -5,8 +5,8 @@ namespace capsubot {
 const SettingTable<BifurcationOptions>& BifurcationRangeSettings() {
   using B = BifurcationOptions;
   static const SettingTable<BifurcationOptions> table = {
-      {"from", &B::from, "first value of the parameter", 0, 0, false},
-      {"to", &B::to, "last value of the parameter", 0, 0, false},
+      {"from", &B::from, "first value of the parameter"},
+      {"to", &B::to, "last value of the parameter"},
       {"steps", &B::steps, "values of the parameter, both ends included"}};
   return table;
 }

@@ -6,16 +6,14 @@ const SettingTable<ContinueJobOptions>& ContinueParamSettings() {
   static const SettingTable<ContinueJobOptions> table = {
       {"param", &ContinueJobOptions::param,
        "the parameter followed: A, c, alpha, T0, e, phi0, or a Fourier coefficient a1..a16, "
-       "b1..b16",
-       0, 0, false}};
+       "b1..b16"}};
   return table;
 }
 
 const SettingTable<ContinuationOptions>& ContinuationRangeSettings() {
   using C = ContinuationOptions;
   static const SettingTable<ContinuationOptions> table = {
-      {"from", &C::from, "lower end of the range", 0, 0, false},
-      {"to", &C::to, "upper end of the range", 0, 0, false}};
+      {"from", &C::from, "lower end of the range"}, {"to", &C::to, "upper end of the range"}};
   return table;
 }
 
@@ -24,10 +22,9 @@ const SettingTable<FollowOptions>& FollowSettings() {
   static const SettingTable<FollowOptions> table = {
       {"param2", &F::param2,
        "also follow the branch's first located special point of the {follow} type in two "
-       "parameters, this one the second (a parameter other than {param})",
-       0, 0, false},
-      {"from2", &F::from2, "lower end of the {param2} range", 0, 0, false},
-      {"to2", &F::to2, "upper end of the {param2} range", 0, 0, false}};
+       "parameters, this one the second (a parameter other than {param})"},
+      {"from2", &F::from2, "lower end of the {param2} range"},
+      {"to2", &F::to2, "upper end of the {param2} range"}};
   return table;
 }
 

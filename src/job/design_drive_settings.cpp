@@ -10,10 +10,8 @@ const SettingTable<DesignDriveChoice>& DesignDriveSettings() {
        "(sine: A sin + c; fourier: {harmonics} K; pulse: {pulse_levels} N constant levels), the "
        "motor frequency over {frequency_range} and the inner mass over {m2_range}, under the "
        "motor's peak {force_max}, in each direction (docs/design.md, part (c)); no --force-* "
-       "settings",
-       0, 0, false},
-      {"force_max", &D::force_max, "with {drive}: the motor's peak force max |F_N| [N], > 0", 0, 0,
-       false},
+       "settings"},
+      {"force_max", &D::force_max, "with {drive}: the motor's peak force max |F_N| [N], > 0"},
       {"harmonics", &D::harmonics,
        "with {drive} fourier: harmonics K of the drive, 1 <= K <= 16 (the search climbs K = 1, "
        "2, ..., K)"},

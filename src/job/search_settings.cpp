@@ -13,8 +13,7 @@ const SettingTable<GaitRequirements>& GaitBoundSettings() {
   static const SettingTable<GaitRequirements> table = {
       {"bound", &G::force_bound,
        "force bound for forcing/fourier: A + c (max |F|) <= bound, 0 < bound <= T0, same unit "
-       "as A (default: T0)",
-       0, 0, false},
+       "as A (default: T0)"},
       {"rho_max", &G::rho_max,
        "largest spectral radius of the impact map (docs/model.md sections 8, 12); inf: no "
        "stability requirement"}};

@@ -17,14 +17,12 @@ const SettingTable<SweepSettings>& SweepModeSettings() {
        "fourier (P3: a {harmonics} K force with max |F| <= {bound}; adds c, a1..aK, b1..bK) or "
        "reach (the fastest motion from rest, as `optimize --problem reach`: A, c, phi0, alpha, "
        "mean_velocity, ..., the robust seed's seed_v_mean and seed_mean_velocity_from_rest; "
-       "seconds per point); adds a status column",
-       0, 0, false},
+       "seconds per point); adds a status column"},
       {"scan_points", &S::scan_points,
        "with {optimize} phi0: points of the optimiser's initial scan of phi0, 16 to 1000000"},
       {"alpha", &S::alpha,
        "with {optimize} reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised "
-       "too)",
-       0, 0, false}};
+       "too)"}};
   return table;
 }
 
@@ -36,8 +34,7 @@ const SettingTable<GaitRequirements>& SweepGaitSettings() {
        "(docs/model.md sections 8, 12); inf: no stability requirement"},
       {"bound", &G::force_bound,
        "with {optimize} forcing|fourier|reach: the force bound A + c (max |F|) <= bound <= T0 "
-       "(default: T0)",
-       0, 0, false}};
+       "(default: T0)"}};
   return table;
 }
 
@@ -55,7 +52,8 @@ const SettingTable<SearchRequest>& SweepSearchSettings() {
       {"global_evaluations", &R::global_evaluations,
        "with {optimize} forcing|fourier|reach: evaluation budget of an NLopt global algorithm "
        "(not multistart), 10 to 10000000",
-       0, 0, false}};
+       // Each mode has its own default (SweepModeDefaults).
+       0, 0, nullptr, false}};
   return table;
 }
 
@@ -64,7 +62,7 @@ const SettingTable<GridFileOptions>& SweepFileSettings() {
   static const SettingTable<GridFileOptions> table = {
       {"output", &F::output,
        "the CSV file to write (required); - writes to standard output (no {resume} then)", 0, 0,
-       false, "FILE"},
+       "FILE"},
       {"resume", &F::resume,
        "continue an interrupted sweep from <output>.checkpoint (same options required; the "
        "checkpoint's checksums are verified); without it a sweep always starts again"},

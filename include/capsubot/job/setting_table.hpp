@@ -23,9 +23,11 @@ struct SettingRow {
   const char* help;  ///< what it means and the rule of its value, fields in braces
   /// An integer's range, checked while reading it (lo < hi), or none (lo == hi).
   std::int64_t lo = 0, hi = 0;
-  bool show_default = true;  ///< whether the front end shows the default value
   /// The kind of value a front end shows in its help ("FILE", "NXxNPSI"); nullptr: the type's.
   const char* type_name = nullptr;
+  /// Whether the default is one value to show; a front end shows none either for a field whose
+  /// default is "none" (NaN, an empty text).
+  bool default_shown = true;
 };
 
 /// The settings of one options struct, in the order a front end lists them.
