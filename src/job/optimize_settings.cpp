@@ -177,7 +177,8 @@ void RequireAdmissibleValues(const OptimizeSettings& s, const SettingNames& name
                     search.gait.force_bound, "a finite bound > 0 (at most T0)", names);
   if (search.starts) RequireInRange("starts", *search.starts, 1, kMaxStarts, names);
   RequireInRange("hops", search.hops, 0, kMaxStarts, names);
-  RequireInRange("global_evaluations", search.global_evaluations, 10, kMaxStageEvaluations, names);
+  RequireInRange("global_evaluations", search.global_evaluations, kMinStageEvaluations,
+                 kMaxStageEvaluations, names);
   if (!(search.gait.rho_max > 0.0)) {
     throw std::invalid_argument(
         fmt::format("{} = {} is invalid: expected rho_max > 0 (inf: no stability requirement)",

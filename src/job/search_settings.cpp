@@ -24,8 +24,8 @@ const SettingTable<SearchRequest>& SearchSettings() {
   using S = SearchRequest;
   // The helps that state the job's bounds on the budgets (OptimizeJobFrom).
   static const std::string global_evaluations = fmt::format(
-      "evaluation budget of an NLopt global algorithm (not used by multistart), 10 to {}",
-      kMaxStageEvaluations);
+      "evaluation budget of an NLopt global algorithm (not used by multistart), {} to {}",
+      kMinStageEvaluations, kMaxStageEvaluations);
   static const std::string hops = fmt::format(
       "forcing: basin-hopping restarts from random perturbations of the best point after the "
       "starts, 0 to {}",

@@ -1,11 +1,20 @@
 #include "capsubot/job/sweep_setting_tables.hpp"
 
+#include <fmt/format.h>
+
+#include <string>
+
+#include "capsubot/optimize/optimize_phase.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
+
 namespace capsubot {
 
-// The bounds of scan_points (kMinScanPoints, kMaxScanPoints) and of global_evaluations (10,
-// kMaxStageEvaluations) are written in their helps; a test checks them against the constants.
 const SettingTable<SweepSettings>& SweepModeSettings() {
   using S = SweepSettings;
+  // The help that states the rule's bounds (PhaseOptions).
+  static const std::string scan_points = fmt::format(
+      "with {{optimize}} phi0: points of the optimiser's initial scan of phi0, {} to {}",
+      kMinScanPoints, kMaxScanPoints);
   static const SettingTable<SweepSettings> table = {
       {"stability", &S::stability,
        "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
@@ -18,8 +27,7 @@ const SettingTable<SweepSettings>& SweepModeSettings() {
        "reach (the fastest motion from rest, as `optimize --problem reach`: A, c, phi0, alpha, "
        "mean_velocity, ..., the robust seed's seed_v_mean and seed_mean_velocity_from_rest; "
        "seconds per point); adds a status column"},
-      {"scan_points", &S::scan_points,
-       "with {optimize} phi0: points of the optimiser's initial scan of phi0, 16 to 1000000"},
+      {"scan_points", &S::scan_points, scan_points.c_str()},
       {"alpha", &S::alpha,
        "with {optimize} reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised "
        "too)"}};
@@ -40,6 +48,11 @@ const SettingTable<GaitRequirements>& SweepGaitSettings() {
 
 const SettingTable<SearchRequest>& SweepSearchSettings() {
   using R = SearchRequest;
+  // The help that states the rule's bounds (SearchEffort).
+  static const std::string global_evaluations = fmt::format(
+      "with {{optimize}} forcing|fourier|reach: evaluation budget of an NLopt global algorithm "
+      "(not multistart), {} to {}",
+      kMinStageEvaluations, kMaxStageEvaluations);
   static const SettingTable<SearchRequest> table = {
       {"harmonics", &R::harmonics, "with {optimize} fourier: the number K of harmonics"},
       {"hops", &R::hops, "with {optimize} forcing|reach: basin-hopping restarts after the starts"},
@@ -49,9 +62,7 @@ const SettingTable<SearchRequest>& SweepSearchSettings() {
       {"local_algorithm", &R::local_algorithm,
        "with {optimize} forcing|fourier|reach: the local polish (LN_COBYLA, LD_SLSQP, LD_MMA, "
        "LD_CCSAQ)"},
-      {"global_evaluations", &R::global_evaluations,
-       "with {optimize} forcing|fourier|reach: evaluation budget of an NLopt global algorithm "
-       "(not multistart), 10 to 10000000",
+      {"global_evaluations", &R::global_evaluations, global_evaluations.c_str(),
        // Each mode has its own default (SweepModeDefaults).
        0, 0, nullptr, false}};
   return table;

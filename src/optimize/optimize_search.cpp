@@ -27,8 +27,10 @@ void SearchEffort::Validate() const {
   detail::RequireCount("starts", starts, 1, kMaxStarts);
   Require(std::isfinite(rel_tol) && rel_tol > 0.0,
           fmt::format("rel_tol = {} is invalid: expected a finite rel_tol > 0", rel_tol));
-  detail::RequireCount("local_evaluations", local_evaluations, 10, kMaxStageEvaluations);
-  detail::RequireCount("global_evaluations", global_evaluations, 10, kMaxStageEvaluations);
+  detail::RequireCount("local_evaluations", local_evaluations, kMinStageEvaluations,
+                       kMaxStageEvaluations);
+  detail::RequireCount("global_evaluations", global_evaluations, kMinStageEvaluations,
+                       kMaxStageEvaluations);
 }
 
 void SearchOptions::Validate() const {

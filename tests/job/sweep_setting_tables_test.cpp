@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "capsubot/optimize/optimize_phase.hpp"
@@ -50,13 +51,33 @@ TEST(SweepSettingTables, EveryRowSetsAFieldAndAValueOfItsOwn) {
   EXPECT_TRUE(check.HelpsNameKnownSettings({}));
 }
 
-// The command line reads these numbers without a range of its own: the library's rules
-// (PhaseOptions, SearchEffort) refuse a value outside them, with the constants.
-TEST(SweepSettingTables, TheBoundsInTheHelpsAreTheRulesConstants) {
+// The command line reads these numbers without a range of its own: the help states the bounds
+// of the constants, and the library's rules (PhaseOptions, SearchEffort) are those bounds.
+TEST(SweepSettingTables, TheBoundsInTheHelpsAreTheRules) {
   EXPECT_TRUE(EndsWith(HelpOf(SweepModeSettings(), "scan_points"),
                        fmt::format(", {} to {}", kMinScanPoints, kMaxScanPoints)));
   EXPECT_TRUE(EndsWith(HelpOf(SweepSearchSettings(), "global_evaluations"),
-                       fmt::format(", 10 to {}", kMaxStageEvaluations)));
+                       fmt::format(", {} to {}", kMinStageEvaluations, kMaxStageEvaluations)));
+  for (const int n : {kMinScanPoints - 1, kMaxScanPoints + 1}) {
+    PhaseOptions phase;
+    phase.scan_points = n;
+    EXPECT_THROW(phase.Validate(), std::invalid_argument) << n;
+  }
+  for (const int n : {kMinScanPoints, kMaxScanPoints}) {
+    PhaseOptions phase;
+    phase.scan_points = n;
+    EXPECT_NO_THROW(phase.Validate()) << n;
+  }
+  for (const int n : {kMinStageEvaluations - 1, kMaxStageEvaluations + 1}) {
+    SearchEffort effort;
+    effort.global_evaluations = n;
+    EXPECT_THROW(effort.Validate(), std::invalid_argument) << n;
+  }
+  for (const int n : {kMinStageEvaluations, kMaxStageEvaluations}) {
+    SearchEffort effort;
+    effort.global_evaluations = n;
+    EXPECT_NO_THROW(effort.Validate()) << n;
+  }
 }
 
 }  // namespace

@@ -24,7 +24,8 @@ std::vector<std::string> LocalAlgorithmNames();
 
 /// Largest number of local polishes (starts, restarts) of one search: bounds its work.
 inline constexpr int kMaxStarts = 1000;
-/// Largest evaluation budget of one NLopt stage.
+/// Smallest and largest evaluation budget of one NLopt stage.
+inline constexpr int kMinStageEvaluations = 10;
 inline constexpr int kMaxStageEvaluations = 10000000;
 
 /// How hard a problem is searched: the global stage, the local polishes and their budgets.
@@ -35,9 +36,10 @@ struct SearchEffort {
   int starts = 10;
   /// Relative tolerance of the local polish on the variables and on I; > 0.
   double rel_tol = 1e-10;
-  /// Evaluation budget of each local polish; 10 <= local_evaluations <= kMaxStageEvaluations.
+  /// Evaluation budget of each local polish; kMinStageEvaluations <= .. <= kMaxStageEvaluations.
   int local_evaluations = 20000;
-  /// Evaluation budget of an NLopt global stage; 10 <= .. <= kMaxStageEvaluations.
+  /// Evaluation budget of an NLopt global stage; kMinStageEvaluations <= .. <=
+  /// kMaxStageEvaluations.
   int global_evaluations = 5000;
 
   /// Throws std::invalid_argument naming the first bad field, its value and the rule
