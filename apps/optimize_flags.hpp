@@ -39,10 +39,12 @@ inline const FlagNames kOptimizeFlags = {{"problem", "--problem"},
                                          {"from_rest_csv", "--from-rest-csv"},
                                          {"levels", "--pulse-levels"}};
 
-/// The messages of the lower stages name their fields by the flags, but for alpha and the
-/// algorithms, whose rules speak of the library's fields ("alpha = 2 is invalid: expected
-/// 0 < alpha < 1 (or NaN: free)", "local_algorithm = ... is invalid: expected one of ...").
-inline const FlagNames kOptimizeRenamedFields =
-    Without(kOptimizeFlags, {"alpha", "global_algorithm", "local_algorithm"});
+/// The fields the messages of the lower stages are rewritten with: the table, and the gait's
+/// force bound ("force_bound = 2 is invalid: ...") set by --bound.
+inline const FlagNames kOptimizeRenamedFields = [] {
+  FlagNames names = kOptimizeFlags;
+  names.emplace_back("force_bound", "--bound");
+  return names;
+}();
 
 }  // namespace capsubot::app

@@ -50,12 +50,15 @@ inline const FlagNames kSweepFlags = {{"grid", "--grid"},
                                       {"reach_local_evaluations", "--reach-local-evaluations"}};
 
 /// The fields the messages of the lower stages are rewritten with: the table but for the
-/// settings those messages name by the library's field ("T0 = 0 is invalid: ...",
-/// "local_algorithm = ... is invalid: expected one of ...") or never name.
-inline const FlagNames kSweepRenamedFields =
-    Without(kSweepFlags,
-            {"waveform", "levels", "switches", "T0", "e", "margin", "margin_stroke", "stick_margin",
-             "stability", "stable_only", "bound", "global_algorithm", "local_algorithm",
-             "from_rest_starts", "reach_starts", "reach_evaluations", "reach_local_evaluations"});
+/// settings those messages name by a description ("friction bound T0 = 0 is invalid: ...") or
+/// never name, and the gait's force bound ("force_bound = 2 is invalid: ...") set by --bound.
+inline const FlagNames kSweepRenamedFields = [] {
+  FlagNames names =
+      Without(kSweepFlags, {"waveform", "levels", "switches", "T0", "e", "margin", "margin_stroke",
+                            "stick_margin", "stability", "stable_only", "bound", "from_rest_starts",
+                            "reach_starts", "reach_evaluations", "reach_local_evaluations"});
+  names.emplace_back("force_bound", "--bound");
+  return names;
+}();
 
 }  // namespace capsubot::app

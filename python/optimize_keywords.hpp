@@ -7,7 +7,7 @@
 namespace capsubot::python {
 
 /// The keyword of each field whose keyword is not the field's own name ("levels" of a pulse
-/// drive, set by pulse_levels).
-inline const FlagNames kOptimizeKeywords = {{"levels", "pulse_levels"}};
+/// drive, set by pulse_levels; the gait's force_bound, set by bound).
+inline const FlagNames kOptimizeKeywords = {{"levels", "pulse_levels"}, {"force_bound", "bound"}};
 
 }  // namespace capsubot::python

@@ -7,8 +7,9 @@
 namespace capsubot::python {
 
 /// The keyword of each field whose keyword is not the field's own name (the reach search's
-/// budgets, named by their place in the job's options).
+/// budgets, named by their place in the job's options; the gait's force_bound, set by bound).
 inline const FlagNames kSweepKeywords = {{"reach.global_evaluations", "reach_evaluations"},
-                                         {"reach.local_evaluations", "reach_local_evaluations"}};
+                                         {"reach.local_evaluations", "reach_local_evaluations"},
+                                         {"force_bound", "bound"}};
 
 }  // namespace capsubot::python

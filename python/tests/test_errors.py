@@ -107,7 +107,7 @@ def test_optimize_messages():
     assert message(opt, problem="forcing", bound=-1.0) == (
         "bound = -1 is invalid: expected a finite bound > 0 (at most T0)")
     assert message(opt, problem="forcing", bound=2.0).startswith(
-        "force_bound = 2 is invalid: expected force_bound <= T0 = 1")
+        "bound = 2 is invalid: expected at most the friction bound T0 = 1 (a force above it")
     assert message(opt, problem="forcing", starts=0) == (
         "starts = 0 is invalid: expected 1 <= starts <= 1000")
     assert message(opt, problem="forcing", rho_max=0.0) == (

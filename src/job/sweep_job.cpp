@@ -63,14 +63,14 @@ Forcing SweepForcing(const SweepForce& f, const std::optional<double>& phi0, con
 // The budgets of the search from rest bound the work of each point (the sweep runs no clock).
 void CheckReachBudgets(const ReachOptions& reach) {
   if (reach.global_evaluations < 1 || reach.global_evaluations > kMaxStageEvaluations) {
-    throw std::invalid_argument(fmt::format(
-        "reach.global_evaluations = {} is invalid: expected 1 <= reach.global_evaluations <= {}",
-        reach.global_evaluations, kMaxStageEvaluations));
+    throw std::invalid_argument(
+        fmt::format("reach.global_evaluations = {} is invalid: expected from 1 to {} evaluations",
+                    reach.global_evaluations, kMaxStageEvaluations));
   }
   if (reach.local_evaluations < 0 || reach.local_evaluations > kMaxStageEvaluations) {
-    throw std::invalid_argument(fmt::format(
-        "reach.local_evaluations = {} is invalid: expected 0 <= reach.local_evaluations <= {}",
-        reach.local_evaluations, kMaxStageEvaluations));
+    throw std::invalid_argument(
+        fmt::format("reach.local_evaluations = {} is invalid: expected from 0 to {} evaluations",
+                    reach.local_evaluations, kMaxStageEvaluations));
   }
   if (!std::isnan(reach.force_bound)) {
     throw std::invalid_argument(fmt::format(

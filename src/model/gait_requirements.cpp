@@ -39,9 +39,8 @@ double GaitRequirements::BoundFor(const Params& params) const {
   const double bound = std::isnan(force_bound) ? params.T0 : force_bound;
   if (!(bound <= params.T0)) {
     throw std::invalid_argument(
-        fmt::format("force_bound = {} is invalid: expected force_bound <= T0 = {} (a force "
-                    "above the friction bound moves the capsule without impacts, docs/model.md "
-                    "section 6)",
+        fmt::format("force_bound = {} is invalid: expected at most the friction bound T0 = {} (a "
+                    "force above it moves the capsule without impacts, docs/model.md section 6)",
                     bound, params.T0));
   }
   return bound;

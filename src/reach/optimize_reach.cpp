@@ -458,7 +458,7 @@ void ReachOptions::Validate() const {
           fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
                       force_bound));
   Require(std::isnan(alpha) || (alpha > 0.0 && alpha < 1.0),
-          fmt::format("alpha = {} is invalid: expected 0 < alpha < 1 (or NaN: free)", alpha));
+          fmt::format("alpha = {} is invalid: expected 0 < alpha < 1 (not given: free)", alpha));
   Require(std::isnan(bound_alpha) || (bound_alpha > 0.0 && bound_alpha < 1.0),
           fmt::format("bound_alpha = {} is invalid: expected 0 < bound_alpha < 1 (or NaN: a bound "
                       "in units of (m1+m2) omega^2 L)",

@@ -261,7 +261,7 @@ INSTANTIATE_TEST_SUITE_P(
                    "--A is invalid with --optimize forcing: expected it only with no --optimize, "
                    "--optimize phi0"},
         BadCommand{"--grid T0=0.1,0.2 --optimize forcing --bound 0.15",
-                   "force_bound = 0.15 is invalid"},
+                   "--bound = 0.15 is invalid"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --grid e=0.5:1:1000000 --grid "
                    "margin=0:0.1:1001",
                    "--grid phi0=0:1:3 e=0.5:1:1000000 margin=0:0.1:1001 is invalid: more than "
@@ -292,7 +292,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"--grid T0=0.5,1 --optimize reach --A 0.1",
                    "--A is invalid with --optimize reach: expected it only with no --optimize"},
         BadCommand{"--grid T0=0.5,1 --optimize reach --reach-evaluations 0",
-                   "--reach-evaluations = 0 is invalid: expected 1 <= reach.global_evaluations"},
+                   "--reach-evaluations = 0 is invalid: expected from 1 to 10000000 evaluations"},
         BadCommand{"--grid T0=0.5,1 --optimize reach --alpha 1.5",
                    "--alpha = 1.5 is invalid: expected 0 < alpha < 1"},
         BadCommand{"--grid T0=0.5,1 --optimize reach --grid rho_max=0.5,0.9 --stable-only",

@@ -179,14 +179,13 @@ TEST(SweepJob, RefusesReachBudgetsOutOfRangeNamingThem) {
   mode.reach.global_evaluations = 0;
   job.mode = mode;
   EXPECT_EQ(InvalidArgumentMessage([&] { job.Validate(); }),
-            "reach.global_evaluations = 0 is invalid: expected 1 <= reach.global_evaluations <= "
-            "10000000");
+            "reach.global_evaluations = 0 is invalid: expected from 1 to 10000000 evaluations");
   mode.reach.global_evaluations = 8;
   mode.reach.local_evaluations = 10000001;
   job.mode = mode;
   EXPECT_EQ(InvalidArgumentMessage([&] { job.Validate(); }),
-            "reach.local_evaluations = 10000001 is invalid: expected 0 <= reach.local_evaluations "
-            "<= 10000000");
+            "reach.local_evaluations = 10000001 is invalid: expected from 0 to 10000000 "
+            "evaluations");
   mode.reach.local_evaluations = 4;
   mode.reach.force_bound = 0.2;  // the bound is the seed's
   job.mode = mode;

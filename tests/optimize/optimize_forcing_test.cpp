@@ -333,8 +333,8 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   ForcingDesignOptions above;  // bound above T0: inverted relative to the friction bound
   above.gait.force_bound = 2.0;
   EXPECT_EQ(ErrorOf(Params{}, above),
-            "force_bound = 2 is invalid: expected force_bound <= T0 = 1 (a force above the "
-            "friction bound moves the capsule without impacts, docs/model.md section 6)");
+            "force_bound = 2 is invalid: expected at most the friction bound T0 = 1 (a force "
+            "above it moves the capsule without impacts, docs/model.md section 6)");
   ForcingDesignOptions wide;
   wide.gait.margins.clearance = 0.5;
   EXPECT_EQ(ErrorOf(Params{}, wide), "margin d = 0.5 is invalid: expected 0 <= d < 0.5");

@@ -111,8 +111,9 @@ TEST(OptimizeFourier, BadOptionsAreRejectedWithTheRule) {
             "LD_MMA, LD_CCSAQ");
   FourierOptions above;
   above.harmonic.gait.force_bound = 1.5;
-  EXPECT_NE(error(above).find("force_bound = 1.5 is invalid: expected force_bound <= T0 = 1"),
-            std::string::npos);
+  EXPECT_NE(
+      error(above).find("force_bound = 1.5 is invalid: expected at most the friction bound T0 = 1"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -35,8 +35,8 @@ TEST(GaitRequirements, TheBoundIsT0UnlessGivenAndNeverAboveT0) {
   EXPECT_EQ(gait.BoundFor(params), 0.25);
   gait.force_bound = 0.75;
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.BoundFor(params); }),
-            "force_bound = 0.75 is invalid: expected force_bound <= T0 = 0.5 (a force above the "
-            "friction bound moves the capsule without impacts, docs/model.md section 6)");
+            "force_bound = 0.75 is invalid: expected at most the friction bound T0 = 0.5 (a "
+            "force above it moves the capsule without impacts, docs/model.md section 6)");
 }
 
 TEST(GaitRequirements, ValidateNamesTheBadFieldItsValueAndTheRule) {

@@ -135,7 +135,7 @@ TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
   };
   const Case cases[] = {
       {"alpha", [](ReachOptions& o) { o.alpha = 1.5; },
-       "alpha = 1.5 is invalid: expected 0 < alpha < 1 (or NaN: free)"},
+       "alpha = 1.5 is invalid: expected 0 < alpha < 1 (not given: free)"},
       {"alpha box", [](ReachOptions& o) { o.alpha_min = 0.96; },
        "alpha_min = 0.96, alpha_max = 0.95 are invalid: expected 0 < alpha_min < alpha_max < 1"},
       {"global", [](ReachOptions& o) { o.global_algorithm = "GN_NOPE"; },
@@ -175,9 +175,9 @@ TEST(ReachInput, BadOptionsAreNamedWithTheirValueAndRule) {
     OptimizeReach(Params{}, OptimizeResult{}, o);
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(
-        std::string(e.what()).rfind("force_bound = 2 is invalid: expected force_bound <= T0", 0),
-        0U)
+    EXPECT_EQ(std::string(e.what()).rfind(
+                  "force_bound = 2 is invalid: expected at most the friction bound T0", 0),
+              0U)
         << e.what();
   }
 }
