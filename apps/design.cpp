@@ -21,7 +21,6 @@
 #include "attract_options.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
-#include "capsubot/job/design_drive_settings.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
 #include "capsubot/report/design_json.hpp"

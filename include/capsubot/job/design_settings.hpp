@@ -1,14 +1,19 @@
 #pragma once
-// Which runs of the design job use which setting: one design (""), one design with the
-// fastest motion from rest ("from-rest"), a design grid ("grid"), the fastest drive ("drive").
-// Both front ends refuse a setting given to a run that does not use it (RejectUnusedSettings).
+// The design job's own settings: which runs use which setting (one design (""), one design
+// with the fastest motion from rest ("from-rest"), a design grid ("grid"), the fastest drive
+// ("drive")), and the drive design's choice as `capsubot design` offers it: the waveform of the
+// fastest drive, the motor's peak and the size of a Fourier or pulse waveform. Both front ends
+// refuse a setting given to a run that does not use it (RejectUnusedSettings). The robot's
+// settings are the config stage's; the search's starts and budgets are the from-rest search's.
 
 #include <set>
 #include <string>
 #include <vector>
 
+#include "capsubot/job/setting_table.hpp"
 #include "capsubot/job/setting_use.hpp"
 #include "capsubot/model/setting_names.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/reach/drive_family.hpp"
 
 namespace capsubot {
@@ -40,5 +45,17 @@ void RejectRunsWithDrive(bool from_rest, bool grid, const SettingNames& names);
 /// The run `run` in `names`: the setting that selects it ("--from-rest", "--grid", "--drive"),
 /// or for "" one design without them ("one design (no --from-rest, no --grid)").
 std::string DesignRunName(const std::string& run, const SettingNames& names);
+
+/// The drive design asked for (DesignDriveFamily reads drive, harmonics and pulse_levels).
+struct DesignDriveChoice {
+  std::string drive;                           ///< "sine", "fourier", "pulse"; "": no drive design
+  double force_max = kNaN;                     ///< the motor's peak force max |F_N| [N]
+  int harmonics = kDesignDriveHarmonics;       ///< the waveform "fourier"'s harmonics K
+  int pulse_levels = kDesignDrivePulseLevels;  ///< the waveform "pulse"'s levels N
+};
+
+/// drive, force_max, harmonics, pulse_levels. The helps name the robot's ranges of the
+/// frequency and the inner mass as {frequency_range} and {m2_range}.
+const SettingTable<DesignDriveChoice>& DesignDriveSettings();
 
 }  // namespace capsubot

@@ -1,8 +1,8 @@
-// The table of the drive design's settings (capsubot/job/design_drive_settings.hpp): one
+// The table of the drive design's settings (capsubot/job/design_settings.hpp): one
 // option per row, helps naming the drive's settings and the robot's ranges, and the limits
 // written in the helps are those of the drive's waveform.
 
-#include "capsubot/job/design_drive_settings.hpp"
+#include "capsubot/job/design_settings.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
