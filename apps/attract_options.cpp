@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "capsubot/job/motion_settings.hpp"
+#include "capsubot/job/params_settings.hpp"
 #include "progress.hpp"
 #include "setting_options.hpp"
 
@@ -15,9 +16,9 @@ namespace capsubot::app {
 
 void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   AddForcingOptions(cmd, o.forcing);
-  AddParamsOptions(cmd, o.params);
-  cmd.add_option("--alpha", o.alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1")
-      ->required();
+  AddParamsOptions(cmd, o.model.params);
+  AddSettings(cmd, o.model, RobotSettings(), {{"alpha", "--alpha"}});
+  cmd.get_option("--alpha")->required();
   if (!with_motion) return;
   AddSettings(cmd, o.motion, MotionSettings(), MotionFlagNames());
 }
@@ -30,9 +31,7 @@ std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
 AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
                                    int threads) {
   AttractorsJobOptions o;
-  o.forcing = robot.forcing.Build();
-  o.params = robot.params;
-  o.alpha = robot.alpha;
+  o.robot = robot.Model();
   o.starts = ParseStartGrid("--starts", starts);
   o.attractor.motion = robot.motion;
   o.attractor.threads = threads;

@@ -16,9 +16,12 @@ namespace capsubot::app {
 /// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
 struct RobotOptions {
   ForcingOptions forcing;
-  Params params;
-  double alpha = kNaN;
+  RobotModel model;  ///< T0, e and alpha (its force is built from `forcing`)
   MotionOptions motion;
+
+  /// The robot the options give (the force built: throws std::invalid_argument naming what is
+  /// missing).
+  RobotModel Model() const { return {forcing.Build(), model.params, model.alpha}; }
 };
 
 /// Adds the force, --T0, --e, --alpha (required), and with `with_motion` --transient, --record,

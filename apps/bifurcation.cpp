@@ -59,9 +59,7 @@ const FlagNames& BifurcationFlagNames() {
 // The job the command line describes.
 BifurcationJobOptions JobOptions(const BifurcationCommandOptions& opt, const CLI::App& cmd) {
   BifurcationJobOptions job;
-  job.robot.forcing = opt.robot.forcing.Build();
-  job.robot.params = opt.robot.params;
-  job.robot.alpha = opt.robot.alpha;
+  job.robot = opt.robot.Model();
   BifurcationOptions& o = job.diagram;
   o = opt.diagram;
   o.param = ParseRobotParameter(opt.param, &o.harmonic);

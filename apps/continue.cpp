@@ -43,9 +43,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
   const std::optional<PhaseState> state =
       opt.start_state.Spec().Build(opt.from_orbit, "from_orbit", "--from-orbit", kStartFlags);
   job.start = state ? ContinueStart(*state) : FromOneImpactOrbit{};
-  job.forcing = opt.robot.forcing.Build();
-  job.params = opt.robot.params;
-  job.alpha = opt.robot.alpha;
+  job.robot = opt.robot.Model();
   if (opt.switch_branch) job.switch_at = SwitchPoint::kPeriodDoubling;
   if (!opt.switch_at.empty()) job.switch_at = ParseSwitchPoint(opt.switch_at);
   if (opt.param2->count() > 0) {

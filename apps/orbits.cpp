@@ -7,6 +7,7 @@
 
 #include "capsubot/job/orbits_job.hpp"
 #include "capsubot/job/orbits_settings.hpp"
+#include "capsubot/job/params_settings.hpp"
 #include "capsubot/report/orbits_text.hpp"
 #include "capsubot/report/solution_json.hpp"
 #include "commands.hpp"
@@ -27,9 +28,9 @@ struct OrbitsOptions {
 const FlagNames kOrbitsFlags = {{"alpha", "--alpha"}, {"max_evaluations", "--max-evaluations"}};
 
 int Run(OrbitsOptions& opt, const CLI::App& cmd) {
-  opt.job.params.Validate();
+  opt.job.robot.params.Validate();
   opt.job.margins.Validate();
-  opt.job.forcing = opt.forcing.Build(false);
+  opt.job.robot.forcing = opt.forcing.Build(false);
   CheckResultOutput(opt.output.path);
   const OrbitsJobResult result = RunOrbitsJob(opt.job);
   const std::string bound = SettingNames{kOrbitsFlags}.Name("max_evaluations");
@@ -52,7 +53,8 @@ Command AddOrbitsCommand(CLI::App& app) {
       "all impact phases phi0 in [-pi, pi) with alpha(phi0) = alpha, none missed, each with "
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);
-  AddParamsOptions(*cmd, opt->job.params, &opt->job.margins);
+  AddParamsOptions(*cmd, opt->job.robot.params, &opt->job.margins);
+  AddSettings(*cmd, opt->job.robot, RobotSettings(), kOrbitsFlags);
   AddSettings(*cmd, opt->job, OrbitsSettings(), kOrbitsFlags);
   cmd->get_option("--alpha")->required();
   opt->output.Add(*cmd,

@@ -45,9 +45,7 @@ PeriodicStart Start(const PeriodicCommandOptions& opt) {
 
 int Run(const PeriodicCommandOptions& opt, const CLI::App& cmd) {
   PeriodicJobOptions o;
-  o.forcing = opt.robot.forcing.Build();
-  o.params = opt.robot.params;
-  o.alpha = opt.robot.alpha;
+  o.robot = opt.robot.Model();
   o.start = Start(opt);
   o.shooting = opt.shooting;
   CheckResultOutput(opt.output.path);

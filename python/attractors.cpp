@@ -27,9 +27,8 @@ py::dict FindAttractorsDict(
     int transient, int record, int max_period, double state_tolerance, double converged_tolerance,
     double chatter_velocity, std::int64_t max_events_per_period, int threads) {
   AttractorsJobOptions o;
-  o.params = Params{T0, e};
-  o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  o.alpha = alpha;
+  o.robot = {ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build(), Params{T0, e},
+             alpha};
   if (starts) {
     if (n_x || n_psi) {
       throw std::invalid_argument(

@@ -40,9 +40,8 @@ py::dict BasinsDict(std::optional<double> A, std::optional<double> c, std::optio
                py::arg("max_events_per_period") = max_events_per_period));
   BasinsJobOptions o;
   AttractorsJobOptions& map = o.map;
-  map.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  map.params = Params{T0, e};
-  map.alpha = alpha;
+  map.robot = {ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build(), Params{T0, e},
+               alpha};
   map.starts = ParseStartGrid("starts", starts);
   MotionOptions& mo = map.attractor.motion;
   mo.transient = transient;

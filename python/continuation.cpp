@@ -124,9 +124,8 @@ py::dict ContinueBranchDict(
     int max_points, double initial_step, double min_step, double max_step, int max_period,
     double step, double chatter_velocity) {
   ContinueJobOptions job;
-  job.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  job.params = Params{T0, e};
-  job.alpha = alpha;
+  job.robot = {ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build(), Params{T0, e},
+               alpha};
   job.param = param;
   const std::optional<PhaseState> state =
       StartStateSpec{x0, u0, v0, psi}.Build(from_orbit, "from_orbit", "from_orbit=True");

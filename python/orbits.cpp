@@ -21,12 +21,12 @@ py::list Orbits(double alpha, std::optional<double> A, double c,
                 double T0, double e, double margin, double margin_stroke, double stick_margin,
                 std::int64_t max_evaluations) {
   OrbitsJobOptions job;
-  job.params = Params{T0, e};
+  job.robot.params = Params{T0, e};
   job.margins = Margins{margin, margin_stroke, stick_margin};
-  job.params.Validate();
+  job.robot.params.Validate();
   job.margins.Validate();
-  job.forcing = ForceSpec{A, c, std::nullopt, cos, sin}.Build(false);
-  job.alpha = alpha;
+  job.robot.forcing = ForceSpec{A, c, std::nullopt, cos, sin}.Build(false);
+  job.robot.alpha = alpha;
   job.max_evaluations = max_evaluations;
   job.Validate();
   const OrbitsJobResult result = RunWithoutGil([&](SignalCheck& check) {

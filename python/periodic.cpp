@@ -27,9 +27,8 @@ py::dict Periodic(std::optional<double> A, std::optional<double> c, std::optiona
                   std::optional<int> transient, std::optional<int> period, int max_period,
                   double step, double chatter_velocity) {
   PeriodicJobOptions o;
-  o.params = Params{T0, e};
-  o.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
-  o.alpha = alpha;
+  o.robot = {ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build(), Params{T0, e},
+             alpha};
   std::optional<PhaseState> rest;
   if (from_rest) rest = RestStart(from_rest->first, from_rest->second);
   o.start =

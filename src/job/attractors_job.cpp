@@ -8,9 +8,9 @@ namespace capsubot {
 
 void AttractorsJobOptions::Validate() const {
   starts.Validate();
-  params.Validate();
+  robot.params.Validate();
   attractor.Validate();
-  ValidateStart(alpha, GridStart(0, 0, starts.n_x, starts.n_psi));  // the simulator's alpha
+  ValidateStart(robot.alpha, GridStart(0, 0, starts.n_x, starts.n_psi));  // the simulator's alpha
   if (const auto* shard = std::get_if<StartMapShard>(&run)) {
     shard->file.Validate(static_cast<std::size_t>(starts.Starts()));
   }

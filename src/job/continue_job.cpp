@@ -26,11 +26,6 @@ const SpecialPoint* First(const Branch& b, SpecialPointType type, bool located) 
   return first;
 }
 
-// The robot whose motion the job continues.
-RobotModel ContinuedRobot(const ContinueJobOptions& options) {
-  return {options.forcing, options.params, options.alpha};
-}
-
 SpecialPointType TypeOf(SwitchPoint point) {
   return point == SwitchPoint::kGrazing ? SpecialPointType::kGrazing
                                         : SpecialPointType::kPeriodDoubling;
@@ -45,7 +40,7 @@ SwitchResult Switch(const ContinueJobOptions& options, const Branch& branch) {
   const SpecialPoint* at = First(branch, TypeOf(s.point), !grazing);
   if (at == nullptr) return s;
   s.at = *at;
-  const RobotFamily family = NamedParameterFamily(ContinuedRobot(options), options.param);
+  const RobotFamily family = NamedParameterFamily(options.robot, options.param);
   s.branch = grazing ? SwitchAtGrazing(family, branch, *at, options.continuation)
                      : SwitchAtPeriodDoubling(family, *at, options.continuation);
   return s;
@@ -56,8 +51,8 @@ FollowResult FollowCurve(const ContinueJobOptions& options, const Branch& branch
   FollowResult r;
   r.param2 = f.param2;
   r.type = f.type;
-  r.value2 = RobotValueInRange(ContinuedRobot(options), f.param2, {"from2", f.from2},
-                               {"to2", f.to2}, "curve");
+  r.value2 =
+      RobotValueInRange(options.robot, f.param2, {"from2", f.from2}, {"to2", f.to2}, "curve");
   r.curve.type = f.type;
   const SpecialPoint* sp = First(branch, f.type, true);
   if (sp == nullptr) {
@@ -71,8 +66,8 @@ FollowResult FollowCurve(const ContinueJobOptions& options, const Branch& branch
   c.to2 = f.to2;
   c.start2 = r.value2;
   c.continuation = options.continuation;
-  r.curve = FollowSpecialPoint(
-      NamedParameterSurface(ContinuedRobot(options), options.param, f.param2), *sp, c);
+  r.curve =
+      FollowSpecialPoint(NamedParameterSurface(options.robot, options.param, f.param2), *sp, c);
   return r;
 }
 
@@ -89,16 +84,15 @@ SwitchPoint ParseSwitchPoint(const std::string& name) {
 }
 
 void ContinueJobOptions::Validate() const {
-  params.Validate();
+  robot.params.Validate();
   if (const PhaseState* state = std::get_if<PhaseState>(&start)) RequirePhase("psi", state->psi);
-  NamedParameterFamily(ContinuedRobot(*this), param);  // the name, and the force has it
+  NamedParameterFamily(robot, param);        // the name, and the force has it
   ContinuationOptions range = continuation;  // the options' own rules, the start's value aside
   range.start = range.from;
   range.Validate();
-  RobotValueInRange(ContinuedRobot(*this), param, {"from", continuation.from},
-                    {"to", continuation.to}, "branch");
+  RobotValueInRange(robot, param, {"from", continuation.from}, {"to", continuation.to}, "branch");
   if (!follow) return;
-  NamedParameterSurface(ContinuedRobot(*this), param, follow->param2);
+  NamedParameterSurface(robot, param, follow->param2);
   if (!IsFollowable(follow->type)) {
     throw std::invalid_argument(fmt::format(
         "follow = {} is invalid: expected one of fold, period_doubling, grazing, speed_extremum",
@@ -110,8 +104,7 @@ void ContinueJobOptions::Validate() const {
   curve.start2 = follow->from2;  // the range's own rules, the robot's value aside
   curve.continuation = range;
   curve.Validate();
-  RobotValueInRange(ContinuedRobot(*this), follow->param2, {"from2", follow->from2},
-                    {"to2", follow->to2}, "curve");
+  RobotValueInRange(robot, follow->param2, {"from2", follow->from2}, {"to2", follow->to2}, "curve");
 }
 
 ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
@@ -125,10 +118,9 @@ ContinueJobResult RunContinueJob(const ContinueJobOptions& options) {
   result.param = options.param;
   tell(fmt::format("the branch in {}", options.param));
   const PhaseState start = std::holds_alternative<FromOneImpactOrbit>(options.start)
-                               ? OneImpactOrbitStart(ContinuedRobot(options))
+                               ? OneImpactOrbitStart(options.robot)
                                : std::get<PhaseState>(options.start);
-  result.branch =
-      ContinueParameter(ContinuedRobot(options), options.param, start, options.continuation);
+  result.branch = ContinueParameter(options.robot, options.param, start, options.continuation);
   if (options.switch_at) {
     tell(*options.switch_at == SwitchPoint::kGrazing
              ? "the branch beyond its first grazing"

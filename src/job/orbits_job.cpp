@@ -10,8 +10,8 @@
 namespace capsubot {
 
 void OrbitsJobOptions::Validate() const {
-  RefusePulse(forcing, "orbits");
-  params.Validate();
+  RefusePulse(robot.forcing, "orbits");
+  robot.params.Validate();
   margins.Validate();
   if (max_evaluations < 1 || max_evaluations > kMaxOrbitEvaluations) {
     throw std::invalid_argument(
@@ -25,8 +25,7 @@ OrbitsJobResult RunOrbitsJob(const OrbitsJobOptions& options) {
   OrbitsJobResult r;
   r.options = options;
   r.options.interrupt = nullptr;
-  r.orbits = FindRobotOrbits({options.forcing, options.params, options.alpha}, options.margins,
-                             &r.complete, options.max_evaluations,
+  r.orbits = FindRobotOrbits(options.robot, options.margins, &r.complete, options.max_evaluations,
                              [&options] { Poll(options.interrupt); });
   return r;
 }

@@ -7,7 +7,6 @@ namespace capsubot {
 const SettingTable<OrbitsJobOptions>& OrbitsSettings() {
   using O = OrbitsJobOptions;
   static const SettingTable<OrbitsJobOptions> table = {
-      {"alpha", &O::alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1"},
       {"max_evaluations", &O::max_evaluations,
        "work bound of the search: evaluations of the orbit equation while refining the circle "
        "(default 4000000, far above what the tested forces need); when it is hit, orbits may be "

@@ -9,6 +9,12 @@ const SettingTable<Params>& ParamsSettings() {
   return table;
 }
 
+const SettingTable<RobotModel>& RobotSettings() {
+  static const SettingTable<RobotModel> table = {
+      {"alpha", &RobotModel::alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1"}};
+  return table;
+}
+
 const SettingTable<Margins>& MarginsSettings() {
   static const SettingTable<Margins> table = {
       {"clearance", &Margins::clearance,

@@ -38,7 +38,7 @@ PeriodicJobResult RunPeriodicJob(const PeriodicJobOptions& options) {
   result.options.on_stage = {};
   TellStage(options.on_stage, "periodic: Newton shooting");
   const PhaseState state = StartState(options.start);
-  const RobotModel robot{options.forcing, options.params, options.alpha};
+  const RobotModel& robot = options.robot;
   if (const auto* known = std::get_if<PeriodicOfPeriod>(&options.start)) {
     result.motion = ShootPeriodicMotion(robot, state, known->period, shooting);
   } else {

@@ -28,16 +28,16 @@ AttractorsJobResult RunStartMap(const AttractorsJobOptions& options,
     std::get<StartMapShard>(result.options.run).file.u0 = u0;
     TellStage(options.on_stage, fmt::format("{}: shard {}/{} of {} starts", command, file.shard,
                                             file.shards, starts.size()));
-    result.shard = WriteStartShard({options.forcing, options.params, options.alpha}, starts,
-                                   options.attractor, file, options.progress, backend);
+    result.shard =
+        WriteStartShard(options.robot, starts, options.attractor, file, options.progress, backend);
     TellStage(options.on_stage, "");
     return result;
   }
   const WholeStartMap& whole = std::get<WholeStartMap>(options.run);
   if (!whole.output.empty()) CheckWritable(whole.output, "output");  // before the long run
   TellStage(options.on_stage, fmt::format("{}: {} starts", command, starts.size()));
-  result.attractors = ClassifyStarts({options.forcing, options.params, options.alpha}, starts,
-                                     options.attractor, options.progress, backend);
+  result.attractors =
+      ClassifyStarts(options.robot, starts, options.attractor, options.progress, backend);
   if (!whole.output.empty()) {
     WriteStartMap(whole.output, starts, result.attractors, u0, whole.comments);
   }
@@ -48,7 +48,7 @@ AttractorsJobResult RunStartMap(const AttractorsJobOptions& options,
 StartMapWork StartMapWorkOf(const AttractorsJobOptions& options,
                             const std::vector<PhaseState>& starts) {
   StartMapWork work;
-  work.robot = {options.forcing, options.params, options.alpha};
+  work.robot = options.robot;
   work.attractor = options.attractor;
   if (const auto* shard = std::get_if<StartMapShard>(&options.run)) {
     work.starts = ShardStarts(starts, shard->file.shard, shard->file.shards);

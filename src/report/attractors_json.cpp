@@ -32,7 +32,7 @@ nlohmann::json AttractorsJson(const Attractors& a) {
 }
 
 nlohmann::json AttractorsJobJson(const AttractorsJobResult& result) {
-  return WithForceJson(AttractorsJson(result.attractors), result.options.forcing);
+  return WithForceJson(AttractorsJson(result.attractors), result.options.robot.forcing);
 }
 
 nlohmann::json BasinsJobJson(const BasinsJobResult& result) {

@@ -50,9 +50,9 @@ std::string AttractorsJobText(const AttractorsJobResult& r) {
   std::string t =
       fmt::format("attractors from rest: {} starts ({} x0 x {} phases), {} + {} periods\n",
                   a.starts, o.starts.n_x, o.starts.n_psi, mo.transient, mo.record);
-  t += fmt::format("  force          {}\n", ForceFormula(o.forcing));
-  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", o.params.T0, o.params.e,
-                   o.alpha);
+  t += fmt::format("  force          {}\n", ForceFormula(o.robot.forcing));
+  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", o.robot.params.T0,
+                   o.robot.params.e, o.robot.alpha);
   int k = 0;
   for (const Attractor& at : a.attractors) {
     t += fmt::format("  {:>2}. {:5.1f} % of starts  mean velocity {:<13} {}{}\n", ++k,

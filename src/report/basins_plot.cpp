@@ -30,7 +30,8 @@ std::string Title(const BasinsJobResult& r) {
   const AttractorsJobOptions& o = r.map.options;
   const auto* plane = std::get_if<VelocityPlane>(&r.plane);
   return fmt::format("Basins of attraction: {}\\nT_0 = {:g}, e = {:g}, {{/Symbol a}} = {:.6g}{}",
-                     TypesetPhi(ForceFormula(o.forcing)), o.params.T0, o.params.e, o.alpha,
+                     TypesetPhi(ForceFormula(o.robot.forcing)), o.robot.params.T0, o.robot.params.e,
+                     o.robot.alpha,
                      plane ? fmt::format(", start phase {{/Symbol y}} = {:g}", plane->psi) : "");
 }
 

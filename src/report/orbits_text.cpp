@@ -15,11 +15,12 @@ std::string OrbitsIncompleteNote(const char* bound_name) {
 
 std::string OrbitsJobText(const OrbitsJobResult& r, const char* bound_name) {
   const OrbitsJobOptions& o = r.options;
-  std::string t = fmt::format("one-impact orbits of the robot with alpha = {}\n", Num(o.alpha));
+  std::string t =
+      fmt::format("one-impact orbits of the robot with alpha = {}\n", Num(o.robot.alpha));
   t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
-                   ForceFormula(o.forcing.WithPhase(0.0)));
-  t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", o.params.T0, o.params.e,
-                   o.margins.clearance);
+                   ForceFormula(o.robot.forcing.WithPhase(0.0)));
+  t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", o.robot.params.T0,
+                   o.robot.params.e, o.margins.clearance);
   t += fmt::format("  {} orbit(s)\n", r.orbits.size());
   if (!r.complete) t += fmt::format("  note: {}\n", OrbitsIncompleteNote(bound_name));
   if (!r.orbits.empty()) {

@@ -23,7 +23,7 @@ nlohmann::json PeriodicJson(const PeriodicMotion& m) {
 }
 
 nlohmann::json PeriodicJobJson(const PeriodicJobResult& result) {
-  return WithForceJson(PeriodicJson(result.motion), result.options.forcing);
+  return WithForceJson(PeriodicJson(result.motion), result.options.robot.forcing);
 }
 
 }  // namespace capsubot::json

@@ -11,9 +11,9 @@ namespace capsubot::text {
 std::string PeriodicJobText(const PeriodicJobResult& r) {
   const PeriodicMotion& m = r.motion;
   std::string t = "periodic motion by Newton shooting on the stroboscopic map\n";
-  t += fmt::format("  force          {}\n", ForceFormula(r.options.forcing));
-  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", r.options.params.T0,
-                   r.options.params.e, r.options.alpha);
+  t += fmt::format("  force          {}\n", ForceFormula(r.options.robot.forcing));
+  t += fmt::format("  model          T0 = {}, e = {}, alpha = {}\n", r.options.robot.params.T0,
+                   r.options.robot.params.e, r.options.robot.alpha);
   t += m.out_of_scale
            ? fmt::format(
                  "  status         {} (the state is out of the robot's scale: beyond 1e6 "

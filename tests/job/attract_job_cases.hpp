@@ -10,19 +10,13 @@
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 
 namespace capsubot::testing {
 
-/// A robot: force, T0 and e, mass ratio.
-struct JobRobot {
-  Forcing forcing;
-  Params params;
-  double alpha = 0.0;
-};
-
 /// The exact stable P2 optimum at T0 = 1, e = 1 (`capsubot optimize --problem forcing --stable
 /// --json`): from rest it settles into 3 right and 1 left impacts per period.
-inline JobRobot StableOptimum() {
+inline RobotModel StableOptimum() {
   return {Forcing::Harmonic(0.34063197373861814, 0.06410131873607934, -3.1181183398453047),
           Params{1.0, 1.0}, 0.6435592358295166};
 }
@@ -30,7 +24,7 @@ inline JobRobot StableOptimum() {
 /// A stable valid one-impact orbit with clearance (`capsubot solve --A 0.05 --c 0.02 --phi0
 /// -2.842 --T0 0.1 --e 0.5 --stability`: alpha = 0.2792869076315278, spectral radius 0.16);
 /// from rest it coexists with a period-12 motion.
-inline JobRobot SmallOrbit() {
+inline RobotModel SmallOrbit() {
   return {Forcing::Harmonic(0.05, 0.02, -2.842), Params{0.1, 0.5}, 0.2792869076315278};
 }
 

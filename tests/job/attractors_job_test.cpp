@@ -24,11 +24,9 @@ using testing::SameAttractors;
 
 // The job of the stable optimum on a small grid from rest.
 AttractorsJobOptions SmallMap() {
-  const testing::JobRobot robot = testing::StableOptimum();
+  const RobotModel robot = testing::StableOptimum();
   AttractorsJobOptions o;
-  o.forcing = robot.forcing;
-  o.params = robot.params;
-  o.alpha = robot.alpha;
+  o.robot = robot;
   o.starts = {2, 3};
   o.attractor.threads = 2;
   return o;
@@ -44,15 +42,13 @@ std::string ReadText(const std::filesystem::path& path) {
 TEST(AttractorsJob, IsTheClassificationOfTheGridFromRest) {
   const AttractorsJobOptions o = SmallMap();
   const AttractorsJobResult r = RunAttractorsJob(o);
-  const Attractors direct =
-      ClassifyStarts({o.forcing, o.params, o.alpha}, GridStarts(2, 3), o.attractor);
+  const Attractors direct = ClassifyStarts(o.robot, GridStarts(2, 3), o.attractor);
   EXPECT_TRUE(SameAttractors(r.attractors, direct));
   FromRestOptions from_rest;
   from_rest.n_x = 2;
   from_rest.n_psi = 3;
   from_rest.attractor = o.attractor;
-  EXPECT_TRUE(
-      SameAttractors(r.attractors, FindAttractors({o.forcing, o.params, o.alpha}, from_rest)));
+  EXPECT_TRUE(SameAttractors(r.attractors, FindAttractors(o.robot, from_rest)));
   // The robot's known motion from rest (tests/attract/attractors_test.cpp): 3 right + 1 left.
   ASSERT_EQ(r.attractors.attractors.size(), 1U);
   EXPECT_EQ(r.attractors.attractors[0].motion.impacts_right, 3);
@@ -113,10 +109,10 @@ TEST(AttractorsJob, BadOptionsAreRefusedNamingTheParameter) {
          o.starts = {3000, 3000};
        },
        "starts = 3000x3000 is invalid: expected n_x * n_psi <= 4194304 starts"},
-      {"params", [](AttractorsJobOptions& o) { o.params.e = 1.3; }, "restitution e = 1.3"},
+      {"params", [](AttractorsJobOptions& o) { o.robot.params.e = 1.3; }, "restitution e = 1.3"},
       {"record", [](AttractorsJobOptions& o) { o.attractor.motion.record = 3; },
        "record = 3 is invalid"},
-      {"alpha", [](AttractorsJobOptions& o) { o.alpha = 1.5; },
+      {"alpha", [](AttractorsJobOptions& o) { o.robot.alpha = 1.5; },
        "mass ratio alpha = 1.5 is invalid"},
       {"shard",
        [](AttractorsJobOptions& o) {

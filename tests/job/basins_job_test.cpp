@@ -22,11 +22,9 @@ using testing::SameAttractors;
 // The small orbit's robot, whose one-impact orbit coexists with a period-12 motion, on a few
 // starts (the period-12 motion needs max_period 16).
 BasinsJobOptions SmallBasins() {
-  const testing::JobRobot robot = testing::SmallOrbit();
+  const RobotModel robot = testing::SmallOrbit();
   BasinsJobOptions o;
-  o.map.forcing = robot.forcing;
-  o.map.params = robot.params;
-  o.map.alpha = robot.alpha;
+  o.map.robot = robot;
   o.map.starts = {3, 2};
   o.map.attractor.motion.max_period = 16;
   o.map.attractor.motion.transient = 300;
@@ -50,9 +48,8 @@ TEST(BasinsJob, VelocityPlaneStartsAtThePositionsAndVelocitiesOfItsCells) {
   EXPECT_DOUBLE_EQ(starts[0].u, -0.25);
   EXPECT_STREQ(StartPlaneName(o.plane), "x0-u0");
   const BasinsJobResult r = RunBasinsJob(o);
-  EXPECT_TRUE(SameAttractors(
-      r.map.attractors,
-      ClassifyStarts({o.map.forcing, o.map.params, o.map.alpha}, starts, o.map.attractor)));
+  EXPECT_TRUE(
+      SameAttractors(r.map.attractors, ClassifyStarts(o.map.robot, starts, o.map.attractor)));
 }
 
 TEST(BasinsJob, RestPlaneIsTheMapOfTheAttractorsJob) {

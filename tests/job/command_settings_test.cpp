@@ -52,8 +52,8 @@ TEST(CommandSettings, TheOrbitsWorkBoundIsTheJobsRule) {
   const SettingTable<OrbitsJobOptions>& table = OrbitsSettings();
   EXPECT_TRUE(WellFormed(table));
   OrbitsJobOptions valid;
-  valid.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
-  valid.alpha = 0.5;
+  valid.robot.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
+  valid.robot.alpha = 0.5;
   EXPECT_TRUE(RangesAreTheRules(table, valid, [](const OrbitsJobOptions& o) { o.Validate(); }));
 }
 

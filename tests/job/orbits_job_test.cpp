@@ -13,9 +13,9 @@ namespace {
 // The robot of docs/orbit.md's example: A = 0.05, c = 0.02, T0 = 0.1, e = 0.5, alpha = 0.28.
 OrbitsJobOptions Robot() {
   OrbitsJobOptions o;
-  o.forcing = Forcing::Harmonic(0.05, 0.02, 0.0);
-  o.params = Params{0.1, 0.5};
-  o.alpha = 0.28;
+  o.robot.forcing = Forcing::Harmonic(0.05, 0.02, 0.0);
+  o.robot.params = Params{0.1, 0.5};
+  o.robot.alpha = 0.28;
   return o;
 }
 
@@ -23,8 +23,7 @@ TEST(OrbitsJob, FindsWhatTheSearchFinds) {
   const OrbitsJobOptions o = Robot();
   const OrbitsJobResult r = RunOrbitsJob(o);
   bool complete = false;
-  const std::vector<Solution> direct =
-      FindRobotOrbits({o.forcing, o.params, o.alpha}, {}, &complete);
+  const std::vector<Solution> direct = FindRobotOrbits(o.robot, {}, &complete);
   ASSERT_FALSE(direct.empty());
   ASSERT_EQ(r.orbits.size(), direct.size());
   for (std::size_t i = 0; i < direct.size(); ++i) {
@@ -32,7 +31,7 @@ TEST(OrbitsJob, FindsWhatTheSearchFinds) {
     EXPECT_EQ(r.orbits[i].orbit.v_mean, direct[i].orbit.v_mean);
   }
   EXPECT_EQ(r.complete, complete);
-  EXPECT_EQ(r.options.alpha, 0.28);
+  EXPECT_EQ(r.options.robot.alpha, 0.28);
 }
 
 // The margins judge every orbit found: each validity is CheckValidity's with them, and a
@@ -72,9 +71,9 @@ TEST(OrbitsJob, RefusesAWorkBoundOutOfRangeNamingIt) {
 TEST(OrbitsJob, AnInterruptStopsTheSearch) {
   struct Stop {};
   OrbitsJobOptions o;
-  o.forcing = Forcing::Harmonic(0.00527714, 0.00105543, 0.0);
-  o.params = Params{3e7, 0.7};
-  o.alpha = 0.3333;
+  o.robot.forcing = Forcing::Harmonic(0.00527714, 0.00105543, 0.0);
+  o.robot.params = Params{3e7, 0.7};
+  o.robot.alpha = 0.3333;
   o.max_evaluations = 1000000000;
   int asked = 0;
   o.interrupt = [&asked] {

@@ -1,4 +1,4 @@
-// The tables of the robot's parameters and of the margins of a gait
+// The tables of the robot's parameters, its mass ratio and the margins of a gait
 // (capsubot/job/params_settings.hpp): a row per field, each with a help, and the defaults a
 // front end shows are the library's (Params{}, Margins{}: no margins).
 
@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -19,6 +20,19 @@ using testing::WellFormed;
 TEST(ParamsSettings, EachParameterAndMarginHasARowOfItsOwn) {
   EXPECT_TRUE(WellFormed(ParamsSettings()));
   EXPECT_TRUE(WellFormed(MarginsSettings()));
+  EXPECT_TRUE(WellFormed(RobotSettings()));
+}
+
+// The mass ratio has no default: every command on a given robot asks for it.
+TEST(ParamsSettings, TheMassRatioIsTheRobotsAndHasNoDefault) {
+  ASSERT_EQ(RobotSettings().size(), 1u);
+  EXPECT_STREQ(RobotSettings().front().field, "alpha");
+  RobotModel robot;
+  robot.alpha = 0.25;
+  const auto* member = std::get_if<double RobotModel::*>(&RobotSettings().front().member);
+  ASSERT_NE(member, nullptr);
+  EXPECT_EQ(robot.*(*member), 0.25);
+  EXPECT_TRUE(std::isnan(RobotModel{}.alpha));
 }
 
 // The defaults shown are those of a robot with no margins: the physical validity.

@@ -19,11 +19,9 @@ namespace {
 using testing::InvalidArgumentMessage;
 using testing::SameBits;
 
-PeriodicJobOptions Robot(const testing::JobRobot& robot, const PeriodicStart& start) {
+PeriodicJobOptions Robot(const RobotModel& robot, const PeriodicStart& start) {
   PeriodicJobOptions o;
-  o.forcing = robot.forcing;
-  o.params = robot.params;
-  o.alpha = robot.alpha;
+  o.robot = robot;
   o.start = start;
   return o;
 }
@@ -39,7 +37,7 @@ PeriodicJobOptions Robot(const testing::JobRobot& robot, const PeriodicStart& st
 }
 
 TEST(PeriodicJob, FromRestRunsItsTransientThenShoots) {
-  const testing::JobRobot robot = testing::StableOptimum();
+  const RobotModel robot = testing::StableOptimum();
   PeriodicFromRest rest;
   rest.x0 = 0.5;
   rest.psi = 1.0;
@@ -59,7 +57,7 @@ TEST(PeriodicJob, FromRestRunsItsTransientThenShoots) {
 }
 
 TEST(PeriodicJob, FromAStateShootsAtOnceAndWithThePeriodKnownSkipsTheSearch) {
-  const testing::JobRobot robot = testing::SmallOrbit();
+  const RobotModel robot = testing::SmallOrbit();
   // Near the post-impact state of the one-impact orbit (solve: u = 0.41620, v_plus = 0.17436).
   PeriodicFromState near;
   near.state = {1.0, -0.2, 0.17, 0.0};

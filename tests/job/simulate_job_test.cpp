@@ -29,7 +29,7 @@ struct Counter : SimObserver {
 };
 
 SimulateJobOptions SmallOrbitRun(const SimulateStart& start) {
-  const testing::JobRobot robot = testing::SmallOrbit();
+  const RobotModel robot = testing::SmallOrbit();
   SimulateJobOptions o;
   o.forcing = robot.forcing;
   o.params = robot.params;

@@ -20,7 +20,7 @@ using testing::SameAttractors;
 using testing::SameBits;
 
 SolveJobOptions SmallOrbitSolve() {
-  const testing::JobRobot robot = testing::SmallOrbit();
+  const RobotModel robot = testing::SmallOrbit();
   SolveJobOptions o;
   o.forcing = robot.forcing;
   o.params = robot.params;

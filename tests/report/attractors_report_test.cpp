@@ -50,9 +50,9 @@ Attractor Irregular(double halves_difference) {
 // (12 * 0.0125 + 4 * 0.021) / 16 = 0.014625.
 AttractorsJobResult HandMadeMap() {
   AttractorsJobResult r;
-  r.options.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
-  r.options.params = Params{0.75, 0.5};
-  r.options.alpha = 0.3;
+  r.options.robot.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
+  r.options.robot.params = Params{0.75, 0.5};
+  r.options.robot.alpha = 0.3;
   r.options.starts = StartGrid{4, 4};
   r.attractors.starts = 16;
   r.attractors.attractors = {Periodic(), Irregular(0.02)};

@@ -30,9 +30,9 @@ Attractor PeriodOne(double fraction, double mean_velocity) {
 BasinsJobResult HandMadeMap(int n) {
   BasinsJobResult r;
   AttractorsJobOptions& o = r.map.options;
-  o.forcing = Forcing::Harmonic(0.5, 0.5, -2.5);
-  o.params = Params{0.75, 0.5};
-  o.alpha = 0.3;
+  o.robot.forcing = Forcing::Harmonic(0.5, 0.5, -2.5);
+  o.robot.params = Params{0.75, 0.5};
+  o.robot.alpha = 0.3;
   o.starts = StartGrid{10, 10};
   o.run = WholeStartMap{"basins.csv", ""};
   r.map.attractors.starts = 100;

@@ -24,11 +24,11 @@ using testing::Printed;
 // not run: the report only reads the list.
 OrbitsJobResult TwoOrbits() {
   OrbitsJobResult r;
-  r.options.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
-  r.options.params = Params{};
-  r.options.alpha = 0.25;
+  r.options.robot.forcing = Forcing::Harmonic(0.5, 0.5, 0.0);
+  r.options.robot.params = Params{};
+  r.options.robot.alpha = 0.25;
   for (const double phi0 : {-2.9449, -2.0}) {
-    r.orbits.push_back(Solve(Forcing::Harmonic(0.5, 0.5, phi0), r.options.params));
+    r.orbits.push_back(Solve(Forcing::Harmonic(0.5, 0.5, phi0), r.options.robot.params));
   }
   return r;
 }
@@ -57,7 +57,7 @@ TEST(OrbitsTextReport, OneRowPerOrbitWithItsStabilityAndValidity) {
 
 TEST(OrbitsTextReport, AnIncompleteSearchSaysSoWithTheBoundsName) {
   OrbitsJobResult r;
-  r.options.alpha = 0.5;
+  r.options.robot.alpha = 0.5;
   r.complete = false;
   const std::string t = text::OrbitsJobText(r, "max_evaluations");
   EXPECT_TRUE(Has(t, "  0 orbit(s)\n"));

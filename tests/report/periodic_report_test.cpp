@@ -19,9 +19,9 @@ using testing::Printed;
 
 PeriodicJobResult HandMadeMotion() {
   PeriodicJobResult r;
-  r.options.forcing = Forcing::Harmonic(0.5, 0.5, 1.0);
-  r.options.params = Params{0.75, 0.5};
-  r.options.alpha = 0.3;
+  r.options.robot.forcing = Forcing::Harmonic(0.5, 0.5, 1.0);
+  r.options.robot.params = Params{0.75, 0.5};
+  r.options.robot.alpha = 0.3;
   PeriodicMotion& m = r.motion;
   m.status = ShootingStatus::kConverged;
   m.period = 2;

@@ -41,9 +41,9 @@ struct StartMapShard {
 using StartMapRun = std::variant<WholeStartMap, StartMapShard>;
 
 struct AttractorsJobOptions {
-  Forcing forcing;             ///< the force F = G(psi + phi0) at the starts' phases psi
-  Params params;               ///< T0 and e
-  double alpha = kNaN;         ///< mass ratio m2/(m1+m2); 0 < alpha < 1
+  /// The force F = G(psi + phi0) at the starts' phases psi, T0, e and the mass ratio
+  /// m2/(m1+m2), 0 < alpha < 1.
+  RobotModel robot;
   StartGrid starts;            ///< n_x starting positions x n_psi starting phases, from rest
   AttractorOptions attractor;  ///< each start's simulation, the grouping, threads, interrupt
   StartMapRun run;             ///< the whole map (default) or one shard

@@ -14,6 +14,7 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
@@ -50,9 +51,7 @@ const char* SwitchPointName(SwitchPoint point);
 SwitchPoint ParseSwitchPoint(const std::string& name);
 
 struct ContinueJobOptions {
-  Forcing forcing;      ///< the robot's force
-  Params params;        ///< T0 > 0, 0 <= e <= 1
-  double alpha = kNaN;  ///< mass ratio m2/(m1+m2), 0 < alpha < 1
+  RobotModel robot;  ///< the force, T0 > 0, 0 <= e <= 1, the mass ratio 0 < alpha < 1
   /// The parameter followed: A, c, alpha, T0, e, phi0, a1..a16, b1..b16 (a robot parameter of
   /// ModelParameter that the force has).
   std::string param;

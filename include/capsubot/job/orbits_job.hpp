@@ -10,16 +10,17 @@
 #include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/orbit/robot_orbits.hpp"
 
 namespace capsubot {
 
 struct OrbitsJobOptions {
-  Forcing forcing;  ///< the force's shape (its phi0 is solved for, not used)
-  Params params;
-  double alpha = kNaN;  ///< mass ratio, 0 < alpha < 1
-  Margins margins;      ///< the margins of the orbits' validity (none: physical validity)
+  /// The force's shape (its phi0 is solved for, not used), T0, e and the mass ratio
+  /// 0 < alpha < 1.
+  RobotModel robot;
+  Margins margins;  ///< the margins of the orbits' validity (none: physical validity)
   /// Work bound: evaluations of the orbit equation; 1 <= max_evaluations <= kMaxOrbitEvaluations.
   std::int64_t max_evaluations = kRobotOrbitsMaxEvaluations;
   Interrupt interrupt;  ///< asked about every millisecond of the search

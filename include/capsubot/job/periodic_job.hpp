@@ -8,6 +8,7 @@
 #include "capsubot/job/stage_callback.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/model/robot_model.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 
 namespace capsubot {
@@ -37,9 +38,9 @@ struct PeriodicOfPeriod {
 using PeriodicStart = std::variant<PeriodicFromState, PeriodicFromRest, PeriodicOfPeriod>;
 
 struct PeriodicJobOptions {
-  Forcing forcing;      ///< the force F = G(psi + phi0) at the start's phase psi
-  Params params;        ///< T0 and e
-  double alpha = kNaN;  ///< mass ratio m2/(m1+m2); 0 < alpha < 1
+  /// The force F = G(psi + phi0) at the start's phase psi, T0, e and the mass ratio
+  /// m2/(m1+m2), 0 < alpha < 1.
+  RobotModel robot;
   PeriodicStart start;  ///< a state, from rest, or a state with its period
   /// Newton's method and the simulator (max_period, step, chatter_velocity, ..., interrupt);
   /// its transient is the start's (set by the job).
