@@ -43,7 +43,7 @@ py::dict BifurcationDict(
   BifurcationJobOptions job;
   job.robot.forcing = ForceSpec{A, c, phi0, cos, sin, waveform, levels, switches}.Build();
   job.robot.params = Params{T0, e};
-  job.robot.alpha = alpha.value_or(BifurcationOptions::kNaN);
+  job.robot.alpha = alpha.value_or(kNaN);
   BifurcationOptions& o = job.diagram;
   o.param = ParseRobotParameter(param, &o.harmonic);
   o.from = from;

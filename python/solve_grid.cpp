@@ -212,7 +212,7 @@ class GridSolver {
     out_.violations[p] = v.violations;
     if (stability_) {
       const Stability st = ComputeStability(o);
-      out_.spectral_radius[p] = st.computed ? st.spectral_radius : Stability::kNaN;
+      out_.spectral_radius[p] = st.computed ? st.spectral_radius : kNaN;
       out_.stable[p] = st.computed && st.stable;
     }
   }

@@ -59,7 +59,7 @@ const RobotSetting kSettings[] = {
      "force-sin; default 0)",
      [](DesignInput& in, const SettingValue& v) {
        in.force.cos = v.list;
-       in.force.amplitude = DesignInput::kNaN;
+       in.force.amplitude = kNaN;
      },
      [](const DesignInput& in, SettingValue& v) {
        v.list = in.force.cos;
@@ -68,7 +68,7 @@ const RobotSetting kSettings[] = {
     {"force-sin", SettingKind::kList, "Fourier motor force: sine coefficients b_1,...,b_K [N]",
      [](DesignInput& in, const SettingValue& v) {
        in.force.sin = v.list;
-       in.force.amplitude = DesignInput::kNaN;
+       in.force.amplitude = kNaN;
      },
      [](const DesignInput& in, SettingValue& v) {
        v.list = in.force.sin;

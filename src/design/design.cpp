@@ -109,7 +109,7 @@ Found Maximise(double lo, double hi, int n, const Inner& inner, Tally& tally, st
   Found best;
   best.probe.branches = -1;
   GaitStatus why = GaitStatus::kNotRun;
-  double best_value = std::numeric_limits<double>::quiet_NaN();
+  double best_value = kNaN;
   const auto probe = [&](double x) {
     const double value = FromLog(x, lo, hi);
     Found f = inner(value);

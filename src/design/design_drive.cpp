@@ -98,8 +98,8 @@ ReachOptions ReachOptionsFor(const DesignInput& in, const DriveDesignOptions& o,
   const bool capped = m2 > in.M2Max();
   const double bound =
       capped ? params.T0 : o.force_max / ((in.m1 + m2) * (kTau * f) * (kTau * f) * in.L);
-  ReachOptions r = drive.sine() ? o.effort.Options(bound, ReachOptions::kNaN, o.check)
-                                : o.effort.DriveOptions(drive, bound, ReachOptions::kNaN, o.check);
+  ReachOptions r = drive.sine() ? o.effort.Options(bound, kNaN, o.check)
+                                : o.effort.DriveOptions(drive, bound, kNaN, o.check);
   r.alpha_min = alpha_of(in.M2Min());
   r.alpha_max = alpha_of(in.M2Max());
   r.widen_alpha_box = false;

@@ -77,7 +77,7 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
   ++ctx->evaluations;
   const bool feasible = a.event_limit_starts == 0 && !std::isnan(a.mean_velocity);
   if (!feasible) ++ctx->rejected;
-  const double speed = feasible ? m.omega * ctx->input->L * a.mean_velocity : FromRestBest::kNaN;
+  const double speed = feasible ? m.omega * ctx->input->L * a.mean_velocity : kNaN;
   ctx->seen.push_back({std::vector<double>(y, y + n), speed});
   if (*ctx->progress) (*ctx->progress)(ctx->stage, ctx->evaluations, ctx->total);
   return ctx->Score(speed);
@@ -90,7 +90,7 @@ Energy AttractorEnergy(const DesignModel& m, const Motion& motion, const MotionO
                        double& u) {
   class LastImpact : public SimObserver {
    public:
-    double u = FromRestBest::kNaN;
+    double u = kNaN;
     void OnEvent(const SimEvent& e) override {
       if (e.kind == EventKind::kImpactRight || e.kind == EventKind::kImpactLeft) u = e.u_before;
     }
@@ -276,10 +276,10 @@ FromRestBest EvaluateModelFromRest(const DesignInput& in, const DesignModel& mod
   if (!b.ok()) return b;  // (its message has no speed to tell)
   // The starts' average budget per period: each attractor's, weighted by its fraction.
   Energy sum{0.0, 0.0, 0.0, 0.0};
-  double u = FromRestBest::kNaN;
+  double u = kNaN;
   for (std::size_t k = 0; k < b.attractors.attractors.size(); ++k) {
     const Attractor& a = b.attractors.attractors[k];
-    double last_impact_u = FromRestBest::kNaN;
+    double last_impact_u = kNaN;
     const Energy e = AttractorEnergy(m, a.motion, from_rest.attractor.motion, last_impact_u);
     sum.motor_work += a.fraction * e.motor_work;
     sum.motor_work_positive += a.fraction * e.motor_work_positive;

@@ -6,7 +6,7 @@ std::vector<std::pair<const char*, double>> Dimensionless(const Gait& g) {
   const bool ok = g.ok();
   const Orbit& o = g.solution.orbit;
   const Forcing& f = o.forcing;
-  const double nan = Gait::kNaN;
+  const double nan = kNaN;
   return {{"T0", ok ? o.T0 : nan},
           {"A", ok && f.harmonic() ? f.amplitude() : nan},
           {"c", ok ? f.mean() : nan},

@@ -127,7 +127,7 @@ double Objective(unsigned n, const double* y, double* /*gradient*/, void* data) 
 double SpreadRun(const RobotModel& robot, const FromRestOptions& options, ReachSpread& spread) {
   const Attractors a = FindAttractors(robot, options);
   spread.event_limit_starts += a.event_limit_starts;
-  return a.event_limit_starts > 0 ? ReachSpread::kNaN : a.mean_velocity;
+  return a.event_limit_starts > 0 ? kNaN : a.mean_velocity;
 }
 
 // |v - mean_velocity| / |mean_velocity|.
@@ -406,7 +406,7 @@ void Report(const Candidate& best, const Context& ctx, const ReachOptions& optio
   out.seed_won = best.is_seed;
   out.summary = AttractorsSummary(out.attractors, options.check.attractor.motion.max_period);
   const double seed_v =
-      out.seed.from_rest.checked ? out.seed.from_rest.attractors.mean_velocity : ReachResult::kNaN;
+      out.seed.from_rest.checked ? out.seed.from_rest.attractors.mean_velocity : kNaN;
   out.message = fmt::format(
       "fastest motion from rest with {}: mean velocity {:.6g} ({}, alpha = {:.6g}){}{}{}{}{}",
       BoundText(ctx.family, out.force_bound), out.mean_velocity, ForceText(out), out.alpha,
@@ -528,7 +528,7 @@ namespace {
 std::vector<DriveSeed> FrequencySeeds(const Params& params, const ReachOptions& options,
                                       double bound) {
   ReachOptions fixed = options;
-  fixed.T0_min = fixed.T0_max = ReachOptions::kNaN;
+  fixed.T0_min = fixed.T0_max = kNaN;
   fixed.seeds.clear();
   fixed.global_evaluations = std::max(1, options.global_evaluations / kFrequencyStarts);
   fixed.local_evaluations = options.local_evaluations / kFrequencyStarts;

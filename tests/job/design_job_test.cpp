@@ -310,7 +310,7 @@ TEST(DesignJob, GridRowsAreTheGaitsOfTheirPoints) {
     EXPECT_EQ(cell("status"), GaitStatusName(g.status)) << file.rows[k];
     EXPECT_EQ(cell("speed_mm_s"), FormatNumber(g.speed_mm_s)) << file.rows[k];
     EXPECT_EQ(cell("power_mw"), FormatNumber(g.power_mw)) << file.rows[k];
-    EXPECT_EQ(cell("T0"), FormatNumber(g.ok() ? g.solution.orbit.T0 : Gait::kNaN));
+    EXPECT_EQ(cell("T0"), FormatNumber(g.ok() ? g.solution.orbit.T0 : kNaN));
     EXPECT_EQ(cell("orbits"), std::to_string(g.orbits)) << file.rows[k];
     ok += g.ok() ? 1 : 0;
   }

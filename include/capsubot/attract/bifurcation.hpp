@@ -23,7 +23,6 @@ namespace capsubot {
 inline constexpr std::int64_t kMaxOverValues = 100000;
 
 struct BifurcationOptions {
-  static constexpr double kNaN = capsubot::kNaN;
 
   /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
   ModelParameter param = ModelParameter::kT0;

@@ -53,7 +53,6 @@ struct MotorForce {
 
 /// A physical robot and what may be chosen: SI units throughout.
 struct DesignInput {
-  static constexpr double kNaN = capsubot::kNaN;
 
   /// Shell mass [kg], > 0; with the default inner-mass range, small enough that 10 m1 is finite.
   double m1 = kNaN;
@@ -122,7 +121,6 @@ const char* GaitStatusName(GaitStatus status);
 
 /// A gait in the user's units, with the dimensionless orbit it comes from.
 struct Gait {
-  static constexpr double kNaN = capsubot::kNaN;
 
   GaitStatus status = GaitStatus::kNotRun;
   double m2_kg = kNaN;         ///< inner mass [kg]

@@ -16,13 +16,13 @@
 // the simulator's.
 
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/gait_from_rest.hpp"
 #include "capsubot/model/params.hpp"
+#include "capsubot/numerics/not_computed.hpp"
 #include "capsubot/optimize/optimize_forcing.hpp"
 #include "capsubot/optimize/optimize_result.hpp"
 #include "capsubot/reach/drive_family.hpp"
@@ -46,12 +46,11 @@ ForcingDesignOptions RobustSeedDesign();
 /// with its mass ratio.
 struct DriveSeed {
   Forcing forcing;
-  double alpha = std::numeric_limits<double>::quiet_NaN();
-  double T0 = std::numeric_limits<double>::quiet_NaN();  ///< its T0; NaN: the robot's
+  double alpha = kNaN;
+  double T0 = kNaN;  ///< its T0; NaN: the robot's
 };
 
 struct ReachOptions {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   /// The forces searched: the sine A sin(phi + phi0) + c (today's problem) or a Fourier series
   /// of K harmonics (drive_family.hpp).
@@ -141,7 +140,6 @@ struct ReachOptions {
 /// The mean velocity of the winner re-simulated with other numerical settings (full from-rest
 /// settings); NaN when not computed or when a start ended in event_limit there.
 struct ReachSpread {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   double chatter_small = kNaN;  ///< chatter_velocity / 100
   double chatter_large = kNaN;  ///< chatter_velocity * 100
@@ -159,7 +157,6 @@ struct ReachSeed {
 };
 
 struct ReachResult {
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   /// kOk (search converged or used its budget), kMaxTime (the wall-clock limit stopped the
   /// search; the best point is kept; when it came before the search evaluated anything, the
