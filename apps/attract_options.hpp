@@ -10,6 +10,7 @@
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/numerics/not_computed.hpp"
 #include "cli.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 
@@ -46,12 +47,7 @@ const FlagNames& MotionFlagNames();
 
 /// The flags of a start: the state's --x0, --u0, --v0, --psi and the other starts --from-rest,
 /// --from-orbit (for StartStateSpec's messages).
-inline const FlagNames kStartFlags = {{"x0", "--x0"},
-                                      {"u0", "--u0"},
-                                      {"v0", "--v0"},
-                                      {"psi", "--psi"},
-                                      {"from_rest", "--from-rest"},
-                                      {"from_orbit", "--from-orbit"}};
+inline const FlagNames kStartFlags = DashedFlags("x0 u0 v0 psi from_rest from_orbit");
 
 /// The start state of a command given as --x0, --u0, --v0 and --psi (all four, or none when
 /// another option gives the start).

@@ -169,19 +169,14 @@ Forcing ForcingOptions::Build(bool need_phase) const {
     spec.sin = Sines();
     if (!cos_text.empty()) spec.cos = Cosines();
   }
-  static const FlagNames kForceFlags = {{"A", "--A"},           {"c", "--c"},
-                                        {"phi0", "--phi0"},     {"sin", "--sin"},
-                                        {"cos", "--cos"},       {"waveform", "--waveform"},
-                                        {"levels", "--levels"}, {"switches", "--switches"}};
+  static const FlagNames kForceFlags = DashedFlags("A c phi0 sin cos waveform levels switches");
   return spec.Build(need_phase, kForceFlags);
 }
 
 void AddParamsOptions(CLI::App& cmd, Params& p, Margins* margins) {
-  static const FlagNames kFlags = {{"T0", "--T0"},
-                                   {"e", "--e"},
-                                   {"clearance", "--margin"},
-                                   {"clearance_stroke", "--margin-stroke"},
-                                   {"stick", "--stick-margin"}};
+  static const FlagNames kFlags = DashedFlags("T0 e", {{"clearance", "--margin"},
+                                                       {"clearance_stroke", "--margin-stroke"},
+                                                       {"stick", "--stick-margin"}});
   AddSettings(cmd, p, ParamsSettings(), kFlags);
   if (margins != nullptr) AddSettings(cmd, *margins, MarginsSettings(), kFlags);
 }

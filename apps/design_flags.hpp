@@ -3,34 +3,19 @@
 // names for the library's rule (DesignSettingUses) and its provenance.
 
 #include "capsubot/model/setting_names.hpp"
+#include "setting_options.hpp"
 
 namespace capsubot::app {
 
 /// The flag of each setting of the design job that a run may not use, of the switches that
 /// select the runs (--from-rest, --grid, --drive), and of the fields of the lower stages'
 /// messages ("levels" of a pulse drive).
-inline const FlagNames kDesignFlags = {{"from_rest_starts", "--from-rest-starts"},
-                                       {"reach_starts", "--reach-starts"},
-                                       {"reach_evaluations", "--reach-evaluations"},
-                                       {"reach_local_evaluations", "--reach-local-evaluations"},
-                                       {"reach_seconds", "--reach-seconds"},
-                                       {"threads", "--threads"},
-                                       {"json", "--json"},
-                                       {"output", "--output"},
-                                       {"force_max", "--force-max"},
-                                       {"harmonics", "--harmonics"},
-                                       {"pulse_levels", "--pulse-levels"},
-                                       {"levels", "--pulse-levels"},
-                                       {"drive_evaluations", "--drive-evaluations"},
-                                       {"drive_polishes", "--drive-polishes"},
-                                       {"drive_local_evaluations", "--drive-local-evaluations"},
-                                       {"drive_refine_evaluations", "--drive-refine-evaluations"},
-                                       {"drive_screens", "--drive-screens"},
-                                       {"shard", "--shard"},
-                                       {"resume", "--resume"},
-                                       {"band_levels", "--band-levels"},
-                                       {"from_rest", "--from-rest"},
-                                       {"grid", "--grid"},
-                                       {"drive", "--drive"}};
+inline const FlagNames kDesignFlags = DashedFlags(
+    "from_rest_starts reach_starts reach_evaluations "
+    "reach_local_evaluations reach_seconds threads json output "
+    "force_max harmonics pulse_levels drive_evaluations drive_polishes "
+    "drive_local_evaluations drive_refine_evaluations drive_screens "
+    "shard resume band_levels from_rest grid drive",
+    {{"levels", "--pulse-levels"}});
 
 }  // namespace capsubot::app

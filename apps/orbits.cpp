@@ -25,7 +25,7 @@ struct OrbitsOptions {
   ResultOutput output;
 };
 
-const FlagNames kOrbitsFlags = {{"alpha", "--alpha"}, {"max_evaluations", "--max-evaluations"}};
+const FlagNames kOrbitsFlags = DashedFlags("alpha max_evaluations");
 
 int Run(OrbitsOptions& opt, const CLI::App& cmd) {
   opt.job.robot.params.Validate();

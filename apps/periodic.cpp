@@ -31,8 +31,7 @@ struct PeriodicCommandOptions {
   CLI::Option* transient_option = nullptr;
 };
 
-const FlagNames kShootingFlags = {
-    {"max_period", "--max-period"}, {"step", "--step"}, {"chatter_velocity", "--chatter-velocity"}};
+const FlagNames kShootingFlags = DashedFlags("max_period step chatter_velocity");
 
 // The start --from-rest or --x0, --u0, --v0, --psi give, with --transient when given (else
 // the start's default).

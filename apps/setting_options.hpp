@@ -12,19 +12,36 @@
 #include <variant>
 #include <vector>
 
+#include "capsubot/io/io.hpp"
 #include "capsubot/job/setting_table.hpp"
 #include "cli.hpp"
 
 namespace capsubot::app {
 
+/// `text` kept as long as the program (a FlagNames entry points to it); called while the
+/// commands are declared, before any thread starts.
+inline const char* KeptText(const std::string& text) {
+  static std::set<std::string> texts;  // a set's elements never move
+  return texts.insert(text).first->c_str();
+}
+
 /// The flag of `field`: "--" and the field with '_' written '-' ("max_period" ->
-/// "--max-period"). It lives as long as the program (a FlagNames entry points to it); called
-/// while the commands are declared, before any thread starts.
-inline const char* DashedFlag(const char* field) {
-  static std::set<std::string> flags;  // a set's elements never move
-  std::string flag = std::string("--") + field;
+/// "--max-period"), kept as long as the program (KeptText).
+inline const char* DashedFlag(const std::string& field) {
+  std::string flag = "--" + field;
   std::replace(flag.begin(), flag.end(), '_', '-');
-  return flags.insert(flag).first->c_str();
+  return KeptText(flag);
+}
+
+/// The DashedFlag of each field of `fields` (names separated by spaces), in that order, then the
+/// entries of `others`: the fields whose flag is another name ({"levels", "--pulse-levels"}).
+inline FlagNames DashedFlags(const std::string& fields, const FlagNames& others = {}) {
+  FlagNames names;
+  for (const std::string& field : SplitText(fields, ' ')) {
+    if (!field.empty()) names.emplace_back(KeptText(field), DashedFlag(field));
+  }
+  names.insert(names.end(), others.begin(), others.end());
+  return names;
 }
 
 /// `names` with the DashedFlag of every field of `tables` that has no entry in it.

@@ -46,13 +46,9 @@ struct SimulateOptions {
 
 // The flags of the settings the help names. The job's messages name only the start from the
 // orbit by its flag (the run's settings by their fields, as the simulator's rules do).
-const FlagNames kSettingFlags = {{"y0", "--y0"},
-                                 {"periods", "--periods"},
-                                 {"transient", "--transient"},
-                                 {"chatter_velocity", "--chatter-velocity"},
-                                 {"max_events_per_period", "--max-events-per-period"},
-                                 {"samples_per_period", "--samples-per-period"},
-                                 {"trajectory", "--trajectory"}};
+const FlagNames kSettingFlags = DashedFlags(
+    "y0 periods transient chatter_velocity max_events_per_period "
+    "samples_per_period trajectory");
 const FlagNames kMessageFlags = {{"from_orbit", "--from-orbit"}};
 
 // Streams events and samples to the CSV files as they come (text::SimulateCsv), and draws the
@@ -93,11 +89,7 @@ SimulateStart Start(const SimulateOptions& opt) {
   const SimulateStartSpec spec{part(opt.alpha_option, opt.state.alpha),
                                part(opt.x0_option, opt.state.x0), part(opt.u0_option, opt.state.u0),
                                part(opt.v0_option, opt.state.v0)};
-  static const FlagNames kStartFlags = {{"alpha", "--alpha"},
-                                        {"x0", "--x0"},
-                                        {"u0", "--u0"},
-                                        {"v0", "--v0"},
-                                        {"from_orbit", "--from-orbit"}};
+  static const FlagNames kStartFlags = DashedFlags("alpha x0 u0 v0 from_orbit");
   return spec.Build(opt.from_orbit, "--from-orbit", kStartFlags);
 }
 

@@ -33,7 +33,7 @@ struct SolveOptions {
   FromRestCliOptions from_rest;  // with --stability: the orbit checked from rest
 };
 
-const FlagNames kTrajectoryFlags = {{"trajectory", "--trajectory"}, {"samples", "--samples"}};
+const FlagNames kTrajectoryFlags = DashedFlags("trajectory samples");
 
 // What the trajectory of the orbit does not depend on: the check of the orbit's validity and
 // stability (its margins; the grid of starts from rest).
