@@ -23,11 +23,6 @@ void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   AddSettings(cmd, o.motion, MotionSettings(), MotionFlagNames());
 }
 
-std::pair<int, int> ParseGridSize(const char* name, const std::string& text) {
-  const StartGrid grid = ParseStartGrid(name, text);
-  return {grid.n_x, grid.n_psi};
-}
-
 AttractorsJobOptions MapJobOptions(const RobotOptions& robot, const std::string& starts,
                                    int threads) {
   AttractorsJobOptions o;

@@ -3,7 +3,6 @@
 // bifurcation, continue): the robot, the simulation lengths, the start grid, the start state.
 
 #include <string>
-#include <utility>
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/start_state_spec.hpp"
@@ -28,10 +27,6 @@ struct RobotOptions {
 /// Adds the force, --T0, --e, --alpha (required), and with `with_motion` --transient, --record,
 /// --max-period, --chatter-velocity, --max-events-per-period.
 void AddRobotOptions(CLI::App& cmd, RobotOptions& options, bool with_motion = true);
-
-/// "8x8" -> (8, 8) for option `name`: the library's ParseStartGrid as a pair; throws
-/// std::invalid_argument naming the option and the rule.
-std::pair<int, int> ParseGridSize(const char* name, const std::string& text);
 
 /// The map job of `robot` (force, T0, e, alpha, motion options) over the grid `starts` (the
 /// option --starts) with `threads` worker threads (as --threads gave them: AddThreadsOption).

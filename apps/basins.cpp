@@ -31,26 +31,12 @@ struct BasinsCommandOptions {
   std::string plot;
 };
 
-// The plane --plane names, with the starts of --psi, --u-min, --u-max in the x0-u0 plane.
-StartPlane Plane(const BasinsCommandOptions& opt) {
-  const VelocityPlane& v = opt.velocity;
-  const bool x0_u0 = opt.plane == StartPlaneName(v);
-  if (!x0_u0 && opt.plane != StartPlaneName(RestPlane{})) {
-    throw std::invalid_argument(
-        fmt::format("--plane = {} is invalid: expected x0-psi or x0-u0", opt.plane));
-  }
-  if (!(v.u_min < v.u_max)) {  // also in the x0-psi plane: never accepted unchecked
-    throw std::invalid_argument(fmt::format(
-        "--u-min = {} and --u-max = {} are invalid: expected u-min < u-max", v.u_min, v.u_max));
-  }
-  return x0_u0 ? StartPlane(v) : StartPlane(RestPlane{});
-}
-
 int Run(const BasinsCommandOptions& opt, const CLI::App& cmd) {
   BasinsJobOptions o;
   const MapCommandOptions& map = opt.map;
   o.map = MapJobOptions(map.robot, map.starts, map.threads);
-  o.plane = Plane(opt);
+  o.plane =
+      StartPlaneNamed(opt.plane, opt.velocity, SettingNames{DashedFlags("plane u_min u_max")});
   RequireDistinctOutputs({{map.output, "-o"}, {opt.plot, "--plot"}});
   RequireOutputApartFromJson(map.output, "-o", map.json);
   o.map.run =

@@ -13,27 +13,29 @@ namespace capsubot {
 
 namespace {
 
-void CheckVelocityRange(const VelocityPlane& p) {
+void CheckVelocityRange(const VelocityPlane& p, const SettingNames& names) {
   if (!(p.u_min < p.u_max)) {
-    throw std::invalid_argument(fmt::format(
-        "u_min = {} and u_max = {} are invalid: expected u_min < u_max", p.u_min, p.u_max));
+    throw std::invalid_argument(fmt::format("{} = {} and {} = {} are invalid: expected {} < {}",
+                                            names.Name("u_min"), p.u_min, names.Name("u_max"),
+                                            p.u_max, names.InRule("u_min"), names.InRule("u_max")));
   }
 }
 
 }  // namespace
 
 void BasinsJobOptions::Validate() const {
-  if (const auto* p = std::get_if<VelocityPlane>(&plane)) CheckVelocityRange(*p);
+  if (const auto* p = std::get_if<VelocityPlane>(&plane)) CheckVelocityRange(*p, {});
   map.Validate();
 }
 
-StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity) {
+StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity,
+                           const SettingNames& names) {
   const bool x0_u0 = name == StartPlaneName(velocity);
   if (!x0_u0 && name != StartPlaneName(RestPlane{})) {
     throw std::invalid_argument(
-        fmt::format("plane = {} is invalid: expected x0-psi or x0-u0", name));
+        fmt::format("{} = {} is invalid: expected x0-psi or x0-u0", names.Name("plane"), name));
   }
-  CheckVelocityRange(velocity);
+  CheckVelocityRange(velocity, names);
   return x0_u0 ? StartPlane(velocity) : StartPlane(RestPlane{});
 }
 

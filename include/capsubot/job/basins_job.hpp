@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "capsubot/job/attractors_job.hpp"
+#include "capsubot/model/setting_names.hpp"
 
 namespace capsubot {
 
@@ -30,9 +31,10 @@ using StartPlane = std::variant<RestPlane, VelocityPlane>;
 const char* StartPlaneName(const StartPlane& plane);
 
 /// The plane called `name` ("x0-psi" or "x0-u0"), the latter with the starts of `velocity`.
-/// Throws std::invalid_argument for another name ("plane = ... is invalid") and for
+/// Throws std::invalid_argument, in `names`, for another name ("plane = ... is invalid") and for
 /// velocity.u_min >= velocity.u_max in either plane (a bad range is never accepted unchecked).
-StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity);
+StartPlane StartPlaneNamed(const std::string& name, const VelocityPlane& velocity,
+                           const SettingNames& names = {});
 
 struct BasinsJobOptions {
   /// The robot, the grid (n_x positions x n_psi phases or velocities), the motions and how
