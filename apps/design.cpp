@@ -64,16 +64,6 @@ std::string RunOf(const DesignCliOptions& opt) {
   return opt.part_b ? "from-rest" : "";
 }
 
-// The settings given on `cmd`, by field.
-std::set<std::string> GivenSettings(const CLI::App& cmd) {
-  std::set<std::string> given;
-  for (const auto& [field, flag] : kDesignFlags) {
-    const CLI::Option* option = cmd.get_option_no_throw(flag);
-    if (option != nullptr && option->count() > 0) given.insert(field);
-  }
-  return given;
-}
-
 // The options the run does not use: their defaults do not shape its output.
 std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
   const SettingNames names{kDesignFlags};
@@ -97,7 +87,7 @@ void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
         "one-impact gait of each point to the CSV -o)");
   }
   const auto run_name = [&names](const std::string& r) { return DesignRunName(r, names); };
-  const std::set<std::string> given = GivenSettings(cmd);
+  const std::set<std::string> given = GivenFields(cmd, kDesignFlags);
   RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
   RejectUnusedSettings(kOutputUses, given, run, run_name, names, "is invalid with");
   if (run == "drive") RejectUnusedDriveSettings(opt.drive.drive, given, names);

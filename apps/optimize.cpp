@@ -93,10 +93,7 @@ std::pair<double, double> ParseT0Range(const std::string& text) {
 // --starts, the from-rest options.
 OptimizeSettings SettingsOf(const OptimizeCliOptions& opt) {
   OptimizeSettings s = opt.settings;
-  for (const auto& [field, flag] : kOptimizeFlags) {
-    const CLI::Option* option = opt.cmd->get_option_no_throw(flag);
-    if (option != nullptr && option->count() > 0) s.given.insert(field);
-  }
+  s.given = GivenFields(*opt.cmd, kOptimizeFlags);
   if (s.Given("starts")) s.search.starts = opt.starts;
   if (s.problem == "reach") std::tie(s.T0_min, s.T0_max) = ParseT0Range(opt.T0_range);
   s.from_rest_starts = opt.from_rest.starts;

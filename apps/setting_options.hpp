@@ -44,6 +44,16 @@ inline FlagNames DashedFlags(const std::string& fields, const FlagNames& others 
   return names;
 }
 
+/// The fields of `names` whose flag was given on the parsed command `cmd`.
+inline std::set<std::string> GivenFields(const CLI::App& cmd, const FlagNames& names) {
+  std::set<std::string> given;
+  for (const auto& [field, flag] : names) {
+    const CLI::Option* option = cmd.get_option_no_throw(flag);
+    if (option != nullptr && option->count() > 0) given.insert(field);
+  }
+  return given;
+}
+
 /// `names` with the DashedFlag of every field of `tables` that has no entry in it.
 template <class... Options>
 FlagNames WithDashedFlags(FlagNames names, const SettingTable<Options>&... tables) {

@@ -50,10 +50,7 @@ struct SweepCliOptions {
 // and the reach search's options, the shard.
 SweepSettings SettingsOf(const SweepCliOptions& opt, const CLI::App& cmd) {
   SweepSettings s = opt.settings;
-  for (const auto& [field, flag] : kSweepFlags) {
-    const CLI::Option* option = cmd.get_option_no_throw(flag);
-    if (option != nullptr && option->count() > 0) s.given.insert(field);
-  }
+  s.given = GivenFields(cmd, kSweepFlags);
   for (const std::string& spec : opt.grids) {
     const GridAxis& axis = s.grid.axes.emplace_back(ParseGridAxis(spec));
     const double far = std::abs(axis.Min()) > std::abs(axis.Max()) ? axis.Min() : axis.Max();
