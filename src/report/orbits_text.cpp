@@ -19,8 +19,9 @@ std::string OrbitsJobText(const OrbitsJobResult& r, const char* bound_name) {
       fmt::format("one-impact orbits of the robot with alpha = {}\n", Num(o.robot.alpha));
   t += fmt::format("  force   {}   (phi0 = impact phase, solved for)\n",
                    ForceFormula(o.robot.forcing.WithPhase(0.0)));
-  t += fmt::format("  model   T0 = {:g}, e = {:g}, margin = {:g}\n", o.robot.params.T0,
-                   o.robot.params.e, o.margins.clearance);
+  t += fmt::format("  model   T0 = {:g}, e = {:g}, margins d = {:g}, d_s = {:g}, s = {:g}\n",
+                   o.robot.params.T0, o.robot.params.e, o.margins.clearance,
+                   o.margins.clearance_stroke, o.margins.stick);
   t += fmt::format("  {} orbit(s)\n", r.orbits.size());
   if (!r.complete) t += fmt::format("  note: {}\n", OrbitsIncompleteNote(bound_name));
   if (!r.orbits.empty()) {

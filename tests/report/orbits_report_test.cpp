@@ -38,9 +38,13 @@ TEST(OrbitsTextReport, OneRowPerOrbitWithItsStabilityAndValidity) {
   const std::string t = text::OrbitsJobText(r, "--max-evaluations");
   EXPECT_TRUE(Has(t, "one-impact orbits of the robot with alpha = 0.25\n"));
   EXPECT_TRUE(Has(t, "  force   F(phi) = 0.5 sin(phi + 0) + 0.5   (phi0 = impact phase"));
-  EXPECT_TRUE(Has(t, "  model   T0 = 1, e = 1, margin = 0\n"));
+  EXPECT_TRUE(Has(t, "  model   T0 = 1, e = 1, margins d = 0, d_s = 0, s = 0\n"));
   EXPECT_TRUE(Has(t, "  2 orbit(s)\n"));
   EXPECT_EQ(t.find("note:"), std::string::npos);  // complete
+  OrbitsJobResult margins = r;  // each margin the validity was judged with is said
+  margins.options.margins = Margins{0.05, 0.02, 0.1};
+  EXPECT_TRUE(Has(text::OrbitsJobText(margins, "--max-evaluations"),
+                  "  model   T0 = 1, e = 1, margins d = 0.05, d_s = 0.02, s = 0.1\n"));
   ASSERT_EQ(r.orbits.size(), 2U);
   for (const Solution& s : r.orbits) {
     ASSERT_TRUE(s.orbit.ok());
