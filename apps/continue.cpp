@@ -11,6 +11,7 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/continue_job.hpp"
 #include "capsubot/job/continue_settings.hpp"
+#include "capsubot/job/shooting_settings.hpp"
 #include "capsubot/report/continuation_json.hpp"
 #include "capsubot/report/continue_csv.hpp"
 #include "capsubot/report/continue_text.hpp"
@@ -72,8 +73,7 @@ int Run(ContinueCommandOptions& opt, const CLI::App& cmd) {
 const FlagNames& ContinueFlagNames() {
   static const FlagNames names = [] {
     FlagNames n = WithDashedFlags({}, ContinueParamSettings(), ContinuationRangeSettings(),
-                                  ContinuationStepSettings(), ContinuationShootingSettings(),
-                                  FollowSettings());
+                                  ContinuationStepSettings(), ShootingSettings(), FollowSettings());
     n.insert(n.end(),
              {{"from_orbit", "--from-orbit"}, {"follow", "--follow"}, {"switch", "--switch-at"}});
     return n;
@@ -128,7 +128,7 @@ Command AddContinueCommand(CLI::App& app) {
                 "(capsubot orbits), right after its impact");
   AddBranchOptions(*cmd, *opt);
   AddSettings(*cmd, opt->job.continuation, ContinuationStepSettings(), flags);
-  AddSettings(*cmd, opt->job.continuation.shooting, ContinuationShootingSettings(), flags);
+  AddSettings(*cmd, opt->job.continuation.shooting, ShootingSettings(), flags);
   cmd->add_option("-o,--output", opt->output,
                   "CSV of the branch: parameter, x, u, v, psi, period, impacts_right, "
                   "impacts_left, mean_velocity, spectral_radius, muK_re, muK_im, stable, label; "

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "capsubot/job/shooting_settings.hpp"
 #include "job/setting_table_checks.hpp"
 
 namespace capsubot {
@@ -17,7 +18,7 @@ testing::SettingTablesCheck ContinueTables(const ContinueJobOptions& job, const 
   check.Add(ContinuationRangeSettings(), job.continuation);
   check.Add(FollowSettings(), f);
   check.Add(ContinuationStepSettings(), job.continuation);
-  check.Add(ContinuationShootingSettings(), job.continuation.shooting);
+  check.Add(ShootingSettings(), job.continuation.shooting);
   return check;
 }
 

@@ -24,7 +24,4 @@ const SettingTable<FollowOptions>& FollowSettings();
 /// max_points, initial_step, min_step, max_step: the points and arclength steps of the branch.
 const SettingTable<ContinuationOptions>& ContinuationStepSettings();
 
-/// max_period, step, chatter_velocity: the start's shooting and the simulator along the branch.
-const SettingTable<ShootingOptions>& ContinuationShootingSettings();
-
 }  // namespace capsubot
