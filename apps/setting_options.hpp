@@ -18,13 +18,6 @@
 
 namespace capsubot::app {
 
-/// `text` kept as long as the program (a FlagNames entry points to it); called while the
-/// commands are declared, before any thread starts.
-inline const char* KeptText(const std::string& text) {
-  static std::set<std::string> texts;  // a set's elements never move
-  return texts.insert(text).first->c_str();
-}
-
 /// The flag of `field`: "--" and the field with '_' written '-' ("max_period" ->
 /// "--max-period"), kept as long as the program (KeptText).
 inline const char* DashedFlag(const std::string& field) {

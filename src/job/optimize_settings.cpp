@@ -64,6 +64,12 @@ const std::vector<SettingUse>& OptimizeSettingUses() {
   return uses;
 }
 
+const ModeSet& OptimizeModes() {
+  static const ModeSet modes = {
+      "problem", {"phase", "forcing", "fourier", "reach"}, "the main job"};
+  return modes;
+}
+
 namespace {
 
 // The budgets of the search of a drive (a Fourier drive of K >= 2, or a pulse drive).

@@ -1,6 +1,16 @@
 #include "capsubot/job/setting_table.hpp"
 
+#include <mutex>
+#include <set>
+
 namespace capsubot {
+
+const char* KeptText(const std::string& text) {
+  static std::mutex mutex;
+  static std::set<std::string> texts;  // a set's elements never move
+  const std::lock_guard<std::mutex> lock(mutex);
+  return texts.insert(text).first->c_str();
+}
 
 std::string HelpIn(const std::string& help, const FlagNames& names) {
   std::string out = help;

@@ -20,6 +20,26 @@ std::vector<std::string> UnusedSettings(const std::vector<SettingUse>& uses,
   return unused;
 }
 
+std::string ModesOpening(const std::vector<SettingUse>& uses, const std::string& setting,
+                         const ModeSet& set) {
+  const auto use = std::find_if(uses.begin(), uses.end(),
+                                [&setting](const SettingUse& u) { return u.setting == setting; });
+  if (use == uses.end()) return "";
+  std::string modes;
+  for (const std::string& mode : set.modes) {
+    if (use->UsedBy(mode)) modes += (modes.empty() ? "" : "|") + mode;
+  }
+  const bool every_mode = std::all_of(set.modes.begin(), set.modes.end(),
+                                      [&use](const std::string& m) { return use->UsedBy(m); });
+  std::string runs = use->UsedBy("") ? set.main_job : "";
+  if (!modes.empty()) {
+    const std::string field = "{" + std::string(set.field) + "}";
+    runs += (runs.empty() ? "" : " or ") + (every_mode ? field : field + " " + modes);
+  }
+  if (use->UsedBy("") && every_mode) return "";
+  return "with " + runs + ": ";
+}
+
 void RejectUnusedSettings(const std::vector<SettingUse>& uses, const std::set<std::string>& given,
                           const std::string& mode, const ModeName& mode_name,
                           const SettingNames& names, const char* verb) {

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "capsubot/job/search_settings.hpp"
 #include "capsubot/optimize/optimize_phase.hpp"
 #include "capsubot/optimize/optimize_search.hpp"
 
@@ -35,36 +36,19 @@ const SettingTable<SweepSettings>& SweepModeSettings() {
 }
 
 const SettingTable<GaitRequirements>& SweepGaitSettings() {
-  using G = GaitRequirements;
-  static const SettingTable<GaitRequirements> table = {
-      {"rho_max", &G::rho_max,
-       "with {optimize}: maximise over orbits whose spectral radius is at most rho_max > 0 "
-       "(docs/model.md sections 8, 12); inf: no stability requirement"},
-      {"bound", &G::force_bound,
-       "with {optimize} forcing|fourier|reach: the force bound A + c (max |F|) <= bound <= T0 "
-       "(default: T0)"}};
+  static const SettingTable<GaitRequirements> table =
+      WithModes(GaitBoundMeanings(), SweepSettingUses(), SweepModes());
   return table;
 }
 
 const SettingTable<SearchRequest>& SweepSearchSettings() {
-  using R = SearchRequest;
-  // The help that states the rule's bounds (SearchEffort).
-  static const std::string global_evaluations = fmt::format(
-      "with {{optimize}} forcing|fourier|reach: evaluation budget of an NLopt global algorithm "
-      "(not multistart), {} to {}",
-      kMinStageEvaluations, kMaxStageEvaluations);
-  static const SettingTable<SearchRequest> table = {
-      {"harmonics", &R::harmonics, "with {optimize} fourier: the number K of harmonics"},
-      {"hops", &R::hops, "with {optimize} forcing|reach: basin-hopping restarts after the starts"},
-      {"global_algorithm", &R::global_algorithm,
-       "with {optimize} forcing|fourier|reach: multistart or an NLopt global algorithm "
-       "(GN_ISRES, GN_ORIG_DIRECT, GN_ORIG_DIRECT_L, GN_AGS)"},
-      {"local_algorithm", &R::local_algorithm,
-       "with {optimize} forcing|fourier|reach: the local polish (LN_COBYLA, LD_SLSQP, LD_MMA, "
-       "LD_CCSAQ)"},
-      {"global_evaluations", &R::global_evaluations, global_evaluations.c_str(),
-       // Each mode has its own default (SweepModeDefaults).
-       0, 0, nullptr, false}};
+  static const SettingTable<SearchRequest> table = [] {
+    SettingTable<SearchRequest> t = WithModes(SearchMeanings(), SweepSettingUses(), SweepModes());
+    for (SettingRow<SearchRequest>& row : t) {  // each mode has its own (SweepModeDefaults)
+      if (std::string(row.field) == "global_evaluations") row.default_shown = false;
+    }
+    return t;
+  }();
   return table;
 }
 

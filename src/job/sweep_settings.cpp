@@ -43,6 +43,12 @@ const std::vector<SettingUse>& SweepSettingUses() {
   return uses;
 }
 
+const ModeSet& SweepModes() {
+  static const ModeSet modes = {
+      "optimize", {"phi0", "forcing", "fourier", "reach"}, "no {optimize}"};
+  return modes;
+}
+
 namespace {
 
 // Puts the settings given into a mode's options (a setting given replaces the mode's default)

@@ -24,8 +24,10 @@ using testing::WellFormed;
 // search's tables.
 TEST(OptimizeTables, EachTableIsWellFormed) {
   EXPECT_TRUE(WellFormed(OptimizeProblemSettings(), {"bound", "harmonics"}));
-  EXPECT_TRUE(WellFormed(GaitBoundSettings()));
-  EXPECT_TRUE(WellFormed(SearchSettings()));
+  EXPECT_TRUE(WellFormed(GaitBoundMeanings()));
+  EXPECT_TRUE(WellFormed(SearchMeanings()));
+  EXPECT_TRUE(WellFormed(GaitBoundSettings(), {"problem"}));  // opened by the problems
+  EXPECT_TRUE(WellFormed(SearchSettings(), {"problem"}));
 }
 
 // The tables bound to the settings' values as the command binds them.

@@ -51,6 +51,10 @@ const SettingTable<OptimizeSettings>& OptimizeProblemSettings();
 /// The problems that use each setting ("": the main job); a setting not listed shapes every one.
 const std::vector<SettingUse>& OptimizeSettingUses();
 
+/// The problems as the helps name them: {problem} phase, forcing, fourier, reach, and the main
+/// job.
+const ModeSet& OptimizeModes();
+
 /// The problem `problem` in `names`: "--problem forcing", or the main job ("the main job (no
 /// --problem)") for "".
 std::string OptimizeProblemName(const std::string& problem, const SettingNames& names);

@@ -11,10 +11,16 @@
 
 namespace capsubot {
 
-/// bound, rho_max: the force bound (default: T0) and the largest spectral radius of the gait.
-const SettingTable<GaitRequirements>& GaitBoundSettings();
+/// bound, rho_max: the force bound (default: T0) and the largest spectral radius of the gait;
+/// their meanings alone, which each job opens with the modes that use them (WithModes).
+const SettingTable<GaitRequirements>& GaitBoundMeanings();
 
-/// max_time, harmonics, global_algorithm, local_algorithm, global_evaluations, hops.
+/// max_time, harmonics, global_algorithm, local_algorithm, global_evaluations, hops: their
+/// meanings alone, as GaitBoundMeanings.
+const SettingTable<SearchRequest>& SearchMeanings();
+
+/// The meanings as optimize offers them: opened by the problems that use each (OptimizeModes).
+const SettingTable<GaitRequirements>& GaitBoundSettings();
 const SettingTable<SearchRequest>& SearchSettings();
 
 }  // namespace capsubot

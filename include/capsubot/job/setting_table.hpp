@@ -13,6 +13,10 @@
 
 namespace capsubot {
 
+/// `text` kept as long as the program, for a row's help or a FlagNames entry, which point to
+/// their texts (safe to call from several threads).
+const char* KeptText(const std::string& text);
+
 /// One setting: the field of `Options` it sets and what it means.
 template <class Options>
 struct SettingRow {

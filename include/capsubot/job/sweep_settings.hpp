@@ -60,6 +60,10 @@ struct SweepSettings {
 /// the margins) shapes every mode.
 const std::vector<SettingUse>& SweepSettingUses();
 
+/// The modes as the helps name them: {optimize} phi0, forcing, fourier, reach, and the orbit of
+/// the force (no {optimize}).
+const ModeSet& SweepModes();
+
 /// The job `settings` ask for, validated (SweepJobOptions::Validate). Throws
 /// std::invalid_argument, in `names`, for an unknown mode, a value given both as a setting and
 /// by the grid, a pulse force, a bad grid of starts, a setting given to a mode that does not
