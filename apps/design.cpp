@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -58,10 +59,10 @@ const std::vector<SettingUse> kOutputUses = {{"json", {"", "from-rest", "drive"}
                                              {"shard", {"grid"}},
                                              {"resume", {"grid"}}};
 
-std::string RunOf(const DesignCliOptions& opt) {
-  if (!opt.drive.drive.empty()) return "drive";
-  if (!opt.grids.empty()) return "grid";
-  return opt.part_b ? "from-rest" : "";
+DesignRunChoice ChoiceOf(const DesignCliOptions& opt) {
+  const std::string& drive = opt.drive.drive;  // never empty when given (UseStrictValues)
+  return {drive.empty() ? std::nullopt : std::optional<std::string>(drive), !opt.grids.empty(),
+          opt.part_b};
 }
 
 // The options the run does not use: their defaults do not shape its output.
@@ -69,7 +70,7 @@ std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
   const SettingNames names{kDesignFlags};
   std::vector<std::string> unused;
   for (const auto* uses : {&DesignSettingUses(), &kOutputUses}) {
-    for (const std::string& field : UnusedSettings(*uses, RunOf(opt))) {
+    for (const std::string& field : UnusedSettings(*uses, ChoiceOf(opt).Run())) {
       unused.push_back(names.Name(field));
     }
   }
@@ -78,19 +79,9 @@ std::vector<std::string> UnusedOptionsOf(const DesignCliOptions& opt) {
 
 // An option the chosen run does not use would be silently ignored: refuse it, naming both.
 void RejectUnusedOptions(const DesignCliOptions& opt, const CLI::App& cmd) {
-  const std::string run = RunOf(opt);
   const SettingNames names{kDesignFlags};
-  if (!opt.drive.drive.empty()) RejectRunsWithDrive(opt.part_b, !opt.grids.empty(), names);
-  if (!opt.grids.empty() && opt.part_b) {
-    throw std::invalid_argument(
-        "--from-rest is invalid with --grid: expected one of them (a grid writes the "
-        "one-impact gait of each point to the CSV -o)");
-  }
   const auto run_name = [&names](const std::string& r) { return DesignRunName(r, names); };
-  const std::set<std::string> given = GivenFields(cmd, kDesignFlags);
-  RejectUnusedSettings(DesignSettingUses(), given, run, run_name, names, "is invalid with");
-  RejectUnusedSettings(kOutputUses, given, run, run_name, names, "is invalid with");
-  if (run == "drive") RejectUnusedDriveSettings(opt.drive.drive, given, names);
+  ChoiceOf(opt).RejectUnused(GivenFields(cmd, kDesignFlags), names, run_name, kOutputUses);
 }
 
 using Settings = DesignSettingTexts;

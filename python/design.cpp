@@ -139,14 +139,8 @@ std::set<std::string> GivenSettings(const FromRestArgs& r, const DriveArgs& d, b
 // A setting given to a run that does not use it is refused, as the command line refuses it
 // (DesignSettingUses, RejectUnusedDriveSettings), before the robot is read.
 void RejectUnusedArguments(const std::set<std::string>& given, const DriveArgs& d, bool from_rest) {
-  if (d.drive) {
-    DesignDriveFamily(*d.drive, kDesignDriveHarmonics, kDesignDrivePulseLevels, kDesignKeywords);
-    RejectRunsWithDrive(from_rest, false, kDesignKeywords);
-  }
-  const std::string run = d.drive ? "drive" : from_rest ? "from-rest" : "";
-  RejectUnusedSettings(DesignSettingUses(), given, run, DesignRunKeywords, kDesignKeywords,
-                       "is invalid with");
-  if (d.drive) RejectUnusedDriveSettings(*d.drive, given, kDesignKeywords);
+  const DesignRunChoice choice{d.drive, false, from_rest};
+  choice.RejectUnused(given, kDesignKeywords, DesignRunKeywords);
 }
 
 // Part (b) as the arguments give it.

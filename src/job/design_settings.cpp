@@ -60,6 +60,30 @@ void RejectRunsWithDrive(bool from_rest, bool grid, const SettingNames& names) {
       names.Name(from_rest ? "from_rest" : "grid"), names.Name("drive"), names.Name("drive")));
 }
 
+std::string DesignRunChoice::Run() const {
+  if (drive) return "drive";
+  if (grid) return "grid";
+  return from_rest ? "from-rest" : "";
+}
+
+void DesignRunChoice::RejectUnused(const std::set<std::string>& given, const SettingNames& names,
+                                   const ModeName& run_name,
+                                   const std::vector<SettingUse>& more) const {
+  if (drive) {
+    DesignDriveFamily(*drive, kDesignDriveHarmonics, kDesignDrivePulseLevels, names);
+    RejectRunsWithDrive(from_rest, grid, names);
+  }
+  if (grid && from_rest) {
+    throw std::invalid_argument(fmt::format(
+        "{} is invalid with {}: expected one of them (a grid writes the one-impact gait of each "
+        "point to its CSV file)",
+        names.Name("from_rest"), names.Name("grid")));
+  }
+  RejectUnusedSettings(DesignSettingUses(), given, Run(), run_name, names, "is invalid with");
+  RejectUnusedSettings(more, given, Run(), run_name, names, "is invalid with");
+  if (drive) RejectUnusedDriveSettings(*drive, given, names);
+}
+
 std::string DesignRunName(const std::string& run, const SettingNames& names) {
   if (run.empty()) {
     return fmt::format("one design ({}, {})", names.Absent("from_rest"), names.Absent("grid"));

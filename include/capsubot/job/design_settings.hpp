@@ -6,6 +6,7 @@
 // refuse a setting given to a run that does not use it (RejectUnusedSettings). The robot's
 // settings are the config stage's; the search's starts and budgets are the from-rest search's.
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -41,6 +42,23 @@ DriveFamily DesignDriveFamily(const std::string& drive, int harmonics, int pulse
 /// Refuses (std::invalid_argument, in `names`) the drive design asked together with the motion
 /// from rest (`from_rest`) or a grid (`grid`): it searches the force itself. Accepts neither.
 void RejectRunsWithDrive(bool from_rest, bool grid, const SettingNames& names);
+
+/// The runs of the design job a front end's settings select, and what each refuses.
+struct DesignRunChoice {
+  std::optional<std::string> drive;  ///< the drive design's waveform; none: no drive design
+  bool grid = false;                 ///< a design grid
+  bool from_rest = false;            ///< one design with the fastest motion from rest
+
+  /// "drive", "grid", "from-rest" or "" (one design).
+  std::string Run() const;
+  /// Refuses (std::invalid_argument, in `names`, the runs named by `run_name`) what the run
+  /// cannot take: a drive waveform of another name, the drive design with the motion from rest
+  /// or a grid, the motion from rest with a grid, a setting of `given` that the run does not use
+  /// (DesignSettingUses, then the front end's own `more`), a drive setting its waveform does not
+  /// use (RejectUnusedDriveSettings).
+  void RejectUnused(const std::set<std::string>& given, const SettingNames& names,
+                    const ModeName& run_name, const std::vector<SettingUse>& more = {}) const;
+};
 
 /// The run `run` in `names`: the setting that selects it ("--from-rest", "--grid", "--drive"),
 /// or for "" one design without them ("one design (no --from-rest, no --grid)").
