@@ -201,8 +201,10 @@ void AddOptimizeOptions(CLI::App* cmd, SweepCliOptions& opt) {
   AddSettings(*cmd, s.search.gait, SweepGaitSettings(), flags, {"bound"});
   AddSettings(*cmd, s.search, SweepSearchSettings(), flags, {"harmonics"});
   cmd->add_option("--starts", opt.starts,
-                  "with --optimize forcing|fourier|reach: local polishes of the multistart, >= 1 "
-                  "(default: 10 for forcing and reach's seed, 20 for fourier)");
+                  HelpIn(ModesOpening(SweepSettingUses(), "starts", SweepModes()) +
+                             "local polishes of the multistart, >= 1 (default: 10 for forcing "
+                             "and reach's seed, 20 for fourier)",
+                         flags));
   AddSettings(*cmd, s.search, SweepSearchSettings(), flags,
               {"hops", "global_algorithm", "local_algorithm", "global_evaluations"});
   AddSettings(*cmd, s, SweepModeSettings(), flags, {"alpha"});

@@ -14,24 +14,23 @@ const SettingTable<SweepSettings>& SweepModeSettings() {
   using S = SweepSettings;
   // The help that states the rule's bounds (PhaseOptions).
   static const std::string scan_points = fmt::format(
-      "with {{optimize}} phi0: points of the optimiser's initial scan of phi0, {} to {}",
-      kMinScanPoints, kMaxScanPoints);
-  static const SettingTable<SweepSettings> table = {
-      {"stability", &S::stability,
-       "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
-       "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss (fold, flip "
-       "or torus when unstable)"},
-      {"optimize", &S::optimize,
-       "the best gait at every point: phi0 (P1: the impact phase for the given force shape; "
-       "adds column phi0), forcing (P2: A, c, phi0 with A + c <= {bound}; adds A, c, phi0), "
-       "fourier (P3: a {harmonics} K force with max |F| <= {bound}; adds c, a1..aK, b1..bK) or "
-       "reach (the fastest motion from rest, as `optimize --problem reach`: A, c, phi0, alpha, "
-       "mean_velocity, ..., the robust seed's seed_v_mean and seed_mean_velocity_from_rest; "
-       "seconds per point); adds a status column"},
-      {"scan_points", &S::scan_points, scan_points.c_str()},
-      {"alpha", &S::alpha,
-       "with {optimize} reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised "
-       "too)"}};
+      "points of the optimiser's initial scan of phi0, {} to {}", kMinScanPoints, kMaxScanPoints);
+  // Each help opens with the modes that use its setting (WithModes).
+  static const SettingTable<SweepSettings> table = WithModes<SweepSettings>(
+      {{"stability", &S::stability,
+        "add the columns spectral_radius (of the impact map, docs/model.md section 8), "
+        "lambda_re, lambda_im (its largest multiplier), stable (1 when < 1) and loss (fold, flip "
+        "or torus when unstable)"},
+       {"optimize", &S::optimize,
+        "the best gait at every point: phi0 (P1: the impact phase for the given force shape; "
+        "adds column phi0), forcing (P2: A, c, phi0 with A + c <= {bound}; adds A, c, phi0), "
+        "fourier (P3: a {harmonics} K force with max |F| <= {bound}; adds c, a1..aK, b1..bK) or "
+        "reach (the fastest motion from rest, as `optimize --problem reach`: A, c, phi0, alpha, "
+        "mean_velocity, ..., the robust seed's seed_v_mean and seed_mean_velocity_from_rest; "
+        "seconds per point); adds a status column"},
+       {"scan_points", &S::scan_points, scan_points.c_str()},
+       {"alpha", &S::alpha, "a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)"}},
+      SweepSettingUses(), SweepModes());
   return table;
 }
 
