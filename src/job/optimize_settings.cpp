@@ -13,24 +13,23 @@ namespace capsubot {
 
 const SettingTable<OptimizeSettings>& OptimizeProblemSettings() {
   using O = OptimizeSettings;
-  static const SettingTable<OptimizeSettings> table = {
-      {"problem", &O::problem,
-       "phase (P1: best phi0 for given {A}, {c}), forcing (P2: best A, c, phi0 with A + c <= "
-       "{bound}), fourier (P3: best K-harmonic force with max |F| <= {bound}) or reach (the "
-       "fastest motion from rest: A, c, alpha with A + c <= {bound}, simulated, seeded with the "
-       "robust P2 gait); P1, P2 and P3 name the first three; default: the main job"},
-      {"A", &O::A,
-       "amplitude A >= 0 of F = A sin(phi + phi0) + c for {problem} phase, in units of (m1+m2) "
-       "omega^2 L"},
-      {"c", &O::c, "mean force c > 0 of F for {problem} phase (same unit)"},
-      {"alpha", &O::alpha,
-       "reach: a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)"},
-      {"waveform", &O::waveform,
-       "reach: the drives searched: sine (A sin(phi + phi0) + c, the default), fourier "
-       "({harmonics} K, the default when {harmonics} is given) or pulse ({pulse_levels} N "
-       "constant levels between switching phases), all with max |F| <= {bound}"},
-      {"pulse_levels", &O::pulse_levels,
-       "reach {waveform} pulse: the number N of levels, 2 <= N <= 16"}};
+  // Each help opens with the problems that use its setting (WithModes).
+  static const SettingTable<OptimizeSettings> table = WithModes<OptimizeSettings>(
+      {{"problem", &O::problem,
+        "phase (P1: best phi0 for given {A}, {c}), forcing (P2: best A, c, phi0 with A + c <= "
+        "{bound}), fourier (P3: best K-harmonic force with max |F| <= {bound}) or reach (the "
+        "fastest motion from rest: A, c, alpha with A + c <= {bound}, simulated, seeded with the "
+        "robust P2 gait); P1, P2 and P3 name the first three; default: the main job"},
+       {"A", &O::A, "amplitude A >= 0 of F = A sin(phi + phi0) + c, in units of (m1+m2) omega^2 L"},
+       {"c", &O::c, "mean force c > 0 of F (same unit)"},
+       {"alpha", &O::alpha, "a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)"},
+       {"waveform", &O::waveform,
+        "the drives searched: sine (A sin(phi + phi0) + c, the default), fourier ({harmonics} K, "
+        "the default when {harmonics} is given) or pulse ({pulse_levels} N constant levels "
+        "between switching phases), all with max |F| <= {bound}"},
+       {"pulse_levels", &O::pulse_levels,
+        "the number N of levels of the {waveform} pulse, 2 <= N <= 16"}},
+      OptimizeSettingUses(), OptimizeModes());
   return table;
 }
 
