@@ -17,7 +17,7 @@ namespace capsubot::app {
 void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   AddForcingOptions(cmd, o.forcing);
   AddParamsOptions(cmd, o.model.params);
-  AddSettings(cmd, o.model, RobotSettings(), {{"alpha", "--alpha"}});
+  AddSettings(cmd, o.model, MassRatioSettings(), {{"alpha", "--alpha"}});
   cmd.get_option("--alpha")->required();
   if (!with_motion) return;
   AddSettings(cmd, o.motion, MotionSettings(), MotionFlagNames());

@@ -54,7 +54,7 @@ Command AddOrbitsCommand(CLI::App& app) {
       "its validity, mean velocity and stability.");
   AddForcingOptions(*cmd, opt->forcing, false);
   AddParamsOptions(*cmd, opt->job.robot.params, &opt->job.margins);
-  AddSettings(*cmd, opt->job.robot, RobotSettings(), kOrbitsFlags);
+  AddSettings(*cmd, opt->job.robot, MassRatioSettings(), kOrbitsFlags);
   AddSettings(*cmd, opt->job, OrbitsSettings(), kOrbitsFlags);
   cmd->get_option("--alpha")->required();
   opt->output.Add(*cmd,

@@ -22,14 +22,10 @@ inline const FlagNames kSweepFlags = DashedFlags(
 
 /// The fields the messages of the lower stages are rewritten with: the table but for the
 /// settings those messages name by a description ("friction bound T0 = 0 is invalid: ...") or
-/// never name, and the gait's force bound ("force_bound = 2 is invalid: ...") set by --bound.
-inline const FlagNames kSweepRenamedFields = [] {
-  FlagNames names =
-      Without(kSweepFlags, {"waveform", "levels", "switches", "T0", "e", "margin", "margin_stroke",
-                            "stick_margin", "stability", "stable_only", "bound", "from_rest_starts",
-                            "reach_starts", "reach_evaluations", "reach_local_evaluations"});
-  names.emplace_back("force_bound", "--bound");
-  return names;
-}();
+/// never name. The gait's force_bound keeps its field: a grid axis may set it as well as --bound.
+inline const FlagNames kSweepRenamedFields =
+    Without(kSweepFlags, {"waveform", "levels", "switches", "T0", "e", "margin", "margin_stroke",
+                          "stick_margin", "stability", "stable_only", "bound", "from_rest_starts",
+                          "reach_starts", "reach_evaluations", "reach_local_evaluations"});
 
 }  // namespace capsubot::app

@@ -7,9 +7,9 @@
 namespace capsubot::python {
 
 /// The keyword of each field whose keyword is not the field's own name (the reach search's
-/// budgets, named by their place in the job's options; the gait's force_bound, set by bound).
+/// budgets, named by their place in the job's options). The gait's force_bound keeps its field:
+/// a grid axis may set it as well as bound.
 inline const FlagNames kSweepKeywords = {{"reach.global_evaluations", "reach_evaluations"},
-                                         {"reach.local_evaluations", "reach_local_evaluations"},
-                                         {"force_bound", "bound"}};
+                                         {"reach.local_evaluations", "reach_local_evaluations"}};
 
 }  // namespace capsubot::python

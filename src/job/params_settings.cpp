@@ -9,7 +9,7 @@ const SettingTable<Params>& ParamsSettings() {
   return table;
 }
 
-const SettingTable<RobotModel>& RobotSettings() {
+const SettingTable<RobotModel>& MassRatioSettings() {
   static const SettingTable<RobotModel> table = {
       {"alpha", &RobotModel::alpha, "mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1"}};
   return table;

@@ -42,9 +42,13 @@ const SettingTable<GaitRequirements>& SweepGaitSettings() {
 
 const SettingTable<SearchRequest>& SweepSearchSettings() {
   static const SettingTable<SearchRequest> table = [] {
-    SettingTable<SearchRequest> t = WithModes(SearchMeanings(), SweepSettingUses(), SweepModes());
-    for (SettingRow<SearchRequest>& row : t) {  // each mode has its own (SweepModeDefaults)
+    SettingTable<SearchRequest> t;
+    for (SettingRow<SearchRequest> row :
+         WithModes(SearchMeanings(), SweepSettingUses(), SweepModes())) {
+      if (std::string(row.field) == "max_time") continue;  // a sweep runs no clock
+      // Each mode has its own default of the budget (SweepModeDefaults).
       if (std::string(row.field) == "global_evaluations") row.default_shown = false;
+      t.push_back(row);
     }
     return t;
   }();

@@ -26,7 +26,7 @@ void GaitRequirements::Validate() const {
   margins.Validate();
   if (!(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0))) {
     throw std::invalid_argument(fmt::format(
-        "force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)", force_bound));
+        "force_bound = {} is invalid: expected a finite bound > 0 (not given: T0)", force_bound));
   }
   if (!(rho_max > 0.0)) {
     throw std::invalid_argument(fmt::format(

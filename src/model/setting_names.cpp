@@ -56,7 +56,11 @@ std::string RuleWithFlagNames(std::string message, const FlagNames& names) {
     const std::string field = std::string(name) + " = ";
     for (std::size_t at = message.find(field, 1); at != std::string::npos;
          at = message.find(field, at + 1)) {
-      if (NamePart(message[at - 1]) || message[at - 1] == '-' || Operand(message, at)) continue;
+      // Not a part of a longer name, a flag or a member path ("seeds[0].alpha").
+      if (NamePart(message[at - 1]) || message[at - 1] == '-' || message[at - 1] == '.' ||
+          Operand(message, at)) {
+        continue;
+      }
       message.replace(at, std::strlen(name), flag);
       at += std::strlen(flag);
     }

@@ -455,7 +455,7 @@ ReachOptions::ReachOptions() = default;
 
 void ReachOptions::Validate() const {
   Require(std::isnan(force_bound) || (std::isfinite(force_bound) && force_bound > 0.0),
-          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (or NaN for T0)",
+          fmt::format("force_bound = {} is invalid: expected a finite bound > 0 (not given: T0)",
                       force_bound));
   Require(std::isnan(alpha) || (alpha > 0.0 && alpha < 1.0),
           fmt::format("alpha = {} is invalid: expected 0 < alpha < 1 (not given: free)", alpha));

@@ -261,7 +261,7 @@ INSTANTIATE_TEST_SUITE_P(
                    "--A is invalid with --optimize forcing: expected it only with no --optimize, "
                    "--optimize phi0"},
         BadCommand{"--grid T0=0.1,0.2 --optimize forcing --bound 0.15",
-                   "--bound = 0.15 is invalid"},
+                   "force_bound = 0.15 is invalid"},
         BadCommand{"--grid phi0=0:1:3 --A 0.5 --c 0.5 --grid e=0.5:1:1000000 --grid "
                    "margin=0:0.1:1001",
                    "--grid phi0=0:1:3 e=0.5:1:1000000 margin=0:0.1:1001 is invalid: more than "

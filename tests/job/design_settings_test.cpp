@@ -1,6 +1,7 @@
-// The table of the drive design's settings (capsubot/job/design_settings.hpp): one
-// option per row, helps naming the drive's settings and the robot's ranges, and the limits
-// written in the helps are those of the drive's waveform.
+// The design job's settings (capsubot/job/design_settings.hpp): the table of the drive design's
+// settings (one option per row, helps naming the drive's settings and the robot's ranges, the
+// limits in the helps those of the drive's waveform), and the runs the settings select with what
+// each refuses (DesignRunChoice).
 
 #include "capsubot/job/design_settings.hpp"
 

@@ -20,16 +20,16 @@ using testing::WellFormed;
 TEST(ParamsSettings, EachParameterAndMarginHasARowOfItsOwn) {
   EXPECT_TRUE(WellFormed(ParamsSettings()));
   EXPECT_TRUE(WellFormed(MarginsSettings()));
-  EXPECT_TRUE(WellFormed(RobotSettings()));
+  EXPECT_TRUE(WellFormed(MassRatioSettings()));
 }
 
 // The mass ratio has no default: every command on a given robot asks for it.
 TEST(ParamsSettings, TheMassRatioIsTheRobotsAndHasNoDefault) {
-  ASSERT_EQ(RobotSettings().size(), 1u);
-  EXPECT_STREQ(RobotSettings().front().field, "alpha");
+  ASSERT_EQ(MassRatioSettings().size(), 1u);
+  EXPECT_STREQ(MassRatioSettings().front().field, "alpha");
   RobotModel robot;
   robot.alpha = 0.25;
-  const auto* member = std::get_if<double RobotModel::*>(&RobotSettings().front().member);
+  const auto* member = std::get_if<double RobotModel::*>(&MassRatioSettings().front().member);
   ASSERT_NE(member, nullptr);
   EXPECT_EQ(robot.*(*member), 0.25);
   EXPECT_TRUE(std::isnan(RobotModel{}.alpha));

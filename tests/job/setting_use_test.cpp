@@ -47,27 +47,61 @@ TEST(SettingUse, AHelpOpensWithTheRunsThatUseTheSetting) {
 }
 
 // The helps of the search's settings in optimize and sweep say the modes their rules let use
-// them: the same meaning, opened by each job's own table of uses.
+// them: each help is its meaning after an opening read here on its own terms ("with {field}
+// a|b: ", "with <main job> or {field} a|b: ", "with {field}: ", or none) and compared with the
+// job's table of uses.
 template <class Options>
 void ExpectOpenedByTheirUses(const SettingTable<Options>& table,
                              const SettingTable<Options>& meanings,
                              const std::vector<SettingUse>& uses, const ModeSet& modes) {
-  ASSERT_EQ(table.size(), meanings.size());
-  for (std::size_t k = 0; k < table.size(); ++k) {
-    const std::string help = table[k].help;
-    const std::string opening = ModesOpening(uses, table[k].field, modes);
-    EXPECT_EQ(help, opening + meanings[k].help) << table[k].field;
-    for (const std::string& mode : modes.modes) {
-      const bool named = opening.find(mode) != std::string::npos;
-      bool used = true;
-      for (const SettingUse& use : uses) {
-        if (use.setting == table[k].field) used = use.UsedBy(mode);
-      }
-      // A help that names some modes names exactly those that use the setting.
-      if (opening.find('|') != std::string::npos || opening.find("} ") != std::string::npos) {
-        EXPECT_EQ(named, used) << table[k].field << " " << mode;
-      }
+  ASSERT_FALSE(table.empty());
+  const std::string field = "{" + std::string(modes.field) + "}";
+  for (const SettingRow<Options>& row : table) {
+    const SettingRow<Options>* meaning = nullptr;
+    for (const SettingRow<Options>& m : meanings) {
+      if (std::string(m.field) == row.field) meaning = &m;
     }
+    ASSERT_NE(meaning, nullptr) << row.field;
+    const std::string help = row.help;
+    const std::string text = meaning->help;
+    ASSERT_GE(help.size(), text.size()) << row.field;
+    ASSERT_EQ(help.substr(help.size() - text.size()), text) << row.field;
+    const std::string opening = help.substr(0, help.size() - text.size());
+    // The runs the opening names: the main job, and the modes after the mode's field.
+    const bool main_job = opening.find(modes.main_job) != std::string::npos;
+    std::vector<std::string> named;
+    const std::size_t list = opening.rfind(field + " ");  // after "no {optimize} or"
+    if (list != std::string::npos) {
+      const std::size_t begin = list + field.size() + 1;
+      std::string rest = opening.substr(begin, opening.find(": ", begin) - begin);
+      for (std::size_t bar = rest.find('|'); bar != std::string::npos; bar = rest.find('|')) {
+        named.push_back(rest.substr(0, bar));
+        rest.erase(0, bar + 1);
+      }
+      named.push_back(rest);
+    } else if (opening.find(field + ": ") != std::string::npos) {
+      named = modes.modes;  // every mode
+    }
+    const SettingUse* use = nullptr;
+    for (const SettingUse& u : uses) {
+      if (u.setting == row.field) use = &u;
+    }
+    std::vector<std::string> used = modes.modes;  // not listed: every run
+    bool main_used = true;
+    if (use != nullptr) {
+      used.clear();
+      for (const std::string& m : modes.modes) {
+        if (use->UsedBy(m)) used.push_back(m);
+      }
+      main_used = use->UsedBy("");
+    }
+    if (opening.empty()) {  // every run uses it
+      EXPECT_TRUE(main_used && used == modes.modes) << row.field;
+      continue;
+    }
+    EXPECT_EQ(opening.rfind("with ", 0), 0u) << row.field;
+    EXPECT_EQ(named, used) << row.field;
+    EXPECT_EQ(main_job, main_used) << row.field;
   }
 }
 

@@ -329,7 +329,7 @@ TEST(OptimizeForcing, BadOptionsAreRejectedWithTheRule) {
   ForcingDesignOptions negative;
   negative.gait.force_bound = -1.0;
   EXPECT_EQ(ErrorOf(Params{}, negative),
-            "force_bound = -1 is invalid: expected a finite bound > 0 (or NaN for T0)");
+            "force_bound = -1 is invalid: expected a finite bound > 0 (not given: T0)");
   ForcingDesignOptions above;  // bound above T0: inverted relative to the friction bound
   above.gait.force_bound = 2.0;
   EXPECT_EQ(ErrorOf(Params{}, above),

@@ -44,7 +44,7 @@ TEST(GaitRequirements, ValidateNamesTheBadFieldItsValueAndTheRule) {
   EXPECT_NO_THROW(gait.Validate());
   gait.force_bound = -1.0;
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.Validate(); }),
-            "force_bound = -1 is invalid: expected a finite bound > 0 (or NaN for T0)");
+            "force_bound = -1 is invalid: expected a finite bound > 0 (not given: T0)");
   gait.force_bound = 1.0;
   gait.rho_max = 0.0;
   EXPECT_EQ(testing::InvalidArgumentMessage([&] { gait.Validate(); }),

@@ -1,11 +1,10 @@
 #pragma once
 // The settings of a continuation (ContinueJobOptions, docs/continuation.md) as `capsubot
 // continue` offers them: the parameter and its range, the two-parameter curve's second
-// parameter, the arclength steps and the shooting's settings along the branch. The choices of
+// parameter and the arclength steps (the shooting's are ShootingSettings). The choices of
 // where the branch starts, where it is switched and which special point is followed are read as
 // text by the front end (from_orbit, switch, follow).
 
-#include "capsubot/attract/periodic.hpp"
 #include "capsubot/continue/continuation.hpp"
 #include "capsubot/job/continue_job.hpp"
 #include "capsubot/job/setting_table.hpp"

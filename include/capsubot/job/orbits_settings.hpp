@@ -6,7 +6,8 @@
 
 namespace capsubot {
 
-/// alpha, max_evaluations: their meaning and rules (the force and model are the robot's).
+/// max_evaluations: its meaning and rule (the force, T0, e and alpha are the robot's:
+/// MassRatioSettings, params_settings.hpp).
 const SettingTable<OrbitsJobOptions>& OrbitsSettings();
 
 }  // namespace capsubot

@@ -13,7 +13,7 @@ namespace capsubot {
 const SettingTable<Params>& ParamsSettings();
 
 /// The robot's mass ratio alpha (its force and Params have their own tables).
-const SettingTable<RobotModel>& RobotSettings();
+const SettingTable<RobotModel>& MassRatioSettings();
 
 /// The clearance d, the clearance relative to the stroke d_s and the stick margin s.
 const SettingTable<Margins>& MarginsSettings();

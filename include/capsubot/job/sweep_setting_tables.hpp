@@ -17,11 +17,13 @@ namespace capsubot {
 /// the reach search's fixed mass ratio.
 const SettingTable<SweepSettings>& SweepModeSettings();
 
-/// rho_max, bound: the gait the modes that optimise look for (SweepSettings::search.gait).
+/// bound, rho_max: the gait the modes that optimise look for (SweepSettings::search.gait), the
+/// meanings of GaitBoundMeanings opened by the modes that use them.
 const SettingTable<GaitRequirements>& SweepGaitSettings();
 
-/// harmonics, hops, global_algorithm, local_algorithm, global_evaluations: the search of P2, P3
-/// and of the reach search's seed (SweepSettings::search).
+/// harmonics, global_algorithm, local_algorithm, global_evaluations, hops: the search of P2, P3
+/// and of the reach search's seed (SweepSettings::search), the meanings of SearchMeanings opened
+/// by the modes that use them (not max_time: a sweep runs no clock).
 const SettingTable<SearchRequest>& SweepSearchSettings();
 
 /// output, resume, checkpoint_seconds: the CSV file (SweepSettings::file).
