@@ -106,71 +106,47 @@ void NotePhaseInRadians(const std::string& name, const std::string& text, double
              value / kTau);
 }
 
+const FlagNames& ForceFlags() {
+  static const FlagNames flags = DashedFlags("A c phi0 sin cos waveform levels switches");
+  return flags;
+}
+
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
-  o.A_option = cmd.add_option("--A", o.A,
-                              "amplitude A >= 0 of the force F = A sin(phi + phi0) + c, in units "
-                              "of (m1+m2) omega^2 L (required unless --sin/--cos are given)");
-  o.c_option = cmd.add_option(
-      "--c", o.c,
-      "mean force c of F (same unit; required except with --waveform pulse); a directed orbit "
-      "needs c > 0");
-  if (with_phase) {
-    o.phi0_option = cmd.add_option(
-        "--phi0", o.phi0,
-        "motor phase phi0 [rad] at the impact: F(phi) = A sin(phi + phi0) + c with phi = 0 at "
-        "the impact (required for the harmonic force; default 0 for a Fourier force); a "
-        "number or a multiple of pi (pi, -pi/2, 2*pi)");
-    o.phi0_option->type_name(kPhase);
-  }
-  o.fourier_option =
-      cmd.add_option("--sin", o.sin_text,
-                     "Fourier force instead of A: sine coefficients b_1,...,b_K of "
-                     "F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)), comma separated")
-          ->type_name("b1,b2,...")
-          ->excludes(o.A_option);
-  cmd.add_option("--cos", o.cos_text,
-                 "cosine coefficients a_1,...,a_K of the Fourier force (as many as --sin; "
-                 "default all 0)")
-      ->type_name("a1,a2,...")
-      ->needs(o.fourier_option);
-  cmd.add_option("--waveform", o.waveform,
-                 "the force's kind: sine (--A, --c, --phi0), fourier (--sin, --cos, --c) or pulse "
-                 "(--levels, --switches); default: the kind of the parts given")
-      ->check(CLI::IsMember({"sine", "fourier", "pulse"}));
-  cmd.add_option("--levels", o.levels_text,
-                 "pulse force: levels L_1,...,L_N (1 <= N <= 16) of G(s) = L_j for s in "
-                 "[s_j, s_j+1), F(phi) = G(phi + phi0), comma separated")
-      ->type_name("L1,L2,...");
-  cmd.add_option("--switches", o.switches_text,
-                 "pulse force: switching phases s_1 < ... < s_N in [0, 2 pi) [rad] of the motor "
-                 "phase, one per level, comma separated (multiples of pi as pi/2, 3*pi/2)")
-      ->type_name("s1,s2,...");
+  std::vector<std::string> fields = {"A",   "c",        "phi0",   "sin",
+                                     "cos", "waveform", "levels", "switches"};
+  if (!with_phase) fields.erase(fields.begin() + 2);
+  AddSettings(cmd, o.parts, ForceSettings(), ForceFlags(), fields);
+  o.A_option = cmd.get_option("--A");
+  o.c_option = cmd.get_option("--c");
+  if (with_phase) o.phi0_option = cmd.get_option("--phi0")->type_name(kPhase);
+  o.fourier_option = cmd.get_option("--sin")->excludes(o.A_option);
+  cmd.get_option("--cos")->needs(o.fourier_option);
+  cmd.get_option("--waveform")->check(CLI::IsMember({"sine", "fourier", "pulse"}));
 }
 
 std::vector<double> ForcingOptions::Sines() const {
-  return sin_text.empty() ? std::vector<double>() : ParseCoefficients("--sin", sin_text);
+  return parts.sin.empty() ? std::vector<double>() : ParseCoefficients("--sin", parts.sin);
 }
 
 std::vector<double> ForcingOptions::Cosines() const {
-  return cos_text.empty() ? std::vector<double>() : ParseCoefficients("--cos", cos_text);
+  return parts.cos.empty() ? std::vector<double>() : ParseCoefficients("--cos", parts.cos);
 }
 
 Forcing ForcingOptions::Build(bool need_phase) const {
   ForceSpec spec;
-  if (A_option->count() > 0) spec.A = A;
-  if (c_option->count() > 0) spec.c = c;
-  if (!waveform.empty()) spec.waveform = waveform;
-  if (!levels_text.empty()) spec.levels = ParseCoefficients("--levels", levels_text);
-  if (!switches_text.empty()) {
-    spec.switches = ParseCoefficients("--switches", switches_text, true);
+  if (A_option->count() > 0) spec.A = parts.A;
+  if (c_option->count() > 0) spec.c = parts.c;
+  if (!parts.waveform.empty()) spec.waveform = parts.waveform;
+  if (!parts.levels.empty()) spec.levels = ParseCoefficients("--levels", parts.levels);
+  if (!parts.switches.empty()) {
+    spec.switches = ParseCoefficients("--switches", parts.switches, true);
   }
-  if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = phi0;
+  if (phi0_option != nullptr && phi0_option->count() > 0) spec.phi0 = parts.phi0;
   if (fourier_option->count() > 0) {
     spec.sin = Sines();
-    if (!cos_text.empty()) spec.cos = Cosines();
+    if (!parts.cos.empty()) spec.cos = Cosines();
   }
-  static const FlagNames kForceFlags = DashedFlags("A c phi0 sin cos waveform levels switches");
-  return spec.Build(need_phase, kForceFlags);
+  return spec.Build(need_phase, ForceFlags());
 }
 
 void AddParamsOptions(CLI::App& cmd, Params& p, Margins* margins) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "capsubot/job/force_settings.hpp"
 #include "capsubot/model/forcing.hpp"
 #include "capsubot/model/gait_requirements.hpp"
 #include "capsubot/model/limits.hpp"
@@ -30,12 +31,7 @@ struct Command {
 
 /// The force: the paper's A sin(phi + phi0) + c, or a Fourier series c + sum (a_k cos + b_k sin).
 struct ForcingOptions {
-  double A = kNaN;
-  double c = kNaN;
-  double phi0 = kNaN;
-  std::string cos_text, sin_text;          ///< --cos, --sin as given: "a1,a2,..." (parsed by Build)
-  std::string waveform;                    ///< --waveform: sine, fourier or pulse
-  std::string levels_text, switches_text;  ///< --levels, --switches as given
+  ForceText parts;  ///< the parts as given, the comma lists as text (parsed by Build)
   CLI::Option* A_option = nullptr;
   CLI::Option* c_option = nullptr;
   CLI::Option* phi0_option = nullptr;
@@ -51,7 +47,11 @@ struct ForcingOptions {
   Forcing Build(bool need_phase = true) const;
 };
 
-/// Adds --A, --c, --phi0, --cos, --sin, --waveform, --levels, --switches to `cmd`.
+/// The flags of the force's parts (ForceText's fields).
+const FlagNames& ForceFlags();
+
+/// Adds --A, --c, --phi0 (with `with_phase`), --sin, --cos, --waveform, --levels, --switches
+/// to `cmd`, from the library's table (ForceSettings).
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& options, bool with_phase = true);
 
 /// Adds --T0, --e and (given `margins`) the margins --margin, --margin-stroke, --stick-margin to

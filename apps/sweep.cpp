@@ -58,10 +58,10 @@ SweepSettings SettingsOf(const SweepCliOptions& opt, const CLI::App& cmd) {
       NotePhaseInRadians("--grid phi0", FormatNumber(far), far);
     }
   }
-  s.A = opt.forcing.A;
-  s.c = opt.forcing.c;
-  s.phi0 = opt.forcing.phi0;
-  s.waveform = opt.forcing.waveform;
+  s.A = opt.forcing.parts.A;
+  s.c = opt.forcing.parts.c;
+  s.phi0 = opt.forcing.parts.phi0;
+  s.waveform = opt.forcing.parts.waveform;
   if (s.Given("sin")) s.sin = opt.forcing.Sines();
   if (s.Given("cos")) s.cos = opt.forcing.Cosines();
   if (s.Given("starts")) s.search.starts = opt.starts;
