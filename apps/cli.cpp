@@ -122,6 +122,11 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
   o.fourier_option = cmd.get_option("--sin")->excludes(o.A_option);
   cmd.get_option("--cos")->needs(o.fourier_option);
   cmd.get_option("--waveform")->check(CLI::IsMember({"sine", "fourier", "pulse"}));
+  for (const auto& [flag, list] :
+       {std::pair("--sin", "b1,b2,..."), std::pair("--cos", "a1,a2,..."),
+        std::pair("--levels", "L1,L2,..."), std::pair("--switches", "s1,s2,...")}) {
+    cmd.get_option(flag)->type_name(list);  // the comma lists, as typed
+  }
 }
 
 std::vector<double> ForcingOptions::Sines() const {
