@@ -23,7 +23,6 @@ namespace capsubot {
 inline constexpr std::int64_t kMaxOverValues = 100000;
 
 struct BifurcationOptions {
-
   /// The parameter stepped: a robot parameter (IsRobotParameter; A needs the harmonic force).
   ModelParameter param = ModelParameter::kT0;
   /// k of a_k (kCos) or b_k (kSin): 1 <= k <= the force's harmonics K; 0 for the others.

@@ -53,7 +53,6 @@ struct MotorForce {
 
 /// A physical robot and what may be chosen: SI units throughout.
 struct DesignInput {
-
   /// Shell mass [kg], > 0; with the default inner-mass range, small enough that 10 m1 is finite.
   double m1 = kNaN;
   double L = kNaN;   ///< free gap of the inner body between the walls [m], > 0
@@ -121,7 +120,6 @@ const char* GaitStatusName(GaitStatus status);
 
 /// A gait in the user's units, with the dimensionless orbit it comes from.
 struct Gait {
-
   GaitStatus status = GaitStatus::kNotRun;
   double m2_kg = kNaN;         ///< inner mass [kg]
   double frequency_hz = kNaN;  ///< motor frequency [Hz]

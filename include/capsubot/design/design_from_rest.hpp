@@ -81,7 +81,6 @@ const char* FromRestStatusName(FromRestStatus status);
 /// each attractor's budget per forcing period (Simulate with SimOptions::energy over whole
 /// periods of the attractor), weighted by the fraction of starts that reach it.
 struct FromRestBest {
-
   Direction direction = Direction::kForward;
   FromRestStatus status = FromRestStatus::kNotRun;
   double m2_kg = kNaN;         ///< inner mass [kg]

@@ -17,7 +17,6 @@
 namespace capsubot {
 
 struct Stability {
-
   bool computed = false;  ///< false: not computed (orbit did not exist)
   /// Jacobian d(theta', u')/d(theta, u) of the impact map at the fixed point; rows and
   /// columns ordered (theta, u).

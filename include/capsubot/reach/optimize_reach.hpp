@@ -51,7 +51,6 @@ struct DriveSeed {
 };
 
 struct ReachOptions {
-
   /// The forces searched: the sine A sin(phi + phi0) + c (today's problem) or a Fourier series
   /// of K harmonics (drive_family.hpp).
   DriveFamily drive;
@@ -140,7 +139,6 @@ struct ReachOptions {
 /// The mean velocity of the winner re-simulated with other numerical settings (full from-rest
 /// settings); NaN when not computed or when a start ended in event_limit there.
 struct ReachSpread {
-
   double chatter_small = kNaN;  ///< chatter_velocity / 100
   double chatter_large = kNaN;  ///< chatter_velocity * 100
   double e_0999 = kNaN;         ///< restitution 0.999 (computed only when e = 1)
@@ -157,7 +155,6 @@ struct ReachSeed {
 };
 
 struct ReachResult {
-
   /// kOk (search converged or used its budget), kMaxTime (the wall-clock limit stopped the
   /// search; the best point is kept; when it came before the search evaluated anything, the
   /// winner is the best starting drive and the message says so), kNoValidOrbit (every
