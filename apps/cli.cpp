@@ -107,14 +107,15 @@ void NotePhaseInRadians(const std::string& name, const std::string& text, double
 }
 
 const FlagNames& ForceFlags() {
-  static const FlagNames flags = DashedFlags("A c phi0 sin cos waveform levels switches");
+  static const FlagNames flags = WithDashedFlags({}, ForceSettings());
   return flags;
 }
 
 void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
-  std::vector<std::string> fields = {"A",   "c",        "phi0",   "sin",
-                                     "cos", "waveform", "levels", "switches"};
-  if (!with_phase) fields.erase(fields.begin() + 2);
+  std::vector<std::string> fields;  // the table's parts, in its order
+  for (const SettingRow<ForceText>& row : ForceSettings()) {
+    if (with_phase || std::string(row.field) != "phi0") fields.emplace_back(row.field);
+  }
   AddSettings(cmd, o.parts, ForceSettings(), ForceFlags(), fields);
   o.A_option = cmd.get_option("--A");
   o.c_option = cmd.get_option("--c");
