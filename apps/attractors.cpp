@@ -4,17 +4,18 @@
 #include <memory>
 #include <stdexcept>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/shard_option.hpp"
+#include "capsubot/cli/start_shard.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/attractors_text.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "start_shard.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 int Run(const MapCommandOptions& opt, const CLI::App& cmd) {
@@ -64,4 +65,4 @@ Command AddAttractorsCommand(CLI::App& app) {
   return MapCommand(cmd, [opt, cmd] { return Run(*opt, *cmd); });
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

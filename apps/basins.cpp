@@ -7,21 +7,21 @@
 #include <stdexcept>
 #include <string>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/gnuplot.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/start_shard.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/basins_job.hpp"
 #include "capsubot/job/basins_settings.hpp"
 #include "capsubot/report/attractors_json.hpp"
 #include "capsubot/report/basins_text.hpp"
 #include "commands.hpp"
-#include "gnuplot.hpp"
-#include "help_format.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
-#include "start_shard.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct BasinsCommandOptions {
@@ -86,4 +86,4 @@ Command AddBasinsCommand(CLI::App& app) {
   return MapCommand(cmd, [opt, cmd] { return Run(*opt, *cmd); });
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -10,19 +10,20 @@
 #include <string>
 #include <tuple>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/shard_option.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/job/bifurcation_job.hpp"
 #include "capsubot/job/bifurcation_settings.hpp"
 #include "capsubot/report/bifurcation_text.hpp"
 #include "capsubot/sweep/grid.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct BifurcationCommandOptions {
@@ -170,4 +171,4 @@ Command AddBifurcationCommand(CLI::App& app) {
       [] { return true; }};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -1,9 +1,9 @@
 #pragma once
 // The subcommands of `capsubot`, one file each.
 
-#include "cli.hpp"
+#include "capsubot/cli/command.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 Command AddSolveCommand(CLI::App& app);
 Command AddSimulateCommand(CLI::App& app);
@@ -20,4 +20,4 @@ Command AddContinueCommand(CLI::App& app);
 /// `capsubot completion bash`: the completion script of every command of `app` (add it last).
 Command AddCompletionCommand(CLI::App& app);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

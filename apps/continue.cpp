@@ -7,7 +7,12 @@
 #include <optional>
 #include <string>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/continue_job.hpp"
 #include "capsubot/job/continue_settings.hpp"
@@ -16,13 +21,8 @@
 #include "capsubot/report/continue_csv.hpp"
 #include "capsubot/report/continue_text.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct ContinueCommandOptions {
@@ -148,4 +148,4 @@ Command AddContinueCommand(CLI::App& app) {
       {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

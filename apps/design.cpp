@@ -1,8 +1,9 @@
 // capsubot design: a real robot in SI units; the inner mass (and motor frequency) of its
 // fastest robust one-impact gait, with speed, power and cost of transport, and of the fastest
-// motion reached from rest in each direction. The command line (and --config, design_config.hpp)
-// fills the options of the design job (library: capsubot/job/design_job.hpp), which does it in
-// one call; its text and JSON are the report stage's.
+// motion reached from rest in each direction. The command line (and --config:
+// capsubot/config/design_config.hpp) fills the options of the design job (library:
+// capsubot/job/design_job.hpp), which does it in one call; its text and JSON are the report
+// stage's.
 
 #include <fmt/format.h>
 
@@ -19,25 +20,27 @@
 #include <utility>
 #include <vector>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/command.hpp"
+#include "capsubot/cli/design_config_options.hpp"
+#include "capsubot/cli/from_rest_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/shard_option.hpp"
+#include "capsubot/cli/strict_values.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
 #include "capsubot/report/design_json.hpp"
 #include "capsubot/report/design_text.hpp"
-#include "cli.hpp"
 #include "commands.hpp"
-#include "design_config.hpp"
 #include "design_flags.hpp"
-#include "from_rest_options.hpp"
-#include "help_format.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct DesignCliOptions {
@@ -161,7 +164,7 @@ DesignGridMode GridMode(const DesignCliOptions& opt, const CLI::App& cmd,
 }
 
 // The job's stages on the progress line, with the robots of part (a) and the evaluations of
-// part (b) (progress.hpp); nothing when progress is not shown.
+// part (b) (capsubot/cli/progress.hpp); nothing when progress is not shown.
 void ShowProgress(DesignJobOptions& options, DesignOneMode& one) {
   if (!ProgressShown()) return;
   auto stage = std::make_shared<std::string>();
@@ -326,4 +329,4 @@ Command AddDesignCommand(CLI::App& app) {
           [opt] { return !opt->grids.empty(); }};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

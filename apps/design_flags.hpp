@@ -2,10 +2,10 @@
 // The flags of the design job's settings that only some runs use: the command line's table of
 // names for the library's rule (DesignSettingUses) and its provenance.
 
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/model/setting_names.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The flag of each setting of the design job that a run may not use, of the switches that
 /// select the runs (--from-rest, --grid, --drive), and of the fields of the lower stages'
@@ -18,4 +18,4 @@ inline const FlagNames kDesignFlags = DashedFlags(
     "shard resume band_levels from_rest grid drive",
     {{"levels", "--pulse-levels"}});
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

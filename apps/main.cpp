@@ -17,13 +17,14 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/cli/command.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/strict_values.hpp"
+#include "capsubot/cli/suggest.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/model/version.hpp"
-#include "cli.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "suggest.hpp"
 
 namespace {
 
@@ -103,7 +104,7 @@ int RefuseCommandLine(const CLI::App& app, const CLI::ParseError& e) {
     return Fail(who, ParseErrorMessage(e), 2);
   }
   if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr && !subs.empty()) {
-    if (const auto flag = capsubot::app::UnknownFlag(*subs.front(), UnexpectedArguments(e))) {
+    if (const auto flag = capsubot::cli::UnknownFlag(*subs.front(), UnexpectedArguments(e))) {
       return Fail(who, *flag, 2);
     }
   }
@@ -112,7 +113,7 @@ int RefuseCommandLine(const CLI::App& app, const CLI::ParseError& e) {
 
 // Runs the command the command line chose and returns its exit status: an error it throws
 // is said on one line and mapped to its status (2 bad input, 1 a failed computation).
-int RunCommand(const capsubot::app::Command& command) {
+int RunCommand(const capsubot::cli::Command& command) {
   const std::string who = "capsubot " + command.parser->get_name();
   const int processes = capsubot::LaunchedProcesses();
   if (processes > 1 && !(command.distributed && command.distributed())) {
@@ -137,7 +138,7 @@ int RunCommand(const capsubot::app::Command& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace capsubot::app;
+  using namespace capsubot::cli;
   capsubot::InstallTempFileCleanup();
   capsubot::UseLauncherStdout();  // rank 0 under mpirun: a failed write to standard output is seen
   // Past the file size limit (ulimit -f) a write fails with EFBIG and the run says so, keeping

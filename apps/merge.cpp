@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/cli/help_format.hpp"
 #include "capsubot/sweep/basin_shards.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct MergeCliOptions {
@@ -54,4 +54,4 @@ Command AddMergeCommand(CLI::App& app) {
   return {cmd, [opt] { return Run(*opt); }, {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -17,6 +17,15 @@
 #include <utility>
 #include <vector>
 
+#include "capsubot/cli/command.hpp"
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/from_rest_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/strict_values.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/optimize_job.hpp"
 #include "capsubot/job/optimize_settings.hpp"
@@ -25,16 +34,10 @@
 #include "capsubot/report/optimize_csv.hpp"
 #include "capsubot/report/optimize_json.hpp"
 #include "capsubot/report/optimize_text.hpp"
-#include "cli.hpp"
 #include "commands.hpp"
-#include "from_rest_options.hpp"
-#include "help_format.hpp"
 #include "optimize_flags.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct OptimizeCliOptions {
@@ -256,4 +259,4 @@ Command AddOptimizeCommand(CLI::App& app) {
       cmd, [opt] { return RunNamingFlags(kOptimizeRenamedFields, [&] { return Run(*opt); }); }, {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -2,10 +2,10 @@
 // The flags of the optimize job's settings: the command line's one table of names for the
 // library's rules (OptimizeJobFrom) and its provenance.
 
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/model/setting_names.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The flag of each setting of the optimize job (OptimizeSettings' fields), and of the fields of
 /// the lower stages' messages ("levels" of a pulse drive).
@@ -27,4 +27,4 @@ inline const FlagNames kOptimizeRenamedFields = [] {
   return names;
 }();
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

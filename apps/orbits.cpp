@@ -5,18 +5,19 @@
 
 #include <memory>
 
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/job/orbits_job.hpp"
 #include "capsubot/job/orbits_settings.hpp"
 #include "capsubot/job/params_settings.hpp"
 #include "capsubot/report/orbits_text.hpp"
 #include "capsubot/report/solution_json.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct OrbitsOptions {
@@ -69,4 +70,4 @@ Command AddOrbitsCommand(CLI::App& app) {
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

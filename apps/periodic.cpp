@@ -6,19 +6,19 @@
 #include <memory>
 #include <stdexcept>
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/job/periodic_job.hpp"
 #include "capsubot/job/periodic_start_spec.hpp"
 #include "capsubot/job/shooting_settings.hpp"
 #include "capsubot/report/periodic_json.hpp"
 #include "capsubot/report/periodic_text.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct PeriodicCommandOptions {
@@ -88,4 +88,4 @@ Command AddPeriodicCommand(CLI::App& app) {
           {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

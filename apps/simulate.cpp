@@ -9,6 +9,12 @@
 #include <optional>
 #include <string>
 
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/simulate_job.hpp"
 #include "capsubot/job/simulate_settings.hpp"
@@ -18,16 +24,11 @@
 #include "capsubot/report/simulate_text.hpp"
 #include "capsubot/report/simulation_json.hpp"
 #include "commands.hpp"
-#include "help_format.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
-// Runs of at least this many periods (about 0.2 s) show their progress (progress.hpp).
+// Runs of at least this many periods (about 0.2 s) show their progress (capsubot/cli/progress.hpp).
 constexpr double kProgressPeriods = 1e5;
 
 struct SimulateOptions {
@@ -200,4 +201,4 @@ Command AddSimulateCommand(CLI::App& app) {
           {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

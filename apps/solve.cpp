@@ -6,6 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/from_rest_options.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/result_output.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/orbit_trajectory_settings.hpp"
 #include "capsubot/job/solve_job.hpp"
@@ -13,13 +19,8 @@
 #include "capsubot/report/solution_json.hpp"
 #include "capsubot/report/solve_text.hpp"
 #include "commands.hpp"
-#include "from_rest_options.hpp"
-#include "help_format.hpp"
-#include "provenance.hpp"
-#include "result_output.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 struct SolveOptions {
@@ -113,4 +114,4 @@ Command AddSolveCommand(CLI::App& app) {
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, {}};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -12,6 +12,16 @@
 #include <tuple>
 #include <vector>
 
+#include "capsubot/cli/command.hpp"
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/from_rest_options.hpp"
+#include "capsubot/cli/gnuplot.hpp"
+#include "capsubot/cli/help_format.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/shard_option.hpp"
+#include "capsubot/cli/strict_values.hpp"
 #include "capsubot/cluster/ranks.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/sweep_job.hpp"
@@ -19,17 +29,10 @@
 #include "capsubot/job/sweep_settings.hpp"
 #include "capsubot/report/sweep_plot.hpp"
 #include "capsubot/report/sweep_text.hpp"
-#include "cli.hpp"
 #include "commands.hpp"
-#include "from_rest_options.hpp"
-#include "gnuplot.hpp"
-#include "help_format.hpp"
-#include "progress.hpp"
-#include "provenance.hpp"
-#include "setting_options.hpp"
 #include "sweep_flags.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 // The command line as parsed: the job's settings bound to their flags, and the syntax read
@@ -268,4 +271,4 @@ Command AddSweepCommand(CLI::App& app) {
   return {cmd, [opt, cmd] { return Run(*opt, *cmd); }, [] { return true; }};
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

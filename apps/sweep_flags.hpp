@@ -2,10 +2,10 @@
 // The flags of the sweep job's settings: the command line's one table of names for the
 // library's rules (SweepJobFrom), its provenance and the messages of the lower stages.
 
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/model/setting_names.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The flag of each setting of the sweep job (SweepSettings' fields), of the command's own
 /// options and of the fields of the lower stages' messages (the reach search's budgets).
@@ -28,4 +28,4 @@ inline const FlagNames kSweepRenamedFields =
                           "stick_margin", "stability", "stable_only", "bound", "from_rest_starts",
                           "reach_starts", "reach_evaluations", "reach_local_evaluations"});
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

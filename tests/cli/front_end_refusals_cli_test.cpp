@@ -194,7 +194,7 @@ std::string LibraryMessage(const Case& c, const SettingNames& names, const FlagN
 std::string CommandLine(const Case& c) {
   std::string args = c.problem.empty() ? "optimize" : "optimize --problem " + c.problem;
   for (const Given& g : c.given) {
-    args += " " + SettingNames{app::kOptimizeFlags}.Name(g.field) + " " + g.flag_value;
+    args += " " + SettingNames{cli::kOptimizeFlags}.Name(g.field) + " " + g.flag_value;
   }
   return args;
 }
@@ -237,7 +237,7 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
   // A, c, alpha; phase none of the search's): the table yields cases for every setting.
   ASSERT_GE(table_cases, OptimizeSettingUses().size());
 
-  const SettingNames flags{app::kOptimizeFlags};
+  const SettingNames flags{cli::kOptimizeFlags};
   const SettingNames keywords{python::kOptimizeKeywords, SettingNames::Style::kKeywords};
   std::vector<std::string> calls;
   for (const Case& c : cases) calls.push_back(PythonCall(c));
@@ -246,7 +246,7 @@ TEST(OptimizeRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) 
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
     const std::string args = CommandLine(c);
-    const std::string cli_message = LibraryMessage(c, flags, app::kOptimizeRenamedFields);
+    const std::string cli_message = LibraryMessage(c, flags, cli::kOptimizeRenamedFields);
     const std::string python_message = LibraryMessage(c, keywords, keywords.flags);
     ASSERT_FALSE(cli_message.empty()) << "the library accepts " << args;
     // The two names of the first setting differ (a flag and a keyword) but the rule is one.
@@ -342,7 +342,7 @@ std::string DesignCall(const DesignCase& c) {
 }
 
 std::string DesignArgs(const DesignCase& c) {
-  const SettingNames flags{app::kDesignFlags};
+  const SettingNames flags{cli::kDesignFlags};
   std::string args = fmt::format("design --config {}/examples/robot.toml", CAPSUBOT_SOURCE_DIR);
   if (c.run == "from-rest") args += " --from-rest";
   if (c.run == "drive") args += " --drive " + c.waveform + " --force-max 1";
@@ -357,7 +357,7 @@ TEST(DesignRefusals, BothFrontEndsRefuseASettingTheRunDoesNotUseInTheirOwnNames)
   for (const DesignCase& c : cases) calls.push_back(DesignCall(c));
   const std::vector<std::string> python = PythonMessages(calls, "design");
   ASSERT_EQ(python.size(), cases.size());
-  const SettingNames flags{app::kDesignFlags};
+  const SettingNames flags{cli::kDesignFlags};
   const ModeName run_flag = [&flags](const std::string& run) { return DesignRunName(run, flags); };
   std::size_t refused = 0;
   for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -531,7 +531,7 @@ std::string SweepCommandLine(const SweepCase& c) {
   for (const std::string& spec : c.grid) args += " --grid " + spec;
   if (!c.mode.empty()) args += " --optimize " + c.mode;
   for (const SweepGiven& g : c.given) {
-    args += " " + SettingNames{app::kSweepFlags}.Name(g.field);
+    args += " " + SettingNames{cli::kSweepFlags}.Name(g.field);
     if (!g.flag_value.empty()) args += " " + g.flag_value;
   }
   return args;
@@ -561,7 +561,7 @@ TEST(SweepRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) {
   ASSERT_GE(cases.size(), SweepSettingUses().size());
   for (const SweepCase& c : SweepRuleCases()) cases.push_back(c);
 
-  const SettingNames flags{app::kSweepFlags};
+  const SettingNames flags{cli::kSweepFlags};
   const SettingNames keywords{python::kSweepKeywords, SettingNames::Style::kKeywords};
   std::vector<std::string> calls;
   for (const SweepCase& c : cases) calls.push_back(SweepPythonCall(c));
@@ -570,7 +570,7 @@ TEST(SweepRefusals, BothFrontEndsRefuseWhatTheLibraryRefusesInTheirOwnNames) {
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const SweepCase& c = cases[k];
     const std::string args = SweepCommandLine(c);
-    const std::string cli_message = SweepLibraryMessage(c, flags, app::kSweepRenamedFields);
+    const std::string cli_message = SweepLibraryMessage(c, flags, cli::kSweepRenamedFields);
     const std::string python_message = SweepLibraryMessage(c, keywords, keywords.flags);
     ASSERT_FALSE(cli_message.empty()) << "the library accepts " << args;
 

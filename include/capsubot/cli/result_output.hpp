@@ -10,9 +10,18 @@
 #include <string>
 #include <vector>
 
-#include "provenance.hpp"
+#include "capsubot/cli/provenance.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
+
+/// Whether output path `path` is standard output: "-", or a path to the file, pipe or terminal
+/// standard output writes to (/dev/stdout, or the file it is redirected to).
+bool IsStandardOutput(const std::string& path);
+
+/// Refuses (std::invalid_argument) `output` of `option` ("-o") on standard output
+/// (IsStandardOutput) together with --json (`json`), which prints its object there too: the
+/// two would be mixed in one stream ("-o - with --json is invalid: ...").
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json);
 
 /// Adds -o,--output FILE to `cmd` (the result of the command; `what` says what it is).
 CLI::Option* AddResultOutputOption(CLI::App& cmd, std::string& path, const std::string& what);
@@ -47,4 +56,4 @@ struct ResultOutput {
   }
 };
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -8,7 +8,7 @@
 
 #include "capsubot/sweep/sweep.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// Adds --progress and --no-progress to `cmd`; given, they choose how this process shows
 /// progress (neither: the bar on a terminal, nothing otherwise).
@@ -62,4 +62,4 @@ inline constexpr double kProgressLineSeconds = 60.0;
 /// not shown. `bar` must outlive the run.
 SweepProgressCallback GridProgress(ProgressBar& bar);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -6,12 +6,13 @@
 
 #include "capsubot/attract/attractors.hpp"
 #include "capsubot/attract/start_state_spec.hpp"
+#include "capsubot/cli/force_options.hpp"
+#include "capsubot/cli/setting_options.hpp"
+#include "capsubot/cli/strict_values.hpp"
 #include "capsubot/job/attractors_job.hpp"
 #include "capsubot/numerics/not_computed.hpp"
-#include "cli.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The robot and how its motion is simulated: force, T0, e, alpha, transient, record, ...
 struct RobotOptions {
@@ -60,4 +61,4 @@ struct StartStateOptions {
 /// stderr when progress is shown (progress.hpp); none otherwise.
 StartsProgress CountProgress(const char* what);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

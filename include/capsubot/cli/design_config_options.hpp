@@ -11,7 +11,7 @@
 #include "capsubot/design/design.hpp"
 #include "capsubot/sweep/design_grid.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// What the command line says about the robot: the config file and each setting's flag.
 struct DesignConfigOptions {
@@ -34,4 +34,4 @@ DesignInput BuildDesignInput(const DesignConfigOptions& options,
 /// Refuses --drive without --force-max (`force_max` NaN), in flags.
 void RequireDriveForceMax(double force_max);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

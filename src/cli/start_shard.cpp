@@ -1,6 +1,6 @@
 // --shard K/N of `basins` and `attractors`: one shard of the map of starts, resumable.
 
-#include "start_shard.hpp"
+#include "capsubot/cli/start_shard.hpp"
 
 #include <fmt/format.h>
 
@@ -8,10 +8,11 @@
 #include <string>
 #include <tuple>
 
-#include "progress.hpp"
-#include "provenance.hpp"
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/provenance.hpp"
+#include "capsubot/cli/shard_option.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 void AddStartShardOptions(CLI::App& cmd, StartShardCliOptions& options, const char* name) {
   cmd.add_option("--shard", options.shard,
@@ -93,4 +94,4 @@ int RunMapOnRanks(AttractorsJobOptions& map, const std::function<StartMapWork()>
   return 0;
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

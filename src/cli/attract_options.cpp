@@ -1,4 +1,4 @@
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <memory>
 
+#include "capsubot/cli/progress.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/job/motion_settings.hpp"
 #include "capsubot/job/params_settings.hpp"
-#include "progress.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 void AddRobotOptions(CLI::App& cmd, RobotOptions& o, bool with_motion) {
   AddForcingOptions(cmd, o.forcing);
@@ -83,4 +83,4 @@ StartsProgress CountProgress(const char* what) {
   };
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

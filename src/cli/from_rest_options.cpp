@@ -1,11 +1,11 @@
-#include "from_rest_options.hpp"
+#include "capsubot/cli/from_rest_options.hpp"
 
-#include "attract_options.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/setting_options.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/reach_effort_settings.hpp"
-#include "setting_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 FromRestOptions FromRestCliOptions::Check() const {
   FromRestOptions o;
@@ -65,4 +65,4 @@ void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& o) {
                "drive_refine_evaluations", "drive_screens"});
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 struct Provenance {
   std::string command;  ///< the subcommand, e.g. "sweep"
@@ -46,4 +46,4 @@ Provenance OutputProvenance(const CLI::App& command, const std::vector<std::stri
 /// what only shapes the CSV files (--samples, --samples-per-period).
 Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string>& unused = {});
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -1,10 +1,12 @@
-#include "result_output.hpp"
+#include "capsubot/cli/result_output.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "capsubot/io/io.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 namespace {
 
@@ -45,4 +47,20 @@ void ResultOutput::Add(CLI::App& cmd, const std::string& json_help, const std::s
   AddResultOutputOption(cmd, path, what);
 }
 
-}  // namespace capsubot::app
+bool IsStandardOutput(const std::string& path) {
+  if (path == "-") return true;
+  struct stat file = {};
+  struct stat out = {};
+  return !path.empty() && ::stat(path.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+}
+
+void RequireOutputApartFromJson(const std::string& output, const char* option, bool json) {
+  if (!json || !IsStandardOutput(output)) return;
+  throw std::invalid_argument(fmt::format(
+      "{} {} with --json is invalid: both would be written to standard output, one after the "
+      "other: expected {} FILE, another file than standard output, or no {}",
+      option, output, option, option));
+}
+
+}  // namespace capsubot::cli

@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// Runs gnuplot on script(temp), a script that writes the PNG `temp`, a temporary file beside
 /// `path`, then renames it to `path` (written in place when `path` is a symlink or special
@@ -12,4 +12,4 @@ namespace capsubot::app {
 void DrawPng(const std::function<std::string(const std::string& png)>& script,
              const std::string& path);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

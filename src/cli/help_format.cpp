@@ -1,4 +1,4 @@
-#include "help_format.hpp"
+#include "capsubot/cli/help_format.hpp"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -8,7 +8,9 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace capsubot::app {
+#include "capsubot/io/wrap_text.hpp"
+
+namespace capsubot::cli {
 namespace {
 
 constexpr const char* kProgram = "capsubot ";
@@ -33,38 +35,6 @@ std::string TwoColumns(const std::string& name, const std::string& description, 
   const std::vector<std::string> lines = WrapText(description, width - column);
   if (name.size() < column) return name + Indented(lines, column - name.size(), column);
   return Indented(WrapText(name.substr(2), width - 6), 2, 6) + Indented(lines, column, column);
-}
-
-// A word wider than `width` in pieces of at most `width` characters, each ending after a
-// comma where it can (a list of CSV columns), else cut at `width`.
-std::vector<std::string> Pieces(const std::string& word, std::size_t width) {
-  std::vector<std::string> pieces;
-  std::size_t at = 0;
-  while (word.size() - at > width) {
-    const std::size_t comma = word.rfind(',', at + width - 1);
-    const std::size_t cut = comma == std::string::npos || comma < at ? at + width : comma + 1;
-    pieces.push_back(word.substr(at, cut - at));
-    at = cut;
-  }
-  pieces.push_back(word.substr(at));
-  return pieces;
-}
-
-// Words into lines of at most `width` characters; a wider word is broken into its Pieces.
-std::vector<std::string> WrapWords(const std::vector<std::string>& words, std::size_t width) {
-  std::vector<std::string> lines;
-  std::string line;
-  for (const std::string& word : words) {
-    if (!line.empty() && line.size() + 1 + word.size() > width) {
-      lines.push_back(line);
-      line.clear();
-    }
-    const std::vector<std::string> pieces = Pieces(word, width);
-    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) lines.push_back(pieces[i]);
-    line += (line.empty() ? "" : " ") + pieces.back();
-  }
-  lines.push_back(line);
-  return lines;
 }
 
 bool IsFlag(const std::string& word) {  // --grid, -o; not a negative number (-2.8)
@@ -165,21 +135,6 @@ std::size_t HelpWidth() {
   return std::clamp(width, kMinHelpWidth, kMaxHelpWidth);
 }
 
-std::vector<std::string> WrapText(const std::string& text, std::size_t width) {
-  std::vector<std::string> lines;
-  std::istringstream paragraphs(text);
-  std::string paragraph;
-  while (std::getline(paragraphs, paragraph)) {
-    std::istringstream in(paragraph);
-    std::vector<std::string> words;
-    std::string word;
-    while (in >> word) words.push_back(word);
-    const std::vector<std::string> wrapped = WrapWords(words, width);
-    lines.insert(lines.end(), wrapped.begin(), wrapped.end());
-  }
-  return lines;
-}
-
 void SetExamples(CLI::App& command, const std::vector<Example>& examples) {
   std::string footer = "Examples:\n";
   for (const Example& e : examples) {
@@ -224,4 +179,4 @@ std::string HelpFormatter::make_footer(const CLI::App* app) const {
   return footer.empty() ? footer : WrapExamples(footer, width_, false);
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

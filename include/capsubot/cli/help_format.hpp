@@ -7,17 +7,13 @@
 #include <string>
 #include <vector>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The width of the help: COLUMNS when it is a number, else the width of the terminal on
 /// standard output, else 80 (not a terminal); bounded to [kMinHelpWidth, kMaxHelpWidth].
 std::size_t HelpWidth();
 inline constexpr std::size_t kMinHelpWidth = 60;
 inline constexpr std::size_t kMaxHelpWidth = 200;
-
-/// `text` broken at spaces into lines of at most `width` characters (a longer word stays
-/// whole on its own line); its own line breaks are kept.
-std::vector<std::string> WrapText(const std::string& text, std::size_t width);
 
 /// A runnable example of a command, shown at the end of its --help.
 struct Example {
@@ -46,4 +42,4 @@ class HelpFormatter : public CLI::Formatter {
   std::size_t width_;
 };
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "attract_options.hpp"
 #include "capsubot/attract/start_grid.hpp"
+#include "capsubot/cli/attract_options.hpp"
+#include "capsubot/cli/command.hpp"
 #include "capsubot/cluster/ranks.hpp"
-#include "commands.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 struct StartShardCliOptions {
   std::string shard;  ///< "K/N"; empty or 0/1: the whole map
@@ -66,4 +66,4 @@ StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd,
 int RunMapOnRanks(AttractorsJobOptions& map, const std::function<StartMapWork()>& work,
                   const std::function<std::string()>& run);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -12,11 +12,11 @@
 #include <variant>
 #include <vector>
 
+#include "capsubot/cli/strict_values.hpp"
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/setting_table.hpp"
-#include "cli.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The flag of `field`: "--" and the field with '_' written '-' ("max_period" ->
 /// "--max-period"), kept as long as the program (KeptText).
@@ -120,4 +120,4 @@ void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& t
   }
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

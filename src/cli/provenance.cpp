@@ -1,11 +1,11 @@
-#include "provenance.hpp"
+#include "capsubot/cli/provenance.hpp"
 
 #include <algorithm>
 #include <cctype>
 
 #include "capsubot/model/version.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 // The value as a shell word: unchanged when it holds only safe characters, else in single
@@ -108,4 +108,4 @@ Provenance JsonProvenance(const CLI::App& command, const std::vector<std::string
   return OutputProvenance(command, exclude);
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

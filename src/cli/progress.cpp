@@ -1,4 +1,4 @@
-#include "progress.hpp"
+#include "capsubot/cli/progress.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 // How this process shows progress: the options of the one command a process runs set it.
@@ -123,4 +123,4 @@ SweepProgressCallback GridProgress(ProgressBar& bar) {
   };
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

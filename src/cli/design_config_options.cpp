@@ -1,6 +1,6 @@
-#include "design_config.hpp"
+#include "capsubot/cli/design_config_options.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 // The command line's names of the robot's settings: a flag given a value ("--m1"), the bare
@@ -48,4 +48,4 @@ void RequireDriveForceMax(double force_max) {
   capsubot::RequireDriveForceMax(force_max, FlagNamesOfSettings());
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -1,6 +1,6 @@
 // A PNG drawn by gnuplot from a script, for the commands' --plot.
 
-#include "gnuplot.hpp"
+#include "capsubot/cli/gnuplot.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 
 #include "capsubot/io/io.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 void DrawPng(const std::function<std::string(const std::string& png)>& script,
              const std::string& path) {
@@ -30,4 +30,4 @@ void DrawPng(const std::function<std::string(const std::string& png)>& script,
   file.Commit();
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

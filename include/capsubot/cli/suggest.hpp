@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// The candidate nearest to `word`: equal but for case first, else the one within an edit
 /// distance of max(1, size/3) (the first of equal distance); none when nothing is that close.
@@ -29,4 +29,4 @@ std::optional<std::string> UnknownCommand(const CLI::App& app, const std::string
 std::optional<std::string> UnknownFlag(const CLI::App& command,
                                        const std::vector<std::string>& extras);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -1,11 +1,11 @@
-#include "suggest.hpp"
+#include "capsubot/cli/suggest.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-namespace capsubot::app {
+namespace capsubot::cli {
 namespace {
 
 std::string Lower(std::string s) {
@@ -100,4 +100,4 @@ std::optional<std::string> UnknownFlag(const CLI::App& command,
   return std::nullopt;
 }
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli

@@ -2,6 +2,7 @@
 // What the robot reaches from rest (docs/model.md sections 12 and 13): the options that size the
 // check of a gait from rest and the reach search. Shared by optimize, solve, design and sweep.
 
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "capsubot/attract/gait_from_rest.hpp"
@@ -9,9 +10,8 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/reach/optimize_reach.hpp"
 #include "capsubot/reach/reach_effort.hpp"
-#include "cli.hpp"
 
-namespace capsubot::app {
+namespace capsubot::cli {
 
 /// How gaits are checked from rest and how the reach search is sized, from the command line.
 struct FromRestCliOptions {
@@ -45,4 +45,4 @@ void AddDriveBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
 /// --reach-local-evaluations (not its wall-clock limit --reach-seconds).
 void AddReachBudgetOptions(CLI::App& cmd, FromRestCliOptions& options);
 
-}  // namespace capsubot::app
+}  // namespace capsubot::cli
