@@ -224,7 +224,9 @@ Command AddOptimizeCommand(CLI::App& app) {
                       CLI::ignore_case)
                       .description(""))
       ->check(CLI::IsMember({"phase", "forcing", "fourier", "reach"}).description(""))
-      ->type_name("phase|forcing|fourier|reach");  // the help and the completion show these
+      ->type_name("phase|forcing|fourier|reach")  // the help and the completion show these
+      ->description(cmd->get_option("--problem")->get_description() +
+                    "; P1, P2 and P3 name the first three");
   AddSettings(*cmd, settings, table, kOptimizeFlags, {"A", "c"});
   AddParamsOptions(*cmd, settings.params, &settings.search.gait.margins);
   AddFromRestOptions(*cmd, opt->from_rest, true);

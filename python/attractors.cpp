@@ -67,19 +67,16 @@ constexpr const char* kAttractorsDoc =
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the starts' phases psi [rad]\n"
     "            (required for the harmonic force; default 0 for a Fourier force)\n";
 
-constexpr const char* kAttractorsArgsDoc =
-    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
-    "    starts  grid of starts 'NXxNPSI' (positions x phases), default '8x8'; or n_x, n_psi\n"
-    "    transient  forcing periods simulated before the motion is recorded, >= 0\n"
-    "    record  forcing periods recorded, >= 2 max_period\n"
-    "    max_period  largest period searched, in forcing periods, 1 to 64\n"
-    "    state_tolerance  two section states are the same when x, u, v differ by at most this\n"
-    "    converged_tolerance  early stop of a motion that repeats to this and is proven periodic "
-    "by Newton's method (0: never; the result does not depend on it)\n"
-    "    chatter_velocity  the simulator's chatter cut-off [omega L]\n"
-    "    max_events_per_period  work bound: a start needing more ends as event_limit\n"
-    "    threads  worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
-    "            result does not depend on it\n\n"
+// The arguments after the force and the model: the robot's mass ratio, the grid of starts, the
+// long runs (their meanings from the library's tables), the threads.
+std::string AttractorsArgsDoc() {
+  return MassRatioArgDoc() +
+         ArgumentLines("starts", "grid of starts 'NXxNPSI' (positions x phases), default '8x8'") +
+         ArgumentLines("n_x, n_psi", "the grid of starts as two numbers, instead of starts") +
+         MotionArgsDoc() + kThreadsArgDoc;
+}
+
+constexpr const char* kAttractorsReturnsDoc =
     "Returns a dict: starts (their number), attractors (a list of dicts, most starts first: "
     "status, period, impacts_right, impacts_left, mean_velocity (over its starts), velocity_min, "
     "velocity_max, fraction, starts, example_start {x0, psi}, one_impact_orbit, "
@@ -91,8 +88,8 @@ constexpr const char* kAttractorsArgsDoc =
 }  // namespace
 
 void BindAttractors(py::module_& m) {
-  const std::string doc =
-      std::string(kAttractorsDoc) + kForcingArgsDoc + kModelArgsDoc + kAttractorsArgsDoc + kUnits;
+  const std::string doc = std::string(kAttractorsDoc) + ForceArgsDoc() + ModelArgsDoc() +
+                          AttractorsArgsDoc() + "\n" + kAttractorsReturnsDoc + kUnits;
   const MotionOptions mo;
   DefRobotFunction(m, "attractors", &FindAttractorsDict, doc.c_str(), py::arg("alpha"),
                    py::arg("starts") = py::none(), py::arg("n_x") = py::none(),

@@ -76,7 +76,6 @@ constexpr const char* kBasinsDoc =
     "            (required for the harmonic force; default 0 for a Fourier force)\n";
 
 constexpr const char* kBasinsArgsDoc =
-    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
     "    starts  grid of starts 'NXxNY' (x0 x psi, or x0 x u0)\n"
     "    plane   'x0-psi' (starts from rest) or 'x0-u0'\n"
     "    psi     forcing phase of the starts in the x0-u0 plane [rad]\n"
@@ -84,10 +83,10 @@ constexpr const char* kBasinsArgsDoc =
     "            + (j + 0.5)(u_max - u_min)/NY\n"
     "    transient, record, max_period, state_tolerance, converged_tolerance,\n"
     "            chatter_velocity, max_events_per_period  each start's long-run motion, as in\n"
-    "            attractors()\n"
-    "    threads worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
-    "            result does not depend on it\n\n"
-    "Returns the dict of `capsubot basins --json` (starts, attractors, mean_velocity, "
+    "            attractors()\n";
+
+constexpr const char* kBasinsReturnsDoc =
+    "\nReturns the dict of `capsubot basins --json` (starts, attractors, mean_velocity, "
     "event_limit_starts, force: as attractors()) plus columns, the CSV map `capsubot basins -o` "
     "writes as NumPy arrays, one row per start (x0 major): x0, psi (or u0), attractor (int64), "
     "period, impacts_right, impacts_left, mean_velocity (float64, NaN where the motion has "
@@ -98,8 +97,9 @@ constexpr const char* kBasinsArgsDoc =
 }  // namespace
 
 void BindBasins(py::module_& m) {
-  const std::string doc =
-      std::string(kBasinsDoc) + kForcingArgsDoc + kModelArgsDoc + kBasinsArgsDoc + kUnits;
+  const std::string doc = std::string(kBasinsDoc) + ForceArgsDoc() + ModelArgsDoc() +
+                          MassRatioArgDoc() + kBasinsArgsDoc + kThreadsArgDoc + kBasinsReturnsDoc +
+                          kUnits;
   const MotionOptions mo;
   const VelocityPlane velocity;
   DefRobotFunction(m, "basins", &BasinsDict, doc.c_str(), py::arg("alpha"),

@@ -97,10 +97,10 @@ constexpr const char* kBifurcationArgsDoc =
     "    no_analytic  leave the analytic one-impact orbits out of the summary\n"
     "    transient, record, max_period, state_tolerance, converged_tolerance,\n"
     "            chatter_velocity, max_events_per_period  the long-run motion at each value, as\n"
-    "            in attractors()\n"
-    "    threads worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
-    "            result does not depend on it\n\n"
-    "Returns a dict: impacts (the CSV of `capsubot bifurcation -o` as NumPy columns: [NAME,] "
+    "            in attractors()\n";
+
+constexpr const char* kBifurcationReturnsDoc =
+    "\nReturns a dict: impacts (the CSV of `capsubot bifurcation -o` as NumPy columns: [NAME,] "
     "param, direction (str), period_index, wall (str), phase, velocity: every recorded impact), "
     "summary (the CSV of --summary: [NAME,] param, direction, period, impacts_right, "
     "impacts_left, mean_velocity, largest_multiplier, largest_multiplier_im, spectral_radius, "
@@ -112,8 +112,8 @@ constexpr const char* kBifurcationArgsDoc =
 }  // namespace
 
 void BindBifurcation(py::module_& m) {
-  const std::string doc =
-      std::string(kBifurcationDoc) + kForcingArgsDoc + kModelArgsDoc + kBifurcationArgsDoc + kUnits;
+  const std::string doc = std::string(kBifurcationDoc) + ForceArgsDoc() + ModelArgsDoc() +
+                          kBifurcationArgsDoc + kThreadsArgDoc + kBifurcationReturnsDoc + kUnits;
   const BifurcationOptions o;
   const MotionOptions& mo = o.motion;
   DefRobotFunction(

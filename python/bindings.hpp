@@ -24,6 +24,7 @@
 #include "capsubot/model/interrupt.hpp"
 #include "capsubot/model/params.hpp"
 #include "capsubot/optimize/optimize_request.hpp"
+#include "keyword_doc.hpp"
 
 namespace capsubot::python {
 
@@ -49,19 +50,6 @@ inline constexpr const char* kUnits =
     "tau = 2 pi, phi = 0 at the impact on the right wall); positions in L (walls at x = 0 and "
     "x = 1); velocities in omega L; forces (A, c, cos, sin, T0) in (m1+m2) omega^2 L; alpha = "
     "m2/(m1+m2).";
-
-/// The docstring lines of the force arguments shared by several functions.
-inline constexpr const char* kForcingArgsDoc =
-    "    A       amplitude A >= 0 of F = A sin(phi + phi0) + c [force]; omit it for a\n"
-    "            Fourier force\n"
-    "    c       mean force [force]; a directed orbit needs c > 0\n"
-    "    cos, sin  Fourier force F = c + sum_k (a_k cos k(phi+phi0) + b_k sin k(phi+phi0)):\n"
-    "            sequences a_1..a_K and b_1..b_K [force], K <= 16; cos defaults to zeros\n";
-
-/// The docstring lines of the model arguments T0 and e.
-inline constexpr const char* kModelArgsDoc =
-    "    T0      friction bound mu g/(omega^2 L) > 0 [force]\n"
-    "    e       coefficient of restitution, 0 <= e <= 1\n";
 
 /// An argument that None leaves to its default: `field` = `*value`, and `name` into `given` (the
 /// settings given, which the library's rules read), when it is not None.
@@ -182,16 +170,8 @@ py::dict CsvColumns(const std::string& path);
 /// named as the module's arguments).
 py::dict JobProvenance(const char* command, const py::dict& options);
 
-/// The docstring lines of the margins of a robust gait (docs/model.md section 12).
-inline constexpr const char* kMarginArgsDoc =
-    "    margin  clearance d required between inner body and walls [L], 0 <= d < 0.5\n"
-    "    margin_stroke  clearance relative to the stroke d_s: the clearance from both walls is\n"
-    "            at least max(d, d_s (x_max - x_min)), 0 <= d_s < 0.5 (capsubot\n"
-    "            documentation, model section 12)\n"
-    "    stick_margin  stick margin s: while the capsule rests |F| <= (1 - s) T0, 0 <= s < 1\n";
-
 /// Defines the module function `name` with keyword-only arguments: the force (A, c, phi0, cos,
-/// sin, waveform, levels, switches: kForcingArgsDoc), the model (T0, e: kModelArgsDoc), then
+/// sin, waveform, levels, switches: ForceArgsDoc()), the model (T0, e: ModelArgsDoc()), then
 /// `rest` (alpha and the function's own), every function that takes a robot alike.
 template <typename Func, typename... Rest>
 void DefRobotFunction(py::module_& m, const char* name, Func&& f, const char* doc, Rest&&... rest) {

@@ -198,7 +198,7 @@ constexpr const char* kContinueArgsDoc =
 
 void BindContinuation(py::module_& m) {
   const std::string doc =
-      std::string(kContinueDoc) + kForcingArgsDoc + kModelArgsDoc + kContinueArgsDoc + kUnits;
+      std::string(kContinueDoc) + ForceArgsDoc() + ModelArgsDoc() + kContinueArgsDoc + kUnits;
   const ContinuationOptions o;
   DefRobotFunction(
       m, "continue_branch", &ContinueBranchDict, doc.c_str(), py::arg("alpha"), py::arg("param"),

@@ -17,8 +17,11 @@
 #include "bindings.hpp"
 #include "capsubot/job/optimize_job.hpp"
 #include "capsubot/job/optimize_settings.hpp"
+#include "capsubot/job/reach_effort_settings.hpp"
+#include "capsubot/job/search_settings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/numerics/not_computed.hpp"
+#include "capsubot/optimize/optimize_search.hpp"
 #include "capsubot/report/optimize_json.hpp"
 #include "optimize_keywords.hpp"
 
@@ -114,62 +117,49 @@ constexpr const char* kOptimizeDoc =
     "robust gait (section 12), every gait checked from rest, or the fastest motion from rest "
     "(section 13): the object `capsubot optimize [--problem <problem>] --json` prints for the "
     "same arguments (same defaults), without its provenance.\n\n"
-    "Arguments (keyword only, named as the options of `capsubot optimize`):\n"
-    "    problem 'phase' (P1: the best impact phase phi0 for the force shape A, c), 'forcing'\n"
-    "            (P2: the best A, c, phi0 with A + c <= bound), 'fourier' (P3: the best\n"
-    "            K-harmonic force with max |F| <= bound), 'reach' (the fastest motion from rest:\n"
-    "            A, c, alpha with A + c <= bound, simulated, seeded with the robust P2 gait) or\n"
-    "            None: the main job (P1 at c = A = T0/2 without margins, the fastest robust\n"
-    "            gait checked from rest, the fastest motion from rest, and the exact optima\n"
-    "            without margins, valid and stable)\n"
-    "    A, c    amplitude A >= 0 and mean c of F = A sin(phi + phi0) + c [force] (phase only)\n"
-    "    alpha   reach: a fixed mass ratio 0 < alpha < 1 (None: alpha is optimised too)\n";
+    "Arguments (keyword only, named as the options of `capsubot optimize`; None: not given, the "
+    "default):\n";
 
-// The arguments of the search, with their defaults (None: the default, which the argument is
-// not given; a problem that does not use an argument refuses it when given).
-std::string OptimizeOptionsDoc() {
+// The arguments of the problem and of the search, from the library's tables of their settings
+// (the meanings --help shows), but the few the command line declares by hand too; a problem that
+// does not use an argument refuses it when given.
+std::string OptimizeArgumentsDoc() {
   const OptimizeSettings d;
-  return fmt::format(
-      "    bound   force bound (A + c, or max |F|) for forcing/fourier, 0 < bound <= T0\n"
-      "            [force]; None: T0\n"
-      "    rho_max largest spectral radius of the impact map (capsubot documentation, model\n"
-      "            sections 8, 12); float('inf'): no stability requirement; None: {}\n"
-      "    stable  the same as rho_max = 1 (not with rho_max)\n"
-      "    max_time  time limit [s] of each optimisation (status 'max_time' when reached), > 0\n"
-      "    harmonics  number K of harmonics of the Fourier force, 1..16: fourier (None: {}), or\n"
-      "            reach (None: the sine; K >= 2: the fastest Fourier drive, climbing from the\n"
-      "            sine, with ladder and speed_ratio_to_sine in the result)\n"
-      "    global_algorithm  'multistart' or an NLopt global algorithm: GN_ISRES, GN_ORIG_DIRECT,\n"
-      "            GN_ORIG_DIRECT_L, GN_AGS (main job, forcing, fourier, reach); None: '{}'\n"
-      "    local_algorithm  the local polish: LN_COBYLA, LD_SLSQP, LD_MMA, LD_CCSAQ; None: '{}'\n"
-      "    global_evaluations  budget of an NLopt global algorithm, >= 10; None: {}\n"
-      "    hops    P2: basin-hopping restarts after the starts, >= 0; None: {}\n"
-      "    starts  local polishes of the multistart, >= 1; None: 10 (forcing), 20 (fourier)\n"
-      "    reach_starts  grid 'NXxNPSI' of starts from rest inside the reach search (main job,\n"
-      "            reach; the winner is re-checked on from_rest_starts); None: '{}'\n"
-      "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the reach\n"
-      "            search's global stage (DIRECT-L, >= 1) and local polish (Sbplx, >= 0);\n"
-      "            None: {}, {}\n"
-      "    reach_seconds  wall-clock limit of the reach search [s] (the re-checks come on top);\n"
-      "            when it stops the search the result depends on the machine's speed; None: {}\n"
-      "    drive_evaluations, drive_polishes, drive_local_evaluations  reach with harmonics >= 2\n"
-      "            or a pulse: the Halton points of each step K >= 2 (>= 1), its Nelder-Mead\n"
-      "            polishes (>= 1) and their evaluations (>= 0); None: {}, {}, {}\n"
-      "    drive_refine_evaluations, drive_screens  reach with harmonics >= 2 or a pulse: the\n"
-      "            controlled random search after the Halton points (>= 0) and the short\n"
-      "            Nelder-Mead screens before the polishes (>= 0); None: {}, {}\n"
-      "    T0_range  reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] (holding T0),\n"
-      "            the bound tied to T0, v_mean/sqrt(T0) maximised; frequency in the result\n"
-      "    waveform  reach: the drives searched, 'sine', 'fourier' (the default with harmonics)\n"
-      "            or 'pulse' (pulse_levels constant levels, 2..16; None: {})\n"
-      "    band_levels  main job: the levels of the speed bands, fractions of the speed from\n"
-      "            rest in (0, 1); None: {}\n",
-      d.search.gait.rho_max, FourierOptions{}.harmonics, d.search.global_algorithm,
-      d.search.local_algorithm, d.search.global_evaluations, d.search.hops, d.reach_starts,
-      d.reach.global_evaluations, d.reach.local_evaluations, d.reach.max_seconds,
-      d.reach.drive_evaluations, d.reach.drive_polishes, d.reach.drive_local_evaluations,
-      d.reach.drive_refine_evaluations, d.reach.drive_screens, d.pulse_levels,
-      fmt::join(d.band_levels, ", "));
+  const FlagNames& k = kOptimizeKeywords;
+  constexpr DefaultInDoc kNone = DefaultInDoc::kNoneMeans;
+  return TableArgumentLines(OptimizeProblemSettings(), d, k, {"problem", "A", "c"}, kNone) +
+         ModelArgsDoc() + MarginArgsDoc() +
+         "            (margin_stroke and stick_margin default to 0.02 here)\n" + kFromRestArgsDoc +
+         TableArgumentLines(GaitBoundSettings(), d.search.gait, k, {"bound", "rho_max"}, kNone) +
+         ArgumentLines("stable", "the same as rho_max = 1 (not with rho_max)") +
+         TableArgumentLines(SearchSettings(), d.search, k, {"max_time"}, DefaultInDoc::kSignature) +
+         TableArgumentLines(
+             SearchSettings(), d.search, k,
+             {"harmonics", "global_algorithm", "local_algorithm", "global_evaluations", "hops"},
+             kNone) +
+         ArgumentLines("starts", fmt::format("local polishes of the multistart, 1 to {}; None: 10 "
+                                             "(forcing), 20 (fourier)",
+                                             kMaxStarts)) +
+         TableArgumentLines(OptimizeProblemSettings(), d, k, {"alpha"}, kNone) +
+         ArgumentLines("reach_starts",
+                       "with the main job or problem reach: grid 'NXxNPSI' of starts from rest "
+                       "inside the reach search (the winner is re-checked on from_rest_starts); "
+                       "None: '" +
+                           d.reach_starts + "'") +
+         TableArgumentLines(ReachEffortSettings(), d.reach, k,
+                            {"reach_evaluations", "reach_local_evaluations", "reach_seconds",
+                             "drive_evaluations", "drive_polishes", "drive_local_evaluations",
+                             "drive_refine_evaluations", "drive_screens"},
+                            kNone) +
+         ArgumentLines("T0_range",
+                       "with problem reach: (lo, hi), the motor's frequency free: T0 in [lo, hi] "
+                       "(holding T0), the bound tied to T0, v_mean/sqrt(T0) maximised; frequency "
+                       "in the result") +
+         TableArgumentLines(OptimizeProblemSettings(), d, k, {"waveform", "pulse_levels"}, kNone) +
+         ArgumentLines("band_levels",
+                       fmt::format("with the main job: the levels of the speed bands, fractions "
+                                   "of the speed from rest in (0, 1); None: {}",
+                                   fmt::join(d.band_levels, ", ")));
 }
 
 constexpr const char* kOptimizeReturnsDoc =
@@ -194,9 +184,8 @@ constexpr const char* kOptimizeReturnsDoc =
 }  // namespace
 
 void BindOptimize(py::module_& m) {
-  const std::string doc = std::string(kOptimizeDoc) + kModelArgsDoc + kMarginArgsDoc +
-                          "            (margin_stroke and stick_margin default to 0.02 here)\n" +
-                          kFromRestArgsDoc + OptimizeOptionsDoc() + kOptimizeReturnsDoc + kUnits;
+  const std::string doc =
+      std::string(kOptimizeDoc) + OptimizeArgumentsDoc() + kOptimizeReturnsDoc + kUnits;
   const ForcingDesignOptions p2;
   const Margins robust = RobustMargins();
   m.def("optimize", &Optimize, doc.c_str(), py::kw_only(), py::arg("problem") = py::none(),

@@ -66,8 +66,8 @@ constexpr const char* kOrbitsArgsDoc =
 }  // namespace
 
 void BindOrbits(py::module_& m) {
-  const std::string doc = std::string(kOrbitsDoc) + kForcingArgsDoc + kModelArgsDoc +
-                          kMarginArgsDoc + kOrbitsArgsDoc + kUnits;
+  const std::string doc = std::string(kOrbitsDoc) + ForceArgsDoc(false) + ModelArgsDoc() +
+                          MarginArgsDoc() + kOrbitsArgsDoc + kUnits;
   m.def("orbits", &Orbits, doc.c_str(), py::kw_only(), py::arg("alpha"), py::arg("A") = py::none(),
         py::arg("c"), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,

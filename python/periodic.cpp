@@ -51,18 +51,16 @@ constexpr const char* kPeriodicDoc =
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n"
     "            (required for the harmonic force; default 0 for a Fourier force)\n";
 
-constexpr const char* kPeriodicArgsDoc =
-    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
+constexpr const char* kPeriodicStartDoc =
     "    x0, u0, v0, psi  the start: position of the inner body, relative velocity, capsule\n"
     "            velocity at forcing phase psi (no transient unless transient is given)\n"
     "    from_rest  (x0, psi): start from rest there instead, after transient periods\n"
     "    transient  periods simulated before shooting (default 200 with from_rest, else 0)\n"
     "    period  the period p, 1 to 64, when known: Newton from the start itself (no search of\n"
-    "            the period, no transient)\n"
-    "    max_period  largest period searched, in forcing periods, 1 to 64\n"
-    "    step    step of the central finite differences of the Jacobian\n"
-    "    chatter_velocity  the simulator's chatter cut-off [omega L]\n\n"
-    "Returns a dict: status ('converged', 'no_convergence', 'event_limit'), period, "
+    "            the period, no transient)\n";
+
+constexpr const char* kPeriodicReturnsDoc =
+    "\nReturns a dict: status ('converged', 'no_convergence', 'event_limit'), period, "
     "impacts_right, impacts_left, mean_velocity, state {x, u, v, psi}, mode, dimension, "
     "multipliers [[re, im], ...], spectral_radius, stable, distance_to_plus_one, "
     "distance_to_minus_one, distance_to_unit_circle, residual, iterations.\n\n"
@@ -72,8 +70,9 @@ constexpr const char* kPeriodicArgsDoc =
 }  // namespace
 
 void BindPeriodic(py::module_& m) {
-  const std::string doc =
-      std::string(kPeriodicDoc) + kForcingArgsDoc + kModelArgsDoc + kPeriodicArgsDoc + kUnits;
+  const std::string doc = std::string(kPeriodicDoc) + ForceArgsDoc() + ModelArgsDoc() +
+                          MassRatioArgDoc() + kPeriodicStartDoc + ShootingArgsDoc() +
+                          kPeriodicReturnsDoc + kUnits;
   const ShootingOptions so;
   DefRobotFunction(m, "periodic", &Periodic, doc.c_str(), py::arg("alpha"),
                    py::arg("x0") = py::none(), py::arg("u0") = py::none(),

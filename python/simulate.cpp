@@ -204,8 +204,8 @@ constexpr const char* kSimulateStateDoc =
 
 void BindSimulate(py::module_& m) {
   const SimOptions defaults;
-  const std::string doc = std::string(kSimulateDoc) + kForcingArgsDoc + kSimulateArgsDoc +
-                          kModelArgsDoc + kSimulateStateDoc + kUnits;
+  const std::string doc = std::string(kSimulateDoc) + ForceArgsDoc() + kSimulateArgsDoc +
+                          ModelArgsDoc() + kSimulateStateDoc + kUnits;
   DefRobotFunction(m, "simulate", &Simulate, doc.c_str(), py::arg("alpha") = py::none(),
                    py::arg("x0") = py::none(), py::arg("u0") = py::none(),
                    py::arg("v0") = py::none(), py::arg("y0") = defaults.y0,

@@ -123,8 +123,8 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
 }  // namespace
 
 void BindSolve(py::module_& m) {
-  const std::string solve_doc = std::string(kSolveDoc) + kForcingArgsDoc + kPhaseDoc +
-                                kModelArgsDoc + kMarginArgsDoc + kStabilityArgDoc +
+  const std::string solve_doc = std::string(kSolveDoc) + ForceArgsDoc(false) + kPhaseDoc +
+                                ModelArgsDoc() + MarginArgsDoc() + kStabilityArgDoc +
                                 kFromRestArgsDoc + "\n" + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
@@ -134,8 +134,8 @@ void BindSolve(py::module_& m) {
         py::arg("stick_margin") = Margins{}.stick, py::arg("stability").noconvert() = false,
         py::arg("from_rest_starts") = StartGrid{}.Text(),
         py::arg("threads") = AttractorOptions{}.threads);
-  const std::string trajectory_doc = std::string(kTrajectoryDoc) + kForcingArgsDoc + kPhaseDoc +
-                                     kModelArgsDoc + kTrajectoryReturnsDoc + kUnits;
+  const std::string trajectory_doc = std::string(kTrajectoryDoc) + ForceArgsDoc(false) + kPhaseDoc +
+                                     ModelArgsDoc() + kTrajectoryReturnsDoc + kUnits;
   m.def("trajectory", &Trajectory, trajectory_doc.c_str(), py::kw_only(), py::arg("A") = py::none(),
         py::arg("c"), py::arg("phi0") = py::none(), py::arg("cos") = py::none(),
         py::arg("sin") = py::none(), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,

@@ -366,7 +366,7 @@ void BindSolveGrid(py::module_& m) {
   }
   m.attr("CONDITIONS") = conditions;
   const std::string doc =
-      std::string(kSolveGridDoc) + kModelArgsDoc + kMarginArgsDoc + kSolveGridOptionsDoc + kUnits;
+      std::string(kSolveGridDoc) + ModelArgsDoc() + MarginArgsDoc() + kSolveGridOptionsDoc + kUnits;
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
         py::arg("margin") = Margins{}.clearance,

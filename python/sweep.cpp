@@ -13,7 +13,9 @@
 
 #include "bindings.hpp"
 #include "capsubot/io/io.hpp"
+#include "capsubot/job/reach_effort_settings.hpp"
 #include "capsubot/job/sweep_job.hpp"
+#include "capsubot/job/sweep_setting_tables.hpp"
 #include "capsubot/job/sweep_settings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "sweep_keywords.hpp"
@@ -53,28 +55,47 @@ constexpr const char* kSweepDoc =
     "problem P1, P2 or P3 (section 7) or the fastest motion from rest (section 13) at every "
     "point of a grid of parameters, as `capsubot sweep`: its CSV as NumPy columns.\n\n"
     "Arguments (keyword only, named as the options of `capsubot sweep`; None: the option not "
-    "given, the mode's default):\n"
-    "    grid    list of axes (the first slowest): 'name=lo:hi:n' (n equally spaced values, lo\n"
-    "            and hi may be pi or -pi), 'name=lo:hi:n:log' or 'name=v1,v2,...'; name a model\n"
-    "            parameter (A, c, phi0, T0, e, margin, margin_stroke, stick_margin, alpha,\n"
-    "            rho_max, bound, a1.., b1..); alpha finds every orbit of the robot\n"
-    "    optimize  None (the orbit of the force), 'phi0' (P1), 'forcing' (P2), 'fourier' (P3)\n"
-    "            or 'reach' (the fastest motion from rest)\n"
-    "    A, c, phi0, cos, sin  the force, except its gridded parts (orbit and phi0 modes)\n"
-    "    T0, e, margin, margin_stroke, stick_margin  the model and the margins of a robust gait\n"
-    "            (reach: margin_stroke and stick_margin default to 0.02)\n"
-    "    stability  add spectral_radius, lambda_re, lambda_im, stable and loss (not reach)\n"
-    "    rho_max, stable_only  with optimize: the largest spectral radius (stable_only: 1)\n"
-    "    scan_points  phi0: points of the initial scan of phi0\n"
-    "    bound   forcing, fourier, reach: the force bound, 0 < bound <= T0 (None: T0)\n"
-    "    harmonics  fourier: the number K of harmonics\n"
-    "    starts, hops, global_algorithm, local_algorithm, global_evaluations  forcing,\n"
-    "            fourier, reach: the search effort, as in optimize()\n"
-    "    alpha   reach: a fixed mass ratio 0 < alpha < 1 (None: optimised too)\n"
-    "    from_rest_starts, reach_starts, reach_evaluations, reach_local_evaluations  reach:\n"
-    "            the grids of starts and the evaluation budgets of the search from rest\n"
-    "    threads worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
-    "            result does not depend on it\n\n"
+    "given, the mode's default; optimize=None: the orbit of the force at every point):\n";
+
+// The arguments, from the library's tables of the sweep's settings (the meanings --help shows),
+// but the few the command line declares by hand too.
+std::string SweepArgumentsDoc() {
+  const SweepSettings d;
+  const FlagNames& k = kSweepKeywords;
+  constexpr DefaultInDoc kShown = DefaultInDoc::kSignature;  // None: the mode's default
+  return ArgumentLines("grid",
+                       "list of axes (the first slowest): 'name=lo:hi:n' (n equally spaced "
+                       "values, lo and hi may be pi or -pi), 'name=lo:hi:n:log' or "
+                       "'name=v1,v2,...'; name a model parameter (A, c, phi0, T0, e, margin, "
+                       "margin_stroke, stick_margin, alpha, rho_max, bound, a1.., b1..); alpha "
+                       "finds every orbit of the robot") +
+         TableArgumentLines(SweepModeSettings(), d, k, {"optimize"}, kShown) +
+         ArgumentLines("A, c, phi0, cos, sin",
+                       "the force, except its gridded parts (orbit and phi0 modes)") +
+         ModelArgsDoc() + MarginArgsDoc() +
+         "            (reach: margin_stroke and stick_margin default to 0.02)\n" +
+         TableArgumentLines(SweepModeSettings(), d, k, {"stability"}, kShown) +
+         TableArgumentLines(SweepGaitSettings(), d.search.gait, k, {"rho_max"}, kShown) +
+         ArgumentLines("stable_only", "with optimize: the same as rho_max = 1") +
+         TableArgumentLines(SweepModeSettings(), d, k, {"scan_points"}, kShown) +
+         TableArgumentLines(SweepGaitSettings(), d.search.gait, k, {"bound"}, kShown) +
+         TableArgumentLines(SweepSearchSettings(), d.search, k, {"harmonics"}, kShown) +
+         ArgumentLines("starts",
+                       "with optimize forcing|fourier|reach: local polishes of the multistart, "
+                       ">= 1 (default: 10 for forcing and reach's seed, 20 for fourier)") +
+         TableArgumentLines(SweepSearchSettings(), d.search, k,
+                            {"hops", "global_algorithm", "local_algorithm", "global_evaluations"},
+                            kShown) +
+         TableArgumentLines(SweepModeSettings(), d, k, {"alpha"}, kShown) +
+         ArgumentLines("from_rest_starts, reach_starts",
+                       "with optimize reach: the grids 'NXxNPSI' of the seed's check from rest "
+                       "and of the starts inside the search") +
+         TableArgumentLines(ReachEffortSettings(), ReachEffort{}, k,
+                            {"reach_evaluations", "reach_local_evaluations"}, kShown) +
+         kThreadsArgDoc + "\n";
+}
+
+constexpr const char* kSweepReturnsDoc =
     "Returns a dict: columns (the CSV of `capsubot sweep` as NumPy arrays, one element per grid "
     "point (per orbit with a grid over alpha), the header's names: the gridded parameters, "
     "then phi1, alpha, u, v_plus, I, v_mean, x_min, x_max, valid, violations, ... as the "
@@ -152,7 +173,7 @@ py::dict Sweep(const std::vector<std::string>& grid, std::optional<std::string> 
 }  // namespace
 
 void BindSweep(py::module_& m) {
-  const std::string doc = std::string(kSweepDoc) + kUnits;
+  const std::string doc = std::string(kSweepDoc) + SweepArgumentsDoc() + kSweepReturnsDoc + kUnits;
   m.def("sweep", &Sweep, doc.c_str(), py::kw_only(), py::arg("grid"),
         py::arg("optimize") = py::none(), py::arg("A") = py::none(), py::arg("c") = py::none(),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),

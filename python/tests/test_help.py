@@ -94,3 +94,46 @@ def test_each_function_has_the_modules_parameters_defaults_and_return_kind(name)
 def test_the_module_has_functions_to_check():
     # The module's thirteen functions: a parse that found none would check nothing.
     assert len(module_functions()) == 13
+
+
+NAMES = re.compile(r"[A-Za-z_]\w*(?:, [A-Za-z_]\w*)*,?")
+
+
+def documented_arguments(doc):
+    """The names the docstring documents: each argument line is four spaces, the names
+    (comma-separated; a list ending with a comma goes on on the next line), then the text, at
+    column 12 or after two spaces."""
+    names, lines = set(), doc.splitlines()
+    for i, line in enumerate(lines):
+        if not line.startswith("    ") or line.startswith("     "):
+            continue
+        match = NAMES.match(line, 4)
+        if match is None:
+            continue
+        end, group = match.end(), match.group(0)
+        if not (line[end:end + 2] == "  " or (end <= 11 and line[end:12].isspace()
+                                              and line[12:13] not in ("", " "))
+                or (group.endswith(",") and end == len(line))):
+            continue
+        while group.endswith(",") and i + 1 < len(lines):
+            i += 1
+            more = NAMES.match(lines[i], len(lines[i]) - len(lines[i].lstrip()))
+            group += " " + more.group(0)
+        names.update(name for name in group.rstrip(",").split(", "))
+    return names
+
+
+@pytest.mark.parametrize("name", module_functions())
+def test_the_docstring_documents_the_arguments_of_the_signature(name):
+    # Each keyword argument, and no other (the library's tables write most of those lines,
+    # python/keyword_doc.hpp).
+    documented = documented_arguments(getattr(capsubot, name).__doc__)
+    arguments = [a for a, _, _ in parameters(module_signature(name))]
+    assert [a for a in arguments if a not in documented] == []
+    assert sorted(documented - set(arguments)) == []
+
+
+def test_the_parse_of_argument_lines_finds_each_form():
+    doc = ("f(*, a) -> dict\n\nArguments:\n    a       one\n    long_name  two\n"
+           "    b, c  three\n    d, e,\n            f  four\n            not_a_name here\n")
+    assert documented_arguments(doc) == {"a", "long_name", "b", "c", "d", "e", "f"}

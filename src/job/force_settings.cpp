@@ -17,7 +17,7 @@ const SettingTable<ForceText>& ForceSettings() {
        "or a multiple of pi (pi, -pi/2, 2*pi)"},
       {"sin", &F::sin,
        "Fourier force instead of A: sine coefficients b_1,...,b_K of F = c + sum_k (a_k cos "
-       "k(phi+phi0) + b_k sin k(phi+phi0)), comma separated"},
+       "k(phi+phi0) + b_k sin k(phi+phi0))"},
       {"cos", &F::cos,
        "cosine coefficients a_1,...,a_K of the Fourier force (as many as {sin}; default all 0)"},
       {"waveform", &F::waveform,
@@ -25,10 +25,10 @@ const SettingTable<ForceText>& ForceSettings() {
        "({levels}, {switches}); default: the kind of the parts given"},
       {"levels", &F::levels,
        "pulse force: levels L_1,...,L_N (1 <= N <= 16) of G(s) = L_j for s in [s_j, s_j+1), "
-       "F(phi) = G(phi + phi0), comma separated"},
+       "F(phi) = G(phi + phi0)"},
       {"switches", &F::switches,
        "pulse force: switching phases s_1 < ... < s_N in [0, 2 pi) [rad] of the motor phase, one "
-       "per level, comma separated (multiples of pi as pi/2, 3*pi/2)"}};
+       "per level (multiples of pi as pi/2, 3*pi/2)"}};
   return table;
 }
 

@@ -19,7 +19,7 @@ const SettingTable<OptimizeSettings>& OptimizeProblemSettings() {
         "phase (P1: best phi0 for given {A}, {c}), forcing (P2: best A, c, phi0 with A + c <= "
         "{bound}), fourier (P3: best K-harmonic force with max |F| <= {bound}) or reach (the "
         "fastest motion from rest: A, c, alpha with A + c <= {bound}, simulated, seeded with the "
-        "robust P2 gait); P1, P2 and P3 name the first three; default: the main job"},
+        "robust P2 gait); default: the main job"},
        {"A", &O::A, "amplitude A >= 0 of F = A sin(phi + phi0) + c, in units of (m1+m2) omega^2 L"},
        {"c", &O::c, "mean force c > 0 of F (same unit)"},
        {"alpha", &O::alpha, "a fixed mass ratio 0 < alpha < 1 (default: alpha is optimised too)"},

@@ -25,7 +25,7 @@ const SettingTable<SweepSettings>& SweepModeSettings() {
         "the best gait at every point: phi0 (P1: the impact phase for the given force shape; "
         "adds column phi0), forcing (P2: A, c, phi0 with A + c <= {bound}; adds A, c, phi0), "
         "fourier (P3: a {harmonics} K force with max |F| <= {bound}; adds c, a1..aK, b1..bK) or "
-        "reach (the fastest motion from rest, as `optimize --problem reach`: A, c, phi0, alpha, "
+        "reach (the fastest motion from rest, as optimize's problem reach: A, c, phi0, alpha, "
         "mean_velocity, ..., the robust seed's seed_v_mean and seed_mean_velocity_from_rest; "
         "seconds per point); adds a status column"},
        {"scan_points", &S::scan_points, scan_points.c_str()},
