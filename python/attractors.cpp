@@ -73,7 +73,7 @@ std::string AttractorsArgsDoc() {
   return MassRatioArgDoc() +
          ArgumentLines("starts", "grid of starts 'NXxNPSI' (positions x phases), default '8x8'") +
          ArgumentLines("n_x, n_psi", "the grid of starts as two numbers, instead of starts") +
-         MotionArgsDoc() + kThreadsArgDoc;
+         MotionArgsDoc() + ThreadsArgDoc();
 }
 
 constexpr const char* kAttractorsReturnsDoc =

@@ -98,7 +98,7 @@ constexpr const char* kBasinsReturnsDoc =
 
 void BindBasins(py::module_& m) {
   const std::string doc = std::string(kBasinsDoc) + ForceArgsDoc() + ModelArgsDoc() +
-                          MassRatioArgDoc() + kBasinsArgsDoc + kThreadsArgDoc + kBasinsReturnsDoc +
+                          MassRatioArgDoc() + kBasinsArgsDoc + ThreadsArgDoc() + kBasinsReturnsDoc +
                           kUnits;
   const MotionOptions mo;
   const VelocityPlane velocity;

@@ -113,7 +113,7 @@ constexpr const char* kBifurcationReturnsDoc =
 
 void BindBifurcation(py::module_& m) {
   const std::string doc = std::string(kBifurcationDoc) + ForceArgsDoc() + ModelArgsDoc() +
-                          kBifurcationArgsDoc + kThreadsArgDoc + kBifurcationReturnsDoc + kUnits;
+                          kBifurcationArgsDoc + ThreadsArgDoc() + kBifurcationReturnsDoc + kUnits;
   const BifurcationOptions o;
   const MotionOptions& mo = o.motion;
   DefRobotFunction(

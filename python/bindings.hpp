@@ -86,13 +86,6 @@ FromRestOptions FromRestCheck(const std::string& starts, int threads);
 /// The default grid of a basin map, as `capsubot basins --starts`.
 inline constexpr const char* kDefaultBasinStarts = "64x64";
 
-/// The docstring lines of the from-rest check (from_rest_starts, threads).
-inline constexpr const char* kFromRestArgsDoc =
-    "    from_rest_starts  grid 'NXxNPSI' of starts from rest on which a gait is checked\n"
-    "            (capsubot documentation, model section 12; key from_rest)\n"
-    "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
-    "            are lowered to that); the result does not depend on it\n";
-
 /// Thrown by SignalCheck when a Python signal handler raised (Ctrl-C: KeyboardInterrupt). The
 /// Python error stays set; RunWithoutGil raises it once the library call has unwound.
 struct Interrupted : std::exception {

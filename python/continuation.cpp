@@ -161,7 +161,6 @@ constexpr const char* kContinueDoc =
     "    phi0    phase of the force F = A sin(psi + phi0) + c at the start's phase psi [rad]\n";
 
 constexpr const char* kContinueArgsDoc =
-    "    alpha   mass ratio m2/(m1+m2) of the robot, 0 < alpha < 1\n"
     "    param   the parameter followed: A, c, alpha, T0, e, phi0, a1..a16, b1..b16\n"
     "    from_, to  the range; the robot's own value of param must lie in it\n"
     "    x0, u0, v0, psi  the start state (all four), or\n"
@@ -174,11 +173,10 @@ constexpr const char* kContinueArgsDoc =
     "            follow ('fold', 'period_doubling', 'grazing', 'speed_extremum') in (param,\n"
     "            param2), param2 over [from2, to2] (all four, or none)\n"
     "    max_points  points of the branch (and of the curve), both directions together, >= 2\n"
-    "    initial_step, min_step, max_step  arclength steps\n"
-    "    max_period  largest period searched at the start, 1 to 64\n"
-    "    step    step of the central finite differences of the Jacobians\n"
-    "    chatter_velocity  the simulator's chatter cut-off [omega L]\n\n"
-    "Returns a dict: parameter, status ('ok', 'no_motion', 'event_limit', 'not_run'), message, "
+    "    initial_step, min_step, max_step  arclength steps\n";
+
+constexpr const char* kContinueReturnsDoc =
+    "\nReturns a dict: parameter, status ('ok', 'no_motion', 'event_limit', 'not_run'), message, "
     "start_index, ends {lower, upper: {end, <param>}}, points {<param>, arclength, x, u, v, "
     "psi, mode, period, impacts_right, impacts_left, mean_velocity, spectral_radius, stable, "
     "label: 1-D NumPy arrays; multipliers: a complex array, points x largest dimension, NaN "
@@ -197,8 +195,9 @@ constexpr const char* kContinueArgsDoc =
 }  // namespace
 
 void BindContinuation(py::module_& m) {
-  const std::string doc =
-      std::string(kContinueDoc) + ForceArgsDoc() + ModelArgsDoc() + kContinueArgsDoc + kUnits;
+  const std::string doc = std::string(kContinueDoc) + ForceArgsDoc() + ModelArgsDoc() +
+                          MassRatioArgDoc() + kContinueArgsDoc + ShootingArgsDoc() +
+                          kContinueReturnsDoc + kUnits;
   const ContinuationOptions o;
   DefRobotFunction(
       m, "continue_branch", &ContinueBranchDict, doc.c_str(), py::arg("alpha"), py::arg("param"),

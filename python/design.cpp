@@ -287,7 +287,7 @@ std::string RunArgsDoc() {
       "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
       "            search and of the local polish, per direction\n"
       "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
-      "    threads worker threads of the simulated starts (0: all cores; more than 4 per core\n"
+      "    threads worker threads of the simulated starts (0: all cores; more than {} per core\n"
       "            are lowered to that); the result does not depend on it\n"
       "            (with from_rest or drive only; None: '{}', '{}', {}, {}, {}, {}; with drive\n"
       "            the grids are '{}' and '{}')\n"
@@ -304,7 +304,7 @@ std::string RunArgsDoc() {
       "    drive_evaluations, drive_polishes, drive_local_evaluations, drive_refine_evaluations,\n"
       "    drive_screens  the budgets of the drive search, as `capsubot design` (None: {}, {}, "
       "{}, {}, {})\n\n",
-      d.from_rest_starts.Text(), d.reach_starts.Text(), d.reach_evaluations,
+      kThreadsPerCore, d.from_rest_starts.Text(), d.reach_starts.Text(), d.reach_evaluations,
       d.reach_local_evaluations, d.reach_seconds, d.threads, StartGrid{}.Text(),
       StartGrid{effort.n_x, effort.n_psi}.Text(), kDesignDriveHarmonics, kDesignDrivePulseLevels,
       effort.drive_evaluations, effort.drive_polishes, effort.drive_local_evaluations,

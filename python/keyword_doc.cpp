@@ -1,5 +1,7 @@
 #include "keyword_doc.hpp"
 
+#include <fmt/format.h>
+
 #include <cstddef>
 #include <regex>
 #include <sstream>
@@ -10,6 +12,7 @@
 #include "capsubot/job/motion_settings.hpp"
 #include "capsubot/job/params_settings.hpp"
 #include "capsubot/job/shooting_settings.hpp"
+#include "capsubot/model/limits.hpp"
 
 namespace capsubot::python {
 namespace {
@@ -51,6 +54,22 @@ std::string ArgumentLines(const std::string& name, const std::string& text) {
     lines += std::string(kTextColumn, ' ') + line + '\n';
   }
   return lines;
+}
+
+std::string ThreadsCapDoc() {
+  return fmt::format("more than {} per core are lowered to that", kThreadsPerCore);
+}
+
+std::string ThreadsArgDoc(const std::string& of) {
+  return ArgumentLines("threads", "worker threads" + of + " (0: all cores; " + ThreadsCapDoc() +
+                                      "); the result does not depend on it");
+}
+
+std::string FromRestArgsDoc() {
+  return ArgumentLines("from_rest_starts",
+                       "grid 'NXxNPSI' of starts from rest on which a gait is checked (capsubot "
+                       "documentation, model section 12; key from_rest)") +
+         ThreadsArgDoc(" of the simulated starts");
 }
 
 std::string ForceArgsDoc(bool pulse) {

@@ -94,10 +94,16 @@ std::string MotionArgsDoc();
 /// (ShootingSettings).
 std::string ShootingArgsDoc();
 
-/// The docstring line of the worker threads of a function whose result does not depend on them.
-inline constexpr const char* kThreadsArgDoc =
-    "    threads worker threads (0: all cores; more than 4 per core are lowered to that); the\n"
-    "            result does not depend on it\n";
+/// The rule of the number of worker threads: "more than 4 per core are lowered to that"
+/// (kThreadsPerCore).
+std::string ThreadsCapDoc();
+
+/// The docstring line of the worker threads (`of`: " of the simulated starts") of a function
+/// whose result does not depend on them.
+std::string ThreadsArgDoc(const std::string& of = "");
+
+/// The docstring lines of the check of a gait from rest: from_rest_starts, threads.
+std::string FromRestArgsDoc();
 
 /// The keyword of each margin of a robust gait (Margins' fields).
 inline const FlagNames kMarginKeywords = {

@@ -128,8 +128,7 @@ std::string OptimizeArgumentsDoc() {
   const FlagNames& k = kOptimizeKeywords;
   constexpr DefaultInDoc kNone = DefaultInDoc::kNoneMeans;
   return TableArgumentLines(OptimizeProblemSettings(), d, k, {"problem", "A", "c"}, kNone) +
-         ModelArgsDoc() + MarginArgsDoc() +
-         "            (margin_stroke and stick_margin default to 0.02 here)\n" + kFromRestArgsDoc +
+         ModelArgsDoc() + MarginArgsDoc() + FromRestArgsDoc() +
          TableArgumentLines(GaitBoundSettings(), d.search.gait, k, {"bound", "rho_max"}, kNone) +
          ArgumentLines("stable", "the same as rho_max = 1 (not with rho_max)") +
          TableArgumentLines(SearchSettings(), d.search, k, {"max_time"}, DefaultInDoc::kSignature) +

@@ -125,7 +125,7 @@ py::dict Trajectory(std::optional<double> A, double c, std::optional<double> phi
 void BindSolve(py::module_& m) {
   const std::string solve_doc = std::string(kSolveDoc) + ForceArgsDoc(false) + kPhaseDoc +
                                 ModelArgsDoc() + MarginArgsDoc() + kStabilityArgDoc +
-                                kFromRestArgsDoc + "\n" + kSolveReturnsDoc + kUnits;
+                                FromRestArgsDoc() + "\n" + kSolveReturnsDoc + kUnits;
   m.def("solve", &Solve, solve_doc.c_str(), py::kw_only(), py::arg("A") = py::none(), py::arg("c"),
         py::arg("phi0") = py::none(), py::arg("cos") = py::none(), py::arg("sin") = py::none(),
         py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,

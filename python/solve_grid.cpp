@@ -343,11 +343,8 @@ constexpr const char* kSolveGridDoc =
     "    c       mean force [force]\n"
     "    phi0    motor phase at the impact [rad]\n";
 
-constexpr const char* kSolveGridOptionsDoc =
-    "    stability  also spectral_radius and stable (capsubot documentation, model section 8)\n"
-    "    threads number of threads, 1..1024 (more than 4 per core are lowered to that); None:\n"
-    "            all cores\n\n"
-    "Returns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "
+constexpr const char* kSolveGridReturnsDoc =
+    "\nReturns a dict of arrays of the broadcast shape (the columns of `capsubot sweep`): phi1 "
     "(rad), alpha, u (omega L), v_plus (omega L), I (L), v_mean (omega L), x_min, x_max (L), "
     "valid (bool), violations (uint32 bit mask: bit i set when condition CONDITIONS[i] is "
     "violated); with stability, spectral_radius and stable (bool). NaN where a quantity does "
@@ -366,7 +363,12 @@ void BindSolveGrid(py::module_& m) {
   }
   m.attr("CONDITIONS") = conditions;
   const std::string doc =
-      std::string(kSolveGridDoc) + ModelArgsDoc() + MarginArgsDoc() + kSolveGridOptionsDoc + kUnits;
+      std::string(kSolveGridDoc) + ModelArgsDoc() + MarginArgsDoc() +
+      ArgumentLines("stability",
+                    "also spectral_radius and stable (capsubot documentation, model section 8)") +
+      ArgumentLines("threads", fmt::format("number of threads, 1..{} ({}); None: all cores",
+                                           kMaxThreads, ThreadsCapDoc())) +
+      kSolveGridReturnsDoc + kUnits;
   m.def("solve_grid", &SolveGrid, doc.c_str(), py::kw_only(), py::arg("A"), py::arg("c"),
         py::arg("phi0"), py::arg("T0") = Params{}.T0, py::arg("e") = Params{}.e,
         py::arg("margin") = Margins{}.clearance,

@@ -92,7 +92,7 @@ std::string SweepArgumentsDoc() {
                        "and of the starts inside the search") +
          TableArgumentLines(ReachEffortSettings(), ReachEffort{}, k,
                             {"reach_evaluations", "reach_local_evaluations"}, kShown) +
-         kThreadsArgDoc + "\n";
+         ThreadsArgDoc() + "\n";
 }
 
 constexpr const char* kSweepReturnsDoc =

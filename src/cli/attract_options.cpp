@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <stdexcept>
 
 #include "capsubot/cli/progress.hpp"
 #include "capsubot/cli/setting_options.hpp"

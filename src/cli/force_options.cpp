@@ -57,6 +57,8 @@ void AddForcingOptions(CLI::App& cmd, ForcingOptions& o, bool with_phase) {
         std::pair("--levels", "L1,L2,..."), std::pair("--switches", "s1,s2,...")}) {
     cmd.get_option(flag)->type_name(list);  // the comma lists, as typed
   }
+  CLI::Option* switches = cmd.get_option("--switches");  // phases, in ParsePhase's syntax
+  switches->description(switches->get_description() + " (multiples of pi as pi/2, 3*pi/2)");
 }
 
 std::vector<double> ForcingOptions::Sines() const {

@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <stdexcept>
+
 #include "capsubot/io/io.hpp"
 
 namespace capsubot::cli {

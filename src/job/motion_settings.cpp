@@ -7,7 +7,7 @@ const SettingTable<MotionOptions>& MotionSettings() {
   static const SettingTable<MotionOptions> table = {
       {"transient", &M::transient, "forcing periods simulated before the motion is recorded, >= 0"},
       {"record", &M::record,
-       "forcing periods recorded (period, impacts, mean velocity), 2 max-period <= N <= 1e7 "
+       "forcing periods recorded (period, impacts, mean velocity), 2 {max_period} <= N <= 1e7 "
        "(about 50 bytes a period per thread)"},
       {"max_period", &M::max_period,
        "largest period searched, in forcing periods (0 is reported when none is found)"},

@@ -11,7 +11,8 @@ const SettingTable<ReachEffort>& ReachEffortSettings() {
        "from-rest evaluations of the reach search's local polish (Sbplx), >= 0"},
       {"reach_seconds", &R::max_seconds,
        "wall-clock limit of the reach search in seconds, looked at between two evaluations of "
-       "its grid (the re-checks come on top)"},
+       "its grid (the re-checks come on top); when it stops the search, the result depends on "
+       "the machine's speed"},
       {"drive_evaluations", &R::drive_evaluations,
        "from-rest evaluations of the first global stage (Halton points of the box) of each "
        "Fourier drive K >= 2 ({harmonics}) and pulse drive, >= 1"},

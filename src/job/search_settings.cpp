@@ -16,7 +16,7 @@ const SettingTable<GaitRequirements>& GaitBoundMeanings() {
        "the force bound A + c (max |F|) <= bound, 0 < bound <= T0, same unit as A (default: "
        "T0)"},
       {"rho_max", &G::rho_max,
-       "largest spectral radius of the impact map (docs/model.md sections 8, 12); inf: no "
+       "largest spectral radius of the impact map (docs/model.md sections 8, 12); infinity: no "
        "stability requirement"}};
   return table;
 }
@@ -34,7 +34,7 @@ const SettingTable<SearchRequest>& SearchMeanings() {
   static const SettingTable<SearchRequest> table = {
       {"max_time", &S::max_time,
        "time limit [s] of each optimisation; when reached, the best point so far is reported "
-       "with status max_time (inf: none)"},
+       "with status max_time (infinity: none)"},
       {"harmonics", &S::harmonics, "number K of harmonics of the Fourier force (K = 1: the sine)"},
       {"global_algorithm", &S::global_algorithm,
        "global stage: multistart (scan + local polishes) or an NLopt algorithm: GN_ISRES, "
@@ -54,8 +54,21 @@ const SettingTable<GaitRequirements>& GaitBoundSettings() {
 }
 
 const SettingTable<SearchRequest>& SearchSettings() {
-  static const SettingTable<SearchRequest> table =
-      WithModes(SearchMeanings(), OptimizeSettingUses(), OptimizeModes());
+  static const SettingTable<SearchRequest> table = [] {
+    SettingTable<SearchRequest> t =
+        WithModes(SearchMeanings(), OptimizeSettingUses(), OptimizeModes());
+    for (SettingRow<SearchRequest>& row : t) {
+      if (std::string(row.field) != "harmonics") continue;
+      // Reach searches the sine unless a Fourier drive is asked for.
+      row.default_shown = false;
+      row.help = KeptText(fmt::format(
+          "{}; default: {}, but reach searches the sine unless {{harmonics}} or {{waveform}} "
+          "fourier is given (K >= 2: the fastest Fourier drive, climbed from the sine: ladder "
+          "and speed_ratio_to_sine in the result)",
+          row.help, SearchRequest{}.harmonics));
+    }
+    return t;
+  }();
   return table;
 }
 

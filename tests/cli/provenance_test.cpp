@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,7 @@ struct Command {
   double A = 0.5, rho_max = 1;
   std::vector<std::string> grid;
   bool stable = false;
+  int samples = 100;
   int threads = 0;
   std::string output;
 
@@ -35,6 +37,7 @@ struct Command {
     app.add_option("--rho-max", rho_max)->capture_default_str()->needs(optimize);
     app.add_option("--threads", threads)->capture_default_str();
     app.add_option("-o,--output", output);
+    app.add_option("--samples", samples)->capture_default_str();
     std::reverse(args.begin(), args.end());
     app.parse(args);
   }
@@ -47,16 +50,23 @@ TEST(Provenance, GivenValuesAndDefaultsInTheCommandsOrder) {
                      {"--grid", "phi0=-pi:pi:5"},
                      {"--grid", "e=0:1:3"},
                      {"--stable", ""},
-                     {"--threads", "2"}}));  // --rho-max: its default needs --optimize
+                     {"--threads", "2"},
+                     {"--samples", "100"}}));  // --rho-max: its default needs --optimize
 }
 
 TEST(Provenance, AnOutputLeavesOutWhatDoesNotShapeIt) {
-  const Command c({"--A", "0.25", "--threads", "2", "-o", "out file.csv", "--optimize"});
-  const Provenance p = OutputProvenance(c.app, {"--stable"});
-  EXPECT_EQ(p.options, (Options{{"--A", "0.25"}, {"--optimize", ""}, {"--rho-max", "1"}}));
-  EXPECT_EQ(p.CommandLine(),
-            std::string("capsubot ") + Version() + " run --A 0.25 --optimize --rho-max 1");
+  const Command c(
+      {"--A", "0.25", "--stable", "--threads", "2", "-o", "out file.csv", "--optimize"});
+  const Provenance p = OutputProvenance(c.app, {"--stable"});  // given, but unused
+  EXPECT_EQ(
+      p.options,
+      (Options{{"--A", "0.25"}, {"--optimize", ""}, {"--rho-max", "1"}, {"--samples", "100"}}));
+  EXPECT_EQ(p.CommandLine(), std::string("capsubot ") + Version() +
+                                 " run --A 0.25 --optimize --rho-max 1 --samples 100");
   EXPECT_EQ(p.CommentLine(), "# " + p.CommandLine() + "\n");
+  // The JSON of a result leaves out what shapes only the CSV files too (--samples).
+  EXPECT_EQ(JsonProvenance(c.app).options,
+            (Options{{"--A", "0.25"}, {"--stable", ""}, {"--optimize", ""}, {"--rho-max", "1"}}));
 }
 
 TEST(Provenance, AValueThatIsNotOneShellWordIsQuoted) {

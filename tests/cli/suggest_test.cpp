@@ -15,7 +15,7 @@ TEST(Suggest, NearestIsTheCaseTwinElseTheClosestWithinAThird) {
   const std::vector<std::string> flags = {"--T0", "--e", "--threads", "--transient"};
   EXPECT_EQ(Nearest("--t0", flags), "--T0");                // case only
   EXPECT_EQ(Nearest("--thread", flags), "--threads");       // one edit
-  EXPECT_EQ(Nearest("--transeint", flags), "--transient");  // two edits in ten characters
+  EXPECT_EQ(Nearest("--transeint", flags), "--transient");  // two edits in eleven characters
   EXPECT_EQ(Nearest("--zzzzzz", flags), std::nullopt);      // nothing that close
   EXPECT_EQ(Nearest("anything", {}), std::nullopt);
 }

@@ -15,7 +15,8 @@ struct Command {
   CLI::App* parser = nullptr;
   std::function<int()> run;
   /// Whether the command as parsed distributes its work over the ranks of an MPI job
-  /// (ranks.hpp); empty: it never does, and main refuses it under mpirun with P > 1.
+  /// (capsubot/cluster/ranks.hpp); empty: it never does, and main refuses it under mpirun with P
+  /// > 1.
   std::function<bool()> distributed;
 };
 

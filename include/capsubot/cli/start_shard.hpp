@@ -1,7 +1,7 @@
 #pragma once
 // How `basins` and `attractors` run their map of starts: the whole map or `--shard K/N` (with
 // `--resume`, `--checkpoint-seconds`), and on the ranks of an MPI job when started by mpirun
-// (ranks.hpp). The run itself is the library's (capsubot/job/attractors_job.hpp).
+// (capsubot/cluster/ranks.hpp). The run itself is the library's (capsubot/job/attractors_job.hpp).
 
 #include <cstdint>
 #include <functional>
@@ -60,9 +60,9 @@ StartMapRun MapRun(const StartShardCliOptions& options, const CLI::App& cmd,
 
 /// Runs the map job whose options are `map` (those of `attractors`, or the map of `basins`):
 /// under mpirun rank 0 runs it and the other ranks compute the blocks of `work()` that it sends
-/// until it says stop (ranks.hpp); else this process runs it. `run` runs the job with the ranks'
-/// backend and the progress over the starts set in `map`, and returns what the command prints.
-/// Returns the exit status (0).
+/// until it says stop (capsubot/cluster/ranks.hpp); else this process runs it. `run` runs the job
+/// with the ranks' backend and the progress over the starts set in `map`, and returns what the
+/// command prints. Returns the exit status (0).
 int RunMapOnRanks(AttractorsJobOptions& map, const std::function<StartMapWork()>& work,
                   const std::function<std::string()>& run);
 
