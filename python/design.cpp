@@ -5,6 +5,7 @@
 // the keyword arguments.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "capsubot/io/io.hpp"
 #include "capsubot/job/design_job.hpp"
 #include "capsubot/job/design_settings.hpp"
+#include "capsubot/job/reach_effort_settings.hpp"
 #include "capsubot/model/limits.hpp"
 #include "capsubot/report/design_json.hpp"
 #include "design_keywords.hpp"
@@ -232,33 +234,12 @@ py::dict DesignDict(const std::optional<std::string>& config, const std::vector<
   }
 }
 
-// `text` filled into lines of at most kDocWidth characters: the first after `line` (the
-// argument's name), the others after `indent`.
-constexpr std::size_t kDocWidth = 92;
-
-std::string Fill(const std::string& text, std::string line, const std::string& indent) {
-  std::string out;
-  bool fresh = true;  // no word on the line yet
-  for (const std::string& word : SplitText(text, ' ')) {
-    if (!fresh && line.size() + 1 + word.size() > kDocWidth) {
-      out += line + "\n";
-      line = indent;
-      fresh = true;
-    }
-    line += (fresh ? "" : " ") + word;
-    fresh = false;
-  }
-  return out + line + "\n";
-}
-
 // The docstring lines of the robot's settings, from the library's table.
 std::string RobotArgsDoc() {
   std::string doc;
   const std::vector<DesignRobotSetting>& settings = DesignRobotSettings();
   for (std::size_t i = 0; i < settings.size(); ++i) {
-    std::string first = "    " + RobotKeywords()[i];
-    first += first.size() < 12 ? std::string(12 - first.size(), ' ') : "  ";
-    doc += Fill(settings[i].help, first, std::string(12, ' '));
+    doc += ArgumentLines(RobotKeywords()[i], settings[i].help);
   }
   return doc;
 }
@@ -276,39 +257,61 @@ constexpr const char* kDesignDoc =
     "[10, 40])\n";
 
 // The run's arguments, with their defaults (None) from the library.
+// The default of a grid of starts: `one`'s, and the drive design's when it differs.
+std::string GridDefaults(const StartGrid& one, const StartGrid& drive) {
+  return one.Text() == drive.Text()
+             ? "'" + one.Text() + "'"
+             : fmt::format("'{}' ('{}' with drive)", one.Text(), drive.Text());
+}
+
 std::string RunArgsDoc() {
   const DesignFromRestPart d;
   const ReachEffort effort;
-  return fmt::format(
-      "    from_rest  also find the fastest motion reached from rest in each direction\n"
-      "            (key from_rest_best; simulated, a few seconds)\n"
-      "    from_rest_starts  grid 'NXxNPSI' of starts on which the best robots are re-checked\n"
-      "    reach_starts  grid 'NXxNPSI' of starts inside the search\n"
-      "    reach_evaluations, reach_local_evaluations  from-rest evaluations of the global\n"
-      "            search and of the local polish, per direction\n"
-      "    reach_seconds  wall-clock limit of the search stages [s], > 0\n"
-      "    threads worker threads of the simulated starts (0: all cores; more than {} per core\n"
-      "            are lowered to that); the result does not depend on it\n"
-      "            (with from_rest or drive only; None: '{}', '{}', {}, {}, {}, {}; with drive\n"
-      "            the grids are '{}' and '{}')\n"
-      "    band_levels  the levels of the gait's speed bands, fractions of the speed from rest in\n"
-      "            (0, 1): how far mu, e and m2 move, each way, before the mean speed from rest\n"
-      "            falls below each (capsubot documentation, design); None: [0.95]\n"
-      "    drive   'sine', 'fourier' or 'pulse': instead of the one-impact design, the fastest\n"
-      "            drive from rest of that waveform, the frequency over frequency_range and the\n"
-      "            inner mass over m2_range, under the motor's peak force_max (no force_*\n"
-      "            settings)\n"
-      "    force_max  with drive: the motor's peak force max |F_N| [N], > 0\n"
-      "    harmonics  with drive='fourier': harmonics K, 1 <= K <= 16 (None: {})\n"
-      "    pulse_levels  with drive='pulse': constant levels N, 2 <= N <= 16 (None: {})\n"
-      "    drive_evaluations, drive_polishes, drive_local_evaluations, drive_refine_evaluations,\n"
-      "    drive_screens  the budgets of the drive search, as `capsubot design` (None: {}, {}, "
-      "{}, {}, {})\n\n",
-      kThreadsPerCore, d.from_rest_starts.Text(), d.reach_starts.Text(), d.reach_evaluations,
-      d.reach_local_evaluations, d.reach_seconds, d.threads, StartGrid{}.Text(),
-      StartGrid{effort.n_x, effort.n_psi}.Text(), kDesignDriveHarmonics, kDesignDrivePulseLevels,
-      effort.drive_evaluations, effort.drive_polishes, effort.drive_local_evaluations,
-      effort.drive_refine_evaluations, effort.drive_screens);
+  return ArgumentLines("from_rest",
+                       "also find the fastest motion reached from rest in each direction (key "
+                       "from_rest_best; simulated, a few seconds); the next six arguments apply "
+                       "with from_rest or drive only") +
+         ArgumentLines("from_rest_starts",
+                       "grid 'NXxNPSI' of starts on which the best robots are re-checked; None: " +
+                           GridDefaults(d.from_rest_starts, StartGrid{})) +
+         ArgumentLines("reach_starts",
+                       "grid 'NXxNPSI' of starts inside the search; None: " +
+                           GridDefaults(d.reach_starts, StartGrid{effort.n_x, effort.n_psi})) +
+         ArgumentLines("reach_evaluations, reach_local_evaluations",
+                       fmt::format("from-rest evaluations of the global search and of the local "
+                                   "polish, per direction; None: {}, {}",
+                                   d.reach_evaluations, d.reach_local_evaluations)) +
+         ArgumentLines("reach_seconds",
+                       fmt::format("wall-clock limit of the search stages [s], > 0; when it stops "
+                                   "the search, the result depends on the machine's speed; None: "
+                                   "{}",
+                                   d.reach_seconds)) +
+         ArgumentLines("threads", fmt::format("worker threads of the simulated starts (0: all "
+                                              "cores; {}); the result does not depend on it; "
+                                              "None: {}",
+                                              ThreadsCapDoc(), d.threads)) +
+         ArgumentLines("band_levels",
+                       "the levels of the gait's speed bands, fractions of the speed from rest in "
+                       "(0, 1): how far mu, e and m2 move, each way, before the mean speed from "
+                       "rest falls below each (capsubot documentation, design); None: " +
+                           fmt::format("[{}]", fmt::join(DesignOneMode{}.band_levels, ", "))) +
+         ArgumentLines("drive",
+                       "'sine', 'fourier' or 'pulse': instead of the one-impact design, the "
+                       "fastest drive from rest of that waveform, the frequency over "
+                       "frequency_range and the inner mass over m2_range, under the motor's peak "
+                       "force_max (no force_* settings)") +
+         ArgumentLines("force_max", "with drive: the motor's peak force max |F_N| [N], > 0") +
+         ArgumentLines("harmonics", fmt::format("with drive='fourier': harmonics K, 1 <= K <= 16 "
+                                                "(None: {})",
+                                                kDesignDriveHarmonics)) +
+         ArgumentLines("pulse_levels", fmt::format("with drive='pulse': constant levels N, 2 <= N "
+                                                   "<= 16 (None: {})",
+                                                   kDesignDrivePulseLevels)) +
+         TableArgumentLines(ReachEffortSettings(), effort, {},
+                            {"drive_evaluations", "drive_polishes", "drive_local_evaluations",
+                             "drive_refine_evaluations", "drive_screens"},
+                            DefaultInDoc::kNoneMeans) +
+         "\n";
 }
 
 constexpr const char* kDesignDocTail =
