@@ -12,6 +12,7 @@
 #include "capsubot/job/optimize_settings.hpp"
 #include "capsubot/job/reach_effort_settings.hpp"
 #include "capsubot/job/search_settings.hpp"
+#include "capsubot/job/sweep_setting_tables.hpp"
 #include "job/setting_table_checks.hpp"
 #include "test_utils.hpp"
 
@@ -27,7 +28,8 @@ TEST(OptimizeTables, EachTableIsWellFormed) {
   EXPECT_TRUE(WellFormed(GaitBoundMeanings()));
   EXPECT_TRUE(WellFormed(SearchMeanings()));
   EXPECT_TRUE(WellFormed(GaitBoundSettings(), {"problem"}));  // opened by the problems
-  EXPECT_TRUE(WellFormed(SearchSettings(), {"problem"}));
+  // Opened by the problems; the note of harmonics' default names the waveform.
+  EXPECT_TRUE(WellFormed(SearchSettings(), {"problem", "waveform"}));
 }
 
 // The tables bound to the settings' values as the command binds them.
@@ -86,6 +88,30 @@ TEST(OptimizeTables, TheFieldsAreTheNamesOfTheJobsRules) {
   check(SearchSettings());
   check(ReachEffortSettings());
   EXPECT_GT(refused, 0);
+}
+
+// The harmonics' default is the fourier problem's: the help says that reach searches the sine
+// unless a Fourier drive is asked for, and shows no default of its own (which reach would not
+// take); sweep, whose reach takes no harmonics, keeps the plain meaning and its default.
+TEST(OptimizeTables, TheHarmonicsHelpSaysWhichDefaultReachTakes) {
+  int rows = 0;
+  for (const auto& row : SearchSettings()) {
+    if (std::string(row.field) != "harmonics") continue;
+    ++rows;
+    const std::string help = row.help;
+    EXPECT_NE(help.find("; default: " + std::to_string(SearchRequest{}.harmonics) +
+                        ", but reach searches the sine unless {harmonics} or {waveform} fourier"),
+              std::string::npos)
+        << help;
+    EXPECT_FALSE(row.default_shown);
+  }
+  for (const auto& row : SweepSearchSettings()) {
+    if (std::string(row.field) != "harmonics") continue;
+    ++rows;
+    EXPECT_EQ(std::string(row.help).find("reach searches"), std::string::npos) << row.help;
+    EXPECT_TRUE(row.default_shown);
+  }
+  EXPECT_EQ(rows, 2);
 }
 
 }  // namespace

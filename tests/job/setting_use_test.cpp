@@ -49,7 +49,7 @@ TEST(SettingUse, AHelpOpensWithTheRunsThatUseTheSetting) {
 // The helps of the search's settings in optimize and sweep say the modes their rules let use
 // them: each help is its meaning after an opening read here on its own terms ("with {field}
 // a|b: ", "with <main job> or {field} a|b: ", "with {field}: ", or none) and compared with the
-// job's table of uses.
+// job's table of uses. A job may follow the meaning with a note of its own ("; default: ...").
 template <class Options>
 void ExpectOpenedByTheirUses(const SettingTable<Options>& table,
                              const SettingTable<Options>& meanings,
@@ -64,9 +64,11 @@ void ExpectOpenedByTheirUses(const SettingTable<Options>& table,
     ASSERT_NE(meaning, nullptr) << row.field;
     const std::string help = row.help;
     const std::string text = meaning->help;
-    ASSERT_GE(help.size(), text.size()) << row.field;
-    ASSERT_EQ(help.substr(help.size() - text.size()), text) << row.field;
-    const std::string opening = help.substr(0, help.size() - text.size());
+    const std::size_t at = help.find(text);
+    ASSERT_NE(at, std::string::npos) << row.field;
+    const std::string note = help.substr(at + text.size());
+    EXPECT_TRUE(note.empty() || note.rfind("; ", 0) == 0) << row.field << ": " << note;
+    const std::string opening = help.substr(0, at);
     // The runs the opening names: the main job, and the modes after the mode's field.
     const bool main_job = opening.find(modes.main_job) != std::string::npos;
     std::vector<std::string> named;
