@@ -5,7 +5,6 @@
 // it.
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -53,15 +52,11 @@ std::string TableArgumentLines(const SettingTable<Options>& table, const Options
                                DefaultInDoc defaults) {
   std::string lines;
   for (const std::string& field : fields) {
-    const SettingRow<Options>* row = nullptr;
-    for (const SettingRow<Options>& r : table) {
-      if (field == r.field) row = &r;
-    }
-    if (row == nullptr) throw std::logic_error("no setting " + field + " in the table");
-    std::string text = HelpIn(row->help, keywords);
+    const SettingRow<Options>& row = RowOf(table, field);
+    std::string text = HelpIn(row.help, keywords);
     const std::string value =
-        std::visit([&options](auto member) { return DefaultText(options.*member); }, row->member);
-    if (defaults == DefaultInDoc::kNoneMeans && row->default_shown && !value.empty()) {
+        std::visit([&options](auto member) { return DefaultText(options.*member); }, row.member);
+    if (defaults == DefaultInDoc::kNoneMeans && row.default_shown && !value.empty()) {
       text += "; None: " + value;
     }
     lines +=

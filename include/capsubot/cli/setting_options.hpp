@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -112,12 +111,7 @@ void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& t
 template <class Options>
 void AddSettings(CLI::App& cmd, Options& options, const SettingTable<Options>& table,
                  const FlagNames& flags, const std::vector<std::string>& fields) {
-  for (const std::string& field : fields) {
-    const auto row = std::find_if(table.begin(), table.end(),
-                                  [&](const SettingRow<Options>& r) { return field == r.field; });
-    if (row == table.end()) throw std::logic_error("no setting " + field + " in the table");
-    AddSetting(cmd, options, *row, flags);
-  }
+  for (const std::string& field : fields) AddSetting(cmd, options, RowOf(table, field), flags);
 }
 
 }  // namespace capsubot::cli

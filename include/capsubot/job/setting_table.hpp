@@ -5,6 +5,7 @@
 // and a front end writes them in its own names (HelpIn), as it does the library's messages.
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -37,6 +38,16 @@ struct SettingRow {
 /// The settings of one options struct, in the order a front end lists them.
 template <class Options>
 using SettingTable = std::vector<SettingRow<Options>>;
+
+/// The row of `field` in `table`; throws std::logic_error for a field the table has no row of
+/// (a front end asking for a setting the library does not offer).
+template <class Options>
+const SettingRow<Options>& RowOf(const SettingTable<Options>& table, const std::string& field) {
+  for (const SettingRow<Options>& row : table) {
+    if (field == row.field) return row;
+  }
+  throw std::logic_error("no setting " + field + " in the table");
+}
 
 /// `help` with each "{field}" whose field has an entry in `names` written as its name there
 /// ("{max_period}" -> "--max-period"); other braces ("{x, u, v}") are kept.
